@@ -1,0 +1,27 @@
+#include <hylc/sys.h>
+
+PetscClassId  HYLC_PATTERN_CLASSID;
+PetscLogEvent HYLC_PatternLoad, HYLC_PatternWrite, HYLC_PatternGenerate, HYLC_PatternDistance;
+
+static PetscBool HylcPackageInitialized = PETSC_FALSE;
+
+static PetscErrorCode HylcFinalizePackage(void)
+{
+  PetscFunctionBegin;
+  HylcPackageInitialized = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcInitializePackage(void)
+{
+  PetscFunctionBegin;
+  if (HylcPackageInitialized) PetscFunctionReturn(PETSC_SUCCESS);
+  HylcPackageInitialized = PETSC_TRUE;
+  PetscCall(PetscClassIdRegister("HylcPattern", &HYLC_PATTERN_CLASSID));
+  PetscCall(PetscLogEventRegister("PATTERN_Load", HYLC_PATTERN_CLASSID, &HYLC_PatternLoad));
+  PetscCall(PetscLogEventRegister("PATTERN_Write", HYLC_PATTERN_CLASSID, &HYLC_PatternWrite));
+  PetscCall(PetscLogEventRegister("PATTERN_Generate", HYLC_PATTERN_CLASSID, &HYLC_PatternGenerate));
+  PetscCall(PetscLogEventRegister("PATTERN_Distance", HYLC_PATTERN_CLASSID, &HYLC_PatternDistance));
+  PetscCall(PetscRegisterFinalize(HylcFinalizePackage));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -1,0 +1,85 @@
+#!/usr/bin/env bash
+# hylc test runner: C unit tests (build/tests/*) and program-level regression tests
+# (tests/regression/*.sh).  Prints one line per test and closes with "N passed, N failed[, N skipped]".
+# Exit status: 0 if nothing failed.
+#   tests/run.sh [FILTER]     run the tests whose name contains FILTER
+# A unit test declares its MPI size with a comment line "hylc-test: nprocs=N" (default 1).
+# A regression script gets $HYLC_BIN, $HYLC_REFDATA, $MPIEXEC and a private $HYLC_TMP; it exits 0 to
+# pass, 77 to skip (its last output line says why), anything else to fail.
+set -u
+cd "$(dirname "$0")/.."
+top=$PWD
+filter=${1:-}
+build=${BUILD:-build}
+
+# Open MPI as root, more ranks than cores, quick start-up; harmless when not root.
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_pml=ob1
+export OMPI_MCA_rmaps_base_oversubscribe=1 OMPI_MCA_btl_vader_single_copy_mechanism=none
+export HYLC_BIN=$top/$build/bin
+export HYLC_REFDATA=${HYLC_REFDATA:-$top/../shared/refdata}
+export MPIEXEC="mpiexec --oversubscribe"
+timeout_s=${HYLC_TEST_TIMEOUT:-900}
+
+tmproot=$(mktemp -d "${TMPDIR:-/tmp}/hylc-test.XXXXXX")
+trap 'rm -rf "$tmproot"' EXIT
+pass=0 fail=0 skip=0 failed=()
+
+report() { # name status seconds logfile
+  local name=$1 st=$2 secs=$3 log=$4
+  case $st in
+    0) pass=$((pass + 1)); printf 'PASS  %-40s %6.1f s\n' "$name" "$secs" ;;
+    77) skip=$((skip + 1)); printf 'SKIP  %-40s %s\n' "$name" "$(tail -n 1 "$log")" ;;
+    *) fail=$((fail + 1)); failed+=("$name")
+       printf 'FAIL  %-40s %6.1f s (exit %d)\n' "$name" "$secs" "$st"
+       tail -n 30 "$log" | sed 's/^/      | /' ;;
+  esac
+}
+
+run_one() { # name logfile command...
+  local name=$1 log=$2; shift 2
+  local t0 t1 st
+  t0=$(date +%s.%N)
+  timeout "$timeout_s" "$@" >"$log" 2>&1 </dev/null
+  st=$?
+  t1=$(date +%s.%N)
+  [ $st -eq 124 ] && echo "timed out after ${timeout_s} s" >>"$log"
+  report "$name" $st "$(awk -v a="$t0" -v b="$t1" 'BEGIN{print b-a}')" "$log"
+}
+
+for src in tests/unit/*.c; do
+  [ -e "$src" ] || continue
+  name=$(basename "$src" .c)
+  [ -n "$filter" ] && [[ $name != *"$filter"* ]] && continue
+  exe=$build/tests/$name
+  log=$tmproot/$name.log
+  if [ ! -x "$exe" ]; then
+    echo "missing executable $exe (run make)" >"$log"; report "unit/$name" 1 0 "$log"; continue
+  fi
+  np=$(sed -n 's/.*hylc-test: *nprocs=\([0-9]*\).*/\1/p' "$src" | head -n 1)
+  np=${np:-1}
+  mkdir -p "$tmproot/$name" && pushd "$tmproot/$name" >/dev/null
+  if [ "$np" -gt 1 ]; then
+    run_one "unit/$name (np=$np)" "$log" $MPIEXEC -n "$np" "$top/$exe"
+  else
+    run_one "unit/$name" "$log" "$top/$exe"
+  fi
+  popd >/dev/null
+done
+
+for script in tests/regression/*.sh; do
+  [ -e "$script" ] || continue
+  name=$(basename "$script" .sh)
+  [ -n "$filter" ] && [[ $name != *"$filter"* ]] && continue
+  log=$tmproot/$name.log
+  export HYLC_TMP=$tmproot/reg-$name
+  mkdir -p "$HYLC_TMP"
+  run_one "regression/$name" "$log" bash "$script"
+done
+
+[ ${#failed[@]} -gt 0 ] && printf 'failed: %s\n' "${failed[*]}"
+if [ $skip -gt 0 ]; then
+  echo "$pass passed, $fail failed, $skip skipped"
+else
+  echo "$pass passed, $fail failed"
+fi
+[ $fail -eq 0 ]
