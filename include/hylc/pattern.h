@@ -1,0 +1,96 @@
+#pragma once
+/* HylcPattern: a periodic yarn tile (closed periodic yarn loops with rest data), the object every
+   pipeline stage consumes.  See docs/patterns.md for the .pyp format and the generators.
+
+   Data layout (N vertices = N edges; every vertex has exactly one outgoing and one incoming edge):
+     X[3v]          reference position of vertex v (m)
+     theta[v]       twist of the edge leaving v (rad)
+     next[v]        head vertex of the edge leaving v
+     prev[v]        tail vertex of the edge entering v
+     shift[2v]      lattice offset (dx, dy) of that edge's head: the edge runs from X[v] to
+                    X[next[v]] + (dx px, dy py, 0)
+     restLength[v]  rest length of the edge leaving v (m)
+     restKappa[2v]  rest material curvature (kappa1, kappa2) at v (dimensionless, integrated)
+     restTwist[v]   rest twist at v (rad)
+     refD1[3v]      reference director d1 of the edge leaving v (unit, perpendicular to the edge)
+     refTwist[v]    reference twist at v (rad)
+   Yarn loops are the cycles of next[]; loop l lists its vertices in yarn order starting at its
+   smallest vertex index, and its winding is the sum of the shifts along it. */
+#include <hylc/sys.h>
+#include <petscviewer.h>
+
+typedef struct _p_HylcPattern *HylcPattern;
+
+/* Pattern sources: a .pyp file or one of the procedural generators. */
+typedef const char *HylcPatternType;
+#define HYLCPATTERNFILE        "file"
+#define HYLCPATTERNPLAIN       "plain"
+#define HYLCPATTERNBASKET      "basket"
+#define HYLCPATTERNTWILL       "twill"
+#define HYLCPATTERNSATIN       "satin"
+#define HYLCPATTERNSTOCKINETTE "stockinette"
+#define HYLCPATTERNRIB         "rib"
+
+/* Parameters of the procedural generators (lengths in metres; 0 or negative = default). */
+typedef struct {
+  PetscReal radius;   /* yarn radius r (default 1e-3 m) */
+  PetscReal spacing;  /* wovens: distance between neighbouring parallel yarns (default 4 r) */
+  PetscReal wale;     /* knits: stitch width along x (default: see docs/patterns.md) */
+  PetscReal course;   /* knits: course height along y (default: see docs/patterns.md) */
+  PetscReal depth;    /* knits: z amplitude of the loops (default: see docs/patterns.md) */
+  PetscReal gap;      /* wovens: clearance at crossings relative to 2r (default 0.1: centrelines 2.2 r apart) */
+  PetscReal seglen;   /* target edge length (default r) */
+  PetscInt  size[2];  /* tile size in threads (wovens: x-yarns, y-yarns) or stitches (knits: wales, courses);
+                         0 = the smallest repeat of the pattern */
+} HylcPatternGenParams;
+
+/* The data arrays of a pattern (read-only views; see the layout above). */
+typedef struct {
+  PetscInt         nv;
+  PetscReal        px, py, radius;
+  const PetscReal *X, *theta, *restLength, *restKappa, *restTwist, *refD1, *refTwist;
+  const PetscInt  *next, *prev, *shift;
+} HylcPatternData;
+
+PETSC_EXTERN PetscErrorCode HylcPatternCreate(MPI_Comm, HylcPattern *);
+PETSC_EXTERN PetscErrorCode HylcPatternDestroy(HylcPattern *);
+PETSC_EXTERN PetscErrorCode HylcPatternSetOptionsPrefix(HylcPattern, const char[]);
+PETSC_EXTERN PetscErrorCode HylcPatternSetFromOptions(HylcPattern);
+PETSC_EXTERN PetscErrorCode HylcPatternSetUp(HylcPattern);
+PETSC_EXTERN PetscErrorCode HylcPatternView(HylcPattern, PetscViewer);
+PETSC_EXTERN PetscErrorCode HylcPatternViewFromOptions(HylcPattern, PetscObject, const char[]);
+
+/* Source selection, used by HylcPatternSetUp(). */
+PETSC_EXTERN PetscErrorCode HylcPatternSetType(HylcPattern, HylcPatternType);
+PETSC_EXTERN PetscErrorCode HylcPatternGetType(HylcPattern, HylcPatternType *);
+PETSC_EXTERN PetscErrorCode HylcPatternSetFileName(HylcPattern, const char[]);
+PETSC_EXTERN PetscErrorCode HylcPatternSetGenParams(HylcPattern, const HylcPatternGenParams *);
+PETSC_EXTERN PetscErrorCode HylcPatternGetGenParams(HylcPattern, HylcPatternGenParams *);
+PETSC_EXTERN PetscErrorCode HylcPatternGenParamsDefault(HylcPatternGenParams *);
+
+/* Direct construction. Collective. */
+PETSC_EXTERN PetscErrorCode HylcPatternLoad(HylcPattern, const char[]);
+PETSC_EXTERN PetscErrorCode HylcPatternLoadFromString(HylcPattern, const char[], const char[]);
+PETSC_EXTERN PetscErrorCode HylcPatternGenerate(HylcPattern, HylcPatternType, const HylcPatternGenParams *);
+PETSC_EXTERN PetscErrorCode HylcPatternSetData(HylcPattern, PetscInt, PetscReal, PetscReal, PetscReal, const PetscReal[], const PetscReal[], const PetscInt[], const PetscInt[], const PetscReal[], const PetscReal[], const PetscReal[], const PetscReal[], const PetscReal[]);
+PETSC_EXTERN PetscErrorCode HylcPatternSetFromCurves(HylcPattern, PetscReal, PetscReal, PetscReal, PetscInt, const PetscInt[], const PetscInt[], const PetscReal[]);
+PETSC_EXTERN PetscErrorCode HylcPatternDuplicate(HylcPattern, HylcPattern *);
+
+/* Output. Collective; rank 0 writes. */
+PETSC_EXTERN PetscErrorCode HylcPatternWrite(HylcPattern, const char[]);
+PETSC_EXTERN PetscErrorCode HylcPatternWriteVTK(HylcPattern, const char[], PetscInt, PetscInt);
+
+/* Access. Not collective. */
+PETSC_EXTERN PetscErrorCode HylcPatternGetData(HylcPattern, HylcPatternData *);
+PETSC_EXTERN PetscErrorCode HylcPatternGetNumVertices(HylcPattern, PetscInt *);
+PETSC_EXTERN PetscErrorCode HylcPatternGetPeriods(HylcPattern, PetscReal *, PetscReal *);
+PETSC_EXTERN PetscErrorCode HylcPatternGetRadius(HylcPattern, PetscReal *);
+PETSC_EXTERN PetscErrorCode HylcPatternGetNumLoops(HylcPattern, PetscInt *);
+PETSC_EXTERN PetscErrorCode HylcPatternGetLoop(HylcPattern, PetscInt, PetscInt *, const PetscInt **, PetscInt[2]);
+PETSC_EXTERN PetscErrorCode HylcPatternGetVertexLoop(HylcPattern, PetscInt, PetscInt *, PetscInt *);
+
+/* Analysis. Not collective. */
+PETSC_EXTERN PetscErrorCode HylcPatternGetYarnLength(HylcPattern, PetscReal *, PetscReal *);
+PETSC_EXTERN PetscErrorCode HylcPatternGetAreaDensity(HylcPattern, PetscReal, PetscReal *);
+PETSC_EXTERN PetscErrorCode HylcPatternIsExcludedPair(HylcPattern, PetscReal, PetscInt, PetscInt, const PetscInt[2], PetscBool *);
+PETSC_EXTERN PetscErrorCode HylcPatternMinSegmentDistance(HylcPattern, PetscReal, PetscReal *, PetscInt[4]);

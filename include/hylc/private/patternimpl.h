@@ -1,0 +1,44 @@
+#pragma once
+/* Private definition of HylcPattern: only src/ may include this. */
+#include <hylc/pattern.h>
+#include <petsc/private/petscimpl.h>
+
+struct _HylcPatternOps {
+  PetscErrorCode (*view)(HylcPattern, PetscViewer);
+};
+
+struct _p_HylcPattern {
+  PETSCHEADER(struct _HylcPatternOps);
+  /* source */
+  char                 filename[PETSC_MAX_PATH_LEN]; /* .pyp file (type "file") */
+  HylcPatternGenParams gen;                          /* generator parameters */
+  PetscBool            setupcalled;
+  PetscBool            hasdata;
+  PetscReal            viewDensity;    /* volumetric density used by the summary (kg/m^3) */
+  PetscReal            viewExcludeArc; /* same-yarn exclusion arc for the summary's distance (units of r) */
+  /* data */
+  PetscInt   nv;
+  PetscReal  px, py, radius;
+  PetscReal *X, *theta, *restLength, *restKappa, *restTwist, *refD1, *refTwist;
+  PetscInt  *next, *prev, *shift;
+  /* yarn loops (derived) */
+  PetscInt  nloops;
+  PetscInt *loopStart;  /* nloops+1 offsets into loopVerts */
+  PetscInt *loopVerts;  /* vertices of each loop in yarn order */
+  PetscInt *winding;    /* 2 per loop */
+  PetscInt *vertLoop;   /* loop of each vertex */
+  PetscInt *vertPos;    /* position of each vertex inside its loop */
+  PetscInt *vertCum;    /* 2 per vertex: lattice shift accumulated along its loop from the loop start */
+  PetscReal *loopArc;   /* loopStart-indexed cumulative rest length: arc from the loop start to vertex k */
+  PetscReal *loopLen;   /* rest length of each loop */
+};
+
+/* Builds the loops (cycles of next[]) and derived data; validates the connectivity. */
+PETSC_INTERN PetscErrorCode HylcPatternBuildLoops_Private(HylcPattern);
+/* Frees the data arrays. */
+PETSC_INTERN PetscErrorCode HylcPatternReset_Private(HylcPattern);
+/* Allocates the data arrays for nv vertices. */
+PETSC_INTERN PetscErrorCode HylcPatternAllocate_Private(HylcPattern, PetscInt);
+/* Generators */
+PETSC_INTERN PetscErrorCode HylcPatternGenerateWoven_Private(HylcPattern, HylcPatternType, const HylcPatternGenParams *);
+PETSC_INTERN PetscErrorCode HylcPatternGenerateKnit_Private(HylcPattern, HylcPatternType, const HylcPatternGenParams *);

@@ -1,0 +1,37 @@
+static const char help[] = "hylc-pattern: load or generate a periodic yarn pattern, print a summary, and write it as .pyp or VTK.\n\n"
+                           "  hylc-pattern -pattern_file f.pyp                      summary of a pattern file\n"
+                           "  hylc-pattern -pattern_type satin -pattern_output s.pyp  generate and write\n"
+                           "  hylc-pattern -pattern_file f.pyp -pattern_vtk f.vtk -pattern_vtk_tiles 3,3\n\n";
+
+#include <hylc/pattern.h>
+
+int main(int argc, char **argv)
+{
+  HylcPattern pat;
+  char        out[PETSC_MAX_PATH_LEN] = "", vtk[PETSC_MAX_PATH_LEN] = "";
+  PetscInt    tiles[2] = {1, 1}, nt = 2;
+  PetscBool   flg;
+
+  PetscCall(PetscInitialize(&argc, &argv, NULL, help));
+  PetscCall(HylcPatternCreate(PETSC_COMM_WORLD, &pat));
+  PetscCall(HylcPatternSetFromOptions(pat));
+  PetscOptionsBegin(PETSC_COMM_WORLD, NULL, "hylc-pattern output options", "hylc-pattern");
+  PetscCall(PetscOptionsString("-pattern_output", "Write the pattern to this .pyp file", "HylcPatternWrite", out, out, sizeof(out), NULL));
+  PetscCall(PetscOptionsString("-pattern_vtk", "Write the tiled pattern as legacy-VTK polylines to this file", "HylcPatternWriteVTK", vtk, vtk, sizeof(vtk), NULL));
+  PetscCall(PetscOptionsIntArray("-pattern_vtk_tiles", "Number of tile copies nx,ny in the VTK file", "HylcPatternWriteVTK", tiles, &nt, &flg));
+  PetscOptionsEnd();
+  PetscCheck(!flg || (nt == 2 && tiles[0] >= 1 && tiles[1] >= 1), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-pattern_vtk_tiles needs two positive integers nx,ny");
+  PetscCall(HylcPatternSetUp(pat));
+  PetscCall(HylcPatternView(pat, PETSC_VIEWER_STDOUT_WORLD));
+  if (out[0]) {
+    PetscCall(HylcPatternWrite(pat, out));
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "wrote %s\n", out));
+  }
+  if (vtk[0]) {
+    PetscCall(HylcPatternWriteVTK(pat, vtk, tiles[0], tiles[1]));
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "wrote %s (%" PetscInt_FMT " x %" PetscInt_FMT " tiles)\n", vtk, tiles[0], tiles[1]));
+  }
+  PetscCall(HylcPatternDestroy(&pat));
+  PetscCall(PetscFinalize());
+  return 0;
+}

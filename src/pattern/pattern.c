@@ -1,0 +1,394 @@
+/* HylcPattern: object lifecycle, options, accessors and yarn-loop extraction. */
+#include <hylc/private/patternimpl.h>
+
+PetscErrorCode HylcPatternGenParamsDefault(HylcPatternGenParams *g)
+{
+  PetscFunctionBegin;
+  PetscCall(PetscMemzero(g, sizeof(*g)));
+  g->radius = 1e-3;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPatternCreate - Creates an empty periodic yarn pattern.
+  Collective.  Fill it with HylcPatternLoad(), HylcPatternGenerate(), or HylcPatternSetFromOptions() +
+  HylcPatternSetUp().
+@*/
+PetscErrorCode HylcPatternCreate(MPI_Comm comm, HylcPattern *pat)
+{
+  HylcPattern p;
+
+  PetscFunctionBegin;
+  PetscValidPointer(pat, 2);
+  PetscCall(HylcInitializePackage());
+  PetscCall(PetscHeaderCreate(p, HYLC_PATTERN_CLASSID, "HylcPattern", "Periodic yarn pattern", "Pattern", comm, HylcPatternDestroy, HylcPatternView));
+  PetscCall(HylcPatternGenParamsDefault(&p->gen));
+  p->viewDensity    = 1200.0;
+  p->viewExcludeArc = 3.0;
+  PetscCall(PetscObjectChangeTypeName((PetscObject)p, HYLCPATTERNSTOCKINETTE));
+  *pat = p;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcPatternReset_Private(HylcPattern p)
+{
+  PetscFunctionBegin;
+  PetscCall(PetscFree7(p->X, p->theta, p->restLength, p->restKappa, p->restTwist, p->refD1, p->refTwist));
+  PetscCall(PetscFree3(p->next, p->prev, p->shift));
+  PetscCall(PetscFree6(p->loopStart, p->loopVerts, p->winding, p->vertLoop, p->vertPos, p->vertCum));
+  PetscCall(PetscFree2(p->loopArc, p->loopLen));
+  p->nv      = 0;
+  p->nloops  = 0;
+  p->hasdata = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcPatternAllocate_Private(HylcPattern p, PetscInt nv)
+{
+  PetscFunctionBegin;
+  PetscCall(HylcPatternReset_Private(p));
+  p->nv = nv;
+  PetscCall(PetscCalloc7(3 * nv, &p->X, nv, &p->theta, nv, &p->restLength, 2 * nv, &p->restKappa, nv, &p->restTwist, 3 * nv, &p->refD1, nv, &p->refTwist));
+  PetscCall(PetscCalloc3(nv, &p->next, nv, &p->prev, 2 * nv, &p->shift));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPatternDestroy - Destroys a pattern. Accepts NULL; sets the handle to NULL. Collective.
+@*/
+PetscErrorCode HylcPatternDestroy(HylcPattern *p)
+{
+  PetscFunctionBegin;
+  if (!*p) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscValidHeaderSpecific(*p, HYLC_PATTERN_CLASSID, 1);
+  if (--((PetscObject)(*p))->refct > 0) {
+    *p = NULL;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCall(HylcPatternReset_Private(*p));
+  PetscCall(PetscHeaderDestroy(p));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcPatternSetOptionsPrefix(HylcPattern p, const char prefix[])
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
+  PetscCall(PetscObjectSetOptionsPrefix((PetscObject)p, prefix));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcPatternSetType(HylcPattern p, HylcPatternType type)
+{
+  const char *known[] = {HYLCPATTERNFILE, HYLCPATTERNPLAIN, HYLCPATTERNBASKET, HYLCPATTERNTWILL, HYLCPATTERNSATIN, HYLCPATTERNSTOCKINETTE, HYLCPATTERNRIB};
+  PetscBool   ok      = PETSC_FALSE;
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
+  for (size_t i = 0; i < sizeof(known) / sizeof(known[0]); i++) {
+    PetscBool eq;
+    PetscCall(PetscStrcmp(type, known[i], &eq));
+    ok = (PetscBool)(ok || eq);
+  }
+  PetscCheck(ok, PetscObjectComm((PetscObject)p), PETSC_ERR_USER_INPUT, "Unknown pattern type '%s'; use one of file, plain, basket, twill, satin, stockinette, rib", type);
+  PetscCall(PetscObjectChangeTypeName((PetscObject)p, type));
+  p->setupcalled = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcPatternGetType(HylcPattern p, HylcPatternType *type)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
+  *type = ((PetscObject)p)->type_name;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcPatternSetFileName(HylcPattern p, const char file[])
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
+  PetscCall(PetscStrncpy(p->filename, file, sizeof(p->filename)));
+  PetscCall(HylcPatternSetType(p, HYLCPATTERNFILE));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcPatternSetGenParams(HylcPattern p, const HylcPatternGenParams *g)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
+  p->gen         = *g;
+  p->setupcalled = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcPatternGetGenParams(HylcPattern p, HylcPatternGenParams *g)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
+  *g = p->gen;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPatternSetFromOptions - Reads the pattern options. Collective.
+
+  Options (prefix "-pattern_" unless the object has another prefix):
++ -pattern_file <f.pyp>            - load this .pyp file (sets the type to "file")
+. -pattern_type <stockinette>      - file, plain, basket, twill, satin, stockinette, rib
+. -pattern_radius <1e-3>           - generators: yarn radius (m)
+. -pattern_spacing <4r>            - wovens: distance between neighbouring parallel yarns (m)
+. -pattern_gap <0.1>               - wovens: clearance at crossings relative to 2r
+. -pattern_wale, -pattern_course, -pattern_depth - knits: stitch width, course height, loop depth (m)
+. -pattern_seglen <r>              - generators: target edge length (m)
+. -pattern_size <nx,ny>            - generators: tile size in threads or stitches
+. -pattern_density <1200>          - volumetric yarn density used by the summary (kg/m^3)
+- -pattern_exclude_arc <3>         - summary: same-yarn pairs closer than this rest arc (units of r) are not contacts
+@*/
+PetscErrorCode HylcPatternSetFromOptions(HylcPattern p)
+{
+  char      file[PETSC_MAX_PATH_LEN] = "", type[64];
+  PetscBool flg, tflg;
+  PetscInt  n = 2;
+  const char *types[] = {HYLCPATTERNFILE, HYLCPATTERNPLAIN, HYLCPATTERNBASKET, HYLCPATTERNTWILL, HYLCPATTERNSATIN, HYLCPATTERNSTOCKINETTE, HYLCPATTERNRIB};
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
+  PetscObjectOptionsBegin((PetscObject)p);
+  PetscCall(PetscStrncpy(type, ((PetscObject)p)->type_name, sizeof(type)));
+  PetscCall(PetscOptionsString("-pattern_file", "Periodic yarn pattern file (.pyp) to load", "HylcPatternLoad", p->filename, file, sizeof(file), &flg));
+  if (flg) PetscCall(HylcPatternSetFileName(p, file));
+  else if (p->filename[0]) PetscCall(PetscStrncpy(type, HYLCPATTERNFILE, sizeof(type)));
+  PetscCall(PetscOptionsEList("-pattern_type", "Pattern source: a file or a generator", "HylcPatternSetType", types, 7, type, &n, &tflg));
+  (void)n;
+  if (tflg) PetscCall(HylcPatternSetType(p, types[n]));
+  PetscCheck(!(flg && tflg && n != 0), PetscObjectComm((PetscObject)p), PETSC_ERR_USER_INPUT, "Both -pattern_file %s and -pattern_type %s were given; use one", file, types[n]);
+  PetscCall(PetscOptionsReal("-pattern_radius", "Generators: yarn radius (m)", "HylcPatternGenerate", p->gen.radius, &p->gen.radius, NULL));
+  PetscCall(PetscOptionsReal("-pattern_spacing", "Wovens: distance between neighbouring parallel yarns (m); 0 = 4 r", "HylcPatternGenerate", p->gen.spacing, &p->gen.spacing, NULL));
+  PetscCall(PetscOptionsReal("-pattern_gap", "Wovens: clearance at crossings relative to 2r; 0 = 0.1", "HylcPatternGenerate", p->gen.gap, &p->gen.gap, NULL));
+  PetscCall(PetscOptionsReal("-pattern_wale", "Knits: stitch width along x (m); 0 = default", "HylcPatternGenerate", p->gen.wale, &p->gen.wale, NULL));
+  PetscCall(PetscOptionsReal("-pattern_course", "Knits: course height along y (m); 0 = default", "HylcPatternGenerate", p->gen.course, &p->gen.course, NULL));
+  PetscCall(PetscOptionsReal("-pattern_depth", "Knits: z amplitude of the loops (m); 0 = default", "HylcPatternGenerate", p->gen.depth, &p->gen.depth, NULL));
+  PetscCall(PetscOptionsReal("-pattern_seglen", "Generators: target edge length (m); 0 = r", "HylcPatternGenerate", p->gen.seglen, &p->gen.seglen, NULL));
+  n = 2;
+  PetscCall(PetscOptionsIntArray("-pattern_size", "Generators: tile size nx,ny in threads (wovens) or wales,courses (knits); 0 = smallest repeat", "HylcPatternGenerate", p->gen.size, &n, &flg));
+  if (flg) PetscCheck(n == 2, PetscObjectComm((PetscObject)p), PETSC_ERR_USER_INPUT, "-pattern_size needs two integers nx,ny, got %" PetscInt_FMT, n);
+  PetscCall(PetscOptionsReal("-pattern_density", "Volumetric yarn density for the summary's area density (kg/m^3)", "HylcPatternGetAreaDensity", p->viewDensity, &p->viewDensity, NULL));
+  PetscCall(PetscOptionsReal("-pattern_exclude_arc", "Summary: same-yarn segment pairs closer than this rest arc length (units of r) are not contacts", "HylcPatternMinSegmentDistance", p->viewExcludeArc, &p->viewExcludeArc, NULL));
+  PetscCall(PetscObjectProcessOptionsHandlers((PetscObject)p, PetscOptionsObject));
+  PetscOptionsEnd();
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPatternSetUp - Loads or generates the pattern selected by its type. Collective.
+@*/
+PetscErrorCode HylcPatternSetUp(HylcPattern p)
+{
+  PetscBool isfile;
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
+  if (p->setupcalled && p->hasdata) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscStrcmp(((PetscObject)p)->type_name, HYLCPATTERNFILE, &isfile));
+  if (isfile) {
+    PetscCheck(p->filename[0], PetscObjectComm((PetscObject)p), PETSC_ERR_USER_INPUT, "Pattern type 'file' needs a file name (-pattern_file f.pyp)");
+    PetscCall(HylcPatternLoad(p, p->filename));
+  } else {
+    char type[64];
+    PetscCall(PetscStrncpy(type, ((PetscObject)p)->type_name, sizeof(type)));
+    PetscCall(HylcPatternGenerate(p, type, &p->gen));
+  }
+  p->setupcalled = PETSC_TRUE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Extracts the loops (cycles of next[]) and checks the connectivity: every vertex has exactly one
+   outgoing and one incoming edge. */
+PetscErrorCode HylcPatternBuildLoops_Private(HylcPattern p)
+{
+  PetscInt  nv = p->nv, nl = 0, k = 0;
+  PetscInt *seen;
+  MPI_Comm  comm = PetscObjectComm((PetscObject)p);
+
+  PetscFunctionBegin;
+  PetscCall(PetscFree6(p->loopStart, p->loopVerts, p->winding, p->vertLoop, p->vertPos, p->vertCum));
+  PetscCall(PetscFree2(p->loopArc, p->loopLen));
+  PetscCall(PetscCalloc1(nv, &seen));
+  for (PetscInt v = 0; v < nv; v++) {
+    PetscCheck(p->next[v] >= 0 && p->next[v] < nv, comm, PETSC_ERR_USER_INPUT, "Edge leaving vertex %" PetscInt_FMT " ends at vertex %" PetscInt_FMT ", outside [0, %" PetscInt_FMT ")", v, p->next[v], nv);
+    seen[p->next[v]]++;
+  }
+  for (PetscInt v = 0; v < nv; v++) PetscCheck(seen[v] == 1, comm, PETSC_ERR_USER_INPUT, "Vertex %" PetscInt_FMT " has %" PetscInt_FMT " incoming edges; every vertex needs exactly one", v, seen[v]);
+  for (PetscInt v = 0; v < nv; v++) p->prev[p->next[v]] = v;
+  PetscCall(PetscArrayzero(seen, nv));
+  for (PetscInt v = 0; v < nv; v++)
+    if (!seen[v]) {
+      nl++;
+      for (PetscInt w = v; !seen[w]; w = p->next[w]) seen[w] = 1;
+    }
+  p->nloops = nl;
+  PetscCall(PetscMalloc6(nl + 1, &p->loopStart, nv, &p->loopVerts, 2 * nl, &p->winding, nv, &p->vertLoop, nv, &p->vertPos, 2 * nv, &p->vertCum));
+  PetscCall(PetscMalloc2(nv + nl, &p->loopArc, nl, &p->loopLen));
+  PetscCall(PetscArrayzero(seen, nv));
+  nl = 0;
+  for (PetscInt v = 0; v < nv; v++) {
+    if (seen[v]) continue;
+    p->loopStart[nl]       = k;
+    p->winding[2 * nl + 0] = p->winding[2 * nl + 1] = 0;
+    for (PetscInt w = v; !seen[w]; w = p->next[w]) {
+      seen[w]         = 1;
+      p->vertLoop[w]  = nl;
+      p->vertPos[w]   = k - p->loopStart[nl];
+      p->loopVerts[k++] = w;
+      p->vertCum[2 * w]     = p->winding[2 * nl + 0];
+      p->vertCum[2 * w + 1] = p->winding[2 * nl + 1];
+      p->winding[2 * nl + 0] += p->shift[2 * w + 0];
+      p->winding[2 * nl + 1] += p->shift[2 * w + 1];
+    }
+    nl++;
+  }
+  p->loopStart[nl] = k;
+  /* cumulative rest arc: loopArc[loopStart[l] + l + j] = rest length from the loop start to its j-th vertex */
+  for (PetscInt l = 0; l < nl; l++) {
+    PetscReal *arc = p->loopArc + p->loopStart[l] + l;
+    PetscInt   n   = p->loopStart[l + 1] - p->loopStart[l];
+    arc[0]         = 0;
+    for (PetscInt j = 0; j < n; j++) arc[j + 1] = arc[j] + p->restLength[p->loopVerts[p->loopStart[l] + j]];
+    p->loopLen[l] = arc[n];
+  }
+  PetscCall(PetscFree(seen));
+  p->hasdata = PETSC_TRUE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcPatternGetData(HylcPattern p, HylcPatternData *d)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
+  PetscCheck(p->hasdata, PetscObjectComm((PetscObject)p), PETSC_ERR_ARG_WRONGSTATE, "Pattern has no data yet: call HylcPatternSetUp(), HylcPatternLoad() or HylcPatternGenerate() first");
+  d->nv         = p->nv;
+  d->px         = p->px;
+  d->py         = p->py;
+  d->radius     = p->radius;
+  d->X          = p->X;
+  d->theta      = p->theta;
+  d->restLength = p->restLength;
+  d->restKappa  = p->restKappa;
+  d->restTwist  = p->restTwist;
+  d->refD1      = p->refD1;
+  d->refTwist   = p->refTwist;
+  d->next       = p->next;
+  d->prev       = p->prev;
+  d->shift      = p->shift;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcPatternGetNumVertices(HylcPattern p, PetscInt *nv)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
+  *nv = p->nv;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcPatternGetPeriods(HylcPattern p, PetscReal *px, PetscReal *py)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
+  if (px) *px = p->px;
+  if (py) *py = p->py;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcPatternGetRadius(HylcPattern p, PetscReal *r)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
+  *r = p->radius;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcPatternGetNumLoops(HylcPattern p, PetscInt *nl)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
+  *nl = p->nloops;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPatternGetLoop - Vertices of yarn loop l in yarn order, and its winding (sum of edge shifts).
+  Not collective. Any output may be NULL.
+@*/
+PetscErrorCode HylcPatternGetLoop(HylcPattern p, PetscInt l, PetscInt *n, const PetscInt **verts, PetscInt winding[2])
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
+  PetscCheck(l >= 0 && l < p->nloops, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Loop %" PetscInt_FMT " out of range [0, %" PetscInt_FMT ")", l, p->nloops);
+  if (n) *n = p->loopStart[l + 1] - p->loopStart[l];
+  if (verts) *verts = p->loopVerts + p->loopStart[l];
+  if (winding) {
+    winding[0] = p->winding[2 * l];
+    winding[1] = p->winding[2 * l + 1];
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcPatternGetVertexLoop(HylcPattern p, PetscInt v, PetscInt *loop, PetscInt *pos)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
+  PetscCheck(v >= 0 && v < p->nv, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Vertex %" PetscInt_FMT " out of range [0, %" PetscInt_FMT ")", v, p->nv);
+  if (loop) *loop = p->vertLoop[v];
+  if (pos) *pos = p->vertPos[v];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPatternDuplicate - Makes an independent copy of a pattern's data. Collective.
+@*/
+PetscErrorCode HylcPatternDuplicate(HylcPattern p, HylcPattern *newp)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
+  PetscCall(HylcPatternCreate(PetscObjectComm((PetscObject)p), newp));
+  (*newp)->gen            = p->gen;
+  (*newp)->viewDensity    = p->viewDensity;
+  (*newp)->viewExcludeArc = p->viewExcludeArc;
+  PetscCall(PetscStrncpy((*newp)->filename, p->filename, sizeof(p->filename)));
+  PetscCall(PetscObjectChangeTypeName((PetscObject)*newp, ((PetscObject)p)->type_name));
+  if (p->hasdata) {
+    PetscCall(HylcPatternSetData(*newp, p->nv, p->px, p->py, p->radius, p->X, p->theta, p->next, p->shift, p->restLength, p->restKappa, p->restTwist, p->refD1, p->refTwist));
+    (*newp)->setupcalled = PETSC_TRUE;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPatternSetData - Sets all data of a pattern from arrays (copied), indexed as in pattern.h:
+  edges are given by next[v] and shift[2v] of the edge leaving each vertex. Validates connectivity,
+  but not geometry (the .pyp reader does that). Collective; the same data on every rank.
+@*/
+PetscErrorCode HylcPatternSetData(HylcPattern p, PetscInt nv, PetscReal px, PetscReal py, PetscReal r, const PetscReal X[], const PetscReal theta[], const PetscInt next[], const PetscInt shift[], const PetscReal restLength[], const PetscReal restKappa[], const PetscReal restTwist[], const PetscReal refD1[], const PetscReal refTwist[])
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
+  PetscCheck(nv > 0, PetscObjectComm((PetscObject)p), PETSC_ERR_USER_INPUT, "A pattern needs at least one vertex, got %" PetscInt_FMT, nv);
+  PetscCall(HylcPatternAllocate_Private(p, nv));
+  p->px     = px;
+  p->py     = py;
+  p->radius = r;
+  PetscCall(PetscArraycpy(p->X, X, 3 * nv));
+  PetscCall(PetscArraycpy(p->theta, theta, nv));
+  PetscCall(PetscArraycpy(p->next, next, nv));
+  PetscCall(PetscArraycpy(p->shift, shift, 2 * nv));
+  PetscCall(PetscArraycpy(p->restLength, restLength, nv));
+  PetscCall(PetscArraycpy(p->restKappa, restKappa, 2 * nv));
+  PetscCall(PetscArraycpy(p->restTwist, restTwist, nv));
+  PetscCall(PetscArraycpy(p->refD1, refD1, 3 * nv));
+  PetscCall(PetscArraycpy(p->refTwist, refTwist, nv));
+  PetscCall(HylcPatternBuildLoops_Private(p));
+  p->setupcalled = PETSC_TRUE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

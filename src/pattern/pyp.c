@@ -1,0 +1,302 @@
+/* Reader and writer of the .pyp periodic yarn pattern format (docs/patterns.md). */
+#include <hylc/private/patternimpl.h>
+#include <hylc/geom.h>
+#include <ctype.h>
+#include <errno.h>
+#include <stdlib.h>
+
+typedef enum { BLK_PATTERN, BLK_Q, BLK_E, BLK_RL, BLK_RK, BLK_RT, BLK_REFD1, BLK_REFT, NBLK } PypBlock;
+
+static const char *const BlockName[NBLK] = {"pattern", "Q", "E", "RL", "RK", "RT", "RefD1", "RefT"};
+static const int         BlockCols[NBLK] = {4, 4, 4, 1, 2, 1, 3, 1};
+static const char *const BlockHelp[NBLK] = {"px py radius num_vertedges", "dofs: x y z t", "edges: v0 v1 dx dy", "rest lengths", "rest kappas", "rest twists", "reference directors", "reference twists"};
+
+typedef struct {
+  PetscInt   header;  /* line of the header, 0 if absent */
+  PetscInt   nrows, cap;
+  PetscReal *val;     /* nrows * cols */
+  PetscInt  *line;    /* line number of each row */
+} PypBlockData;
+
+static PetscErrorCode PypBlockAppend(PypBlockData *b, int cols, const PetscReal v[], PetscInt line)
+{
+  PetscFunctionBegin;
+  if (b->nrows == b->cap) {
+    PetscInt   cap = b->cap ? 2 * b->cap : 64;
+    PetscReal *val;
+    PetscInt  *ln;
+    PetscCall(PetscMalloc2(cap * cols, &val, cap, &ln));
+    PetscCall(PetscArraycpy(val, b->val, b->nrows * cols));
+    PetscCall(PetscArraycpy(ln, b->line, b->nrows));
+    PetscCall(PetscFree2(b->val, b->line));
+    b->val  = val;
+    b->line = ln;
+    b->cap  = cap;
+  }
+  PetscCall(PetscArraycpy(b->val + b->nrows * cols, v, cols));
+  b->line[b->nrows++] = line;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Checks that a value stored as a real is an integer in [lo, hi). */
+static PetscBool IsIntIn(PetscReal v, PetscReal lo, PetscReal hi) { return (PetscBool)(v == PetscFloorReal(v) && v >= lo && v < hi); }
+
+/* Parses the text of a .pyp file. fname is used in messages only. */
+static PetscErrorCode HylcPatternParse_Private(HylcPattern p, const char fname[], char *text)
+{
+  MPI_Comm     comm = PetscObjectComm((PetscObject)p);
+  PypBlockData blk[NBLK];
+  PetscInt     cur = -1, lineno = 0, nv;
+  char        *s   = text;
+  PetscReal    px, py, r;
+
+  PetscFunctionBegin;
+  PetscCall(PetscMemzero(blk, sizeof(blk)));
+  while (s && *s) {
+    char *eol = strchr(s, '\n'), *c;
+    if (eol) *eol = 0;
+    lineno++;
+    if ((c = strchr(s, '#'))) *c = 0; /* comment */
+    while (isspace((unsigned char)*s)) s++;
+    if (*s == '*') { /* block header */
+      char   name[32];
+      size_t k = 0;
+      s++;
+      while (*s && !isspace((unsigned char)*s) && k < sizeof(name) - 1) name[k++] = *s++;
+      name[k] = 0;
+      cur     = -1;
+      for (int b = 0; b < NBLK; b++) {
+        PetscBool eq;
+        PetscCall(PetscStrcmp(name, BlockName[b], &eq));
+        if (eq) cur = b;
+      }
+      PetscCheck(cur >= 0, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": unknown block '*%s' (known: *pattern *Q *E *RL *RK *RT *RefD1 *RefT)", fname, lineno, name);
+      PetscCheck(!blk[cur].header, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": block '*%s' repeated (first at line %" PetscInt_FMT ")", fname, lineno, name, blk[cur].header);
+      blk[cur].header = lineno;
+      while (isspace((unsigned char)*s)) s++;
+      PetscCheck(!*s, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": unexpected text '%s' after block header '*%s' (comments start with #)", fname, lineno, s, name);
+    } else if (*s) { /* data row */
+      PetscReal v[4];
+      int       ncol = 0;
+      PetscCheck(cur >= 0, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": data before the first block header ('*pattern')", fname, lineno);
+      while (*s) {
+        char  *end;
+        char   tok[64];
+        size_t k = 0;
+        while (s[k] && !isspace((unsigned char)s[k]) && k < sizeof(tok) - 1) {
+          tok[k] = s[k];
+          k++;
+        }
+        tok[k] = 0;
+        PetscCheck(ncol < BlockCols[cur], comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": block *%s (%s) expects %d values per row, found more", fname, lineno, BlockName[cur], BlockHelp[cur], BlockCols[cur]);
+        errno = 0;
+        double x = strtod(tok, &end);
+        PetscCheck(end != tok && *end == 0, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": block *%s: '%s' is not a number", fname, lineno, BlockName[cur], tok);
+        PetscCheck(isfinite(x) && errno != ERANGE, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": block *%s: value '%s' is not finite", fname, lineno, BlockName[cur], tok);
+        v[ncol++] = x;
+        s += k;
+        while (isspace((unsigned char)*s)) s++;
+      }
+      PetscCheck(ncol == BlockCols[cur], comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": block *%s (%s) expects %d values per row, found %d", fname, lineno, BlockName[cur], BlockHelp[cur], BlockCols[cur], ncol);
+      PetscCall(PypBlockAppend(&blk[cur], BlockCols[cur], v, lineno));
+    }
+    s = eol ? eol + 1 : NULL;
+  }
+
+  for (int b = 0; b < NBLK; b++) PetscCheck(blk[b].header, comm, PETSC_ERR_USER_INPUT, "%s: missing block '*%s' (%s)", fname, BlockName[b], BlockHelp[b]);
+  PetscCheck(blk[BLK_PATTERN].nrows == 1, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": block *pattern needs exactly one row 'px py radius N', found %" PetscInt_FMT, fname, blk[BLK_PATTERN].header, blk[BLK_PATTERN].nrows);
+  {
+    const PetscReal *h  = blk[BLK_PATTERN].val;
+    const PetscInt   ln = blk[BLK_PATTERN].line[0];
+    px                  = h[0];
+    py                  = h[1];
+    r                   = h[2];
+    PetscCheck(px > 0 && py > 0, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": periods must be positive, got px = %g, py = %g", fname, ln, (double)px, (double)py);
+    PetscCheck(r > 0, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": yarn radius must be positive, got %g", fname, ln, (double)r);
+    PetscCheck(IsIntIn(h[3], 1, PETSC_MAX_INT), comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": num_vertedges must be a positive integer, got %g", fname, ln, (double)h[3]);
+    nv = (PetscInt)h[3];
+  }
+  for (int b = 1; b < NBLK; b++)
+    PetscCheck(blk[b].nrows == nv, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": block *%s has %" PetscInt_FMT " rows, expected %" PetscInt_FMT " (num_vertedges of *pattern at line %" PetscInt_FMT ")", fname, blk[b].header, BlockName[b], blk[b].nrows, nv, blk[BLK_PATTERN].header);
+
+  PetscCall(HylcPatternAllocate_Private(p, nv));
+  p->px     = px;
+  p->py     = py;
+  p->radius = r;
+  for (PetscInt v = 0; v < nv; v++) {
+    for (int d = 0; d < 3; d++) p->X[3 * v + d] = blk[BLK_Q].val[4 * v + d];
+    p->theta[v]            = blk[BLK_Q].val[4 * v + 3];
+    p->restKappa[2 * v]    = blk[BLK_RK].val[2 * v];
+    p->restKappa[2 * v + 1] = blk[BLK_RK].val[2 * v + 1];
+    p->restTwist[v]        = blk[BLK_RT].val[v];
+    p->refTwist[v]         = blk[BLK_REFT].val[v];
+    p->next[v]             = -1;
+    p->prev[v]             = -1;
+  }
+  /* edges: each row v0 v1 dx dy; RL and RefD1 are indexed by the source vertex v0 */
+  PetscInt *erow;
+  PetscCall(PetscMalloc1(nv, &erow));
+  for (PetscInt k = 0; k < nv; k++) {
+    const PetscReal *e  = blk[BLK_E].val + 4 * k;
+    const PetscInt   ln = blk[BLK_E].line[k];
+    PetscCheck(IsIntIn(e[0], 0, nv) && IsIntIn(e[1], 0, nv), comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": edge vertex index (%g, %g) out of range: vertices are integers in [0, %" PetscInt_FMT ")", fname, ln, (double)e[0], (double)e[1], nv);
+    PetscCheck(e[2] == PetscFloorReal(e[2]) && e[3] == PetscFloorReal(e[3]) && PetscAbsReal(e[2]) < 1e6 && PetscAbsReal(e[3]) < 1e6, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": periodic offsets dx dy must be integers, got (%g, %g)", fname, ln, (double)e[2], (double)e[3]);
+    const PetscInt v0 = (PetscInt)e[0], v1 = (PetscInt)e[1];
+    PetscCheck(p->next[v0] < 0, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": vertex %" PetscInt_FMT " has a second outgoing edge (the first is at line %" PetscInt_FMT "); every vertex needs exactly one outgoing and one incoming edge", fname, ln, v0, blk[BLK_E].line[erow[v0]]);
+    PetscCheck(p->prev[v1] < 0, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": vertex %" PetscInt_FMT " has a second incoming edge (the first is at line %" PetscInt_FMT "); every vertex needs exactly one outgoing and one incoming edge", fname, ln, v1, blk[BLK_E].line[erow[p->prev[v1]]]);
+    p->next[v0]          = v1;
+    p->prev[v1]          = v0;
+    p->shift[2 * v0]     = (PetscInt)e[2];
+    p->shift[2 * v0 + 1] = (PetscInt)e[3];
+    erow[v0]             = k;
+  }
+  /* with nv rows and no vertex repeated as source or target, every vertex has exactly one of each */
+  PetscInt  nwarnRL = 0, nwarnD1 = 0;
+  PetscReal worstRL = 0, worstD1 = 0;
+  for (PetscInt v = 0; v < nv; v++) {
+    const PetscInt ln = blk[BLK_E].line[erow[v]], w = p->next[v];
+    PetscReal      e[3], t[3], d1[3];
+    e[0]              = p->X[3 * w + 0] + p->shift[2 * v] * px - p->X[3 * v + 0];
+    e[1]              = p->X[3 * w + 1] + p->shift[2 * v + 1] * py - p->X[3 * v + 1];
+    e[2]              = p->X[3 * w + 2] - p->X[3 * v + 2];
+    const PetscReal l = HylcNorm3(e);
+    PetscCheck(l > 1e-9 * r, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": edge %" PetscInt_FMT " -> %" PetscInt_FMT " has zero length (%g)", fname, ln, v, w, (double)l);
+    const PetscReal RL = blk[BLK_RL].val[v];
+    PetscCheck(RL > 0, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": rest length of the edge leaving vertex %" PetscInt_FMT " must be positive, got %g", fname, blk[BLK_RL].line[v], v, (double)RL);
+    p->restLength[v] = RL;
+    if (PetscAbsReal(RL / l - 1) > 0.02) {
+      nwarnRL++;
+      worstRL = PetscMax(worstRL, PetscAbsReal(RL / l - 1));
+    }
+    for (int d = 0; d < 3; d++) {
+      t[d]  = e[d] / l;
+      d1[d] = blk[BLK_REFD1].val[3 * v + d];
+    }
+    const PetscReal n1 = HylcNorm3(d1);
+    PetscCheck(n1 > 0, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": reference director of the edge leaving vertex %" PetscInt_FMT " is zero", fname, blk[BLK_REFD1].line[v], v);
+    const PetscReal cosang = PetscAbsReal(HylcDot3(d1, t)) / n1;
+    /* re-orthonormalize only what needs it, so that write + read reproduces the numbers exactly */
+    const PetscReal perp   = (cosang > 1e-10 || PetscAbsReal(n1 - 1) > 1e-10) ? HylcOrthonormalizeDirector(t, d1) : 1.0;
+    PetscCheck(perp >= 0.1, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": reference director of the edge leaving vertex %" PetscInt_FMT " is not perpendicular to its edge (|d1.t|/|d1| = %.4g; its perpendicular part is only %.3g of |d1|)", fname, blk[BLK_REFD1].line[v], v, (double)cosang, (double)perp);
+    if (cosang > 1e-3) {
+      nwarnD1++;
+      worstD1 = PetscMax(worstD1, cosang);
+    }
+    for (int d = 0; d < 3; d++) p->refD1[3 * v + d] = d1[d];
+  }
+  if (nwarnRL) PetscCall(PetscPrintf(comm, "Warning: %s: %" PetscInt_FMT " edges have rest lengths more than 2%% off their current lengths (worst %.3g%%)\n", fname, nwarnRL, (double)(100 * worstRL)));
+  if (nwarnD1) PetscCall(PetscPrintf(comm, "Warning: %s: %" PetscInt_FMT " reference directors were not perpendicular to their edges (worst |d1.t| = %.3g) and were re-orthogonalized\n", fname, nwarnD1, (double)worstD1));
+  PetscCall(PetscFree(erow));
+  for (int b = 0; b < NBLK; b++) PetscCall(PetscFree2(blk[b].val, blk[b].line));
+  PetscCall(HylcPatternBuildLoops_Private(p));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPatternLoadFromString - Parses .pyp text (name is used in messages). Collective; every rank
+  must pass the same text.
+@*/
+PetscErrorCode HylcPatternLoadFromString(HylcPattern p, const char name[], const char text[])
+{
+  char *copy;
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
+  PetscCall(PetscStrallocpy(text, &copy));
+  PetscCall(HylcPatternParse_Private(p, name, copy));
+  PetscCall(PetscFree(copy));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPatternLoad - Reads a .pyp file and validates it; errors name the file, line and problem.
+  Collective: rank 0 reads the file and broadcasts its text.
+@*/
+PetscErrorCode HylcPatternLoad(HylcPattern p, const char fname[])
+{
+  MPI_Comm    comm = PetscObjectComm((PetscObject)p);
+  PetscMPIInt rank;
+  long        len = 0;
+  char       *text;
+  FILE       *fp = NULL;
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
+  PetscCall(PetscLogEventBegin(HYLC_PatternLoad, p, 0, 0, 0));
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0) {
+    fp = fopen(fname, "rb");
+    if (fp && fseek(fp, 0, SEEK_END) == 0) len = ftell(fp);
+    if (fp) rewind(fp);
+    if (!fp || len < 0) len = -1;
+  }
+  PetscCallMPI(MPI_Bcast(&len, 1, MPI_LONG, 0, comm));
+  PetscCheck(len >= 0, comm, PETSC_ERR_FILE_OPEN, "Cannot open pattern file '%s'", fname);
+  PetscCheck(len < (1L << 30), comm, PETSC_ERR_USER_INPUT, "Pattern file '%s' is too large (%ld bytes)", fname, len);
+  PetscCall(PetscMalloc1(len + 1, &text));
+  if (rank == 0) {
+    size_t got = fread(text, 1, (size_t)len, fp);
+    fclose(fp);
+    if ((long)got != len) len = -1;
+  }
+  PetscCallMPI(MPI_Bcast(&len, 1, MPI_LONG, 0, comm));
+  PetscCheck(len >= 0, comm, PETSC_ERR_FILE_READ, "Cannot read pattern file '%s'", fname);
+  PetscCallMPI(MPI_Bcast(text, (PetscMPIInt)len, MPI_CHAR, 0, comm));
+  text[len] = 0;
+  PetscCheck(strlen(text) == (size_t)len, comm, PETSC_ERR_USER_INPUT, "%s: contains a NUL byte at offset %zu: not a text .pyp file", fname, strlen(text));
+  PetscCall(HylcPatternParse_Private(p, fname, text));
+  PetscCall(PetscFree(text));
+  PetscCall(PetscStrncpy(p->filename, fname, sizeof(p->filename)));
+  PetscCall(PetscObjectChangeTypeName((PetscObject)p, HYLCPATTERNFILE));
+  p->setupcalled = PETSC_TRUE;
+  PetscCall(PetscLogEventEnd(HYLC_PatternLoad, p, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPatternWrite - Writes the pattern as .pyp with %.17g, so that reading it back gives the same
+  numbers bit for bit. Edge row k is the edge into vertex k (as in the paper's files). Collective;
+  rank 0 writes.
+@*/
+PetscErrorCode HylcPatternWrite(HylcPattern p, const char fname[])
+{
+  MPI_Comm    comm = PetscObjectComm((PetscObject)p);
+  PetscMPIInt rank;
+  int         ok = 1;
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
+  PetscCheck(p->hasdata, comm, PETSC_ERR_ARG_WRONGSTATE, "Pattern has no data to write");
+  PetscCall(PetscLogEventBegin(HYLC_PatternWrite, p, 0, 0, 0));
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0) {
+    FILE          *fp = fopen(fname, "w");
+    const PetscInt n  = p->nv;
+    if (fp) {
+      fprintf(fp, "*pattern # px py radius num_vertedges\n%.17g %.17g %.17g %d\n\n", (double)p->px, (double)p->py, (double)p->radius, (int)n);
+      fprintf(fp, "*Q # dofs: x y z t\n");
+      for (PetscInt v = 0; v < n; v++) fprintf(fp, "%.17g %.17g %.17g %.17g\n", (double)p->X[3 * v], (double)p->X[3 * v + 1], (double)p->X[3 * v + 2], (double)p->theta[v]);
+      fprintf(fp, "\n*E # edges: v0 v1 dx dy\n");
+      for (PetscInt v = 0; v < n; v++) {
+        const PetscInt u = p->prev[v];
+        fprintf(fp, "%d %d %d %d\n", (int)u, (int)v, (int)p->shift[2 * u], (int)p->shift[2 * u + 1]);
+      }
+      fprintf(fp, "\n*RL # rest lengths\n");
+      for (PetscInt v = 0; v < n; v++) fprintf(fp, "%.17g\n", (double)p->restLength[v]);
+      fprintf(fp, "\n*RK # rest kappas\n");
+      for (PetscInt v = 0; v < n; v++) fprintf(fp, "%.17g %.17g\n", (double)p->restKappa[2 * v], (double)p->restKappa[2 * v + 1]);
+      fprintf(fp, "\n*RT # rest twists\n");
+      for (PetscInt v = 0; v < n; v++) fprintf(fp, "%.17g\n", (double)p->restTwist[v]);
+      fprintf(fp, "\n*RefD1 # reference directors\n");
+      for (PetscInt v = 0; v < n; v++) fprintf(fp, "%.17g %.17g %.17g\n", (double)p->refD1[3 * v], (double)p->refD1[3 * v + 1], (double)p->refD1[3 * v + 2]);
+      fprintf(fp, "\n*RefT # reference twists\n");
+      for (PetscInt v = 0; v < n; v++) fprintf(fp, "%.17g\n", (double)p->refTwist[v]);
+      ok = !ferror(fp);
+      ok = (fclose(fp) == 0) && ok;
+    } else ok = 0;
+  }
+  PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm));
+  PetscCheck(ok, comm, PETSC_ERR_FILE_WRITE, "Cannot write pattern file '%s'", fname);
+  PetscCall(PetscLogEventEnd(HYLC_PatternWrite, p, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

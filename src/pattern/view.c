@@ -1,0 +1,118 @@
+/* HylcPattern viewers: text summary and legacy-VTK polylines. */
+#include <hylc/private/patternimpl.h>
+
+/*@C
+  HylcPatternView - Prints a summary: sizes, periods, radius, each loop's vertex count and winding, yarn
+  length, area density and the minimum distance between non-excluded segments in units of r.
+  Collective.  Options used by the summary: -pattern_density, -pattern_exclude_arc.
+@*/
+PetscErrorCode HylcPatternView(HylcPattern p, PetscViewer viewer)
+{
+  PetscBool iascii;
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
+  if (!viewer) PetscCall(PetscViewerASCIIGetStdout(PetscObjectComm((PetscObject)p), &viewer));
+  PetscCall(PetscObjectTypeCompare((PetscObject)viewer, PETSCVIEWERASCII, &iascii));
+  if (!iascii) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscObjectPrintClassNamePrefixType((PetscObject)p, viewer));
+  PetscCall(PetscViewerASCIIPushTab(viewer));
+  if (p->filename[0]) PetscCall(PetscViewerASCIIPrintf(viewer, "file: %s\n", p->filename));
+  if (!p->hasdata) {
+    PetscCall(PetscViewerASCIIPrintf(viewer, "(no data: not set up)\n"));
+    PetscCall(PetscViewerASCIIPopTab(viewer));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscReal L, R, rhoA, dmin;
+  PetscInt  pair[4];
+  PetscCall(HylcPatternGetYarnLength(p, &L, &R));
+  PetscCall(HylcPatternGetAreaDensity(p, p->viewDensity, &rhoA));
+  PetscCall(HylcPatternMinSegmentDistance(p, p->viewExcludeArc, &dmin, pair));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "vertices: %" PetscInt_FMT "\n", p->nv));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "loops: %" PetscInt_FMT "\n", p->nloops));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "periods: %.9g %.9g\n", (double)p->px, (double)p->py));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "radius: %.9g\n", (double)p->radius));
+  for (PetscInt l = 0; l < p->nloops; l++)
+    PetscCall(PetscViewerASCIIPrintf(viewer, "loop %" PetscInt_FMT ": %" PetscInt_FMT " vertices, winding (%" PetscInt_FMT ", %" PetscInt_FMT "), rest length %.6g m\n", l, p->loopStart[l + 1] - p->loopStart[l], p->winding[2 * l], p->winding[2 * l + 1], (double)p->loopLen[l]));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "yarn length: %.6g m (rest %.6g m)\n", (double)L, (double)R));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "area density: %.6g kg/m^2 (volumetric density %.6g kg/m^3)\n", (double)rhoA, (double)p->viewDensity));
+  if (dmin < PETSC_INFINITY)
+    PetscCall(PetscViewerASCIIPrintf(viewer, "min distance: %.4f r (segments %" PetscInt_FMT " and %" PetscInt_FMT " shifted by (%" PetscInt_FMT ", %" PetscInt_FMT "); same-yarn pairs within %.6g r of rest arc excluded)\n", (double)(dmin / p->radius), pair[0], pair[1], pair[2], pair[3], (double)p->viewExcludeArc));
+  else PetscCall(PetscViewerASCIIPrintf(viewer, "min distance: > 20 r (no segment pair within 20 r)\n"));
+  PetscCall(PetscViewerASCIIPopTab(viewer));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcPatternViewFromOptions(HylcPattern p, PetscObject obj, const char name[])
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
+  PetscCall(PetscObjectViewFromOptions((PetscObject)p, obj, name));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPatternWriteVTK - Writes the tile repeated ntx x nty times as legacy-VTK polylines (one polyline
+  per yarn loop and tile copy, closed onto the next copy), with cell data "loop" and point data "twist"
+  (theta) and field data "radius", for ParaView (use a Tube filter with the radius). Collective; rank 0
+  writes.
+@*/
+PetscErrorCode HylcPatternWriteVTK(HylcPattern p, const char fname[], PetscInt ntx, PetscInt nty)
+{
+  MPI_Comm    comm = PetscObjectComm((PetscObject)p);
+  PetscMPIInt rank;
+  int         ok = 1;
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
+  PetscCheck(p->hasdata, comm, PETSC_ERR_ARG_WRONGSTATE, "Pattern has no data to write");
+  PetscCheck(ntx >= 1 && nty >= 1, comm, PETSC_ERR_USER_INPUT, "VTK tiling must be at least 1x1, got %" PetscInt_FMT "x%" PetscInt_FMT, ntx, nty);
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0) {
+    FILE          *fp     = fopen(fname, "w");
+    const PetscInt ncopy  = ntx * nty;
+    const PetscInt npts   = ncopy * (p->nv + p->nloops);
+    const PetscInt nlines = ncopy * p->nloops;
+    if (fp) {
+      fprintf(fp, "# vtk DataFile Version 3.0\nhylc yarn pattern (%d x %d tiles)\nASCII\nDATASET POLYDATA\n", (int)ntx, (int)nty);
+      fprintf(fp, "FIELD FieldData 1\nradius 1 1 double\n%.10g\n", (double)p->radius);
+      fprintf(fp, "POINTS %d double\n", (int)npts);
+      for (PetscInt i = 0; i < ntx; i++)
+        for (PetscInt j = 0; j < nty; j++)
+          for (PetscInt l = 0; l < p->nloops; l++) {
+            const PetscInt *lv = p->loopVerts + p->loopStart[l], n = p->loopStart[l + 1] - p->loopStart[l];
+            PetscInt        sx = i, sy = j; /* accumulated lattice shift of the unwrapped yarn */
+            for (PetscInt k = 0; k <= n; k++) {
+              const PetscInt v = lv[k % n];
+              fprintf(fp, "%.10g %.10g %.10g\n", (double)(p->X[3 * v] + sx * p->px), (double)(p->X[3 * v + 1] + sy * p->py), (double)p->X[3 * v + 2]);
+              sx += p->shift[2 * v];
+              sy += p->shift[2 * v + 1];
+            }
+          }
+      fprintf(fp, "LINES %d %d\n", (int)nlines, (int)(nlines + npts));
+      PetscInt off = 0;
+      for (PetscInt c = 0; c < ncopy; c++)
+        for (PetscInt l = 0; l < p->nloops; l++) {
+          const PetscInt n = p->loopStart[l + 1] - p->loopStart[l];
+          fprintf(fp, "%d", (int)(n + 1));
+          for (PetscInt k = 0; k <= n; k++) fprintf(fp, " %d", (int)(off + k));
+          fprintf(fp, "\n");
+          off += n + 1;
+        }
+      fprintf(fp, "CELL_DATA %d\nSCALARS loop int 1\nLOOKUP_TABLE default\n", (int)nlines);
+      for (PetscInt c = 0; c < ncopy; c++)
+        for (PetscInt l = 0; l < p->nloops; l++) fprintf(fp, "%d\n", (int)l);
+      fprintf(fp, "POINT_DATA %d\nSCALARS twist double 1\nLOOKUP_TABLE default\n", (int)npts);
+      for (PetscInt c = 0; c < ncopy; c++)
+        for (PetscInt l = 0; l < p->nloops; l++) {
+          const PetscInt *lv = p->loopVerts + p->loopStart[l], n = p->loopStart[l + 1] - p->loopStart[l];
+          for (PetscInt k = 0; k <= n; k++) fprintf(fp, "%.10g\n", (double)p->theta[lv[k % n]]);
+        }
+      ok = !ferror(fp);
+      ok = (fclose(fp) == 0) && ok;
+    } else ok = 0;
+  }
+  PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm));
+  PetscCheck(ok, comm, PETSC_ERR_FILE_WRITE, "Cannot write VTK file '%s'", fname);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
