@@ -14,3 +14,14 @@ PETSC_EXTERN PetscLogEvent HYLC_PatternLoad, HYLC_PatternWrite, HYLC_PatternGene
 
 /* Registers hylc's classes and log events (idempotent; called by every XCreate). Not collective. */
 PETSC_EXTERN PetscErrorCode HylcInitializePackage(void);
+
+/* Installs hylc's error handler for programs: errors in user input (bad files, options, values) are
+   reported as one line "hylc: error: <message>" (on rank 0 of the communicator the error was raised
+   on), other errors with PETSc's full traceback. -hylc_traceback keeps PETSc's handler for all errors.
+   Call right after PetscInitialize(). Not collective. */
+PETSC_EXTERN PetscErrorCode HylcPushErrorHandler(void);
+
+/* Ends a program: on success PetscFinalize() and 0; on error (ierr != 0) the error code, after
+   PetscFinalize() on one rank or MPI_Abort() on several (other ranks may wait in a collective).
+   Programs write: ierr = Run(); return HylcMainFinalize(ierr); */
+PETSC_EXTERN int HylcMainFinalize(PetscErrorCode);

@@ -1,18 +1,18 @@
 static const char help[] = "hylc-pattern: load or generate a periodic yarn pattern, print a summary, and write it as .pyp or VTK.\n\n"
-                           "  hylc-pattern -pattern_file f.pyp                      summary of a pattern file\n"
-                           "  hylc-pattern -pattern_type satin -pattern_output s.pyp  generate and write\n"
+                           "  hylc-pattern -pattern_file f.pyp                         summary of a pattern file\n"
+                           "  hylc-pattern -pattern_type satin -pattern_output s.pyp   generate and write\n"
                            "  hylc-pattern -pattern_file f.pyp -pattern_vtk f.vtk -pattern_vtk_tiles 3,3\n\n";
 
 #include <hylc/pattern.h>
 
-int main(int argc, char **argv)
+static PetscErrorCode Run(void)
 {
   HylcPattern pat;
   char        out[PETSC_MAX_PATH_LEN] = "", vtk[PETSC_MAX_PATH_LEN] = "";
   PetscInt    tiles[2] = {1, 1}, nt = 2;
   PetscBool   flg;
 
-  PetscCall(PetscInitialize(&argc, &argv, NULL, help));
+  PetscFunctionBeginUser;
   PetscCall(HylcPatternCreate(PETSC_COMM_WORLD, &pat));
   PetscCall(HylcPatternSetFromOptions(pat));
   PetscOptionsBegin(PETSC_COMM_WORLD, NULL, "hylc-pattern output options", "hylc-pattern");
@@ -32,6 +32,12 @@ int main(int argc, char **argv)
     PetscCall(PetscPrintf(PETSC_COMM_WORLD, "wrote %s (%" PetscInt_FMT " x %" PetscInt_FMT " tiles)\n", vtk, tiles[0], tiles[1]));
   }
   PetscCall(HylcPatternDestroy(&pat));
-  PetscCall(PetscFinalize());
-  return 0;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+int main(int argc, char **argv)
+{
+  PetscCall(PetscInitialize(&argc, &argv, NULL, help));
+  PetscCall(HylcPushErrorHandler());
+  return HylcMainFinalize(Run());
 }

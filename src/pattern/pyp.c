@@ -38,6 +38,13 @@ static PetscErrorCode PypBlockAppend(PypBlockData *b, int cols, const PetscReal 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Formats a number with C's printf (PETSc's printf appends '.' to integral %g values). */
+static const char *Num(char buf[32], PetscReal v)
+{
+  snprintf(buf, 32, "%.17g", (double)v);
+  return buf;
+}
+
 /* Checks that a value stored as a real is an integer in [lo, hi). */
 static PetscBool IsIntIn(PetscReal v, PetscReal lo, PetscReal hi) { return (PetscBool)(v == PetscFloorReal(v) && v >= lo && v < hi); }
 
@@ -49,6 +56,7 @@ static PetscErrorCode HylcPatternParse_Private(HylcPattern p, const char fname[]
   PetscInt     cur = -1, lineno = 0, nv;
   char        *s   = text;
   PetscReal    px, py, r;
+  char         b0[32], b1[32];
 
   PetscFunctionBegin;
   PetscCall(PetscMemzero(blk, sizeof(blk)));
@@ -113,7 +121,7 @@ static PetscErrorCode HylcPatternParse_Private(HylcPattern p, const char fname[]
     r                   = h[2];
     PetscCheck(px > 0 && py > 0, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": periods must be positive, got px = %g, py = %g", fname, ln, (double)px, (double)py);
     PetscCheck(r > 0, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": yarn radius must be positive, got %g", fname, ln, (double)r);
-    PetscCheck(IsIntIn(h[3], 1, PETSC_MAX_INT), comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": num_vertedges must be a positive integer, got %g", fname, ln, (double)h[3]);
+    PetscCheck(IsIntIn(h[3], 1, PETSC_MAX_INT), comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": num_vertedges must be a positive integer, got %s", fname, ln, Num(b0, h[3]));
     nv = (PetscInt)h[3];
   }
   for (int b = 1; b < NBLK; b++)
@@ -139,8 +147,8 @@ static PetscErrorCode HylcPatternParse_Private(HylcPattern p, const char fname[]
   for (PetscInt k = 0; k < nv; k++) {
     const PetscReal *e  = blk[BLK_E].val + 4 * k;
     const PetscInt   ln = blk[BLK_E].line[k];
-    PetscCheck(IsIntIn(e[0], 0, nv) && IsIntIn(e[1], 0, nv), comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": edge vertex index (%g, %g) out of range: vertices are integers in [0, %" PetscInt_FMT ")", fname, ln, (double)e[0], (double)e[1], nv);
-    PetscCheck(e[2] == PetscFloorReal(e[2]) && e[3] == PetscFloorReal(e[3]) && PetscAbsReal(e[2]) < 1e6 && PetscAbsReal(e[3]) < 1e6, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": periodic offsets dx dy must be integers, got (%g, %g)", fname, ln, (double)e[2], (double)e[3]);
+    PetscCheck(IsIntIn(e[0], 0, nv) && IsIntIn(e[1], 0, nv), comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": edge vertex index (%s, %s) out of range: vertices are integers in [0, %" PetscInt_FMT ")", fname, ln, Num(b0, e[0]), Num(b1, e[1]), nv);
+    PetscCheck(e[2] == PetscFloorReal(e[2]) && e[3] == PetscFloorReal(e[3]) && PetscAbsReal(e[2]) < 1e6 && PetscAbsReal(e[3]) < 1e6, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": periodic offsets dx dy must be integers, got (%s, %s)", fname, ln, Num(b0, e[2]), Num(b1, e[3]));
     const PetscInt v0 = (PetscInt)e[0], v1 = (PetscInt)e[1];
     PetscCheck(p->next[v0] < 0, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": vertex %" PetscInt_FMT " has a second outgoing edge (the first is at line %" PetscInt_FMT "); every vertex needs exactly one outgoing and one incoming edge", fname, ln, v0, blk[BLK_E].line[erow[v0]]);
     PetscCheck(p->prev[v1] < 0, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": vertex %" PetscInt_FMT " has a second incoming edge (the first is at line %" PetscInt_FMT "); every vertex needs exactly one outgoing and one incoming edge", fname, ln, v1, blk[BLK_E].line[erow[p->prev[v1]]]);
@@ -246,7 +254,7 @@ PetscErrorCode HylcPatternLoad(HylcPattern p, const char fname[])
   PetscCheck(strlen(text) == (size_t)len, comm, PETSC_ERR_USER_INPUT, "%s: contains a NUL byte at offset %zu: not a text .pyp file", fname, strlen(text));
   PetscCall(HylcPatternParse_Private(p, fname, text));
   PetscCall(PetscFree(text));
-  PetscCall(PetscStrncpy(p->filename, fname, sizeof(p->filename)));
+  if (fname != p->filename) PetscCall(PetscStrncpy(p->filename, fname, sizeof(p->filename)));
   PetscCall(PetscObjectChangeTypeName((PetscObject)p, HYLCPATTERNFILE));
   p->setupcalled = PETSC_TRUE;
   PetscCall(PetscLogEventEnd(HYLC_PatternLoad, p, 0, 0, 0));
