@@ -76,18 +76,29 @@ static int EdgeFrameHd(const double e[3], const double ts[3], const double d1s[3
     for (int j = 0, k = 0; j < 3; j++)
       for (int m = j; m < 3; m++, k++) t[i].h[k] = -((i == m) * tv[j] + (j == m) * tv[i] + (i == j) * tv[m] - 3.0 * tv[i] * tv[j] * tv[m]) * il2;
   }
-  Hd3 chi = Hd3Const(1.0), p1 = Hd3Const(0.0), p2 = Hd3Const(0.0);
+  Hd3 chi, p1, p2, ichi, f1, f2, sum;
+  memset(&chi, 0, sizeof chi);
+  memset(&p1, 0, sizeof p1);
+  memset(&p2, 0, sizeof p2);
+  chi.v = 1.0;
   for (int i = 0; i < 3; i++) {
-    chi = Hd3Axpy(ts[i], t[i], chi);
-    p1  = Hd3Axpy(d1s[i], t[i], p1);
-    p2  = Hd3Axpy(d2s[i], t[i], p2);
+    Hd3Axpy(&chi, ts[i], &t[i]);
+    Hd3Axpy(&p1, d1s[i], &t[i]);
+    Hd3Axpy(&p2, d2s[i], &t[i]);
   }
   if (!(chi.v > CHI_MIN)) return -1;
-  const Hd3 ichi = Hd3Recip(chi), f1 = Hd3Mul(p1, ichi), f2 = Hd3Mul(p2, ichi);
-  for (int i = 0; i < 3; i++) {
-    const Hd3 s = Hd3AddConst(t[i], ts[i]);
-    d1[i]       = Hd3AddConst(Hd3Scale(-1.0, Hd3Mul(f1, s)), d1s[i]);
-    d2[i]       = Hd3AddConst(Hd3Scale(-1.0, Hd3Mul(f2, s)), d2s[i]);
+  Hd3Recip(&ichi, &chi);
+  Hd3Mul(&f1, &p1, &ichi);
+  Hd3Mul(&f2, &p2, &ichi);
+  for (int i = 0; i < 3; i++) { /* d = ds - f (ts + t) */
+    sum = t[i];
+    sum.v += ts[i];
+    Hd3Mul(&d1[i], &f1, &sum);
+    Hd3Scale(&d1[i], -1.0);
+    d1[i].v += d1s[i];
+    Hd3Mul(&d2[i], &f2, &sum);
+    Hd3Scale(&d2[i], -1.0);
+    d2[i].v += d2s[i];
   }
   return 0;
 }
@@ -238,25 +249,48 @@ int HylcRodBendTwist(const double q[11], const HylcRodBendTwistRef *ref, const H
   if (StoredFrame(ref->te, ref->d1e, tse, d1se, d2se) || StoredFrame(ref->tf, ref->d1f, tsf, d1sf, d2sf) || EdgeFrameHd(e, tse, d1se, d2se, te, d1e, d2e) || EdgeFrameHd(f, tsf, d1sf, d2sf, tf, d1f, d2f)) goto degenerate;
 
   /* vertex quantities over (e, f) */
-  const Hd6 c = Hd6MixedDot3(te, tf), P1 = Hd6MixedDot3(d1e, tf), P2 = Hd6MixedDot3(d2e, tf);
-  const Hd6 Q1 = Hd6MixedDot3(te, d1f), Q2 = Hd6MixedDot3(te, d2f);
+  Hd6 c, P1, P2, Q1, Q2, D11, D12, ichi, U, k1e, k2e, k1f, k2f, C, S, T1, T2, m;
+  Hd6MixedDot3(&c, te, tf);
   if (!(1.0 + c.v > CHI_MIN)) goto degenerate;
-  const Hd6 ichi = Hd6Recip(Hd6AddConst(c, 1.0));
-  const Hd6 A1 = Hd6Scale(-2.0, Hd6Mul(P2, ichi)), A2 = Hd6Scale(2.0, Hd6Mul(P1, ichi)); /* kb . d1e, kb . d2e */
-  const Hd6 B1 = Hd6Scale(2.0, Hd6Mul(Q2, ichi)), B2 = Hd6Scale(-2.0, Hd6Mul(Q1, ichi)); /* kb . d1f, kb . d2f */
+  Hd6MixedDot3(&P1, d1e, tf);
+  Hd6MixedDot3(&P2, d2e, tf);
+  Hd6MixedDot3(&Q1, te, d1f);
+  Hd6MixedDot3(&Q2, te, d2f);
+  Hd6MixedDot3(&D11, d1e, d1f);
+  Hd6MixedDot3(&D12, d1e, d2f);
+  ichi   = c;
+  ichi.v = 1.0 + c.v;
+  Hd6Recip(&ichi, &ichi);
 
-  /* per-edge halves of the averaged curvature: kappa1 = k1e + k1f, kappa2 = k2e + k2f with
-     k1j = 1/2 kb . m2^j = 1/2(-sin kb.d1 + cos kb.d2),  k2j = -1/2 kb . m1^j = -1/2(cos kb.d1 + sin kb.d2) */
+  /* per-edge halves of the averaged curvature, kappa1 = k1e + k1f, kappa2 = k2e + k2f:
+     k1e = 1/2 kb . m2^e = (t^f . m1^e)/chi,  k2e = -1/2 kb . m1^e = (t^f . m2^e)/chi,
+     k1f = 1/2 kb . m2^f = -(t^e . m1^f)/chi, k2f = -1/2 kb . m1^f = -(t^e . m2^f)/chi */
   const double cse = cos(q[3]), sne = sin(q[3]), csf = cos(q[7]), snf = sin(q[7]);
-  const Hd6    k1e = Hd6Axpy(-0.5 * sne, A1, Hd6Scale(0.5 * cse, A2)), k2e = Hd6Axpy(-0.5 * cse, A1, Hd6Scale(-0.5 * sne, A2));
-  const Hd6    k1f = Hd6Axpy(-0.5 * snf, B1, Hd6Scale(0.5 * csf, B2)), k2f = Hd6Axpy(-0.5 * csf, B1, Hd6Scale(-0.5 * snf, B2));
+  Hd6Lin(&U, cse, &P1, sne, &P2);
+  Hd6Mul(&k1e, &U, &ichi);
+  Hd6Lin(&U, -sne, &P1, cse, &P2);
+  Hd6Mul(&k2e, &U, &ichi);
+  Hd6Lin(&U, -csf, &Q1, -snf, &Q2);
+  Hd6Mul(&k1f, &U, &ichi);
+  Hd6Lin(&U, snf, &Q1, -csf, &Q2);
+  Hd6Mul(&k2f, &U, &ichi);
 
-  /* reference twist */
-  const Hd6 D11 = Hd6MixedDot3(d1e, d1f), D12 = Hd6MixedDot3(d1e, d2f);
-  const Hd6 Cc  = Hd6Sub(Hd6Sub(Hd6Mul(c, D11), Hd6Mul(P1, Q1)), Hd6Mul(Hd6Mul(P2, Q2), ichi));
-  const Hd6 Ss  = Hd6Scale(-1.0, Hd6Add(Hd6Sub(Hd6Mul(c, D12), Hd6Mul(P1, Q2)), Hd6Mul(Hd6Mul(P2, Q1), ichi)));
-  Hd6       m   = Hd6Atan2(Ss, Cc);
-  m.v           = HylcAngleNear(m.v, ref->mref);
+  /* reference twist m = atan2(S, C) */
+  Hd6Mul(&C, &c, &D11);
+  Hd6Mul(&T1, &P1, &Q1);
+  Hd6Axpy(&C, -1.0, &T1);
+  Hd6Mul(&T1, &P2, &Q2);
+  Hd6Mul(&T2, &T1, &ichi);
+  Hd6Axpy(&C, -1.0, &T2);
+  Hd6Mul(&S, &c, &D12);
+  Hd6Mul(&T1, &P1, &Q2);
+  Hd6Axpy(&S, -1.0, &T1);
+  Hd6Mul(&T1, &P2, &Q1);
+  Hd6Mul(&T2, &T1, &ichi);
+  Hd6Axpy(&S, 1.0, &T2);
+  Hd6Scale(&S, -1.0);
+  Hd6Atan2(&m, &S, &C);
+  m.v = HylcAngleNear(m.v, ref->mref);
 
   const int    want_h = H != NULL;
   const double il     = 1.0 / ref->lbar;
