@@ -78,10 +78,11 @@ void HylcContactPenalty(double delta, double *f, double *df, double *d2f)
     if (d2f) *d2f = 0;
     return;
   }
-  const double i2 = 1.0 / (delta * delta);
-  if (f) *f = i2 + delta * delta - 2.0;
-  if (df) *df = -2.0 * i2 / delta + 2.0 * delta;
-  if (d2f) *d2f = 6.0 * i2 * i2 + 2.0;
+  /* cancellation-free forms: f = ((1 - delta^2)/delta)^2, f' = -2 (1 - delta^2)(1 + delta^2)/delta^3 */
+  const double id = 1.0 / delta, om = (1.0 - delta) * (1.0 + delta), u = om * id;
+  if (f) *f = u * u;
+  if (df) *df = -2.0 * u * (1.0 + delta * delta) * id * id;
+  if (d2f) *d2f = 6.0 * id * id * id * id + 2.0;
 }
 
 /* ---------------------------------------------------------------- helpers */
@@ -149,10 +150,10 @@ double HylcContactQuadrature(const double a0[3], const double a1[3], const doubl
       const double d2 = HylcDot3(v, v);
       if (!(d2 < r4sq)) continue;
       const double ww = wg[h]; /* w_g applied per row below */
-      const double dd = sqrt(d2), del = dd * i2r, idel2 = 1.0 / (del * del);
-      Eg += ww * (idel2 + del * del - 2.0);
+      const double dd = sqrt(d2), del = dd * i2r, idel = 1.0 / del, u = (1.0 - del) * (1.0 + del) * idel;
+      Eg += ww * u * u; /* f = ((1 - del^2)/del)^2, see HylcContactPenalty */
       if (!wantg && !wantH) continue;
-      const double fp = -2.0 * idel2 / del + 2.0 * del;
+      const double idel2 = idel * idel, fp = -2.0 * u * (1.0 + del * del) * idel2;
       /* gradient wrt v: fp/(2r) v/|v| */
       const double cg = ww * fp * i2r / dd;
       for (int k = 0; k < 3; k++) {
