@@ -123,7 +123,7 @@ double HylcContactQuadrature(const double a0[3], const double a1[3], const doubl
 
   HylcSub3(a1, a0, ea);
   HylcSub3(b1, b0, eb);
-  const double i2r = 0.5 / r, r4sq = 4.0 * r * r;
+  const double i2r = 0.5 / r, r4sq = 4.0 * r * r, i4r2 = i2r * i2r, r2 = 2.0 * r;
   /* points q_h of segment b, computed once */
   double q[HYLC_GAUSS_MAX][3];
   for (int h = 0; h < n; h++)
@@ -149,22 +149,23 @@ double HylcContactQuadrature(const double a0[3], const double a1[3], const doubl
       HylcSub3(p, q[h], v);
       const double d2 = HylcDot3(v, v);
       if (!(d2 < r4sq)) continue;
-      const double ww = wg[h]; /* w_g applied per row below */
-      const double dd = sqrt(d2), del = dd * i2r, idel = 1.0 / del, u = (1.0 - del) * (1.0 + del) * idel;
-      Eg += ww * u * u; /* f = ((1 - del^2)/del)^2, see HylcContactPenalty */
+      /* one division per term: with id = 1/|v|, delta = |v|/(2r), 1/delta = 2r id, and
+         f = ((1 - delta^2)/delta)^2, f' = -2 (1 - delta^2)(1 + delta^2)/delta^3 (see HylcContactPenalty) */
+      const double ww = wg[h]; /* w_g is applied per row below */
+      const double id = 1.0 / sqrt(d2), p2 = d2 * i4r2, idel = r2 * id, u = (1.0 - p2) * idel;
+      Eg += ww * u * u;
       if (!wantg && !wantH) continue;
-      const double idel2 = idel * idel, fp = -2.0 * u * (1.0 + del * del) * idel2;
-      /* gradient wrt v: fp/(2r) v/|v| */
-      const double cg = ww * fp * i2r / dd;
+      const double idel2 = idel * idel, fp = -2.0 * u * (1.0 + p2) * idel2;
+      /* gradient wrt v: f'/(2r) v/|v| */
+      const double be = fp * i2r * id, cg = ww * be;
       for (int k = 0; k < 3; k++) {
         g0[k] += cg * v[k];
         gt[k] += cg * t * v[k];
       }
       if (!wantH) continue;
       /* Hessian wrt v: beta I + (alpha - beta) v v^T / |v|^2, alpha = f''/(4r^2), beta = f'/(2r |v|) */
-      const double fpp = 6.0 * idel2 * idel2 + 2.0;
-      const double al = fpp * i2r * i2r, be = fp * i2r / dd, c = (al - be) / d2;
-      const double Hv[6] = {ww * (be + c * v[0] * v[0]), ww * (be + c * v[1] * v[1]), ww * (be + c * v[2] * v[2]), ww * c * v[0] * v[1], ww * c * v[0] * v[2], ww * c * v[1] * v[2]};
+      const double al = (6.0 * idel2 * idel2 + 2.0) * i4r2, c = ww * (al - be) * id * id, wb = ww * be;
+      const double Hv[6] = {wb + c * v[0] * v[0], wb + c * v[1] * v[1], wb + c * v[2] * v[2], c * v[0] * v[1], c * v[0] * v[2], c * v[1] * v[2]};
       SymAxpy(1.0, Hv, S0);
       SymAxpy(t, Hv, S1);
       SymAxpy(t * t, Hv, S2);
