@@ -50,9 +50,10 @@ double HylcContactQuadrature(const double a0[3], const double a1[3], const doubl
    - exactly (or, below a relative tolerance 1e-12 on the normal-equation determinant, nearly) parallel
      segments whose projections overlap have a whole segment of closest-point pairs; d is then not
      differentiable (its gradient depends on which pair is chosen). The kernel takes the pair that
-     HylcSegmentSegmentDistance returns (s = 0 and t solved, or the clamped variant), treats s as fixed
-     and returns the gradient and Hessian of the distance from that point of a to segment b: the
-     derivative along directions that keep the chosen point closest (a one-sided derivative, an element
+     HylcSegmentSegmentDistance returns (s = 0 and t solved; if t clamps, s re-solved against that
+     endpoint), treats every parameter not strictly inside (0,1) as fixed and returns the gradient and
+     Hessian of the distance from the chosen point to the other segment: the derivative along directions
+     that keep the chosen point closest (a one-sided derivative, an element
      of the generalized gradient). Energy is always exact and continuous.
    - configurations where an unconstrained minimiser lies exactly on the boundary of [0,1]^2 (kinks of
      d) are handled as clamped.

@@ -58,10 +58,14 @@ static void FDErrors(const Model *m, const double x0[12], double h, double *errg
   HYLC_CHECK(asym <= 1e-13 * sH, "Hessian not symmetric: %g (max %g)", asym, sH);
 }
 
+static double maxerr_g, maxerr_H; /* worst FD errors seen (printed with HYLC_TEST_VERBOSE) */
+
 #define CHECK_FD(m, x, h, label) \
   do { \
     double eg_, eH_; \
     FDErrors(m, x, h, &eg_, &eH_); \
+    maxerr_g = fmax(maxerr_g, eg_); \
+    maxerr_H = fmax(maxerr_H, eH_); \
     HYLC_CHECK(eg_ < 1e-6, "%s (%s): gradient FD rel err %g", label, (m)->v == QUAD ? "quad" : "closest", eg_); \
     HYLC_CHECK(eH_ < 1e-5, "%s (%s): Hessian FD rel err %g", label, (m)->v == QUAD ? "quad" : "closest", eH_); \
   } while (0)
@@ -437,5 +441,6 @@ int main(void)
     bad.n     = 0;
     HYLC_CHECK(isnan(Eval(&bad, x, NULL, NULL)), "n = 0 not rejected");
   }
+  if (getenv("HYLC_TEST_VERBOSE")) printf("worst FD relative errors: gradient %.2e, Hessian %.2e\n", maxerr_g, maxerr_H);
   return HYLC_TEST_RESULT();
 }
