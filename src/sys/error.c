@@ -43,5 +43,14 @@ int HylcMainFinalize(PetscErrorCode ierr)
     PetscFinalize();
     return (int)ierr;
   }
+  /* misspelt options must not pass silently */
+  PetscInt n = 0;
+  char   **names = NULL, **values = NULL;
+  if (!PetscOptionsLeftGet(NULL, &n, &names, &values)) {
+    PetscMPIInt rank = 0;
+    MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+    for (PetscInt i = 0; i < n && !rank; i++) fprintf(stderr, "hylc: warning: option -%s%s%s was not used (misspelt, or not for this program?)\n", names[i], values[i] ? " " : "", values[i] ? values[i] : "");
+    PetscOptionsLeftRestore(NULL, &n, &names, &values);
+  }
   return (int)PetscFinalize();
 }
