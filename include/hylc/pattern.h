@@ -33,15 +33,15 @@ typedef const char *HylcPatternType;
 
 /* Parameters of the procedural generators (lengths in metres; 0 or negative = default). */
 typedef struct {
-  PetscReal radius;   /* yarn radius r (default 1e-3 m) */
-  PetscReal spacing;  /* wovens: distance between neighbouring parallel yarns (default 4 r) */
-  PetscReal wale;     /* knits: stitch width along x (default: see docs/patterns.md) */
-  PetscReal course;   /* knits: course height along y (default: see docs/patterns.md) */
-  PetscReal depth;    /* knits: z amplitude of the loops (default: see docs/patterns.md) */
-  PetscReal gap;      /* wovens: clearance at crossings relative to 2r (default 0.1: centrelines 2.2 r apart) */
-  PetscReal seglen;   /* target edge length (default r) */
-  PetscInt  size[2];  /* tile size in threads (wovens: x-yarns, y-yarns) or stitches (knits: wales, courses);
-                         0 = the smallest repeat of the pattern */
+  PetscReal radius;  /* yarn radius r (default 1e-3 m) */
+  PetscReal spacing; /* wovens: distance between neighbouring parallel yarns (default 4 r) */
+  PetscReal wale;    /* knits: stitch width along x (default: see docs/patterns.md) */
+  PetscReal course;  /* knits: course height along y (default: see docs/patterns.md) */
+  PetscReal depth;   /* knits: z amplitude of the loops (default: see docs/patterns.md) */
+  PetscReal gap;     /* wovens: clearance at crossings relative to 2r (default 0.1: centrelines 2.2 r apart) */
+  PetscReal seglen;  /* target edge length (default r) */
+  PetscInt  size[2]; /* tile size in threads (wovens: x-yarns, y-yarns) or stitches (knits: wales, courses);
+                        0 = the smallest repeat of the pattern */
 } HylcPatternGenParams;
 
 /* The data arrays of a pattern (read-only views; see the layout above). */

@@ -3,7 +3,7 @@
 #include <petscsys.h>
 
 #if !defined(PETSC_SUCCESS) /* PETSc < 3.19 */
-  #define PETSC_SUCCESS ((PetscErrorCode)0)
+#  define PETSC_SUCCESS ((PetscErrorCode)0)
 #endif
 
 #define HYLC_VERSION_STRING "0.1.0"

@@ -166,9 +166,12 @@ static void SelectKth(int *perm, const double *cent, int axis, int lo, int hi, i
         j--;
       }
     }
-    if (k <= j) hi = j;
-    else if (k >= i) lo = i;
-    else break;
+    if (k <= j)
+      hi = j;
+    else if (k >= i)
+      lo = i;
+    else
+      break;
   }
 #undef KEY
 }
@@ -207,12 +210,14 @@ static void UpdateGhostFlags(HylcBVH bvh)
 {
   for (int m = bvh->nnode - 1; m >= 0; m--) {
     BVHNode *nd = &bvh->nodes[m];
-    if (!bvh->ghost) nd->allghost = 0;
+    if (!bvh->ghost)
+      nd->allghost = 0;
     else if (nd->left < 0) {
       nd->allghost = 1;
       for (int k = nd->start; k < nd->start + nd->count; k++)
         if (!bvh->ghost[bvh->perm[k]]) nd->allghost = 0;
-    } else nd->allghost = bvh->nodes[nd->left].allghost && bvh->nodes[nd->right].allghost;
+    } else
+      nd->allghost = bvh->nodes[nd->left].allghost && bvh->nodes[nd->right].allghost;
   }
 }
 
@@ -222,8 +227,10 @@ int HylcBVHRefit(HylcBVH bvh, const double *x, const int *edges)
   for (int m = 0; m < bvh->nseg; m++) SegmentBox(x, edges, bvh->perm[m], bvh->margin, bvh->sbox + 6 * (size_t)m);
   for (int m = bvh->nnode - 1; m >= 0; m--) {
     BVHNode *nd = &bvh->nodes[m];
-    if (nd->left < 0) NodeBoxFromSegments(bvh, nd);
-    else NodeBoxFromChildren(bvh->nodes, nd);
+    if (nd->left < 0)
+      NodeBoxFromSegments(bvh, nd);
+    else
+      NodeBoxFromChildren(bvh->nodes, nd);
   }
   return 0;
 }

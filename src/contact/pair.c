@@ -97,10 +97,9 @@ static inline void SymAxpy(double a, const double S[6], double T[6])
 static inline void AddBlockSym(double H[144], int I, int J, double alpha, const double S[6])
 {
   const double M[3][3] = {
-    {S[0], S[3], S[4]},
-    {S[3], S[1], S[5]},
-    {S[4], S[5], S[2]}
-  };
+      {S[0], S[3], S[4]},
+      {S[3], S[1], S[5]},
+      {S[4], S[5], S[2]}};
   for (int i = 0; i < 3; i++)
     for (int j = 0; j < 3; j++) {
       H[(3 * I + i) * 12 + 3 * J + j] += alpha * M[i][j];
@@ -135,8 +134,8 @@ double HylcContactQuadrature(const double a0[3], const double a1[3], const doubl
        T0 = sum ww Hv, U1 = sum ww s Hv, U2 = sum ww s^2 Hv, T1 = sum ww t Hv, T2 = sum ww t^2 Hv,
        M = sum ww s t Hv
      The 12-vector and 12x12 blocks follow from v = (1-s) a0 + s a1 - (1-t) b0 - t b1. */
-  double E = 0, G0[3] = {0, 0, 0}, Gs[3] = {0, 0, 0}, Gt[3] = {0, 0, 0};
-  double T0[6] = {0}, U1[6] = {0}, U2[6] = {0}, T1[6] = {0}, T2[6] = {0}, M[6] = {0};
+  double    E = 0, G0[3] = {0, 0, 0}, Gs[3] = {0, 0, 0}, Gt[3] = {0, 0, 0};
+  double    T0[6] = {0}, U1[6] = {0}, U2[6] = {0}, T1[6] = {0}, T2[6] = {0}, M[6] = {0};
   const int wantg = g != NULL, wantH = H != NULL;
 
   for (int gi = 0; gi < n; gi++) {
@@ -261,8 +260,8 @@ double HylcContactClosestPoint(const double a0[3], const double a1[3], const dou
 
     /* unclamped parameters and their mixed derivatives G_xu (12 each) */
     double    Gx[2][12], Guu[2][2];
-    int       nu = 0, which[2];
-    const int sfree = s > 0.0 && s < 1.0, tfree = t > 0.0 && t < 1.0;
+    int       nu    = 0, which[2];
+    const int sfree = s > 0.0 && s<1.0, tfree = t> 0.0 && t < 1.0;
     if (sfree) which[nu++] = 0;
     if (tfree) which[nu++] = 1;
     for (int u = 0; u < nu; u++) {
@@ -285,9 +284,8 @@ double HylcContactClosestPoint(const double a0[3], const double a1[3], const dou
     }
     const double aa = HylcDot3(ea, ea), bb = HylcDot3(eb, eb), ab = HylcDot3(ea, eb);
     double       Ginv[2][2] = {
-      {0, 0},
-      {0, 0}
-    };
+              {0, 0},
+              {0, 0}};
     if (nu == 1) {
       Ginv[0][0] = 1.0 / (which[0] == 0 ? aa : bb);
     } else if (nu == 2) {

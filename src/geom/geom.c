@@ -50,9 +50,12 @@ void HylcAnyPerpendicular(const double t[3], double d[3])
   /* cross with the coordinate axis least aligned with t */
   const double ax = fabs(t[0]), ay = fabs(t[1]), az = fabs(t[2]);
   double       e[3] = {0, 0, 0};
-  if (ax <= ay && ax <= az) e[0] = 1;
-  else if (ay <= az) e[1] = 1;
-  else e[2] = 1;
+  if (ax <= ay && ax <= az)
+    e[0] = 1;
+  else if (ay <= az)
+    e[1] = 1;
+  else
+    e[2] = 1;
   HylcCross3(t, e, d);
   HylcNormalize3(d);
 }
@@ -81,8 +84,8 @@ void HylcMaterialFrame(const double d1[3], const double d2[3], double theta, dou
   const double c = cos(theta), s = sin(theta);
   for (int i = 0; i < 3; i++) {
     const double a = d1[i], b = d2[i];
-    m1[i]          = c * a + s * b;
-    m2[i]          = -s * a + c * b;
+    m1[i] = c * a + s * b;
+    m2[i] = -s * a + c * b;
   }
 }
 

@@ -124,7 +124,7 @@ PetscErrorCode HylcPatternMinSegmentDistance(HylcPattern p, PetscReal arcFactor,
       for (PetscInt a = 0; a < nv; a++) {
         const PetscReal *A = seg + 6 * a;
         for (PetscInt b = (sx == 0 && sy == 0) ? a + 1 : 0; b < nv; b++) {
-          const PetscReal *B = seg + 6 * b;
+          const PetscReal *B     = seg + 6 * b;
           PetscReal        q0[3] = {B[0] + ox, B[1] + oy, B[2]}, q1[3] = {B[3] + ox, B[4] + oy, B[5]};
           /* box rejection at the current best distance */
           const PetscReal lim = PetscMin(best, cut);

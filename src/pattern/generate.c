@@ -125,9 +125,12 @@ static PetscReal WeaveHeight(const PetscInt state[], PetscInt n, PetscReal s, Pe
   const PetscReal D = PetscSqrtReal(0.25 * s * s + h * h), alpha = PetscAtan2Real(h, 0.5 * s);
   const PetscReal phi = PetscAsinReal(R / D) - alpha, a = R * PetscSinReal(phi);
   PetscReal       z;
-  if (t <= a) z = -h + PetscSqrtReal(R * R - t * t);
-  else if (t >= s - a) z = h - PetscSqrtReal(R * R - (s - t) * (s - t));
-  else z = -PetscTanReal(phi) * (t - 0.5 * s);
+  if (t <= a)
+    z = -h + PetscSqrtReal(R * R - t * t);
+  else if (t >= s - a)
+    z = h - PetscSqrtReal(R * R - (s - t) * (s - t));
+  else
+    z = -PetscTanReal(phi) * (t - 0.5 * s);
   return s0 * z;
 }
 
@@ -144,13 +147,13 @@ PetscErrorCode HylcPatternGenerateWoven_Private(HylcPattern p, HylcPatternType t
 
   PetscFunctionBegin;
   PetscCall(PetscStrcmp(type, HYLCPATTERNSATIN, &satin));
-  rep                = type[0] == 'p' ? 2 : (satin ? 5 : 4);
-  const PetscInt nx  = g->size[0] > 0 ? g->size[0] : rep, ny = g->size[1] > 0 ? g->size[1] : rep;
+  rep               = type[0] == 'p' ? 2 : (satin ? 5 : 4);
+  const PetscInt nx = g->size[0] > 0 ? g->size[0] : rep, ny = g->size[1] > 0 ? g->size[1] : rep;
   PetscCheck(r > 0, comm, PETSC_ERR_USER_INPUT, "-pattern_radius must be positive, got %g", (double)r);
   PetscCheck(nx % rep == 0 && ny % rep == 0, comm, PETSC_ERR_USER_INPUT, "-pattern_size %" PetscInt_FMT ",%" PetscInt_FMT ": a %s weave repeats every %" PetscInt_FMT " threads; use multiples of %" PetscInt_FMT, nx, ny, type, rep, rep);
   PetscCheck(s >= 2 * r * (1 + gap), comm, PETSC_ERR_USER_INPUT, "-pattern_spacing %g m is below the yarn diameter plus gap, %g m: neighbouring parallel yarns would overlap", (double)s, (double)(2 * r * (1 + gap)));
   PetscCheck(0.25 * s * s + h * h >= R * R, comm, PETSC_ERR_USER_INPUT, "-pattern_spacing %g m (%.3g r) is too small for crimped crossings with gap %g: need at least %.4g r", (double)s, (double)(s / r), (double)gap, (double)(PetscSqrtReal(3.0) * R / r));
-  const PetscInt m  = PetscMax(2, (PetscInt)PetscCeilReal(s / sl - 1e-9)); /* segments per spacing */
+  const PetscInt  m  = PetscMax(2, (PetscInt)PetscCeilReal(s / sl - 1e-9)); /* segments per spacing */
   const PetscReal px = nx * s, py = ny * s;
   PetscInt       *nverts, *winding, *state;
   PetscReal      *pts;
@@ -212,8 +215,10 @@ PetscErrorCode HylcPatternGenerate(HylcPattern p, HylcPatternType type, const Hy
   PetscCall(PetscLogEventBegin(HYLC_PatternGenerate, p, 0, 0, 0));
   p->gen = *g;
   PetscCall(PetscStrInList(t, "stockinette,rib", ',', &knit));
-  if (knit) PetscCall(HylcPatternGenerateKnit_Private(p, t, g));
-  else PetscCall(HylcPatternGenerateWoven_Private(p, t, g));
+  if (knit)
+    PetscCall(HylcPatternGenerateKnit_Private(p, t, g));
+  else
+    PetscCall(HylcPatternGenerateWoven_Private(p, t, g));
   p->filename[0] = 0;
   PetscCall(PetscLogEventEnd(HYLC_PatternGenerate, p, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -7,7 +7,7 @@
 #include <stdlib.h>
 
 #ifndef M_PI
-  #define M_PI 3.14159265358979323846
+#  define M_PI 3.14159265358979323846
 #endif
 
 typedef struct {
@@ -64,10 +64,10 @@ int HylcKnitSample(HylcKnitType type, const HylcKnitParams *p, int *nyarns, int 
 
   const double r = p->r;
   KnitCurve    kc;
-  kc.w               = p->wale > 0 ? p->wale : HYLC_KNIT_DEFAULT_WALE * r;
-  kc.c               = p->course > 0 ? p->course : HYLC_KNIT_DEFAULT_COURSE * r;
-  kc.d               = p->depth > 0 ? p->depth : HYLC_KNIT_DEFAULT_DEPTH * r;
-  kc.rib             = type == HYLC_KNIT_RIB;
+  kc.w                = p->wale > 0 ? p->wale : HYLC_KNIT_DEFAULT_WALE * r;
+  kc.c                = p->course > 0 ? p->course : HYLC_KNIT_DEFAULT_COURSE * r;
+  kc.d                = p->depth > 0 ? p->depth : HYLC_KNIT_DEFAULT_DEPTH * r;
+  kc.rib              = type == HYLC_KNIT_RIB;
   const double seglen = p->seglen > 0 ? p->seglen : r;
 
   /* Arc length of one stitch from a dense chord table (all stitches have the same length: for the rib,
@@ -81,9 +81,9 @@ int HylcKnitSample(HylcKnitType type, const HylcKnitParams *p, int *nyarns, int 
   for (int k = 1; k <= NTAB; k++) {
     KnitCurveEval(&kc, 2 * M_PI * k / NTAB, Xb);
     tab[k] = tab[k - 1] + Dist3(Xa, Xb);
-    Xa[0] = Xb[0];
-    Xa[1] = Xb[1];
-    Xa[2] = Xb[2];
+    Xa[0]  = Xb[0];
+    Xa[1]  = Xb[1];
+    Xa[2]  = Xb[2];
   }
   const double L     = tab[NTAB];
   const double ratio = L / seglen;
@@ -117,7 +117,7 @@ int HylcKnitSample(HylcKnitType type, const HylcKnitParams *p, int *nyarns, int 
     const double s = L * k / m;
     while (seg < NTAB - 1 && tab[seg + 1] <= s) seg++;
     const double ds = tab[seg + 1] - tab[seg], f = ds > 0 ? (s - tab[seg]) / ds : 0;
-    tpar[k]         = 2 * M_PI * (seg + f) / NTAB;
+    tpar[k] = 2 * M_PI * (seg + f) / NTAB;
   }
   free(tab);
 

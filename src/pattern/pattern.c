@@ -147,9 +147,9 @@ PetscErrorCode HylcPatternGetGenParams(HylcPattern p, HylcPatternGenParams *g)
 @*/
 PetscErrorCode HylcPatternSetFromOptions(HylcPattern p)
 {
-  char      file[PETSC_MAX_PATH_LEN] = "", type[64];
-  PetscBool flg, tflg;
-  PetscInt  n = 2;
+  char        file[PETSC_MAX_PATH_LEN] = "", type[64];
+  PetscBool   flg, tflg;
+  PetscInt    n       = 2;
   const char *types[] = {HYLCPATTERNFILE, HYLCPATTERNPLAIN, HYLCPATTERNBASKET, HYLCPATTERNTWILL, HYLCPATTERNSATIN, HYLCPATTERNSTOCKINETTE, HYLCPATTERNRIB};
 
   PetscFunctionBegin;
@@ -157,8 +157,10 @@ PetscErrorCode HylcPatternSetFromOptions(HylcPattern p)
   PetscObjectOptionsBegin((PetscObject)p);
   PetscCall(PetscStrncpy(type, ((PetscObject)p)->type_name, sizeof(type)));
   PetscCall(PetscOptionsString("-pattern_file", "Periodic yarn pattern file (.pyp) to load", "HylcPatternLoad", p->filename, file, sizeof(file), &flg));
-  if (flg) PetscCall(HylcPatternSetFileName(p, file));
-  else if (p->filename[0]) PetscCall(PetscStrncpy(type, HYLCPATTERNFILE, sizeof(type)));
+  if (flg)
+    PetscCall(HylcPatternSetFileName(p, file));
+  else if (p->filename[0])
+    PetscCall(PetscStrncpy(type, HYLCPATTERNFILE, sizeof(type)));
   PetscCall(PetscOptionsEList("-pattern_type", "Pattern source: a file or a generator", "HylcPatternSetType", types, 7, type, &n, &tflg));
   (void)n;
   if (tflg) PetscCall(HylcPatternSetType(p, types[n]));
@@ -237,10 +239,10 @@ PetscErrorCode HylcPatternBuildLoops_Private(HylcPattern p)
     p->loopStart[nl]       = k;
     p->winding[2 * nl + 0] = p->winding[2 * nl + 1] = 0;
     for (PetscInt w = v; !seen[w]; w = p->next[w]) {
-      seen[w]         = 1;
-      p->vertLoop[w]  = nl;
-      p->vertPos[w]   = k - p->loopStart[nl];
-      p->loopVerts[k++] = w;
+      seen[w]               = 1;
+      p->vertLoop[w]        = nl;
+      p->vertPos[w]         = k - p->loopStart[nl];
+      p->loopVerts[k++]     = w;
       p->vertCum[2 * w]     = p->winding[2 * nl + 0];
       p->vertCum[2 * w + 1] = p->winding[2 * nl + 1];
       p->winding[2 * nl + 0] += p->shift[2 * w + 0];

@@ -5,17 +5,25 @@
 #include <errno.h>
 #include <stdlib.h>
 
-typedef enum { BLK_PATTERN, BLK_Q, BLK_E, BLK_RL, BLK_RK, BLK_RT, BLK_REFD1, BLK_REFT, NBLK } PypBlock;
+typedef enum { BLK_PATTERN,
+               BLK_Q,
+               BLK_E,
+               BLK_RL,
+               BLK_RK,
+               BLK_RT,
+               BLK_REFD1,
+               BLK_REFT,
+               NBLK } PypBlock;
 
 static const char *const BlockName[NBLK] = {"pattern", "Q", "E", "RL", "RK", "RT", "RefD1", "RefT"};
 static const int         BlockCols[NBLK] = {4, 4, 4, 1, 2, 1, 3, 1};
 static const char *const BlockHelp[NBLK] = {"px py radius num_vertedges", "dofs: x y z t", "edges: v0 v1 dx dy", "rest lengths", "rest kappas", "rest twists", "reference directors", "reference twists"};
 
 typedef struct {
-  PetscInt   header;  /* line of the header, 0 if absent */
+  PetscInt   header; /* line of the header, 0 if absent */
   PetscInt   nrows, cap;
-  PetscReal *val;     /* nrows * cols */
-  PetscInt  *line;    /* line number of each row */
+  PetscReal *val;  /* nrows * cols */
+  PetscInt  *line; /* line number of each row */
 } PypBlockData;
 
 static PetscErrorCode PypBlockAppend(PypBlockData *b, int cols, const PetscReal v[], PetscInt line)
@@ -54,7 +62,7 @@ static PetscErrorCode HylcPatternParse_Private(HylcPattern p, const char fname[]
   MPI_Comm     comm = PetscObjectComm((PetscObject)p);
   PypBlockData blk[NBLK];
   PetscInt     cur = -1, lineno = 0, nv;
-  char        *s   = text;
+  char        *s = text;
   PetscReal    px, py, r;
   char         b0[32], b1[32];
 
@@ -97,7 +105,7 @@ static PetscErrorCode HylcPatternParse_Private(HylcPattern p, const char fname[]
         }
         tok[k] = 0;
         PetscCheck(ncol < BlockCols[cur], comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": block *%s (%s) expects %d values per row, found more", fname, lineno, BlockName[cur], BlockHelp[cur], BlockCols[cur]);
-        errno = 0;
+        errno    = 0;
         double x = strtod(tok, &end);
         PetscCheck(end != tok && *end == 0, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": block *%s: '%s' is not a number", fname, lineno, BlockName[cur], tok);
         PetscCheck(isfinite(x) && errno != ERANGE, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": block *%s: value '%s' is not finite", fname, lineno, BlockName[cur], tok);
@@ -133,13 +141,13 @@ static PetscErrorCode HylcPatternParse_Private(HylcPattern p, const char fname[]
   p->radius = r;
   for (PetscInt v = 0; v < nv; v++) {
     for (int d = 0; d < 3; d++) p->X[3 * v + d] = blk[BLK_Q].val[4 * v + d];
-    p->theta[v]            = blk[BLK_Q].val[4 * v + 3];
-    p->restKappa[2 * v]    = blk[BLK_RK].val[2 * v];
+    p->theta[v]             = blk[BLK_Q].val[4 * v + 3];
+    p->restKappa[2 * v]     = blk[BLK_RK].val[2 * v];
     p->restKappa[2 * v + 1] = blk[BLK_RK].val[2 * v + 1];
-    p->restTwist[v]        = blk[BLK_RT].val[v];
-    p->refTwist[v]         = blk[BLK_REFT].val[v];
-    p->next[v]             = -1;
-    p->prev[v]             = -1;
+    p->restTwist[v]         = blk[BLK_RT].val[v];
+    p->refTwist[v]          = blk[BLK_REFT].val[v];
+    p->next[v]              = -1;
+    p->prev[v]              = -1;
   }
   /* edges: each row v0 v1 dx dy; RL and RefD1 are indexed by the source vertex v0 */
   PetscInt *erow;
@@ -184,7 +192,7 @@ static PetscErrorCode HylcPatternParse_Private(HylcPattern p, const char fname[]
     PetscCheck(n1 > 0, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": reference director of the edge leaving vertex %" PetscInt_FMT " is zero", fname, blk[BLK_REFD1].line[v], v);
     const PetscReal cosang = PetscAbsReal(HylcDot3(d1, t)) / n1;
     /* re-orthonormalize only what needs it, so that write + read reproduces the numbers exactly */
-    const PetscReal perp   = (cosang > 1e-10 || PetscAbsReal(n1 - 1) > 1e-10) ? HylcOrthonormalizeDirector(t, d1) : 1.0;
+    const PetscReal perp = (cosang > 1e-10 || PetscAbsReal(n1 - 1) > 1e-10) ? HylcOrthonormalizeDirector(t, d1) : 1.0;
     PetscCheck(perp >= 0.1, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": reference director of the edge leaving vertex %" PetscInt_FMT " is not perpendicular to its edge (|d1.t|/|d1| = %.4g; its perpendicular part is only %.3g of |d1|)", fname, blk[BLK_REFD1].line[v], v, (double)cosang, (double)perp);
     if (cosang > 1e-3) {
       nwarnD1++;
@@ -301,7 +309,8 @@ PetscErrorCode HylcPatternWrite(HylcPattern p, const char fname[])
       for (PetscInt v = 0; v < n; v++) fprintf(fp, "%.17g\n", (double)p->refTwist[v]);
       ok = !ferror(fp);
       ok = (fclose(fp) == 0) && ok;
-    } else ok = 0;
+    } else
+      ok = 0;
   }
   PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm));
   PetscCheck(ok, comm, PETSC_ERR_FILE_WRITE, "Cannot write pattern file '%s'", fname);

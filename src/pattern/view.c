@@ -38,7 +38,8 @@ PetscErrorCode HylcPatternView(HylcPattern p, PetscViewer viewer)
   PetscCall(PetscViewerASCIIPrintf(viewer, "area density: %.6g kg/m^2 (volumetric density %.6g kg/m^3)\n", (double)rhoA, (double)p->viewDensity));
   if (dmin < PETSC_INFINITY)
     PetscCall(PetscViewerASCIIPrintf(viewer, "min distance: %.4f r (segments %" PetscInt_FMT " and %" PetscInt_FMT " shifted by (%" PetscInt_FMT ", %" PetscInt_FMT "); same-yarn pairs within %.6g r of rest arc excluded)\n", (double)(dmin / p->radius), pair[0], pair[1], pair[2], pair[3], (double)p->viewExcludeArc));
-  else PetscCall(PetscViewerASCIIPrintf(viewer, "min distance: > 20 r (no segment pair within 20 r)\n"));
+  else
+    PetscCall(PetscViewerASCIIPrintf(viewer, "min distance: > 20 r (no segment pair within 20 r)\n"));
   PetscCall(PetscViewerASCIIPopTab(viewer));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -110,7 +111,8 @@ PetscErrorCode HylcPatternWriteVTK(HylcPattern p, const char fname[], PetscInt n
         }
       ok = !ferror(fp);
       ok = (fclose(fp) == 0) && ok;
-    } else ok = 0;
+    } else
+      ok = 0;
   }
   PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm));
   PetscCheck(ok, comm, PETSC_ERR_FILE_WRITE, "Cannot write VTK file '%s'", fname);

@@ -64,8 +64,8 @@ static int EdgeFrame(const double e[3], const double ts[3], const double d1s[3],
 /* Hyper-dual frame of an edge over the 3 components of e. */
 static int EdgeFrameHd(const double e[3], const double ts[3], const double d1s[3], const double d2s[3], Hd3 t[3], Hd3 d1[3], Hd3 d2[3])
 {
-  double tv[3] = {e[0], e[1], e[2]};
-  const double l = HylcNormalize3(tv);
+  double       tv[3] = {e[0], e[1], e[2]};
+  const double l     = HylcNormalize3(tv);
   if (!(l > 0)) return -1;
   const double il = 1.0 / l, il2 = il * il;
   /* t_i = e_i/l: dt_i/de_j = (delta_ij - t_i t_j)/l,
@@ -135,8 +135,10 @@ int HylcRodBendTwistEnergy(const double q[11], const HylcRodBendTwistRef *ref, c
   double kappa[2], ke[4], tau;
   int    ierr;
 
-  if (par->variant == HYLC_ROD_CURVATURE_PER_EDGE) ierr = HylcRodBendTwistStrains(q, ref, NULL, ke, &tau, NULL);
-  else ierr = HylcRodBendTwistStrains(q, ref, kappa, NULL, &tau, NULL);
+  if (par->variant == HYLC_ROD_CURVATURE_PER_EDGE)
+    ierr = HylcRodBendTwistStrains(q, ref, NULL, ke, &tau, NULL);
+  else
+    ierr = HylcRodBendTwistStrains(q, ref, kappa, NULL, &tau, NULL);
   if (ierr) {
     E[0] = E[1] = HUGE_VAL;
     return -1;
@@ -151,7 +153,7 @@ int HylcRodBendTwistEnergy(const double q[11], const HylcRodBendTwistRef *ref, c
     E[0] = 0.5 * w * par->B * il * (a * a + b * b);
   }
   const double dt = tau - ref->tau0;
-  E[1] = 0.5 * w * par->beta * il * dt * dt;
+  E[1]            = 0.5 * w * par->beta * il * dt * dt;
   return 0;
 }
 
@@ -208,10 +210,10 @@ static void EnergyAddSquare(const Jet8 *J, double rest, double c, double *E, dou
 /* g11 = J g8, H11 = J H8 J^T for e = x_i - x_{i-1}, f = x_{i+1} - x_i (11-dof layout of rod.h) */
 static void MapTo11(const double g8[8], const double H8[64], double w, double g[11], double H[121])
 {
-  static const int    xoff[3]  = {0, 4, 8};   /* 11-index of x_{i-1}, x_i, x_{i+1} */
-  static const double ce[3]    = {-1, 1, 0};  /* d e / d x_a */
-  static const double cf[3]    = {0, -1, 1};  /* d f / d x_a */
-  static const int    thoff[2] = {3, 7};      /* 11-index of theta^e, theta^f */
+  static const int    xoff[3]  = {0, 4, 8};  /* 11-index of x_{i-1}, x_i, x_{i+1} */
+  static const double ce[3]    = {-1, 1, 0}; /* d e / d x_a */
+  static const double cf[3]    = {0, -1, 1}; /* d f / d x_a */
+  static const int    thoff[2] = {3, 7};     /* 11-index of theta^e, theta^f */
 
   if (g) {
     for (int a = 0; a < 3; a++)
@@ -229,7 +231,7 @@ static void MapTo11(const double g8[8], const double H8[64], double w, double g[
       }
       for (int t = 0; t < 2; t++)
         for (int i = 0; i < 3; i++) {
-          const double h = w * (ce[a] * H8[i * 8 + 6 + t] + cf[a] * H8[(3 + i) * 8 + 6 + t]);
+          const double h                   = w * (ce[a] * H8[i * 8 + 6 + t] + cf[a] * H8[(3 + i) * 8 + 6 + t]);
           H[(xoff[a] + i) * 11 + thoff[t]] = h;
           H[thoff[t] * 11 + xoff[a] + i]   = h;
         }
@@ -300,7 +302,7 @@ int HylcRodBendTwist(const double q[11], const HylcRodBendTwistRef *ref, const H
 
   /* bending */
   if (par->variant == HYLC_ROD_CURVATURE_PER_EDGE) {
-    const Hd6 *u[4] = {&k1e, &k2e, &k1f, &k2f}, *v[4] = {&k2e, &k1e, &k2f, &k1f};
+    const Hd6   *u[4] = {&k1e, &k2e, &k1f, &k2f}, *v[4] = {&k2e, &k1e, &k2f, &k1f};
     const double sv[4] = {1, -1, 1, -1};
     for (int k = 0; k < 4; k++) {
       memset(&J, 0, sizeof J);
@@ -336,7 +338,9 @@ int HylcRodBendTwist(const double q[11], const HylcRodBendTwistRef *ref, const H
 
 degenerate:
   if (E) E[0] = E[1] = HUGE_VAL;
-  if (g) for (int i = 0; i < 11; i++) g[i] = 0;
-  if (H) for (int i = 0; i < 121; i++) H[i] = 0;
+  if (g)
+    for (int i = 0; i < 11; i++) g[i] = 0;
+  if (H)
+    for (int i = 0; i < 121; i++) H[i] = 0;
   return -1;
 }

@@ -12,8 +12,10 @@ int HylcRodStretch(const double x[6], double lbar, double ks, double w, double *
   const double l = HylcNorm3(e);
   if (!(l > 0)) {
     if (E) *E = HUGE_VAL;
-    if (g) for (int i = 0; i < 6; i++) g[i] = 0;
-    if (H) for (int i = 0; i < 36; i++) H[i] = 0;
+    if (g)
+      for (int i = 0; i < 6; i++) g[i] = 0;
+    if (H)
+      for (int i = 0; i < 36; i++) H[i] = 0;
     return -1;
   }
   const double strain = l * il0 - 1.0, wk = w * ks;
@@ -31,11 +33,11 @@ int HylcRodStretch(const double x[6], double lbar, double ks, double w, double *
     const double il = 1.0 / l, a = wk * (il0 - il), b = wk * il * il * il;
     for (int i = 0; i < 3; i++) {
       for (int j = 0; j < 3; j++) {
-        const double h = (i == j ? a : 0.0) + b * e[i] * e[j];
-        H[i * 6 + j]             = h;
-        H[(i + 3) * 6 + j + 3]   = h;
-        H[i * 6 + j + 3]         = -h;
-        H[(i + 3) * 6 + j]       = -h;
+        const double h         = (i == j ? a : 0.0) + b * e[i] * e[j];
+        H[i * 6 + j]           = h;
+        H[(i + 3) * 6 + j + 3] = h;
+        H[i * 6 + j + 3]       = -h;
+        H[(i + 3) * 6 + j]     = -h;
       }
     }
   }

@@ -16,8 +16,10 @@ static PetscErrorCode HylcErrorHandler(MPI_Comm comm, int line, const char *fun,
     MPI_Comm_rank(PETSC_COMM_WORLD, &wrank);
     /* an error raised on a communicator of several ranks is raised on all of them: report it once */
     if (rank == 0) {
-      if (wsize > 1 && size == 1) fprintf(stderr, "hylc: error (rank %d): %s\n", wrank, mess ? mess : "(no message)");
-      else fprintf(stderr, "hylc: error: %s\n", mess ? mess : "(no message)");
+      if (wsize > 1 && size == 1)
+        fprintf(stderr, "hylc: error (rank %d): %s\n", wrank, mess ? mess : "(no message)");
+      else
+        fprintf(stderr, "hylc: error: %s\n", mess ? mess : "(no message)");
       fflush(stderr);
     }
   }
@@ -44,7 +46,7 @@ int HylcMainFinalize(PetscErrorCode ierr)
     return (int)ierr;
   }
   /* misspelt options must not pass silently */
-  PetscInt n = 0;
+  PetscInt n     = 0;
   char   **names = NULL, **values = NULL;
   if (!PetscOptionsLeftGet(NULL, &n, &names, &values)) {
     PetscMPIInt rank = 0;

@@ -63,7 +63,7 @@ static double TimeKernel(Kernel kern, int npair, const double *x, double r, doub
 {
   double g[12] = {0}, H[144] = {0}, acc = 0;
   long   reps = 0;
-  double t0 = Now(), t1;
+  double t0   = Now(), t1;
   do {
     for (int p = 0; p < npair; p++) {
       const double *y = x + 12 * p;
@@ -92,26 +92,26 @@ static double TimeKernel(Kernel kern, int npair, const double *x, double r, doub
 }
 
 /* Median of k timings of fn */
-#define TIME_MEDIAN(k, out, stmt) \
-  do { \
-    double ts_[32]; \
-    for (int it_ = 0; it_ < (k); it_++) { \
-      const double t0_ = Now(); \
-      stmt; \
-      ts_[it_] = Now() - t0_; \
-    } \
-    for (int a_ = 1; a_ < (k); a_++) \
+#define TIME_MEDIAN(k, out, stmt)                                \
+  do {                                                           \
+    double ts_[32];                                              \
+    for (int it_ = 0; it_ < (k); it_++) {                        \
+      const double t0_ = Now();                                  \
+      stmt;                                                      \
+      ts_[it_] = Now() - t0_;                                    \
+    }                                                            \
+    for (int a_ = 1; a_ < (k); a_++)                             \
       for (int b_ = a_; b_ > 0 && ts_[b_] < ts_[b_ - 1]; b_--) { \
-        const double tt_ = ts_[b_]; \
-        ts_[b_]          = ts_[b_ - 1]; \
-        ts_[b_ - 1]      = tt_; \
-      } \
-    out = ts_[(k) / 2]; \
+        const double tt_ = ts_[b_];                              \
+        ts_[b_]          = ts_[b_ - 1];                          \
+        ts_[b_ - 1]      = tt_;                                  \
+      }                                                          \
+    out = ts_[(k) / 2];                                          \
   } while (0)
 
 int main(int argc, char **argv)
 {
-  const double tmin = argc > 1 ? atof(argv[1]) : 0.2, r = 0.5e-3;
+  const double  tmin = argc > 1 ? atof(argv[1]) : 0.2, r = 0.5e-3;
   const double *xg, *wg;
   HylcGaussLegendre01(4, &xg, &wg);
   HylcGaussLegendre01(8, &xg, &wg);
@@ -166,7 +166,7 @@ int main(int argc, char **argv)
       close += HylcSegmentSegmentDistance(s + 6 * i, s + 6 * i + 3, s + 6 * j, s + 6 * j + 3, NULL, NULL) < 2 * r;
     }
     HylcBVHCreate(nseg, &bvh);
-    double tbuild, trefit, tquery, tbrute;
+    double    tbuild, trefit, tquery, tbrute;
     const int k = 15;
     TIME_MEDIAN(k, tbuild, HylcBVHBuild(bvh, s, NULL, r));
     /* moved positions (as between Newton iterations), then refit and query */

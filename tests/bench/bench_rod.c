@@ -27,7 +27,7 @@ int main(int argc, char **argv)
   const int                    n = argc > 1 ? atoi(argv[1]) : 1500, sweeps = argc > 2 ? atoi(argv[2]) : 200;
   unsigned long long           st = 1;
   double                      *q = malloc(sizeof(double) * 11 * n), g[11], H[121], E[2], sink = 0;
-  HylcRodBendTwistRef         *ref = malloc(sizeof *ref * n);
+  HylcRodBendTwistRef         *ref    = malloc(sizeof *ref * n);
   const HylcRodBendTwistParams par[2] = {{.B = 1, .beta = 0.8, .variant = HYLC_ROD_CURVATURE_AVERAGED}, {.B = 1, .beta = 0.8, .variant = HYLC_ROD_CURVATURE_PER_EDGE}};
 
   if (!q || !ref || n < 1 || sweeps < 1) return 1;
@@ -65,8 +65,10 @@ int main(int argc, char **argv)
       double      t0      = Now();
       for (int s = 0; s < sweeps; s++)
         for (int k = 0; k < n; k++) {
-          if (mode == 0) HylcRodBendTwistEnergy(q + 11 * k, &ref[k], &par[v], 1.0, E);
-          else HylcRodBendTwist(q + 11 * k, &ref[k], &par[v], 1.0, HYLC_ROD_BENDTWIST, E, g, mode == 2 ? H : NULL);
+          if (mode == 0)
+            HylcRodBendTwistEnergy(q + 11 * k, &ref[k], &par[v], 1.0, E);
+          else
+            HylcRodBendTwist(q + 11 * k, &ref[k], &par[v], 1.0, HYLC_ROD_BENDTWIST, E, g, mode == 2 ? H : NULL);
           sink += E[0] + E[1] + g[3] + H[60];
         }
       printf("  bend-twist  %-26s %8.1f   (%s curvature)\n", name[mode], 1e9 * (Now() - t0) / ((double)n * sweeps), v ? "per-edge" : "averaged");

@@ -9,28 +9,28 @@
 
 static int hylc_test_failures = 0;
 
-#define HYLC_CHECK(cond, ...) \
-  do { \
-    if (!(cond)) { \
-      hylc_test_failures++; \
+#define HYLC_CHECK(cond, ...)                                                  \
+  do {                                                                         \
+    if (!(cond)) {                                                             \
+      hylc_test_failures++;                                                    \
       fprintf(stderr, "%s:%d: check failed: %s: ", __FILE__, __LINE__, #cond); \
-      fprintf(stderr, __VA_ARGS__); \
-      fprintf(stderr, "\n"); \
-    } \
+      fprintf(stderr, __VA_ARGS__);                                            \
+      fprintf(stderr, "\n");                                                   \
+    }                                                                          \
   } while (0)
 
 /* |a - b| <= tol * max(1, |b|)  (relative for large values, absolute below 1) */
-#define HYLC_CHECK_CLOSE(a, b, tol) \
-  do { \
-    const double hylc_a_ = (a), hylc_b_ = (b), hylc_t_ = (tol); \
-    const double hylc_s_ = fabs(hylc_b_) > 1 ? fabs(hylc_b_) : 1.0; \
+#define HYLC_CHECK_CLOSE(a, b, tol)                                                                                                                     \
+  do {                                                                                                                                                  \
+    const double hylc_a_ = (a), hylc_b_ = (b), hylc_t_ = (tol);                                                                                         \
+    const double hylc_s_ = fabs(hylc_b_) > 1 ? fabs(hylc_b_) : 1.0;                                                                                     \
     HYLC_CHECK(fabs(hylc_a_ - hylc_b_) <= hylc_t_ * hylc_s_ && isfinite(hylc_a_), "%s = %.17g, %s = %.17g, tol %g", #a, hylc_a_, #b, hylc_b_, hylc_t_); \
   } while (0)
 
 /* |a - b| <= tol * |b| (pure relative), with a finite a */
-#define HYLC_CHECK_REL(a, b, tol) \
-  do { \
-    const double hylc_a_ = (a), hylc_b_ = (b), hylc_t_ = (tol); \
+#define HYLC_CHECK_REL(a, b, tol)                                                                                                                                 \
+  do {                                                                                                                                                            \
+    const double hylc_a_ = (a), hylc_b_ = (b), hylc_t_ = (tol);                                                                                                   \
     HYLC_CHECK(fabs(hylc_a_ - hylc_b_) <= hylc_t_ * fabs(hylc_b_) && isfinite(hylc_a_), "%s = %.17g, %s = %.17g, rel tol %g", #a, hylc_a_, #b, hylc_b_, hylc_t_); \
   } while (0)
 

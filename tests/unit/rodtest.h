@@ -49,13 +49,13 @@ typedef struct {
 } RodElem;
 
 typedef struct {
-  double le, lf;       /* edge lengths */
-  double angle;        /* turning angle between the tangents */
+  double le, lf; /* edge lengths */
+  double angle;  /* turning angle between the tangents */
   double thetae, thetaf;
-  double perturb;      /* rotation angle of the stored tangents away from the current ones */
-  double mstored;      /* reference twist of the stored frames (NaN: random directors) */
-  int    nwrap;        /* mref = principal value + 2 pi nwrap */
-  double restscale;    /* size of the random rest curvature and twist */
+  double perturb;   /* rotation angle of the stored tangents away from the current ones */
+  double mstored;   /* reference twist of the stored frames (NaN: random directors) */
+  int    nwrap;     /* mref = principal value + 2 pi nwrap */
+  double restscale; /* size of the random rest curvature and twist */
 } RodElemSpec;
 
 static void RodElemBuild(unsigned long long *st, const RodElemSpec *s, RodElem *el)
@@ -77,7 +77,8 @@ static void RodElemBuild(unsigned long long *st, const RodElemSpec *s, RodElem *
   RandPerp(st, tf, ax);
   HylcRotateAxisAngle(tf, ax, s->perturb * RandRange(st, 0.5, 1), tsf);
   RandPerp(st, tse, d1e);
-  if (isnan(s->mstored)) RandPerp(st, tsf, d1f);
+  if (isnan(s->mstored))
+    RandPerp(st, tsf, d1f);
   else {
     HylcParallelTransport(tse, tsf, d1e, d1f);
     HylcRotateAxisAngle(d1f, tsf, s->mstored, d1f);

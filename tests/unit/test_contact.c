@@ -40,11 +40,11 @@ static void FDErrors(const Model *m, const double x0[12], double h, double *errg
   Eval(m, x0, g, H);
   for (int i = 0; i < 12; i++) {
     memcpy(x, x0, sizeof(x));
-    x[i]         = x0[i] + h;
+    x[i]            = x0[i] + h;
     const double ep = Eval(m, x, gp, NULL);
-    x[i]         = x0[i] - h;
+    x[i]            = x0[i] - h;
     const double em = Eval(m, x, gm, NULL);
-    gfd[i]       = (ep - em) / (2 * h);
+    gfd[i]          = (ep - em) / (2 * h);
     for (int j = 0; j < 12; j++) Hfd[j * 12 + i] = (gp[j] - gm[j]) / (2 * h);
   }
   double dg = 0, dH = 0, asym = 0;
@@ -60,14 +60,14 @@ static void FDErrors(const Model *m, const double x0[12], double h, double *errg
 
 static double maxerr_g, maxerr_H; /* worst FD errors seen (printed with HYLC_TEST_VERBOSE) */
 
-#define CHECK_FD(m, x, h, label) \
-  do { \
-    double eg_, eH_; \
-    FDErrors(m, x, h, &eg_, &eH_); \
-    maxerr_g = fmax(maxerr_g, eg_); \
-    maxerr_H = fmax(maxerr_H, eH_); \
+#define CHECK_FD(m, x, h, label)                                                                                \
+  do {                                                                                                          \
+    double eg_, eH_;                                                                                            \
+    FDErrors(m, x, h, &eg_, &eH_);                                                                              \
+    maxerr_g = fmax(maxerr_g, eg_);                                                                             \
+    maxerr_H = fmax(maxerr_H, eH_);                                                                             \
     HYLC_CHECK(eg_ < 1e-6, "%s (%s): gradient FD rel err %g", label, (m)->v == QUAD ? "quad" : "closest", eg_); \
-    HYLC_CHECK(eH_ < 1e-5, "%s (%s): Hessian FD rel err %g", label, (m)->v == QUAD ? "quad" : "closest", eH_); \
+    HYLC_CHECK(eH_ < 1e-5, "%s (%s): Hessian FD rel err %g", label, (m)->v == QUAD ? "quad" : "closest", eH_);  \
   } while (0)
 
 static void RandUnit(unsigned long long *st, double v[3])
@@ -167,7 +167,7 @@ static void RandomRotation(unsigned long long *st, double Q[9])
   const double phi = 2 * M_PI * HylcTestRand(st);
   for (int j = 0; j < 3; j++) {
     double e[3] = {0, 0, 0}, c[3];
-    e[j] = 1;
+    e[j]        = 1;
     HylcRotateAxisAngle(e, ax, phi, c);
     for (int i = 0; i < 3; i++) Q[i * 3 + j] = c[i];
   }
@@ -247,7 +247,7 @@ int main(void)
     }
     /* nearly parallel, overlapping, offset 1.3 r (angle 1e-4 and 1e-7) */
     for (int k = 0; k < 2; k++) {
-      const double ang = k ? 1e-7 : 1e-4;
+      const double ang   = k ? 1e-7 : 1e-4;
       double       x[12] = {0, 0, 0, 2 * r, 0, 0, 0.5 * r, 1.3 * r, 0, 2.5 * r, 1.3 * r + 2 * r * ang, 0};
       CHECK_FD(&mq, x, 1e-6 * r, "nearly parallel");
       CHECK_FD(&mc, x, 1e-6 * r, "nearly parallel");
@@ -263,14 +263,14 @@ int main(void)
       /* closest point: the documented one-sided derivative. Here s = 0.5 ... the pair (a, b0) is chosen:
          E, g and H equal those of the point b0 against segment a, which is the closest-point energy of
          the configuration with b1 moved away (a degenerate segment b = (b0, b0) would do as well). */
-      double g[12], H[144], gref[12], Href[144], s, t, d;
+      double       g[12], H[144], gref[12], Href[144], s, t, d;
       const double E = HylcContactClosestPoint(x, x + 3, x + 6, x + 9, r, r, kc, r, 1, g, H, &s, &t, &d);
       HYLC_CHECK_CLOSE(d, sqrt(1.3 * 1.3 + 0.2 * 0.2) * r, 1e-15);
       HYLC_CHECK(t == 0 && s == 0.25, "parallel: s = %g t = %g", s, t);
       double xr[12];
       memcpy(xr, x, sizeof(xr));
-      xr[9] = xr[6] + 2 * r; /* b turned away: b0 stays the unique closest point */
-      xr[10] = xr[7] + 2 * r;
+      xr[9]             = xr[6] + 2 * r; /* b turned away: b0 stays the unique closest point */
+      xr[10]            = xr[7] + 2 * r;
       const double Eref = HylcContactClosestPoint(xr, xr + 3, xr + 6, xr + 9, r, r, kc, r, 1, gref, Href, NULL, NULL, NULL);
       HYLC_CHECK_REL(E, Eref, 1e-14);
       for (int i = 0; i < 9; i++) HYLC_CHECK_CLOSE(g[i], gref[i], 1e-12 * MaxAbs(gref, 12));
@@ -292,8 +292,8 @@ int main(void)
     for (int side = -1; side <= 1; side++) {
       const double d = 2 * r * (1 + side * 1e-3);
       /* parallel aligned pair: every quadrature pair (g, g) is at distance d */
-      double       xp[12] = {0, 0, 0, r, 0, 0, 0, 0, d, r, 0, 0};
-      xp[11]              = d;
+      double xp[12] = {0, 0, 0, r, 0, 0, 0, 0, d, r, 0, 0};
+      xp[11]        = d;
       /* crossing pair */
       double xc[12] = {-r, 0, 0, r, 0, 0, 0, -r, d, 0, r, d};
       double g[12], H[144];
@@ -302,8 +302,10 @@ int main(void)
         const double Ep = Eval(m, xp, g, H), Ec = Eval(m, xc, NULL, NULL);
         if (side < 0) {
           HYLC_CHECK(Ep > 0 && (v == 0 || Ec > 0), "below threshold: E = %g %g", Ep, Ec);
-          if (v) CHECK_FD(m, xc, 1e-8 * r, "threshold-"); /* xp is exactly parallel: not differentiable */
-          else CHECK_FD(m, xp, 1e-8 * r, "threshold-");
+          if (v)
+            CHECK_FD(m, xc, 1e-8 * r, "threshold-"); /* xp is exactly parallel: not differentiable */
+          else
+            CHECK_FD(m, xp, 1e-8 * r, "threshold-");
         } else {
           HYLC_CHECK(Ep == 0 && Ec == 0 && MaxAbs(g, 12) == 0 && MaxAbs(H, 144) == 0, "at/above threshold: E = %g %g", Ep, Ec);
         }
@@ -315,13 +317,13 @@ int main(void)
     }
     /* very short segments: one of length 1e-3 r, and both */
     for (int k = 0; k < 2; k++) {
-      const double ls = 1e-3 * r;
+      const double ls    = 1e-3 * r;
       double       x[12] = {0.1 * r, 0.2 * r, 0, 0.1 * r + 0.6 * ls, 0.2 * r + 0.8 * ls, 0.3 * ls, -r, 0.05 * r, 1.1 * r, r, -0.1 * r, 1.2 * r};
       if (k) {
-        x[6] = 0.3 * r;
-        x[7] = 0.1 * r;
-        x[8] = 1.2 * r;
-        x[9] = x[6] + 0.5 * ls;
+        x[6]  = 0.3 * r;
+        x[7]  = 0.1 * r;
+        x[8]  = 1.2 * r;
+        x[9]  = x[6] + 0.5 * ls;
         x[10] = x[7] - 0.7 * ls;
         x[11] = x[8] + 0.5 * ls;
       }
@@ -337,7 +339,7 @@ int main(void)
     {
       double x[12] = {0.1 * r, 0.2 * r, 0.05 * r, 0.1 * r, 0.2 * r, 0.05 * r, -r, 0.05 * r, 1.1 * r, r, -0.1 * r, 1.2 * r};
       CHECK_FD(&mq, x, 1e-6 * r, "zero length");
-      double g[12], H[144];
+      double       g[12], H[144];
       const double E = Eval(&mc, x, g, H);
       HYLC_CHECK(E > 0 && isfinite(MaxAbs(g, 12)) && isfinite(MaxAbs(H, 144)), "zero length closest: E = %g", E);
     }
@@ -346,17 +348,18 @@ int main(void)
   /* convergence of the quadrature to the exact double integral (skew crossing segments) */
   {
     const double th = 1.1, h = 0.8 * r;
-    RefSetup     R  = {
-      {-1.3 * r, 0.2 * r, 0},
-      {1, 0, 0},
-      {0.3 * r - 1.2 * r * cos(th), -1.2 * r * sin(th), h},
-      {cos(th), sin(th), 0},
-      2.7 * r, 2.4 * r, r
-    };
+    RefSetup     R = {
+            {-1.3 * r, 0.2 * r, 0},
+            {1, 0, 0},
+            {0.3 * r - 1.2 * r * cos(th), -1.2 * r * sin(th), h},
+            {cos(th), sin(th), 0},
+            2.7 * r,
+            2.4 * r,
+            r};
     double x[12], err[HYLC_GAUSS_MAX + 1];
     SetupToX(&R, x);
-    const double I   = kc * RefIntegral(&R, 1e-12 * r * r);
-    Model        m   = {QUAD, 1, R.La, R.Lb, kc, r, 1};
+    const double I = kc * RefIntegral(&R, 1e-12 * r * r);
+    Model        m = {QUAD, 1, R.La, R.Lb, kc, r, 1};
     for (int n = 1; n <= HYLC_GAUSS_MAX; n++) {
       m.n    = n;
       err[n] = fabs(Eval(&m, x, NULL, NULL) - I) / I;
@@ -368,16 +371,17 @@ int main(void)
 
     /* both segments entirely inside the contact range: smooth integrand, spectral convergence */
     RefSetup S = {
-      {-0.4 * r, 0.1 * r, 0},
-      {1, 0, 0},
-      {0.1 * r - 0.3 * r * cos(th), -0.3 * r * sin(th), 0.9 * r},
-      {cos(th), sin(th), 0},
-      0.8 * r, 0.6 * r, r
-    };
+        {-0.4 * r, 0.1 * r, 0},
+        {1, 0, 0},
+        {0.1 * r - 0.3 * r * cos(th), -0.3 * r * sin(th), 0.9 * r},
+        {cos(th), sin(th), 0},
+        0.8 * r,
+        0.6 * r,
+        r};
     SetupToX(&S, x);
     const double J = kc * RefIntegral(&S, 1e-14 * r * r);
-    m.la = S.La;
-    m.lb = S.Lb;
+    m.la           = S.La;
+    m.lb           = S.Lb;
     for (int n = 1; n <= HYLC_GAUSS_MAX; n++) {
       m.n    = n;
       err[n] = fabs(Eval(&m, x, NULL, NULL) - J) / J;

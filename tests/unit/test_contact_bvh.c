@@ -21,8 +21,10 @@ static int Contains(const HylcPairList *sorted, int i, int j)
   while (lo < hi) {
     const size_t m = (lo + hi) / 2;
     const int   *p = sorted->idx + 2 * m;
-    if (p[0] < i || (p[0] == i && p[1] < j)) lo = m + 1;
-    else hi = m;
+    if (p[0] < i || (p[0] == i && p[1] < j))
+      lo = m + 1;
+    else
+      hi = m;
   }
   return lo < sorted->n && sorted->idx[2 * lo] == i && sorted->idx[2 * lo + 1] == j;
 }
@@ -137,9 +139,9 @@ int main(void)
 
   /* vertex + edge input: random-walk yarns, the extended chains carrying ghost segments at both ends */
   {
-    const int nyarn = 40, nper = 60, nv = nyarn * (nper + 1), nseg = nyarn * nper;
-    double   *xv    = (double *)malloc(3 * nv * sizeof(double));
-    int      *edges = (int *)malloc(2 * nseg * sizeof(int));
+    const int      nyarn = 40, nper = 60, nv = nyarn * (nper + 1), nseg = nyarn * nper;
+    double        *xv    = (double *)malloc(3 * nv * sizeof(double));
+    int           *edges = (int *)malloc(2 * nseg * sizeof(int));
     unsigned char *ghost = (unsigned char *)malloc(nseg);
     const double   L     = cbrt(nseg * 20.0) * r;
     for (int y = 0; y < nyarn; y++) {
@@ -154,7 +156,7 @@ int main(void)
         memcpy(u, du, sizeof(u));
         for (int k = 0; k < 3; k++) p[k] += 0.8 * r * u[k];
         if (v < nper) {
-          const int e  = y * nper + v;
+          const int e      = y * nper + v;
           edges[2 * e]     = iv;
           edges[2 * e + 1] = iv + 1;
           ghost[e]         = v < 8 || v >= nper - 8 || y % 5 == 0;

@@ -11,8 +11,8 @@ static void RandUnit(unsigned long long *st, double v[3])
 /* brute-force segment distance by dense sampling + local refinement */
 static double BruteSegDist(const double p0[3], const double p1[3], const double q0[3], const double q1[3])
 {
-  double best = INFINITY;
-  const int n = 400;
+  double    best = INFINITY;
+  const int n    = 400;
   for (int i = 0; i <= n; i++) {
     for (int j = 0; j <= n; j++) {
       double s = (double)i / n, t = (double)j / n, v[3];

@@ -20,12 +20,12 @@ static int MakeTile(HylcKnitType type, const HylcKnitParams *p, Tile *t)
   int ierr = HylcKnitSample(type, p, &t->nyarns, &t->nverts, &t->pts, &t->px, &t->py, msg, sizeof msg);
   HYLC_CHECK(ierr == 0, "HylcKnitSample failed: %s", msg);
   if (ierr) return 1;
-  t->nw  = p->nwales;
-  t->r   = p->r;
-  t->w   = t->px / p->nwales;
-  t->c   = t->py / p->ncourses;
-  t->m   = t->nverts[0] / p->nwales;
-  t->off = malloc((size_t)(t->nyarns + 1) * sizeof(long));
+  t->nw     = p->nwales;
+  t->r      = p->r;
+  t->w      = t->px / p->nwales;
+  t->c      = t->py / p->ncourses;
+  t->m      = t->nverts[0] / p->nwales;
+  t->off    = malloc((size_t)(t->nyarns + 1) * sizeof(long));
   t->off[0] = 0;
   for (int k = 0; k < t->nyarns; k++) t->off[k + 1] = t->off[k] + t->nverts[k];
   return 0;
@@ -59,7 +59,7 @@ static void CheckSampling(const Tile *t, const HylcKnitParams *p, double seglen,
   HYLC_CHECK(t->nyarns == p->ncourses, "%s: nyarns %d", name, t->nyarns);
   HYLC_CHECK(t->m % 2 == 0 && t->m >= HYLC_KNIT_MIN_VERTS_PER_STITCH, "%s: %d vertices per stitch", name, t->m);
   double mean[3] = {0, 0, 0}, emin = INFINITY, emax = 0;
-  long   ntot    = 0;
+  long   ntot = 0;
   for (int k = 0; k < t->nyarns; k++) {
     HYLC_CHECK(t->nverts[k] == t->m * t->nw, "%s: yarn %d has %d vertices", name, k, t->nverts[k]);
     for (long v = 0; v < t->nverts[k]; v++) {
@@ -115,8 +115,10 @@ static void Crossings(const double *R, int nr, const double *A, int na, int *ove
       const double s = (ex * d2y - ey * d2x) / den, u = (ex * d1y - ey * d1x) / den;
       if (s < 0 || s >= 1 || u < 0 || u >= 1) continue;
       const double zr = p0[2] + s * (p1[2] - p0[2]), za = q0[2] + u * (q1[2] - q0[2]);
-      if (za > zr) *over += (d2x * d1y - d2y * d1x) > 0 ? 1 : -1; /* A over R: t_A x t_R */
-      else *under += den > 0 ? 1 : -1;                             /* R over A: t_R x t_A */
+      if (za > zr)
+        *over += (d2x * d1y - d2y * d1x) > 0 ? 1 : -1; /* A over R: t_A x t_R */
+      else
+        *under += den > 0 ? 1 : -1; /* R over A: t_R x t_A */
     }
   }
 }
@@ -194,8 +196,10 @@ static void MinDistances(const Tile *t, double *dother, double *dself)
               Vert(t, b, v, sx, sy, q0);
               Vert(t, b, v + 1, sx, sy, q1);
               const double d = HylcSegmentSegmentDistance(p0, p1, q0, q1, &s, &tt);
-              if (same) *dself = fmin(*dself, d);
-              else *dother = fmin(*dother, d);
+              if (same)
+                *dself = fmin(*dself, d);
+              else
+                *dother = fmin(*dother, d);
             }
         }
     free(sa);
@@ -225,7 +229,7 @@ static void CheckRejected(HylcKnitType type, HylcKnitParams p, const char *name)
   int     ny = -7, *nv = NULL;
   double *x = NULL, px = 0, py = 0;
   char    msg[128] = "";
-  int     ierr = HylcKnitSample(type, &p, &ny, &nv, &x, &px, &py, msg, sizeof msg);
+  int     ierr     = HylcKnitSample(type, &p, &ny, &nv, &x, &px, &py, msg, sizeof msg);
   HYLC_CHECK(ierr != 0 && msg[0] != 0, "%s: invalid parameters accepted (ierr %d)", name, ierr);
   HYLC_CHECK(ny == -7 && !nv && !x, "%s: outputs touched on error", name);
   if (!ierr) {
@@ -269,8 +273,8 @@ int main(void)
     HylcKnitParams p = d;
     p.nwales         = 3;
     CheckRejected(HYLC_KNIT_RIB, p, "rib with odd nwales");
-    p    = d;
-    p.r  = 0;
+    p   = d;
+    p.r = 0;
     CheckRejected(HYLC_KNIT_STOCKINETTE, p, "r = 0");
     p   = d;
     p.r = NAN;

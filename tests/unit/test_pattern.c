@@ -13,13 +13,13 @@ typedef struct {
 
 /* Expected counts: ../shared/refdata/SOURCES.md and docs/formats.md */
 static const RefCase refcases[] = {
-  {"stockinette.pyp", 100, 2, {50}, 1},
-  {"cartridge_belt_rib.pyp", 356, 4, {89}, 1},
-  {"slip_stitch_honeycomb.pyp", 182, 4, {31, 31, 60, 60}, 4},
-  {"basket.pyp", 80, 8, {10}, 1},
-  {"satin.pyp", 130, 10, {13}, 1},
-  {"stockinette_small.pyp", 100, 2, {50}, 1},
-  {"satin_small.pyp", 250, 10, {25}, 1},
+    {"stockinette.pyp", 100, 2, {50}, 1},
+    {"cartridge_belt_rib.pyp", 356, 4, {89}, 1},
+    {"slip_stitch_honeycomb.pyp", 182, 4, {31, 31, 60, 60}, 4},
+    {"basket.pyp", 80, 8, {10}, 1},
+    {"satin.pyp", 130, 10, {13}, 1},
+    {"stockinette_small.pyp", 100, 2, {50}, 1},
+    {"satin_small.pyp", 250, 10, {25}, 1},
 };
 
 static PetscErrorCode CheckSamePattern(HylcPattern a, HylcPattern b, const char *what)
@@ -118,8 +118,8 @@ static PetscErrorCode CheckRestData(HylcPattern p, const char *what)
 
 static PetscErrorCode TestGenerators(void)
 {
-  const char *types[] = {HYLCPATTERNPLAIN, HYLCPATTERNBASKET, HYLCPATTERNTWILL, HYLCPATTERNSATIN, HYLCPATTERNSTOCKINETTE, HYLCPATTERNRIB};
-  const PetscInt rep[] = {2, 4, 4, 5, 1, 2};
+  const char    *types[] = {HYLCPATTERNPLAIN, HYLCPATTERNBASKET, HYLCPATTERNTWILL, HYLCPATTERNSATIN, HYLCPATTERNSTOCKINETTE, HYLCPATTERNRIB};
+  const PetscInt rep[]   = {2, 4, 4, 5, 1, 2};
 
   PetscFunctionBegin;
   for (size_t t = 0; t < sizeof(types) / sizeof(types[0]); t++) {
@@ -191,8 +191,10 @@ int main(int argc, char **argv)
     PetscCall(PetscSNPrintf(dir, sizeof(dir), "%s/patterns/hylc2020", env ? env : "../shared/refdata"));
   }
   PetscCall(PetscTestDirectory(dir, 'r', &have));
-  if (have) PetscCall(TestRefPatterns(dir));
-  else skipped = 1;
+  if (have)
+    PetscCall(TestRefPatterns(dir));
+  else
+    skipped = 1;
   PetscCall(TestGenerators());
   PetscCall(TestParallelConsistency());
   int fails = hylc_test_failures, all;

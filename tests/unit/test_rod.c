@@ -133,8 +133,8 @@ static void TestBranch(void)
 /* Degenerate elements are reported, not computed. */
 static void TestDegenerate(void)
 {
-  HylcRodBendTwistParams par = {.B = 1, .beta = 1, .variant = HYLC_ROD_CURVATURE_AVERAGED};
-  HylcRodBendTwistRef    ref = {.te = {1, 0, 0}, .d1e = {0, 1, 0}, .tf = {1, 0, 0}, .d1f = {0, 1, 0}, .lbar = 1};
+  HylcRodBendTwistParams par   = {.B = 1, .beta = 1, .variant = HYLC_ROD_CURVATURE_AVERAGED};
+  HylcRodBendTwistRef    ref   = {.te = {1, 0, 0}, .d1e = {0, 1, 0}, .tf = {1, 0, 0}, .d1f = {0, 1, 0}, .lbar = 1};
   double                 q[11] = {0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0}, E[2], g[11], H[121];
   HYLC_CHECK(HylcRodBendTwist(q, &ref, &par, 1, 3, E, g, H) == -1 && E[0] == HUGE_VAL && g[0] == 0, "folded element not reported");
   HYLC_CHECK(HylcRodBendTwistEnergy(q, &ref, &par, 1, E) == -1 && E[1] == HUGE_VAL, "folded element not reported (energy)");
@@ -150,12 +150,12 @@ static void TestStretch(void)
   for (int trial = 0; trial < 50; trial++) {
     double x[6], g[6], H[36], gfd[6], Hfd[36], E;
     for (int i = 0; i < 6; i++) x[i] = RandRange(&st, -1, 1);
-    const double l = HylcNorm3((double[3]){x[3] - x[0], x[4] - x[1], x[5] - x[2]});
+    const double l    = HylcNorm3((double[3]){x[3] - x[0], x[4] - x[1], x[5] - x[2]});
     const double lbar = l * RandRange(&st, 0.5, 1.5), ks = RandRange(&st, 0.5, 5), w = RandRange(&st, 0.1, 1);
     HylcRodStretch(x, lbar, ks, w, &E, g, H);
     HYLC_CHECK_REL(E, 0.5 * w * ks * lbar * (l / lbar - 1) * (l / lbar - 1), 1e-13);
     for (int k = 0; k < 6; k++) {
-      double xp[6], gp[6], gm[6];
+      double       xp[6], gp[6], gm[6];
       const double h = 1e-6 * l;
       memcpy(xp, x, sizeof xp);
       xp[k] += h;
@@ -184,7 +184,7 @@ static void TestStretch(void)
   }
   /* a straight rod of N edges stretched by eps: N * 1/2 ks eps^2 lbar */
   {
-    const int    N = 10;
+    const int    N    = 10;
     const double lbar = 0.3, eps = 0.02, ks = HylcRodStretchStiffness(2.0, 0.1), dir[3] = {0.6, 0, 0.8};
     double       Etot = 0;
     for (int j = 0; j < N; j++) {

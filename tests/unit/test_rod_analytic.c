@@ -147,7 +147,7 @@ static void TestClosedFormGradients(void)
    lengths = edge lengths, twist-free frames: d1 = plane normal, theta = theta0 on every edge). */
 static double CircleBendEnergy(int N, double R, const double Rot[9], double theta0, HylcRodCurvatureVariant variant, double *Etwist)
 {
-  const HylcRodBendTwistParams par = {.B = 1.7, .beta = 0.4, .variant = variant};
+  const HylcRodBendTwistParams par  = {.B = 1.7, .beta = 0.4, .variant = variant};
   const double                 n[3] = {0, 0, 1};
   double                       Eb = 0, Et = 0;
   for (int i = 0; i < N; i++) {
@@ -201,7 +201,7 @@ static void TestCircle(void)
 static void TestTwistedRod(void)
 {
   unsigned long long st = 8;
-  const int          N = 12; /* vertices; N - 2 interior vertices */
+  const int          N  = 12;                                          /* vertices; N - 2 interior vertices */
   const double       l = 0.25, beta = 0.8, taus[3] = {0.5, 4.0, 12.4}; /* tau l up to 3.1 per vertex */
   double             dir[3], d1[3];
   RandUnit(&st, dir);
@@ -234,7 +234,7 @@ static void TestTwistedRod(void)
 static void TestWeight(void)
 {
   unsigned long long st = 77;
-  RodElemSpec        s = {.le = 1, .lf = 0.7, .angle = 1.1, .thetae = 0.2, .thetaf = 1.3, .perturb = 0.1, .mstored = NAN, .restscale = 1};
+  RodElemSpec        s  = {.le = 1, .lf = 0.7, .angle = 1.1, .thetae = 0.2, .thetaf = 1.3, .perturb = 0.1, .mstored = NAN, .restscale = 1};
   RodElem            el;
   RodElemBuild(&st, &s, &el);
   const HylcRodBendTwistParams par = {.B = 1, .beta = 2, .variant = HYLC_ROD_CURVATURE_AVERAGED};

@@ -22,13 +22,13 @@ struct _p_HylcPattern {
   PetscReal *X, *theta, *restLength, *restKappa, *restTwist, *refD1, *refTwist;
   PetscInt  *next, *prev, *shift;
   /* yarn loops (derived) */
-  PetscInt  nloops;
-  PetscInt *loopStart;  /* nloops+1 offsets into loopVerts */
-  PetscInt *loopVerts;  /* vertices of each loop in yarn order */
-  PetscInt *winding;    /* 2 per loop */
-  PetscInt *vertLoop;   /* loop of each vertex */
-  PetscInt *vertPos;    /* position of each vertex inside its loop */
-  PetscInt *vertCum;    /* 2 per vertex: lattice shift accumulated along its loop from the loop start */
+  PetscInt   nloops;
+  PetscInt  *loopStart; /* nloops+1 offsets into loopVerts */
+  PetscInt  *loopVerts; /* vertices of each loop in yarn order */
+  PetscInt  *winding;   /* 2 per loop */
+  PetscInt  *vertLoop;  /* loop of each vertex */
+  PetscInt  *vertPos;   /* position of each vertex inside its loop */
+  PetscInt  *vertCum;   /* 2 per vertex: lattice shift accumulated along its loop from the loop start */
   PetscReal *loopArc;   /* loopStart-indexed cumulative rest length: arc from the loop start to vertex k */
   PetscReal *loopLen;   /* rest length of each loop */
 };
