@@ -11,6 +11,7 @@
 /* Class ids and log events, registered by HylcInitializePackage(). */
 PETSC_EXTERN PetscClassId  HYLC_PATTERN_CLASSID;
 PETSC_EXTERN PetscLogEvent HYLC_PatternLoad, HYLC_PatternWrite, HYLC_PatternGenerate, HYLC_PatternDistance;
+PETSC_EXTERN PetscLogEvent HYLC_TileEvaluate, HYLC_TileBroadphase, HYLC_TileContact, HYLC_TileAssemble;
 
 /* Registers hylc's classes and log events (idempotent; called by every XCreate). Not collective. */
 PETSC_EXTERN PetscErrorCode HylcInitializePackage(void);

@@ -394,3 +394,47 @@ PetscErrorCode HylcPatternSetData(HylcPattern p, PetscInt nv, PetscReal px, Pets
   p->setupcalled = PETSC_TRUE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+/*@C
+  HylcPatternCreateSupercell - The nx x ny supercell of a pattern: nx*ny copies of the tile, periods
+  (nx px, ny py), vertex (v, copy i, j) numbered (j nx + i) N + v at X_v + (i px, j py, 0), with the same
+  rest data and directors. Its energy at a periodic state is nx*ny times the tile's. Collective.
+@*/
+PetscErrorCode HylcPatternCreateSupercell(HylcPattern p, PetscInt nx, PetscInt ny, HylcPattern *sp)
+{
+  const PetscInt N = p->nv, M = N * nx * ny;
+  PetscReal     *X, *th, *RL, *RK, *RT, *D1, *RefT;
+  PetscInt      *next, *shift;
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
+  PetscCheck(nx >= 1 && ny >= 1, PetscObjectComm((PetscObject)p), PETSC_ERR_ARG_OUTOFRANGE, "Supercell size must be at least 1x1");
+  PetscCall(PetscMalloc7(3 * M, &X, M, &th, M, &RL, 2 * M, &RK, M, &RT, 3 * M, &D1, M, &RefT));
+  PetscCall(PetscMalloc2(M, &next, 2 * M, &shift));
+  for (PetscInt j = 0; j < ny; j++)
+    for (PetscInt i = 0; i < nx; i++)
+      for (PetscInt v = 0; v < N; v++) {
+        const PetscInt k = (j * nx + i) * N + v, w = p->next[v];
+        /* the head of the edge lies in copy (i + dx, j + dy), wrapped into the supercell */
+        const PetscInt ci = i + p->shift[2 * v], cj = j + p->shift[2 * v + 1];
+        const PetscInt wi = ((ci % nx) + nx) % nx, wj = ((cj % ny) + ny) % ny;
+        X[3 * k]         = p->X[3 * v] + i * p->px;
+        X[3 * k + 1]     = p->X[3 * v + 1] + j * p->py;
+        X[3 * k + 2]     = p->X[3 * v + 2];
+        th[k]            = p->theta[v];
+        RL[k]            = p->restLength[v];
+        RK[2 * k]        = p->restKappa[2 * v];
+        RK[2 * k + 1]    = p->restKappa[2 * v + 1];
+        RT[k]            = p->restTwist[v];
+        RefT[k]          = p->refTwist[v];
+        next[k]          = (wj * nx + wi) * N + w;
+        shift[2 * k]     = (ci - wi) / nx;
+        shift[2 * k + 1] = (cj - wj) / ny;
+        for (int d = 0; d < 3; d++) D1[3 * k + d] = p->refD1[3 * v + d];
+      }
+  PetscCall(HylcPatternCreate(PetscObjectComm((PetscObject)p), sp));
+  PetscCall(HylcPatternSetData(*sp, M, nx * p->px, ny * p->py, p->radius, X, th, next, shift, RL, RK, RT, D1, RefT));
+  PetscCall(PetscFree7(X, th, RL, RK, RT, D1, RefT));
+  PetscCall(PetscFree2(next, shift));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
