@@ -15,7 +15,7 @@ build=${BUILD:-build}
 # Open MPI as root, more ranks than cores, quick start-up; harmless when not root.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_pml=ob1
 export OMPI_MCA_rmaps_base_oversubscribe=1 OMPI_MCA_btl_vader_single_copy_mechanism=none
-export HYLC_BIN=$top/$build/bin
+export HYLC_ROOT=$top HYLC_BIN=$top/$build/bin
 export HYLC_REFDATA=${HYLC_REFDATA:-$top/../shared/refdata}
 export MPIEXEC="mpiexec --oversubscribe"
 timeout_s=${HYLC_TEST_TIMEOUT:-900}

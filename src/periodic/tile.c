@@ -449,7 +449,8 @@ PetscErrorCode HylcTileEvaluate(HylcTile T, int mask, PetscReal parts[4], PetscR
     ref.lbar      = 0.5 * (T->D.restLength[u] + T->D.restLength[v]);
     BendTwistDofs(T, v, idx);
     if (bt) {
-      PetscCheck(!HylcRodBendTwist(x, &ref, &T->btpar, 1.0, bt, e, g ? ge : NULL, H ? He : NULL), PETSC_COMM_SELF, PETSC_ERR_FP, "Bending element at vertex %" PetscInt_FMT " is degenerate", v);
+      const int err = (g || H) ? HylcRodBendTwist(x, &ref, &T->btpar, 1.0, bt, e, g ? ge : NULL, H ? He : NULL) : HylcRodBendTwistEnergy(x, &ref, &T->btpar, 1.0, e);
+      PetscCheck(!err, PETSC_COMM_SELF, PETSC_ERR_FP, "Bending element at vertex %" PetscInt_FMT " is degenerate", v);
       if (mask & HYLC_TERM_BEND) E[1] += e[0];
       if (mask & HYLC_TERM_TWIST) E[2] += e[1];
       if (g)
