@@ -142,6 +142,7 @@ PetscErrorCode HylcPatternGetGenParams(HylcPattern p, HylcPatternGenParams *g)
 . -pattern_wale, -pattern_course, -pattern_depth - knits: stitch width, course height, loop depth (m)
 . -pattern_seglen <r>              - generators: target edge length (m)
 . -pattern_size <nx,ny>            - generators: tile size in threads or stitches
+. -pattern_consistent_periods      - loader: use the periods implied by the periodic edges' rest lengths
 . -pattern_density <1200>          - volumetric yarn density used by the summary (kg/m^3)
 - -pattern_exclude_arc <3>         - summary: same-yarn pairs closer than this rest arc (units of r) are not contacts
 @*/
@@ -177,6 +178,7 @@ PetscErrorCode HylcPatternSetFromOptions(HylcPattern p)
   if (flg) PetscCheck(n == 2, PetscObjectComm((PetscObject)p), PETSC_ERR_USER_INPUT, "-pattern_size needs two integers nx,ny, got %" PetscInt_FMT, n);
   PetscCall(PetscOptionsReal("-pattern_density", "Volumetric yarn density for the summary's area density (kg/m^3)", "HylcPatternGetAreaDensity", p->viewDensity, &p->viewDensity, NULL));
   PetscCall(PetscOptionsReal("-pattern_exclude_arc", "Summary: same-yarn segment pairs closer than this rest arc length (units of r) are not contacts", "HylcPatternMinSegmentDistance", p->viewExcludeArc, &p->viewExcludeArc, NULL));
+  PetscCall(PetscOptionsBool("-pattern_consistent_periods", "Loader: replace the stored periods by the ones the rest lengths of the periodic edges imply (basket.pyp, method-spec 2.1b)", "HylcPatternLoad", p->consistentPeriods, &p->consistentPeriods, NULL));
   PetscCall(PetscObjectProcessOptionsHandlers((PetscObject)p, PetscOptionsObject));
   PetscOptionsEnd();
   PetscFunctionReturn(PETSC_SUCCESS);

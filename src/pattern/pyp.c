@@ -167,6 +167,28 @@ static PetscErrorCode HylcPatternParse_Private(HylcPattern p, const char fname[]
     erow[v0]             = k;
   }
   /* with nv rows and no vertex repeated as source or target, every vertex has exactly one of each */
+  if (p->consistentPeriods) {
+    /* each edge crossing the boundary in x only (y only) fixes px (py) by |edge| = rest length */
+    PetscReal sum[2] = {0, 0};
+    PetscInt  cnt[2] = {0, 0};
+    for (PetscInt v = 0; v < nv; v++) {
+      const PetscInt w = p->next[v], sx = p->shift[2 * v], sy = p->shift[2 * v + 1];
+      if ((sx != 0) == (sy != 0)) continue;
+      const int       k  = sx ? 0 : 1;
+      const PetscInt  sk = sx ? sx : sy;
+      const PetscReal dk = p->X[3 * w + k] - p->X[3 * v + k], RL = blk[BLK_RL].val[v];
+      const PetscReal o0 = p->X[3 * w + 1 - k] - p->X[3 * v + 1 - k], o2 = p->X[3 * w + 2] - p->X[3 * v + 2];
+      const PetscReal perp2 = RL * RL - o0 * o0 - o2 * o2;
+      if (perp2 <= 0) continue;
+      /* dk + sk P = sign(sk) sqrt(perp2) */
+      sum[k] += (PetscSign(sk) * PetscSqrtReal(perp2) - dk) / sk;
+      cnt[k]++;
+    }
+    PetscCheck(cnt[0] && cnt[1], comm, PETSC_ERR_USER_INPUT, "%s: -pattern_consistent_periods needs edges crossing the tile boundary in x only and in y only", fname);
+    PetscCall(PetscPrintf(comm, "%s: consistent periods %.9g %.9g (stored %.9g %.9g)\n", fname, (double)(sum[0] / cnt[0]), (double)(sum[1] / cnt[1]), (double)px, (double)py));
+    p->px = px = sum[0] / cnt[0];
+    p->py = py = sum[1] / cnt[1];
+  }
   PetscInt  nwarnRL = 0, nwarnD1 = 0;
   PetscReal worstRL = 0, worstD1 = 0;
   for (PetscInt v = 0; v < nv; v++) {
