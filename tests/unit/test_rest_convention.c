@@ -4,12 +4,19 @@
    and compared with the stored RefT, RT and RK:
    (a) reference twist: signed angle about the outgoing tangent from the parallel-transported incoming
        d1 to the outgoing d1, vs RefT;
-   (b) twist tau = m + theta_out - theta_in (m from (a)), vs RT;
+   (b) twist tau = m + theta_out - theta_in (m from (a)), vs RT, and the alternatives m - theta_out +
+       theta_in and m alone;
    (c) material curvature in the averaged-frame convention kappa = (kb.mbar2, -kb.mbar1), vs RK, and the
        alternatives: the incoming edge's frame only, the outgoing edge's only, -kappa, swapped
        components (kappa2, kappa1), and the reference frame instead of the material frame (theta
-       ignored).  For each: rms and max of |kappa - RK| over the vertices, rms |RK|, and the
-       least-squares factor c of RK ~ c kappa.
+       ignored).  For each: rms and max of the component differences, rms of the RK components, and
+       the least-squares factor c of RK ~ c kappa;
+   (d) the twist balance dE/dtheta_j = 0 of the stored state with RK and RT as rest values, for the
+       averaged, per-edge, sign-flipped and swapped conventions: least-squares B/beta (EI/GJ) and the
+       torque left unbalanced (RK and RT are rest values of an equilibrium, not the stored state's
+       strains, so this is the discriminating check);
+   (e) the same balance with a free factor on RK.
+   Basket is measured twice: with its stored periods and with the periods its vertex data imply.
    The curvature is also computed with the rod kernel HylcRodBendTwistStrains and must agree with the
    geom.h computation, so the kernel and these measurements use the same conventions.
    With HYLC_CONVENTION_REPORT=1 the measurements are printed as a table (docs/method.md); otherwise the
