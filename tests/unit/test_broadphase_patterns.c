@@ -75,7 +75,7 @@ static int Contains(const HylcPairList *sorted, int i, int j)
    reported. Returns the number of pairs with pruning. */
 static size_t Compare(HylcBVH bvh, int nseg, const double *x, double margin, const unsigned char *ghost, double r, const char *name, const char *stage)
 {
-  HylcPairList t = {0}, b = {0};
+  HylcPairList t = {0}, b    = {0};
   size_t       npairs, close = 0, mixed = 0;
 
   HYLC_CHECK(HylcBVHSetGhost(bvh, NULL) == 0 && HylcBVHQuery(bvh, &t) == 0, "%s %s", name, stage);
