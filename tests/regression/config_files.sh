@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# config/<pattern>.yaml: every per-pattern configuration loads with hylc-pattern -options_file (PETSc
+# parses *.yaml option files as YAML), names its own paper pattern, and sets exactly the four material
+# options -yarn_E, -yarn_Es, -yarn_G, -yarn_kc (which hylc-pattern does not read, so they, and only
+# they, are reported unused: a misspelt key would appear as another unused option). The values must be
+# numbers with G = E/2.5. Run from the repository root, where the files' relative pattern paths resolve.
+set -u
+cd "$(dirname "$0")/../.."
+tool=$HYLC_BIN/hylc-pattern
+die() { echo "FAIL: $*"; exit 1; }
+patterns="basket satin stockinette cartridge_belt_rib slip_stitch_honeycomb satin_small stockinette_small"
+expected=$'yarn_E\nyarn_Es\nyarn_G\nyarn_kc'
+if [ ! -d ../shared/refdata/patterns/hylc2020 ]; then
+  echo "skipped: ../shared/refdata/patterns/hylc2020 not found (the configs point there)"
+  exit 77
+fi
+
+# one config: loads, names the pattern, exactly the yarn options unused, numeric values, G = E/2.5
+check() { # name file
+  local name=$1 f=$2 out=$HYLC_TMP/$1.out err=$HYLC_TMP/$1.err
+  $tool -options_file "$f" >"$out" 2>"$err" || { cat "$out" "$err"; echo "hylc-pattern failed on $f"; return 1; }
+  grep -Eq '^ *vertices: [0-9]+$' "$out" || { cat "$out"; echo "$f: no vertices line"; return 1; }
+  grep -Eq "^ *file: \.\./shared/refdata/patterns/hylc2020/$name\.pyp$" "$out" || { cat "$out"; echo "$f: does not load $name.pyp"; return 1; }
+  local other
+  other=$(grep -v '^hylc: warning: option -yarn_[A-Za-z]* [^ ]* was not used' "$err")
+  [ -z "$other" ] || { echo "$f: unexpected output on stderr:"; echo "$other"; return 1; }
+  local names
+  names=$(sed -n 's/^hylc: warning: option -\(yarn_[A-Za-z]*\) .*/\1/p' "$err" | sort)
+  [ "$names" = "$expected" ] || { echo "$f: unused options are"; echo "$names"; echo "expected"; echo "$expected"; return 1; }
+  sed -n 's/^hylc: warning: option -\(yarn_[A-Za-z]*\) \([^ ]*\) .*/\1 \2/p' "$err" | awk -v f="$f" '
+    $2 !~ /^[0-9]+(\.[0-9]*)?([eE][-+]?[0-9]+)?$/ { print f ": " $1 " = " $2 " is not a plain positive number"; bad = 1 }
+    { v[$1] = $2 + 0 }
+    END {
+      if (!bad && (v["yarn_G"] <= 0 || v["yarn_E"] <= 0 || (v["yarn_G"] * 2.5 / v["yarn_E"] - 1) ^ 2 > 1e-12)) { print f ": G = " v["yarn_G"] " is not E/2.5 (E = " v["yarn_E"] ")"; bad = 1 }
+      exit bad
+    }' || return 1
+  return 0
+}
+
+for name in $patterns; do
+  f=config/$name.yaml
+  [ -f "$f" ] || die "missing $f"
+  check "$name" "$f" || die "$f"
+done
+# no other config files that this test does not know about
+for f in config/*.yaml; do
+  n=$(basename "$f" .yaml)
+  [[ " $patterns " == *" $n "* ]] || die "$f is not checked by this test"
+done
+
+# the check catches a misspelt key
+sed 's/^yarn_kc:/yarn_ck:/' config/satin.yaml >"$HYLC_TMP/typo.yaml"
+check satin "$HYLC_TMP/typo.yaml" >"$HYLC_TMP/typo.log" 2>&1 && { cat "$HYLC_TMP/typo.log"; die "a misspelt key in a config was not caught"; }
+grep -q 'yarn_ck' "$HYLC_TMP/typo.log" || { cat "$HYLC_TMP/typo.log"; die "the misspelt key is not named"; }
+exit 0
