@@ -177,11 +177,11 @@ PetscErrorCode HylcMidsurfaceSetUp(HylcMidsurface ms)
   PetscFunctionBegin;
   PetscValidHeaderSpecific(ms, HYLC_MIDSURFACE_CLASSID, 1);
   if (ms->setupcalled) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(PetscLogEventBegin(HYLC_MacroSetUp, ms, 0, 0, 0));
   if (ms->type == HYLC_MIDSURFACE_AUTO) ms->resolved = ms->strain.curvature == HYLC_MACRO_DOUBLY ? HYLC_MIDSURFACE_POISSON : HYLC_MIDSURFACE_CLOSED;
   else ms->resolved = ms->type;
   PetscCheck(ms->resolved != HYLC_MIDSURFACE_CLOSED || ms->strain.curvature != HYLC_MACRO_DOUBLY, PetscObjectComm((PetscObject)ms), PETSC_ERR_USER_INPUT,
              "-macro_phi closed needs a flat or singly curved II (det II = 0), got II = [[%g, %g], [%g, %g]]; use -macro_phi poisson or auto", (double)ms->strain.II[0], (double)ms->strain.II[1], (double)ms->strain.II[2], (double)ms->strain.II[3]);
+  PetscCall(PetscLogEventBegin(HYLC_MacroSetUp, ms, 0, 0, 0)); /* after the input checks: an error must not leave the event open */
   if (ms->resolved == HYLC_MIDSURFACE_POISSON) PetscCall(HylcMidsurfacePoissonSetUp_Private(ms));
   else PetscCall(HylcMidsurfacePoissonReset_Private(ms));
   PetscCall(PetscObjectChangeTypeName((PetscObject)ms, HylcMidsurfaceTypes[ms->resolved]));

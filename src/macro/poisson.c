@@ -170,7 +170,6 @@ PetscErrorCode HylcMidsurfacePoissonSetUp_Private(HylcMidsurface ms)
 
   PetscFunctionBegin;
   PetscCall(HylcMidsurfacePoissonReset_Private(ms));
-  PetscCall(PetscLogEventBegin(HYLC_MacroPoisson, ms, 0, 0, 0));
   /* grid: the box with xi = 0 in it, plus 2 cells on every side */
   for (int d = 0; d < 2; d++) {
     lo[d]     = PetscMin(ms->lo[d], 0);
@@ -180,6 +179,7 @@ PetscErrorCode HylcMidsurfacePoissonSetUp_Private(HylcMidsurface ms)
     ms->origin[d] = lo[d] - 2 * ms->h[d];
     PetscCheck(ms->h[d] > 0, comm, PETSC_ERR_USER_INPUT, "HylcMidsurface: the box [%g, %g] x [%g, %g] has zero width", (double)ms->lo[0], (double)ms->hi[0], (double)ms->lo[1], (double)ms->hi[1]);
   }
+  PetscCall(PetscLogEventBegin(HYLC_MacroPoisson, ms, 0, 0, 0));
   PetscCall(DMDACreate2d(comm, DM_BOUNDARY_NONE, DM_BOUNDARY_NONE, DMDA_STENCIL_STAR, ms->M[0], ms->M[1], PETSC_DECIDE, PETSC_DECIDE, 1, 1, NULL, NULL, &ms->da));
   PetscCall(DMSetUp(ms->da));
   PetscCall(AssembleMatrix(ms));
