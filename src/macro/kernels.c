@@ -161,8 +161,10 @@ HylcMacroCurvature HylcMacroClassifyII(const double II[3], double tol, double *H
   const double ps = p / m, qs = q / m, rs = r / m;
   if (fabs(ps * rs - qs * qs) > tol) return HYLC_MACRO_DOUBLY;
   double v[2];
-  if (fabs(ps) >= fabs(rs)) v[0] = ps, v[1] = qs;
-  else v[0] = qs, v[1] = rs;
+  if (fabs(ps) >= fabs(rs))
+    v[0] = ps, v[1] = qs;
+  else
+    v[0] = qs, v[1] = rs;
   const double nv = hypot(v[0], v[1]);
   v[0] /= nv;
   v[1] /= nv;
@@ -192,7 +194,7 @@ HylcMacroStrainError HylcMacroStrainSetUp(const double z[6], double tol, HylcMac
   HylcMacroNormalDerivatives(z, m->N);
   m->curvature = HylcMacroClassifyII(z + 3, tol, &m->H, m->d);
   if (m->curvature == HYLC_MACRO_DOUBLY) {
-    m->H = 0;
+    m->H    = 0;
     m->d[0] = 1, m->d[1] = 0;
   }
   m->dperp[0] = -m->d[1];
@@ -200,7 +202,8 @@ HylcMacroStrainError HylcMacroStrainSetUp(const double z[6], double tol, HylcMac
   if (m->curvature == HYLC_MACRO_SINGLY) {
     m->ab[0] = m->N[0] * m->d[0] + m->N[1] * m->d[1];
     m->ab[1] = m->N[2] * m->d[0] + m->N[3] * m->d[1];
-  } else m->ab[0] = m->ab[1] = 0;
+  } else
+    m->ab[0] = m->ab[1] = 0;
   m->rho = hypot(m->ab[0], m->ab[1]);
   return HYLC_MACRO_STRAIN_OK;
 }

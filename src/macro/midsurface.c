@@ -177,13 +177,17 @@ PetscErrorCode HylcMidsurfaceSetUp(HylcMidsurface ms)
   PetscFunctionBegin;
   PetscValidHeaderSpecific(ms, HYLC_MIDSURFACE_CLASSID, 1);
   if (ms->setupcalled) PetscFunctionReturn(PETSC_SUCCESS);
-  if (ms->type == HYLC_MIDSURFACE_AUTO) ms->resolved = ms->strain.curvature == HYLC_MACRO_DOUBLY ? HYLC_MIDSURFACE_POISSON : HYLC_MIDSURFACE_CLOSED;
-  else ms->resolved = ms->type;
+  if (ms->type == HYLC_MIDSURFACE_AUTO)
+    ms->resolved = ms->strain.curvature == HYLC_MACRO_DOUBLY ? HYLC_MIDSURFACE_POISSON : HYLC_MIDSURFACE_CLOSED;
+  else
+    ms->resolved = ms->type;
   PetscCheck(ms->resolved != HYLC_MIDSURFACE_CLOSED || ms->strain.curvature != HYLC_MACRO_DOUBLY, PetscObjectComm((PetscObject)ms), PETSC_ERR_USER_INPUT,
              "-macro_phi closed needs a flat or singly curved II (det II = 0), got II = [[%g, %g], [%g, %g]]; use -macro_phi poisson or auto", (double)ms->strain.II[0], (double)ms->strain.II[1], (double)ms->strain.II[2], (double)ms->strain.II[3]);
   PetscCall(PetscLogEventBegin(HYLC_MacroSetUp, ms, 0, 0, 0)); /* after the input checks: an error must not leave the event open */
-  if (ms->resolved == HYLC_MIDSURFACE_POISSON) PetscCall(HylcMidsurfacePoissonSetUp_Private(ms));
-  else PetscCall(HylcMidsurfacePoissonReset_Private(ms));
+  if (ms->resolved == HYLC_MIDSURFACE_POISSON)
+    PetscCall(HylcMidsurfacePoissonSetUp_Private(ms));
+  else
+    PetscCall(HylcMidsurfacePoissonReset_Private(ms));
   PetscCall(PetscObjectChangeTypeName((PetscObject)ms, HylcMidsurfaceTypes[ms->resolved]));
   ms->setupcalled = PETSC_TRUE;
   PetscCall(PetscLogEventEnd(HYLC_MacroSetUp, ms, 0, 0, 0));
@@ -197,7 +201,8 @@ static PetscErrorCode GetRotation_Private(HylcMidsurface ms, const PetscReal xi[
     PetscReal F[6];
     HylcMidsurfaceInterpolate_Private(ms, ms->grad, 6, xi, F);
     PetscCheck(HylcMacroPolarRotation(ms->strain.S, F, R) == 0, PETSC_COMM_SELF, PETSC_ERR_NOT_CONVERGED, "HylcMidsurface: the FD gradient of phi is rank deficient at xi = (%g, %g)", (double)xi[0], (double)xi[1]);
-  } else HylcMacroRotation(ms->strain.N, xi, R, NULL, NULL);
+  } else
+    HylcMacroRotation(ms->strain.N, xi, R, NULL, NULL);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -252,9 +257,9 @@ PetscErrorCode HylcMidsurfaceGetSolveInfo(HylcMidsurface ms, PetscInt *grid, Pet
 
 PetscErrorCode HylcMidsurfaceView(HylcMidsurface ms, PetscViewer viewer)
 {
-  PetscBool             iascii;
-  const HylcMacroStrain *m = &ms->strain;
-  const char           *curv[] = {"flat", "singly curved", "doubly curved"};
+  PetscBool              iascii;
+  const HylcMacroStrain *m      = &ms->strain;
+  const char            *curv[] = {"flat", "singly curved", "doubly curved"};
 
   PetscFunctionBegin;
   PetscValidHeaderSpecific(ms, HYLC_MIDSURFACE_CLASSID, 1);

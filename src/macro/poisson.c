@@ -46,7 +46,7 @@ void HylcMidsurfaceInterpolate_Private(HylcMidsurface ms, const PetscReal *field
     const PetscReal u = (xi[d] - ms->origin[d]) / ms->h[d];
     /* cell index, clamped so the stencil stays on the grid (outside: polynomial extrapolation) */
     PetscInt i = (PetscInt)PetscFloorReal(u), lo = np == 4 ? 1 : 0, hi = np == 4 ? ms->M[d] - 3 : ms->M[d] - 2;
-    i = PetscMax(lo, PetscMin(hi, i));
+    i                 = PetscMax(lo, PetscMin(hi, i));
     const PetscReal t = u - i;
     if (np == 4) {
       CubicWeights(t, w[d]);
@@ -107,11 +107,11 @@ static PetscErrorCode AssembleRHS(HylcMidsurface ms, Vec b[3])
   for (int k = 0; k < 3; k++) PetscCall(DMDAVecGetArray(ms->da, b[k], &bb[k]));
   for (PetscInt j = 0; j < M1; j++)
     for (PetscInt i = 0; i < M0; i++) {
-      const PetscReal xi[2]  = {ms->origin[0] + i * hx, ms->origin[1] + j * hy};
-      const PetscReal xe[2]  = {xi[0] + hx, xi[1]}, xw[2] = {xi[0] - hx, xi[1]};
-      const PetscReal xn[2]  = {xi[0], xi[1] + hy}, xs[2] = {xi[0], xi[1] - hy};
-      const PetscBool bx     = (PetscBool)(i == 0 || i == M0 - 1), by = (PetscBool)(j == 0 || j == M1 - 1);
-      const PetscReal s      = (bx ? 0.5 : 1.0) * (by ? 0.5 : 1.0) * hx * hy;
+      const PetscReal xi[2] = {ms->origin[0] + i * hx, ms->origin[1] + j * hy};
+      const PetscReal xe[2] = {xi[0] + hx, xi[1]}, xw[2] = {xi[0] - hx, xi[1]};
+      const PetscReal xn[2] = {xi[0], xi[1] + hy}, xs[2] = {xi[0], xi[1] - hy};
+      const PetscBool bx = (PetscBool)(i == 0 || i == M0 - 1), by = (PetscBool)(j == 0 || j == M1 - 1);
+      const PetscReal s = (bx ? 0.5 : 1.0) * (by ? 0.5 : 1.0) * hx * hy;
       PetscReal       G[6], Ge[6], Gw[6], Gn[6], Gs[6];
       FieldRS(&ms->strain, xi, G);
       FieldRS(&ms->strain, xe, Ge);
@@ -141,16 +141,19 @@ static PetscErrorCode ComputeGradient(HylcMidsurface ms)
   PetscCall(PetscMalloc1(6 * M0 * M1, &ms->grad));
   for (PetscInt j = 0; j < M1; j++)
     for (PetscInt i = 0; i < M0; i++) {
-      const PetscInt  id[2] = {i, j}, Md[2] = {M0, M1}, stride[2] = {1, M0}, node = j * M0 + i;
+      const PetscInt id[2] = {i, j}, Md[2] = {M0, M1}, stride[2] = {1, M0}, node = j * M0 + i;
       for (int al = 0; al < 2; al++) {
         const PetscInt  st = stride[al], c = id[al];
-        const PetscReal h  = ms->h[al];
+        const PetscReal h = ms->h[al];
         for (int k = 0; k < 3; k++) {
           const PetscReal *p = ms->phi + k;
           PetscReal        d;
-          if (c == 0) d = (-3 * p[3 * node] + 4 * p[3 * (node + st)] - p[3 * (node + 2 * st)]) / (2 * h);
-          else if (c == Md[al] - 1) d = (3 * p[3 * node] - 4 * p[3 * (node - st)] + p[3 * (node - 2 * st)]) / (2 * h);
-          else d = (p[3 * (node + st)] - p[3 * (node - st)]) / (2 * h);
+          if (c == 0)
+            d = (-3 * p[3 * node] + 4 * p[3 * (node + st)] - p[3 * (node + 2 * st)]) / (2 * h);
+          else if (c == Md[al] - 1)
+            d = (3 * p[3 * node] - 4 * p[3 * (node - st)] + p[3 * (node - 2 * st)]) / (2 * h);
+          else
+            d = (p[3 * (node + st)] - p[3 * (node - st)]) / (2 * h);
           ms->grad[6 * node + 2 * k + al] = d;
         }
       }
@@ -172,10 +175,10 @@ PetscErrorCode HylcMidsurfacePoissonSetUp_Private(HylcMidsurface ms)
   PetscCall(HylcMidsurfacePoissonReset_Private(ms));
   /* grid: the box with xi = 0 in it, plus 2 cells on every side */
   for (int d = 0; d < 2; d++) {
-    lo[d]     = PetscMin(ms->lo[d], 0);
-    hi[d]     = PetscMax(ms->hi[d], 0);
-    ms->M[d]  = ms->grid;
-    ms->h[d]  = (hi[d] - lo[d]) / (ms->grid - 5);
+    lo[d]         = PetscMin(ms->lo[d], 0);
+    hi[d]         = PetscMax(ms->hi[d], 0);
+    ms->M[d]      = ms->grid;
+    ms->h[d]      = (hi[d] - lo[d]) / (ms->grid - 5);
     ms->origin[d] = lo[d] - 2 * ms->h[d];
     PetscCheck(ms->h[d] > 0, comm, PETSC_ERR_USER_INPUT, "HylcMidsurface: the box [%g, %g] x [%g, %g] has zero width", (double)ms->lo[0], (double)ms->hi[0], (double)ms->lo[1], (double)ms->hi[1]);
   }

@@ -24,8 +24,8 @@ static void RandomStrain(unsigned long long *st, double bend, double z[6])
 static void ExpWLong(long double a, long double b, long double E[9])
 {
   long double W[9] = {0, 0, a, 0, 0, b, -a, -b, 0}, T[9], P[9];
-  int         k = 0;
-  long double r = sqrtl(a * a + b * b);
+  int         k    = 0;
+  long double r    = sqrtl(a * a + b * b);
   while (r > 0.25L) r *= 0.5L, k++;
   for (int i = 0; i < 9; i++) W[i] = ldexpl(W[i], -k);
   for (int i = 0; i < 9; i++) E[i] = (i % 4 == 0) ? 1 : 0, T[i] = E[i];
@@ -88,12 +88,11 @@ static void TestStrain(unsigned long long *st)
   }
   /* validation */
   const double bad[5][6] = {
-    {0, 1, 0, 0, 0, 0},
-    {0, -1.5, 0, 0, 0, 0},
-    {-1, 0, 0, 0, 0, 0},
-    {0, 0, -1.2, 0, 0, 0},
-    {0, 0, 0, NAN, 0, 0}
-  };
+      {0, 1, 0, 0, 0, 0},
+      {0, -1.5, 0, 0, 0, 0},
+      {-1, 0, 0, 0, 0, 0},
+      {0, 0, -1.2, 0, 0, 0},
+      {0, 0, 0, NAN, 0, 0}};
   const HylcMacroStrainError want[5] = {HYLC_MACRO_STRAIN_SHEAR, HYLC_MACRO_STRAIN_SHEAR, HYLC_MACRO_STRAIN_STRETCH_X, HYLC_MACRO_STRAIN_STRETCH_Y, HYLC_MACRO_STRAIN_NONFINITE};
   for (int k = 0; k < 5; k++) {
     HylcMacroStrain m;
@@ -119,22 +118,22 @@ static void TestStrain(unsigned long long *st)
 
 static void TestScalars(void)
 {
-  const double xs[] = {0, 1e-300, 1e-13, 1e-9, 1e-5, 9.99e-5, 1e-4, 1.01e-4, 1e-3, 0.1, 0.5, 0.999, 1.0, 1.001, 2, 3.14, 7.5, 30};
+  const double xs[]  = {0, 1e-300, 1e-13, 1e-9, 1e-5, 9.99e-5, 1e-4, 1.01e-4, 1e-3, 0.1, 0.5, 0.999, 1.0, 1.001, 2, 3.14, 7.5, 30};
   double       worst = 0;
   for (size_t k = 0; k < sizeof(xs) / sizeof(xs[0]); k++) {
     const long double x = xs[k], x2 = x * x;
     long double       sinc, s2, g, e1, e2;
-    if (x < 2) { /* long double Taylor series, 30 terms */
+    if (x < 2) {                /* long double Taylor series, 30 terms */
       long double t = 1, c = 1; /* t = x^(2k) */
       sinc = s2 = g = e1 = e2 = 0;
       for (int k = 0; k < 30; k++) {
         long double f1 = 1, f2 = 1; /* (2k+1)!, (2k+2)! */
         for (int j = 2; j <= 2 * k + 1; j++) f1 *= j;
         f2 = f1 * (2 * k + 2);
-        sinc += c * t / f1;                                 /* sum (-1)^k x^2k / (2k+1)! */
-        s2 += 2 * c * t / f2;                               /* 2 (1 - cos x)/x^2 = sum 2 (-1)^k x^2k / (2k+2)! */
-        g += c * t / (f1 * (2 * k + 2) * (2 * k + 3));      /* sum (-1)^k x^2k / (2k+3)! */
-        e1 += -c * (2 * k + 2) * t / (f2 * (2 * k + 3));    /* sum_{k>=1} (-1)^k 2k x^(2k-2) / (2k+1)!, shifted */
+        sinc += c * t / f1;                                                /* sum (-1)^k x^2k / (2k+1)! */
+        s2 += 2 * c * t / f2;                                              /* 2 (1 - cos x)/x^2 = sum 2 (-1)^k x^2k / (2k+2)! */
+        g += c * t / (f1 * (2 * k + 2) * (2 * k + 3));                     /* sum (-1)^k x^2k / (2k+3)! */
+        e1 += -c * (2 * k + 2) * t / (f2 * (2 * k + 3));                   /* sum_{k>=1} (-1)^k 2k x^(2k-2) / (2k+1)!, shifted */
         e2 += -2 * c * (2 * k + 2) * t / (f2 * (2 * k + 3) * (2 * k + 4)); /* sum_{k>=2} 2 (-1)^(k+1) (2k-2) x^(2k-4) / (2k)!, shifted */
         t *= x2;
         c = -c;
@@ -146,7 +145,7 @@ static void TestScalars(void)
       e1   = (cosl(x) - sinc) / x2;
       e2   = 2 * (sinc - s2) / x2;
     }
-    const double got[5] = {HylcMacroSinc(xs[k]), HylcMacroSinc2Half(xs[k]), HylcMacroG(xs[k]), HylcMacroSincPrimeOverR(xs[k]), HylcMacroSinc2HalfPrimeOverR(xs[k])};
+    const double      got[5] = {HylcMacroSinc(xs[k]), HylcMacroSinc2Half(xs[k]), HylcMacroG(xs[k]), HylcMacroSincPrimeOverR(xs[k]), HylcMacroSinc2HalfPrimeOverR(xs[k])};
     const long double ref[5] = {sinc, s2, g, e1, e2};
     for (int f = 0; f < 5; f++) {
       const double rel = (double)fabsl((got[f] - ref[f]) / ref[f]);
@@ -185,7 +184,7 @@ static void TestRotation(unsigned long long *st)
     }
     /* dR/dxi against central differences */
     for (int al = 0; al < 2; al++) {
-      const double h = 1e-6;
+      const double h     = 1e-6;
       double       xp[2] = {xi[0], xi[1]}, xm[2] = {xi[0], xi[1]}, Rp[9], Rm[9];
       xp[al] += h;
       xm[al] -= h;
@@ -202,7 +201,7 @@ static void TestRotation(unsigned long long *st)
   if (getenv("HYLC_TEST_VERBOSE")) printf("rotation: max |R^T R - I| = %.3e, max |R - exp W| = %.3e, dR/dxi FD rel err %.3e\n", orth, expErr, dErr);
 
   /* R -> I for tiny strains without loss of precision: R - I against long double */
-  double       tinyErr = 0;
+  double       tinyErr  = 0;
   const double scales[] = {1e-5, 1e-9, 1e-13, 1e-100, 1e-200};
   for (size_t sc = 0; sc < sizeof(scales) / sizeof(scales[0]); sc++) {
     for (int t = 0; t < 200; t++) {
@@ -246,7 +245,7 @@ static void CheckClosed(const char *what, const double z[6], unsigned long long 
     HylcMacroNormal(m.N, xi, nn, dn);
     for (int i = 0; i < 3; i++) HYLC_CHECK(n[i] == nn[i], "%s: n", what);
     for (int al = 0; al < 2; al++) {
-      const double h = 1e-5;
+      const double h     = 1e-5;
       double       xp[2] = {xi[0], xi[1]}, xm[2] = {xi[0], xi[1]}, pp[3], pm[3], np[3], nm[3];
       xp[al] += h;
       xm[al] -= h;
@@ -281,15 +280,15 @@ static void CheckClosed(const char *what, const double z[6], unsigned long long 
 
 static void TestClosed(unsigned long long *st)
 {
-  double fd = 0, orth = 0, dn = 0, dnfd = 0;
+  double       fd = 0, orth = 0, dn = 0, dnfd = 0;
   const double th = 0.4, H = 1.3;
   const double cases[][6] = {
-    {0.1, 0.0, -0.1, 1.2, 0, 0},                                             /* II00 only */
-    {0.1, 0.4, -0.1, -1.7, 0, 0},                                            /* II00 only, sheared */
-    {-0.2, -0.5, 0.3, 0, 0, 2.1},                                            /* II11 only, sheared */
-    {0.05, 0.3, 0.2, H * cos(th) * cos(th), H * cos(th) * sin(th), H * sin(th) * sin(th)}, /* rotated d */
-    {0.0, 0.0, 0.0, 1e-9, 0, 0},                                             /* tiny bending */
-    {0.3, 0.2, -0.1, 0, 0, 0},                                               /* flat */
+      {0.1, 0.0, -0.1, 1.2, 0, 0},                                                           /* II00 only */
+      {0.1, 0.4, -0.1, -1.7, 0, 0},                                                          /* II00 only, sheared */
+      {-0.2, -0.5, 0.3, 0, 0, 2.1},                                                          /* II11 only, sheared */
+      {0.05, 0.3, 0.2, H * cos(th) * cos(th), H * cos(th) * sin(th), H * sin(th) * sin(th)}, /* rotated d */
+      {0.0, 0.0, 0.0, 1e-9, 0, 0},                                                           /* tiny bending */
+      {0.3, 0.2, -0.1, 0, 0, 0},                                                             /* flat */
   };
   for (size_t k = 0; k < sizeof(cases) / sizeof(cases[0]); k++) {
     char name[32];
@@ -322,9 +321,8 @@ static void TestClosed(unsigned long long *st)
   /* sign convention: II00 = H > 0 bends toward +n: phi3 ~ H xi1^2 / 2 > 0; the same with shear and stretch */
   {
     const double zs[2][6] = {
-      {0,    0,   0,    0.5, 0, 0},
-      {0.2, 0.5, -0.1, 0.5, 0, 0}
-    };
+        {0, 0, 0, 0.5, 0, 0},
+        {0.2, 0.5, -0.1, 0.5, 0, 0}};
     for (int k = 0; k < 2; k++) {
       HylcMacroStrain m;
       HylcMacroStrainSetUp(zs[k], 0, &m);

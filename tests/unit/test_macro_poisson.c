@@ -12,11 +12,11 @@ static PetscBool verbose = PETSC_FALSE;
 /* max |x_poisson - x_closed| and max |n_poisson - n_closed| over random points of the box */
 static PetscErrorCode PoissonError(const PetscReal z[6], const PetscReal lo[2], const PetscReal hi[2], PetscInt grid, HylcMidsurfaceInterp interp, HylcMidsurfaceNormal normal, PetscReal *ephi, PetscReal *en, PetscInt *its)
 {
-  HylcMidsurface        ms;
+  HylcMidsurface         ms;
   const HylcMacroStrain *m;
-  const PetscInt        np = 400;
-  PetscReal            *xih, *x, *n;
-  unsigned long long    st = 777;
+  const PetscInt         np = 400;
+  PetscReal             *xih, *x, *n;
+  unsigned long long     st = 777;
 
   PetscFunctionBegin;
   PetscCall(HylcMidsurfaceCreate(PETSC_COMM_SELF, &ms));
@@ -54,9 +54,8 @@ static PetscErrorCode TestConvergence(void)
 {
   const PetscReal th = 0.5, H = 1.1;
   const PetscReal cases[2][6] = {
-    {0.1,  0.3,  -0.1, 0.8,                   0,                     0                    },
-    {-0.1, -0.2, 0.2,  H * cos(th) * cos(th), H * cos(th) * sin(th), H * sin(th) * sin(th)}
-  };
+      {0.1, 0.3, -0.1, 0.8, 0, 0},
+      {-0.1, -0.2, 0.2, H * cos(th) * cos(th), H * cos(th) * sin(th), H * sin(th) * sin(th)}};
   const PetscReal lo[2] = {-1.0, -0.6}, hi[2] = {1.2, 0.9};
   const PetscInt  grids[3] = {24, 48, 96};
 
