@@ -3,6 +3,8 @@
 PetscClassId  HYLC_PATTERN_CLASSID;
 PetscLogEvent HYLC_PatternLoad, HYLC_PatternWrite, HYLC_PatternGenerate, HYLC_PatternDistance;
 PetscLogEvent HYLC_TileEvaluate, HYLC_TileBroadphase, HYLC_TileContact, HYLC_TileAssemble;
+PetscClassId  HYLC_MIDSURFACE_CLASSID;
+PetscLogEvent HYLC_MacroSetUp, HYLC_MacroPoisson, HYLC_MacroEvaluate;
 
 static PetscBool HylcPackageInitialized = PETSC_FALSE;
 
@@ -27,6 +29,10 @@ PetscErrorCode HylcInitializePackage(void)
   PetscCall(PetscLogEventRegister("CONTACT_Broadphase", HYLC_PATTERN_CLASSID, &HYLC_TileBroadphase));
   PetscCall(PetscLogEventRegister("CONTACT_Energy", HYLC_PATTERN_CLASSID, &HYLC_TileContact));
   PetscCall(PetscLogEventRegister("TILE_Assemble", HYLC_PATTERN_CLASSID, &HYLC_TileAssemble));
+  PetscCall(PetscClassIdRegister("HylcMidsurface", &HYLC_MIDSURFACE_CLASSID));
+  PetscCall(PetscLogEventRegister("MACRO_SetUp", HYLC_MIDSURFACE_CLASSID, &HYLC_MacroSetUp));
+  PetscCall(PetscLogEventRegister("MACRO_Poisson", HYLC_MIDSURFACE_CLASSID, &HYLC_MacroPoisson));
+  PetscCall(PetscLogEventRegister("MACRO_Evaluate", HYLC_MIDSURFACE_CLASSID, &HYLC_MacroEvaluate));
   PetscCall(PetscRegisterFinalize(HylcFinalizePackage));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
