@@ -12,6 +12,7 @@
 PETSC_EXTERN PetscClassId  HYLC_PATTERN_CLASSID;
 PETSC_EXTERN PetscLogEvent HYLC_PatternLoad, HYLC_PatternWrite, HYLC_PatternGenerate, HYLC_PatternDistance;
 PETSC_EXTERN PetscLogEvent HYLC_TileEvaluate, HYLC_TileBroadphase, HYLC_TileContact, HYLC_TileAssemble;
+PETSC_EXTERN PetscLogEvent HYLC_PeriodicSetUp, HYLC_PeriodicEvaluate;
 PETSC_EXTERN PetscClassId  HYLC_MIDSURFACE_CLASSID;
 PETSC_EXTERN PetscLogEvent HYLC_MacroSetUp, HYLC_MacroPoisson, HYLC_MacroEvaluate;
 

@@ -3,6 +3,7 @@
 PetscClassId  HYLC_PATTERN_CLASSID;
 PetscLogEvent HYLC_PatternLoad, HYLC_PatternWrite, HYLC_PatternGenerate, HYLC_PatternDistance;
 PetscLogEvent HYLC_TileEvaluate, HYLC_TileBroadphase, HYLC_TileContact, HYLC_TileAssemble;
+PetscLogEvent HYLC_PeriodicSetUp, HYLC_PeriodicEvaluate;
 PetscClassId  HYLC_MIDSURFACE_CLASSID;
 PetscLogEvent HYLC_MacroSetUp, HYLC_MacroPoisson, HYLC_MacroEvaluate;
 
@@ -29,6 +30,8 @@ PetscErrorCode HylcInitializePackage(void)
   PetscCall(PetscLogEventRegister("CONTACT_Broadphase", HYLC_PATTERN_CLASSID, &HYLC_TileBroadphase));
   PetscCall(PetscLogEventRegister("CONTACT_Energy", HYLC_PATTERN_CLASSID, &HYLC_TileContact));
   PetscCall(PetscLogEventRegister("TILE_Assemble", HYLC_PATTERN_CLASSID, &HYLC_TileAssemble));
+  PetscCall(PetscLogEventRegister("PERIODIC_SetUp", HYLC_PATTERN_CLASSID, &HYLC_PeriodicSetUp));
+  PetscCall(PetscLogEventRegister("PERIODIC_Evaluate", HYLC_PATTERN_CLASSID, &HYLC_PeriodicEvaluate));
   PetscCall(PetscClassIdRegister("HylcMidsurface", &HYLC_MIDSURFACE_CLASSID));
   PetscCall(PetscLogEventRegister("MACRO_SetUp", HYLC_MIDSURFACE_CLASSID, &HYLC_MacroSetUp));
   PetscCall(PetscLogEventRegister("MACRO_Poisson", HYLC_MIDSURFACE_CLASSID, &HYLC_MacroPoisson));

@@ -1,0 +1,996 @@
+/* HylcPeriodic: ghost extension, elimination, constraints and reduced assembly (include/hylc/periodic.h). */
+#include <hylc/periodic.h>
+#include <hylc/contact.h>
+#include <hylc/geom.h>
+#include <hylc/rod.h>
+#include <petsc/private/hashmapi.h>
+
+const char *const HylcSlideConstraints[] = {"none", "global", "per_yarn", "HylcSlideConstraint", "HYLC_SLIDE_", NULL};
+
+#define SMAX 8 /* |lattice shift| bound of ghosts */
+
+typedef struct {
+  PetscInt  e, f;    /* incoming and outgoing full edges */
+  PetscInt  v[3];    /* full vertices prev, centre, next */
+  PetscReal w;       /* fractional weight */
+} BendElem;
+
+struct _n_HylcPeriodic {
+  char                prefix[64];
+  HylcPattern         pat;
+  HylcPatternData     D;
+  HylcYarnModel       model;
+  HylcYarnConstants   c;
+  HylcRodBendTwistParams btpar;
+  HylcMidsurface      ms;
+  PetscReal           z[6];
+  HylcSlideConstraint slide;
+  PetscReal           marginFactor; /* contact-ghost margin: max(3 r, factor min(px, py)) */
+  PetscBool           setup;
+  PetscInt            N; /* original vertices */
+  PetscReal          *xi; /* reference (xi1, xi2, h) of the originals, recentred */
+  /* full vertices: original o, shift s; the first N are the originals */
+  PetscInt   nfv, capfv, *fo, *fs;
+  PetscReal *T, *d;       /* per full vertex: T (9), d (3) */
+  PetscBool *rigidId;     /* T == I exactly */
+  PetscHMapI vmap, emap;  /* (o, s) -> full vertex / full edge */
+  /* full edges: source full vertex (edge leaving o(src) in copy s(src)) and head */
+  PetscInt   nfe, capfe, *esrc, *ehead;
+  PetscReal *et, *ed1, *et0, *ed10; /* frames per full edge (and saved copy) */
+  PetscReal *sw;                    /* stretch weight per full edge (0: contact-only edge) */
+  unsigned char *eghost;            /* edge has no original vertex */
+  /* bend/twist elements */
+  PetscInt  nbe, capbe;
+  BendElem *be;
+  PetscReal *mref, *mref0;
+  /* state */
+  PetscReal *y, *y0, *x; /* y and the initial guess y0: 4 N; x: 3 per full vertex */
+  /* constraints */
+  PetscInt   ncons;
+  PetscReal *A, *dL, *AAtinv;
+  /* contact */
+  HylcBVH      bvh;
+  double      *segx;
+  HylcPairList cand;
+  PetscInt     npairs, cappairs, *pairs; /* full edge i, full edge j */
+  PetscReal   *pw;                       /* pair weights */
+  /* COO */
+  PetscInt     ncoo, capcoo, *cooi, *cooj;
+  PetscScalar *coov;
+  PetscInt     coonpairs, *coopairs;
+  Mat          cooMat;
+};
+
+static inline PetscInt Key(PetscInt N, PetscInt o, PetscInt s1, PetscInt s2) { return o + N * ((s1 + SMAX) + (2 * SMAX + 1) * (s2 + SMAX)); }
+
+PetscErrorCode HylcPeriodicCreate(HylcPattern pat, const HylcYarnModel *model, HylcPeriodic *per)
+{
+  HylcPeriodic P;
+
+  PetscFunctionBegin;
+  PetscCall(PetscNew(&P));
+  PetscCall(PetscObjectReference((PetscObject)pat));
+  P->pat          = pat;
+  P->model        = *model;
+  P->slide        = HYLC_SLIDE_GLOBAL;
+  P->marginFactor = 0.25;
+  PetscCall(HylcPatternGetData(pat, &P->D));
+  PetscCall(HylcYarnModelGetConstants(model, P->D.radius, &P->c));
+  P->btpar.B       = P->c.B;
+  P->btpar.beta    = P->c.beta;
+  P->btpar.variant = model->curvature;
+  P->N             = P->D.nv;
+  PetscCheck(P->N * (2 * SMAX + 1) * (2 * SMAX + 1) < PETSC_MAX_INT / 2, PETSC_COMM_SELF, PETSC_ERR_SUP, "Pattern too large for the ghost index");
+  PetscCall(HylcMidsurfaceCreate(PETSC_COMM_SELF, &P->ms));
+  *per = P;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode PeriodicReset(HylcPeriodic P)
+{
+  PetscFunctionBegin;
+  PetscCall(PetscFree(P->xi));
+  PetscCall(PetscFree2(P->fo, P->fs));
+  PetscCall(PetscFree3(P->T, P->d, P->rigidId));
+  if (P->vmap) PetscCall(PetscHMapIDestroy(&P->vmap));
+  if (P->emap) PetscCall(PetscHMapIDestroy(&P->emap));
+  PetscCall(PetscFree4(P->esrc, P->ehead, P->sw, P->eghost));
+  PetscCall(PetscFree4(P->et, P->ed1, P->et0, P->ed10));
+  PetscCall(PetscFree(P->be));
+  PetscCall(PetscFree2(P->mref, P->mref0));
+  PetscCall(PetscFree3(P->y, P->y0, P->x));
+  PetscCall(PetscFree3(P->A, P->dL, P->AAtinv));
+  HylcBVHDestroy(&P->bvh);
+  PetscCall(PetscFree(P->segx));
+  HylcPairListFree(&P->cand);
+  PetscCall(PetscFree2(P->pairs, P->pw));
+  PetscCall(PetscFree3(P->cooi, P->cooj, P->coov));
+  PetscCall(PetscFree(P->coopairs));
+  P->nfv = P->capfv = P->nfe = P->capfe = P->nbe = P->capbe = P->npairs = P->cappairs = P->ncoo = P->capcoo = P->coonpairs = 0;
+  P->cooMat = NULL;
+  P->setup  = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcPeriodicDestroy(HylcPeriodic *per)
+{
+  PetscFunctionBegin;
+  if (!*per) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PeriodicReset(*per));
+  PetscCall(HylcMidsurfaceDestroy(&(*per)->ms));
+  PetscCall(HylcPatternDestroy(&(*per)->pat));
+  PetscCall(PetscFree(*per));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcPeriodicSetOptionsPrefix(HylcPeriodic P, const char prefix[])
+{
+  PetscFunctionBegin;
+  PetscCall(PetscStrncpy(P->prefix, prefix ? prefix : "", sizeof(P->prefix)));
+  PetscCall(HylcMidsurfaceSetOptionsPrefix(P->ms, prefix));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPeriodicSetFromOptions - Options:
++ -periodic_slide <global>       - slide constraint: none, global (one row), per_yarn (one row per loop)
+. -periodic_margin <0.25>        - contact ghosts: copies of edges within max(3 r, margin min(px, py)) of the tile
+- -macro_*                        - the midsurface (HylcMidsurfaceSetFromOptions())
+@*/
+PetscErrorCode HylcPeriodicSetFromOptions(HylcPeriodic P)
+{
+  PetscEnum sl = (PetscEnum)P->slide;
+
+  PetscFunctionBegin;
+  PetscOptionsBegin(PETSC_COMM_SELF, P->prefix[0] ? P->prefix : NULL, "Periodic tile options", "HylcPeriodic");
+  PetscCall(PetscOptionsEnum("-periodic_slide", "Slide constraint: none, global (one row) or per_yarn (one row per yarn loop)", "HylcPeriodicSetSlideConstraint", HylcSlideConstraints, sl, &sl, NULL));
+  PetscCall(PetscOptionsReal("-periodic_margin", "Contact ghosts: copies of edges within max(3 r, margin * min(px, py)) of the tile", "HylcPeriodicSetUp", P->marginFactor, &P->marginFactor, NULL));
+  PetscOptionsEnd();
+  P->slide = (HylcSlideConstraint)sl;
+  PetscCheck(P->marginFactor >= 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-periodic_margin must not be negative");
+  PetscCall(HylcMidsurfaceSetFromOptions(P->ms));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcPeriodicSetStrain(HylcPeriodic P, const PetscReal z[6])
+{
+  PetscFunctionBegin;
+  const HylcMacroStrainError err = HylcMacroStrainValidate(z);
+  PetscCheck(err == HYLC_MACRO_STRAIN_OK, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "Invalid strain (%g, %g, %g, %g, %g, %g): %s", (double)z[0], (double)z[1], (double)z[2], (double)z[3], (double)z[4], (double)z[5], HylcMacroStrainErrorString(err));
+  for (int k = 0; k < 6; k++) P->z[k] = z[k];
+  P->setup = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcPeriodicSetSlideConstraint(HylcPeriodic P, HylcSlideConstraint s)
+{
+  PetscFunctionBegin;
+  P->slide = s;
+  P->setup = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* the full vertex (o, s), created as a ghost if new */
+static PetscErrorCode FullVertex(HylcPeriodic P, PetscInt o, PetscInt s1, PetscInt s2, PetscInt *k)
+{
+  PetscFunctionBegin;
+  PetscCheck(PetscAbsInt(s1) <= SMAX && PetscAbsInt(s2) <= SMAX, PETSC_COMM_SELF, PETSC_ERR_SUP, "Ghost shift (%d, %d) beyond %d periods", (int)s1, (int)s2, SMAX);
+  const PetscInt key = Key(P->N, o, s1, s2);
+  PetscCall(PetscHMapIGet(P->vmap, key, k));
+  if (*k >= 0) PetscFunctionReturn(PETSC_SUCCESS);
+  if (P->nfv == P->capfv) {
+    PetscInt *fo, *fs;
+    P->capfv = P->capfv ? 2 * P->capfv : 2 * P->N + 16;
+    PetscCall(PetscMalloc2(P->capfv, &fo, 2 * P->capfv, &fs));
+    PetscCall(PetscArraycpy(fo, P->fo, P->nfv));
+    PetscCall(PetscArraycpy(fs, P->fs, 2 * P->nfv));
+    PetscCall(PetscFree2(P->fo, P->fs));
+    P->fo = fo;
+    P->fs = fs;
+  }
+  *k                   = P->nfv++;
+  P->fo[*k]            = o;
+  P->fs[2 * *k]        = s1;
+  P->fs[2 * *k + 1]    = s2;
+  PetscCall(PetscHMapISet(P->vmap, key, *k));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* the full edge leaving o in copy s (created with its vertices if new); stretch weight added separately */
+static PetscErrorCode FullEdge(HylcPeriodic P, PetscInt o, PetscInt s1, PetscInt s2, PetscInt *e)
+{
+  PetscFunctionBegin;
+  const PetscInt key = Key(P->N, o, s1, s2);
+  PetscCall(PetscHMapIGet(P->emap, key, e));
+  if (*e >= 0) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscInt k0, k1;
+  PetscCall(FullVertex(P, o, s1, s2, &k0));
+  PetscCall(FullVertex(P, P->D.next[o], s1 + P->D.shift[2 * o], s2 + P->D.shift[2 * o + 1], &k1));
+  if (P->nfe == P->capfe) {
+    PetscInt     *es, *eh;
+    PetscReal    *sw;
+    unsigned char *eg;
+    P->capfe = P->capfe ? 2 * P->capfe : 2 * P->N + 16;
+    PetscCall(PetscMalloc4(P->capfe, &es, P->capfe, &eh, P->capfe, &sw, P->capfe, &eg));
+    PetscCall(PetscArraycpy(es, P->esrc, P->nfe));
+    PetscCall(PetscArraycpy(eh, P->ehead, P->nfe));
+    PetscCall(PetscArraycpy(sw, P->sw, P->nfe));
+    PetscCall(PetscArraycpy(eg, P->eghost, P->nfe));
+    PetscCall(PetscFree4(P->esrc, P->ehead, P->sw, P->eghost));
+    P->esrc   = es;
+    P->ehead  = eh;
+    P->sw     = sw;
+    P->eghost = eg;
+  }
+  *e            = P->nfe++;
+  P->esrc[*e]   = k0;
+  P->ehead[*e]  = k1;
+  P->sw[*e]     = 0;
+  P->eghost[*e] = (unsigned char)(k0 >= P->N && k1 >= P->N);
+  PetscCall(PetscHMapISet(P->emap, key, *e));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* bend/twist element centred on o in copy s (deduplicated by its centre) */
+static PetscErrorCode AddBend(HylcPeriodic P, PetscHMapI bmap, PetscInt o, PetscInt s1, PetscInt s2)
+{
+  PetscInt b;
+
+  PetscFunctionBegin;
+  const PetscInt key = Key(P->N, o, s1, s2);
+  PetscCall(PetscHMapIGet(bmap, key, &b));
+  if (b >= 0) PetscFunctionReturn(PETSC_SUCCESS);
+  const PetscInt u = P->D.prev[o];
+  PetscInt       e, f;
+  PetscCall(FullEdge(P, u, s1 - P->D.shift[2 * u], s2 - P->D.shift[2 * u + 1], &e));
+  PetscCall(FullEdge(P, o, s1, s2, &f));
+  if (P->nbe == P->capbe) {
+    BendElem *nb;
+    P->capbe = P->capbe ? 2 * P->capbe : 2 * P->N + 16;
+    PetscCall(PetscMalloc1(P->capbe, &nb));
+    PetscCall(PetscArraycpy(nb, P->be, P->nbe));
+    PetscCall(PetscFree(P->be));
+    P->be = nb;
+  }
+  BendElem *E = P->be + P->nbe;
+  E->e        = e;
+  E->f        = f;
+  E->v[0]     = P->esrc[e];
+  E->v[1]     = P->esrc[f];
+  E->v[2]     = P->ehead[f];
+  E->w        = ((E->v[0] < P->N) + (E->v[1] < P->N) + (E->v[2] < P->N)) / 3.0;
+  PetscCall(PetscHMapISet(bmap, key, P->nbe++));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* reference position (xi1, xi2, h) of full vertex k */
+static inline void RefPos(const HylcPeriodic P, PetscInt k, PetscReal xih[3])
+{
+  const PetscInt o = P->fo[k];
+  xih[0]           = P->xi[3 * o] + P->fs[2 * k] * P->D.px;
+  xih[1]           = P->xi[3 * o + 1] + P->fs[2 * k + 1] * P->D.py;
+  xih[2]           = P->xi[3 * o + 2];
+}
+
+static inline void MatT3(const PetscReal M[9], const PetscReal v[3], PetscReal out[3])
+{
+  for (int i = 0; i < 3; i++) out[i] = M[i] * v[0] + M[3 + i] * v[1] + M[6 + i] * v[2];
+}
+static inline void Mat3(const PetscReal M[9], const PetscReal v[3], PetscReal out[3])
+{
+  for (int i = 0; i < 3; i++) out[i] = M[3 * i] * v[0] + M[3 * i + 1] * v[1] + M[3 * i + 2] * v[2];
+}
+
+static PetscErrorCode SetUpConstraints(HylcPeriodic P, const PetscReal *x0)
+{
+  const PetscInt N = P->N, nl_rows = P->slide == HYLC_SLIDE_GLOBAL ? 1 : 0;
+  PetscInt       nloops, m;
+  const HylcMacroStrain *ms;
+
+  PetscFunctionBegin;
+  PetscCall(HylcPatternGetNumLoops(P->pat, &nloops));
+  m        = 3 + (P->slide == HYLC_SLIDE_PER_YARN ? nloops : nl_rows);
+  P->ncons = m;
+  PetscCall(PetscCalloc3(m * 4 * N, &P->A, m, &P->dL, m * m, &P->AAtinv));
+  PetscCall(HylcMidsurfaceGetStrain(P->ms, &ms));
+  for (PetscInt o = 0; o < N; o++) {
+    const PetscInt  u = P->D.prev[o], w = P->D.next[o];
+    const PetscReal wo = 0.5 * (P->D.restLength[u] + P->D.restLength[o]); /* rest Voronoi length */
+    PetscReal       R[9], Rtx[3], tau[3], te[3], tf[3], Rtau[3];
+    PetscCall(HylcMidsurfaceGetRotation(P->ms, P->xi + 3 * o, R));
+    MatT3(R, x0 + 3 * o, Rtx);
+    for (int i = 0; i < 3; i++) {
+      for (int j = 0; j < 3; j++) P->A[i * 4 * N + 4 * o + j] = wo * R[3 * j + i]; /* rows of R^T */
+      P->dL[i] += wo * Rtx[i];
+    }
+    if (P->slide == HYLC_SLIDE_NONE) continue;
+    /* reference unit tangent at o in (xi1, xi2, h), deformed in-plane by S3 = [[A, 0], [0, 1]] */
+    for (int i = 0; i < 3; i++) {
+      te[i] = P->xi[3 * o + i] - P->xi[3 * u + i];
+      tf[i] = P->xi[3 * w + i] - P->xi[3 * o + i];
+    }
+    te[0] += P->D.shift[2 * u] * P->D.px;
+    te[1] += P->D.shift[2 * u + 1] * P->D.py;
+    tf[0] += P->D.shift[2 * o] * P->D.px;
+    tf[1] += P->D.shift[2 * o + 1] * P->D.py;
+    HylcNormalize3(te);
+    HylcNormalize3(tf);
+    const PetscReal t0 = te[0] + tf[0], t1 = te[1] + tf[1];
+    tau[0] = ms->A[0] * t0 + ms->A[1] * t1;
+    tau[1] = ms->A[2] * t0 + ms->A[3] * t1;
+    tau[2] = te[2] + tf[2];
+    PetscCheck(HylcNormalize3(tau) > 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "Yarn folds back at vertex %" PetscInt_FMT ": no tangent for the slide constraint", o);
+    Mat3(R, tau, Rtau);
+    PetscInt row = 3;
+    if (P->slide == HYLC_SLIDE_PER_YARN) {
+      PetscInt l;
+      PetscCall(HylcPatternGetVertexLoop(P->pat, o, &l, NULL));
+      row += l;
+    }
+    for (int j = 0; j < 3; j++) P->A[row * 4 * N + 4 * o + j] = wo * Rtau[j];
+    P->dL[row] += wo * HylcDot3(tau, Rtx);
+  }
+  /* (A A^T)^-1 by Gauss-Jordan on the small SPD matrix */
+  {
+    PetscReal *M, *I1;
+    PetscCall(PetscCalloc2(m * m, &M, m * m, &I1));
+    for (PetscInt i = 0; i < m; i++) {
+      I1[i * m + i] = 1;
+      for (PetscInt j = 0; j < m; j++)
+        for (PetscInt k = 0; k < 4 * N; k++) M[i * m + j] += P->A[i * 4 * N + k] * P->A[j * 4 * N + k];
+    }
+    PetscReal dmax = 0;
+    for (PetscInt i = 0; i < m; i++) dmax = PetscMax(dmax, M[i * m + i]);
+    for (PetscInt c = 0; c < m; c++) {
+      PetscInt piv = c;
+      for (PetscInt r = c + 1; r < m; r++)
+        if (PetscAbsReal(M[r * m + c]) > PetscAbsReal(M[piv * m + c])) piv = r;
+      PetscCheck(PetscAbsReal(M[piv * m + c]) > 1e-10 * dmax, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "The constraint rows are (nearly) linearly dependent (row %" PetscInt_FMT "): with straight yarns the slide constraint repeats the translation; use -periodic_slide none", c);
+      for (PetscInt k = 0; k < m; k++) {
+        PetscReal t      = M[c * m + k];
+        M[c * m + k]     = M[piv * m + k];
+        M[piv * m + k]   = t;
+        t                = I1[c * m + k];
+        I1[c * m + k]    = I1[piv * m + k];
+        I1[piv * m + k]  = t;
+      }
+      const PetscReal dinv = 1 / M[c * m + c];
+      for (PetscInt k = 0; k < m; k++) {
+        M[c * m + k] *= dinv;
+        I1[c * m + k] *= dinv;
+      }
+      for (PetscInt r = 0; r < m; r++) {
+        if (r == c) continue;
+        const PetscReal f = M[r * m + c];
+        for (PetscInt k = 0; k < m; k++) {
+          M[r * m + k] -= f * M[c * m + k];
+          I1[r * m + k] -= f * I1[c * m + k];
+        }
+      }
+    }
+    PetscCall(PetscArraycpy(P->AAtinv, I1, m * m));
+    PetscCall(PetscFree2(M, I1));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPeriodicSetUp - Builds the midsurface, the extended pattern, the elimination maps, the projected
+  reference frames, the initial state (x = phi + h n, u~ = 0) and the constraints. Not collective.
+@*/
+PetscErrorCode HylcPeriodicSetUp(HylcPeriodic P)
+{
+  const PetscInt N = P->N;
+  PetscReal      lo[2], hi[2], *x0;
+  PetscHMapI     bmap;
+
+  PetscFunctionBegin;
+  if (P->setup) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PeriodicReset(P));
+  PetscCall(PetscLogEventBegin(HYLC_PeriodicSetUp, 0, 0, 0, 0));
+  /* reference coordinates, recentred so that the mean of (xi1, xi2, h) is 0 (C1 step 16) */
+  PetscCall(PetscMalloc1(3 * N, &P->xi));
+  {
+    PetscReal mean[3] = {0, 0, 0};
+    for (PetscInt o = 0; o < N; o++)
+      for (int i = 0; i < 3; i++) mean[i] += P->D.X[3 * o + i] / N;
+    for (PetscInt o = 0; o < N; o++)
+      for (int i = 0; i < 3; i++) P->xi[3 * o + i] = P->D.X[3 * o + i] - mean[i];
+  }
+  /* extended pattern: originals first, then every element touching an original */
+  PetscCall(PetscHMapICreate(&P->vmap));
+  PetscCall(PetscHMapICreate(&P->emap));
+  PetscCall(PetscHMapICreate(&bmap));
+  for (PetscInt o = 0; o < N; o++) {
+    PetscInt k;
+    PetscCall(FullVertex(P, o, 0, 0, &k));
+  }
+  for (PetscInt o = 0; o < N; o++) {
+    const PetscInt u = P->D.prev[o], w = P->D.next[o];
+    PetscInt       e;
+    PetscCall(FullEdge(P, o, 0, 0, &e));
+    PetscCall(FullEdge(P, u, -P->D.shift[2 * u], -P->D.shift[2 * u + 1], &e));
+    PetscCall(AddBend(P, bmap, o, 0, 0));
+    PetscCall(AddBend(P, bmap, u, -P->D.shift[2 * u], -P->D.shift[2 * u + 1]));
+    PetscCall(AddBend(P, bmap, w, P->D.shift[2 * o], P->D.shift[2 * o + 1]));
+  }
+  PetscCall(PetscHMapIDestroy(&bmap));
+  /* stretch weights of the chain edges */
+  for (PetscInt e = 0; e < P->nfe; e++) P->sw[e] = ((P->esrc[e] < N) + (P->ehead[e] < N)) / 2.0;
+
+  /* midsurface over the reference box of the extended pattern (contact ghosts stay within one period) */
+  lo[0] = lo[1] = PETSC_MAX_REAL;
+  hi[0] = hi[1] = PETSC_MIN_REAL;
+  for (PetscInt o = 0; o < N; o++)
+    for (int i = 0; i < 2; i++) {
+      lo[i] = PetscMin(lo[i], P->xi[3 * o + i]);
+      hi[i] = PetscMax(hi[i], P->xi[3 * o + i]);
+    }
+  lo[0] -= 1.5 * P->D.px;
+  hi[0] += 1.5 * P->D.px;
+  lo[1] -= 1.5 * P->D.py;
+  hi[1] += 1.5 * P->D.py;
+  PetscCall(HylcMidsurfaceSetStrain(P->ms, P->z));
+  PetscCall(HylcMidsurfaceSetBox(P->ms, lo, hi));
+  PetscCall(HylcMidsurfaceSetUp(P->ms));
+
+  /* contact ghosts: copies of tile edges in the 8 neighbouring tiles within the margin, measured on the
+     deformed initial guess */
+  {
+    const PetscReal margin = PetscMax(3 * P->c.r, P->marginFactor * PetscMin(P->D.px, P->D.py));
+    PetscReal       blo[3] = {PETSC_MAX_REAL, PETSC_MAX_REAL, PETSC_MAX_REAL}, bhi[3] = {PETSC_MIN_REAL, PETSC_MIN_REAL, PETSC_MIN_REAL};
+    PetscReal      *xih, *xo;
+    PetscCall(PetscMalloc2(3 * N * 9 * 2, &xih, 3 * N * 9 * 2, &xo));
+    for (PetscInt o = 0; o < N; o++)
+      for (int i = 0; i < 3; i++) xih[3 * o + i] = P->xi[3 * o + i];
+    PetscCall(HylcMidsurfaceEvaluate(P->ms, N, xih, xo, NULL));
+    for (PetscInt o = 0; o < N; o++)
+      for (int i = 0; i < 3; i++) {
+        blo[i] = PetscMin(blo[i], xo[3 * o + i]);
+        bhi[i] = PetscMax(bhi[i], xo[3 * o + i]);
+      }
+    PetscInt q = 0;
+    for (PetscInt s1 = -1; s1 <= 1; s1++)
+      for (PetscInt s2 = -1; s2 <= 1; s2++) {
+        if (!s1 && !s2) continue;
+        for (PetscInt o = 0; o < N; o++, q++) {
+          const PetscInt w = P->D.next[o];
+          xih[6 * q + 0]   = P->xi[3 * o] + s1 * P->D.px;
+          xih[6 * q + 1]   = P->xi[3 * o + 1] + s2 * P->D.py;
+          xih[6 * q + 2]   = P->xi[3 * o + 2];
+          xih[6 * q + 3]   = P->xi[3 * w] + (s1 + P->D.shift[2 * o]) * P->D.px;
+          xih[6 * q + 4]   = P->xi[3 * w + 1] + (s2 + P->D.shift[2 * o + 1]) * P->D.py;
+          xih[6 * q + 5]   = P->xi[3 * w + 2];
+        }
+      }
+    PetscCall(HylcMidsurfaceEvaluate(P->ms, 2 * q, xih, xo, NULL));
+    q = 0;
+    for (PetscInt s1 = -1; s1 <= 1; s1++)
+      for (PetscInt s2 = -1; s2 <= 1; s2++) {
+        if (!s1 && !s2) continue;
+        for (PetscInt o = 0; o < N; o++, q++) {
+          PetscBool near = PETSC_TRUE;
+          for (int i = 0; i < 3; i++) {
+            const PetscReal a = PetscMin(xo[6 * q + i], xo[6 * q + 3 + i]), b = PetscMax(xo[6 * q + i], xo[6 * q + 3 + i]);
+            if (a > bhi[i] + margin || b < blo[i] - margin) near = PETSC_FALSE;
+          }
+          if (near) {
+            PetscInt e;
+            PetscCall(FullEdge(P, o, s1, s2, &e));
+          }
+        }
+      }
+    PetscCall(PetscFree2(xih, xo));
+  }
+
+  /* elimination maps and the initial state */
+  PetscCall(PetscMalloc3(9 * P->nfv, &P->T, 3 * P->nfv, &P->d, P->nfv, &P->rigidId));
+  PetscCall(PetscMalloc3(4 * N, &P->y, 4 * N, &P->y0, 3 * P->nfv, &P->x));
+  PetscCall(PetscMalloc1(3 * P->nfv, &x0));
+  {
+    PetscReal *xih;
+    PetscCall(PetscMalloc1(3 * P->nfv, &xih));
+    for (PetscInt k = 0; k < P->nfv; k++) RefPos(P, k, xih + 3 * k);
+    PetscCall(HylcMidsurfaceEvaluate(P->ms, P->nfv, xih, x0, NULL));
+    for (PetscInt k = 0; k < P->nfv; k++) {
+      const PetscInt o = P->fo[k];
+      PetscReal     *T = P->T + 9 * k, Ro[9], Rk[9], Tx[3];
+      if (k < N) {
+        for (int i = 0; i < 9; i++) T[i] = (i % 4 == 0);
+        for (int i = 0; i < 3; i++) P->d[3 * k + i] = 0;
+        P->rigidId[k] = PETSC_TRUE;
+        continue;
+      }
+      PetscCall(HylcMidsurfaceGetRotation(P->ms, P->xi + 3 * o, Ro));
+      PetscCall(HylcMidsurfaceGetRotation(P->ms, xih + 3 * k, Rk));
+      for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) T[3 * i + j] = Rk[3 * i] * Ro[3 * j] + Rk[3 * i + 1] * Ro[3 * j + 1] + Rk[3 * i + 2] * Ro[3 * j + 2];
+      P->rigidId[k] = PETSC_TRUE;
+      for (int i = 0; i < 9; i++)
+        if (T[i] != (PetscReal)(i % 4 == 0)) P->rigidId[k] = PETSC_FALSE;
+      Mat3(T, x0 + 3 * o, Tx);
+      for (int i = 0; i < 3; i++) P->d[3 * k + i] = x0[3 * k + i] - Tx[i];
+    }
+    /* projected reference frames (24): d1 <- normalize((I - t t^T) R(xi_v) d1_pattern) */
+    PetscCall(PetscMalloc4(3 * P->nfe, &P->et, 3 * P->nfe, &P->ed1, 3 * P->nfe, &P->et0, 3 * P->nfe, &P->ed10));
+    for (PetscInt e = 0; e < P->nfe; e++) {
+      const PetscInt k0 = P->esrc[e], k1 = P->ehead[e];
+      PetscReal      R[9];
+      HylcSub3(x0 + 3 * k1, x0 + 3 * k0, P->et + 3 * e);
+      PetscCheck(HylcNormalize3(P->et + 3 * e) > 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "Zero-length edge in the deformed initial guess");
+      PetscCall(HylcMidsurfaceGetRotation(P->ms, xih + 3 * k0, R));
+      Mat3(R, P->D.refD1 + 3 * P->fo[k0], P->ed1 + 3 * e);
+      PetscCheck(HylcOrthonormalizeDirector(P->et + 3 * e, P->ed1 + 3 * e) > 1e-3, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "Projected reference director of edge %" PetscInt_FMT " is parallel to its edge", P->fo[k0]);
+    }
+    PetscCall(PetscFree(xih));
+  }
+  PetscCall(PetscMalloc2(P->nbe, &P->mref, P->nbe, &P->mref0));
+  for (PetscInt b = 0; b < P->nbe; b++) {
+    const BendElem *E = P->be + b;
+    P->mref[b]        = HylcAngleNear(HylcReferenceTwist(P->et + 3 * E->e, P->ed1 + 3 * E->e, P->et + 3 * E->f, P->ed1 + 3 * E->f), P->D.refTwist[P->fo[E->v[1]]]);
+  }
+  for (PetscInt o = 0; o < N; o++) {
+    for (int i = 0; i < 3; i++) P->y[4 * o + i] = x0[3 * o + i];
+    P->y[4 * o + 3] = P->D.theta[o];
+  }
+  PetscCall(PetscArraycpy(P->y0, P->y, 4 * N));
+  PetscCall(SetUpConstraints(P, x0));
+  PetscCall(PetscFree(x0));
+  PetscCall(PetscMalloc1(6 * P->nfe, &P->segx));
+  P->setup = PETSC_TRUE;
+  PetscCall(HylcPeriodicSetState(P, P->y));
+  PetscCall(PetscLogEventEnd(HYLC_PeriodicSetUp, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcPeriodicGetSizes(HylcPeriodic P, PetscInt *ny, PetscInt *nfull, PetscInt *nedges, PetscInt *ncons)
+{
+  PetscFunctionBegin;
+  PetscCheck(P->setup, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE, "Call HylcPeriodicSetUp() first");
+  if (ny) *ny = 4 * P->N;
+  if (nfull) *nfull = P->nfv;
+  if (nedges) *nedges = P->nfe;
+  if (ncons) *ncons = P->ncons;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcPeriodicGetArea(HylcPeriodic P, PetscReal *A)
+{
+  PetscFunctionBegin;
+  *A = P->D.px * P->D.py;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcPeriodicGetConstants(HylcPeriodic P, HylcYarnConstants *c)
+{
+  PetscFunctionBegin;
+  *c = P->c;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcPeriodicGetMacroStrain(HylcPeriodic P, const HylcMacroStrain **m)
+{
+  PetscFunctionBegin;
+  PetscCall(HylcMidsurfaceGetStrain(P->ms, m));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcPeriodicGetInitialState(HylcPeriodic P, PetscReal y[])
+{
+  PetscFunctionBegin;
+  PetscCheck(P->setup, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE, "Call HylcPeriodicSetUp() first");
+  PetscCall(PetscArraycpy(y, P->y0, 4 * P->N));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPeriodicSetState - Sets y and computes the full positions q = C y + d. Not collective.
+@*/
+PetscErrorCode HylcPeriodicSetState(HylcPeriodic P, const PetscReal y[])
+{
+  PetscFunctionBegin;
+  PetscCheck(P->setup, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE, "Call HylcPeriodicSetUp() first");
+  if (y != P->y) PetscCall(PetscArraycpy(P->y, y, 4 * P->N));
+  for (PetscInt k = 0; k < P->nfv; k++) {
+    const PetscInt   o = P->fo[k];
+    const PetscReal *xo = P->y + 4 * o;
+    if (P->rigidId[k])
+      for (int i = 0; i < 3; i++) P->x[3 * k + i] = xo[i] + P->d[3 * k + i];
+    else {
+      Mat3(P->T + 9 * k, xo, P->x + 3 * k);
+      for (int i = 0; i < 3; i++) P->x[3 * k + i] += P->d[3 * k + i];
+    }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcPeriodicGetFullPositions(HylcPeriodic P, PetscInt *n, const PetscReal **x, const PetscInt **orig, const PetscInt **shift)
+{
+  PetscFunctionBegin;
+  if (n) *n = P->nfv;
+  if (x) *x = P->x;
+  if (orig) *orig = P->fo;
+  if (shift) *shift = P->fs;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcPeriodicGetConstraints(HylcPeriodic P, PetscInt *m, const PetscReal **A, const PetscReal **dL, const PetscReal **AAtinv)
+{
+  PetscFunctionBegin;
+  PetscCheck(P->setup, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE, "Call HylcPeriodicSetUp() first");
+  if (m) *m = P->ncons;
+  if (A) *A = P->A;
+  if (dL) *dL = P->dL;
+  if (AAtinv) *AAtinv = P->AAtinv;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* c = A y - dL */
+PetscErrorCode HylcPeriodicConstraintResidual(HylcPeriodic P, const PetscReal y[], PetscReal c[])
+{
+  PetscFunctionBegin;
+  for (PetscInt i = 0; i < P->ncons; i++) {
+    PetscReal s = -P->dL[i];
+    for (PetscInt k = 0; k < 4 * P->N; k++) s += P->A[i * 4 * P->N + k] * y[k];
+    c[i] = s;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPeriodicUpdateFrames - Time-parallel transport of every full edge's reference director to its
+  current tangent, and reference twists updated on the nearest branch. Not collective.
+@*/
+PetscErrorCode HylcPeriodicUpdateFrames(HylcPeriodic P)
+{
+  PetscFunctionBegin;
+  for (PetscInt e = 0; e < P->nfe; e++) {
+    PetscReal tn[3];
+    HylcSub3(P->x + 3 * P->ehead[e], P->x + 3 * P->esrc[e], tn);
+    PetscCheck(HylcNormalize3(tn) > 0, PETSC_COMM_SELF, PETSC_ERR_FP, "Zero-length edge");
+    HylcParallelTransport(P->et + 3 * e, tn, P->ed1 + 3 * e, P->ed1 + 3 * e);
+    HylcOrthonormalizeDirector(tn, P->ed1 + 3 * e);
+    for (int i = 0; i < 3; i++) P->et[3 * e + i] = tn[i];
+  }
+  for (PetscInt b = 0; b < P->nbe; b++) {
+    const BendElem *E = P->be + b;
+    P->mref[b]        = HylcAngleNear(HylcReferenceTwist(P->et + 3 * E->e, P->ed1 + 3 * E->e, P->et + 3 * E->f, P->ed1 + 3 * E->f), P->mref[b]);
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcPeriodicSaveFrames(HylcPeriodic P)
+{
+  PetscFunctionBegin;
+  PetscCall(PetscArraycpy(P->et0, P->et, 3 * P->nfe));
+  PetscCall(PetscArraycpy(P->ed10, P->ed1, 3 * P->nfe));
+  PetscCall(PetscArraycpy(P->mref0, P->mref, P->nbe));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcPeriodicRestoreFrames(HylcPeriodic P)
+{
+  PetscFunctionBegin;
+  PetscCall(PetscArraycpy(P->et, P->et0, 3 * P->nfe));
+  PetscCall(PetscArraycpy(P->ed1, P->ed10, 3 * P->nfe));
+  PetscCall(PetscArraycpy(P->mref, P->mref0, P->nbe));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* contact pairs among the full edges: broadphase, zero-weight pairs pruned, same-yarn pairs excluded */
+static PetscErrorCode FindPairs(HylcPeriodic P)
+{
+  PetscFunctionBegin;
+  PetscCall(PetscLogEventBegin(HYLC_TileBroadphase, 0, 0, 0, 0));
+  for (PetscInt e = 0; e < P->nfe; e++)
+    for (int i = 0; i < 3; i++) {
+      P->segx[6 * e + i]     = P->x[3 * P->esrc[e] + i];
+      P->segx[6 * e + 3 + i] = P->x[3 * P->ehead[e] + i];
+    }
+  if (!P->bvh) {
+    PetscCheck(!HylcBVHCreate((int)P->nfe, &P->bvh), PETSC_COMM_SELF, PETSC_ERR_MEM, "Cannot create the broadphase");
+    PetscCheck(!HylcBVHBuild(P->bvh, P->segx, NULL, P->c.r), PETSC_COMM_SELF, PETSC_ERR_MEM, "Cannot build the broadphase");
+    PetscCheck(!HylcBVHSetGhost(P->bvh, P->eghost), PETSC_COMM_SELF, PETSC_ERR_MEM, "Cannot set ghost flags");
+  } else PetscCheck(!HylcBVHRefit(P->bvh, P->segx, NULL), PETSC_COMM_SELF, PETSC_ERR_MEM, "Cannot refit the broadphase");
+  PetscCheck(!HylcBVHQuery(P->bvh, &P->cand), PETSC_COMM_SELF, PETSC_ERR_MEM, "Broadphase query failed");
+  HylcPairListSort(&P->cand);
+  P->npairs = 0;
+  for (size_t c = 0; c < P->cand.n; c++) {
+    const PetscInt i = P->cand.idx[2 * c], j = P->cand.idx[2 * c + 1];
+    const PetscInt ki = P->esrc[i], kj = P->esrc[j];
+    const PetscInt s[2] = {P->fs[2 * kj] - P->fs[2 * ki], P->fs[2 * kj + 1] - P->fs[2 * ki + 1]};
+    PetscBool      excl;
+    PetscCall(HylcPatternIsExcludedPair(P->pat, P->model.excludeArc, P->fo[ki], P->fo[kj], s, &excl));
+    if (excl) continue;
+    const PetscInt nor = (P->esrc[i] < P->N) + (P->ehead[i] < P->N) + (P->esrc[j] < P->N) + (P->ehead[j] < P->N);
+    if (!nor) continue;
+    if (P->npairs == P->cappairs) {
+      PetscInt  *np;
+      PetscReal *nw;
+      P->cappairs = P->cappairs ? 2 * P->cappairs : 256;
+      PetscCall(PetscMalloc2(2 * P->cappairs, &np, P->cappairs, &nw));
+      PetscCall(PetscArraycpy(np, P->pairs, 2 * P->npairs));
+      PetscCall(PetscArraycpy(nw, P->pw, P->npairs));
+      PetscCall(PetscFree2(P->pairs, P->pw));
+      P->pairs = np;
+      P->pw    = nw;
+    }
+    P->pairs[2 * P->npairs]     = i;
+    P->pairs[2 * P->npairs + 1] = j;
+    P->pw[P->npairs++]          = nor / 4.0;
+  }
+  PetscCall(PetscLogEventEnd(HYLC_TileBroadphase, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcPeriodicGetNumContactPairs(HylcPeriodic P, PetscInt *n)
+{
+  PetscFunctionBegin;
+  PetscCall(FindPairs(P));
+  *n = P->npairs;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* local element layout: a list of "slots", each a full vertex position (3 dofs) or a twist (1 dof) */
+typedef struct {
+  PetscInt n;        /* number of local dofs */
+  PetscInt vert[4];  /* full vertex of each position slot (-1 none) */
+  PetscInt pos[4];   /* local offset of each position slot */
+  PetscInt npos;
+  PetscInt twist[2]; /* local offset of twist dofs and their original vertex */
+  PetscInt two[2];
+  PetscInt ntw;
+} Layout;
+
+static void LayoutDofs(const HylcPeriodic P, const Layout *L, PetscInt idx[])
+{
+  for (PetscInt a = 0; a < L->npos; a++)
+    for (int i = 0; i < 3; i++) idx[L->pos[a] + i] = 4 * P->fo[L->vert[a]] + i;
+  for (PetscInt a = 0; a < L->ntw; a++) idx[L->twist[a]] = 4 * L->two[a] + 3;
+}
+
+/* g_loc <- B^T g_loc and H_loc <- B^T H_loc B for the rotation blocks T of the position slots */
+static void Reduce(const HylcPeriodic P, const Layout *L, double g[], double H[])
+{
+  const PetscInt n = L->n;
+  for (PetscInt a = 0; a < L->npos; a++) {
+    const PetscInt k = L->vert[a], o = L->pos[a];
+    if (P->rigidId[k]) continue;
+    const PetscReal *T = P->T + 9 * k;
+    if (g) {
+      PetscReal t[3];
+      MatT3(T, g + o, t);
+      for (int i = 0; i < 3; i++) g[o + i] = t[i];
+    }
+    if (H) {
+      /* rows: H[o+i, :] <- sum_m T[m, i] H[o+m, :]; columns likewise */
+      for (PetscInt c = 0; c < n; c++) {
+        PetscReal t[3];
+        for (int i = 0; i < 3; i++) t[i] = T[i] * H[(o + 0) * n + c] + T[3 + i] * H[(o + 1) * n + c] + T[6 + i] * H[(o + 2) * n + c];
+        for (int i = 0; i < 3; i++) H[(o + i) * n + c] = t[i];
+      }
+      for (PetscInt r = 0; r < n; r++) {
+        PetscReal t[3];
+        for (int i = 0; i < 3; i++) t[i] = H[r * n + o] * T[i] + H[r * n + o + 1] * T[3 + i] + H[r * n + o + 2] * T[6 + i];
+        for (int i = 0; i < 3; i++) H[r * n + o + i] = t[i];
+      }
+    }
+  }
+}
+
+static void StretchLayout(const HylcPeriodic P, PetscInt e, Layout *L)
+{
+  L->n       = 6;
+  L->npos    = 2;
+  L->vert[0] = P->esrc[e];
+  L->vert[1] = P->ehead[e];
+  L->pos[0]  = 0;
+  L->pos[1]  = 3;
+  L->ntw     = 0;
+}
+static void BendLayout(const HylcPeriodic P, const BendElem *E, Layout *L)
+{
+  L->n        = 11;
+  L->npos     = 3;
+  L->vert[0]  = E->v[0];
+  L->vert[1]  = E->v[1];
+  L->vert[2]  = E->v[2];
+  L->pos[0]   = 0;
+  L->pos[1]   = 4;
+  L->pos[2]   = 8;
+  L->ntw      = 2;
+  L->twist[0] = 3;
+  L->twist[1] = 7;
+  L->two[0]   = P->fo[E->v[0]];
+  L->two[1]   = P->fo[E->v[1]];
+}
+static void ContactLayout(const HylcPeriodic P, PetscInt i, PetscInt j, Layout *L)
+{
+  L->n       = 12;
+  L->npos    = 4;
+  L->vert[0] = P->esrc[i];
+  L->vert[1] = P->ehead[i];
+  L->vert[2] = P->esrc[j];
+  L->vert[3] = P->ehead[j];
+  for (int a = 0; a < 4; a++) L->pos[a] = 3 * a;
+  L->ntw = 0;
+}
+
+PetscErrorCode HylcPeriodicCreateMatrix(HylcPeriodic P, Mat *H)
+{
+  PetscFunctionBegin;
+  PetscCall(MatCreate(PETSC_COMM_SELF, H));
+  PetscCall(MatSetSizes(*H, 4 * P->N, 4 * P->N, 4 * P->N, 4 * P->N));
+  PetscCall(MatSetType(*H, MATSEQAIJ));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode SetCOO(HylcPeriodic P, Mat H)
+{
+  PetscBool same = (PetscBool)(H == P->cooMat && P->coonpairs == P->npairs);
+  Layout    L;
+  PetscInt  idx[12], k = 0;
+
+  PetscFunctionBegin;
+  if (same) PetscCall(PetscArraycmp(P->coopairs, P->pairs, 2 * P->npairs, &same));
+  if (same) PetscFunctionReturn(PETSC_SUCCESS);
+  const PetscInt n = P->nfe * 36 + P->nbe * 121 + P->npairs * 144;
+  if (n > P->capcoo) {
+    PetscCall(PetscFree3(P->cooi, P->cooj, P->coov));
+    P->capcoo = n + n / 4;
+    PetscCall(PetscMalloc3(P->capcoo, &P->cooi, P->capcoo, &P->cooj, P->capcoo, &P->coov));
+  }
+  for (PetscInt e = 0; e < P->nfe; e++) {
+    if (P->sw[e] == 0) continue;
+    StretchLayout(P, e, &L);
+    LayoutDofs(P, &L, idx);
+    for (int i = 0; i < 6; i++)
+      for (int j = 0; j < 6; j++, k++) {
+        P->cooi[k] = idx[i];
+        P->cooj[k] = idx[j];
+      }
+  }
+  for (PetscInt b = 0; b < P->nbe; b++) {
+    BendLayout(P, P->be + b, &L);
+    LayoutDofs(P, &L, idx);
+    for (int i = 0; i < 11; i++)
+      for (int j = 0; j < 11; j++, k++) {
+        P->cooi[k] = idx[i];
+        P->cooj[k] = idx[j];
+      }
+  }
+  for (PetscInt p = 0; p < P->npairs; p++) {
+    ContactLayout(P, P->pairs[2 * p], P->pairs[2 * p + 1], &L);
+    LayoutDofs(P, &L, idx);
+    for (int i = 0; i < 12; i++)
+      for (int j = 0; j < 12; j++, k++) {
+        P->cooi[k] = idx[i];
+        P->cooj[k] = idx[j];
+      }
+  }
+  P->ncoo = k;
+  PetscCall(MatSetPreallocationCOO(H, P->ncoo, P->cooi, P->cooj));
+  PetscCall(PetscFree(P->coopairs));
+  PetscCall(PetscMalloc1(2 * P->npairs + 1, &P->coopairs));
+  PetscCall(PetscArraycpy(P->coopairs, P->pairs, 2 * P->npairs));
+  P->coonpairs = P->npairs;
+  P->cooMat    = H;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* accumulate a reduced element gradient and Hessian */
+static inline void Scatter(const HylcPeriodic P, const Layout *L, double ge[], double He[], PetscReal gy[], PetscScalar *hv)
+{
+  PetscInt idx[12];
+  Reduce(P, L, gy ? ge : NULL, hv ? He : NULL);
+  if (gy) {
+    LayoutDofs(P, L, idx);
+    for (PetscInt i = 0; i < L->n; i++) gy[idx[i]] += ge[i];
+  }
+  if (hv)
+    for (PetscInt i = 0; i < L->n * L->n; i++) hv[i] = He[i];
+}
+
+/*@C
+  HylcPeriodicEvaluate - Energy of the current state (parts: stretch, bend, twist, contact, for the terms
+  in mask), and optionally the reduced gradient g_y (4 per original vertex, overwritten) and reduced
+  Hessian H_y (from HylcPeriodicCreateMatrix(), overwritten). Not collective.
+@*/
+PetscErrorCode HylcPeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts[4], PetscReal gy[], Mat H)
+{
+  PetscReal    E[4] = {0, 0, 0, 0};
+  double       x[12], ge[12], He[144];
+  Layout       L;
+  PetscScalar *hv;
+  PetscInt     k = 0;
+
+  PetscFunctionBegin;
+  PetscCheck(P->setup, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE, "Call HylcPeriodicSetUp() first");
+  PetscCall(PetscLogEventBegin(HYLC_PeriodicEvaluate, 0, 0, 0, 0));
+  if (gy) PetscCall(PetscArrayzero(gy, 4 * P->N));
+  if (mask & HYLC_TERM_CONTACT) PetscCall(FindPairs(P));
+  else P->npairs = 0;
+  if (H) PetscCall(SetCOO(P, H));
+  hv = H ? P->coov : NULL;
+  for (PetscInt e = 0; e < P->nfe; e++) {
+    if (P->sw[e] == 0) continue;
+    StretchLayout(P, e, &L);
+    for (int i = 0; i < 3; i++) {
+      x[i]     = P->x[3 * P->esrc[e] + i];
+      x[3 + i] = P->x[3 * P->ehead[e] + i];
+    }
+    if (mask & HYLC_TERM_STRETCH) {
+      double en;
+      PetscCheck(!HylcRodStretch(x, P->D.restLength[P->fo[P->esrc[e]]], P->c.ks, P->sw[e], &en, gy ? ge : NULL, H ? He : NULL), PETSC_COMM_SELF, PETSC_ERR_FP, "Zero-length edge");
+      E[0] += en;
+      Scatter(P, &L, ge, He, gy, hv ? hv + k : NULL);
+    } else if (hv)
+      for (int i = 0; i < 36; i++) hv[k + i] = 0;
+    k += 36;
+  }
+  const int bt = ((mask & HYLC_TERM_BEND) ? HYLC_ROD_BEND : 0) | ((mask & HYLC_TERM_TWIST) ? HYLC_ROD_TWIST : 0);
+  for (PetscInt b = 0; b < P->nbe; b++) {
+    const BendElem     *B = P->be + b;
+    const PetscInt      oc = P->fo[B->v[1]], ou = P->fo[B->v[0]];
+    HylcRodBendTwistRef ref;
+    double              en[2];
+    BendLayout(P, B, &L);
+    for (int i = 0; i < 3; i++) {
+      x[i]       = P->x[3 * B->v[0] + i];
+      x[4 + i]   = P->x[3 * B->v[1] + i];
+      x[8 + i]   = P->x[3 * B->v[2] + i];
+      ref.te[i]  = P->et[3 * B->e + i];
+      ref.d1e[i] = P->ed1[3 * B->e + i];
+      ref.tf[i]  = P->et[3 * B->f + i];
+      ref.d1f[i] = P->ed1[3 * B->f + i];
+    }
+    x[3]          = P->y[4 * ou + 3];
+    x[7]          = P->y[4 * oc + 3];
+    ref.mref      = P->mref[b];
+    ref.kappa0[0] = ref.kappa0[2] = P->D.restKappa[2 * oc];
+    ref.kappa0[1] = ref.kappa0[3] = P->D.restKappa[2 * oc + 1];
+    ref.tau0      = P->D.restTwist[oc];
+    ref.lbar      = 0.5 * (P->D.restLength[ou] + P->D.restLength[oc]);
+    if (bt) {
+      const int err = (gy || H) ? HylcRodBendTwist(x, &ref, &P->btpar, B->w, bt, en, gy ? ge : NULL, H ? He : NULL) : HylcRodBendTwistEnergy(x, &ref, &P->btpar, B->w, en);
+      PetscCheck(!err, PETSC_COMM_SELF, PETSC_ERR_FP, "Bending element at vertex %" PetscInt_FMT " is degenerate", oc);
+      if (mask & HYLC_TERM_BEND) E[1] += en[0];
+      if (mask & HYLC_TERM_TWIST) E[2] += en[1];
+      Scatter(P, &L, ge, He, gy, hv ? hv + k : NULL);
+    } else if (hv)
+      for (int i = 0; i < 121; i++) hv[k + i] = 0;
+    k += 121;
+  }
+  PetscCall(PetscLogEventBegin(HYLC_TileContact, 0, 0, 0, 0));
+  for (PetscInt p = 0; p < P->npairs; p++) {
+    const PetscInt i = P->pairs[2 * p], j = P->pairs[2 * p + 1];
+    double         en;
+    ContactLayout(P, i, j, &L);
+    for (int a = 0; a < 4; a++)
+      for (int c = 0; c < 3; c++) x[3 * a + c] = P->x[3 * L.vert[a] + c];
+    const PetscReal la = P->D.restLength[P->fo[P->esrc[i]]], lb = P->D.restLength[P->fo[P->esrc[j]]];
+    if (P->model.contactType == HYLC_CONTACT_QUADRATURE) en = HylcContactQuadrature(x, x + 3, x + 6, x + 9, la, lb, P->c.kc, P->c.r, (int)P->model.contactPoints, P->pw[p], gy ? ge : NULL, H ? He : NULL);
+    else en = HylcContactClosestPoint(x, x + 3, x + 6, x + 9, la, lb, P->c.kc, P->c.r, P->pw[p], gy ? ge : NULL, H ? He : NULL, NULL, NULL, NULL);
+    E[3] += en;
+    Scatter(P, &L, ge, He, gy, hv ? hv + k : NULL);
+    k += 144;
+  }
+  PetscCall(PetscLogEventEnd(HYLC_TileContact, 0, 0, 0, 0));
+  if (H) {
+    PetscCall(PetscLogEventBegin(HYLC_TileAssemble, 0, 0, 0, 0));
+    PetscCall(MatSetValuesCOO(H, P->coov, INSERT_VALUES));
+    PetscCall(PetscLogEventEnd(HYLC_TileAssemble, 0, 0, 0, 0));
+  }
+  for (int i = 0; i < 4; i++) parts[i] = E[i];
+  PetscCheck(PetscIsNormalReal(E[0] + E[1] + E[2] + E[3]) || E[0] + E[1] + E[2] + E[3] == 0, PETSC_COMM_SELF, PETSC_ERR_FP, "Energy is not finite: stretch %g, bend %g, twist %g, contact %g", (double)E[0], (double)E[1], (double)E[2], (double)E[3]);
+  PetscCall(PetscLogEventEnd(HYLC_PeriodicEvaluate, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcPeriodicView(HylcPeriodic P, PetscViewer viewer)
+{
+  PetscFunctionBegin;
+  PetscCheck(P->setup, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE, "Call HylcPeriodicSetUp() first");
+  PetscCall(PetscViewerASCIIPrintf(viewer, "periodic tile: strain (%g, %g, %g, %g, %g, %g); %" PetscInt_FMT " original and %" PetscInt_FMT " ghost vertices, %" PetscInt_FMT " edges, %" PetscInt_FMT " bend-twist elements, %" PetscInt_FMT " constraints (slide %s)\n", (double)P->z[0], (double)P->z[1], (double)P->z[2], (double)P->z[3], (double)P->z[4], (double)P->z[5], P->N, P->nfv - P->N, P->nfe, P->nbe, P->ncons, HylcSlideConstraints[P->slide]));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
