@@ -1,9 +1,12 @@
 #include <hylc/sys.h>
+#include <petscmat.h>
 
 PetscClassId  HYLC_PATTERN_CLASSID;
 PetscLogEvent HYLC_PatternLoad, HYLC_PatternWrite, HYLC_PatternGenerate, HYLC_PatternDistance;
 PetscLogEvent HYLC_TileEvaluate, HYLC_TileBroadphase, HYLC_TileContact, HYLC_TileAssemble;
-PetscLogEvent HYLC_PeriodicSetUp, HYLC_PeriodicEvaluate;
+PetscLogEvent HYLC_PeriodicSetUp, HYLC_PeriodicEvaluate, HYLC_MicroSolve;
+
+const char *HylcDefaultOrdering(void) { return MATORDERINGAMD; }
 PetscClassId  HYLC_MIDSURFACE_CLASSID;
 PetscLogEvent HYLC_MacroSetUp, HYLC_MacroPoisson, HYLC_MacroEvaluate;
 
@@ -32,6 +35,7 @@ PetscErrorCode HylcInitializePackage(void)
   PetscCall(PetscLogEventRegister("TILE_Assemble", HYLC_PATTERN_CLASSID, &HYLC_TileAssemble));
   PetscCall(PetscLogEventRegister("PERIODIC_SetUp", HYLC_PATTERN_CLASSID, &HYLC_PeriodicSetUp));
   PetscCall(PetscLogEventRegister("PERIODIC_Evaluate", HYLC_PATTERN_CLASSID, &HYLC_PeriodicEvaluate));
+  PetscCall(PetscLogEventRegister("MICRO_Solve", HYLC_PATTERN_CLASSID, &HYLC_MicroSolve));
   PetscCall(PetscClassIdRegister("HylcMidsurface", &HYLC_MIDSURFACE_CLASSID));
   PetscCall(PetscLogEventRegister("MACRO_SetUp", HYLC_MIDSURFACE_CLASSID, &HYLC_MacroSetUp));
   PetscCall(PetscLogEventRegister("MACRO_Poisson", HYLC_MIDSURFACE_CLASSID, &HYLC_MacroPoisson));

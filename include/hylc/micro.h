@@ -1,0 +1,54 @@
+#pragma once
+/* HylcMicro: the microscale equilibrium of a periodic yarn tile under a macroscopic strain (Algorithms
+   C2, C3; method-spec §6), a constrained, regularized Newton method on PETSc SNES:
+   - unknowns: the scaled reduced unknowns y^ = M^-1 y (M = 1 per position, mu per twist);
+   - objective: the total energy E; residual: M g_y;
+   - Jacobian: K = M H_y M + alpha I with alpha = alpha^_i ||M g_y||_inf (S22);
+   - linear solve: the constrained KKT system (S22) by a Schur complement around a sparse Cholesky
+     factorization of K (a PCSHELL around an inner PC, options -micro_factor_pc_*); if the direction is
+     not a descent direction of positive curvature (K indefinite), alpha is multiplied by 10 and K
+     refactored;
+   - line search: the step limit of S2.2, then backtracking by 0.1 until the energy strictly decreases;
+     reference frames are transported after each accepted step (trial states are evaluated against the
+     stored frames, which the kernels transport internally, so nothing has to be restored);
+   - convergence: |z| < rtol |z0| for the projected gradient z (S23-S25) and |A y - dL| < ctol r.
+   A sample that does not converge is data, not an error: see HylcMicroResult.status. */
+#include <hylc/periodic.h>
+#include <petscsnes.h>
+
+typedef struct _n_HylcMicro *HylcMicro;
+
+typedef enum {
+  HYLC_MICRO_CONVERGED = 0,
+  HYLC_MICRO_MAX_IT    = 1, /* iteration cap */
+  HYLC_MICRO_MAX_TIME  = 2, /* wall-time cap */
+  HYLC_MICRO_STALLED   = 3, /* line search found no decrease several times in a row */
+  HYLC_MICRO_NONFINITE = 4, /* non-finite energy or gradient */
+  HYLC_MICRO_FAILED    = 5  /* linear solver failure or invalid set-up */
+} HylcMicroStatus;
+PETSC_EXTERN const char *const HylcMicroStatuses[];
+
+typedef struct {
+  PetscReal       z[6];          /* the strain */
+  PetscReal       psi;           /* E / A (J/m^2) */
+  PetscReal       energy;        /* E (J) */
+  PetscReal       parts[4];      /* stretch, bend, twist, contact energy (J) */
+  HylcMicroStatus status;
+  PetscInt        iterations;    /* Newton iterations */
+  PetscInt        retries;       /* alpha increases for indefinite K */
+  PetscInt        stalls;        /* line searches without decrease */
+  PetscReal       residual;      /* |z| / |z0| at the end */
+  PetscReal       cresidual;     /* |A y - dL| / r at the end */
+  PetscLogDouble  time;          /* wall time of the solve (s) */
+  PetscLogDouble  tAssembly, tContact, tFactor, tLineSearch; /* parts of it (s) */
+} HylcMicroResult;
+
+PETSC_EXTERN PetscErrorCode HylcMicroCreate(MPI_Comm, HylcMicro *);
+PETSC_EXTERN PetscErrorCode HylcMicroDestroy(HylcMicro *);
+PETSC_EXTERN PetscErrorCode HylcMicroSetPattern(HylcMicro, HylcPattern, const HylcYarnModel *);
+PETSC_EXTERN PetscErrorCode HylcMicroSetFromOptions(HylcMicro);
+PETSC_EXTERN PetscErrorCode HylcMicroSolve(HylcMicro, const PetscReal[6], HylcMicroResult *);
+PETSC_EXTERN PetscErrorCode HylcMicroGetPeriodic(HylcMicro, HylcPeriodic *);
+PETSC_EXTERN PetscErrorCode HylcMicroGetState(HylcMicro, PetscReal[]);
+PETSC_EXTERN PetscErrorCode HylcMicroGetEnergyHistory(HylcMicro, PetscInt *, const PetscReal **);
+PETSC_EXTERN PetscErrorCode HylcMicroResultView(const HylcMicroResult *, PetscViewer);

@@ -1,0 +1,704 @@
+/* HylcMicro: constrained, regularized Newton on SNES (see include/hylc/micro.h). */
+#include <hylc/micro.h>
+#include <hylc/geom.h>
+#include <petsctime.h>
+
+const char *const HylcMicroStatuses[] = {"converged", "iteration_cap", "time_cap", "stalled", "nonfinite", "failed", "HylcMicroStatus", "HYLC_MICRO_", NULL};
+
+typedef struct {
+  /* parameters */
+  PetscReal alphaStart, alphaEnd; /* alpha^ schedule: alphaStart (alphaEnd/alphaStart)^(min(i, alphaIts)/alphaIts) */
+  PetscInt  alphaIts, maxRetries;
+  PetscReal twistScale;           /* mu; <= 0: 1/r */
+  PetscReal stepP0, stepP1;       /* d_max = (p0 + p1 clamp(lambda_min(I), 0, 1)) r */
+  PetscReal lsFactor;
+  PetscInt  lsMax, maxStalls;
+  PetscReal rtol, atol, ctol, maxTime;
+} MicroParams;
+
+struct _n_HylcMicro {
+  MPI_Comm      comm;
+  MicroParams   par;
+  HylcPattern   pat;
+  HylcYarnModel model;
+  HylcPeriodic  P;
+  PetscInt      ny, m;  /* unknowns, constraint rows */
+  PetscReal     mu, r, ks; /* twist scale, yarn radius, stretching stiffness k_s */
+  SNES          snes;
+  Mat           K;
+  Vec           X, mvec;
+  PetscReal    *yw, *gw; /* work: unscaled unknowns and gradient */
+  PC            inner;
+  /* KKT data */
+  const PetscReal *A, *dL, *AAtinv;
+  PetscReal       *c, *Z, *S, *Sinv, *wl, *tmp;
+  PetscReal        alpha;
+  /* state of a solve */
+  PetscBool      haveH;     /* K holds the unscaled H_y of the state in X */
+  PetscReal      E0;        /* energy of the current iterate */
+  PetscReal      parts[4];
+  PetscReal      z0;        /* |z| at the first iteration */
+  PetscReal      lastz, lastc;
+  PetscInt       stalls, stallsTotal, retries;
+  PetscLogDouble tStart, tFactor, tLineSearch;
+  HylcMicroStatus status;
+  PetscBool      statusSet;
+  PetscInt       nhist, caphist;
+  PetscReal     *hist;
+  PetscBool      setFromOptionsCalled;
+};
+
+static PetscErrorCode MicroParamsDefault(MicroParams *p)
+{
+  PetscFunctionBegin;
+  p->alphaStart = 5000;
+  p->alphaEnd   = 5;
+  p->alphaIts   = 400;
+  p->maxRetries = 12;
+  p->twistScale = 0;
+  p->stepP0     = 0.05;
+  p->stepP1     = 0.15;
+  p->lsFactor   = 0.1;
+  p->lsMax      = 11;
+  p->maxStalls  = 5;
+  p->rtol       = 1e-5;
+  p->atol       = 1e-10;
+  p->ctol       = 1e-4;
+  p->maxTime    = 60;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcMicroCreate(MPI_Comm comm, HylcMicro *micro)
+{
+  HylcMicro M;
+
+  PetscFunctionBegin;
+  PetscCall(HylcInitializePackage());
+  PetscCall(PetscNew(&M));
+  M->comm = comm;
+  PetscCall(MicroParamsDefault(&M->par));
+  *micro = M;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode MicroFreeSolver(HylcMicro M)
+{
+  PetscFunctionBegin;
+  PetscCall(SNESDestroy(&M->snes));
+  PetscCall(MatDestroy(&M->K));
+  PetscCall(VecDestroy(&M->X));
+  PetscCall(VecDestroy(&M->mvec));
+  PetscCall(PetscFree2(M->yw, M->gw));
+  PetscCall(PCDestroy(&M->inner));
+  PetscCall(PetscFree6(M->c, M->Z, M->S, M->Sinv, M->wl, M->tmp));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcMicroDestroy(HylcMicro *micro)
+{
+  PetscFunctionBegin;
+  if (!*micro) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(MicroFreeSolver(*micro));
+  PetscCall(HylcPeriodicDestroy(&(*micro)->P));
+  PetscCall(HylcPatternDestroy(&(*micro)->pat));
+  PetscCall(PetscFree((*micro)->hist));
+  PetscCall(PetscFree(*micro));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcMicroSetPattern(HylcMicro M, HylcPattern pat, const HylcYarnModel *model)
+{
+  PetscFunctionBegin;
+  PetscCall(PetscObjectReference((PetscObject)pat));
+  PetscCall(HylcPatternDestroy(&M->pat));
+  PetscCall(HylcPeriodicDestroy(&M->P));
+  PetscCall(MicroFreeSolver(M));
+  M->pat   = pat;
+  M->model = *model;
+  PetscCall(HylcPeriodicCreate(pat, model, &M->P));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcMicroSetFromOptions - Options of the Newton solver (prefix -micro_), and of the periodic tile
+  (-periodic_*, -macro_*). The SNES, its KSP and the inner factorization have the prefixes micro_ and
+  micro_factor_: -micro_snes_max_it (iteration cap, default 2000), -micro_snes_monitor,
+  -micro_factor_pc_factor_mat_ordering_type, ...
++ -micro_alpha_start <5000>, -micro_alpha_end <5>, -micro_alpha_its <400> - the alpha^ schedule
+. -micro_alpha_retries <12>      - alpha x 10 retries when K is indefinite
+. -micro_twist_scale <1/r>       - mu, the scale of the twist unknowns (0: 1/r)
+. -micro_step_p0 <0.05>, -micro_step_p1 <0.15> - step limit (p0 + p1 clamp(lambda_min(I),0,1)) r
+. -micro_ls_factor <0.1>, -micro_ls_max <11> - backtracking factor and number of trials
+. -micro_max_stalls <5>          - consecutive failed line searches before giving up
+. -micro_rtol <1e-5>             - |z| < rtol |z0|
+. -micro_atol <1e-10>            - or |z| < atol k_s
+. -micro_ctol <1e-4>             - |A y - dL| < ctol r
+- -micro_max_time <60>           - wall-time cap per solve (s)
+@*/
+PetscErrorCode HylcMicroSetFromOptions(HylcMicro M)
+{
+  MicroParams *p = &M->par;
+
+  PetscFunctionBegin;
+  PetscOptionsBegin(M->comm, NULL, "Microscale Newton solver", "HylcMicro");
+  PetscCall(PetscOptionsReal("-micro_alpha_start", "Regularization schedule: alpha^ at iteration 0", "HylcMicro", p->alphaStart, &p->alphaStart, NULL));
+  PetscCall(PetscOptionsReal("-micro_alpha_end", "Regularization schedule: alpha^ from iteration alpha_its on", "HylcMicro", p->alphaEnd, &p->alphaEnd, NULL));
+  PetscCall(PetscOptionsInt("-micro_alpha_its", "Regularization schedule: iterations of the geometric decay", "HylcMicro", p->alphaIts, &p->alphaIts, NULL));
+  PetscCall(PetscOptionsInt("-micro_alpha_retries", "Retries with alpha x 10 when the Newton matrix is indefinite", "HylcMicro", p->maxRetries, &p->maxRetries, NULL));
+  PetscCall(PetscOptionsReal("-micro_twist_scale", "Scale mu of the twist unknowns (0 = 1/r)", "HylcMicro", p->twistScale, &p->twistScale, NULL));
+  PetscCall(PetscOptionsReal("-micro_step_p0", "Step limit d_max = (p0 + p1 clamp(lambda_min(I),0,1)) r: p0", "HylcMicro", p->stepP0, &p->stepP0, NULL));
+  PetscCall(PetscOptionsReal("-micro_step_p1", "Step limit: p1", "HylcMicro", p->stepP1, &p->stepP1, NULL));
+  PetscCall(PetscOptionsReal("-micro_ls_factor", "Backtracking factor of the line search", "HylcMicro", p->lsFactor, &p->lsFactor, NULL));
+  PetscCall(PetscOptionsInt("-micro_ls_max", "Line-search trials per iteration", "HylcMicro", p->lsMax, &p->lsMax, NULL));
+  PetscCall(PetscOptionsInt("-micro_max_stalls", "Consecutive line searches without decrease before the solve stops (status stalled)", "HylcMicro", p->maxStalls, &p->maxStalls, NULL));
+  PetscCall(PetscOptionsReal("-micro_rtol", "Convergence: projected gradient |z| < rtol |z0|", "HylcMicro", p->rtol, &p->rtol, NULL));
+  PetscCall(PetscOptionsReal("-micro_atol", "Convergence also when |z| < atol k_s (k_s = Es pi r^2, a force): for tiles already at rest", "HylcMicro", p->atol, &p->atol, NULL));
+  PetscCall(PetscOptionsReal("-micro_ctol", "Convergence: constraint residual |A y - dL| < ctol r", "HylcMicro", p->ctol, &p->ctol, NULL));
+  PetscCall(PetscOptionsReal("-micro_max_time", "Wall-time cap per solve (s); status time_cap", "HylcMicro", p->maxTime, &p->maxTime, NULL));
+  PetscOptionsEnd();
+  PetscCheck(p->alphaStart > 0 && p->alphaEnd > 0 && p->alphaIts >= 1, M->comm, PETSC_ERR_USER_INPUT, "-micro_alpha_start, -micro_alpha_end must be positive and -micro_alpha_its at least 1");
+  PetscCheck(p->lsFactor > 0 && p->lsFactor < 1 && p->lsMax >= 1, M->comm, PETSC_ERR_USER_INPUT, "-micro_ls_factor must be in (0, 1) and -micro_ls_max at least 1");
+  PetscCheck(p->rtol > 0 && p->ctol > 0 && p->maxTime > 0 && p->stepP0 > 0 && p->stepP1 >= 0, M->comm, PETSC_ERR_USER_INPUT, "-micro_rtol, -micro_ctol, -micro_max_time, -micro_step_p0 must be positive, -micro_step_p1 non-negative");
+  if (M->P) PetscCall(HylcPeriodicSetFromOptions(M->P));
+  M->setFromOptionsCalled = PETSC_TRUE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* y = M y^ */
+static PetscErrorCode ToY(HylcMicro M, Vec X, PetscReal y[])
+{
+  const PetscScalar *x;
+
+  PetscFunctionBegin;
+  PetscCall(VecGetArrayRead(X, &x));
+  for (PetscInt i = 0; i < M->ny; i++) y[i] = (i % 4 == 3) ? M->mu * PetscRealPart(x[i]) : PetscRealPart(x[i]);
+  PetscCall(VecRestoreArrayRead(X, &x));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+
+/* energy at X without raising errors: a degenerate state (zero-length or folded edge) gives +inf */
+static PetscErrorCode SafeEnergy(HylcMicro M, Vec X, PetscReal *E, PetscReal parts[4])
+{
+  PetscErrorCode ierr;
+  PetscReal      e[4] = {0, 0, 0, 0};
+
+  PetscFunctionBegin;
+  PetscCall(ToY(M, X, M->yw));
+  PetscCall(HylcPeriodicSetState(M->P, M->yw));
+  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+  ierr = HylcPeriodicEvaluate(M->P, HYLC_TERM_ALL, e, NULL, NULL);
+  PetscCall(PetscPopErrorHandler());
+  *E = ierr ? PETSC_INFINITY : e[0] + e[1] + e[2] + e[3];
+  if (!PetscIsNormalReal(*E) && *E != 0) *E = PETSC_INFINITY;
+  if (parts)
+    for (int k = 0; k < 4; k++) parts[k] = e[k];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode FormObjective(SNES snes, Vec X, PetscReal *E, void *ctx)
+{
+  PetscFunctionBegin;
+  (void)snes;
+  PetscCall(SafeEnergy((HylcMicro)ctx, X, E, NULL));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* F = M g_y at X; also the energy and the unscaled Hessian (into K) for the Jacobian that follows */
+static PetscErrorCode FormFunction(SNES snes, Vec X, Vec F, void *ctx)
+{
+  HylcMicro      M = (HylcMicro)ctx;
+  PetscScalar   *f;
+  PetscErrorCode ierr;
+
+  PetscFunctionBegin;
+  (void)snes;
+  PetscCall(ToY(M, X, M->yw));
+  PetscCall(HylcPeriodicSetState(M->P, M->yw));
+  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+  ierr = HylcPeriodicEvaluate(M->P, HYLC_TERM_ALL, M->parts, M->gw, M->K);
+  PetscCall(PetscPopErrorHandler());
+  M->haveH = (PetscBool)!ierr;
+  PetscCall(VecGetArray(F, &f));
+  for (PetscInt i = 0; i < M->ny; i++) f[i] = ierr ? PETSC_INFINITY : ((i % 4 == 3) ? M->mu * M->gw[i] : M->gw[i]);
+  PetscCall(VecRestoreArray(F, &f));
+  M->E0 = ierr ? PETSC_INFINITY : M->parts[0] + M->parts[1] + M->parts[2] + M->parts[3];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* K = M H M + alpha I with alpha = alpha^_i ||M g||_inf; the constraint residual c = A y - dL */
+static PetscErrorCode FormJacobian(SNES snes, Vec X, Mat J, Mat Jpre, void *ctx)
+{
+  HylcMicro M = (HylcMicro)ctx;
+  PetscInt  it;
+  PetscReal gmax = 0;
+
+  PetscFunctionBegin;
+  (void)J;
+  (void)Jpre;
+  PetscCall(SNESGetIterationNumber(snes, &it));
+  PetscCall(ToY(M, X, M->yw));
+  if (!M->haveH) {
+    PetscCall(HylcPeriodicSetState(M->P, M->yw));
+    PetscCall(HylcPeriodicEvaluate(M->P, HYLC_TERM_ALL, M->parts, M->gw, M->K));
+  }
+  M->haveH = PETSC_FALSE;
+  for (PetscInt i = 0; i < M->ny; i++) gmax = PetscMax(gmax, PetscAbsReal((i % 4 == 3) ? M->mu * M->gw[i] : M->gw[i]));
+  const PetscReal t = (PetscReal)PetscMin(it, M->par.alphaIts) / M->par.alphaIts;
+  M->alpha          = M->par.alphaStart * PetscPowReal(M->par.alphaEnd / M->par.alphaStart, t) * gmax;
+  if (!(M->alpha > 0)) M->alpha = PETSC_SMALL;
+  PetscCall(MatDiagonalScale(M->K, M->mvec, M->mvec));
+  PetscCall(MatShift(M->K, M->alpha));
+  PetscCall(MatSetOption(M->K, MAT_SYMMETRIC, PETSC_TRUE));
+  PetscCall(HylcPeriodicConstraintResidual(M->P, M->yw, M->c));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Gauss-Jordan inverse of a small dense matrix S (overwritten); ok = false if singular */
+static void SmallInverse(PetscInt m, PetscReal *S, PetscReal *Sinv, PetscBool *ok)
+{
+  *ok = PETSC_TRUE;
+  for (PetscInt i = 0; i < m * m; i++) Sinv[i] = (i % (m + 1) == 0);
+  for (PetscInt c = 0; c < m; c++) {
+    PetscInt piv = c;
+    for (PetscInt r = c + 1; r < m; r++)
+      if (PetscAbsReal(S[r * m + c]) > PetscAbsReal(S[piv * m + c])) piv = r;
+    if (!(PetscAbsReal(S[piv * m + c]) > 0)) {
+      *ok = PETSC_FALSE;
+      return;
+    }
+    for (PetscInt k = 0; k < m; k++) {
+      PetscReal t       = S[c * m + k];
+      S[c * m + k]      = S[piv * m + k];
+      S[piv * m + k]    = t;
+      t                 = Sinv[c * m + k];
+      Sinv[c * m + k]   = Sinv[piv * m + k];
+      Sinv[piv * m + k] = t;
+    }
+    const PetscReal d = 1 / S[c * m + c];
+    for (PetscInt k = 0; k < m; k++) {
+      S[c * m + k] *= d;
+      Sinv[c * m + k] *= d;
+    }
+    for (PetscInt r = 0; r < m; r++) {
+      if (r == c) continue;
+      const PetscReal f = S[r * m + c];
+      for (PetscInt k = 0; k < m; k++) {
+        S[r * m + k] -= f * S[c * m + k];
+        Sinv[r * m + k] -= f * Sinv[c * m + k];
+      }
+    }
+  }
+}
+
+/* factor K and form the Schur complement data Z = K^-1 M A^T and S^-1 = (A M Z)^-1 */
+static PetscErrorCode KKTFactor(HylcMicro M, PetscBool *ok)
+{
+  const PetscInt n = M->ny, m = M->m;
+  PCFailedReason reason;
+  Vec            b, x;
+  PetscScalar   *a;
+  PetscLogDouble t0, t1;
+  PetscErrorCode ierr;
+
+  PetscFunctionBegin;
+  PetscCall(PetscTime(&t0));
+  PetscCall(PCSetOperators(M->inner, M->K, M->K));
+  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+  ierr = PCSetUp(M->inner);
+  PetscCall(PetscPopErrorHandler());
+  PetscCall(PCGetFailedReason(M->inner, &reason));
+  *ok = (PetscBool)(!ierr && reason == PC_NOERROR);
+  if (*ok) {
+    PetscCall(MatCreateVecs(M->K, &x, &b));
+    for (PetscInt i = 0; i < m; i++) {
+      PetscCall(VecGetArray(b, &a));
+      for (PetscInt k = 0; k < n; k++) a[k] = M->A[i * n + k] * ((k % 4 == 3) ? M->mu : 1.0);
+      PetscCall(VecRestoreArray(b, &a));
+      PetscCall(PCApply(M->inner, b, x));
+      PetscCall(VecGetArray(x, &a));
+      for (PetscInt k = 0; k < n; k++) M->Z[i * n + k] = PetscRealPart(a[k]);
+      PetscCall(VecRestoreArray(x, &a));
+    }
+    PetscCall(VecDestroy(&x));
+    PetscCall(VecDestroy(&b));
+    for (PetscInt i = 0; i < m; i++)
+      for (PetscInt j = 0; j < m; j++) {
+        PetscReal s = 0;
+        for (PetscInt k = 0; k < n; k++) s += M->A[i * n + k] * ((k % 4 == 3) ? M->mu : 1.0) * M->Z[j * n + k];
+        M->S[i * m + j] = s;
+      }
+    SmallInverse(m, M->S, M->Sinv, ok);
+  }
+  PetscCall(PetscTime(&t1));
+  M->tFactor += t1 - t0;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* more regularization: alpha x 10, refactor */
+static PetscErrorCode KKTIncreaseAlpha(HylcMicro M, PetscBool *ok)
+{
+  PetscFunctionBegin;
+  PetscCall(MatShift(M->K, 9 * M->alpha));
+  M->alpha *= 10;
+  M->retries++;
+  PetscCall(PetscInfo(NULL, "indefinite Newton matrix: alpha x 10 -> %g\n", (double)M->alpha));
+  PetscCall(KKTFactor(M, ok));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode KKTSetUp(PC pc)
+{
+  HylcMicro M;
+  PetscBool ok;
+
+  PetscFunctionBegin;
+  PetscCall(PCShellGetContext(pc, &M));
+  PetscCall(KKTFactor(M, &ok));
+  for (PetscInt k = 0; !ok && k < M->par.maxRetries; k++) PetscCall(KKTIncreaseAlpha(M, &ok));
+  PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_CONV_FAILED, "Factorization of the Newton matrix failed after %" PetscInt_FMT " regularization increases", M->par.maxRetries);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* x = -w_y, the KKT solution (S22) for b = M g: x = K^-1 b + Z S^-1 (c - A M K^-1 b) (SNES steps X - x) */
+static PetscErrorCode KKTSolve(HylcMicro M, Vec b, Vec x)
+{
+  const PetscInt n = M->ny, m = M->m;
+  PetscScalar   *xa;
+
+  PetscFunctionBegin;
+  PetscCall(PCApply(M->inner, b, x));
+  PetscCall(VecGetArray(x, &xa));
+  for (PetscInt i = 0; i < m; i++) {
+    PetscReal s = M->c[i];
+    for (PetscInt k = 0; k < n; k++) s -= M->A[i * n + k] * ((k % 4 == 3) ? M->mu : 1.0) * PetscRealPart(xa[k]);
+    M->tmp[i] = s;
+  }
+  for (PetscInt i = 0; i < m; i++) {
+    M->wl[i] = 0;
+    for (PetscInt j = 0; j < m; j++) M->wl[i] += M->Sinv[i * m + j] * M->tmp[j];
+  }
+  for (PetscInt k = 0; k < n; k++) {
+    PetscReal s = 0;
+    for (PetscInt i = 0; i < m; i++) s += M->Z[i * n + k] * M->wl[i];
+    xa[k] += s;
+  }
+  PetscCall(VecRestoreArray(x, &xa));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode KKTApply(PC pc, Vec b, Vec x)
+{
+  HylcMicro   M;
+  PetscScalar descent, curv;
+  Vec         Kx;
+
+  PetscFunctionBegin;
+  PetscCall(PCShellGetContext(pc, &M));
+  PetscCall(VecDuplicate(x, &Kx));
+  for (PetscInt k = 0;; k++) {
+    PetscBool ok;
+    PetscCall(KKTSolve(M, b, x));
+    /* a descent direction of positive curvature; otherwise K is too indefinite: regularize more */
+    PetscCall(VecDot(b, x, &descent));
+    PetscCall(MatMult(M->K, x, Kx));
+    PetscCall(VecDot(x, Kx, &curv));
+    if ((PetscRealPart(descent) > 0 && PetscRealPart(curv) > 0) || k >= M->par.maxRetries) break;
+    PetscCall(KKTIncreaseAlpha(M, &ok));
+    PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_CONV_FAILED, "Factorization of the Newton matrix failed");
+  }
+  PetscCall(VecDestroy(&Kx));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* the step limit, then backtracking until the energy strictly decreases; frames transported on acceptance */
+static PetscErrorCode LineSearch(SNESLineSearch ls, void *ctx)
+{
+  HylcMicro              M = (HylcMicro)ctx;
+  Vec                    X, F, Y, W, G;
+  PetscReal              dmax, d = 0, E, lambda = 1, ynorm, xnorm, fnorm;
+  const PetscScalar     *y;
+  SNES                   snes;
+  PetscLogDouble         t0, t1;
+  const HylcMacroStrain *ms;
+  PetscBool              accepted = PETSC_FALSE;
+
+  PetscFunctionBegin;
+  PetscCall(PetscTime(&t0));
+  PetscCall(SNESLineSearchGetSNES(ls, &snes));
+  PetscCall(SNESLineSearchGetVecs(ls, &X, &F, &Y, &W, &G));
+  PetscCall(HylcPeriodicGetMacroStrain(M->P, &ms));
+  dmax = (M->par.stepP0 + M->par.stepP1 * PetscClipInterval(ms->lambdaMin, 0, 1)) * M->r;
+  /* the largest vertex displacement of the linear step (ghosts are rotated copies: the same lengths) */
+  PetscCall(VecGetArrayRead(Y, &y));
+  for (PetscInt o = 0; o < M->ny / 4; o++) d = PetscMax(d, PetscSqrtReal(PetscSqr(PetscRealPart(y[4 * o])) + PetscSqr(PetscRealPart(y[4 * o + 1])) + PetscSqr(PetscRealPart(y[4 * o + 2]))));
+  PetscCall(VecRestoreArrayRead(Y, &y));
+  if (d > dmax) PetscCall(VecScale(Y, dmax / d));
+  for (PetscInt i = 0; i < M->par.lsMax; i++, lambda *= M->par.lsFactor) {
+    PetscCall(VecWAXPY(W, -lambda, Y, X));
+    PetscCall(SafeEnergy(M, W, &E, NULL));
+    if (E < M->E0) {
+      accepted = PETSC_TRUE;
+      break;
+    }
+  }
+  if (accepted) {
+    PetscCall(VecCopy(W, X));
+    PetscCall(SNESComputeFunction(snes, X, F)); /* the state, E0, the gradient and the Hessian */
+    PetscCall(HylcPeriodicUpdateFrames(M->P));
+    M->stalls = 0;
+    if (M->nhist == M->caphist) {
+      PetscReal *h;
+      M->caphist = M->caphist ? 2 * M->caphist : 256;
+      PetscCall(PetscMalloc1(M->caphist, &h));
+      PetscCall(PetscArraycpy(h, M->hist, M->nhist));
+      PetscCall(PetscFree(M->hist));
+      M->hist = h;
+    }
+    M->hist[M->nhist++] = M->E0;
+  } else {
+    /* keep the iterate (alpha decays with the iteration count); the cached Hessian stays valid */
+    M->stalls++;
+    M->stallsTotal++;
+    PetscCall(ToY(M, X, M->yw));
+    PetscCall(HylcPeriodicSetState(M->P, M->yw));
+    PetscCall(HylcPeriodicEvaluate(M->P, HYLC_TERM_ALL, M->parts, M->gw, M->K));
+    M->haveH = PETSC_TRUE;
+    if (M->stalls >= M->par.maxStalls) {
+      M->status    = HYLC_MICRO_STALLED;
+      M->statusSet = PETSC_TRUE;
+    }
+  }
+  PetscCall(VecNorm(X, NORM_2, &xnorm));
+  PetscCall(VecNorm(F, NORM_2, &fnorm));
+  PetscCall(VecNorm(Y, NORM_2, &ynorm));
+  PetscCall(SNESLineSearchSetNorms(ls, xnorm, fnorm, accepted ? lambda * ynorm : 0));
+  PetscCall(SNESLineSearchSetLambda(ls, accepted ? lambda : 0));
+  PetscCall(PetscTime(&t1));
+  M->tLineSearch += t1 - t0;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* S23-S25: the projected gradient z = g - A^T (A A^T)^-1 A g (unscaled) and the constraint residual */
+static PetscErrorCode Converged(SNES snes, PetscInt it, PetscReal xnorm, PetscReal gnorm, PetscReal f, SNESConvergedReason *reason, void *ctx)
+{
+  HylcMicro      M = (HylcMicro)ctx;
+  const PetscInt n = M->ny, m = M->m;
+  PetscReal      z2 = 0, c2 = 0;
+  PetscLogDouble now;
+  PetscInt       maxit;
+  Vec            X;
+
+  PetscFunctionBegin;
+  (void)xnorm;
+  (void)gnorm;
+  (void)f;
+  *reason = SNES_CONVERGED_ITERATING;
+  if (M->statusSet) { /* stalled line search */
+    *reason = SNES_DIVERGED_LINE_SEARCH;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  if (!PetscIsNormalReal(M->E0) && M->E0 != 0) {
+    M->status    = HYLC_MICRO_NONFINITE;
+    M->statusSet = PETSC_TRUE;
+    *reason      = SNES_DIVERGED_FNORM_NAN;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  for (PetscInt i = 0; i < m; i++) {
+    PetscReal s = 0;
+    for (PetscInt k = 0; k < n; k++) s += M->A[i * n + k] * M->gw[k];
+    M->tmp[i] = s;
+  }
+  for (PetscInt i = 0; i < m; i++) {
+    M->wl[i] = 0;
+    for (PetscInt j = 0; j < m; j++) M->wl[i] += M->AAtinv[i * m + j] * M->tmp[j];
+  }
+  for (PetscInt k = 0; k < n; k++) {
+    PetscReal zk = M->gw[k];
+    for (PetscInt i = 0; i < m; i++) zk -= M->A[i * n + k] * M->wl[i];
+    z2 += zk * zk;
+  }
+  PetscCall(SNESGetSolution(snes, &X));
+  PetscCall(ToY(M, X, M->yw));
+  PetscCall(HylcPeriodicConstraintResidual(M->P, M->yw, M->c));
+  for (PetscInt i = 0; i < m; i++) c2 += M->c[i] * M->c[i];
+  const PetscReal zn = PetscSqrtReal(z2), cn = PetscSqrtReal(c2);
+  if (it == 0) M->z0 = zn;
+  M->lastz = M->z0 > 0 ? zn / M->z0 : 0;
+  M->lastc = cn / M->r;
+  if ((zn <= M->par.rtol * M->z0 || zn <= M->par.atol * M->ks) && cn < M->par.ctol * M->r) {
+    *reason = SNES_CONVERGED_FNORM_RELATIVE;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCall(PetscTime(&now));
+  if (now - M->tStart > M->par.maxTime) {
+    M->status    = HYLC_MICRO_MAX_TIME;
+    M->statusSet = PETSC_TRUE;
+    *reason      = SNES_DIVERGED_FUNCTION_COUNT; /* the wall-time budget */
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCall(SNESGetTolerances(snes, NULL, NULL, NULL, &maxit, NULL));
+  if (it >= maxit) *reason = SNES_DIVERGED_MAX_IT;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* the SNES, its KSP (preonly + the KKT PCSHELL) and the inner factorization; created once per pattern */
+static PetscErrorCode MicroSetUpSolver(HylcMicro M)
+{
+  KSP            ksp;
+  PC             pc;
+  SNESLineSearch ls;
+
+  PetscFunctionBegin;
+  if (M->snes) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(HylcPeriodicGetSizes(M->P, &M->ny, NULL, NULL, &M->m));
+  PetscCall(HylcPeriodicCreateMatrix(M->P, &M->K));
+  PetscCall(MatCreateVecs(M->K, &M->X, NULL));
+  PetscCall(VecDuplicate(M->X, &M->mvec));
+  PetscCall(PetscMalloc2(M->ny, &M->yw, M->ny, &M->gw));
+  PetscCall(PetscMalloc6(M->m, &M->c, M->m * M->ny, &M->Z, M->m * M->m, &M->S, M->m * M->m, &M->Sinv, M->m, &M->wl, M->m, &M->tmp));
+  PetscCall(PCCreate(PETSC_COMM_SELF, &M->inner));
+  PetscCall(PCSetType(M->inner, PCCHOLESKY));
+  PetscCall(PCFactorSetMatOrderingType(M->inner, HylcDefaultOrdering()));
+  PetscCall(PCSetOptionsPrefix(M->inner, "micro_factor_"));
+  PetscCall(PCSetFromOptions(M->inner));
+  PetscCall(SNESCreate(PETSC_COMM_SELF, &M->snes));
+  PetscCall(SNESSetOptionsPrefix(M->snes, "micro_"));
+  PetscCall(SNESSetType(M->snes, SNESNEWTONLS));
+  PetscCall(SNESSetObjective(M->snes, FormObjective, M));
+  PetscCall(SNESSetFunction(M->snes, NULL, FormFunction, M));
+  PetscCall(SNESSetJacobian(M->snes, M->K, M->K, FormJacobian, M));
+  PetscCall(SNESSetConvergenceTest(M->snes, Converged, M, NULL));
+  PetscCall(SNESSetTolerances(M->snes, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, 2000, -1));
+  PetscCall(SNESGetLineSearch(M->snes, &ls));
+  PetscCall(SNESLineSearchSetType(ls, SNESLINESEARCHSHELL));
+  PetscCall(SNESLineSearchShellSetUserFunc(ls, LineSearch, M));
+  PetscCall(SNESGetKSP(M->snes, &ksp));
+  PetscCall(KSPSetType(ksp, KSPPREONLY));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PCSetType(pc, PCSHELL));
+  PetscCall(PCShellSetContext(pc, M));
+  PetscCall(PCShellSetSetUp(pc, KKTSetUp));
+  PetscCall(PCShellSetApply(pc, KKTApply));
+  PetscCall(PCShellSetName(pc, "hylc KKT (S22): Schur complement around a Cholesky factorization (-micro_factor_pc_*)"));
+  PetscCall(SNESSetFromOptions(M->snes));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcMicroSolve - Solves for the equilibrium of the tile under the strain z (Algorithms C2, C3) from the
+  initial guess u~ = 0. Not collective (PETSC_COMM_SELF). The result's status says whether it converged;
+  a non-converged sample is not an error.
+@*/
+PetscErrorCode HylcMicroSolve(HylcMicro M, const PetscReal z[6], HylcMicroResult *res)
+{
+  PetscLogDouble      t1, tEval, tContact, tAssemble;
+  PetscScalar        *x;
+  SNESConvergedReason reason;
+  PetscInt            its;
+  PetscErrorCode      ierr;
+  HylcYarnConstants   c;
+  PetscReal           area;
+
+  PetscFunctionBegin;
+  PetscCheck(M->P, M->comm, PETSC_ERR_ARG_WRONGSTATE, "Call HylcMicroSetPattern() first");
+  PetscCall(PetscMemzero(res, sizeof(*res)));
+  for (int k = 0; k < 6; k++) res->z[k] = z[k];
+  PetscCall(PetscLogEventBegin(HYLC_MicroSolve, 0, 0, 0, 0));
+  PetscCall(PetscTime(&M->tStart));
+  PetscCall(HylcPeriodicSetStrain(M->P, z));
+  PetscCall(HylcPeriodicSetUp(M->P));
+  PetscCall(HylcPeriodicGetConstants(M->P, &c));
+  PetscCall(HylcPeriodicGetConstraints(M->P, NULL, &M->A, &M->dL, &M->AAtinv));
+  M->r  = c.r;
+  M->ks = c.ks;
+  M->mu = M->par.twistScale > 0 ? M->par.twistScale : 1.0 / c.r;
+  PetscCall(MicroSetUpSolver(M));
+  {
+    PetscScalar *mv;
+    PetscCall(VecGetArray(M->mvec, &mv));
+    for (PetscInt i = 0; i < M->ny; i++) mv[i] = (i % 4 == 3) ? M->mu : 1.0;
+    PetscCall(VecRestoreArray(M->mvec, &mv));
+  }
+  /* initial guess: y^ = M^-1 y0 */
+  PetscCall(HylcPeriodicGetInitialState(M->P, M->yw));
+  PetscCall(VecGetArray(M->X, &x));
+  for (PetscInt i = 0; i < M->ny; i++) x[i] = (i % 4 == 3) ? M->yw[i] / M->mu : M->yw[i];
+  PetscCall(VecRestoreArray(M->X, &x));
+  M->haveH     = PETSC_FALSE;
+  M->stalls    = M->stallsTotal = M->retries = 0;
+  M->statusSet = PETSC_FALSE;
+  M->status    = HYLC_MICRO_CONVERGED;
+  M->tFactor = M->tLineSearch = 0;
+  M->nhist                    = 0;
+  M->E0                       = PETSC_INFINITY;
+  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+  ierr = SNESSolve(M->snes, NULL, M->X);
+  PetscCall(PetscPopErrorHandler());
+  PetscCall(SNESGetConvergedReason(M->snes, &reason));
+  PetscCall(SNESGetIterationNumber(M->snes, &its));
+  if (ierr) res->status = HYLC_MICRO_FAILED;
+  else if (reason > 0) res->status = HYLC_MICRO_CONVERGED;
+  else if (M->statusSet) res->status = M->status;
+  else if (reason == SNES_DIVERGED_MAX_IT) res->status = HYLC_MICRO_MAX_IT;
+  else if (reason == SNES_DIVERGED_FNORM_NAN || reason == SNES_DIVERGED_FUNCTION_DOMAIN) res->status = HYLC_MICRO_NONFINITE;
+  else res->status = HYLC_MICRO_FAILED;
+  /* the final state and its energy */
+  PetscCall(SafeEnergy(M, M->X, &res->energy, res->parts));
+  if (!PetscIsNormalReal(res->energy) && res->energy != 0) res->status = HYLC_MICRO_NONFINITE;
+  PetscCall(HylcPeriodicGetArea(M->P, &area));
+  res->psi        = res->energy / area;
+  res->iterations = its;
+  res->retries    = M->retries;
+  res->stalls     = M->stallsTotal;
+  res->residual   = M->lastz;
+  res->cresidual  = M->lastc;
+  PetscCall(PetscTime(&t1));
+  res->time = t1 - M->tStart;
+  PetscCall(HylcPeriodicGetTimes(M->P, &tEval, &tContact, &tAssemble));
+  res->tAssembly   = tEval - tContact;
+  res->tContact    = tContact;
+  res->tFactor     = M->tFactor;
+  res->tLineSearch = M->tLineSearch;
+  PetscCall(PetscLogEventEnd(HYLC_MicroSolve, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcMicroGetPeriodic(HylcMicro M, HylcPeriodic *P)
+{
+  PetscFunctionBegin;
+  *P = M->P;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* the unscaled unknowns y of the last solve */
+PetscErrorCode HylcMicroGetState(HylcMicro M, PetscReal y[])
+{
+  PetscFunctionBegin;
+  PetscCall(ToY(M, M->X, y));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* energies of the accepted iterates of the last solve */
+PetscErrorCode HylcMicroGetEnergyHistory(HylcMicro M, PetscInt *n, const PetscReal **E)
+{
+  PetscFunctionBegin;
+  *n = M->nhist;
+  *E = M->hist;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcMicroResultView(const HylcMicroResult *r, PetscViewer viewer)
+{
+  char buf[512];
+
+  PetscFunctionBegin;
+  /* C formatting: PETSc's printf appends '.' to integral %g values */
+  snprintf(buf, sizeof(buf), "strain: %.9g %.9g %.9g %.9g %.9g %.9g\npsi: %.10e\nenergy_parts: %.10e %.10e %.10e %.10e\n", (double)r->z[0], (double)r->z[1], (double)r->z[2], (double)r->z[3], (double)r->z[4], (double)r->z[5], (double)r->psi, (double)r->parts[0], (double)r->parts[1], (double)r->parts[2], (double)r->parts[3]);
+  PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "status: %s\n", HylcMicroStatuses[r->status]));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "iterations: %" PetscInt_FMT "\n", r->iterations));
+  snprintf(buf, sizeof(buf), "residual: %.3e (projected gradient, relative), constraints %.3e r\nregularization retries: %d, stalled line searches: %d\ntime: %.4f s (assembly %.4f, contact %.4f, factorization %.4f, line search %.4f)\n", (double)r->residual, (double)r->cresidual, (int)r->retries, (int)r->stalls, r->time, r->tAssembly, r->tContact, r->tFactor, r->tLineSearch);
+  PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
