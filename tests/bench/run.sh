@@ -5,7 +5,7 @@ set -u
 cd "$(dirname "$0")/../.."
 build=${BUILD:-build}
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_pml=ob1
-export HYLC_REFDATA=${HYLC_REFDATA:-$PWD/../shared/refdata}
+export HYLC_REFDATA=${HYLC_REFDATA:-$PWD/../shared/refdata} HYLC_ROOT=$PWD
 st=0
 for exe in "$build"/bench/*; do
   [ -x "$exe" ] || continue
