@@ -7,6 +7,8 @@ PetscLogEvent HYLC_PeriodicSetUp, HYLC_PeriodicEvaluate;
 PetscClassId  HYLC_MIDSURFACE_CLASSID;
 PetscLogEvent HYLC_MacroSetUp, HYLC_MacroPoisson, HYLC_MacroEvaluate;
 
+PETSC_INTERN PetscErrorCode HylcMetisRegister(void);
+
 static PetscBool HylcPackageInitialized = PETSC_FALSE;
 
 static PetscErrorCode HylcFinalizePackage(void)
@@ -36,6 +38,7 @@ PetscErrorCode HylcInitializePackage(void)
   PetscCall(PetscLogEventRegister("MACRO_SetUp", HYLC_MIDSURFACE_CLASSID, &HYLC_MacroSetUp));
   PetscCall(PetscLogEventRegister("MACRO_Poisson", HYLC_MIDSURFACE_CLASSID, &HYLC_MacroPoisson));
   PetscCall(PetscLogEventRegister("MACRO_Evaluate", HYLC_MIDSURFACE_CLASSID, &HYLC_MacroEvaluate));
+  PetscCall(HylcMetisRegister());
   PetscCall(PetscRegisterFinalize(HylcFinalizePackage));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
