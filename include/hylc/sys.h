@@ -19,6 +19,15 @@ PETSC_EXTERN const char *HylcDefaultOrdering(void);
 PETSC_EXTERN PetscClassId  HYLC_MIDSURFACE_CLASSID;
 PETSC_EXTERN PetscLogEvent HYLC_MacroSetUp, HYLC_MacroPoisson, HYLC_MacroEvaluate;
 
+/* The fill-reducing ordering METIS_NodeND (METIS 5 nested dissection of the graph of A + A^T), registered
+   by HylcInitializePackage() for sequential matrices: MatGetOrdering(A, MATORDERINGMETISND, &rperm,
+   &cperm), PCFactorSetMatOrderingType(pc, MATORDERINGMETISND) or -pc_factor_mat_ordering_type metisnd.
+   Row and column permutations are equal. Options: -hylc_metis_seed, -hylc_metis_nseps,
+   -hylc_metis_ufactor, -hylc_metis_compress (src/sys/metis.c). Programs that use it without creating a
+   hylc object call HylcInitializePackage() first. Log event ORDER_MetisND. */
+#define MATORDERINGMETISND "metisnd"
+PETSC_EXTERN PetscLogEvent HYLC_MetisND;
+
 /* Registers hylc's classes and log events (idempotent; called by every XCreate). Not collective. */
 PETSC_EXTERN PetscErrorCode HylcInitializePackage(void);
 

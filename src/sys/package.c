@@ -10,6 +10,8 @@ const char *HylcDefaultOrdering(void) { return MATORDERINGAMD; }
 PetscClassId  HYLC_MIDSURFACE_CLASSID;
 PetscLogEvent HYLC_MacroSetUp, HYLC_MacroPoisson, HYLC_MacroEvaluate;
 
+PETSC_INTERN PetscErrorCode HylcMetisRegister(void);
+
 static PetscBool HylcPackageInitialized = PETSC_FALSE;
 
 static PetscErrorCode HylcFinalizePackage(void)
@@ -40,6 +42,7 @@ PetscErrorCode HylcInitializePackage(void)
   PetscCall(PetscLogEventRegister("MACRO_SetUp", HYLC_MIDSURFACE_CLASSID, &HYLC_MacroSetUp));
   PetscCall(PetscLogEventRegister("MACRO_Poisson", HYLC_MIDSURFACE_CLASSID, &HYLC_MacroPoisson));
   PetscCall(PetscLogEventRegister("MACRO_Evaluate", HYLC_MIDSURFACE_CLASSID, &HYLC_MacroEvaluate));
+  PetscCall(HylcMetisRegister());
   PetscCall(PetscRegisterFinalize(HylcFinalizePackage));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -1,0 +1,197 @@
+/* Benchmark: fill-reducing orderings for PETSc's native sparse Cholesky (MATSOLVERPETSC) of the reduced
+   Hessian of the paper's seven periodic tiles. For each pattern ($HYLC_REFDATA/patterns/hylc2020) and
+   strain z = 0 and z = (0.2, 0, 0, 0, 0, 0): H_y at the initial guess (HylcPeriodic), K = H_y + alpha I
+   with alpha = 1e-2 max|diag H_y|, raised tenfold until K is positive definite (inertia from MUMPS when
+   available, else a successful native Cholesky with a small residual). Then for each ordering: the time of
+   MatGetOrdering, of the symbolic factorization, the mean of the numeric factorization and of a solve,
+   the nonzeros of the factor (upper triangle, diagonal included) and the fill ratio nz(U) / nz(triu K).
+     -bench_reps <int>   numeric factorizations and solves averaged (default 20) */
+#include <hylc/periodic.h>
+#include <petsctime.h>
+
+static const char *const Orderings[] = {MATORDERINGNATURAL, MATORDERINGRCM, MATORDERINGND, MATORDERINGAMD, MATORDERINGMETISND};
+#define NORD 5
+
+/* is K positive definite? */
+static PetscErrorCode IsSPD(Mat K, PetscBool *spd)
+{
+  PetscBool     mumps;
+  Mat           F;
+  MatFactorInfo info;
+
+  PetscFunctionBegin;
+  PetscCall(MatFactorInfoInitialize(&info));
+  PetscCall(MatGetFactorAvailable(K, MATSOLVERMUMPS, MAT_FACTOR_CHOLESKY, &mumps));
+  if (mumps) {
+    PetscInt nneg, nzero, npos;
+    PetscCall(MatGetFactor(K, MATSOLVERMUMPS, MAT_FACTOR_CHOLESKY, &F));
+    PetscCall(MatMumpsSetIcntl(F, 24, 1)); /* null-pivot detection, needed for the inertia */
+    PetscCall(MatCholeskyFactorSymbolic(F, K, NULL, &info));
+    PetscCall(MatCholeskyFactorNumeric(F, K, &info));
+    PetscCall(MatGetInertia(F, &nneg, &nzero, &npos));
+    *spd = (PetscBool)(nneg == 0 && nzero == 0);
+  } else {
+    IS             row, col;
+    MatFactorError err;
+    Vec            x, b, r;
+    PetscReal      nb, nr;
+    PetscCall(MatGetOrdering(K, MATORDERINGNATURAL, &row, &col));
+    PetscCall(MatGetFactor(K, MATSOLVERPETSC, MAT_FACTOR_CHOLESKY, &F));
+    PetscCall(MatCholeskyFactorSymbolic(F, K, row, &info));
+    PetscCall(MatCholeskyFactorNumeric(F, K, &info));
+    PetscCall(MatFactorGetError(F, &err));
+    PetscCall(MatCreateVecs(K, &x, &b));
+    PetscCall(VecDuplicate(b, &r));
+    PetscCall(VecSet(b, 1));
+    PetscCall(MatSolve(F, b, x));
+    PetscCall(MatMult(K, x, r));
+    PetscCall(VecAXPY(r, -1, b));
+    PetscCall(VecNorm(b, NORM_2, &nb));
+    PetscCall(VecNorm(r, NORM_2, &nr));
+    *spd = (PetscBool)(err == MAT_FACTOR_NOERROR && nr <= 1e-8 * nb);
+    PetscCall(VecDestroy(&x));
+    PetscCall(VecDestroy(&b));
+    PetscCall(VecDestroy(&r));
+    PetscCall(ISDestroy(&row));
+    PetscCall(ISDestroy(&col));
+  }
+  PetscCall(MatDestroy(&F));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode BenchOrdering(Mat K, MatOrderingType type, PetscInt reps, PetscLogDouble *tt /* tOrder, tSym, tNum, tSolve */, PetscReal *nzF, PetscReal *res)
+{
+  Mat            F;
+  IS             row, col;
+  MatFactorInfo  info;
+  MatInfo        minfo;
+  Vec            x, b, r;
+  PetscReal      nb, nr;
+  PetscLogDouble t0, t1;
+
+  PetscFunctionBegin;
+  PetscCall(MatFactorInfoInitialize(&info));
+  PetscCall(PetscTime(&t0));
+  PetscCall(MatGetOrdering(K, type, &row, &col));
+  PetscCall(PetscTime(&t1));
+  tt[0] = t1 - t0;
+  PetscCall(MatGetFactor(K, MATSOLVERPETSC, MAT_FACTOR_CHOLESKY, &F));
+  PetscCall(PetscTime(&t0));
+  PetscCall(MatCholeskyFactorSymbolic(F, K, row, &info));
+  PetscCall(PetscTime(&t1));
+  tt[1] = t1 - t0;
+  PetscCall(PetscTime(&t0));
+  for (PetscInt k = 0; k < reps; k++) PetscCall(MatCholeskyFactorNumeric(F, K, &info));
+  PetscCall(PetscTime(&t1));
+  tt[2] = (t1 - t0) / reps;
+  PetscCall(MatCreateVecs(K, &x, &b));
+  PetscCall(VecDuplicate(b, &r));
+  PetscCall(VecSet(b, 1));
+  PetscCall(PetscTime(&t0));
+  for (PetscInt k = 0; k < reps; k++) PetscCall(MatSolve(F, b, x));
+  PetscCall(PetscTime(&t1));
+  tt[3] = (t1 - t0) / reps;
+  PetscCall(MatMult(K, x, r));
+  PetscCall(VecAXPY(r, -1, b));
+  PetscCall(VecNorm(b, NORM_2, &nb));
+  PetscCall(VecNorm(r, NORM_2, &nr));
+  *res = nr / nb;
+  PetscCall(MatGetInfo(F, MAT_LOCAL, &minfo));
+  *nzF = minfo.nz_used;
+  PetscCall(VecDestroy(&x));
+  PetscCall(VecDestroy(&b));
+  PetscCall(VecDestroy(&r));
+  PetscCall(ISDestroy(&row));
+  PetscCall(ISDestroy(&col));
+  PetscCall(MatDestroy(&F));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode Bench(const char *dir, const char *name, const PetscReal z[6], PetscInt reps)
+{
+  char          path[PETSC_MAX_PATH_LEN];
+  PetscBool     have, spd = PETSC_FALSE;
+  HylcPattern   p;
+  HylcYarnModel m;
+  HylcPeriodic  P;
+  Mat           H, K = NULL;
+  Vec           d;
+  PetscInt      n;
+  PetscReal    *y, e[4], dmax, alpha = 0, nzK;
+  MatInfo       minfo;
+
+  PetscFunctionBegin;
+  PetscCall(PetscSNPrintf(path, sizeof(path), "%s/%s.pyp", dir, name));
+  PetscCall(PetscTestFile(path, 'r', &have));
+  if (!have) {
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, "%-22s %s not found; skipped\n", name, path));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCall(HylcPatternCreate(PETSC_COMM_SELF, &p));
+  PetscCall(HylcPatternLoad(p, path));
+  PetscCall(HylcYarnModelDefault(&m));
+  PetscCall(HylcPeriodicCreate(p, &m, &P));
+  PetscCall(HylcPeriodicSetStrain(P, z));
+  PetscCall(HylcPeriodicSetUp(P));
+  PetscCall(HylcPeriodicGetSizes(P, &n, NULL, NULL, NULL));
+  PetscCall(PetscMalloc1(n, &y));
+  PetscCall(HylcPeriodicGetInitialState(P, y));
+  PetscCall(HylcPeriodicSetState(P, y));
+  PetscCall(HylcPeriodicCreateMatrix(P, &H));
+  PetscCall(HylcPeriodicEvaluate(P, HYLC_TERM_ALL, e, NULL, H));
+  PetscCall(MatCreateVecs(H, &d, NULL));
+  PetscCall(MatGetDiagonal(H, d));
+  PetscCall(VecNorm(d, NORM_INFINITY, &dmax));
+  PetscCall(VecDestroy(&d));
+  for (PetscReal f = 1e-2; f < 1e3 && !spd; f *= 10) {
+    alpha = f * dmax;
+    PetscCall(MatDestroy(&K));
+    PetscCall(MatDuplicate(H, MAT_COPY_VALUES, &K));
+    PetscCall(MatShift(K, alpha));
+    PetscCall(MatSetOption(K, MAT_SYMMETRIC, PETSC_TRUE));
+    PetscCall(IsSPD(K, &spd));
+  }
+  PetscCheck(spd, PETSC_COMM_SELF, PETSC_ERR_NOT_CONVERGED, "%s: H_y + alpha I is not positive definite for alpha up to %g", name, (double)alpha);
+  PetscCall(MatSetOption(K, MAT_SPD, PETSC_TRUE));
+  PetscCall(MatGetInfo(K, MAT_LOCAL, &minfo));
+  nzK = 0.5 * (minfo.nz_used + n);
+  PetscCall(PetscPrintf(PETSC_COMM_SELF, "%s, z = (%g, %g, %g, %g, %g, %g): n = %d, nz(K) = %d, alpha = %.0e max|diag|\n", name, (double)z[0], (double)z[1], (double)z[2], (double)z[3], (double)z[4], (double)z[5], (int)n, (int)minfo.nz_used, (double)(alpha / dmax)));
+  PetscCall(PetscPrintf(PETSC_COMM_SELF, "  %-9s %10s %6s %10s %10s %11s %10s %11s %9s\n", "ordering", "nz(U)", "fill", "order ms", "symb ms", "numeric ms", "solve ms", "ord+sym+num", "residual"));
+  for (int k = 0; k < NORD; k++) {
+    PetscLogDouble tt[4] = {0, 0, 0, 0};
+    PetscReal      nzF = 0, res = 0;
+    PetscCall(BenchOrdering(K, Orderings[k], reps, tt, &nzF, &res));
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, "  %-9s %10.0f %6.2f %10.3f %10.3f %11.3f %10.3f %11.3f %9.1e\n", Orderings[k], (double)nzF, (double)(nzF / nzK), 1e3 * tt[0], 1e3 * tt[1], 1e3 * tt[2], 1e3 * tt[3], 1e3 * (tt[0] + tt[1] + tt[2]), (double)res));
+  }
+  PetscCall(MatDestroy(&K));
+  PetscCall(MatDestroy(&H));
+  PetscCall(PetscFree(y));
+  PetscCall(HylcPeriodicDestroy(&P));
+  PetscCall(HylcPatternDestroy(&p));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+int main(int argc, char **argv)
+{
+  char            dir[PETSC_MAX_PATH_LEN];
+  PetscBool       have;
+  PetscInt        reps    = 20;
+  const char     *names[] = {"stockinette", "stockinette_small", "cartridge_belt_rib", "slip_stitch_honeycomb", "basket", "satin", "satin_small"};
+  const PetscReal z0[6] = {0, 0, 0, 0, 0, 0}, z1[6] = {0.2, 0, 0, 0, 0, 0};
+
+  PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
+  PetscCall(HylcInitializePackage());
+  PetscCall(PetscOptionsGetInt(NULL, NULL, "-bench_reps", &reps, NULL));
+  const char *env = getenv("HYLC_REFDATA");
+  PetscCall(PetscSNPrintf(dir, sizeof(dir), "%s/patterns/hylc2020", env ? env : "../shared/refdata"));
+  PetscCall(PetscTestDirectory(dir, 'r', &have));
+  if (!have)
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, "bench_ordering: %s not found; skipped\n", dir));
+  else
+    for (int i = 0; i < 7; i++) {
+      PetscCall(Bench(dir, names[i], z0, reps));
+      PetscCall(Bench(dir, names[i], z1, reps));
+    }
+  PetscCall(PetscFinalize());
+  return 0;
+}
