@@ -53,12 +53,16 @@ struct _n_HylcPeriodic {
   HylcBVH      bvh;
   double      *segx;
   HylcPairList cand;
-  PetscInt     npairs, cappairs, *pairs; /* full edge i, full edge j */
+  PetscInt     npairs, cappairs, *pairs; /* pairs that can touch (boxes inflated by r overlap): full edges i, j */
+  PetscInt     ncand, capcand, *cpairs;  /* candidates for the Hessian's structure (boxes inflated by pairMargin r) */
+  PetscReal   *cw;
+  PetscReal    pairMargin;
   PetscReal   *pw;                       /* pair weights */
   /* COO */
   PetscInt     ncoo, capcoo, *cooi, *cooj;
   PetscScalar *coov;
-  PetscInt     coonpairs, *coopairs;
+  PetscInt     coonpairs, *coopairs; /* the pairs of the current COO structure, a superset of the touching ones */
+  PetscReal   *coopw;
   Mat          cooMat;
   /* accumulated wall times (s): evaluations with a Hessian, contact (broadphase + pairs), assembly */
   PetscLogDouble tEval, tContact, tAssemble;
@@ -77,6 +81,7 @@ PetscErrorCode HylcPeriodicCreate(HylcPattern pat, const HylcYarnModel *model, H
   P->model        = *model;
   P->slide        = HYLC_SLIDE_GLOBAL;
   P->marginFactor = 0.25;
+  P->pairMargin   = 1.05;
   PetscCall(HylcPatternGetData(pat, &P->D));
   PetscCall(HylcYarnModelGetConstants(model, P->D.radius, &P->c));
   P->btpar.B       = P->c.B;
@@ -107,8 +112,10 @@ static PetscErrorCode PeriodicReset(HylcPeriodic P)
   PetscCall(PetscFree(P->segx));
   HylcPairListFree(&P->cand);
   PetscCall(PetscFree2(P->pairs, P->pw));
+  PetscCall(PetscFree2(P->cpairs, P->cw));
+  P->ncand = P->capcand = 0;
   PetscCall(PetscFree3(P->cooi, P->cooj, P->coov));
-  PetscCall(PetscFree(P->coopairs));
+  PetscCall(PetscFree2(P->coopairs, P->coopw));
   P->nfv = P->capfv = P->nfe = P->capfe = P->nbe = P->capbe = P->npairs = P->cappairs = P->ncoo = P->capcoo = P->coonpairs = 0;
   P->cooMat = NULL;
   P->setup  = PETSC_FALSE;
@@ -148,9 +155,11 @@ PetscErrorCode HylcPeriodicSetFromOptions(HylcPeriodic P)
   PetscFunctionBegin;
   PetscOptionsBegin(PETSC_COMM_SELF, P->prefix[0] ? P->prefix : NULL, "Periodic tile options", "HylcPeriodic");
   PetscCall(PetscOptionsEnum("-periodic_slide", "Slide constraint: none, global (one row) or per_yarn (one row per yarn loop)", "HylcPeriodicSetSlideConstraint", HylcSlideConstraints, sl, &sl, NULL));
+  PetscCall(PetscOptionsReal("-periodic_pair_margin", "Hessian structure: keep segment pairs whose boxes inflated by this many r overlap, so that it changes rarely", "HylcPeriodicEvaluate", P->pairMargin, &P->pairMargin, NULL));
   PetscCall(PetscOptionsReal("-periodic_margin", "Contact ghosts: copies of edges within max(3 r, margin * min(px, py)) of the tile", "HylcPeriodicSetUp", P->marginFactor, &P->marginFactor, NULL));
   PetscOptionsEnd();
   P->slide = (HylcSlideConstraint)sl;
+  PetscCheck(P->pairMargin >= 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-periodic_pair_margin must be at least 1 (boxes inflated by r find every touching pair)");
   PetscCheck(P->marginFactor >= 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-periodic_margin must not be negative");
   PetscCall(HylcMidsurfaceSetFromOptions(P->ms));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -681,7 +690,39 @@ PetscErrorCode HylcPeriodicRestoreFrames(HylcPeriodic P)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* contact pairs among the full edges: broadphase, zero-weight pairs pruned, same-yarn pairs excluded */
+/* contact pairs among the full edges: broadphase with boxes inflated by pairMargin r (candidates for
+   the Hessian's structure), zero-weight pairs pruned, same-yarn pairs excluded; the pairs that can touch
+   are those whose boxes inflated by r overlap */
+static PetscErrorCode PushPair(PetscInt *n, PetscInt *cap, PetscInt **pairs, PetscReal **w, PetscInt i, PetscInt j, PetscReal wt)
+{
+  PetscFunctionBegin;
+  if (*n == *cap) {
+    PetscInt  *np;
+    PetscReal *nw;
+    *cap = *cap ? 2 * *cap : 256;
+    PetscCall(PetscMalloc2(2 * *cap, &np, *cap, &nw));
+    PetscCall(PetscArraycpy(np, *pairs, 2 * *n));
+    PetscCall(PetscArraycpy(nw, *w, *n));
+    PetscCall(PetscFree2(*pairs, *w));
+    *pairs = np;
+    *w     = nw;
+  }
+  (*pairs)[2 * *n]     = i;
+  (*pairs)[2 * *n + 1] = j;
+  (*w)[(*n)++]         = wt;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static inline PetscBool BoxesOverlap(const double *a, const double *b, PetscReal m)
+{
+  for (int d = 0; d < 3; d++) {
+    const double alo = PetscMin(a[d], a[3 + d]) - m, ahi = PetscMax(a[d], a[3 + d]) + m;
+    const double blo = PetscMin(b[d], b[3 + d]) - m, bhi = PetscMax(b[d], b[3 + d]) + m;
+    if (alo > bhi || blo > ahi) return PETSC_FALSE;
+  }
+  return PETSC_TRUE;
+}
+
 static PetscErrorCode FindPairs(HylcPeriodic P)
 {
   PetscFunctionBegin;
@@ -693,12 +734,12 @@ static PetscErrorCode FindPairs(HylcPeriodic P)
     }
   if (!P->bvh) {
     PetscCheck(!HylcBVHCreate((int)P->nfe, &P->bvh), PETSC_COMM_SELF, PETSC_ERR_MEM, "Cannot create the broadphase");
-    PetscCheck(!HylcBVHBuild(P->bvh, P->segx, NULL, P->c.r), PETSC_COMM_SELF, PETSC_ERR_MEM, "Cannot build the broadphase");
+    PetscCheck(!HylcBVHBuild(P->bvh, P->segx, NULL, P->pairMargin * P->c.r), PETSC_COMM_SELF, PETSC_ERR_MEM, "Cannot build the broadphase");
     PetscCheck(!HylcBVHSetGhost(P->bvh, P->eghost), PETSC_COMM_SELF, PETSC_ERR_MEM, "Cannot set ghost flags");
   } else PetscCheck(!HylcBVHRefit(P->bvh, P->segx, NULL), PETSC_COMM_SELF, PETSC_ERR_MEM, "Cannot refit the broadphase");
   PetscCheck(!HylcBVHQuery(P->bvh, &P->cand), PETSC_COMM_SELF, PETSC_ERR_MEM, "Broadphase query failed");
   HylcPairListSort(&P->cand);
-  P->npairs = 0;
+  P->npairs = P->ncand = 0;
   for (size_t c = 0; c < P->cand.n; c++) {
     const PetscInt i = P->cand.idx[2 * c], j = P->cand.idx[2 * c + 1];
     const PetscInt ki = P->esrc[i], kj = P->esrc[j];
@@ -708,20 +749,8 @@ static PetscErrorCode FindPairs(HylcPeriodic P)
     if (excl) continue;
     const PetscInt nor = (P->esrc[i] < P->N) + (P->ehead[i] < P->N) + (P->esrc[j] < P->N) + (P->ehead[j] < P->N);
     if (!nor) continue;
-    if (P->npairs == P->cappairs) {
-      PetscInt  *np;
-      PetscReal *nw;
-      P->cappairs = P->cappairs ? 2 * P->cappairs : 256;
-      PetscCall(PetscMalloc2(2 * P->cappairs, &np, P->cappairs, &nw));
-      PetscCall(PetscArraycpy(np, P->pairs, 2 * P->npairs));
-      PetscCall(PetscArraycpy(nw, P->pw, P->npairs));
-      PetscCall(PetscFree2(P->pairs, P->pw));
-      P->pairs = np;
-      P->pw    = nw;
-    }
-    P->pairs[2 * P->npairs]     = i;
-    P->pairs[2 * P->npairs + 1] = j;
-    P->pw[P->npairs++]          = nor / 4.0;
+    PetscCall(PushPair(&P->ncand, &P->capcand, &P->cpairs, &P->cw, i, j, nor / 4.0));
+    if (BoxesOverlap(P->segx + 6 * i, P->segx + 6 * j, P->c.r)) PetscCall(PushPair(&P->npairs, &P->cappairs, &P->pairs, &P->pw, i, j, nor / 4.0));
   }
   PetscCall(PetscLogEventEnd(HYLC_TileBroadphase, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -829,16 +858,33 @@ PetscErrorCode HylcPeriodicCreateMatrix(HylcPeriodic P, Mat *H)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* is every touching pair in the COO structure? (both lists sorted lexicographically) */
+static PetscBool PairsCovered(const HylcPeriodic P)
+{
+  PetscInt a = 0;
+  for (PetscInt p = 0; p < P->npairs; p++) {
+    const PetscInt i = P->pairs[2 * p], j = P->pairs[2 * p + 1];
+    while (a < P->coonpairs && (P->coopairs[2 * a] < i || (P->coopairs[2 * a] == i && P->coopairs[2 * a + 1] < j))) a++;
+    if (a == P->coonpairs || P->coopairs[2 * a] != i || P->coopairs[2 * a + 1] != j) return PETSC_FALSE;
+  }
+  return PETSC_TRUE;
+}
+
+/* the COO structure: stencils plus a superset of the touching pairs, rebuilt only when a touching pair
+   falls outside it (the matrix's nonzero pattern, hence the symbolic factorization, is then reused) */
 static PetscErrorCode SetCOO(HylcPeriodic P, Mat H)
 {
-  PetscBool same = (PetscBool)(H == P->cooMat && P->coonpairs == P->npairs);
-  Layout    L;
-  PetscInt  idx[12], k = 0;
+  Layout   L;
+  PetscInt idx[12], k = 0;
 
   PetscFunctionBegin;
-  if (same) PetscCall(PetscArraycmp(P->coopairs, P->pairs, 2 * P->npairs, &same));
-  if (same) PetscFunctionReturn(PETSC_SUCCESS);
-  const PetscInt n = P->nfe * 36 + P->nbe * 121 + P->npairs * 144;
+  if (H == P->cooMat && PairsCovered(P)) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscFree2(P->coopairs, P->coopw));
+  PetscCall(PetscMalloc2(2 * P->ncand + 1, &P->coopairs, P->ncand + 1, &P->coopw));
+  PetscCall(PetscArraycpy(P->coopairs, P->cpairs, 2 * P->ncand));
+  PetscCall(PetscArraycpy(P->coopw, P->cw, P->ncand));
+  P->coonpairs = P->ncand;
+  const PetscInt n = P->nfe * 36 + P->nbe * 121 + P->coonpairs * 144;
   if (n > P->capcoo) {
     PetscCall(PetscFree3(P->cooi, P->cooj, P->coov));
     P->capcoo = n + n / 4;
@@ -863,8 +909,8 @@ static PetscErrorCode SetCOO(HylcPeriodic P, Mat H)
         P->cooj[k] = idx[j];
       }
   }
-  for (PetscInt p = 0; p < P->npairs; p++) {
-    ContactLayout(P, P->pairs[2 * p], P->pairs[2 * p + 1], &L);
+  for (PetscInt p = 0; p < P->coonpairs; p++) {
+    ContactLayout(P, P->coopairs[2 * p], P->coopairs[2 * p + 1], &L);
     LayoutDofs(P, &L, idx);
     for (int i = 0; i < 12; i++)
       for (int j = 0; j < 12; j++, k++) {
@@ -874,11 +920,7 @@ static PetscErrorCode SetCOO(HylcPeriodic P, Mat H)
   }
   P->ncoo = k;
   PetscCall(MatSetPreallocationCOO(H, P->ncoo, P->cooi, P->cooj));
-  PetscCall(PetscFree(P->coopairs));
-  PetscCall(PetscMalloc1(2 * P->npairs + 1, &P->coopairs));
-  PetscCall(PetscArraycpy(P->coopairs, P->pairs, 2 * P->npairs));
-  P->coonpairs = P->npairs;
-  P->cooMat    = H;
+  P->cooMat = H;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -969,15 +1011,18 @@ PetscErrorCode HylcPeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts[4]
   }
   PetscCall(PetscLogEventBegin(HYLC_TileContact, 0, 0, 0, 0));
   PetscCall(PetscTime(&tc0));
-  for (PetscInt p = 0; p < P->npairs; p++) {
-    const PetscInt i = P->pairs[2 * p], j = P->pairs[2 * p + 1];
+  const PetscInt   np = H ? P->coonpairs : P->npairs; /* with a Hessian: every pair of its structure (the others give 0) */
+  const PetscInt  *pl = H ? P->coopairs : P->pairs;
+  const PetscReal *pw = H ? P->coopw : P->pw;
+  for (PetscInt p = 0; p < np; p++) {
+    const PetscInt i = pl[2 * p], j = pl[2 * p + 1];
     double         en;
     ContactLayout(P, i, j, &L);
     for (int a = 0; a < 4; a++)
       for (int c = 0; c < 3; c++) x[3 * a + c] = P->x[3 * L.vert[a] + c];
     const PetscReal la = P->D.restLength[P->fo[P->esrc[i]]], lb = P->D.restLength[P->fo[P->esrc[j]]];
-    if (P->model.contactType == HYLC_CONTACT_QUADRATURE) en = HylcContactQuadrature(x, x + 3, x + 6, x + 9, la, lb, P->c.kc, P->c.r, (int)P->model.contactPoints, P->pw[p], gy ? ge : NULL, H ? He : NULL);
-    else en = HylcContactClosestPoint(x, x + 3, x + 6, x + 9, la, lb, P->c.kc, P->c.r, P->pw[p], gy ? ge : NULL, H ? He : NULL, NULL, NULL, NULL);
+    if (P->model.contactType == HYLC_CONTACT_QUADRATURE) en = HylcContactQuadrature(x, x + 3, x + 6, x + 9, la, lb, P->c.kc, P->c.r, (int)P->model.contactPoints, pw[p], gy ? ge : NULL, H ? He : NULL);
+    else en = HylcContactClosestPoint(x, x + 3, x + 6, x + 9, la, lb, P->c.kc, P->c.r, pw[p], gy ? ge : NULL, H ? He : NULL, NULL, NULL, NULL);
     E[3] += en;
     Scatter(P, &L, ge, He, gy, hv ? hv + k : NULL);
     k += 144;
