@@ -141,3 +141,38 @@ double HylcSegmentSegmentDistance(const double p0[3], const double p1[3], const 
   if (tout) *tout = t;
   return HylcNorm3(v);
 }
+
+int HylcDenseInverse(int m, double *A, double *Ainv, double tol)
+{
+  double dmax = 0;
+  for (int i = 0; i < m; i++) dmax = fmax(dmax, fabs(A[i * m + i]));
+  for (int i = 0; i < m * m; i++) Ainv[i] = (i % (m + 1) == 0);
+  for (int c = 0; c < m; c++) {
+    int piv = c;
+    for (int r = c + 1; r < m; r++)
+      if (fabs(A[r * m + c]) > fabs(A[piv * m + c])) piv = r;
+    if (!(fabs(A[piv * m + c]) > tol * dmax)) return -1 - c;
+    for (int k = 0; k < m; k++) {
+      double t          = A[c * m + k];
+      A[c * m + k]      = A[piv * m + k];
+      A[piv * m + k]    = t;
+      t                 = Ainv[c * m + k];
+      Ainv[c * m + k]   = Ainv[piv * m + k];
+      Ainv[piv * m + k] = t;
+    }
+    const double d = 1 / A[c * m + c];
+    for (int k = 0; k < m; k++) {
+      A[c * m + k] *= d;
+      Ainv[c * m + k] *= d;
+    }
+    for (int r = 0; r < m; r++) {
+      if (r == c) continue;
+      const double f = A[r * m + c];
+      for (int k = 0; k < m; k++) {
+        A[r * m + k] -= f * A[c * m + k];
+        Ainv[r * m + k] -= f * Ainv[c * m + k];
+      }
+    }
+  }
+  return 0;
+}

@@ -254,43 +254,6 @@ static PetscErrorCode FormJacobian(SNES snes, Vec X, Mat J, Mat Jpre, void *ctx)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Gauss-Jordan inverse of a small dense matrix S (overwritten); ok = false if singular */
-static void SmallInverse(PetscInt m, PetscReal *S, PetscReal *Sinv, PetscBool *ok)
-{
-  *ok = PETSC_TRUE;
-  for (PetscInt i = 0; i < m * m; i++) Sinv[i] = (i % (m + 1) == 0);
-  for (PetscInt c = 0; c < m; c++) {
-    PetscInt piv = c;
-    for (PetscInt r = c + 1; r < m; r++)
-      if (PetscAbsReal(S[r * m + c]) > PetscAbsReal(S[piv * m + c])) piv = r;
-    if (!(PetscAbsReal(S[piv * m + c]) > 0)) {
-      *ok = PETSC_FALSE;
-      return;
-    }
-    for (PetscInt k = 0; k < m; k++) {
-      PetscReal t       = S[c * m + k];
-      S[c * m + k]      = S[piv * m + k];
-      S[piv * m + k]    = t;
-      t                 = Sinv[c * m + k];
-      Sinv[c * m + k]   = Sinv[piv * m + k];
-      Sinv[piv * m + k] = t;
-    }
-    const PetscReal d = 1 / S[c * m + c];
-    for (PetscInt k = 0; k < m; k++) {
-      S[c * m + k] *= d;
-      Sinv[c * m + k] *= d;
-    }
-    for (PetscInt r = 0; r < m; r++) {
-      if (r == c) continue;
-      const PetscReal f = S[r * m + c];
-      for (PetscInt k = 0; k < m; k++) {
-        S[r * m + k] -= f * S[c * m + k];
-        Sinv[r * m + k] -= f * Sinv[c * m + k];
-      }
-    }
-  }
-}
-
 /* factor K and form the Schur complement data Z = K^-1 M A^T and S^-1 = (A M Z)^-1 */
 static PetscErrorCode KKTFactor(HylcMicro M, PetscBool *ok)
 {
@@ -328,7 +291,7 @@ static PetscErrorCode KKTFactor(HylcMicro M, PetscBool *ok)
         for (PetscInt k = 0; k < n; k++) s += M->A[i * n + k] * ((k % 4 == 3) ? M->mu : 1.0) * M->Z[j * n + k];
         M->S[i * m + j] = s;
       }
-    SmallInverse(m, M->S, M->Sinv, ok);
+    *ok = (PetscBool)(HylcDenseInverse((int)m, M->S, M->Sinv, 0.0) == 0);
   }
   PetscCall(PetscTime(&t1));
   M->tFactor += t1 - t0;

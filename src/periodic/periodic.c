@@ -343,7 +343,7 @@ static PetscErrorCode SetUpConstraints(HylcPeriodic P, const PetscReal *x0)
     for (int j = 0; j < 3; j++) P->A[row * 4 * N + 4 * o + j] = wo * Rtau[j];
     P->dL[row] += wo * HylcDot3(tau, Rtx);
   }
-  /* (A A^T)^-1 by Gauss-Jordan on the small SPD matrix */
+  /* (A A^T)^-1 of the small SPD matrix */
   {
     PetscReal *M, *I1;
     PetscCall(PetscCalloc2(m * m, &M, m * m, &I1));
@@ -352,35 +352,8 @@ static PetscErrorCode SetUpConstraints(HylcPeriodic P, const PetscReal *x0)
       for (PetscInt j = 0; j < m; j++)
         for (PetscInt k = 0; k < 4 * N; k++) M[i * m + j] += P->A[i * 4 * N + k] * P->A[j * 4 * N + k];
     }
-    PetscReal dmax = 0;
-    for (PetscInt i = 0; i < m; i++) dmax = PetscMax(dmax, M[i * m + i]);
-    for (PetscInt c = 0; c < m; c++) {
-      PetscInt piv = c;
-      for (PetscInt r = c + 1; r < m; r++)
-        if (PetscAbsReal(M[r * m + c]) > PetscAbsReal(M[piv * m + c])) piv = r;
-      PetscCheck(PetscAbsReal(M[piv * m + c]) > 1e-10 * dmax, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "The constraint rows are (nearly) linearly dependent (row %" PetscInt_FMT "): with straight yarns the slide constraint repeats the translation; use -periodic_slide none", c);
-      for (PetscInt k = 0; k < m; k++) {
-        PetscReal t      = M[c * m + k];
-        M[c * m + k]     = M[piv * m + k];
-        M[piv * m + k]   = t;
-        t                = I1[c * m + k];
-        I1[c * m + k]    = I1[piv * m + k];
-        I1[piv * m + k]  = t;
-      }
-      const PetscReal dinv = 1 / M[c * m + c];
-      for (PetscInt k = 0; k < m; k++) {
-        M[c * m + k] *= dinv;
-        I1[c * m + k] *= dinv;
-      }
-      for (PetscInt r = 0; r < m; r++) {
-        if (r == c) continue;
-        const PetscReal f = M[r * m + c];
-        for (PetscInt k = 0; k < m; k++) {
-          M[r * m + k] -= f * M[c * m + k];
-          I1[r * m + k] -= f * I1[c * m + k];
-        }
-      }
-    }
+    const int err = HylcDenseInverse((int)m, M, I1, 1e-10);
+    PetscCheck(!err, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "The constraint rows are (nearly) linearly dependent (row %d): with straight yarns the slide constraint repeats the translation; use -periodic_slide none", -1 - err);
     PetscCall(PetscArraycpy(P->AAtinv, I1, m * m));
     PetscCall(PetscFree2(M, I1));
   }

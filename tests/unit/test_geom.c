@@ -99,5 +99,19 @@ int main(void)
     for (int k = 0; k < 3; k++) v[k] = p0[k] + s * (p1[k] - p0[k]) - q0[k] - t * (q1[k] - q0[k]);
     HYLC_CHECK_CLOSE(HylcNorm3(v), d, 1e-12);
   }
+  /* small dense inverse, and detection of a singular matrix */
+  {
+    double A[25], B[25], Ai[25];
+    for (int i = 0; i < 25; i++) A[i] = B[i] = 2 * HylcTestRand(&st) - 1 + (i % 6 == 0 ? 3 : 0);
+    HYLC_CHECK(HylcDenseInverse(5, B, Ai, 1e-12) == 0, "regular matrix reported singular");
+    for (int i = 0; i < 5; i++)
+      for (int j = 0; j < 5; j++) {
+        double s = 0;
+        for (int k = 0; k < 5; k++) s += A[i * 5 + k] * Ai[k * 5 + j];
+        HYLC_CHECK_CLOSE(s, i == j ? 1.0 : 0.0, 1e-13);
+      }
+    for (int j = 0; j < 5; j++) A[3 * 5 + j] = 2 * A[1 * 5 + j]; /* row 3 = 2 row 1 */
+    HYLC_CHECK(HylcDenseInverse(5, A, Ai, 1e-12) != 0, "singular matrix not detected");
+  }
   return HYLC_TEST_RESULT();
 }
