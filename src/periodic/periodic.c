@@ -59,8 +59,9 @@ struct _n_HylcPeriodic {
   PetscReal    pairMargin;
   PetscReal   *pw;                       /* pair weights */
   /* COO */
-  PetscInt     ncoo, capcoo, *cooi, *cooj;
+  PetscInt     ncoo, capcoo, *cooi, *cooj; /* element-entry values coov and where they go in the CSR values (cooi) */
   PetscScalar *coov;
+  PetscInt    *rowptr, *colind, nnz;      /* the CSR structure of H_y: 4x4 blocks of coupled vertices */
   PetscInt     coonpairs, *coopairs; /* the pairs of the current COO structure, a superset of the touching ones */
   PetscReal   *coopw;
   Mat          cooMat;
@@ -115,6 +116,7 @@ static PetscErrorCode PeriodicReset(HylcPeriodic P)
   PetscCall(PetscFree2(P->cpairs, P->cw));
   P->ncand = P->capcand = 0;
   PetscCall(PetscFree3(P->cooi, P->cooj, P->coov));
+  PetscCall(PetscFree2(P->rowptr, P->colind));
   PetscCall(PetscFree2(P->coopairs, P->coopw));
   P->nfv = P->capfv = P->nfe = P->capfe = P->nbe = P->capbe = P->npairs = P->cappairs = P->ncoo = P->capcoo = P->coonpairs = 0;
   P->cooMat = NULL;
@@ -843,12 +845,33 @@ static PetscBool PairsCovered(const HylcPeriodic P)
   return PETSC_TRUE;
 }
 
-/* the COO structure: stencils plus a superset of the touching pairs, rebuilt only when a touching pair
-   falls outside it (the matrix's nonzero pattern, hence the symbolic factorization, is then reused) */
+/* Visits the elements in the order of the assembled values: stretch elements, bend-twist elements, then
+   the pairs of the structure; returns the global dofs of element k in idx and its size in n. */
+static PetscInt NumStructElements(const HylcPeriodic P) { return P->nfe + P->nbe + P->coonpairs; }
+static void     StructElementDofs(const HylcPeriodic P, PetscInt k, PetscInt idx[12], PetscInt *n)
+{
+  Layout L;
+  if (k < P->nfe) {
+    StretchLayout(P, k, &L);
+    if (P->sw[k] == 0) L.n = 0; /* no original vertex: not assembled */
+  } else if (k < P->nfe + P->nbe) BendLayout(P, P->be + (k - P->nfe), &L);
+  else {
+    const PetscInt p = k - P->nfe - P->nbe;
+    ContactLayout(P, P->coopairs[2 * p], P->coopairs[2 * p + 1], &L);
+  }
+  if (L.n) LayoutDofs(P, &L, idx);
+  *n = L.n;
+}
+
+/* The structure of H_y: stencils plus a superset of the touching contact pairs, as 4x4 blocks of coupled
+   vertices in a CSR matrix, and the position in its value array of every element-matrix entry. It is
+   rebuilt only when a touching pair falls outside it; the matrix's nonzero pattern, hence the symbolic
+   factorization, is then reused. (This replaces MatSetPreallocationCOO, whose sort of all element entries
+   cost as much as ten evaluations.) */
 static PetscErrorCode SetCOO(HylcPeriodic P, Mat H)
 {
-  Layout   L;
-  PetscInt idx[12], k = 0;
+  const PetscInt N = P->N;
+  PetscInt      *deg, *start, *nbr, k = 0, idx[12], n;
 
   PetscFunctionBegin;
   if (H == P->cooMat && PairsCovered(P)) PetscFunctionReturn(PETSC_SUCCESS);
@@ -857,42 +880,82 @@ static PetscErrorCode SetCOO(HylcPeriodic P, Mat H)
   PetscCall(PetscArraycpy(P->coopairs, P->cpairs, 2 * P->ncand));
   PetscCall(PetscArraycpy(P->coopw, P->cw, P->ncand));
   P->coonpairs = P->ncand;
-  const PetscInt n = P->nfe * 36 + P->nbe * 121 + P->coonpairs * 144;
-  if (n > P->capcoo) {
+  const PetscInt nent = P->nfe * 36 + P->nbe * 121 + P->coonpairs * 144, nel = NumStructElements(P);
+  if (nent > P->capcoo) {
     PetscCall(PetscFree3(P->cooi, P->cooj, P->coov));
-    P->capcoo = n + n / 4;
+    P->capcoo = nent + nent / 4;
     PetscCall(PetscMalloc3(P->capcoo, &P->cooi, P->capcoo, &P->cooj, P->capcoo, &P->coov));
   }
-  for (PetscInt e = 0; e < P->nfe; e++) {
-    if (P->sw[e] == 0) continue;
-    StretchLayout(P, e, &L);
-    LayoutDofs(P, &L, idx);
-    for (int i = 0; i < 6; i++)
-      for (int j = 0; j < 6; j++, k++) {
-        P->cooi[k] = idx[i];
-        P->cooj[k] = idx[j];
-      }
+  /* vertex adjacency: an upper bound of the neighbours per vertex, then the sorted unique lists */
+  PetscCall(PetscCalloc2(N + 1, &deg, N + 1, &start));
+  for (PetscInt e = 0; e < nel; e++) {
+    StructElementDofs(P, e, idx, &n);
+    for (PetscInt a = 0; a < n; a++) deg[idx[a] / 4] += n;
   }
-  for (PetscInt b = 0; b < P->nbe; b++) {
-    BendLayout(P, P->be + b, &L);
-    LayoutDofs(P, &L, idx);
-    for (int i = 0; i < 11; i++)
-      for (int j = 0; j < 11; j++, k++) {
-        P->cooi[k] = idx[i];
-        P->cooj[k] = idx[j];
-      }
+  for (PetscInt a = 0; a < N; a++) start[a + 1] = start[a] + deg[a];
+  PetscCall(PetscMalloc1(start[N] + 1, &nbr));
+  PetscCall(PetscArrayzero(deg, N));
+  for (PetscInt e = 0; e < nel; e++) {
+    StructElementDofs(P, e, idx, &n);
+    for (PetscInt a = 0; a < n; a++)
+      for (PetscInt b = 0; b < n; b++) nbr[start[idx[a] / 4] + deg[idx[a] / 4]++] = idx[b] / 4;
   }
-  for (PetscInt p = 0; p < P->coonpairs; p++) {
-    ContactLayout(P, P->coopairs[2 * p], P->coopairs[2 * p + 1], &L);
-    LayoutDofs(P, &L, idx);
-    for (int i = 0; i < 12; i++)
-      for (int j = 0; j < 12; j++, k++) {
-        P->cooi[k] = idx[i];
-        P->cooj[k] = idx[j];
+  for (PetscInt a = 0; a < N; a++) PetscCall(PetscSortRemoveDupsInt(&deg[a], nbr + start[a]));
+  /* which of the 16 entries of each vertex block are used (positions do not couple with twists in
+     stretch and contact elements): a 16-bit mask per block */
+  unsigned short *mask;
+  PetscInt       *boff;
+  PetscCall(PetscCalloc2(start[N] + 1, &mask, 4 * (start[N] + 1), &boff));
+  for (PetscInt e = 0; e < nel; e++) {
+    StructElementDofs(P, e, idx, &n);
+    for (PetscInt p = 0; p < n; p++) {
+      const PetscInt a = idx[p] / 4;
+      for (PetscInt q = 0; q < n; q++) {
+        PetscInt loc;
+        PetscCall(PetscFindInt(idx[q] / 4, deg[a], nbr + start[a], &loc));
+        mask[start[a] + loc] |= (unsigned short)(1u << (4 * (idx[p] % 4) + idx[q] % 4));
       }
+    }
   }
+  /* CSR of the scalar rows: row 4a + i has, for every neighbour block, the columns its mask uses */
+  PetscCall(PetscFree2(P->rowptr, P->colind));
+  PetscInt nnz = 0;
+  for (PetscInt a = 0; a < N; a++)
+    for (PetscInt q = 0; q < deg[a]; q++) nnz += __builtin_popcount(mask[start[a] + q]);
+  PetscCall(PetscMalloc2(4 * N + 1, &P->rowptr, nnz + 1, &P->colind));
+  P->rowptr[0] = 0;
+  for (PetscInt a = 0; a < N; a++)
+    for (PetscInt i = 0; i < 4; i++) {
+      const PetscInt row = 4 * a + i;
+      PetscInt       c   = P->rowptr[row];
+      for (PetscInt q = 0; q < deg[a]; q++) {
+        const unsigned bits = (mask[start[a] + q] >> (4 * i)) & 0xFu;
+        boff[4 * (start[a] + q) + i] = c;
+        for (PetscInt j = 0; j < 4; j++)
+          if (bits & (1u << j)) P->colind[c++] = 4 * nbr[start[a] + q] + j;
+      }
+      P->rowptr[row + 1] = c;
+    }
+  P->nnz = nnz;
+  /* where each element entry goes in the CSR values (cooi); cooj keeps its column */
+  for (PetscInt e = 0; e < nel; e++) {
+    StructElementDofs(P, e, idx, &n);
+    for (PetscInt p = 0; p < n; p++) {
+      const PetscInt a = idx[p] / 4, i = idx[p] % 4;
+      for (PetscInt q = 0; q < n; q++, k++) {
+        PetscInt loc;
+        PetscCall(PetscFindInt(idx[q] / 4, deg[a], nbr + start[a], &loc));
+        const unsigned bits = (mask[start[a] + loc] >> (4 * i)) & 0xFu, j = (unsigned)(idx[q] % 4);
+        P->cooi[k] = boff[4 * (start[a] + loc) + i] + __builtin_popcount(bits & ((1u << j) - 1u));
+        P->cooj[k] = idx[q];
+      }
+    }
+  }
+  PetscCall(PetscFree2(mask, boff));
   P->ncoo = k;
-  PetscCall(MatSetPreallocationCOO(H, P->ncoo, P->cooi, P->cooj));
+  PetscCall(PetscFree2(deg, start));
+  PetscCall(PetscFree(nbr));
+  PetscCall(MatSeqAIJSetPreallocationCSR(H, P->rowptr, P->colind, NULL));
   P->cooMat = H;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -1006,7 +1069,11 @@ PetscErrorCode HylcPeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts[4]
   if (H) {
     PetscCall(PetscLogEventBegin(HYLC_TileAssemble, 0, 0, 0, 0));
     PetscCall(PetscTime(&tc0));
-    PetscCall(MatSetValuesCOO(H, P->coov, INSERT_VALUES));
+    PetscScalar *v;
+    PetscCall(MatSeqAIJGetArray(H, &v));
+    PetscCall(PetscArrayzero(v, P->nnz));
+    for (PetscInt q = 0; q < P->ncoo; q++) v[P->cooi[q]] += P->coov[q];
+    PetscCall(MatSeqAIJRestoreArray(H, &v));
     PetscCall(PetscTime(&tc1));
     P->tAssemble += tc1 - tc0;
     PetscCall(PetscLogEventEnd(HYLC_TileAssemble, 0, 0, 0, 0));
