@@ -1,0 +1,126 @@
+/* The sampling plan of Algorithm C4 (include/hylc/plan.h). */
+#include <hylc/plan.h>
+#include <math.h>
+#include <string.h>
+
+static const int PairI[9] = {0, 0, 0, 0, 1, 1, 1, 2, 2};
+static const int PairJ[9] = {1, 2, 3, 4, 2, 3, 4, 3, 4};
+
+void HylcPlanPair(int t, int *ci, int *cj)
+{
+  *ci = PairI[t - 6];
+  *cj = PairJ[t - 6];
+}
+
+int HylcPlanStrainIndex(int c) { return c < 4 ? c : 5; }
+
+int HylcSampleRange(int c, double zmin, double zmax, int N, double Z[])
+{
+  if (N < 1 || !(zmin <= zmax) || c < 0 || c >= HYLC_PLAN_NCOORD) return -1;
+  if (c == 0 || c == 2) {
+    if (!(zmin > -1)) return -1;
+    const double a = pow(zmin + 1, 0.1), b = pow(zmax + 1, 0.1);
+    for (int k = 0; k < N; k++) {
+      const double t = N > 1 ? a + (b - a) * k / (N - 1) : a;
+      Z[k]           = pow(t, 10) - 1;
+    }
+    Z[0] = zmin; /* exact end points */
+    if (N > 1) Z[N - 1] = zmax;
+  } else {
+    if (zmin > 0 || zmax < 0) return -1; /* the sgn(t) t^2 spacing spans 0 */
+    const double a = -sqrt(fabs(zmin)), b = sqrt(fabs(zmax));
+    for (int k = 0; k < N; k++) {
+      const double t = N > 1 ? a + (b - a) * k / (N - 1) : a;
+      Z[k]           = (t > 0 ? 1 : t < 0 ? -1 : 0) * t * t;
+    }
+    Z[0] = zmin; /* exact end points */
+    if (N > 1) Z[N - 1] = zmax;
+  }
+  return 0;
+}
+
+long HylcPlanTermSize(const HylcPlan *p, int t)
+{
+  if (t < 0 || t >= HYLC_PLAN_NTERM || !(p->terms & (1 << t))) return 0;
+  if (t == 0) return 1;
+  if (t <= 5) return p->n1;
+  return (long)p->n2 * p->n2;
+}
+
+long HylcPlanSize(const HylcPlan *p)
+{
+  long n = 0;
+  for (int t = 0; t < HYLC_PLAN_NTERM; t++) n += HylcPlanTermSize(p, t);
+  return n;
+}
+
+int HylcPlanSample(const HylcPlan *p, long k, double z[6], int *term)
+{
+  double Z[1024];
+  for (int i = 0; i < 6; i++) z[i] = 0;
+  if (k < 0) return -1;
+  for (int t = 0; t < HYLC_PLAN_NTERM; t++) {
+    const long n = HylcPlanTermSize(p, t);
+    if (k >= n) {
+      k -= n;
+      continue;
+    }
+    *term = t;
+    if (t == 0) return 0;
+    if (t <= 5) {
+      const int c = t - 1;
+      if (p->n1 > 1024 || HylcSampleRange(c, p->min1[c], p->max1[c], p->n1, Z)) return -1;
+      z[HylcPlanStrainIndex(c)] = Z[k];
+      return 0;
+    }
+    int ci, cj;
+    HylcPlanPair(t, &ci, &cj);
+    if (p->n2 > 1024 || HylcSampleRange(ci, p->min2[t - 6][0], p->max2[t - 6][0], p->n2, Z)) return -1;
+    z[HylcPlanStrainIndex(ci)] = Z[k / p->n2];
+    if (HylcSampleRange(cj, p->min2[t - 6][1], p->max2[t - 6][1], p->n2, Z)) return -1;
+    z[HylcPlanStrainIndex(cj)] = Z[k % p->n2];
+    return 0;
+  }
+  return -1;
+}
+
+int HylcPlanDefaults(const char *family, double scale, HylcPlan *p)
+{
+  /* 1D limits of method-spec §8: sx = sy range, sa, II00, II11 (1/m at r = 1 mm) */
+  double s0, s1, sa, b0, b1;
+  if (!strcmp(family, "woven")) s0 = -0.60, s1 = 1.00, sa = 0.75, b0 = 170, b1 = 170;
+  else if (!strcmp(family, "stockinette")) s0 = -0.50, s1 = 0.80, sa = 0.75, b0 = 200, b1 = 230;
+  else if (!strcmp(family, "honeycomb")) s0 = -0.50, s1 = 0.80, sa = 0.75, b0 = 120, b1 = 120;
+  else if (!strcmp(family, "rib")) s0 = -0.65, s1 = 1.00, sa = 0.60, b0 = 100, b1 = 80;
+  else return -1;
+  memset(p, 0, sizeof(*p));
+  p->n1        = 150;
+  p->n2        = 50;
+  p->terms     = (1 << HYLC_PLAN_NTERM) - 1;
+  const double lo[5] = {s0, -sa, s0, -b0 * scale, -b1 * scale}, hi[5] = {s1, sa, s1, b0 * scale, b1 * scale};
+  for (int c = 0; c < 5; c++) {
+    p->min1[c] = lo[c];
+    p->max1[c] = hi[c];
+  }
+  for (int t = 6; t < HYLC_PLAN_NTERM; t++) {
+    int ci, cj, c[2];
+    HylcPlanPair(t, &ci, &cj);
+    c[0] = ci;
+    c[1] = cj;
+    for (int a = 0; a < 2; a++) {
+      const int other = c[1 - a], x = c[a];
+      double    mn, mx;
+      if (x == 0 || x == 2) {
+        if (other == 0 || other == 2) mn = 0.74 * lo[x], mx = hi[x]; /* the Poisson pair (sx, sy) */
+        else mn = -0.1, mx = 0.84 * hi[x];
+      } else if (x == 1) mn = 0.8 * lo[x], mx = 0.8 * hi[x];
+      else {
+        const double f = ((x == 3 && other == 0) || (x == 4 && other == 2)) ? 0.72 : 0.8; /* same axis */
+        mn = f * lo[x], mx = f * hi[x];
+      }
+      p->min2[t - 6][a] = mn;
+      p->max2[t - 6][a] = mx;
+    }
+  }
+  return 0;
+}
