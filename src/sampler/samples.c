@@ -123,12 +123,12 @@ static void SyncParentDirectory(const char path[])
   }
 }
 
+/* takes the exclusive lock of an open journal (the caller closes fp on error) */
 static PetscErrorCode JournalLock(FILE *fp, const char path[])
 {
   PetscFunctionBegin;
   if (flock(fileno(fp), LOCK_EX | LOCK_NB)) {
     int err = errno;
-    fclose(fp);
     PetscCheck(err != EWOULDBLOCK, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Journal %s is in use by another process (is the same run already going?)", path);
     SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot lock journal %s: %s", path, strerror(err));
   }
@@ -150,8 +150,9 @@ static PetscErrorCode JournalCreateFile(HylcJournal j)
   /* refuse to replace a journal that another process is writing */
   fp = fopen(j->path, "rb");
   if (fp) {
-    PetscCall(JournalLock(fp, j->path));
+    PetscErrorCode ierr = JournalLock(fp, j->path);
     fclose(fp);
+    PetscCall(ierr);
   }
   PetscCheck(strlen(j->path) + 5 <= sizeof(tmp), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Journal path too long: %s", j->path);
   snprintf(tmp, sizeof(tmp), "%s.tmp", j->path);
@@ -249,31 +250,53 @@ static PetscErrorCode JournalReadRecords(HylcJournal j, long hsize)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+static PetscErrorCode JournalOpen_Private(HylcJournal j, PetscBool resume)
+{
+  long hsize;
+
+  PetscFunctionBegin;
+  if (!resume || access(j->path, F_OK)) PetscCall(JournalCreateFile(j));
+  j->fp = fopen(j->path, "r+b");
+  PetscCheck(j->fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot open journal %s: %s", j->path, strerror(errno));
+  PetscCall(JournalLock(j->fp, j->path));
+  PetscCall(JournalReadHeader(j, &hsize));
+  PetscCall(JournalReadRecords(j, hsize));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static void JournalFree(HylcJournal j)
+{
+  if (j->fp) fclose(j->fp); /* closing releases the lock */
+  PetscFree(j->path);
+  PetscFree(j->fingerprint);
+  PetscFree(j->done);
+  PetscFree(j->recs);
+  PetscFree(j);
+}
+
+/*@C
+  HylcJournalOpen - Creates or (resume) reopens the journal of a run; see include/hylc/samples.h. Not collective.
+@*/
 PetscErrorCode HylcJournalOpen(const char path[], PetscBool resume, long nsamples, const char fingerprint[], HylcJournal *journal)
 {
-  HylcJournal j;
-  long        hsize;
-  int         exists;
+  HylcJournal    j;
+  PetscErrorCode ierr;
 
   PetscFunctionBegin;
   PetscValidCharPointer(path, 1);
   PetscValidPointer(journal, 5);
+  *journal = NULL;
   PetscCheck(nsamples >= 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Journal %s: negative number of samples %ld", path, nsamples);
   PetscCheck(!fingerprint || strlen(fingerprint) < JOURNAL_MAXFP, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Journal %s: fingerprint too long", path);
-  *journal = NULL;
   PetscCall(PetscNew(&j));
   j->nsamples = nsamples;
   PetscCall(PetscStrallocpy(path, &j->path));
   PetscCall(PetscStrallocpy(fingerprint ? fingerprint : "", &j->fingerprint));
   PetscCall(PetscCalloc1(nsamples + 1, &j->done));
   PetscCall(PetscCalloc1(nsamples + 1, &j->recs));
-  exists = !access(path, F_OK);
-  if (!resume || !exists) PetscCall(JournalCreateFile(j));
-  j->fp = fopen(path, "r+b");
-  PetscCheck(j->fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot open journal %s: %s", path, strerror(errno));
-  PetscCall(JournalLock(j->fp, path));
-  PetscCall(JournalReadHeader(j, &hsize));
-  PetscCall(JournalReadRecords(j, hsize));
+  ierr = JournalOpen_Private(j, resume);
+  if (ierr) JournalFree(j); /* closes the file and releases the lock */
+  PetscCall(ierr);
   *journal = j;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -338,28 +361,22 @@ PetscErrorCode HylcJournalGetInfo(HylcJournal j, long *nsamples, PetscInt *ndrop
 PetscErrorCode HylcJournalClose(HylcJournal *journal)
 {
   HylcJournal j;
-  int         err = 0;
+  FILE       *fp;
 
   PetscFunctionBegin;
   if (!journal || !*journal) PetscFunctionReturn(PETSC_SUCCESS);
   j        = *journal;
   *journal = NULL;
-  if (j->fp && fclose(j->fp)) err = errno; /* closing releases the lock */
-  if (err) {
+  fp       = j->fp;
+  j->fp    = NULL;
+  if (fp && fclose(fp)) { /* every record was already flushed and synced: report, but free first */
+    int  err = errno;
     char path[PETSC_MAX_PATH_LEN];
     PetscCall(PetscStrncpy(path, j->path, sizeof(path)));
-    PetscCall(PetscFree(j->path));
-    PetscCall(PetscFree(j->fingerprint));
-    PetscCall(PetscFree(j->done));
-    PetscCall(PetscFree(j->recs));
-    PetscCall(PetscFree(j));
+    JournalFree(j);
     SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot close journal %s: %s", path, strerror(err));
   }
-  PetscCall(PetscFree(j->path));
-  PetscCall(PetscFree(j->fingerprint));
-  PetscCall(PetscFree(j->done));
-  PetscCall(PetscFree(j->recs));
-  PetscCall(PetscFree(j));
+  JournalFree(j);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
