@@ -25,7 +25,7 @@
 #define JOURNAL_VERSION   1u
 #define JOURNAL_PAYLOAD   136 /* packed record without checksum */
 #define JOURNAL_RECSIZE   (JOURNAL_PAYLOAD + 8)
-#define JOURNAL_FIXEDHEAD 32  /* header bytes before the fingerprint text */
+#define JOURNAL_FIXEDHEAD 32 /* header bytes before the fingerprint text */
 #define JOURNAL_MAXFP     (1 << 24)
 
 struct _n_HylcJournal {
@@ -59,7 +59,7 @@ static int NumStatuses(void)
 /* the record layout: int64 index, int32 term, status, iterations, retries, 14 doubles, uint64 checksum */
 static void PackRecord(const HylcSampleRecord *r, unsigned char b[JOURNAL_RECSIZE])
 {
-  int64_t  idx = r->index;
+  int64_t  idx   = r->index;
   int32_t  iv[4] = {r->term, r->status, r->iterations, r->retries};
   double   dv[14];
   uint64_t h;
@@ -113,9 +113,12 @@ static void SyncParentDirectory(const char path[])
   const char *slash = strrchr(path, '/');
   int         fd;
 
-  if (!slash) snprintf(dir, sizeof(dir), ".");
-  else if (slash == path) snprintf(dir, sizeof(dir), "/");
-  else snprintf(dir, sizeof(dir), "%.*s", (int)(slash - path), path);
+  if (!slash)
+    snprintf(dir, sizeof(dir), ".");
+  else if (slash == path)
+    snprintf(dir, sizeof(dir), "/");
+  else
+    snprintf(dir, sizeof(dir), "%.*s", (int)(slash - path), path);
   fd = open(dir, O_RDONLY);
   if (fd >= 0) {
     (void)fsync(fd);
@@ -209,13 +212,15 @@ static PetscErrorCode JournalReadHeader(HylcJournal j, long *hsize)
   head[JOURNAL_FIXEDHEAD + L] = 0;
   if (ns != j->nsamples || strcmp((char *)head + JOURNAL_FIXEDHEAD, j->fingerprint)) {
     const char *stored = (char *)head + JOURNAL_FIXEDHEAD, *mine = j->fingerprint;
-    size_t      k      = 0;
+    size_t      k = 0;
     char        msg[512];
 
     while (stored[k] && stored[k] == mine[k]) k++;
     k = k > 30 ? k - 30 : 0;
-    if (ns != j->nsamples) snprintf(msg, sizeof(msg), "it has %lld samples, this run %ld", (long long)ns, j->nsamples);
-    else snprintf(msg, sizeof(msg), "the fingerprints differ; journal: ...%.80s..., this run: ...%.80s...", stored + k, mine + k);
+    if (ns != j->nsamples)
+      snprintf(msg, sizeof(msg), "it has %lld samples, this run %ld", (long long)ns, j->nsamples);
+    else
+      snprintf(msg, sizeof(msg), "the fingerprints differ; journal: ...%.80s..., this run: ...%.80s...", stored + k, mine + k);
     PetscCall(PetscFree(head));
     SETERRQ(PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "Journal %s belongs to a different run (%s); remove it or run without -sampler_resume", j->path, msg);
   }
@@ -403,18 +408,18 @@ static void HylcHDF5ErrorText(char buf[256])
 
 /* HylcCallHDF5(call): a negative return of a raw HDF5 call becomes a PETSc error naming the call, the
    file and HDF5's own description. HylcCallHDF5Id(id, call) also stores the returned hid_t. */
-#define HylcCallHDF5(...) \
-  do { \
-    if ((__VA_ARGS__) < 0) { \
-      char hylc_h5msg_[256]; \
-      HylcHDF5ErrorText(hylc_h5msg_); \
+#define HylcCallHDF5(...)                                                                                            \
+  do {                                                                                                               \
+    if ((__VA_ARGS__) < 0) {                                                                                         \
+      char hylc_h5msg_[256];                                                                                         \
+      HylcHDF5ErrorText(hylc_h5msg_);                                                                                \
       SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5 call %s failed on %s%s", #__VA_ARGS__, HylcH5File, hylc_h5msg_); \
-    } \
+    }                                                                                                                \
   } while (0)
 #define HylcCallHDF5Id(id, ...) \
-  do { \
-    (id) = (__VA_ARGS__); \
-    HylcCallHDF5(id); \
+  do {                          \
+    (id) = (__VA_ARGS__);       \
+    HylcCallHDF5(id);           \
   } while (0)
 
 static PetscErrorCode H5AttrString(hid_t loc, const char name[], const char value[])
@@ -646,14 +651,14 @@ static PetscErrorCode WriteOptions(hid_t file, const char text[])
 
 static PetscErrorCode WriteFile(hid_t file, long N, const HylcSampleRecord recs[], const unsigned char done[], HylcPattern reference, const HylcYarnModel *model, const char optionsText[])
 {
-  char        date[64], host[256], petscv[128];
-  time_t      now = time(NULL);
-  struct tm   tm;
-  long long   ndone = 0, nconv = 0;
-  unsigned    maj, min, rel;
-  char        h5v[64];
-  char       *allopts = NULL;
-  PetscReal   radius  = 0;
+  char      date[64], host[256], petscv[128];
+  time_t    now = time(NULL);
+  struct tm tm;
+  long long ndone = 0, nconv = 0;
+  unsigned  maj, min, rel;
+  char      h5v[64];
+  char     *allopts = NULL;
+  PetscReal radius  = 0;
 
   PetscFunctionBegin;
   for (long k = 0; k < N; k++) {

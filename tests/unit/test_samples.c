@@ -156,7 +156,7 @@ static PetscErrorCode TestJournal(void)
 static PetscErrorCode TestTornTail(void)
 {
   const char   *path = "torn.journal", *fp = "fingerprint of the torn run";
-  const long    n    = 40;
+  const long    n = 40;
   unsigned char want[40];
   HylcJournal   j;
   PetscInt      ndropped;
@@ -291,8 +291,10 @@ static PetscErrorCode MakeH5Inputs(HylcPattern *p, HylcYarnModel *m, HylcSampleR
   m->kc = 50;
   for (long k = 0; k < NH5; k++) {
     done[k] = (k % 5 != 2);
-    if (done[k]) MakeRecord(k, &recs[k]);
-    else memset(&recs[k], 0x5a, sizeof(recs[k])); /* garbage where not done */
+    if (done[k])
+      MakeRecord(k, &recs[k]);
+    else
+      memset(&recs[k], 0x5a, sizeof(recs[k])); /* garbage where not done */
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -325,7 +327,7 @@ static long long ReadAttrLong(hid_t loc, const char *obj, const char *name)
 static void ReadAttrString(hid_t loc, const char *obj, const char *name, char *buf, size_t len)
 {
   hid_t a = H5Aopen_by_name(loc, obj, name, H5P_DEFAULT, H5P_DEFAULT);
-  buf[0] = 0;
+  buf[0]  = 0;
   if (a >= 0) {
     hid_t t = H5Aget_type(a), s = H5Aget_space(a);
     char *str = NULL;
@@ -345,7 +347,7 @@ static PetscErrorCode TestHDF5(void)
   HylcYarnModel     m;
   HylcYarnConstants c;
   HylcPatternData   d;
-  HylcSampleRecord  recs[NH5], *back = NULL;
+  HylcSampleRecord  recs[NH5], *back  = NULL;
   unsigned char     done[NH5], *bdone = NULL;
   long              n;
   char             *opts = NULL, buf[256];
@@ -490,7 +492,7 @@ static PetscErrorCode JournalCheck(const char path[])
   const unsigned char    *done;
   const HylcSampleRecord *recs;
   HylcSampleRecord        r;
-  long                    m = 0;
+  long                    m   = 0;
   int                     bad = 0;
 
   PetscFunctionBegin;
@@ -501,8 +503,10 @@ static PetscErrorCode JournalCheck(const char path[])
   while (m < NKILL && done[m]) m++;
   for (long k = 0; k < NKILL; k++) {
     MakeRecord(k, &r);
-    if (k < m) bad += !SameRecord(&recs[k], &r);
-    else bad += done[k] != 0;
+    if (k < m)
+      bad += !SameRecord(&recs[k], &r);
+    else
+      bad += done[k] != 0;
   }
   HYLC_CHECK(m > 0 && ndone == m && bad == 0, "resumed journal: prefix %ld, ndone %d, %d bad", m, (int)ndone, bad);
   /* finish a few more and check the continuation */
@@ -526,13 +530,16 @@ int main(int argc, char **argv)
 
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
   PetscCall(PetscOptionsGetString(NULL, NULL, "-test_write_h5", path, sizeof(path), &set));
-  if (set) PetscCall(WriteH5Only(path));
+  if (set)
+    PetscCall(WriteH5Only(path));
   else {
     PetscCall(PetscOptionsGetString(NULL, NULL, "-test_journal_writer", path, sizeof(path), &set));
-    if (set) PetscCall(JournalWriter(path));
+    if (set)
+      PetscCall(JournalWriter(path));
     else {
       PetscCall(PetscOptionsGetString(NULL, NULL, "-test_journal_check", path, sizeof(path), &set));
-      if (set) PetscCall(JournalCheck(path));
+      if (set)
+        PetscCall(JournalCheck(path));
       else {
         PetscCall(TestJournal());
         PetscCall(TestTornTail());
