@@ -309,6 +309,7 @@ PetscErrorCode HylcJournalOpen(const char path[], PetscBool resume, long nsample
 PetscErrorCode HylcJournalAppend(HylcJournal j, const HylcSampleRecord recs[], PetscInt n)
 {
   unsigned char *buf;
+  off_t          end;
 
   PetscFunctionBegin;
   PetscValidPointer(j, 1);
@@ -322,8 +323,11 @@ PetscErrorCode HylcJournalAppend(HylcJournal j, const HylcSampleRecord recs[], P
   }
   PetscCall(PetscMalloc1((size_t)n * JOURNAL_RECSIZE, &buf));
   for (PetscInt i = 0; i < n; i++) PackRecord(&recs[i], buf + (size_t)i * JOURNAL_RECSIZE);
+  end = ftello(j->fp);
   if (fwrite(buf, JOURNAL_RECSIZE, (size_t)n, j->fp) != (size_t)n || fflush(j->fp) || fsync(fileno(j->fp))) {
     int err = errno;
+    /* e.g. a full disk: cut a partial record so that later appends stay aligned (best effort) */
+    if (end >= 0 && !ftruncate(fileno(j->fp), end)) (void)fseeko(j->fp, end, SEEK_SET);
     PetscCall(PetscFree(buf));
     SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot append to journal %s: %s", j->path, strerror(err));
   }
