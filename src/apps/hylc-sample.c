@@ -1,0 +1,27 @@
+static const char help[] = "hylc-sample: the sampling job of Algorithm C4 -- microscale solves of a periodic yarn tile over\n"
+                           "the sampled strains, distributed over MPI ranks, written to HDF5.\n\n"
+                           "  mpirun -n 4 hylc-sample -options_file config/satin.yaml -sampler_output satin.h5\n"
+                           "  mpirun -n 4 hylc-sample -options_file config/satin.yaml -sampler_output satin.h5 -sampler_resume\n"
+                           "  hylc-sample -pattern_type plain -sampler_terms zero,sx -sampler_n1 10   (a quick run)\n\n";
+
+#include <hylc/sampler.h>
+
+static PetscErrorCode Run(void)
+{
+  HylcSampler S;
+
+  PetscFunctionBeginUser;
+  PetscCall(HylcSamplerCreate(PETSC_COMM_WORLD, &S));
+  PetscCall(HylcSamplerSetFromOptions(S));
+  PetscCall(HylcSamplerSetUp(S));
+  PetscCall(HylcSamplerRun(S));
+  PetscCall(HylcSamplerDestroy(&S));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+int main(int argc, char **argv)
+{
+  PetscCall(PetscInitialize(&argc, &argv, NULL, help));
+  PetscCall(HylcPushErrorHandler());
+  return HylcMainFinalize(Run());
+}

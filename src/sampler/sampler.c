@@ -1,0 +1,329 @@
+/* HylcSampler: the MPI sampling job (include/hylc/sampler.h). */
+#include <hylc/sampler.h>
+#include <petsctime.h>
+
+#define TAG_RECORDS 7301
+#define TAG_DONE    7302
+
+static const char *const TermNames[HYLC_PLAN_NTERM] = {"zero", "sx", "sa", "sy", "II00", "II11", "sx-sa", "sx-sy", "sx-II00", "sx-II11", "sa-sy", "sa-II00", "sa-II11", "sy-II00", "sy-II11"};
+static const char *const Families[]                 = {"woven", "stockinette", "honeycomb", "rib", "HylcPlanFamily", "", NULL};
+
+struct _n_HylcSampler {
+  MPI_Comm      comm;
+  PetscMPIInt   rank, size;
+  HylcPattern   pat;
+  HylcYarnModel model;
+  HylcMicro     micro;
+  HylcPlan      plan;
+  char          output[PETSC_MAX_PATH_LEN];
+  PetscBool     resume;
+  PetscInt      batch;
+  PetscReal     progress; /* seconds between progress lines */
+  long          nsamples;
+};
+
+PetscErrorCode HylcSamplerCreate(MPI_Comm comm, HylcSampler *s)
+{
+  HylcSampler S;
+
+  PetscFunctionBegin;
+  PetscCall(HylcInitializePackage());
+  PetscCall(PetscNew(&S));
+  S->comm = comm;
+  PetscCallMPI(MPI_Comm_rank(comm, &S->rank));
+  PetscCallMPI(MPI_Comm_size(comm, &S->size));
+  PetscCall(PetscStrncpy(S->output, "samples.h5", sizeof(S->output)));
+  S->batch    = 4;
+  S->progress = 5;
+  *s          = S;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcSamplerDestroy(HylcSampler *s)
+{
+  PetscFunctionBegin;
+  if (!*s) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(HylcMicroDestroy(&(*s)->micro));
+  PetscCall(HylcPatternDestroy(&(*s)->pat));
+  PetscCall(PetscFree(*s));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* a 1D range option "-sampler_range_<name> min,max" */
+static PetscErrorCode RangeOption(PetscOptionItems *PetscOptionsObject, const char name[], const char help[], double *mn, double *mx)
+{
+  PetscReal v[2] = {*mn, *mx};
+  PetscInt  n    = 2;
+  PetscBool set;
+  char      opt[64];
+
+  PetscFunctionBegin;
+  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-sampler_range_%s", name));
+  PetscCall(PetscOptionsRealArray(opt, help, "HylcSampler", v, &n, &set));
+  if (set) {
+    PetscCheck(n == 2 && v[0] <= v[1], PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "%s needs two values min,max with min <= max", opt);
+    *mn = v[0];
+    *mx = v[1];
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcSamplerSetFromOptions - Options of the sampling job (besides -pattern_*, -yarn_*, -micro_*,
+  -periodic_*, -macro_*):
++ -sampler_output <samples.h5>    - the HDF5 output (its journal: <output>.journal)
+. -sampler_resume                 - continue an interrupted run from its journal
+. -sampler_family <woven>         - default ranges of method-spec §8: woven, stockinette, honeycomb, rib
+. -sampler_range_<c> min,max      - 1D range of c = sx, sa, sy, II00, II11 (II in 1/m; 2D ranges follow)
+. -sampler_n1 <150>, -sampler_n2 <50> - samples per 1D term, per axis of a 2D term
+. -sampler_terms <all>            - comma list of terms: zero, sx, sa, sy, II00, II11, sx-sa, sx-sy,
+                                    sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11, or all
+. -sampler_batch <4>              - samples per batch (the unit of work of a rank)
+- -sampler_progress <5>           - seconds between progress lines
+@*/
+PetscErrorCode HylcSamplerSetFromOptions(HylcSampler S)
+{
+  PetscEnum   fam     = 0;
+  const char *cn[5]   = {"sx", "sa", "sy", "II00", "II11"};
+  char      terms[512] = "all";
+  PetscInt  n1 = 150, n2 = 50;
+  PetscReal r;
+
+  PetscFunctionBegin;
+  PetscCall(HylcPatternCreate(S->comm, &S->pat));
+  PetscCall(HylcPatternSetFromOptions(S->pat));
+  PetscCall(HylcPatternSetUp(S->pat));
+  PetscCall(HylcPatternGetRadius(S->pat, &r));
+  PetscCall(HylcYarnModelDefault(&S->model));
+  PetscCall(HylcYarnModelSetFromOptions(S->comm, NULL, &S->model));
+  PetscOptionsBegin(S->comm, NULL, "Sampling job (Algorithm C4)", "HylcSampler");
+  PetscCall(PetscOptionsString("-sampler_output", "HDF5 output file (the journal is <output>.journal)", "HylcSampler", S->output, S->output, sizeof(S->output), NULL));
+  PetscCall(PetscOptionsBool("-sampler_resume", "Continue an interrupted run from its journal", "HylcSampler", S->resume, &S->resume, NULL));
+  PetscCall(PetscOptionsEnum("-sampler_family", "Default sampling ranges of method-spec 8 (II scaled by 1 mm / r)", "HylcSampler", Families, fam, &fam, NULL));
+  PetscCheck(!HylcPlanDefaults(Families[fam], 1e-3 / r, &S->plan), S->comm, PETSC_ERR_USER_INPUT, "Unknown sampling family");
+  for (int c = 0; c < 5; c++) {
+    const double mn0 = S->plan.min1[c], mx0 = S->plan.max1[c];
+    PetscCall(RangeOption(PetscOptionsObject, cn[c], "1D sampling range min,max of this strain (II in 1/m); the 2D ranges scale with it", &S->plan.min1[c], &S->plan.max1[c]));
+    /* 2D ranges follow the 1D ones in proportion */
+    for (int t = 6; t < HYLC_PLAN_NTERM; t++) {
+      int ci, cj;
+      HylcPlanPair(t, &ci, &cj);
+      for (int a = 0; a < 2; a++)
+        if ((a ? cj : ci) == c) {
+          if (mn0 != 0) S->plan.min2[t - 6][a] *= S->plan.min1[c] / mn0;
+          if (mx0 != 0) S->plan.max2[t - 6][a] *= S->plan.max1[c] / mx0;
+        }
+    }
+  }
+  PetscCall(PetscOptionsInt("-sampler_n1", "Samples per 1D term", "HylcSampler", n1, &n1, NULL));
+  PetscCall(PetscOptionsInt("-sampler_n2", "Samples per axis of a 2D term", "HylcSampler", n2, &n2, NULL));
+  PetscCall(PetscOptionsString("-sampler_terms", "Terms to sample: all, or a comma list of zero, sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11", "HylcSampler", terms, terms, sizeof(terms), NULL));
+  PetscCall(PetscOptionsInt("-sampler_batch", "Samples per batch (unit of work of a rank)", "HylcSampler", S->batch, &S->batch, NULL));
+  PetscCall(PetscOptionsReal("-sampler_progress", "Seconds between progress lines", "HylcSampler", S->progress, &S->progress, NULL));
+  PetscOptionsEnd();
+  PetscCheck(n1 >= 1 && n1 <= 1024 && n2 >= 1 && n2 <= 1024, S->comm, PETSC_ERR_USER_INPUT, "-sampler_n1 and -sampler_n2 must be in 1..1024");
+  PetscCheck(S->batch >= 1, S->comm, PETSC_ERR_USER_INPUT, "-sampler_batch must be at least 1");
+  S->plan.n1 = (int)n1;
+  S->plan.n2 = (int)n2;
+  {
+    PetscBool all;
+    PetscCall(PetscStrcmp(terms, "all", &all));
+    if (!all) {
+      char *tok, *save = NULL;
+      S->plan.terms = 0;
+      for (tok = strtok_r(terms, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
+        int found = -1;
+        for (int t = 0; t < HYLC_PLAN_NTERM; t++) {
+          PetscBool eq;
+          PetscCall(PetscStrcmp(tok, TermNames[t], &eq));
+          if (eq) found = t;
+        }
+        PetscCheck(found >= 0, S->comm, PETSC_ERR_USER_INPUT, "-sampler_terms: unknown term '%s' (use zero, sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11 or all)", tok);
+        S->plan.terms |= 1 << found;
+      }
+    }
+  }
+  for (int c = 0; c < 5; c++) {
+    double Z[1];
+    PetscCheck(!HylcSampleRange(c, S->plan.min1[c], S->plan.max1[c], 1, Z), S->comm, PETSC_ERR_USER_INPUT, "-sampler_range_%s %g,%g is not a valid range (sx, sy > -1; the others must contain 0)", cn[c], S->plan.min1[c], S->plan.max1[c]);
+  }
+  PetscCall(HylcMicroCreate(PETSC_COMM_SELF, &S->micro));
+  PetscCall(HylcMicroSetPattern(S->micro, S->pat, &S->model));
+  PetscCall(HylcMicroSetFromOptions(S->micro));
+  S->nsamples = HylcPlanSize(&S->plan);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcSamplerSetUp(HylcSampler S)
+{
+  PetscFunctionBegin;
+  PetscCheck(S->micro, S->comm, PETSC_ERR_ARG_WRONGSTATE, "Call HylcSamplerSetFromOptions() first");
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcSamplerGetPlan(HylcSampler S, const HylcPlan **plan)
+{
+  PetscFunctionBegin;
+  *plan = &S->plan;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode SolveSample(HylcSampler S, long k, HylcSampleRecord *rec)
+{
+  HylcMicroResult r;
+  double          z[6];
+  int             term;
+
+  PetscFunctionBegin;
+  PetscCheck(!HylcPlanSample(&S->plan, k, z, &term), PETSC_COMM_SELF, PETSC_ERR_PLIB, "Sample %ld outside the plan", k);
+  PetscCall(HylcMicroSolve(S->micro, z, &r));
+  PetscCall(PetscMemzero(rec, sizeof(*rec)));
+  rec->index      = k;
+  rec->term       = term;
+  rec->status     = (int)r.status;
+  rec->iterations = (int)r.iterations;
+  rec->retries    = (int)r.retries;
+  for (int i = 0; i < 6; i++) rec->z[i] = z[i];
+  rec->psi = r.psi;
+  for (int i = 0; i < 4; i++) rec->parts[i] = r.parts[i];
+  rec->residual  = r.residual;
+  rec->cresidual = r.cresidual;
+  rec->time      = r.time;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+typedef struct {
+  long           done, total, failed, converged0;
+  PetscLogDouble t0, last;
+} Progress;
+
+static PetscErrorCode Report(HylcSampler S, Progress *pg, PetscBool force)
+{
+  PetscLogDouble now;
+
+  PetscFunctionBegin;
+  PetscCall(PetscTime(&now));
+  if (!force && now - pg->last < S->progress) PetscFunctionReturn(PETSC_SUCCESS);
+  pg->last               = now;
+  const double rate      = (pg->done - pg->converged0) / PetscMax(now - pg->t0, 1e-9);
+  const double remaining = rate > 0 ? (pg->total - pg->done) / rate : 0;
+  PetscCall(PetscPrintf(PETSC_COMM_SELF, "[sampler] %ld/%ld samples (%.1f%%), %ld failed, %.2f samples/s, ETA %.0f s\n", pg->done, pg->total, 100.0 * pg->done / PetscMax(pg->total, 1), pg->failed, rate, remaining));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* rank 0: receive whatever records have arrived, append them to the journal */
+static PetscErrorCode Drain(HylcSampler S, HylcJournal J, Progress *pg, PetscInt *finished, PetscBool wait)
+{
+  HylcSampleRecord *buf;
+
+  PetscFunctionBegin;
+  PetscCall(PetscMalloc1(S->batch, &buf));
+  for (;;) {
+    PetscMPIInt flag, count;
+    MPI_Status  st;
+    if (wait) {
+      PetscCallMPI(MPI_Probe(MPI_ANY_SOURCE, MPI_ANY_TAG, S->comm, &st));
+      flag = 1;
+    } else PetscCallMPI(MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, S->comm, &flag, &st));
+    if (!flag) break;
+    if (st.MPI_TAG == TAG_DONE) {
+      int dummy;
+      PetscCallMPI(MPI_Recv(&dummy, 1, MPI_INT, st.MPI_SOURCE, TAG_DONE, S->comm, MPI_STATUS_IGNORE));
+      (*finished)++;
+    } else {
+      PetscCallMPI(MPI_Get_count(&st, MPI_BYTE, &count));
+      const PetscInt n = count / (PetscMPIInt)sizeof(HylcSampleRecord);
+      PetscCallMPI(MPI_Recv(buf, count, MPI_BYTE, st.MPI_SOURCE, TAG_RECORDS, S->comm, MPI_STATUS_IGNORE));
+      PetscCall(HylcJournalAppend(J, buf, n));
+      for (PetscInt i = 0; i < n; i++) pg->failed += buf[i].status != HYLC_MICRO_CONVERGED;
+      pg->done += n;
+    }
+    if (wait) break;
+  }
+  PetscCall(PetscFree(buf));
+  PetscCall(Report(S, pg, PETSC_FALSE));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcSamplerRun - Solves every sample of the plan not yet in the journal, gathers the records on rank 0
+  and writes the HDF5 output. Collective.
+@*/
+PetscErrorCode HylcSamplerRun(HylcSampler S)
+{
+  char              jpath[PETSC_MAX_PATH_LEN + 16], fingerprint[1024];
+  HylcJournal       J = NULL;
+  unsigned char    *done;
+  HylcSampleRecord *recs;
+  Progress          pg;
+  PetscInt          finished = 0;
+
+  PetscFunctionBegin;
+  PetscCall(PetscLogEventBegin(HYLC_SamplerRun, 0, 0, 0, 0));
+  PetscCall(PetscSNPrintf(jpath, sizeof(jpath), "%s.journal", S->output));
+  {
+    /* the run's identity: pattern, model, plan (a resumed run must be the same run) */
+    HylcPatternData D;
+    PetscCall(HylcPatternGetData(S->pat, &D));
+    PetscCall(PetscSNPrintf(fingerprint, sizeof(fingerprint), "hylc %s; pattern N=%d px=%.17g py=%.17g r=%.17g X0=%.17g; yarn E=%.17g Es=%.17g G=%.17g kc=%.17g r=%.17g pts=%d type=%d arc=%.17g; plan n1=%d n2=%d terms=%d ranges=%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g", HYLC_VERSION_STRING, (int)D.nv, (double)D.px, (double)D.py, (double)D.radius, (double)D.X[0], (double)S->model.E, (double)S->model.Es, (double)S->model.G, (double)S->model.kc, (double)S->model.radius, (int)S->model.contactPoints, (int)S->model.contactType, (double)S->model.excludeArc, S->plan.n1, S->plan.n2, S->plan.terms, S->plan.min1[0], S->plan.max1[0], S->plan.min1[1], S->plan.max1[1], S->plan.min1[2], S->plan.max1[2], S->plan.min1[3], S->plan.max1[3], S->plan.min1[4], S->plan.max1[4]));
+  }
+  PetscCall(PetscMalloc1(S->nsamples + 1, &done));
+  PetscCall(PetscArrayzero(done, S->nsamples + 1));
+  PetscCall(PetscMemzero(&pg, sizeof(pg)));
+  pg.total = S->nsamples;
+  if (!S->rank) {
+    const unsigned char *jd;
+    PetscInt             nd;
+    PetscCall(HylcJournalOpen(jpath, S->resume, S->nsamples, fingerprint, &J));
+    PetscCall(HylcJournalGetDone(J, &nd, &jd));
+    PetscCall(PetscArraycpy(done, jd, S->nsamples));
+    pg.done = pg.converged0 = nd;
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, "[sampler] %ld samples in %ld batches on %d ranks; %ld already done (%s)\n", S->nsamples, (S->nsamples + S->batch - 1) / S->batch, (int)S->size, (long)nd, jpath));
+  }
+  PetscCallMPI(MPI_Bcast(done, (PetscMPIInt)S->nsamples, MPI_UNSIGNED_CHAR, 0, S->comm));
+  PetscCall(PetscTime(&pg.t0));
+  pg.last = pg.t0;
+  PetscCall(PetscMalloc1(S->batch, &recs));
+  /* my batches: b = rank, rank + size, ... */
+  const long nb = (S->nsamples + S->batch - 1) / S->batch;
+  for (long b = S->rank; b < nb; b += S->size) {
+    PetscInt n = 0;
+    for (long k = b * S->batch; k < PetscMin((b + 1) * S->batch, S->nsamples); k++) {
+      if (done[k]) continue;
+      PetscCall(SolveSample(S, k, &recs[n++]));
+      if (!S->rank) PetscCall(Drain(S, J, &pg, &finished, PETSC_FALSE));
+    }
+    if (!n) continue;
+    if (S->rank) PetscCallMPI(MPI_Send(recs, (PetscMPIInt)(n * sizeof(HylcSampleRecord)), MPI_BYTE, 0, TAG_RECORDS, S->comm));
+    else {
+      PetscCall(HylcJournalAppend(J, recs, n));
+      for (PetscInt i = 0; i < n; i++) pg.failed += recs[i].status != HYLC_MICRO_CONVERGED;
+      pg.done += n;
+      PetscCall(Report(S, &pg, PETSC_FALSE));
+    }
+  }
+  if (S->rank) {
+    int one = 1;
+    PetscCallMPI(MPI_Send(&one, 1, MPI_INT, 0, TAG_DONE, S->comm));
+  } else {
+    while (finished < S->size - 1) PetscCall(Drain(S, J, &pg, &finished, PETSC_TRUE));
+    PetscCall(Report(S, &pg, PETSC_TRUE));
+    /* the HDF5 file from the journal: every sample of the plan, failures included */
+    const HylcSampleRecord *all;
+    const unsigned char    *jd;
+    PetscInt                nd;
+    char                   *opts = NULL;
+    PetscCall(HylcJournalGetDone(J, &nd, &jd));
+    PetscCall(HylcJournalGetRecords(J, &all));
+    PetscCall(PetscOptionsGetAll(NULL, &opts));
+    PetscCall(HylcSamplesWriteHDF5(S->output, S->nsamples, all, jd, S->pat, &S->model, opts));
+    PetscCall(PetscFree(opts));
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, "[sampler] wrote %s: %ld samples, %ld not converged\n", S->output, (long)nd, pg.failed));
+    PetscCall(HylcJournalClose(&J));
+  }
+  PetscCall(PetscFree(recs));
+  PetscCall(PetscFree(done));
+  PetscCallMPI(MPI_Barrier(S->comm));
+  PetscCall(PetscLogEventEnd(HYLC_SamplerRun, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
