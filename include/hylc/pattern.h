@@ -75,6 +75,9 @@ PETSC_EXTERN PetscErrorCode HylcPatternGenerate(HylcPattern, HylcPatternType, co
 PETSC_EXTERN PetscErrorCode HylcPatternSetData(HylcPattern, PetscInt, PetscReal, PetscReal, PetscReal, const PetscReal[], const PetscReal[], const PetscInt[], const PetscInt[], const PetscReal[], const PetscReal[], const PetscReal[], const PetscReal[], const PetscReal[]);
 PETSC_EXTERN PetscErrorCode HylcPatternSetFromCurves(HylcPattern, PetscReal, PetscReal, PetscReal, PetscInt, const PetscInt[], const PetscInt[], const PetscReal[]);
 PETSC_EXTERN PetscErrorCode HylcPatternDuplicate(HylcPattern, HylcPattern *);
+PETSC_EXTERN PetscErrorCode HylcPatternSetRestFromGeometry(HylcPattern);
+PETSC_EXTERN PetscErrorCode HylcPatternScaleRest(HylcPattern, PetscReal, PetscReal);
+PETSC_EXTERN PetscErrorCode HylcPatternRecentre(HylcPattern);
 PETSC_EXTERN PetscErrorCode HylcPatternCreateSupercell(HylcPattern, PetscInt, PetscInt, HylcPattern *);
 
 /* Output. Collective; rank 0 writes. */

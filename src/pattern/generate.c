@@ -223,3 +223,77 @@ PetscErrorCode HylcPatternGenerate(HylcPattern p, HylcPatternType type, const Hy
   PetscCall(PetscLogEventEnd(HYLC_PatternGenerate, p, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+/*@C
+  HylcPatternSetRestFromGeometry - Sets the rest data to the current geometry, so that the rods are
+  stress free: rest lengths = edge lengths, rest curvatures = the averaged-frame material curvatures
+  (with the twists theta), rest twists = the current twists; the reference twists are recomputed from
+  the directors on the branch nearest their stored values. Collective.
+@*/
+PetscErrorCode HylcPatternSetRestFromGeometry(HylcPattern p)
+{
+  PetscReal *t;
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
+  PetscCheck(p->hasdata, PetscObjectComm((PetscObject)p), PETSC_ERR_ARG_WRONGSTATE, "Pattern has no data");
+  PetscCall(PetscMalloc1(3 * p->nv, &t));
+  for (PetscInt v = 0; v < p->nv; v++) {
+    const PetscInt w = p->next[v];
+    t[3 * v]         = p->X[3 * w] + p->shift[2 * v] * p->px - p->X[3 * v];
+    t[3 * v + 1]     = p->X[3 * w + 1] + p->shift[2 * v + 1] * p->py - p->X[3 * v + 1];
+    t[3 * v + 2]     = p->X[3 * w + 2] - p->X[3 * v + 2];
+    p->restLength[v] = HylcNormalize3(t + 3 * v);
+    PetscCheck(p->restLength[v] > 0, PetscObjectComm((PetscObject)p), PETSC_ERR_ARG_WRONG, "Edge leaving vertex %" PetscInt_FMT " has zero length", v);
+    HylcOrthonormalizeDirector(t + 3 * v, p->refD1 + 3 * v);
+  }
+  for (PetscInt v = 0; v < p->nv; v++) {
+    const PetscInt u = p->prev[v];
+    PetscReal      kb[3], d2e[3], d2f[3], m1e[3], m2e[3], m1f[3], m2f[3];
+    const PetscReal m = HylcReferenceTwist(t + 3 * u, p->refD1 + 3 * u, t + 3 * v, p->refD1 + 3 * v);
+    p->refTwist[v]    = m + 2 * PETSC_PI * round((p->refTwist[v] - m) / (2 * PETSC_PI)); /* the branch nearest the stored value */
+    p->restTwist[v] = p->refTwist[v] + p->theta[v] - p->theta[u];
+    HylcCurvatureBinormal(t + 3 * u, t + 3 * v, kb);
+    HylcCross3(t + 3 * u, p->refD1 + 3 * u, d2e);
+    HylcCross3(t + 3 * v, p->refD1 + 3 * v, d2f);
+    HylcMaterialFrame(p->refD1 + 3 * u, d2e, p->theta[u], m1e, m2e);
+    HylcMaterialFrame(p->refD1 + 3 * v, d2f, p->theta[v], m1f, m2f);
+    HylcMaterialCurvature(kb, m1e, m2e, m1f, m2f, p->restKappa + 2 * v);
+  }
+  PetscCall(PetscFree(t));
+  PetscCall(HylcPatternBuildLoops_Private(p)); /* loop rest lengths */
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPatternScaleRest - Multiplies the rest lengths by fl and the rest curvatures by fk (the tension of
+  Algorithm C1). Collective.
+@*/
+PetscErrorCode HylcPatternScaleRest(HylcPattern p, PetscReal fl, PetscReal fk)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
+  for (PetscInt v = 0; v < p->nv; v++) {
+    p->restLength[v] *= fl;
+    p->restKappa[2 * v] *= fk;
+    p->restKappa[2 * v + 1] *= fk;
+  }
+  PetscCall(HylcPatternBuildLoops_Private(p));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPatternRecentre - Moves the vertices so that their mean position is 0. Collective.
+@*/
+PetscErrorCode HylcPatternRecentre(HylcPattern p)
+{
+  PetscReal mean[3] = {0, 0, 0};
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
+  for (PetscInt v = 0; v < p->nv; v++)
+    for (int d = 0; d < 3; d++) mean[d] += p->X[3 * v + d] / p->nv;
+  for (PetscInt v = 0; v < p->nv; v++)
+    for (int d = 0; d < 3; d++) p->X[3 * v + d] -= mean[d];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -1,5 +1,6 @@
 /* HylcSampler: the MPI sampling job (include/hylc/sampler.h). */
 #include <hylc/sampler.h>
+#include <hylc/reference.h>
 #include <petsctime.h>
 
 #define TAG_RECORDS 7301
@@ -96,6 +97,30 @@ PetscErrorCode HylcSamplerSetFromOptions(HylcSampler S)
   PetscCall(HylcPatternGetRadius(S->pat, &r));
   PetscCall(HylcYarnModelDefault(&S->model));
   PetscCall(HylcYarnModelSetFromOptions(S->comm, NULL, &S->model));
+  {
+    /* the reference state (Algorithm C1): by default for generated patterns; files are taken as reference states */
+    const char *const   refmodes[] = {"auto", "compute", "none", "HylcSamplerReference", "", NULL};
+    PetscEnum           mode       = 0;
+    char                refout[PETSC_MAX_PATH_LEN] = "";
+    HylcPatternType     type;
+    PetscBool           isfile;
+    HylcReferenceParams rp;
+    PetscCall(HylcReferenceParamsDefault(&rp));
+    PetscCall(HylcReferenceParamsSetFromOptions(S->comm, &rp));
+    PetscOptionsBegin(S->comm, NULL, "Sampling job: reference state", "HylcSampler");
+    PetscCall(PetscOptionsEnum("-sampler_reference", "Reference state (Algorithm C1): auto (compute for generated patterns, not for files), compute, none", "HylcSampler", refmodes, mode, &mode, NULL));
+    PetscCall(PetscOptionsString("-reference_output", "Write the reference state as .pyp", "HylcSampler", refout, refout, sizeof(refout), NULL));
+    PetscOptionsEnd();
+    PetscCall(HylcPatternGetType(S->pat, &type));
+    PetscCall(PetscStrcmp(type, HYLCPATTERNFILE, &isfile));
+    if (mode == 1 || (mode == 0 && !isfile)) {
+      HylcPattern ref;
+      PetscCall(HylcReferenceStateCompute(S->pat, &S->model, &rp, S->rank ? NULL : PETSC_VIEWER_STDOUT_SELF, &ref));
+      PetscCall(HylcPatternDestroy(&S->pat));
+      S->pat = ref;
+    }
+    if (refout[0]) PetscCall(HylcPatternWrite(S->pat, refout));
+  }
   PetscOptionsBegin(S->comm, NULL, "Sampling job (Algorithm C4)", "HylcSampler");
   PetscCall(PetscOptionsString("-sampler_output", "HDF5 output file (the journal is <output>.journal)", "HylcSampler", S->output, S->output, sizeof(S->output), NULL));
   PetscCall(PetscOptionsBool("-sampler_resume", "Continue an interrupted run from its journal", "HylcSampler", S->resume, &S->resume, NULL));

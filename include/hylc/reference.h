@@ -1,0 +1,25 @@
+#pragma once
+/* The reference state of Algorithm C1 (method-spec §7): a stress-free relaxation (rest values reset to the
+   current geometry and relaxed until E < tol), tension (knits: rest lengths x 0.9, rest curvatures x 0.8;
+   wovens: rest curvatures x 0.9), the in-plane minimum of the energy over the periods (sx, sy) by
+   Nelder-Mead, and recentring. */
+#include <hylc/micro.h>
+
+typedef struct {
+  PetscReal etol;       /* stress-free: stop when the relaxed energy is below this (J); 1e-10 */
+  PetscInt  maxRounds;  /* stress-free: at most this many reset + relax rounds; 30 */
+  PetscInt  kind;       /* 0: auto (knit if every yarn runs along x), 1: knit, 2: woven */
+  PetscBool tension;    /* apply the tension factors */
+  PetscBool minimum;    /* find the in-plane minimum */
+  PetscReal lo, hi;     /* bounds of sx and sy for the minimum; -0.4, 0.2 */
+  PetscReal xtol;       /* Nelder-Mead: simplex size tolerance in strain; 1e-4 */
+  PetscInt  maxEvals;   /* Nelder-Mead: at most this many solves; 80 */
+} HylcReferenceParams;
+
+PETSC_EXTERN PetscErrorCode HylcReferenceParamsDefault(HylcReferenceParams *);
+/* Options (prefix -reference_): -reference_etol, -reference_max_rounds, -reference_kind auto|knit|woven,
+   -reference_tension, -reference_minimum, -reference_bounds lo,hi, -reference_xtol, -reference_max_evals. */
+PETSC_EXTERN PetscErrorCode HylcReferenceParamsSetFromOptions(MPI_Comm, HylcReferenceParams *);
+/* Computes the reference state of a pattern with the yarn model (each solve on PETSC_COMM_SELF; every rank
+   computes the same). Progress lines go to the viewer (may be NULL). Collective on the pattern's comm. */
+PETSC_EXTERN PetscErrorCode HylcReferenceStateCompute(HylcPattern, const HylcYarnModel *, const HylcReferenceParams *, PetscViewer, HylcPattern *);
