@@ -47,6 +47,7 @@ PETSC_EXTERN PetscErrorCode HylcMicroCreate(MPI_Comm, HylcMicro *);
 PETSC_EXTERN PetscErrorCode HylcMicroDestroy(HylcMicro *);
 PETSC_EXTERN PetscErrorCode HylcMicroSetPattern(HylcMicro, HylcPattern, const HylcYarnModel *);
 PETSC_EXTERN PetscErrorCode HylcMicroSetFromOptions(HylcMicro);
+PETSC_EXTERN PetscErrorCode HylcMicroSetUp(HylcMicro);
 PETSC_EXTERN PetscErrorCode HylcMicroSolve(HylcMicro, const PetscReal[6], HylcMicroResult *);
 PETSC_EXTERN PetscErrorCode HylcMicroGetPeriodic(HylcMicro, HylcPeriodic *);
 PETSC_EXTERN PetscErrorCode HylcMicroGetState(HylcMicro, PetscReal[]);

@@ -41,3 +41,5 @@ PETSC_EXTERN PetscErrorCode HylcPushErrorHandler(void);
    PetscFinalize() on one rank or MPI_Abort() on several (other ranks may wait in a collective).
    Programs write: ierr = Run(); return HylcMainFinalize(ierr); */
 PETSC_EXTERN int HylcMainFinalize(PetscErrorCode);
+/* Refuses options nothing has read (before any work). Collective. */
+PETSC_EXTERN PetscErrorCode HylcCheckOptionsUsed(MPI_Comm);

@@ -665,3 +665,20 @@ PetscErrorCode HylcMicroResultView(const HylcMicroResult *r, PetscViewer viewer)
   PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+/*@C
+  HylcMicroSetUp - Creates the SNES, its KSP and the factorization (reading their options) ahead of the
+  first solve, so that every option has been read once this returns. Not collective.
+@*/
+PetscErrorCode HylcMicroSetUp(HylcMicro M)
+{
+  const PetscReal z[6] = {0, 0, 0, 0, 0, 0};
+
+  PetscFunctionBegin;
+  PetscCheck(M->P, M->comm, PETSC_ERR_ARG_WRONGSTATE, "Call HylcMicroSetPattern() first");
+  if (M->snes) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(HylcPeriodicSetStrain(M->P, z));
+  PetscCall(HylcPeriodicSetUp(M->P));
+  PetscCall(MicroSetUpSolver(M));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -2,6 +2,8 @@
 #include <hylc/sampler.h>
 #include <hylc/reference.h>
 #include <petsctime.h>
+#include <unistd.h>
+#include <string.h>
 
 #define TAG_RECORDS 7301
 #define TAG_DONE    7302
@@ -21,6 +23,9 @@ struct _n_HylcSampler {
   PetscInt      batch;
   PetscReal     progress; /* seconds between progress lines */
   long          nsamples;
+  PetscInt            refmode; /* 0 auto, 1 compute, 2 none */
+  HylcReferenceParams refpar;
+  char                refout[PETSC_MAX_PATH_LEN];
 };
 
 PetscErrorCode HylcSamplerCreate(MPI_Comm comm, HylcSampler *s)
@@ -98,28 +103,15 @@ PetscErrorCode HylcSamplerSetFromOptions(HylcSampler S)
   PetscCall(HylcYarnModelDefault(&S->model));
   PetscCall(HylcYarnModelSetFromOptions(S->comm, NULL, &S->model));
   {
-    /* the reference state (Algorithm C1): by default for generated patterns; files are taken as reference states */
-    const char *const   refmodes[] = {"auto", "compute", "none", "HylcSamplerReference", "", NULL};
-    PetscEnum           mode       = 0;
-    char                refout[PETSC_MAX_PATH_LEN] = "";
-    HylcPatternType     type;
-    PetscBool           isfile;
-    HylcReferenceParams rp;
-    PetscCall(HylcReferenceParamsDefault(&rp));
-    PetscCall(HylcReferenceParamsSetFromOptions(S->comm, &rp));
+    const char *const refmodes[] = {"auto", "compute", "none", "HylcSamplerReference", "", NULL};
+    PetscEnum         mode       = (PetscEnum)S->refmode;
+    PetscCall(HylcReferenceParamsDefault(&S->refpar));
+    PetscCall(HylcReferenceParamsSetFromOptions(S->comm, &S->refpar));
     PetscOptionsBegin(S->comm, NULL, "Sampling job: reference state", "HylcSampler");
     PetscCall(PetscOptionsEnum("-sampler_reference", "Reference state (Algorithm C1): auto (compute for generated patterns, not for files), compute, none", "HylcSampler", refmodes, mode, &mode, NULL));
-    PetscCall(PetscOptionsString("-reference_output", "Write the reference state as .pyp", "HylcSampler", refout, refout, sizeof(refout), NULL));
+    PetscCall(PetscOptionsString("-reference_output", "Write the reference state as .pyp", "HylcSampler", S->refout, S->refout, sizeof(S->refout), NULL));
     PetscOptionsEnd();
-    PetscCall(HylcPatternGetType(S->pat, &type));
-    PetscCall(PetscStrcmp(type, HYLCPATTERNFILE, &isfile));
-    if (mode == 1 || (mode == 0 && !isfile)) {
-      HylcPattern ref;
-      PetscCall(HylcReferenceStateCompute(S->pat, &S->model, &rp, S->rank ? NULL : PETSC_VIEWER_STDOUT_SELF, &ref));
-      PetscCall(HylcPatternDestroy(&S->pat));
-      S->pat = ref;
-    }
-    if (refout[0]) PetscCall(HylcPatternWrite(S->pat, refout));
+    S->refmode = (PetscInt)mode;
   }
   PetscOptionsBegin(S->comm, NULL, "Sampling job (Algorithm C4)", "HylcSampler");
   PetscCall(PetscOptionsString("-sampler_output", "HDF5 output file (the journal is <output>.journal)", "HylcSampler", S->output, S->output, sizeof(S->output), NULL));
@@ -175,14 +167,45 @@ PetscErrorCode HylcSamplerSetFromOptions(HylcSampler S)
   PetscCall(HylcMicroCreate(PETSC_COMM_SELF, &S->micro));
   PetscCall(HylcMicroSetPattern(S->micro, S->pat, &S->model));
   PetscCall(HylcMicroSetFromOptions(S->micro));
+  PetscCall(HylcMicroSetUp(S->micro));
   S->nsamples = HylcPlanSize(&S->plan);
+  PetscCheck(S->nsamples > 0, S->comm, PETSC_ERR_USER_INPUT, "The sampling plan is empty (-sampler_terms)");
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcSamplerSetUp - Refuses unknown options and an unwritable output (before any work), then computes
+  the reference state when asked for (Algorithm C1). Collective.
+@*/
 PetscErrorCode HylcSamplerSetUp(HylcSampler S)
 {
+  HylcPatternType type;
+  PetscBool       isfile;
+  int             ok = 1;
+
   PetscFunctionBegin;
   PetscCheck(S->micro, S->comm, PETSC_ERR_ARG_WRONGSTATE, "Call HylcSamplerSetFromOptions() first");
+  PetscCall(HylcCheckOptionsUsed(S->comm));
+  if (!S->rank) { /* the output's directory must be writable */
+    char dir[PETSC_MAX_PATH_LEN], *slash;
+    PetscCall(PetscStrncpy(dir, S->output, sizeof(dir)));
+    slash = strrchr(dir, '/');
+    if (slash) *slash = 0;
+    ok = access(slash ? (dir[0] ? dir : "/") : ".", W_OK) == 0;
+  }
+  PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, S->comm));
+  PetscCheck(ok, S->comm, PETSC_ERR_FILE_OPEN, "Cannot write the output -sampler_output %s: its directory is not writable", S->output);
+  PetscCall(HylcPatternGetType(S->pat, &type));
+  PetscCall(PetscStrcmp(type, HYLCPATTERNFILE, &isfile));
+  if (S->refmode == 1 || (S->refmode == 0 && !isfile)) {
+    HylcPattern ref;
+    PetscCall(HylcReferenceStateCompute(S->pat, &S->model, &S->refpar, S->rank ? NULL : PETSC_VIEWER_STDOUT_SELF, &ref));
+    PetscCall(HylcPatternDestroy(&S->pat));
+    S->pat = ref;
+    PetscCall(HylcMicroSetPattern(S->micro, S->pat, &S->model));
+    PetscCall(HylcMicroSetFromOptions(S->micro));
+  }
+  if (S->refout[0]) PetscCall(HylcPatternWrite(S->pat, S->refout));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

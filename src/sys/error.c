@@ -56,3 +56,23 @@ int HylcMainFinalize(PetscErrorCode ierr)
   }
   return (int)PetscFinalize();
 }
+
+/*@C
+  HylcCheckOptionsUsed - Refuses options that nothing has read (misspelt or not for this program), before
+  any work is done. Collective.
+@*/
+PetscErrorCode HylcCheckOptionsUsed(MPI_Comm comm)
+{
+  PetscInt n = 0;
+  char   **names = NULL, **values = NULL, list[1024] = "";
+
+  PetscFunctionBegin;
+  PetscCall(PetscOptionsLeftGet(NULL, &n, &names, &values));
+  for (PetscInt i = 0; i < n; i++) {
+    PetscCall(PetscStrlcat(list, " -", sizeof(list)));
+    PetscCall(PetscStrlcat(list, names[i], sizeof(list)));
+  }
+  PetscCall(PetscOptionsLeftRestore(NULL, &n, &names, &values));
+  PetscCheck(!list[0], comm, PETSC_ERR_USER_INPUT, "Unknown option(s):%s (misspelt, or not for this program; -help lists the options)", list);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -16,6 +16,8 @@ grep -q 'wrote one.h5: 20 samples' one.txt || { cat one.txt; die "1-rank summary
 grep -q '^\[sampler\] .*samples/s, ETA' one.txt || { cat one.txt; die "no progress line"; }
 $MPIEXEC -n 2 $tool "${common[@]}" -sampler_output two.h5 >two.txt 2>&1 || { cat two.txt; die "2-rank run failed"; }
 [ "$(data one.h5)" = "$(data two.h5)" ] || die "1 and 2 ranks give different data"
+$MPIEXEC -n 3 $tool "${common[@]}" -sampler_output three.h5 >three.txt 2>&1 || { cat three.txt; die "3-rank run failed"; }
+[ "$(data one.h5)" = "$(data three.h5)" ] || die "1 and 3 ranks give different data"
 h5dump -d /samples/status one.h5 | grep -q '(0): 0' || die "status dataset"
 
 # killed with SIGKILL, then resumed: the same data, finished samples not recomputed
@@ -48,8 +50,21 @@ $tool "${common[@]}" -sampler_reference none -sampler_terms sx -micro_snes_max_i
 grep -q 'wrote cap.h5: 5 samples' cap.txt || { cat cap.txt; die "capped samples dropped"; }
 h5dump -d /samples/status cap.h5 | grep -q '1, 1\|(0): 1' || { h5dump -d /samples/status cap.h5; die "iteration_cap status not recorded"; }
 
-# bad options
-$tool -pattern_type plain -sampler_terms sx,shear >bad.txt 2>&1 && die "unknown term accepted"
-grep -q "unknown term 'shear'" bad.txt || { cat bad.txt; die "unclear message for a bad term"; }
+# bad input is refused before any work (no journal is created), with a clear message
+refuse() { # message-regex args...
+  local re=$1; shift
+  rm -f refused.h5.journal
+  $tool -pattern_type plain -sampler_output refused.h5 "$@" >bad.txt 2>&1 && die "accepted: $*"
+  grep -Eq -- "$re" bad.txt || { cat bad.txt; die "unclear message for: $*"; }
+  [ ! -e refused.h5.journal ] || die "work was started for: $*"
+}
+refuse "unknown term 'shear'" -sampler_terms sx,shear
+refuse "sampler_n1 and -sampler_n2 must be in 1..1024" -sampler_n1 0
+refuse "sampler_n1 and -sampler_n2 must be in 1..1024" -sampler_n2 -3
+refuse "needs two values min,max with min <= max" -sampler_range_sa 0.5,-0.5
+refuse "Cannot open pattern file 'missing.pyp'" -pattern_type file -pattern_file missing.pyp
+refuse "Cannot write the output" -sampler_output /nonexistent-dir/out.h5
+refuse "Unknown option\\(s\\): -sampler_outptu" -sampler_outptu x.h5
+refuse "sampler_batch must be at least 1" -sampler_batch 0
 echo "resumed after $done_before of 80 finished samples"
 exit 0
