@@ -18,6 +18,9 @@ typedef struct {
   int    terms;                                          /* bit t set: term t is sampled (all: (1 << 15) - 1) */
 } HylcPlan;
 
+/* the name of term t: zero, sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11,
+   sy-II00, sy-II11 (used by -sampler_terms and in the HDF5 file) */
+const char *HylcPlanTermName(int t);
 /* the two coordinates of 2D term t (6..14) */
 void HylcPlanPair(int t, int *ci, int *cj);
 /* position of coordinate c in the 6-vector strain */

@@ -3,6 +3,10 @@
 #include <math.h>
 #include <string.h>
 
+static const char *const TermNames[HYLC_PLAN_NTERM] = {"zero", "sx", "sa", "sy", "II00", "II11", "sx-sa", "sx-sy", "sx-II00", "sx-II11", "sa-sy", "sa-II00", "sa-II11", "sy-II00", "sy-II11"};
+
+const char *HylcPlanTermName(int t) { return t >= 0 && t < HYLC_PLAN_NTERM ? TermNames[t] : "unknown"; }
+
 static const int PairI[9] = {0, 0, 0, 0, 1, 1, 1, 2, 2};
 static const int PairJ[9] = {1, 2, 3, 4, 2, 3, 4, 3, 4};
 

@@ -8,7 +8,6 @@
 #define TAG_RECORDS 7301
 #define TAG_DONE    7302
 
-static const char *const TermNames[HYLC_PLAN_NTERM] = {"zero", "sx", "sa", "sy", "II00", "II11", "sx-sa", "sx-sy", "sx-II00", "sx-II11", "sa-sy", "sa-II00", "sa-II11", "sy-II00", "sy-II11"};
 static const char *const Families[]                 = {"woven", "stockinette", "honeycomb", "rib", "HylcPlanFamily", "", NULL};
 
 struct _n_HylcSampler {
@@ -152,7 +151,7 @@ PetscErrorCode HylcSamplerSetFromOptions(HylcSampler S)
         int found = -1;
         for (int t = 0; t < HYLC_PLAN_NTERM; t++) {
           PetscBool eq;
-          PetscCall(PetscStrcmp(tok, TermNames[t], &eq));
+          PetscCall(PetscStrcmp(tok, HylcPlanTermName(t), &eq));
           if (eq) found = t;
         }
         PetscCheck(found >= 0, S->comm, PETSC_ERR_USER_INPUT, "-sampler_terms: unknown term '%s' (use zero, sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11 or all)", tok);

@@ -520,7 +520,6 @@ static PetscErrorCode H5DatasetInt(hid_t loc, const char name[], PetscInt n, Pet
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static const char *const TermNames[HYLC_PLAN_NTERM] = {"zero", "sx", "sa", "sy", "II00", "II11", "sx,sa", "sx,sy", "sx,II00", "sx,II11", "sa,sy", "sa,II00", "sa,II11", "sy,II00", "sy,II11"};
 
 static PetscErrorCode WriteSamplesGroup(hid_t file, long N, const HylcSampleRecord recs[], const unsigned char done[])
 {
@@ -554,7 +553,11 @@ static PetscErrorCode WriteSamplesGroup(hid_t file, long N, const HylcSampleReco
   }
   HylcCallHDF5Id(g, H5Gcreate2(file, "samples", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
   PetscCall(H5AttrStrings(g, "status_names", nstat, (const char *const *)HylcMicroStatuses));
-  PetscCall(H5AttrStrings(g, "term_names", HYLC_PLAN_NTERM, TermNames));
+  {
+    const char *names[HYLC_PLAN_NTERM];
+    for (int t = 0; t < HYLC_PLAN_NTERM; t++) names[t] = HylcPlanTermName(t);
+    PetscCall(H5AttrStrings(g, "term_names", HYLC_PLAN_NTERM, names));
+  }
   PetscCall(H5AttrString(g, "description", "One row per sample of the plan, in plan order (row k = sample k). Samples not computed (interrupted run) have status -1, term/iterations/retries -1 and NaN values."));
   PetscCall(H5Dataset(g, "strain", PETSC_FALSE, (hsize_t)N, 6, strain, "1 for sx, sa, sy; 1/m for II00, II01, II11", "macroscopic strain z = (sx, sa, sy, II00, II01, II11): in-plane stretch/shear and the second fundamental form"));
   PetscCall(H5Dataset(g, "psi", PETSC_FALSE, (hsize_t)N, 0, psi, "J/m^2", "area energy density psi = E / A of the equilibrium (A: reference tile area)"));
