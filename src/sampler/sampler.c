@@ -25,6 +25,8 @@ struct _n_HylcSampler {
   PetscInt            refmode; /* 0 auto, 1 compute, 2 none */
   HylcReferenceParams refpar;
   char                refout[PETSC_MAX_PATH_LEN];
+  char                rawdir[PETSC_MAX_PATH_LEN]; /* export of the paper's raw layout (data.txt, info.txt) */
+  PetscReal           density;                    /* volumetric yarn density for info.txt (kg/m^3) */
 };
 
 PetscErrorCode HylcSamplerCreate(MPI_Comm comm, HylcSampler *s)
@@ -40,6 +42,7 @@ PetscErrorCode HylcSamplerCreate(MPI_Comm comm, HylcSampler *s)
   PetscCall(PetscStrncpy(S->output, "samples.h5", sizeof(S->output)));
   S->batch    = 4;
   S->progress = 5;
+  S->density  = 1200;
   *s          = S;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -136,6 +139,8 @@ PetscErrorCode HylcSamplerSetFromOptions(HylcSampler S)
   PetscCall(PetscOptionsString("-sampler_terms", "Terms to sample: all, or a comma list of zero, sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11", "HylcSampler", terms, terms, sizeof(terms), NULL));
   PetscCall(PetscOptionsInt("-sampler_batch", "Samples per batch (unit of work of a rank)", "HylcSampler", S->batch, &S->batch, NULL));
   PetscCall(PetscOptionsReal("-sampler_progress", "Seconds between progress lines", "HylcSampler", S->progress, &S->progress, NULL));
+  PetscCall(PetscOptionsString("-sampler_export_raw", "Also write the paper's raw layout into this directory: data.txt (rows sx sa sy II00 II01 II11 Psi in the order of C4) and info.txt (area, area density)", "HylcSampler", S->rawdir, S->rawdir, sizeof(S->rawdir), NULL));
+  PetscCall(PetscOptionsReal("-sampler_density", "Volumetric yarn density for the area density of info.txt (kg/m^3)", "HylcSampler", S->density, &S->density, NULL));
   PetscOptionsEnd();
   PetscCheck(n1 >= 1 && n1 <= 1024 && n2 >= 1 && n2 <= 1024, S->comm, PETSC_ERR_USER_INPUT, "-sampler_n1 and -sampler_n2 must be in 1..1024");
   PetscCheck(S->batch >= 1, S->comm, PETSC_ERR_USER_INPUT, "-sampler_batch must be at least 1");
@@ -292,6 +297,38 @@ static PetscErrorCode Drain(HylcSampler S, HylcJournal J, Progress *pg, PetscInt
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* the raw layout of the paper's fitting scripts: data.txt rows "sx sa sy II00 II01 II11 Psi" in the order of
+   C4 (the 1D terms, then the 2D terms; the zero sample is not a row), info.txt with the tile area (m^2)
+   and the area density (kg/m^2) */
+static PetscErrorCode ExportRaw(HylcSampler S, const HylcSampleRecord *all, const unsigned char *done)
+{
+  char      path[PETSC_MAX_PATH_LEN + 16];
+  FILE     *fp;
+  PetscReal px, py, rhoA;
+  long      rows = 0, skipped = 0;
+
+  PetscFunctionBegin;
+  PetscCall(PetscSNPrintf(path, sizeof(path), "%s/data.txt", S->rawdir));
+  fp = fopen(path, "w");
+  PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot write %s (-sampler_export_raw)", path);
+  for (long k = 0; k < S->nsamples; k++) {
+    if (!done[k] || all[k].term == 0) continue;
+    if (all[k].status != HYLC_MICRO_CONVERGED) skipped++;
+    fprintf(fp, "%.17g %.17g %.17g %.17g %.17g %.17g %.17g\n", all[k].z[0], all[k].z[1], all[k].z[2], all[k].z[3], all[k].z[4], all[k].z[5], all[k].psi);
+    rows++;
+  }
+  PetscCheck(fclose(fp) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot write %s", path);
+  PetscCall(HylcPatternGetPeriods(S->pat, &px, &py));
+  PetscCall(HylcPatternGetAreaDensity(S->pat, S->density, &rhoA));
+  PetscCall(PetscSNPrintf(path, sizeof(path), "%s/info.txt", S->rawdir));
+  fp = fopen(path, "w");
+  PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot write %s (-sampler_export_raw)", path);
+  fprintf(fp, "area %.17g\ndensity %.17g\n", (double)(px * py), (double)rhoA);
+  PetscCheck(fclose(fp) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot write %s", path);
+  PetscCall(PetscPrintf(PETSC_COMM_SELF, "[sampler] wrote %s/data.txt (%ld rows%s) and info.txt\n", S->rawdir, rows, skipped ? ", some not converged: see /samples/status" : ""));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /*@C
   HylcSamplerRun - Solves every sample of the plan not yet in the journal, gathers the records on rank 0
   and writes the HDF5 output. Collective.
@@ -366,6 +403,7 @@ PetscErrorCode HylcSamplerRun(HylcSampler S)
     PetscCall(HylcSamplesWriteHDF5(S->output, S->nsamples, all, jd, S->pat, &S->model, opts));
     PetscCall(PetscFree(opts));
     PetscCall(PetscPrintf(PETSC_COMM_SELF, "[sampler] wrote %s: %ld samples, %ld not converged\n", S->output, (long)nd, pg.failed));
+    if (S->rawdir[0]) PetscCall(ExportRaw(S, all, jd));
     PetscCall(HylcJournalClose(&J));
   }
   PetscCall(PetscFree(recs));

@@ -11,7 +11,11 @@ common=(-pattern_type plain -yarn_kc 50 -sampler_terms zero,sx,sa,sx-sa -sampler
 # 1 + 5 + 5 + 9 = 20 samples
 data() { h5dump -d /samples/psi -d /samples/strain -d /samples/status -d /samples/iterations "$1" | grep -v -e HDF5 -e '^}' ; }
 
-$tool "${common[@]}" -sampler_output one.h5 >one.txt 2>&1 || { cat one.txt; die "1-rank run failed"; }
+mkdir -p raw
+$tool "${common[@]}" -sampler_output one.h5 -sampler_export_raw raw >one.txt 2>&1 || { cat one.txt; die "1-rank run failed"; }
+[ "$(wc -l <raw/data.txt)" = 19 ] || die "data.txt should have 19 rows (the zero sample is not a row): $(wc -l <raw/data.txt)"
+[ "$(awk 'NF != 7' raw/data.txt | wc -l)" = 0 ] || die "data.txt rows need 7 columns"
+grep -q '^area [0-9.e+-]*$' raw/info.txt && grep -q '^density [0-9.e+-]*$' raw/info.txt || { cat raw/info.txt; die "info.txt"; }
 grep -q 'wrote one.h5: 20 samples' one.txt || { cat one.txt; die "1-rank summary"; }
 grep -q '^\[sampler\] .*samples/s, ETA' one.txt || { cat one.txt; die "no progress line"; }
 $MPIEXEC -n 2 $tool "${common[@]}" -sampler_output two.h5 >two.txt 2>&1 || { cat two.txt; die "2-rank run failed"; }
