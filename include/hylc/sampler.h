@@ -1,7 +1,7 @@
 #pragma once
 /* HylcSampler: the sampling job of Algorithm C4 over MPI (the main program, hylc-sample).
-   Every rank owns batches of the plan's samples (batch b belongs to rank b mod size) and solves them with
-   one HylcMicro on PETSC_COMM_SELF, each from u~ = 0, so results do not depend on the number of ranks.
+   Every rank takes batches of the plan's samples from a shared counter (dynamic scheduling by MPI
+   one-sided fetch-and-add) and solves them with one HylcMicro on PETSC_COMM_SELF, each from u~ = 0, so results do not depend on the number of ranks.
    Rank 0 gathers the records as they arrive, appends them to a journal (survives SIGKILL; -sampler_resume
    continues without recomputing finished samples), reports progress, and writes the HDF5 file at the end
    (docs/output-format.md). A sample that fails is recorded with its status, never dropped. */

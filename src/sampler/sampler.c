@@ -40,7 +40,7 @@ PetscErrorCode HylcSamplerCreate(MPI_Comm comm, HylcSampler *s)
   PetscCallMPI(MPI_Comm_rank(comm, &S->rank));
   PetscCallMPI(MPI_Comm_size(comm, &S->size));
   PetscCall(PetscStrncpy(S->output, "samples.h5", sizeof(S->output)));
-  S->batch    = 4;
+  S->batch    = 1;
   S->progress = 5;
   S->density  = 1200;
   *s          = S;
@@ -86,7 +86,7 @@ static PetscErrorCode RangeOption(PetscOptionItems *PetscOptionsObject, const ch
 . -sampler_n1 <150>, -sampler_n2 <50> - samples per 1D term, per axis of a 2D term
 . -sampler_terms <all>            - comma list of terms: zero, sx, sa, sy, II00, II11, sx-sa, sx-sy,
                                     sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11, or all
-. -sampler_batch <4>              - samples per batch (the unit of work of a rank)
+. -sampler_batch <1>              - samples per batch (the unit of work handed to a rank)
 - -sampler_progress <5>           - seconds between progress lines
 @*/
 PetscErrorCode HylcSamplerSetFromOptions(HylcSampler S)
@@ -368,9 +368,19 @@ PetscErrorCode HylcSamplerRun(HylcSampler S)
   PetscCall(PetscTime(&pg.t0));
   pg.last = pg.t0;
   PetscCall(PetscMalloc1(S->batch, &recs));
-  /* my batches: b = rank, rank + size, ... */
+  /* dynamic scheduling: the next batch comes from a shared counter on rank 0 (MPI one-sided atomic
+     fetch-and-add, no involvement of rank 0); which rank solves a sample does not change its result */
   const long nb = (S->nsamples + S->batch - 1) / S->batch;
-  for (long b = S->rank; b < nb; b += S->size) {
+  long      *counter = NULL, one = 1, b;
+  MPI_Win    win;
+  PetscCallMPI(MPI_Win_allocate(S->rank ? 0 : (MPI_Aint)sizeof(long), sizeof(long), MPI_INFO_NULL, S->comm, &counter, &win));
+  if (!S->rank) *counter = 0;
+  PetscCallMPI(MPI_Barrier(S->comm));
+  PetscCallMPI(MPI_Win_lock_all(0, win));
+  for (;;) {
+    PetscCallMPI(MPI_Fetch_and_op(&one, &b, MPI_LONG, 0, 0, MPI_SUM, win));
+    PetscCallMPI(MPI_Win_flush(0, win));
+    if (b >= nb) break;
     PetscInt n = 0;
     for (long k = b * S->batch; k < PetscMin((b + 1) * S->batch, S->nsamples); k++) {
       if (done[k]) continue;
@@ -386,9 +396,10 @@ PetscErrorCode HylcSamplerRun(HylcSampler S)
       PetscCall(Report(S, &pg, PETSC_FALSE));
     }
   }
+  PetscCallMPI(MPI_Win_unlock_all(win));
   if (S->rank) {
-    int one = 1;
-    PetscCallMPI(MPI_Send(&one, 1, MPI_INT, 0, TAG_DONE, S->comm));
+    int fin = 1;
+    PetscCallMPI(MPI_Send(&fin, 1, MPI_INT, 0, TAG_DONE, S->comm));
   } else {
     while (finished < S->size - 1) PetscCall(Drain(S, J, &pg, &finished, PETSC_TRUE));
     PetscCall(Report(S, &pg, PETSC_TRUE));
@@ -409,6 +420,7 @@ PetscErrorCode HylcSamplerRun(HylcSampler S)
   PetscCall(PetscFree(recs));
   PetscCall(PetscFree(done));
   PetscCallMPI(MPI_Barrier(S->comm));
+  PetscCallMPI(MPI_Win_free(&win));
   PetscCall(PetscLogEventEnd(HYLC_SamplerRun, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

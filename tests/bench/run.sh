@@ -12,4 +12,9 @@ for exe in "$build"/bench/*; do
   echo "== $(basename "$exe")"
   "$exe" || st=1
 done
+for script in tests/bench/bench_*.sh; do
+  [ -f "$script" ] || continue
+  echo "== $(basename "$script" .sh)"
+  bash "$script" || st=1
+done
 exit $st
