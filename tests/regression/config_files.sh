@@ -22,7 +22,7 @@ check() { # name file
   grep -Eq '^ *vertices: [0-9]+$' "$out" || { cat "$out"; echo "$f: no vertices line"; return 1; }
   grep -Eq "^ *file: \.\./shared/refdata/patterns/hylc2020/$name\.pyp$" "$out" || { cat "$out"; echo "$f: does not load $name.pyp"; return 1; }
   local other
-  other=$(grep -v '^hylc: warning: option -yarn_[A-Za-z]* [^ ]* was not used' "$err")
+  other=$(grep -v -e '^hylc: warning: option -yarn_[A-Za-z]* [^ ]* was not used' -e '^hylc: warning: option -sampler_family \(woven\|stockinette\|honeycomb\|rib\) was not used' "$err")
   [ -z "$other" ] || { echo "$f: unexpected output on stderr:"; echo "$other"; return 1; }
   local names
   names=$(sed -n 's/^hylc: warning: option -\(yarn_[A-Za-z]*\) .*/\1/p' "$err" | sort)
@@ -45,7 +45,7 @@ done
 # no other config files that this test does not know about
 for f in config/*.yaml; do
   n=$(basename "$f" .yaml)
-  [ "$n" = demo ] && continue # a generated pattern, run by tests/regression/demo_schema.sh
+  case $n in demo | generated-*) continue ;; esac # generated patterns: tests/regression/demo_schema.sh and generated_configs below
   [[ " $patterns " == *" $n "* ]] || die "$f is not checked by this test"
 done
 
@@ -53,4 +53,11 @@ done
 sed 's/^yarn_kc:/yarn_ck:/' config/satin.yaml >"$HYLC_TMP/typo.yaml"
 check satin "$HYLC_TMP/typo.yaml" >"$HYLC_TMP/typo.log" 2>&1 && { cat "$HYLC_TMP/typo.log"; die "a misspelt key in a config was not caught"; }
 grep -q 'yarn_ck' "$HYLC_TMP/typo.log" || { cat "$HYLC_TMP/typo.log"; die "the misspelt key is not named"; }
+# the generated-pattern configs load and generate (hylc-pattern reads the pattern options; sampler_family is for hylc-sample)
+for f in config/generated-*.yaml; do
+  $tool -options_file "$f" >"$HYLC_TMP/gen.out" 2>"$HYLC_TMP/gen.err" || { cat "$HYLC_TMP/gen.out" "$HYLC_TMP/gen.err"; die "$f does not generate"; }
+  grep -Eq '^ *vertices: [0-9]+$' "$HYLC_TMP/gen.out" || die "$f: no vertices line"
+  other=$(grep -v '^hylc: warning: option -sampler_family [a-z]* was not used' "$HYLC_TMP/gen.err")
+  [ -z "$other" ] || { echo "$other"; die "$f: unexpected output on stderr"; }
+done
 exit 0
