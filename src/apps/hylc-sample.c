@@ -9,12 +9,16 @@ static const char help[] = "hylc-sample: the sampling job of Algorithm C4 -- mic
 static PetscErrorCode Run(void)
 {
   HylcSampler S;
+  PetscBool   help_only;
 
   PetscFunctionBeginUser;
   PetscCall(HylcSamplerCreate(PETSC_COMM_WORLD, &S));
   PetscCall(HylcSamplerSetFromOptions(S));
-  PetscCall(HylcSamplerSetUp(S));
-  PetscCall(HylcSamplerRun(S));
+  PetscCall(PetscOptionsHasHelp(NULL, &help_only));
+  if (!help_only) { /* -help: every option has been listed; do no work */
+    PetscCall(HylcSamplerSetUp(S));
+    PetscCall(HylcSamplerRun(S));
+  }
   PetscCall(HylcSamplerDestroy(&S));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

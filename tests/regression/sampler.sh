@@ -70,5 +70,12 @@ refuse "Cannot open pattern file 'missing.pyp'" -pattern_type file -pattern_file
 refuse "Cannot write the output" -sampler_output /nonexistent-dir/out.h5
 refuse "Unknown option\\(s\\): -sampler_outptu" -sampler_outptu x.h5
 refuse "sampler_batch must be at least 1" -sampler_batch 0
+# -help documents every option of the job and does no work
+rm -f samples.h5 samples.h5.journal
+$tool -pattern_type plain -help >help.txt 2>&1 || { tail help.txt; die "-help failed"; }
+for opt in -sampler_output -sampler_resume -sampler_terms -sampler_n1 -sampler_n2 -sampler_family -sampler_range_sx -sampler_batch -sampler_progress -sampler_export_raw -sampler_reference -reference_output -reference_etol -micro_rtol -micro_snes_max_it -periodic_slide -yarn_kc -pattern_file; do
+  grep -q -- "$opt" help.txt || die "-help does not document $opt"
+done
+[ ! -e samples.h5.journal ] || die "-help started the job"
 echo "resumed after $done_before of 80 finished samples"
 exit 0
