@@ -59,7 +59,7 @@ struct _n_HylcPeriodic {
   PetscReal    pairMargin;
   PetscReal   *pw;                       /* pair weights */
   /* COO */
-  PetscInt     ncoo, capcoo, *cooi, *cooj; /* element-entry values coov and where they go in the CSR values (cooi) */
+  PetscInt     ncoo, capcoo, *coopos; /* element-entry values coov and where each goes in the CSR values */
   PetscScalar *coov;
   PetscInt    *rowptr, *colind, nnz;      /* the CSR structure of H_y: 4x4 blocks of coupled vertices */
   PetscInt     coonpairs, *coopairs; /* the pairs of the current COO structure, a superset of the touching ones */
@@ -115,7 +115,7 @@ static PetscErrorCode PeriodicReset(HylcPeriodic P)
   PetscCall(PetscFree2(P->pairs, P->pw));
   PetscCall(PetscFree2(P->cpairs, P->cw));
   P->ncand = P->capcand = 0;
-  PetscCall(PetscFree3(P->cooi, P->cooj, P->coov));
+  PetscCall(PetscFree2(P->coopos, P->coov));
   PetscCall(PetscFree2(P->rowptr, P->colind));
   PetscCall(PetscFree2(P->coopairs, P->coopw));
   P->nfv = P->capfv = P->nfe = P->capfe = P->nbe = P->capbe = P->npairs = P->cappairs = P->ncoo = P->capcoo = P->coonpairs = 0;
@@ -882,9 +882,9 @@ static PetscErrorCode SetCOO(HylcPeriodic P, Mat H)
   P->coonpairs = P->ncand;
   const PetscInt nent = P->nfe * 36 + P->nbe * 121 + P->coonpairs * 144, nel = NumStructElements(P);
   if (nent > P->capcoo) {
-    PetscCall(PetscFree3(P->cooi, P->cooj, P->coov));
+    PetscCall(PetscFree2(P->coopos, P->coov));
     P->capcoo = nent + nent / 4;
-    PetscCall(PetscMalloc3(P->capcoo, &P->cooi, P->capcoo, &P->cooj, P->capcoo, &P->coov));
+    PetscCall(PetscMalloc2(P->capcoo, &P->coopos, P->capcoo, &P->coov));
   }
   /* vertex adjacency: an upper bound of the neighbours per vertex, then the sorted unique lists */
   PetscCall(PetscCalloc2(N + 1, &deg, N + 1, &start));
@@ -937,7 +937,7 @@ static PetscErrorCode SetCOO(HylcPeriodic P, Mat H)
       P->rowptr[row + 1] = c;
     }
   P->nnz = nnz;
-  /* where each element entry goes in the CSR values (cooi); cooj keeps its column */
+  /* where each element entry goes in the CSR values */
   for (PetscInt e = 0; e < nel; e++) {
     StructElementDofs(P, e, idx, &n);
     for (PetscInt p = 0; p < n; p++) {
@@ -946,8 +946,7 @@ static PetscErrorCode SetCOO(HylcPeriodic P, Mat H)
         PetscInt loc;
         PetscCall(PetscFindInt(idx[q] / 4, deg[a], nbr + start[a], &loc));
         const unsigned bits = (mask[start[a] + loc] >> (4 * i)) & 0xFu, j = (unsigned)(idx[q] % 4);
-        P->cooi[k] = boff[4 * (start[a] + loc) + i] + __builtin_popcount(bits & ((1u << j) - 1u));
-        P->cooj[k] = idx[q];
+        P->coopos[k] = boff[4 * (start[a] + loc) + i] + __builtin_popcount(bits & ((1u << j) - 1u));
       }
     }
   }
@@ -1072,7 +1071,7 @@ PetscErrorCode HylcPeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts[4]
     PetscScalar *v;
     PetscCall(MatSeqAIJGetArray(H, &v));
     PetscCall(PetscArrayzero(v, P->nnz));
-    for (PetscInt q = 0; q < P->ncoo; q++) v[P->cooi[q]] += P->coov[q];
+    for (PetscInt q = 0; q < P->ncoo; q++) v[P->coopos[q]] += P->coov[q];
     PetscCall(MatSeqAIJRestoreArray(H, &v));
     PetscCall(PetscTime(&tc1));
     P->tAssemble += tc1 - tc0;
