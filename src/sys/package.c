@@ -9,6 +9,8 @@ PetscLogEvent HYLC_PeriodicSetUp, HYLC_PeriodicEvaluate, HYLC_MicroSolve, HYLC_S
 const char *HylcDefaultOrdering(void) { return MATORDERINGMETISND; }
 PetscClassId  HYLC_MIDSURFACE_CLASSID;
 PetscLogEvent HYLC_MacroSetUp, HYLC_MacroPoisson, HYLC_MacroEvaluate;
+PetscClassId  HYLC_MATERIAL_CLASSID, HYLC_FIT_CLASSID;
+PetscLogEvent HYLC_MaterialLoad, HYLC_MaterialWrite, HYLC_FitRun, HYLC_FitTerm, HYLC_FitMLS, HYLC_FitMonotone;
 
 PETSC_INTERN PetscErrorCode HylcMetisRegister(void);
 
@@ -43,6 +45,14 @@ PetscErrorCode HylcInitializePackage(void)
   PetscCall(PetscLogEventRegister("MACRO_SetUp", HYLC_MIDSURFACE_CLASSID, &HYLC_MacroSetUp));
   PetscCall(PetscLogEventRegister("MACRO_Poisson", HYLC_MIDSURFACE_CLASSID, &HYLC_MacroPoisson));
   PetscCall(PetscLogEventRegister("MACRO_Evaluate", HYLC_MIDSURFACE_CLASSID, &HYLC_MacroEvaluate));
+  PetscCall(PetscClassIdRegister("HylcMaterial", &HYLC_MATERIAL_CLASSID));
+  PetscCall(PetscLogEventRegister("MATERIAL_Load", HYLC_MATERIAL_CLASSID, &HYLC_MaterialLoad));
+  PetscCall(PetscLogEventRegister("MATERIAL_Write", HYLC_MATERIAL_CLASSID, &HYLC_MaterialWrite));
+  PetscCall(PetscClassIdRegister("HylcFit", &HYLC_FIT_CLASSID));
+  PetscCall(PetscLogEventRegister("FIT_Run", HYLC_FIT_CLASSID, &HYLC_FitRun));
+  PetscCall(PetscLogEventRegister("FIT_Term", HYLC_FIT_CLASSID, &HYLC_FitTerm));
+  PetscCall(PetscLogEventRegister("FIT_MLS", HYLC_FIT_CLASSID, &HYLC_FitMLS));
+  PetscCall(PetscLogEventRegister("FIT_Monotone", HYLC_FIT_CLASSID, &HYLC_FitMonotone));
   PetscCall(HylcMetisRegister());
   PetscCall(PetscRegisterFinalize(HylcFinalizePackage));
   PetscFunctionReturn(PETSC_SUCCESS);
