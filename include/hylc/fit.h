@@ -1,0 +1,112 @@
+#pragma once
+/* HylcFit: the fitting pipeline of Algorithms C5-C7 (seeds §S3; method-spec §9 and §9.1) that turns
+   microscale samples into the homogenized material model (the spline tables of (S26)).
+
+   Input: the samples file of hylc-sample (HDF5, docs/output-format.md; rows with status 0) or the
+   paper's raw layout (data.txt rows "sx sa sy II00 II01 II11 Psi", info.txt with the area density;
+   ../shared/docs/formats.md §5), or data set by HylcFitSetData().
+   Pipeline per term: normalisation by max |strain|, f0 = Psi of the row nearest the origin, MLS in
+   symlog space at the knots, central-difference Hermite data, quasiconvex marching and the monotone
+   cubic / bicubic projections (include/hylc/monotone.h), increasing extrapolation, residualization
+   (S29, S30) and the zero-compression rule. Details, options and choices: docs/fit.md.
+
+   The object is serial: every rank of its communicator computes the same tables (use PETSC_COMM_SELF or
+   one rank); the material writes the files from rank 0. */
+#include <hylc/sys.h>
+#include <hylc/spline.h>
+#include <hylc/monotone.h>
+#include <hylc/material.h>
+#include <petscviewer.h>
+
+typedef struct _p_HylcFit *HylcFit;
+
+/* Pattern families with their own fitting constants (method-spec §9, §S3.4): GENERIC (every pattern
+   but the stockinette; the names "woven" and "knit" select it too) and STOCKINETTE (reg 1e-2, coarse
+   2D bending knots with factor 0.3). */
+typedef enum {
+  HYLC_FIT_FAMILY_WOVEN       = 0,
+  HYLC_FIT_FAMILY_KNIT        = 1,
+  HYLC_FIT_FAMILY_STOCKINETTE = 2
+} HylcFitFamily;
+PETSC_EXTERN const char *const HylcFitFamilies[];
+
+PETSC_EXTERN PetscErrorCode HylcFitCreate(MPI_Comm, HylcFit *);
+PETSC_EXTERN PetscErrorCode HylcFitDestroy(HylcFit *);
+PETSC_EXTERN PetscErrorCode HylcFitSetOptionsPrefix(HylcFit, const char[]);
+PETSC_EXTERN PetscErrorCode HylcFitSetFromOptions(HylcFit);
+PETSC_EXTERN PetscErrorCode HylcFitSetUp(HylcFit);
+PETSC_EXTERN PetscErrorCode HylcFitView(HylcFit, PetscViewer);
+PETSC_EXTERN PetscErrorCode HylcFitViewFromOptions(HylcFit, PetscObject, const char[]);
+
+/* The input file (-fit_input): an HDF5 samples file, a raw data.txt, or a directory holding data.txt
+   (and info.txt). Read by HylcFitSetUp(). */
+PETSC_EXTERN PetscErrorCode HylcFitSetInput(HylcFit, const char path[]);
+/* Output files written by HylcFitRun() (-fit_output, -fit_json); NULL or "" for none. */
+PETSC_EXTERN PetscErrorCode HylcFitSetOutputs(HylcFit, const char h5[], const char json[]);
+/* The family (sets the family's defaults of -fit_reg and the 2D bending knots; call before
+   HylcFitSetFromOptions to let options override them). */
+PETSC_EXTERN PetscErrorCode HylcFitSetFamily(HylcFit, HylcFitFamily);
+
+/* Data without a file: n rows of strain (n x 6: sx, sa, sy, II00, II01, II11), psi (J/m^2) and term
+   (0..14 as in include/hylc/plan.h; term 0 rows only take part in f0 and the normalisation), and the
+   area density (kg/m^2; <= 0: -fit_density must give it). Copied; replaces -fit_input. Not collective. */
+PETSC_EXTERN PetscErrorCode HylcFitSetData(HylcFit, PetscInt n, const PetscReal strain[], const PetscReal psi[], const PetscInt term[], PetscReal areaDensity);
+
+/* Runs the pipeline on the data read by HylcFitSetUp (called if needed). The results are then available
+   from the Get functions below. Not collective (every rank computes the same). */
+PETSC_EXTERN PetscErrorCode HylcFitCompute(HylcFit);
+/* HylcFitCompute, then fills the material (constant, strain scale, density, the fitted terms) and writes
+   -fit_output (HDF5, with the options as provenance) and -fit_json when they are set. Collective. */
+PETSC_EXTERN PetscErrorCode HylcFitRun(HylcFit, HylcMaterial);
+
+/* Results (after HylcFitCompute). Get1D(k): the 1D term k = 0 sx, 1 sa, 2 sy, 3 x-bending, 4 y-bending;
+   Get2D(k0, k1): the 2D term of the pair (the JSON's k0, k1); NULL for a term that was not fitted
+   (no samples). The splines are owned by the fit. */
+PETSC_EXTERN PetscErrorCode HylcFitGetConstant(HylcFit, PetscReal *);
+PETSC_EXTERN PetscErrorCode HylcFitGetStrainScale(HylcFit, PetscReal[5]);
+PETSC_EXTERN PetscErrorCode HylcFitGetDensity(HylcFit, PetscReal *);
+PETSC_EXTERN PetscErrorCode HylcFitGet1D(HylcFit, PetscInt k, const HylcSpline1D **);
+PETSC_EXTERN PetscErrorCode HylcFitGet2D(HylcFit, PetscInt k0, PetscInt k1, const HylcSpline2D **);
+/* The model (S26) of the fitted tables at a strain with II01 = 0 (then the eigen-split of the bending
+   terms is exact: lambda = II00 along x, II11 along y), without a HylcMaterial: f0 + the 1D terms + the
+   2D terms. Used for the per-term summary; HylcMaterialEvaluate() is the general evaluator. */
+PETSC_EXTERN PetscErrorCode HylcFitEvaluateAxes(HylcFit, const PetscReal z[6], PetscReal *psi);
+/* Per-term statistics of the fit against its data: number of samples used, RMS of (model - data) in
+   J/m^2 and the max |data - f0| of the term (0 for a term not fitted); t = 1..14 as in plan.h. */
+PETSC_EXTERN PetscErrorCode HylcFitGetTermStats(HylcFit, PetscInt t, PetscInt *n, PetscReal *rms, PetscReal *range);
+
+/* ---- Plain C kernels of the pipeline (no PETSc objects; used by HylcFitCompute, tested alone) ---- */
+
+/* symlog l(x) = sgn(x) ln(1 + |x|) and its inverse symexp e(y) = sgn(y) (exp|y| - 1) (§S3.3) */
+PETSC_EXTERN PetscReal HylcSymlog(PetscReal);
+PETSC_EXTERN PetscReal HylcSymexp(PetscReal);
+
+/* MLS of §9.1 at one point. Weights: Gaussian exp(-d^2/(2 s^2)) with s = kernel / truncation, zero for
+   |d| >= kernel (2D: product of the per-axis weights). Basis, not centred at the query point: 1D {1, x,
+   x^2}; 2D {1, y, y^2, x, xy, xy^2, x^2, x^2 y}. Solves the weighted normal equations (partial
+   pivoting) and evaluates the polynomial at the query point. Returns the number of data points with
+   non-zero weight, or -1 if the normal equations are singular (too few points in the kernel). */
+PETSC_EXTERN int HylcMLS1D(PetscInt n, const PetscReal x[], const PetscReal f[], PetscReal kernel, PetscReal truncation, PetscReal xq, PetscReal *value);
+PETSC_EXTERN int HylcMLS2D(PetscInt n, const PetscReal x[], const PetscReal y[], const PetscReal f[], PetscReal kx, PetscReal ky, PetscReal truncation, PetscReal xq, PetscReal yq, PetscReal *value);
+
+/* 1D knots (§9.1): linspace(factor min, factor max, n), shifted by the knot closest to 0 so that 0 is a
+   knot (spacing kept). Returns the index of the 0 knot, -1 for invalid input (n < 2, min >= max). */
+PETSC_EXTERN int HylcFitKnots1D(PetscReal min, PetscReal max, PetscReal factor, PetscInt n, PetscReal t[]);
+/* 2D knots of one axis (§9): linspace(factor min, 0, nl) and linspace(0, factor max, nr) joined at 0
+   (nl + nr - 1 knots; a side with factor*min >= 0 or factor*max <= 0 contributes only the 0). Writes
+   *nt knots (at most nl + nr - 1) and returns the index of the 0 knot, -1 for invalid input. */
+PETSC_EXTERN int HylcFitKnots2D(PetscReal min, PetscReal max, PetscReal factor, PetscInt nl, PetscInt nr, PetscReal t[], PetscInt *nt);
+
+/* 2D boundary slopes for increasing extrapolation: mu <= -eps on the first column, >= eps on the last;
+   mv likewise on the first and last rows. */
+PETSC_EXTERN void HylcFitClampBoundary2D(PetscInt nu, PetscInt nv, PetscReal eps, PetscReal mu[], PetscReal mv[]);
+/* muv = 0 on the grid boundary. */
+PETSC_EXTERN void HylcFitZeroBoundaryMixed2D(PetscInt nu, PetscInt nv, PetscReal muv[]);
+/* Residualization (S30 as in §9.1) about the axis lines u = tu[i0], v = tv[j0]: off the axes
+   p -= p(i,j0) + p(i0,j) - p(i0,j0), mu -= mu(i,j0), mv -= mv(i0,j); then p, mu, mv = 0 on the axes
+   (muv kept). */
+PETSC_EXTERN void HylcFitResidualize2D(PetscInt nu, PetscInt nv, PetscInt i0, PetscInt j0, PetscReal p[], PetscReal mu[], PetscReal mv[], PetscReal muv[]);
+/* Zero-compression rule: p, mu, mv, muv = 0 at the nodes whose u (if zu) or v (if zv) knot is < 0;
+   strict also zeroes muv on the axis line bordering the zeroed nodes, so that the spline vanishes on
+   the whole compressed half-plane (not only at and beyond the last compressed knot). */
+PETSC_EXTERN void HylcFitZeroCompression2D(PetscInt nu, PetscInt nv, const PetscReal tu[], const PetscReal tv[], PetscBool zu, PetscBool zv, PetscBool strict, PetscReal p[], PetscReal mu[], PetscReal mv[], PetscReal muv[]);

@@ -1,0 +1,59 @@
+#pragma once
+/* Private definition of HylcFit: only src/ may include this. */
+#include <hylc/fit.h>
+#include <hylc/plan.h>
+#include <petsc/private/petscimpl.h>
+
+struct _HylcFitOps {
+  PetscErrorCode (*view)(HylcFit, PetscViewer);
+};
+
+struct _p_HylcFit {
+  PETSCHEADER(struct _HylcFitOps);
+  /* files */
+  char input[PETSC_MAX_PATH_LEN], output[PETSC_MAX_PATH_LEN], json[PETSC_MAX_PATH_LEN];
+  /* constants (docs/fit.md) */
+  HylcFitFamily    family;
+  PetscReal        reg;                                                             /* quasiconvex marching p^x_min */
+  HylcFitCompat    compat;                                                          /* paper or authors (method-spec §9.1) */
+  HylcMonotoneRule rule;                                                            /* 1D slope limiter */
+  PetscBool        quasiconvex;                                                     /* marching on (off: the "noreg" fits) */
+  PetscBool        symmetrize;                                                      /* symmetrize in sa */
+  PetscBool        zeroCompression;                                                 /* zero-compression rule */
+  PetscBool        zeroStrict;                                                      /* ... also muv on the bordering axis line */
+  PetscReal        kernel, truncation;                                              /* MLS kernel (fraction of the span), kernel / sigma */
+  PetscReal        fdEps;                                                           /* FD step (fraction of the smallest knot spacing) */
+  PetscReal        flatTol;                                                         /* 1D: |dp| below this -> flat interval */
+  PetscReal        endSlope;                                                        /* boundary slopes at least this, outward */
+  PetscInt         nk1;                                                             /* 1D knots */
+  PetscReal        factor1;                                                         /* 1D knot range factor */
+  PetscReal        factor2, factor2bend;                                            /* 2D knot range factors (bending pairs: factor2bend) */
+  PetscInt         kStretch[2], kPoisson[2], kSym[2], kBendStretch[2], kBendSym[2]; /* knots left, right of 0 */
+  PetscReal        density, yarnDensity;                                            /* kg/m^2 override; kg/m^3 (<= 0: the rule 0.12 kg/m^2 / r) */
+  PetscInt         rawN1, rawN2;                                                    /* raw data.txt block sizes (0: infer) */
+  PetscInt         min1, min2;                                                      /* minimum samples per 1D, 2D term */
+  PetscInt         terms;                                                           /* bit t: fit term t */
+  /* data: the rows used (status 0), in file order */
+  PetscInt   n;
+  PetscReal *z, *psi;                    /* n x 6, n */
+  PetscInt  *term, *row;                 /* term, row in the file */
+  PetscReal  rhoA;                       /* resolved area density (kg/m^2), <= 0 unknown */
+  char       rhoSource[256];             /* how rhoA was obtained */
+  PetscReal  radius, restLength, px, py; /* from the samples file's /reference (0 if absent) */
+  char       source[PETSC_MAX_PATH_LEN + 64];
+  PetscInt   nrows, nskipped; /* rows in the input, rows not used (status != 0) */
+  PetscBool  dataset, setupcalled, computed;
+  /* results */
+  PetscReal    scale[6], f0;
+  PetscInt     f0row;
+  PetscBool    has[HYLC_PLAN_NTERM];
+  HylcSpline1D s1[5];
+  HylcSpline2D s2[9];
+  PetscInt     statN[HYLC_PLAN_NTERM];
+  PetscReal    statRms[HYLC_PLAN_NTERM], statRange[HYLC_PLAN_NTERM], statMin[HYLC_PLAN_NTERM][2], statMax[HYLC_PLAN_NTERM][2];
+};
+
+/* input.c: reads fit->input into the data arrays (rank-local). */
+PETSC_INTERN PetscErrorCode HylcFitReadInput_Private(HylcFit);
+/* fit.c: frees the results */
+PETSC_INTERN PetscErrorCode HylcFitResetResults_Private(HylcFit);

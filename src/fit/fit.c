@@ -1,0 +1,465 @@
+/* HylcFit: lifecycle, options, viewer and results of the fitting pipeline (include/hylc/fit.h). */
+#include <hylc/private/fitimpl.h>
+
+const char *const HylcFitFamilies[] = {"woven", "knit", "stockinette", "HylcFitFamily", "HYLC_FIT_FAMILY_", NULL};
+
+/* the family's constants (method-spec §9, §S3.4): everything but the stockinette shares one set */
+static void FamilyDefaults(HylcFit fit, HylcFitFamily family)
+{
+  const PetscBool stock = family == HYLC_FIT_FAMILY_STOCKINETTE;
+  fit->family           = family;
+  fit->reg              = stock ? 1e-2 : 1e-3;
+  fit->factor2bend      = stock ? 0.3 : 0.9;
+  fit->kBendStretch[0]  = 2;
+  fit->kBendStretch[1]  = stock ? 4 : 7;
+  fit->kBendSym[0]      = stock ? 3 : 5;
+  fit->kBendSym[1]      = stock ? 3 : 5;
+}
+
+/*@C
+  HylcFitCreate - Creates a fit with the constants of method-spec §9.1 (family woven). Not collective.
+@*/
+PetscErrorCode HylcFitCreate(MPI_Comm comm, HylcFit *out)
+{
+  HylcFit fit;
+
+  PetscFunctionBegin;
+  PetscValidPointer(out, 2);
+  PetscCall(HylcInitializePackage());
+  PetscCall(PetscHeaderCreate(fit, HYLC_FIT_CLASSID, "HylcFit", "Material fit", "Fit", comm, HylcFitDestroy, HylcFitView));
+  fit->compat          = HYLC_FIT_COMPAT_PAPER;
+  fit->rule            = HYLC_MONOTONE_CIRCLE;
+  fit->quasiconvex     = PETSC_TRUE;
+  fit->symmetrize      = PETSC_TRUE;
+  fit->zeroCompression = PETSC_TRUE;
+  fit->zeroStrict      = PETSC_FALSE;
+  fit->kernel          = 0.15;
+  fit->truncation      = 3;
+  fit->fdEps           = 0.1;
+  fit->flatTol         = 1e-8;
+  fit->endSlope        = 1e-8;
+  fit->nk1             = 11;
+  fit->factor1         = 0.95;
+  fit->factor2         = 0.9;
+  fit->kStretch[0]     = 2;
+  fit->kStretch[1]     = 7;
+  fit->kPoisson[0]     = 4;
+  fit->kPoisson[1]     = 7;
+  fit->kSym[0]         = 5;
+  fit->kSym[1]         = 5;
+  fit->density         = 0;
+  fit->yarnDensity     = 0;
+  fit->min1            = 10;
+  fit->min2            = 25;
+  fit->terms           = (1 << HYLC_PLAN_NTERM) - 2; /* every term but the zero sample */
+  fit->rhoA            = -1;
+  FamilyDefaults(fit, HYLC_FIT_FAMILY_WOVEN);
+  *out = fit;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcFitResetResults_Private(HylcFit fit)
+{
+  PetscFunctionBegin;
+  for (int k = 0; k < 5; k++) {
+    PetscCall(PetscFree3(fit->s1[k].t, fit->s1[k].p, fit->s1[k].m));
+    PetscCall(PetscMemzero(&fit->s1[k], sizeof(fit->s1[k])));
+  }
+  for (int k = 0; k < 9; k++) {
+    PetscCall(PetscFree6(fit->s2[k].tu, fit->s2[k].tv, fit->s2[k].p, fit->s2[k].mu, fit->s2[k].mv, fit->s2[k].muv));
+    PetscCall(PetscMemzero(&fit->s2[k], sizeof(fit->s2[k])));
+  }
+  for (int t = 0; t < HYLC_PLAN_NTERM; t++) {
+    fit->has[t]   = PETSC_FALSE;
+    fit->statN[t] = 0;
+  }
+  fit->computed = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode ResetData(HylcFit fit)
+{
+  PetscFunctionBegin;
+  PetscCall(PetscFree4(fit->z, fit->psi, fit->term, fit->row));
+  fit->n = fit->nrows = fit->nskipped = 0;
+  fit->dataset                        = PETSC_FALSE;
+  fit->setupcalled                    = PETSC_FALSE;
+  PetscCall(HylcFitResetResults_Private(fit));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcFitDestroy(HylcFit *fit)
+{
+  PetscFunctionBegin;
+  if (!*fit) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscValidHeaderSpecific(*fit, HYLC_FIT_CLASSID, 1);
+  if (--((PetscObject)(*fit))->refct > 0) {
+    *fit = NULL;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCall(ResetData(*fit));
+  PetscCall(PetscHeaderDestroy(fit));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcFitSetOptionsPrefix(HylcFit fit, const char prefix[])
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(fit, HYLC_FIT_CLASSID, 1);
+  PetscCall(PetscObjectSetOptionsPrefix((PetscObject)fit, prefix));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcFitSetInput(HylcFit fit, const char path[])
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(fit, HYLC_FIT_CLASSID, 1);
+  PetscCall(ResetData(fit));
+  PetscCall(PetscStrncpy(fit->input, path ? path : "", sizeof(fit->input)));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcFitSetOutputs(HylcFit fit, const char h5[], const char json[])
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(fit, HYLC_FIT_CLASSID, 1);
+  PetscCall(PetscStrncpy(fit->output, h5 ? h5 : "", sizeof(fit->output)));
+  PetscCall(PetscStrncpy(fit->json, json ? json : "", sizeof(fit->json)));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcFitSetFamily(HylcFit fit, HylcFitFamily family)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(fit, HYLC_FIT_CLASSID, 1);
+  FamilyDefaults(fit, family);
+  PetscCall(HylcFitResetResults_Private(fit));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* "-fit_<name> left,right": knot counts left and right of 0 (both including 0) */
+static PetscErrorCode KnotPairOption(PetscOptionItems *PetscOptionsObject, HylcFit fit, const char name[], const char help[], PetscInt k[2])
+{
+  PetscInt  v[2] = {k[0], k[1]}, n = 2;
+  PetscBool set;
+
+  PetscFunctionBegin;
+  PetscCall(PetscOptionsIntArray(name, help, "HylcFitSetFromOptions", v, &n, &set));
+  if (set) {
+    PetscCheck(n == 2 && v[0] >= 1 && v[1] >= 1 && v[0] + v[1] >= 3, PetscObjectComm((PetscObject)fit), PETSC_ERR_USER_INPUT, "%s needs two knot counts left,right (each >= 1, counting the 0 knot on both sides, at least 2 knots in all)", name);
+    k[0] = v[0];
+    k[1] = v[1];
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcFitSetFromOptions - Reads the fit's options (docs/fit.md has the full table). Not collective.
+
+  Options:
++ -fit_input <file|dir>            - samples HDF5 file, raw data.txt, or a directory with data.txt, info.txt
+. -fit_output <model.h5>           - HDF5 material file written by HylcFitRun
+. -fit_json <model.json>           - ARCSim-HYLC JSON written by HylcFitRun
+. -fit_family <woven>              - woven, knit (the same constants) or stockinette (sets the next two groups)
+. -fit_reg <1e-3>                  - quasiconvex marching p^x_min (stockinette 1e-2)
+. -fit_knots2d_bend_factor, -fit_knots2d_bend_stretch, -fit_knots2d_bend_symmetric - 2D bending-pair knots
+. -fit_compat <paper>              - paper or authors (the two departures of method-spec §9.1)
+. -fit_mls_kernel <0.15>, -fit_mls_truncation <3> - MLS kernel (fraction of span), kernel / sigma
+. -fit_fd_eps <0.1>                - FD step as a fraction of the smallest knot spacing
+. -fit_knots1d <11>, -fit_knots1d_factor <0.95> - 1D knots
+. -fit_knots2d_factor <0.9>, -fit_knots2d_stretch <2,7>, -fit_knots2d_poisson <4,7>, -fit_knots2d_symmetric <5,5>
+. -fit_monotone_rule <circle>, -fit_flat_tol <1e-8>, -fit_end_slope <1e-8>
+. -fit_quasiconvex, -fit_symmetrize_sa, -fit_zero_compression, -fit_zero_compression_strict
+. -fit_density <0>, -fit_yarn_density <0> - area density (kg/m^2) or yarn density (kg/m^3)
+. -fit_raw_n1 <0>, -fit_raw_n2 <0> - block sizes of a raw data.txt (0: inferred)
+. -fit_min_samples_1d <10>, -fit_min_samples_2d <25> - fewer samples in a term is an error
+- -fit_terms <all>                 - the terms to fit
+@*/
+PetscErrorCode HylcFitSetFromOptions(HylcFit fit)
+{
+  PetscEnum family = (PetscEnum)fit->family, compat = (PetscEnum)fit->compat, rule = (PetscEnum)fit->rule;
+  PetscBool set;
+  char      terms[512] = "all", input[PETSC_MAX_PATH_LEN];
+  MPI_Comm  comm       = PetscObjectComm((PetscObject)fit);
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(fit, HYLC_FIT_CLASSID, 1);
+  PetscCall(PetscStrncpy(input, fit->input, sizeof(input)));
+  PetscObjectOptionsBegin((PetscObject)fit);
+  PetscCall(PetscOptionsString("-fit_input", "Samples: HDF5 file of hylc-sample (status 0 rows), the paper's raw data.txt, or a directory with data.txt and info.txt", "HylcFitSetInput", input, input, sizeof(input), NULL));
+  PetscCall(PetscOptionsString("-fit_output", "HDF5 material file to write (docs/material.md)", "HylcFitSetOutputs", fit->output, fit->output, sizeof(fit->output), NULL));
+  PetscCall(PetscOptionsString("-fit_json", "ARCSim-HYLC JSON material file to write", "HylcFitSetOutputs", fit->json, fit->json, sizeof(fit->json), NULL));
+  PetscCall(PetscOptionsEnum("-fit_family", "Pattern family: woven and knit share the constants; stockinette: -fit_reg 1e-2 and coarse 2D bending knots (factor 0.3, 2+4 and 3+3)", "HylcFitSetFamily", HylcFitFamilies, family, &family, &set));
+  if (set) FamilyDefaults(fit, (HylcFitFamily)family);
+  PetscCall(PetscOptionsReal("-fit_reg", "Quasiconvex marching: minimum outward slope p^x_min in J/m^2 per normalised unit (S28)", "HylcFitSetFromOptions", fit->reg, &fit->reg, NULL));
+  PetscCall(PetscOptionsBool("-fit_quasiconvex", "Apply the quasiconvex marching (false: the unregularized fits, like rib1_noreg)", "HylcFitSetFromOptions", fit->quasiconvex, &fit->quasiconvex, NULL));
+  PetscCall(PetscOptionsEnum("-fit_compat", "paper, or authors: the authors' code's two departures (S42 x-clamp dropped; mv <= -reg on the minimum's row)", "HylcFitSetFromOptions", HylcFitCompats, compat, &compat, NULL));
+  PetscCall(PetscOptionsEnum("-fit_monotone_rule", "1D slope limiter: circle (alpha^2 + beta^2 <= 9, the authors') or box (0 <= alpha, beta <= 3)", "HylcFitSetFromOptions", HylcMonotoneRules, rule, &rule, NULL));
+  PetscCall(PetscOptionsReal("-fit_flat_tol", "1D monotone cubic: an interval with |dp| below this gets zero slopes", "HylcFitSetFromOptions", fit->flatTol, &fit->flatTol, NULL));
+  PetscCall(PetscOptionsReal("-fit_end_slope", "Boundary slopes at least this outward (increasing linear extrapolation)", "HylcFitSetFromOptions", fit->endSlope, &fit->endSlope, NULL));
+  PetscCall(PetscOptionsReal("-fit_mls_kernel", "MLS kernel radius as a fraction of the term's data span per axis", "HylcFitSetFromOptions", fit->kernel, &fit->kernel, NULL));
+  PetscCall(PetscOptionsReal("-fit_mls_truncation", "MLS kernel radius / Gaussian sigma (weights are zero beyond the radius)", "HylcFitSetFromOptions", fit->truncation, &fit->truncation, NULL));
+  PetscCall(PetscOptionsBool("-fit_symmetrize_sa", "Symmetrize the MLS in sa: g(u) = (g(u) + g(-u)) / 2 in symlog space", "HylcFitSetFromOptions", fit->symmetrize, &fit->symmetrize, NULL));
+  PetscCall(PetscOptionsReal("-fit_fd_eps", "Central-difference step for the Hermite slopes, as a fraction of the smallest knot spacing", "HylcFitSetFromOptions", fit->fdEps, &fit->fdEps, NULL));
+  PetscCall(PetscOptionsInt("-fit_knots1d", "Knots of a 1D term", "HylcFitSetFromOptions", fit->nk1, &fit->nk1, NULL));
+  PetscCall(PetscOptionsReal("-fit_knots1d_factor", "1D knots span factor x [min, max] of the data (then shifted so that 0 is a knot)", "HylcFitSetFromOptions", fit->factor1, &fit->factor1, NULL));
+  PetscCall(PetscOptionsReal("-fit_knots2d_factor", "2D knots span factor x [min, 0] and [0, max] of the data", "HylcFitSetFromOptions", fit->factor2, &fit->factor2, NULL));
+  PetscCall(KnotPairOption(PetscOptionsObject, fit, "-fit_knots2d_stretch", "2D knots of an sx or sy axis left,right of 0 (0 counted in both)", fit->kStretch));
+  PetscCall(KnotPairOption(PetscOptionsObject, fit, "-fit_knots2d_poisson", "2D knots of each axis of (sx, sy) left,right of 0", fit->kPoisson));
+  PetscCall(KnotPairOption(PetscOptionsObject, fit, "-fit_knots2d_symmetric", "2D knots of an sa or bending axis left,right of 0", fit->kSym));
+  PetscCall(PetscOptionsReal("-fit_knots2d_bend_factor", "2D knots span factor of the pairs with a bending axis (stockinette 0.3)", "HylcFitSetFromOptions", fit->factor2bend, &fit->factor2bend, NULL));
+  PetscCall(KnotPairOption(PetscOptionsObject, fit, "-fit_knots2d_bend_stretch", "Knots of the sx or sy axis of a bending pair (stockinette 2,4)", fit->kBendStretch));
+  PetscCall(KnotPairOption(PetscOptionsObject, fit, "-fit_knots2d_bend_symmetric", "Knots of the sa or bending axis of a bending pair (stockinette 3,3)", fit->kBendSym));
+  PetscCall(PetscOptionsBool("-fit_zero_compression", "Zero the 2D residuals where sx or sy < 0 (not (sx, sy))", "HylcFitSetFromOptions", fit->zeroCompression, &fit->zeroCompression, NULL));
+  PetscCall(PetscOptionsBool("-fit_zero_compression_strict", "Also zero muv on the axis bordering the compressed nodes, so the residual vanishes on the whole compressed half-plane", "HylcFitSetFromOptions", fit->zeroStrict, &fit->zeroStrict, NULL));
+  PetscCall(PetscOptionsReal("-fit_density", "Area density of the material in kg/m^2 (> 0 overrides the input's)", "HylcFitSetFromOptions", fit->density, &fit->density, NULL));
+  PetscCall(PetscOptionsReal("-fit_yarn_density", "Yarn density in kg/m^3 for the area density rho pi r^2 L / (px py) of a samples file (<= 0: 0.12 kg/m^2 / r, i.e. 120 kg/m^3 at r = 1 mm, the paper's tables)", "HylcFitSetFromOptions", fit->yarnDensity, &fit->yarnDensity, NULL));
+  PetscCall(PetscOptionsInt("-fit_raw_n1", "Raw data.txt: rows per 1D block (0: the leading run of sx-only rows)", "HylcFitSetFromOptions", fit->rawN1, &fit->rawN1, NULL));
+  PetscCall(PetscOptionsInt("-fit_raw_n2", "Raw data.txt: grid size per axis of a 2D block (0: from the row count)", "HylcFitSetFromOptions", fit->rawN2, &fit->rawN2, NULL));
+  PetscCall(PetscOptionsInt("-fit_min_samples_1d", "A 1D term with fewer samples (but some) is an error", "HylcFitSetFromOptions", fit->min1, &fit->min1, NULL));
+  PetscCall(PetscOptionsInt("-fit_min_samples_2d", "A 2D term with fewer samples (but some) is an error", "HylcFitSetFromOptions", fit->min2, &fit->min2, NULL));
+  PetscCall(PetscOptionsString("-fit_terms", "Terms to fit: all, or a comma list of sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11", "HylcFitSetFromOptions", terms, terms, sizeof(terms), NULL));
+  PetscOptionsEnd();
+  fit->compat = (HylcFitCompat)compat;
+  fit->rule   = (HylcMonotoneRule)rule;
+  PetscCheck(fit->reg >= 0, comm, PETSC_ERR_USER_INPUT, "-fit_reg %g must be >= 0", (double)fit->reg);
+  PetscCheck(fit->kernel > 0 && fit->kernel <= 1, comm, PETSC_ERR_USER_INPUT, "-fit_mls_kernel %g must be in (0, 1]", (double)fit->kernel);
+  PetscCheck(fit->truncation > 0, comm, PETSC_ERR_USER_INPUT, "-fit_mls_truncation %g must be > 0", (double)fit->truncation);
+  PetscCheck(fit->fdEps > 0 && fit->fdEps < 1, comm, PETSC_ERR_USER_INPUT, "-fit_fd_eps %g must be in (0, 1)", (double)fit->fdEps);
+  PetscCheck(fit->nk1 >= 2 && fit->nk1 <= 1000, comm, PETSC_ERR_USER_INPUT, "-fit_knots1d %" PetscInt_FMT " must be in 2..1000", fit->nk1);
+  PetscCheck(fit->factor1 > 0 && fit->factor2 > 0 && fit->factor2bend > 0, comm, PETSC_ERR_USER_INPUT, "-fit_knots1d_factor, -fit_knots2d_factor and -fit_knots2d_bend_factor must be > 0");
+  PetscCheck(fit->flatTol >= 0 && fit->endSlope >= 0, comm, PETSC_ERR_USER_INPUT, "-fit_flat_tol and -fit_end_slope must be >= 0");
+  PetscCheck(fit->rawN1 >= 0 && fit->rawN2 >= 0, comm, PETSC_ERR_USER_INPUT, "-fit_raw_n1 and -fit_raw_n2 must be >= 0");
+  PetscCheck(fit->min1 >= 3 && fit->min2 >= 8, comm, PETSC_ERR_USER_INPUT, "-fit_min_samples_1d must be >= 3 and -fit_min_samples_2d >= 8 (the MLS basis sizes)");
+  {
+    PetscBool all;
+    PetscCall(PetscStrcmp(terms, "all", &all));
+    if (all)
+      fit->terms = (1 << HYLC_PLAN_NTERM) - 2;
+    else {
+      char *tok, *save = NULL;
+      fit->terms = 0;
+      for (tok = strtok_r(terms, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
+        int found = -1;
+        for (int t = 1; t < HYLC_PLAN_NTERM; t++) {
+          PetscBool eq;
+          PetscCall(PetscStrcmp(tok, HylcPlanTermName(t), &eq));
+          if (eq) found = t;
+        }
+        PetscCheck(found > 0, comm, PETSC_ERR_USER_INPUT, "-fit_terms: unknown term '%s' (use all or sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11)", tok);
+        fit->terms |= 1 << found;
+      }
+    }
+  }
+  {
+    PetscBool same;
+    PetscCall(PetscStrcmp(input, fit->input, &same));
+    if (!same) PetscCall(HylcFitSetInput(fit, input));
+  }
+  PetscCall(HylcFitResetResults_Private(fit));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcFitSetData(HylcFit fit, PetscInt n, const PetscReal strain[], const PetscReal psi[], const PetscInt term[], PetscReal areaDensity)
+{
+  MPI_Comm comm;
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(fit, HYLC_FIT_CLASSID, 1);
+  comm = PetscObjectComm((PetscObject)fit);
+  PetscCheck(n >= 0, comm, PETSC_ERR_ARG_OUTOFRANGE, "HylcFitSetData: negative row count %" PetscInt_FMT, n);
+  PetscCall(ResetData(fit));
+  fit->input[0] = 0;
+  PetscCall(PetscMalloc4(6 * n + 1, &fit->z, n + 1, &fit->psi, n + 1, &fit->term, n + 1, &fit->row));
+  for (PetscInt k = 0; k < n; k++) {
+    PetscCheck(term[k] >= 0 && term[k] < HYLC_PLAN_NTERM, comm, PETSC_ERR_USER_INPUT, "HylcFitSetData: row %" PetscInt_FMT " has term %" PetscInt_FMT " (valid: 0..14)", k, term[k]);
+    for (int i = 0; i < 6; i++) fit->z[6 * k + i] = strain[6 * k + i];
+    fit->psi[k]  = psi[k];
+    fit->term[k] = term[k];
+    fit->row[k]  = k;
+  }
+  fit->n = fit->nrows = n;
+  fit->rhoA           = areaDensity;
+  PetscCall(PetscStrncpy(fit->rhoSource, "given with the data", sizeof(fit->rhoSource)));
+  PetscCall(PetscStrncpy(fit->source, "data set by HylcFitSetData", sizeof(fit->source)));
+  fit->dataset = PETSC_TRUE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcFitSetUp - Reads the input (unless data were set with HylcFitSetData) and checks it: finite
+  strains and energies, at least one term. Not collective.
+@*/
+PetscErrorCode HylcFitSetUp(HylcFit fit)
+{
+  MPI_Comm comm;
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(fit, HYLC_FIT_CLASSID, 1);
+  if (fit->setupcalled) PetscFunctionReturn(PETSC_SUCCESS);
+  comm = PetscObjectComm((PetscObject)fit);
+  if (!fit->dataset) {
+    PetscCheck(fit->input[0], comm, PETSC_ERR_USER_INPUT, "No input: give -fit_input <samples.h5 | data.txt | directory>");
+    PetscCall(HylcFitReadInput_Private(fit));
+  }
+  for (PetscInt k = 0; k < fit->n; k++) {
+    PetscBool finite = PetscIsInfOrNanReal(fit->psi[k]) ? PETSC_FALSE : PETSC_TRUE;
+    for (int i = 0; i < 6; i++)
+      if (PetscIsInfOrNanReal(fit->z[6 * k + i])) finite = PETSC_FALSE;
+    PetscCheck(finite, comm, PETSC_ERR_USER_INPUT, "%s: row %" PetscInt_FMT " (term %s) has a non-finite strain or energy: (%g, %g, %g, %g, %g, %g) psi %g", fit->source, fit->row[k], HylcPlanTermName((int)fit->term[k]), (double)fit->z[6 * k], (double)fit->z[6 * k + 1], (double)fit->z[6 * k + 2], (double)fit->z[6 * k + 3], (double)fit->z[6 * k + 4],
+               (double)fit->z[6 * k + 5], (double)fit->psi[k]);
+  }
+  PetscCheck(fit->n > 0, comm, PETSC_ERR_USER_INPUT, "%s: no usable samples (%" PetscInt_FMT " rows, %" PetscInt_FMT " not converged)", fit->source, fit->nrows, fit->nskipped);
+  /* the area density */
+  if (fit->density > 0) {
+    fit->rhoA = fit->density;
+    PetscCall(PetscStrncpy(fit->rhoSource, "-fit_density", sizeof(fit->rhoSource)));
+  }
+  PetscCheck(fit->rhoA > 0, comm, PETSC_ERR_USER_INPUT, "%s: no area density (%s); give -fit_density <kg/m^2>", fit->source, fit->rhoSource[0] ? fit->rhoSource : "none in the input");
+  fit->setupcalled = PETSC_TRUE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcFitGetConstant(HylcFit fit, PetscReal *f0)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(fit, HYLC_FIT_CLASSID, 1);
+  PetscCheck(fit->computed, PetscObjectComm((PetscObject)fit), PETSC_ERR_ARG_WRONGSTATE, "Call HylcFitCompute() first");
+  *f0 = fit->f0;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcFitGetStrainScale(HylcFit fit, PetscReal s[5])
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(fit, HYLC_FIT_CLASSID, 1);
+  PetscCheck(fit->computed, PetscObjectComm((PetscObject)fit), PETSC_ERR_ARG_WRONGSTATE, "Call HylcFitCompute() first");
+  for (int c = 0; c < 5; c++) s[c] = fit->scale[HylcPlanStrainIndex(c)];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcFitGetDensity(HylcFit fit, PetscReal *rhoA)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(fit, HYLC_FIT_CLASSID, 1);
+  PetscCheck(fit->setupcalled, PetscObjectComm((PetscObject)fit), PETSC_ERR_ARG_WRONGSTATE, "Call HylcFitSetUp() first");
+  *rhoA = fit->rhoA;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcFitGet1D(HylcFit fit, PetscInt k, const HylcSpline1D **s)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(fit, HYLC_FIT_CLASSID, 1);
+  PetscCheck(fit->computed, PetscObjectComm((PetscObject)fit), PETSC_ERR_ARG_WRONGSTATE, "Call HylcFitCompute() first");
+  PetscCheck(k >= 0 && k < 5, PetscObjectComm((PetscObject)fit), PETSC_ERR_ARG_OUTOFRANGE, "1D term k = %" PetscInt_FMT " (valid 0..4)", k);
+  *s = fit->has[1 + k] ? &fit->s1[k] : NULL;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcFitGet2D(HylcFit fit, PetscInt k0, PetscInt k1, const HylcSpline2D **s)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(fit, HYLC_FIT_CLASSID, 1);
+  PetscCheck(fit->computed, PetscObjectComm((PetscObject)fit), PETSC_ERR_ARG_WRONGSTATE, "Call HylcFitCompute() first");
+  *s = NULL;
+  for (int t = 6; t < HYLC_PLAN_NTERM; t++) {
+    int ci, cj;
+    HylcPlanPair(t, &ci, &cj);
+    if (ci == k0 && cj == k1) *s = fit->has[t] ? &fit->s2[t - 6] : NULL;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcFitEvaluateAxes(HylcFit fit, const PetscReal z[6], PetscReal *psi)
+{
+  PetscReal S[5], f;
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(fit, HYLC_FIT_CLASSID, 1);
+  PetscCheck(fit->computed, PetscObjectComm((PetscObject)fit), PETSC_ERR_ARG_WRONGSTATE, "Call HylcFitCompute() first");
+  PetscCheck(z[4] == 0, PetscObjectComm((PetscObject)fit), PETSC_ERR_ARG_OUTOFRANGE, "HylcFitEvaluateAxes needs II01 = 0, got %g", (double)z[4]);
+  for (int c = 0; c < 5; c++) S[c] = z[HylcPlanStrainIndex(c)] / fit->scale[HylcPlanStrainIndex(c)];
+  f = fit->f0;
+  for (int c = 0; c < 5; c++)
+    if (fit->has[1 + c]) f += HylcSpline1DEval(&fit->s1[c], S[c], NULL, NULL);
+  for (int t = 6; t < HYLC_PLAN_NTERM; t++) {
+    int ci, cj;
+    if (!fit->has[t]) continue;
+    HylcPlanPair(t, &ci, &cj);
+    f += HylcSpline2DEval(&fit->s2[t - 6], S[ci], S[cj], NULL, NULL);
+  }
+  *psi = f;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcFitGetTermStats(HylcFit fit, PetscInt t, PetscInt *n, PetscReal *rms, PetscReal *range)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(fit, HYLC_FIT_CLASSID, 1);
+  PetscCheck(fit->computed, PetscObjectComm((PetscObject)fit), PETSC_ERR_ARG_WRONGSTATE, "Call HylcFitCompute() first");
+  PetscCheck(t >= 1 && t < HYLC_PLAN_NTERM, PetscObjectComm((PetscObject)fit), PETSC_ERR_ARG_OUTOFRANGE, "term %" PetscInt_FMT " (valid 1..14)", t);
+  if (n) *n = fit->has[t] ? fit->statN[t] : 0;
+  if (rms) *rms = fit->has[t] ? fit->statRms[t] : 0;
+  if (range) *range = fit->has[t] ? fit->statRange[t] : 0;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcFitView - Prints the settings and, after HylcFitCompute, f0, the strain scale, the area density
+  and per term: knots, data range, samples and the RMS residual of the model against the data.
+  Not collective (prints on the object's communicator).
+@*/
+PetscErrorCode HylcFitView(HylcFit fit, PetscViewer viewer)
+{
+  PetscBool iascii;
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(fit, HYLC_FIT_CLASSID, 1);
+  if (!viewer) PetscCall(PetscViewerASCIIGetStdout(PetscObjectComm((PetscObject)fit), &viewer));
+  PetscCall(PetscObjectTypeCompare((PetscObject)viewer, PETSCVIEWERASCII, &iascii));
+  if (!iascii) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscObjectPrintClassNamePrefixType((PetscObject)fit, viewer));
+  PetscCall(PetscViewerASCIIPushTab(viewer));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "input: %s\n", fit->source[0] ? fit->source : (fit->input[0] ? fit->input : "(none)")));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "family %s, reg %g%s, compat %s, MLS kernel %g of the span (sigma = kernel/%g), FD step %g of the knot spacing\n", HylcFitFamilies[fit->family], (double)fit->reg, fit->quasiconvex ? "" : " (marching off)", HylcFitCompats[fit->compat], (double)fit->kernel, (double)fit->truncation, (double)fit->fdEps));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "knots: 1D %" PetscInt_FMT " x %g; 2D factor %g (bending pairs %g), stretch %" PetscInt_FMT "+%" PetscInt_FMT ", poisson %" PetscInt_FMT "+%" PetscInt_FMT ", symmetric %" PetscInt_FMT "+%" PetscInt_FMT ", bending pairs %" PetscInt_FMT "+%" PetscInt_FMT " / %" PetscInt_FMT "+%" PetscInt_FMT "\n", fit->nk1, (double)fit->factor1, (double)fit->factor2,
+                                   (double)fit->factor2bend, fit->kStretch[0], fit->kStretch[1], fit->kPoisson[0], fit->kPoisson[1], fit->kSym[0], fit->kSym[1], fit->kBendStretch[0], fit->kBendStretch[1], fit->kBendSym[0], fit->kBendSym[1]));
+  if (fit->setupcalled) {
+    PetscCall(PetscViewerASCIIPrintf(viewer, "samples: %" PetscInt_FMT " used of %" PetscInt_FMT " rows (%" PetscInt_FMT " not converged)\n", fit->n, fit->nrows, fit->nskipped));
+    PetscCall(PetscViewerASCIIPrintf(viewer, "area density: %.6g kg/m^2 (%s)\n", (double)fit->rhoA, fit->rhoSource));
+  }
+  if (fit->computed) {
+    const PetscReal *z = fit->z + 6 * fit->f0row;
+    PetscCall(PetscViewerASCIIPrintf(viewer, "f0: %.9g J/m^2 (row %" PetscInt_FMT ", strain (%g, %g, %g, %g, %g, %g))\n", (double)fit->f0, fit->row[fit->f0row], (double)z[0], (double)z[1], (double)z[2], (double)z[3], (double)z[4], (double)z[5]));
+    PetscCall(PetscViewerASCIIPrintf(viewer, "strain scale: %g %g %g %g %g\n", (double)fit->scale[0], (double)fit->scale[1], (double)fit->scale[2], (double)fit->scale[3], (double)fit->scale[5]));
+    for (int t = 1; t < HYLC_PLAN_NTERM; t++) {
+      char knots[64], range[160];
+      if (!fit->has[t]) {
+        PetscCall(PetscViewerASCIIPrintf(viewer, "%-8s not fitted (%s)\n", HylcPlanTermName(t), (fit->terms >> t) & 1 ? "no samples" : "not in -fit_terms"));
+        continue;
+      }
+      if (t <= 5) {
+        const int c = t - 1;
+        PetscCall(PetscSNPrintf(knots, sizeof(knots), "%" PetscInt_FMT " knots", fit->s1[c].n));
+        PetscCall(PetscSNPrintf(range, sizeof(range), "%s in [%.4g, %.4g]", HylcPlanTermName(t), (double)fit->statMin[t][0], (double)fit->statMax[t][0]));
+      } else {
+        int ci, cj;
+        HylcPlanPair(t, &ci, &cj);
+        PetscCall(PetscSNPrintf(knots, sizeof(knots), "%" PetscInt_FMT "x%" PetscInt_FMT " knots", fit->s2[t - 6].nu, fit->s2[t - 6].nv));
+        PetscCall(PetscSNPrintf(range, sizeof(range), "%s in [%.4g, %.4g], %s in [%.4g, %.4g]", HylcPlanTermName(1 + ci), (double)fit->statMin[t][0], (double)fit->statMax[t][0], HylcPlanTermName(1 + cj), (double)fit->statMin[t][1], (double)fit->statMax[t][1]));
+      }
+      PetscCall(PetscViewerASCIIPrintf(viewer, "%-8s %-11s %5" PetscInt_FMT " samples, %s; RMS residual %.3g J/m^2 (%.3g%% of max |psi - f0| %.3g)\n", HylcPlanTermName(t), knots, fit->statN[t], range, (double)fit->statRms[t], fit->statRange[t] > 0 ? (double)(100 * fit->statRms[t] / fit->statRange[t]) : 0.0, (double)fit->statRange[t]));
+    }
+  }
+  PetscCall(PetscViewerASCIIPopTab(viewer));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcFitViewFromOptions(HylcFit fit, PetscObject obj, const char name[])
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(fit, HYLC_FIT_CLASSID, 1);
+  PetscCall(PetscObjectViewFromOptions((PetscObject)fit, obj, name));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -1,0 +1,305 @@
+/* HylcFit input: the samples HDF5 file of hylc-sample (docs/output-format.md) and the paper's raw layout
+   (data.txt, info.txt; ../shared/docs/formats.md §5). */
+#include <hylc/private/fitimpl.h>
+#include <hylc/samples.h>
+#include <hdf5.h>
+#include <sys/stat.h>
+#include <stdio.h>
+#include <string.h>
+#include <errno.h>
+
+/* ---- HDF5: /reference and /material of a samples file, for the area density ---- */
+
+/* the scalar double attribute 'name' of the object at 'path', or *found = 0 */
+static PetscErrorCode H5ReadAttrDouble(hid_t file, const char path[], const char name[], double *v, int *found)
+{
+  hid_t obj, a;
+
+  PetscFunctionBegin;
+  *found = 0;
+  if (H5Lexists(file, path, H5P_DEFAULT) <= 0) PetscFunctionReturn(PETSC_SUCCESS);
+  obj = H5Oopen(file, path, H5P_DEFAULT);
+  if (obj < 0) PetscFunctionReturn(PETSC_SUCCESS);
+  if (H5Aexists(obj, name) > 0) {
+    a = H5Aopen(obj, name, H5P_DEFAULT);
+    if (a >= 0) {
+      if (H5Aread(a, H5T_NATIVE_DOUBLE, v) >= 0) *found = 1;
+      H5Aclose(a);
+    }
+  }
+  H5Oclose(obj);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* radius, total rest length and periods of the samples file's reference pattern (0 when absent) */
+static PetscErrorCode ReadReference(HylcFit fit, const char path[])
+{
+  hid_t       file, d, s;
+  H5E_auto2_t efunc;
+  void       *edata;
+  double      px = 0, py = 0, r = 0, rm = 0;
+  int         f1 = 0, f2 = 0, f3 = 0, f4 = 0;
+  hsize_t     dims[2] = {0, 0};
+
+  PetscFunctionBegin;
+  fit->radius = fit->restLength = fit->px = fit->py = 0;
+  H5Eget_auto2(H5E_DEFAULT, &efunc, &edata);
+  H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
+  file = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (file >= 0) {
+    PetscCall(H5ReadAttrDouble(file, "reference", "px", &px, &f1));
+    PetscCall(H5ReadAttrDouble(file, "reference", "py", &py, &f2));
+    PetscCall(H5ReadAttrDouble(file, "reference", "radius", &r, &f3));
+    PetscCall(H5ReadAttrDouble(file, "material", "radius", &rm, &f4));
+    if (f1 && f2 && f3 && H5Lexists(file, "reference/rest_length", H5P_DEFAULT) > 0 && (d = H5Dopen2(file, "reference/rest_length", H5P_DEFAULT)) >= 0) {
+      s = H5Dget_space(d);
+      if (s >= 0 && H5Sget_simple_extent_ndims(s) == 1 && H5Sget_simple_extent_dims(s, dims, NULL) == 1 && dims[0] > 0) {
+        double *rl;
+        PetscCall(PetscMalloc1(dims[0], &rl));
+        if (H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, rl) >= 0) {
+          double L = 0;
+          for (hsize_t i = 0; i < dims[0]; i++) L += rl[i];
+          fit->restLength = L;
+          fit->px         = px;
+          fit->py         = py;
+          fit->radius     = f4 && rm > 0 ? rm : r; /* the radius the samples were computed with */
+        }
+        PetscCall(PetscFree(rl));
+      }
+      if (s >= 0) H5Sclose(s);
+      H5Dclose(d);
+    }
+    H5Fclose(file);
+  }
+  H5Eset_auto2(H5E_DEFAULT, efunc, edata);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode ReadSamplesHDF5(HylcFit fit, const char path[])
+{
+  long              N;
+  HylcSampleRecord *recs;
+  unsigned char    *done;
+  PetscInt          n    = 0;
+  MPI_Comm          comm = PetscObjectComm((PetscObject)fit);
+
+  PetscFunctionBegin;
+  PetscCall(HylcSamplesReadHDF5(path, &N, &recs, &done, NULL));
+  PetscCall(PetscMalloc4(6 * N + 1, &fit->z, N + 1, &fit->psi, N + 1, &fit->term, N + 1, &fit->row));
+  fit->nrows = (PetscInt)N;
+  for (long k = 0; k < N; k++) {
+    const HylcSampleRecord *r = &recs[k];
+    if (!done[k]) continue;
+    if (r->status != 0) {
+      fit->nskipped++;
+      continue;
+    }
+    PetscCheck(r->term >= 0 && r->term < HYLC_PLAN_NTERM, comm, PETSC_ERR_FILE_UNEXPECTED, "%s: /samples/term of row %ld is %d (valid: 0..14)", path, k, r->term);
+    for (int i = 0; i < 6; i++) fit->z[6 * n + i] = r->z[i];
+    fit->psi[n]  = r->psi;
+    fit->term[n] = r->term;
+    fit->row[n]  = (PetscInt)k;
+    n++;
+  }
+  fit->n = n;
+  PetscCall(PetscFree(recs));
+  PetscCall(PetscFree(done));
+  PetscCall(PetscSNPrintf(fit->source, sizeof(fit->source), "%s (HDF5 samples)", path));
+  /* area density from the reference pattern */
+  PetscCall(ReadReference(fit, path));
+  if (fit->radius > 0 && fit->restLength > 0 && fit->px > 0 && fit->py > 0) {
+    const PetscReal rho = fit->yarnDensity > 0 ? fit->yarnDensity : 0.12 / fit->radius;
+    fit->rhoA           = rho * PETSC_PI * fit->radius * fit->radius * fit->restLength / (fit->px * fit->py);
+    PetscCall(PetscSNPrintf(fit->rhoSource, sizeof(fit->rhoSource), "yarn density %g kg/m^3%s x pi r^2 L / (px py) with r = %g m, L = %g m, px py = %g m^2 of %s/reference", (double)rho, fit->yarnDensity > 0 ? " (-fit_yarn_density)" : " (0.12 kg/m^2 / r)", (double)fit->radius, (double)fit->restLength, (double)(fit->px * fit->py), path));
+  } else {
+    fit->rhoA = -1;
+    PetscCall(PetscSNPrintf(fit->rhoSource, sizeof(fit->rhoSource), "%s has no /reference pattern", path));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* ---- the raw layout ---- */
+
+/* reads info.txt: "density <value>" (and "area <value>") lines, or two bare numbers area density */
+static PetscErrorCode ReadInfo(HylcFit fit, const char path[])
+{
+  FILE  *fp = fopen(path, "r");
+  char   tok[256], prev[256] = "";
+  double nums[2];
+  int    nn = 0, haveKey = 0;
+  double density = -1;
+
+  PetscFunctionBegin;
+  if (!fp) {
+    fit->rhoA = -1;
+    PetscCall(PetscSNPrintf(fit->rhoSource, sizeof(fit->rhoSource), "no %s", path));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  while (fscanf(fp, "%255s", tok) == 1) {
+    char  *end;
+    double v = strtod(tok, &end);
+    if (*end) {
+      PetscCall(PetscStrncpy(prev, tok, sizeof(prev)));
+      continue;
+    }
+    if (prev[0]) {
+      haveKey = 1;
+      if (!strcmp(prev, "density") || !strcmp(prev, "density:") || !strcmp(prev, "area_density") || !strcmp(prev, "rho")) density = v;
+      prev[0] = 0;
+    } else if (nn < 2)
+      nums[nn++] = v;
+    else
+      nn = 3;
+  }
+  fclose(fp);
+  if (!haveKey && nn == 2) density = nums[1];
+  PetscCheck(density > 0 && !PetscIsInfOrNanReal(density), PetscObjectComm((PetscObject)fit), PETSC_ERR_USER_INPUT, "%s: no positive area density found (expected a line 'density <kg/m^2>', or two numbers: area and area density)", path);
+  fit->rhoA = density;
+  PetscCall(PetscSNPrintf(fit->rhoSource, sizeof(fit->rhoSource), "%s", path));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode ReadRaw(HylcFit fit, const char data[], const char info[])
+{
+  FILE      *fp   = fopen(data, "r");
+  char      *line = NULL;
+  size_t     cap  = 0;
+  ssize_t    len;
+  PetscInt   n = 0, nalloc = 1024, lineno = 0, *lines;
+  PetscReal *z, *psi;
+  MPI_Comm   comm = PetscObjectComm((PetscObject)fit);
+
+  PetscFunctionBegin;
+  PetscCheck(fp, comm, PETSC_ERR_FILE_OPEN, "Cannot open %s (-fit_input): %s", data, strerror(errno));
+  PetscCall(PetscMalloc3(6 * nalloc, &z, nalloc, &psi, nalloc, &lines));
+  while ((len = getline(&line, &cap, fp)) >= 0) {
+    double v[8];
+    int    nv = 0;
+    char  *s  = line, *end;
+    lineno++;
+    while (*s == ' ' || *s == '\t') s++;
+    if (*s == '#' || *s == '\n' || *s == '\r' || !*s) continue;
+    for (;;) {
+      while (*s == ' ' || *s == '\t' || *s == ',') s++;
+      if (!*s || *s == '\n' || *s == '\r') break;
+      const double x = strtod(s, &end);
+      if (end == s) {
+        fclose(fp);
+        free(line);
+        PetscCall(PetscFree3(z, psi, lines));
+        SETERRQ(comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": not a number: '%.20s'", data, lineno, s);
+      }
+      if (nv < 8) v[nv] = x;
+      nv++;
+      s = end;
+    }
+    if (nv != 7) {
+      fclose(fp);
+      free(line);
+      PetscCall(PetscFree3(z, psi, lines));
+      SETERRQ(comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": %d numbers, expected 7 (sx sa sy II00 II01 II11 Psi)", data, lineno, nv);
+    }
+    if (n == nalloc) {
+      PetscReal *z2, *psi2;
+      PetscInt  *l2;
+      PetscCall(PetscMalloc3(12 * nalloc, &z2, 2 * nalloc, &psi2, 2 * nalloc, &l2));
+      PetscCall(PetscArraycpy(z2, z, 6 * n));
+      PetscCall(PetscArraycpy(psi2, psi, n));
+      PetscCall(PetscArraycpy(l2, lines, n));
+      PetscCall(PetscFree3(z, psi, lines));
+      z = z2, psi = psi2, lines = l2;
+      nalloc *= 2;
+    }
+    for (int i = 0; i < 6; i++) z[6 * n + i] = v[i];
+    psi[n]   = v[6];
+    lines[n] = lineno;
+    n++;
+  }
+  fclose(fp);
+  free(line);
+  /* block sizes: rows = 5 n1 + 9 n2^2 */
+  PetscInt n1 = fit->rawN1, n2 = fit->rawN2;
+  if (!n1) {
+    if (n2)
+      n1 = (n - 9 * n2 * n2) / 5;
+    else
+      while (n1 < n && z[6 * n1 + 1] == 0 && z[6 * n1 + 2] == 0 && z[6 * n1 + 3] == 0 && z[6 * n1 + 4] == 0 && z[6 * n1 + 5] == 0) n1++;
+  }
+  if (!n2 && n1 > 0 && n >= 5 * n1) {
+    const PetscInt q = (n - 5 * n1) / 9;
+    n2               = (PetscInt)(PetscSqrtReal((PetscReal)q) + 0.5);
+  }
+  if (!(n1 > 0 && n2 >= 0 && 5 * n1 + 9 * n2 * n2 == n)) {
+    PetscCall(PetscFree3(z, psi, lines));
+    SETERRQ(comm, PETSC_ERR_USER_INPUT, "%s: %" PetscInt_FMT " rows do not make 5 1D blocks of n1 = %" PetscInt_FMT " rows and 9 2D blocks of n2 x n2 = %" PetscInt_FMT " x %" PetscInt_FMT " rows (formats.md §5: 5 n1 + 9 n2^2 rows); give -fit_raw_n1 and -fit_raw_n2", data, n, n1, n2, n2);
+  }
+  /* the term of each row by row order; every coordinate outside the term must be 0 */
+  PetscCall(PetscMalloc4(6 * n + 1, &fit->z, n + 1, &fit->psi, n + 1, &fit->term, n + 1, &fit->row));
+  for (PetscInt k = 0; k < n; k++) {
+    PetscInt t, c[2] = {-1, -1};
+    if (k < 5 * n1) {
+      t    = 1 + k / n1;
+      c[0] = (int)t - 1;
+    } else {
+      int ci, cj;
+      t = 6 + (k - 5 * n1) / (n2 * n2);
+      HylcPlanPair((int)t, &ci, &cj);
+      c[0] = ci, c[1] = cj;
+    }
+    for (int cc = 0; cc < HYLC_PLAN_NCOORD; cc++) {
+      if (cc == c[0] || cc == c[1]) continue;
+      const PetscReal v = z[6 * k + HylcPlanStrainIndex(cc)];
+      if (v != 0 && !PetscIsInfOrNanReal(v)) {
+        const PetscInt ln = lines[k];
+        PetscCall(PetscFree3(z, psi, lines));
+        SETERRQ(comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": the row belongs to term %s by row order (n1 = %" PetscInt_FMT ", n2 = %" PetscInt_FMT ") but its %s is %g, not 0; give -fit_raw_n1 and -fit_raw_n2", data, ln, HylcPlanTermName((int)t), n1, n2, HylcPlanTermName(1 + cc), (double)v);
+      }
+    }
+    for (int i = 0; i < 6; i++) fit->z[6 * k + i] = z[6 * k + i];
+    fit->psi[k]  = psi[k];
+    fit->term[k] = t;
+    fit->row[k]  = lines[k];
+  }
+  fit->n = fit->nrows = n;
+  PetscCall(PetscFree3(z, psi, lines));
+  PetscCall(PetscSNPrintf(fit->source, sizeof(fit->source), "%s (raw: %" PetscInt_FMT " rows, 5 x %" PetscInt_FMT " + 9 x %" PetscInt_FMT "^2; rows are line numbers)", data, n, n1, n2));
+  PetscCall(ReadInfo(fit, info));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcFitReadInput_Private(HylcFit fit)
+{
+  struct stat st;
+  MPI_Comm    comm = PetscObjectComm((PetscObject)fit);
+  char        data[PETSC_MAX_PATH_LEN + 16], info[PETSC_MAX_PATH_LEN + 16];
+
+  PetscFunctionBegin;
+  PetscCheck(!stat(fit->input, &st), comm, PETSC_ERR_FILE_OPEN, "-fit_input %s: %s", fit->input, strerror(errno));
+  if (S_ISDIR(st.st_mode)) {
+    PetscCall(PetscSNPrintf(data, sizeof(data), "%s/data.txt", fit->input));
+    PetscCall(PetscSNPrintf(info, sizeof(info), "%s/info.txt", fit->input));
+    PetscCheck(!stat(data, &st), comm, PETSC_ERR_FILE_OPEN, "-fit_input %s is a directory without data.txt (the paper's raw layout)", fit->input);
+    PetscCall(ReadRaw(fit, data, info));
+  } else {
+    htri_t      ish5;
+    H5E_auto2_t efunc;
+    void       *edata;
+    H5Eget_auto2(H5E_DEFAULT, &efunc, &edata);
+    H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
+    ish5 = H5Fis_hdf5(fit->input);
+    H5Eset_auto2(H5E_DEFAULT, efunc, edata);
+    if (ish5 > 0)
+      PetscCall(ReadSamplesHDF5(fit, fit->input));
+    else {
+      char *slash;
+      PetscCall(PetscStrncpy(info, fit->input, sizeof(info)));
+      slash = strrchr(info, '/');
+      if (slash)
+        PetscCall(PetscStrcpy(slash + 1, "info.txt"));
+      else
+        PetscCall(PetscStrcpy(info, "info.txt"));
+      PetscCall(ReadRaw(fit, fit->input, info));
+    }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

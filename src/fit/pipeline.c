@@ -1,0 +1,328 @@
+/* HylcFitCompute: the fitting pipeline of Algorithms C5-C7 as the authors' code does it (method-spec
+   §9.1); the shape-preserving steps are the kernels of include/hylc/monotone.h. */
+#include <hylc/private/fitimpl.h>
+
+/* the smoothed function g of (S27): symexp of the MLS of symlog(psi), symmetrized in sa */
+typedef struct {
+  PetscInt         n;
+  const PetscReal *u, *v, *l; /* normalised coordinates (v: 2D only) and symlog(psi) */
+  PetscReal        ku, kv, truncation;
+  int              dim, sym; /* sym: -1 none, 0 in u, 1 in v */
+  int              count;    /* samples in the kernel of the last failed evaluation */
+} GFun;
+
+static int GMls(const GFun *g, PetscReal x, PetscReal y, PetscReal *val)
+{
+  return g->dim == 1 ? HylcMLS1D(g->n, g->u, g->l, g->ku, g->truncation, x, val) : HylcMLS2D(g->n, g->u, g->v, g->l, g->ku, g->kv, g->truncation, x, y, val);
+}
+
+/* g(x, y); returns -1 when the MLS system at (x, y) (or its mirror) is singular */
+static int GEval(const GFun *g, PetscReal x, PetscReal y, PetscReal *val)
+{
+  PetscReal a, b;
+  if (GMls(g, x, y, &a) < 0) return -1;
+  if (g->sym == 0) {
+    if (GMls(g, -x, y, &b) < 0) return -1;
+    a = 0.5 * (a + b);
+  } else if (g->sym == 1) {
+    if (GMls(g, x, -y, &b) < 0) return -1;
+    a = 0.5 * (a + b);
+  }
+  *val = HylcSymexp(a);
+  return 0;
+}
+
+static PetscErrorCode G(HylcFit fit, const GFun *g, int t, PetscReal x, PetscReal y, PetscReal *val)
+{
+  PetscFunctionBegin;
+  if (GEval(g, x, y, val)) {
+    PetscInt cnt = 0;
+    for (PetscInt i = 0; i < g->n; i++)
+      if (PetscAbsReal(g->u[i] - x) < g->ku && (g->dim == 1 || PetscAbsReal(g->v[i] - y) < g->kv)) cnt++;
+    if (g->dim == 1)
+      SETERRQ(PetscObjectComm((PetscObject)fit), PETSC_ERR_USER_INPUT, "%s: term %s: the MLS at x = %g (normalised) is singular: %" PetscInt_FMT " samples within the kernel radius %g (the quadratic basis needs 3 distinct ones); the term's %" PetscInt_FMT " samples are too sparse for -fit_mls_kernel %g", fit->source, HylcPlanTermName(t), (double)x, cnt, (double)g->ku, g->n, (double)fit->kernel);
+    SETERRQ(PetscObjectComm((PetscObject)fit), PETSC_ERR_USER_INPUT, "%s: term %s: the MLS at (u, v) = (%g, %g) (normalised) is singular: %" PetscInt_FMT " samples within the kernel box %g x %g (the basis needs 8 in general position); the term's %" PetscInt_FMT " samples are too sparse for -fit_mls_kernel %g", fit->source, HylcPlanTermName(t), (double)x, (double)y, cnt, (double)g->ku, (double)g->kv, g->n, (double)fit->kernel);
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscReal MinSpacing(PetscInt n, const PetscReal t[])
+{
+  PetscReal h = PETSC_MAX_REAL;
+  for (PetscInt i = 0; i + 1 < n; i++) h = PetscMin(h, t[i + 1] - t[i]);
+  return h;
+}
+
+/* the term's data: normalised coordinates of c0 (and c1), symlog(psi) */
+static PetscErrorCode Gather(HylcFit fit, int t, int c0, int c1, PetscInt *n, PetscReal **u, PetscReal **v, PetscReal **l)
+{
+  PetscInt m = 0;
+
+  PetscFunctionBegin;
+  for (PetscInt k = 0; k < fit->n; k++) m += fit->term[k] == t;
+  PetscCall(PetscMalloc3(m + 1, u, m + 1, v, m + 1, l));
+  m = 0;
+  for (PetscInt k = 0; k < fit->n; k++) {
+    if (fit->term[k] != t) continue;
+    const PetscInt i0 = HylcPlanStrainIndex(c0);
+    (*u)[m]           = fit->z[6 * k + i0] / fit->scale[i0];
+    if (c1 >= 0) {
+      const PetscInt i1 = HylcPlanStrainIndex(c1);
+      (*v)[m]           = fit->z[6 * k + i1] / fit->scale[i1];
+    } else
+      (*v)[m] = 0;
+    (*l)[m] = HylcSymlog(fit->psi[k]);
+    m++;
+  }
+  *n = m;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static void Range(PetscInt n, const PetscReal x[], PetscReal *mn, PetscReal *mx)
+{
+  *mn = PETSC_MAX_REAL;
+  *mx = PETSC_MIN_REAL;
+  for (PetscInt i = 0; i < n; i++) {
+    *mn = PetscMin(*mn, x[i]);
+    *mx = PetscMax(*mx, x[i]);
+  }
+}
+
+/* Algorithm C6 for the 1D term of coordinate c (term t = 1 + c) */
+static PetscErrorCode Fit1D(HylcFit fit, int c, PetscInt n, const PetscReal u[], const PetscReal l[])
+{
+  const int     t = 1 + c;
+  HylcSpline1D *s = &fit->s1[c];
+  PetscReal     mn, mx, eps, *tk, *p, *m;
+  PetscInt      nk = fit->nk1, i0;
+  GFun          g;
+
+  PetscFunctionBegin;
+  Range(n, u, &mn, &mx);
+  PetscCheck(mn < mx, PetscObjectComm((PetscObject)fit), PETSC_ERR_USER_INPUT, "%s: term %s: all %" PetscInt_FMT " samples have the same %s = %g", fit->source, HylcPlanTermName(t), n, HylcPlanTermName(t), (double)(mn * fit->scale[HylcPlanStrainIndex(c)]));
+  PetscCall(PetscLogEventBegin(HYLC_FitMLS, fit, 0, 0, 0));
+  PetscCall(PetscMalloc3(nk, &tk, nk, &p, nk, &m));
+  i0 = HylcFitKnots1D(mn, mx, fit->factor1, nk, tk);
+  PetscCheck(i0 >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "1D knots");
+  eps = fit->fdEps * MinSpacing(nk, tk);
+  g   = (GFun){n, u, NULL, l, fit->kernel * (mx - mn), 0, fit->truncation, 1, (c == 1 && fit->symmetrize) ? 0 : -1, 0};
+  for (PetscInt i = 0; i < nk; i++) {
+    PetscReal a, b;
+    PetscCall(G(fit, &g, t, tk[i], 0, &p[i]));
+    PetscCall(G(fit, &g, t, tk[i] + eps, 0, &a));
+    PetscCall(G(fit, &g, t, tk[i] - eps, 0, &b));
+    m[i] = (a - b) / (2 * eps);
+  }
+  PetscCall(PetscLogEventEnd(HYLC_FitMLS, fit, 0, 0, 0));
+  PetscCall(PetscLogEventBegin(HYLC_FitMonotone, fit, 0, 0, 0));
+  if (fit->quasiconvex) {
+    PetscInt imin = i0;
+    if (c >= 3) /* bending: the minimum of the data (first of equal values) */
+      for (PetscInt i = 0; i < nk; i++)
+        if (p[i] < p[imin] || (p[i] == p[imin] && i < imin)) imin = i;
+    HylcQuasiconvex1D(nk, tk, imin, fit->reg, p, m);
+  }
+  HylcMonotoneCubic(nk, tk, p, m, fit->rule, fit->flatTol);
+  m[0]      = PetscMin(m[0], -fit->endSlope);
+  m[nk - 1] = PetscMax(m[nk - 1], fit->endSlope);
+  {
+    const PetscReal p0 = p[i0];
+    for (PetscInt i = 0; i < nk; i++) p[i] -= p0;
+  }
+  PetscCall(PetscLogEventEnd(HYLC_FitMonotone, fit, 0, 0, 0));
+  s->k   = c;
+  s->n   = nk;
+  s->t   = tk;
+  s->p   = p;
+  s->m   = m;
+  s->ext = HYLC_EXT_LINEAR;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* knot counts of axis coordinate c of the pair (ci, cj) */
+static void KnotCounts(HylcFit fit, int ci, int cj, int c, PetscReal *factor, PetscInt k[2])
+{
+  const PetscBool bending = cj >= 3, poisson = ci == 0 && cj == 2, stretch = c == 0 || c == 2;
+  const PetscInt *src = poisson ? fit->kPoisson : stretch ? (bending ? fit->kBendStretch : fit->kStretch)
+                                                          : (bending ? fit->kBendSym : fit->kSym);
+  *factor             = bending ? fit->factor2bend : fit->factor2;
+  k[0]                = src[0];
+  k[1]                = src[1];
+}
+
+/* Algorithm C7 for the 2D term t of the pair (ci, cj) */
+static PetscErrorCode Fit2D(HylcFit fit, int t, PetscInt n, const PetscReal u[], const PetscReal v[], const PetscReal l[])
+{
+  HylcSpline2D   *s = &fit->s2[t - 6];
+  int             ci, cj;
+  PetscReal       umn, umx, vmn, vmx, fu, fv, eps, *tu, *tv, *p, *mu, *mv, *muv;
+  PetscInt        ku[2], kv[2], nu, nv, i0, j0;
+  GFun            g;
+  const PetscBool poisson = t == 7;
+  MPI_Comm        comm    = PetscObjectComm((PetscObject)fit);
+
+  PetscFunctionBegin;
+  HylcPlanPair(t, &ci, &cj);
+  Range(n, u, &umn, &umx);
+  Range(n, v, &vmn, &vmx);
+  PetscCheck(umn < umx && vmn < vmx, comm, PETSC_ERR_USER_INPUT, "%s: term %s: the %" PetscInt_FMT " samples do not span both coordinates (%s in [%g, %g], %s in [%g, %g], normalised)", fit->source, HylcPlanTermName(t), n, HylcPlanTermName(1 + ci), (double)umn, (double)umx, HylcPlanTermName(1 + cj), (double)vmn, (double)vmx);
+  PetscCall(PetscLogEventBegin(HYLC_FitMLS, fit, 0, 0, 0));
+  KnotCounts(fit, ci, cj, ci, &fu, ku);
+  KnotCounts(fit, ci, cj, cj, &fv, kv);
+  {
+    PetscReal bu[2048], bv[2048];
+    PetscCheck(ku[0] + ku[1] < 2048 && kv[0] + kv[1] < 2048, comm, PETSC_ERR_USER_INPUT, "Too many 2D knots");
+    i0 = HylcFitKnots2D(umn, umx, fu, ku[0], ku[1], bu, &nu);
+    j0 = HylcFitKnots2D(vmn, vmx, fv, kv[0], kv[1], bv, &nv);
+    PetscCheck(i0 >= 0 && j0 >= 0, comm, PETSC_ERR_USER_INPUT, "%s: term %s: fewer than 2 knots on an axis (data %s in [%g, %g], %s in [%g, %g] normalised; the 2D knots span [factor min, 0] and [0, factor max])", fit->source, HylcPlanTermName(t), HylcPlanTermName(1 + ci), (double)umn, (double)umx, HylcPlanTermName(1 + cj), (double)vmn, (double)vmx);
+    PetscCall(PetscMalloc6(nu, &tu, nv, &tv, nu * nv, &p, nu * nv, &mu, nu * nv, &mv, nu * nv, &muv));
+    PetscCall(PetscArraycpy(tu, bu, nu));
+    PetscCall(PetscArraycpy(tv, bv, nv));
+  }
+  eps = fit->fdEps * PetscMin(MinSpacing(nu, tu), MinSpacing(nv, tv));
+  g   = (GFun){n, u, v, l, fit->kernel * (umx - umn), fit->kernel * (vmx - vmn), fit->truncation, 2, !fit->symmetrize ? -1 : ci == 1 ? 0
+                                                                                                                         : cj == 1   ? 1
+                                                                                                                                     : -1,
+               0};
+  for (PetscInt j = 0; j < nv; j++)
+    for (PetscInt i = 0; i < nu; i++) {
+      const PetscInt  k = j * nu + i;
+      const PetscReal x = tu[i], y = tv[j];
+      PetscReal       gpp, gpm, gmp, gmm, gp0, gm0, g0p, g0m;
+      PetscCall(G(fit, &g, t, x, y, &p[k]));
+      PetscCall(G(fit, &g, t, x + eps, y, &gp0));
+      PetscCall(G(fit, &g, t, x - eps, y, &gm0));
+      PetscCall(G(fit, &g, t, x, y + eps, &g0p));
+      PetscCall(G(fit, &g, t, x, y - eps, &g0m));
+      PetscCall(G(fit, &g, t, x + eps, y + eps, &gpp));
+      PetscCall(G(fit, &g, t, x + eps, y - eps, &gpm));
+      PetscCall(G(fit, &g, t, x - eps, y + eps, &gmp));
+      PetscCall(G(fit, &g, t, x - eps, y - eps, &gmm));
+      mu[k]  = (gp0 - gm0) / (2 * eps);
+      mv[k]  = (g0p - g0m) / (2 * eps);
+      muv[k] = (gpp - gpm - gmp + gmm) / (4 * eps * eps);
+    }
+  PetscCall(PetscLogEventEnd(HYLC_FitMLS, fit, 0, 0, 0));
+  PetscCall(PetscLogEventBegin(HYLC_FitMonotone, fit, 0, 0, 0));
+  if (fit->quasiconvex && !poisson) {
+    PetscInt jmin = j0;
+    if (cj >= 3) /* bending axis: the minimum along the u = 0 line */
+      for (PetscInt j = 0; j < nv; j++)
+        if (p[j * nu + i0] < p[jmin * nu + i0] || (p[j * nu + i0] == p[jmin * nu + i0] && j < jmin)) jmin = j;
+    PetscCall(HylcQuasiconvex2D(nu, nv, tu, tv, i0, jmin, fit->reg, fit->compat, p, mu, mv));
+  }
+  HylcFitClampBoundary2D(nu, nv, fit->endSlope, mu, mv);
+  PetscCall(HylcMonotoneBicubic(nu, nv, tu, tv, p, mu, mv, muv, PETSC_TRUE, fit->compat));
+  HylcFitZeroBoundaryMixed2D(nu, nv, muv);
+  HylcFitResidualize2D(nu, nv, i0, j0, p, mu, mv, muv);
+  if (fit->zeroCompression && !poisson) HylcFitZeroCompression2D(nu, nv, tu, tv, (PetscBool)(ci == 0 || ci == 2), (PetscBool)(cj == 0 || cj == 2), fit->zeroStrict, p, mu, mv, muv);
+  PetscCall(PetscLogEventEnd(HYLC_FitMonotone, fit, 0, 0, 0));
+  s->k0  = ci;
+  s->k1  = cj;
+  s->nu  = nu;
+  s->nv  = nv;
+  s->tu  = tu;
+  s->tv  = tv;
+  s->p   = p;
+  s->mu  = mu;
+  s->mv  = mv;
+  s->muv = muv;
+  s->ext = HYLC_EXT_LINEAR;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcFitCompute - Runs Algorithm C5 on the data: normalisation, f0, then every term with samples
+  (Algorithms C6, C7). A requested term without samples is left out with a warning; a term with fewer
+  than -fit_min_samples_1d/-2d samples is an error. Not collective. Log events FIT_Run, FIT_Term,
+  FIT_MLS (knots, MLS, finite differences) and FIT_Monotone (marching, monotone projections,
+  residualization).
+@*/
+PetscErrorCode HylcFitCompute(HylcFit fit)
+{
+  MPI_Comm comm;
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(fit, HYLC_FIT_CLASSID, 1);
+  if (fit->computed) PetscFunctionReturn(PETSC_SUCCESS);
+  comm = PetscObjectComm((PetscObject)fit);
+  PetscCall(HylcFitSetUp(fit));
+  PetscCall(HylcFitResetResults_Private(fit));
+  PetscCall(PetscLogEventBegin(HYLC_FitRun, fit, 0, 0, 0));
+  /* normalisation: max |value| per strain column over the data (an all-zero column by 1) */
+  for (int i = 0; i < 6; i++) {
+    PetscReal mx = 0;
+    for (PetscInt k = 0; k < fit->n; k++) mx = PetscMax(mx, PetscAbsReal(fit->z[6 * k + i]));
+    fit->scale[i] = mx > 0 ? mx : 1;
+  }
+  for (PetscInt k = 0; k < fit->n; k++)
+    PetscCheck(fit->z[6 * k + 4] == 0, comm, PETSC_ERR_USER_INPUT, "%s: row %" PetscInt_FMT " has II01 = %g; the sampling plan of C4 (and this fit) has II01 = 0", fit->source, fit->row[k], (double)fit->z[6 * k + 4]);
+  /* f0: psi of the row nearest to the origin in normalised coordinates, ties to the lowest row */
+  {
+    PetscReal best = PETSC_MAX_REAL;
+    for (PetscInt k = 0; k < fit->n; k++) {
+      PetscReal d = 0;
+      for (int i = 0; i < 6; i++) d += PetscSqr(fit->z[6 * k + i] / fit->scale[i]);
+      if (d < best) {
+        best       = d;
+        fit->f0row = k;
+      }
+    }
+    fit->f0 = fit->psi[fit->f0row];
+  }
+  for (int t = 1; t < HYLC_PLAN_NTERM; t++) {
+    PetscInt   n = 0;
+    PetscReal *u = NULL, *v = NULL, *l = NULL;
+    int        ci = t - 1, cj = -1;
+    if (!((fit->terms >> t) & 1)) continue;
+    if (t >= 6) HylcPlanPair(t, &ci, &cj);
+    PetscCall(PetscLogEventBegin(HYLC_FitTerm, fit, 0, 0, 0));
+    PetscCall(Gather(fit, t, ci, cj, &n, &u, &v, &l));
+    if (n == 0)
+      PetscCall(PetscPrintf(comm, "[fit] warning: term %s has no samples in %s: left out of the model\n", HylcPlanTermName(t), fit->source));
+    else {
+      const PetscInt need = t <= 5 ? fit->min1 : fit->min2;
+      if (n < need) PetscCall(PetscFree3(u, v, l));
+      PetscCheck(n >= need, comm, PETSC_ERR_USER_INPUT, "%s: term %s has only %" PetscInt_FMT " usable samples (at least %" PetscInt_FMT " needed: -fit_min_samples_%s, or leave the term out with -fit_terms)", fit->source, HylcPlanTermName(t), n, need, t <= 5 ? "1d" : "2d");
+      if (t <= 5)
+        PetscCall(Fit1D(fit, ci, n, u, l));
+      else
+        PetscCall(Fit2D(fit, t, n, u, v, l));
+      fit->has[t] = PETSC_TRUE;
+    }
+    PetscCall(PetscFree3(u, v, l));
+    PetscCall(PetscLogEventEnd(HYLC_FitTerm, fit, 0, 0, 0));
+  }
+  fit->computed = PETSC_TRUE;
+  /* statistics of the model against each term's data */
+  for (int t = 1; t < HYLC_PLAN_NTERM; t++) {
+    PetscReal ss = 0, rng = 0;
+    PetscInt  cnt  = 0;
+    int       c[2] = {t - 1, -1};
+    if (!fit->has[t]) continue;
+    if (t >= 6) HylcPlanPair(t, &c[0], &c[1]);
+    for (int a = 0; a < 2; a++) {
+      fit->statMin[t][a] = PETSC_MAX_REAL;
+      fit->statMax[t][a] = PETSC_MIN_REAL;
+    }
+    for (PetscInt k = 0; k < fit->n; k++) {
+      PetscReal f;
+      if (fit->term[k] != t) continue;
+      PetscCall(HylcFitEvaluateAxes(fit, fit->z + 6 * k, &f));
+      ss += PetscSqr(f - fit->psi[k]);
+      rng = PetscMax(rng, PetscAbsReal(fit->psi[k] - fit->f0));
+      cnt++;
+      for (int a = 0; a < 2; a++) {
+        if (c[a] < 0) continue;
+        const PetscReal x  = fit->z[6 * k + HylcPlanStrainIndex(c[a])];
+        fit->statMin[t][a] = PetscMin(fit->statMin[t][a], x);
+        fit->statMax[t][a] = PetscMax(fit->statMax[t][a], x);
+      }
+    }
+    fit->statN[t]     = cnt;
+    fit->statRms[t]   = PetscSqrtReal(ss / PetscMax(cnt, 1));
+    fit->statRange[t] = rng;
+  }
+  PetscCall(PetscLogEventEnd(HYLC_FitRun, fit, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
