@@ -5,7 +5,7 @@
    coordinate, index i; v = second, index j), as in include/hylc/spline.h.
    Knots are strictly increasing. No allocation beyond small stack buffers is assumed by callers: the
    2D kernels allocate their own scratch (they return non-zero only when that fails). */
-#include <petscsys.h>
+#include <hylc/sys.h>
 
 /* How the 1D slopes are limited on an interval with secant d != 0, alpha = m_i/d, beta = m_{i+1}/d:
    CIRCLE: alpha^2 + beta^2 <= 9 (Fritsch-Carlson, the authors' code); BOX: 0 <= alpha, beta <= 3
@@ -49,6 +49,10 @@ PETSC_EXTERN PetscErrorCode HylcQuasiconvex2D(PetscInt nu, PetscInt nv, const Pe
    (and of mu along v) to (S40)-(S41) with the six-case projection of Fig. S6, forward then backward
    along each row (columns use the old values); sweep 3 clamps muv to (S42a-d) of its adjacent cells.
    extrapolate = PETSC_TRUE uses the extrapolation-side bound 0 of §S3.5 on the boundary cells.
-   The interpolant is then monotone in u on every cell whose data are monotone in u along both of its
-   edges, and likewise in v. */
+   With compat = PAPER the interpolant is then monotone in u on every cell whose data are monotone in u
+   along both of its horizontal edges (an edge with equal end values counts as either sense), and
+   likewise in v; with extrapolate and muv = 0 on the boundary this extends to the linearly
+   extrapolated strips. With compat = AUTHORS only the v statement holds (tests/unit/test_monotone.c).
+   Sweep 2 repeats its forward/backward pair on a line while an edge is still violated (never needed
+   in the tests; a safety net). */
 PETSC_EXTERN PetscErrorCode HylcMonotoneBicubic(PetscInt nu, PetscInt nv, const PetscReal tu[], const PetscReal tv[], const PetscReal p[], PetscReal mu[], PetscReal mv[], PetscReal muv[], PetscBool extrapolate, HylcFitCompat compat);

@@ -9,15 +9,17 @@ PetscInt HylcSplineLocate(PetscInt n, const PetscReal t[], PetscReal x)
   if (x >= t[n - 1]) return n - 1;
   while (hi - lo > 1) { /* invariant: t[lo] <= x < t[hi] */
     const PetscInt mid = (lo + hi) / 2;
-    if (x >= t[mid]) lo = mid;
-    else hi = mid;
+    if (x >= t[mid])
+      lo = mid;
+    else
+      hi = mid;
   }
   return lo;
 }
 
 PetscInt HylcHermiteBasis(PetscInt n, const PetscReal t[], HylcSplineExt ext, PetscReal x, PetscReal a[2], PetscReal b[2], PetscReal da[2], PetscReal db[2], PetscReal dda[2], PetscReal ddb[2])
 {
-  const PetscInt loc = HylcSplineLocate(n, t, x);
+  const PetscInt loc  = HylcSplineLocate(n, t, x);
   PetscReal      A[2] = {0, 0}, B[2] = {0, 0}, dA[2] = {0, 0}, dB[2] = {0, 0}, ddA[2] = {0, 0}, ddB[2] = {0, 0};
   PetscInt       i;
 

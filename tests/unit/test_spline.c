@@ -60,7 +60,7 @@ int main(void)
       m[i] = 4 * HylcTestRand(&st) - 2;
     }
     for (int i = 0; i < 6; i++) {
-      double dl, dr;
+      double       dl, dr;
       const double fl = HylcHermite1DEval(6, t, p, m, HYLC_EXT_LINEAR, t[i] - 1e-12, &dl, NULL);
       const double fr = HylcHermite1DEval(6, t, p, m, HYLC_EXT_LINEAR, t[i], &dr, NULL);
       HYLC_CHECK(fabs(fr - p[i]) < 1e-15 && fabs(dr - m[i]) < 1e-13, "node %d interpolation", i);
