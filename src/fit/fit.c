@@ -35,6 +35,7 @@ PetscErrorCode HylcFitCreate(MPI_Comm comm, HylcFit *out)
   fit->zeroStrict      = PETSC_FALSE;
   fit->kernel          = 0.15;
   fit->truncation      = 3;
+  fit->mlsGrow         = 1.5;
   fit->fdEps           = 0.1;
   fit->flatTol         = 1e-8;
   fit->endSlope        = 1e-8;
@@ -165,6 +166,7 @@ static PetscErrorCode KnotPairOption(PetscOptionItems *PetscOptionsObject, HylcF
 . -fit_knots2d_bend_factor, -fit_knots2d_bend_stretch, -fit_knots2d_bend_symmetric - 2D bending-pair knots
 . -fit_compat <paper>              - paper or authors (the two departures of method-spec §9.1)
 . -fit_mls_kernel <0.15>, -fit_mls_truncation <3> - MLS kernel (fraction of span), kernel / sigma
+. -fit_mls_grow <1.5>             - kernel growth where the MLS is singular (<= 1: error)
 . -fit_fd_eps <0.1>                - FD step as a fraction of the smallest knot spacing
 . -fit_knots1d <11>, -fit_knots1d_factor <0.95> - 1D knots
 . -fit_knots2d_factor <0.9>, -fit_knots2d_stretch <2,7>, -fit_knots2d_poisson <4,7>, -fit_knots2d_symmetric <5,5>
@@ -199,6 +201,7 @@ PetscErrorCode HylcFitSetFromOptions(HylcFit fit)
   PetscCall(PetscOptionsReal("-fit_end_slope", "Boundary slopes at least this outward (increasing linear extrapolation)", "HylcFitSetFromOptions", fit->endSlope, &fit->endSlope, NULL));
   PetscCall(PetscOptionsReal("-fit_mls_kernel", "MLS kernel radius as a fraction of the term's data span per axis", "HylcFitSetFromOptions", fit->kernel, &fit->kernel, NULL));
   PetscCall(PetscOptionsReal("-fit_mls_truncation", "MLS kernel radius / Gaussian sigma (weights are zero beyond the radius)", "HylcFitSetFromOptions", fit->truncation, &fit->truncation, NULL));
+  PetscCall(PetscOptionsReal("-fit_mls_grow", "Where the MLS has too few samples in its kernel (singular), enlarge the kernel by this factor until it has (with a warning); <= 1: error", "HylcFitSetFromOptions", fit->mlsGrow, &fit->mlsGrow, NULL));
   PetscCall(PetscOptionsBool("-fit_symmetrize_sa", "Symmetrize the MLS in sa: g(u) = (g(u) + g(-u)) / 2 in symlog space", "HylcFitSetFromOptions", fit->symmetrize, &fit->symmetrize, NULL));
   PetscCall(PetscOptionsReal("-fit_fd_eps", "Central-difference step for the Hermite slopes, as a fraction of the smallest knot spacing", "HylcFitSetFromOptions", fit->fdEps, &fit->fdEps, NULL));
   PetscCall(PetscOptionsInt("-fit_knots1d", "Knots of a 1D term", "HylcFitSetFromOptions", fit->nk1, &fit->nk1, NULL));

@@ -8,7 +8,8 @@ typedef struct {
   const PetscReal *u, *v, *l; /* normalised coordinates (v: 2D only) and symlog(psi) */
   PetscReal        ku, kv, truncation;
   int              dim, sym; /* sym: -1 none, 0 in u, 1 in v */
-  int              count;    /* samples in the kernel of the last failed evaluation */
+  PetscInt         grown;    /* evaluations that needed a larger kernel */
+  PetscReal        growMax;  /* the largest kernel factor used */
 } GFun;
 
 static int GMls(const GFun *g, PetscReal x, PetscReal y, PetscReal *val)
@@ -16,33 +17,59 @@ static int GMls(const GFun *g, PetscReal x, PetscReal y, PetscReal *val)
   return g->dim == 1 ? HylcMLS1D(g->n, g->u, g->l, g->ku, g->truncation, x, val) : HylcMLS2D(g->n, g->u, g->v, g->l, g->ku, g->kv, g->truncation, x, y, val);
 }
 
-/* g(x, y); returns -1 when the MLS system at (x, y) (or its mirror) is singular */
-static int GEval(const GFun *g, PetscReal x, PetscReal y, PetscReal *val)
+/* g(x, y) with the kernel radii scaled by f; returns -1 when the MLS system at (x, y) (or its mirror)
+   is singular */
+static int GEval(const GFun *g, PetscReal f, PetscReal x, PetscReal y, PetscReal *val)
 {
+  GFun      h = *g;
   PetscReal a, b;
-  if (GMls(g, x, y, &a) < 0) return -1;
+  h.ku *= f;
+  h.kv *= f;
+  if (GMls(&h, x, y, &a) < 0) return -1;
   if (g->sym == 0) {
-    if (GMls(g, -x, y, &b) < 0) return -1;
+    if (GMls(&h, -x, y, &b) < 0) return -1;
     a = 0.5 * (a + b);
   } else if (g->sym == 1) {
-    if (GMls(g, x, -y, &b) < 0) return -1;
+    if (GMls(&h, x, -y, &b) < 0) return -1;
     a = 0.5 * (a + b);
   }
   *val = HylcSymexp(a);
   return 0;
 }
 
-static PetscErrorCode G(HylcFit fit, const GFun *g, int t, PetscReal x, PetscReal y, PetscReal *val)
+/* g(x, y); where the MLS is singular (too few samples in the kernel: sparse data, failed samples) the
+   kernel is enlarged by -fit_mls_grow until it is not (counted in g->grown), or it is an error */
+static PetscErrorCode G(HylcFit fit, GFun *g, int t, PetscReal x, PetscReal y, PetscReal *val)
 {
+  PetscReal f = 1;
+
   PetscFunctionBegin;
-  if (GEval(g, x, y, val)) {
+  if (!GEval(g, 1, x, y, val)) PetscFunctionReturn(PETSC_SUCCESS);
+  if (fit->mlsGrow > 1)
+    for (f = fit->mlsGrow; f < 2.0 / fit->kernel; f *= fit->mlsGrow)
+      if (!GEval(g, f, x, y, val)) {
+        g->grown++;
+        g->growMax = PetscMax(g->growMax, f);
+        PetscFunctionReturn(PETSC_SUCCESS);
+      }
+  {
     PetscInt cnt = 0;
     for (PetscInt i = 0; i < g->n; i++)
       if (PetscAbsReal(g->u[i] - x) < g->ku && (g->dim == 1 || PetscAbsReal(g->v[i] - y) < g->kv)) cnt++;
     if (g->dim == 1)
-      SETERRQ(PetscObjectComm((PetscObject)fit), PETSC_ERR_USER_INPUT, "%s: term %s: the MLS at x = %g (normalised) is singular: %" PetscInt_FMT " samples within the kernel radius %g (the quadratic basis needs 3 distinct ones); the term's %" PetscInt_FMT " samples are too sparse for -fit_mls_kernel %g", fit->source, HylcPlanTermName(t), (double)x, cnt, (double)g->ku, g->n, (double)fit->kernel);
-    SETERRQ(PetscObjectComm((PetscObject)fit), PETSC_ERR_USER_INPUT, "%s: term %s: the MLS at (u, v) = (%g, %g) (normalised) is singular: %" PetscInt_FMT " samples within the kernel box %g x %g (the basis needs 8 in general position); the term's %" PetscInt_FMT " samples are too sparse for -fit_mls_kernel %g", fit->source, HylcPlanTermName(t), (double)x, (double)y, cnt, (double)g->ku, (double)g->kv, g->n, (double)fit->kernel);
+      SETERRQ(PetscObjectComm((PetscObject)fit), PETSC_ERR_USER_INPUT, "%s: term %s: the MLS at x = %g (normalised) is singular: %" PetscInt_FMT " samples within the kernel radius %g (the quadratic basis needs 3 distinct ones)%s; the term's %" PetscInt_FMT " samples are too sparse for -fit_mls_kernel %g", fit->source, HylcPlanTermName(t), (double)x, cnt, (double)g->ku,
+              fit->mlsGrow > 1 ? ", also with the kernel enlarged to the whole range" : " (-fit_mls_grow 1.5 would enlarge it)", g->n, (double)fit->kernel);
+    SETERRQ(PetscObjectComm((PetscObject)fit), PETSC_ERR_USER_INPUT, "%s: term %s: the MLS at (u, v) = (%g, %g) (normalised) is singular: %" PetscInt_FMT " samples within the kernel box %g x %g (the basis needs 8 in general position)%s; the term's %" PetscInt_FMT " samples are too sparse for -fit_mls_kernel %g", fit->source, HylcPlanTermName(t), (double)x, (double)y, cnt, (double)g->ku, (double)g->kv,
+            fit->mlsGrow > 1 ? ", also with the kernel enlarged to the whole range" : " (-fit_mls_grow 1.5 would enlarge it)", g->n, (double)fit->kernel);
   }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* the warning after a term whose MLS needed a larger kernel somewhere */
+static PetscErrorCode GrowWarning(HylcFit fit, const GFun *g, int t, PetscInt evals)
+{
+  PetscFunctionBegin;
+  if (g->grown) PetscCall(PetscPrintf(PetscObjectComm((PetscObject)fit), "[fit] warning: term %s: too few samples within the MLS kernel at %" PetscInt_FMT " of %" PetscInt_FMT " evaluation points; the kernel was enlarged there (up to %g x -fit_mls_kernel)\n", HylcPlanTermName(t), g->grown, evals, (double)g->growMax));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -105,7 +132,7 @@ static PetscErrorCode Fit1D(HylcFit fit, int c, PetscInt n, const PetscReal u[],
   i0 = HylcFitKnots1D(mn, mx, fit->factor1, nk, tk);
   PetscCheck(i0 >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "1D knots");
   eps = fit->fdEps * MinSpacing(nk, tk);
-  g   = (GFun){n, u, NULL, l, fit->kernel * (mx - mn), 0, fit->truncation, 1, (c == 1 && fit->symmetrize) ? 0 : -1, 0};
+  g   = (GFun){n, u, NULL, l, fit->kernel * (mx - mn), 0, fit->truncation, 1, (c == 1 && fit->symmetrize) ? 0 : -1, 0, 1};
   for (PetscInt i = 0; i < nk; i++) {
     PetscReal a, b;
     PetscCall(G(fit, &g, t, tk[i], 0, &p[i]));
@@ -113,6 +140,7 @@ static PetscErrorCode Fit1D(HylcFit fit, int c, PetscInt n, const PetscReal u[],
     PetscCall(G(fit, &g, t, tk[i] - eps, 0, &b));
     m[i] = (a - b) / (2 * eps);
   }
+  PetscCall(GrowWarning(fit, &g, t, 3 * nk));
   PetscCall(PetscLogEventEnd(HYLC_FitMLS, fit, 0, 0, 0));
   PetscCall(PetscLogEventBegin(HYLC_FitMonotone, fit, 0, 0, 0));
   if (fit->quasiconvex) {
@@ -180,10 +208,12 @@ static PetscErrorCode Fit2D(HylcFit fit, int t, PetscInt n, const PetscReal u[],
     PetscCall(PetscArraycpy(tv, bv, nv));
   }
   eps = fit->fdEps * PetscMin(MinSpacing(nu, tu), MinSpacing(nv, tv));
-  g   = (GFun){n, u, v, l, fit->kernel * (umx - umn), fit->kernel * (vmx - vmn), fit->truncation, 2, !fit->symmetrize ? -1 : ci == 1 ? 0
-                                                                                                                         : cj == 1   ? 1
-                                                                                                                                     : -1,
-               0};
+  {
+    const int sym = !fit->symmetrize ? -1 : ci == 1 ? 0
+                                        : cj == 1   ? 1
+                                                    : -1;
+    g             = (GFun){n, u, v, l, fit->kernel * (umx - umn), fit->kernel * (vmx - vmn), fit->truncation, 2, sym, 0, 1};
+  }
   for (PetscInt j = 0; j < nv; j++)
     for (PetscInt i = 0; i < nu; i++) {
       const PetscInt  k = j * nu + i;
@@ -202,6 +232,7 @@ static PetscErrorCode Fit2D(HylcFit fit, int t, PetscInt n, const PetscReal u[],
       mv[k]  = (g0p - g0m) / (2 * eps);
       muv[k] = (gpp - gpm - gmp + gmm) / (4 * eps * eps);
     }
+  PetscCall(GrowWarning(fit, &g, t, 9 * nu * nv));
   PetscCall(PetscLogEventEnd(HYLC_FitMLS, fit, 0, 0, 0));
   PetscCall(PetscLogEventBegin(HYLC_FitMonotone, fit, 0, 0, 0));
   if (fit->quasiconvex && !poisson) {

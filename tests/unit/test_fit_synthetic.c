@@ -11,48 +11,11 @@
 #include <hylc/fit.h>
 #include <hylc/plan.h>
 #include "hylctest.h"
+#include "fittest.h"
 #include <string.h>
 
-static const double V[5] = {1.0, 0.75, 1.0, 170, 170}; /* woven 1D limits: the normalisation */
-
-static double Pos3(double x) { return x > 0 ? x * x * x : 0; }
-
-/* Psi of the synthetic material: convex terms per coordinate (a curled bending minimum at S3 = 0.3),
-   a Poisson-like coupling of (sx, sy) and mild couplings that vanish in compression */
-static double Psi(const double z[6])
-{
-  const double sx = z[0] / V[0], sa = z[1] / V[1], sy = z[2] / V[2], bx = z[3] / V[3], by = z[5] / V[4];
-  double       f = 0.1;
-  f += 0.3 * sx * sx + 0.05 * sx * sx * sx + 0.25 * sy * sy + 0.03 * sy * sy * sy;
-  f += 0.2 * sa * sa + 0.03 * sa * sa * sa * sa;
-  f += 0.04 * ((bx - 0.3) * (bx - 0.3) - 0.09) + 0.03 * by * by;
-  f += -0.03 * sx * sy;
-  f += 0.1 * Pos3(sx) * sa * sa + 0.05 * sa * sa * Pos3(sy) + 0.02 * Pos3(sx) * bx * bx + 0.03 * sa * sa * by * by + 0.01 * sa * sa * bx * bx;
-  return f;
-}
-
-/* the C4 plan of the woven family with n1 1D samples and n2^2 2D samples, optionally without a term */
-static void MakeData(int n1, int n2, int dropTerm, PetscInt *n, PetscReal **z, PetscReal **psi, PetscInt **term)
-{
-  HylcPlan plan;
-  HylcPlanDefaults("woven", 1.0, &plan);
-  plan.n1 = n1;
-  plan.n2 = n2;
-  if (dropTerm > 0) plan.terms &= ~(1 << dropTerm);
-  const long N = HylcPlanSize(&plan);
-  *z           = malloc(sizeof(PetscReal) * 6 * N);
-  *psi         = malloc(sizeof(PetscReal) * N);
-  *term        = malloc(sizeof(PetscInt) * N);
-  for (long k = 0; k < N; k++) {
-    double zz[6];
-    int    t;
-    HylcPlanSample(&plan, k, zz, &t);
-    for (int i = 0; i < 6; i++) (*z)[6 * k + i] = zz[i];
-    (*psi)[k]  = Psi(zz);
-    (*term)[k] = t;
-  }
-  *n = (PetscInt)N;
-}
+#define V FitTestV
+#define MakeData(n1, n2, drop, n, z, psi, term) FitTestMakeData("woven", n1, n2, drop, n, z, psi, term)
 
 /* fits the data with the given options; checks accuracy and the structural properties */
 static PetscErrorCode Check(const char *label, const char *options, PetscBool strict, double tol, PetscBool inside)
@@ -242,7 +205,7 @@ static PetscErrorCode Run(void)
     PetscCall(ExpectError("II01", n, z, psi, term, "", "II01"));
     z[6 * 5 + 4] = 0;
     PetscCall(ExpectError("few", n, z, psi, term, "-fit_min_samples_1d 200", "only 150 usable samples"));
-    PetscCall(ExpectError("sparse", n, z, psi, term, "-fit_mls_kernel 0.005", "singular"));
+    PetscCall(ExpectError("sparse", n, z, psi, term, "-fit_mls_kernel 0.005 -fit_mls_grow 1", "singular"));
     free(z);
     free(psi);
     free(term);
