@@ -3,7 +3,7 @@
 # Does nothing (quickly) when everything is present.  Needs root or sudo to install.
 #   HYLC_NO_INSTALL=1  only check, never install
 set -eu
-pkgs=(petsc-dev libopenmpi-dev openmpi-bin libhdf5-openmpi-dev libmetis-dev hdf5-tools pkg-config make gcc valgrind python3-h5py)
+pkgs=(petsc-dev libopenmpi-dev openmpi-bin libhdf5-openmpi-dev libmetis-dev hdf5-tools pkg-config make gcc valgrind python3-h5py python3-matplotlib)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")

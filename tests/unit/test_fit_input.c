@@ -256,9 +256,53 @@ static PetscErrorCode Run(void)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* -test_write_samples <path>: only writes the synthetic samples file (150 1D samples, 20 x 20 2D grids,
+   all converged, the plain-weave generator's pattern as /reference) for tests/regression/fit_*.sh */
+static PetscErrorCode WriteSamples(const char path[])
+{
+  PetscInt             n, *term;
+  PetscReal           *z, *psi;
+  HylcSampleRecord    *recs;
+  unsigned char       *done;
+  HylcPattern          pat;
+  HylcPatternGenParams g;
+  HylcYarnModel        model;
+
+  PetscFunctionBeginUser;
+  FitTestMakeData("woven", 150, 20, -1, &n, &z, &psi, &term);
+  PetscCall(PetscCalloc2(n, &recs, n, &done));
+  for (PetscInt k = 0; k < n; k++) {
+    recs[k].index = k;
+    recs[k].term  = (int)term[k];
+    for (int i = 0; i < 6; i++) recs[k].z[i] = z[6 * k + i];
+    recs[k].psi = psi[k];
+    done[k]     = 1;
+  }
+  PetscCall(HylcPatternCreate(PETSC_COMM_SELF, &pat));
+  PetscCall(HylcPatternGenParamsDefault(&g));
+  PetscCall(HylcPatternGenerate(pat, HYLCPATTERNPLAIN, &g));
+  PetscCall(HylcYarnModelDefault(&model));
+  PetscCall(HylcSamplesWriteHDF5(path, n, recs, done, pat, &model, "-test_write_samples"));
+  PetscCall(HylcPatternDestroy(&pat));
+  PetscCall(PetscFree2(recs, done));
+  free(z);
+  free(psi);
+  free(term);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 int main(int argc, char **argv)
 {
+  char      path[PETSC_MAX_PATH_LEN];
+  PetscBool write;
+
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
+  PetscCall(PetscOptionsGetString(NULL, NULL, "-test_write_samples", path, sizeof(path), &write));
+  if (write) {
+    PetscCall(WriteSamples(path));
+    PetscCall(PetscFinalize());
+    return 0;
+  }
   PetscCall(Run());
   PetscCall(PetscFinalize());
   return HYLC_TEST_RESULT();

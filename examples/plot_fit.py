@@ -1,0 +1,238 @@
+#!/usr/bin/python3
+"""Pictures of a material fit, in the spirit of Fig. S4 of the HYLC supplement.
+
+    /usr/bin/python3 examples/plot_fit.py SAMPLES MODEL OUTDIR
+
+SAMPLES  the samples file of hylc-sample (HDF5; rows with status 0 are used) or the paper's raw
+         layout (a directory with data.txt, or data.txt itself; 150 x 5 1D rows, then 9 n2 x n2 grids)
+MODEL    the fitted material: JSON (ARCSim-HYLC layout) or HDF5 (docs/material.md), as written by
+         hylc-fit -fit_json / -fit_output
+OUTDIR   created if needed; receives one PNG per term:
+         1D terms   <term>.png: the samples (Psi against the strain) and the model f0 + f_k(s / sigma_k)
+         2D terms   <term>.png: three panels -- the samples, the model f0 + f_i + f_j + f_ij on a grid over
+                    the samples' range, and the residual model - data at the samples
+         and index.txt listing them with the RMS residual of each term.
+
+Needs Debian's python3-numpy, python3-h5py and python3-matplotlib (use /usr/bin/python3: a pyenv
+python3 first on PATH will not see them). The spline evaluation is the cubic / bicubic Hermite form
+with linear extrapolation of include/hylc/spline.h (ARCSim-HYLC's HermiteSpline1D/2D).
+"""
+import json
+import os
+import sys
+
+import numpy as np
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+TERMS = ["zero", "sx", "sa", "sy", "II00", "II11", "sx-sa", "sx-sy", "sx-II00", "sx-II11", "sa-sy",
+         "sa-II00", "sa-II11", "sy-II00", "sy-II11"]
+PAIRS = [(0, 1), (0, 2), (0, 3), (0, 4), (1, 2), (1, 3), (1, 4), (2, 3), (2, 4)]
+COORD = ["sx", "sa", "sy", "II00", "II11"]
+STRAIN_INDEX = [0, 1, 2, 3, 5]  # position of coordinate c in (sx, sa, sy, II00, II01, II11)
+UNITS = ["", "", "", " [1/m]", " [1/m]"]
+
+
+# ---------------------------------------------------------------- Hermite splines (linear extrapolation)
+def _basis(t, x):
+    """Weights (a0, a1) of the values and (b0, b1) of the slopes at knots i, i+1 for points x."""
+    t = np.asarray(t, float)
+    x = np.asarray(x, float)
+    n = len(t)
+    i = np.clip(np.searchsorted(t, x, side="right") - 1, 0, n - 2)
+    h = t[i + 1] - t[i]
+    s = (x - t[i]) / h
+    a0 = 2 * s**3 - 3 * s**2 + 1
+    a1 = -2 * s**3 + 3 * s**2
+    b0 = (s**3 - 2 * s**2 + s) * h
+    b1 = (s**3 - s**2) * h
+    left, right = x < t[0], x >= t[-1]
+    a0 = np.where(left, 1.0, np.where(right, 0.0, a0))
+    a1 = np.where(left, 0.0, np.where(right, 1.0, a1))
+    b0 = np.where(left, x - t[0], np.where(right, 0.0, b0))
+    b1 = np.where(left, 0.0, np.where(right, x - t[-1], b1))
+    return i, (a0, a1), (b0, b1)
+
+
+def eval1d(s, x):
+    i, a, b = _basis(s["t"], x)
+    p, m = np.asarray(s["p"], float), np.asarray(s["m"], float)
+    return a[0] * p[i] + a[1] * p[i + 1] + b[0] * m[i] + b[1] * m[i + 1]
+
+
+def eval2d(s, u, v):
+    nu = len(s["tu"])
+    iu, au, bu = _basis(s["tu"], u)
+    iv, av, bv = _basis(s["tv"], v)
+    P, MU, MV, MUV = (np.asarray(s[k], float) for k in ("p", "mu", "mv", "muv"))
+    f = 0.0
+    for cu in (0, 1):
+        for cv in (0, 1):
+            k = (iv + cv) * nu + (iu + cu)
+            f = f + au[cu] * av[cv] * P[k] + bu[cu] * av[cv] * MU[k] + au[cu] * bv[cv] * MV[k] + bu[cu] * bv[cv] * MUV[k]
+    return f
+
+
+# ---------------------------------------------------------------- inputs
+def load_model(path):
+    """dict with const, scale[5], 1D {k: spline}, 2D {(k0, k1): spline}"""
+    with open(path, "rb") as fh:
+        head = fh.read(8)
+    if head.startswith(b"\x89HDF"):
+        return load_model_h5(path)
+    with open(path) as fh:
+        d = json.load(fh)
+    c = d["coeffs"]
+    return {"const": float(c["const"]), "scale": [float(x) for x in d["strain scale"]],
+            "1D": {int(s["k"]): s for s in c["1D"]}, "2D": {(int(s["k0"]), int(s["k1"])): s for s in c["2D"]}}
+
+
+def load_model_h5(path):
+    """The HDF5 material file (docs/material.md): /material attributes const, strain_scale, and groups of
+    1D terms (t, p, m) and 2D terms (tu, tv, p, mu, mv, muv) with attributes k or k0, k1."""
+    import h5py
+    model = {"1D": {}, "2D": {}}
+    with h5py.File(path, "r") as f:
+        root = f["material"] if "material" in f else f
+        attrs = dict(root.attrs)
+        model["const"] = float(np.ravel(attrs.get("const", attrs.get("f0", 0.0)))[0])
+        model["scale"] = [float(x) for x in np.ravel(attrs.get("strain_scale", attrs.get("strain scale")))]
+
+        def visit(name, obj):
+            if not isinstance(obj, h5py.Group):
+                return
+            a = obj.attrs
+            if "k0" in a and "k1" in a and "tu" in obj:
+                model["2D"][(int(a["k0"]), int(a["k1"]))] = {k: obj[k][()].ravel() for k in ("tu", "tv", "p", "mu", "mv", "muv")}
+            elif "k" in a and "t" in obj:
+                model["1D"][int(a["k"])] = {k: obj[k][()].ravel() for k in ("t", "p", "m")}
+        f.visititems(visit)
+    return model
+
+
+def load_samples(path):
+    """(strain N x 6, psi N, term N) of the usable samples"""
+    if os.path.isdir(path):
+        path = os.path.join(path, "data.txt")
+    with open(path, "rb") as fh:
+        head = fh.read(8)
+    if head.startswith(b"\x89HDF"):
+        import h5py
+        with h5py.File(path, "r") as f:
+            s = f["samples"]
+            ok = s["status"][:] == 0
+            return s["strain"][:][ok], s["psi"][:][ok], s["term"][:][ok]
+    rows = np.loadtxt(path, ndmin=2)
+    n = len(rows)
+    n1 = 0
+    while n1 < n and not np.any(rows[n1, 1:6]):
+        n1 += 1
+    n2 = int(round(np.sqrt((n - 5 * n1) / 9)))
+    if 5 * n1 + 9 * n2 * n2 != n:
+        sys.exit("%s: %d rows are not 5 x %d + 9 x %d^2 (the paper's raw layout)" % (path, n, n1, n2))
+    term = np.concatenate([np.repeat(np.arange(1, 6), n1), np.repeat(np.arange(6, 15), n2 * n2)])
+    return rows[:, :6], rows[:, 6], term
+
+
+# ---------------------------------------------------------------- the model on the axes (II01 = 0)
+def model_psi(model, z):
+    """f0 + 1D terms + 2D terms at strains z (N x 6) with II01 = 0 (the samples of the plan)"""
+    S = [z[:, STRAIN_INDEX[c]] / model["scale"][c] for c in range(5)]
+    f = np.full(len(z), model["const"])
+    for k, s in model["1D"].items():
+        f = f + eval1d(s, S[k])
+    for (k0, k1), s in model["2D"].items():
+        f = f + eval2d(s, S[k0], S[k1])
+    return f
+
+
+def plot_1d(model, z, psi, c, out):
+    x = z[:, STRAIN_INDEX[c]]
+    lo, hi = x.min(), x.max()
+    pad = 0.1 * (hi - lo)
+    xs = np.linspace(lo - pad, hi + pad, 400)
+    zz = np.zeros((len(xs), 6))
+    zz[:, STRAIN_INDEX[c]] = xs
+    fig, ax = plt.subplots(figsize=(5, 3.6))
+    ax.plot(x, psi, ".", ms=3, color="0.4", label="samples")
+    ax.plot(xs, model_psi(model, zz), "-", color="C0", label="fit")
+    if c in model["1D"]:
+        t = np.asarray(model["1D"][c]["t"]) * model["scale"][c]
+        zt = np.zeros((len(t), 6))
+        zt[:, STRAIN_INDEX[c]] = t
+        ax.plot(t, model_psi(model, zt), "o", ms=4, mfc="none", color="C1", label="knots")
+    ax.axvspan(lo, hi, color="0.93", zorder=0)
+    ax.set_xlabel(COORD[c] + UNITS[c])
+    ax.set_ylabel("Psi [J/m^2]")
+    ax.set_title(TERMS[1 + c])
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(out, dpi=110)
+    plt.close(fig)
+
+
+def plot_2d(model, z, psi, t, out):
+    ci, cj = PAIRS[t - 6]
+    x, y = z[:, STRAIN_INDEX[ci]], z[:, STRAIN_INDEX[cj]]
+    fit = model_psi(model, z)
+    X, Y = np.meshgrid(np.linspace(x.min(), x.max(), 120), np.linspace(y.min(), y.max(), 120))
+    zz = np.zeros((X.size, 6))
+    zz[:, STRAIN_INDEX[ci]] = X.ravel()
+    zz[:, STRAIN_INDEX[cj]] = Y.ravel()
+    F = model_psi(model, zz).reshape(X.shape)
+    vmin, vmax = min(psi.min(), F.min()), max(psi.max(), F.max())
+    fig, axs = plt.subplots(1, 3, figsize=(14, 4), constrained_layout=True)
+    sc = axs[0].scatter(x, y, c=psi, s=8, vmin=vmin, vmax=vmax, cmap="viridis")
+    axs[0].set_title(TERMS[t] + ": data")
+    axs[1].contourf(X, Y, F, levels=30, vmin=vmin, vmax=vmax, cmap="viridis")
+    axs[1].contour(X, Y, F, levels=12, colors="k", linewidths=0.4)
+    if (ci, cj) in model["2D"]:
+        s = model["2D"][(ci, cj)]
+        KU, KV = np.meshgrid(np.asarray(s["tu"]) * model["scale"][ci], np.asarray(s["tv"]) * model["scale"][cj])
+        axs[1].plot(KU.ravel(), KV.ravel(), "+", color="w", ms=4)
+    axs[1].set_title("fit (+: knots)")
+    fig.colorbar(sc, ax=axs[1], label="Psi [J/m^2]")
+    r = fit - psi
+    rm = max(np.abs(r).max(), 1e-300)
+    rs = axs[2].scatter(x, y, c=r, s=8, cmap="RdBu_r", vmin=-rm, vmax=rm)
+    axs[2].set_title("fit - data (RMS %.3g)" % np.sqrt(np.mean(r**2)))
+    fig.colorbar(rs, ax=axs[2], label="J/m^2")
+    for ax in axs:
+        ax.set_xlabel(COORD[ci] + UNITS[ci])
+        ax.set_ylabel(COORD[cj] + UNITS[cj])
+    fig.savefig(out, dpi=110)
+    plt.close(fig)
+
+
+def main(argv):
+    if len(argv) != 4 or argv[1] in ("-h", "--help", "-help"):
+        print(__doc__)
+        return 0 if len(argv) == 2 else 2
+    z, psi, term = load_samples(argv[1])
+    model = load_model(argv[2])
+    outdir = argv[3]
+    os.makedirs(outdir, exist_ok=True)
+    lines = []
+    for t in range(1, 15):
+        sel = term == t
+        if not sel.any():
+            lines.append("%-8s no samples" % TERMS[t])
+            continue
+        out = os.path.join(outdir, TERMS[t] + ".png")
+        if t <= 5:
+            plot_1d(model, z[sel], psi[sel], t - 1, out)
+        else:
+            plot_2d(model, z[sel], psi[sel], t, out)
+        rms = np.sqrt(np.mean((model_psi(model, z[sel]) - psi[sel]) ** 2))
+        lines.append("%-8s %-12s %5d samples  RMS residual %.4g J/m^2" % (TERMS[t], os.path.basename(out), sel.sum(), rms))
+    with open(os.path.join(outdir, "index.txt"), "w") as fh:
+        fh.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
