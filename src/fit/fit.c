@@ -83,8 +83,9 @@ static PetscErrorCode ResetData(HylcFit fit)
   PetscFunctionBegin;
   PetscCall(PetscFree4(fit->z, fit->psi, fit->term, fit->row));
   fit->n = fit->nrows = fit->nskipped = 0;
-  fit->dataset                        = PETSC_FALSE;
-  fit->setupcalled                    = PETSC_FALSE;
+  for (int i = 0; i < 6; i++) fit->zabsmax[i] = 0;
+  fit->dataset     = PETSC_FALSE;
+  fit->setupcalled = PETSC_FALSE;
   PetscCall(HylcFitResetResults_Private(fit));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

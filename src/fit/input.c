@@ -90,6 +90,8 @@ static PetscErrorCode ReadSamplesHDF5(HylcFit fit, const char path[])
   for (long k = 0; k < N; k++) {
     const HylcSampleRecord *r = &recs[k];
     if (!done[k]) continue;
+    for (int i = 0; i < 6; i++)
+      if (!PetscIsInfOrNanReal(r->z[i])) fit->zabsmax[i] = PetscMax(fit->zabsmax[i], PetscAbsReal(r->z[i]));
     if (r->status != 0) {
       fit->nskipped++;
       continue;

@@ -280,9 +280,10 @@ PetscErrorCode HylcFitCompute(HylcFit fit)
   PetscCall(HylcFitSetUp(fit));
   PetscCall(HylcFitResetResults_Private(fit));
   PetscCall(PetscLogEventBegin(HYLC_FitRun, fit, 0, 0, 0));
-  /* normalisation: max |value| per strain column over the data (an all-zero column by 1) */
+  /* normalisation: max |value| per strain column over the data (an all-zero column by 1); for a
+     samples file, over every computed row, converged or not: the plan's limits */
   for (int i = 0; i < 6; i++) {
-    PetscReal mx = 0;
+    PetscReal mx = fit->zabsmax[i];
     for (PetscInt k = 0; k < fit->n; k++) mx = PetscMax(mx, PetscAbsReal(fit->z[6 * k + i]));
     fit->scale[i] = mx > 0 ? mx : 1;
   }

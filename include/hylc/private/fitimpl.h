@@ -43,6 +43,7 @@ struct _p_HylcFit {
   PetscReal  radius, restLength, px, py; /* from the samples file's /reference (0 if absent) */
   char       source[PETSC_MAX_PATH_LEN + 64];
   PetscInt   nrows, nskipped; /* rows in the input, rows not used (status != 0) */
+  PetscReal  zabsmax[6];      /* max |strain| over every computed row, converged or not (the plan's range) */
   PetscBool  dataset, setupcalled, computed;
   /* results */
   PetscReal    scale[6], f0;
