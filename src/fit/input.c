@@ -186,10 +186,13 @@ static PetscErrorCode ReadRaw(HylcFit fit, const char data[], const char info[])
       if (!*s || *s == '\n' || *s == '\r') break;
       const double x = strtod(s, &end);
       if (end == s) {
+        char tok[24];
+        PetscCall(PetscStrncpy(tok, s, sizeof(tok)));
+        tok[strcspn(tok, " \t\r\n")] = 0;
         fclose(fp);
         free(line);
         PetscCall(PetscFree3(z, psi, lines));
-        SETERRQ(comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": not a number: '%.20s'", data, lineno, s);
+        SETERRQ(comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": not a number: '%s'", data, lineno, tok);
       }
       if (nv < 8) v[nv] = x;
       nv++;
