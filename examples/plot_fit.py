@@ -91,25 +91,18 @@ def load_model(path):
 
 
 def load_model_h5(path):
-    """The HDF5 material file (docs/material.md): /material attributes const, strain_scale, and groups of
-    1D terms (t, p, m) and 2D terms (tu, tv, p, mu, mv, muv) with attributes k or k0, k1."""
+    """The HDF5 material file (docs/material.md): datasets /constant and /strain_scale, groups /1D/<term>
+    (attribute k; t, p, m) and /2D/<term> (attributes k0, k1; tu, tv and p, mu, mv, muv of shape
+    (len(tv), len(tu)))."""
     import h5py
     model = {"1D": {}, "2D": {}}
     with h5py.File(path, "r") as f:
-        root = f["material"] if "material" in f else f
-        attrs = dict(root.attrs)
-        model["const"] = float(np.ravel(attrs.get("const", attrs.get("f0", 0.0)))[0])
-        model["scale"] = [float(x) for x in np.ravel(attrs.get("strain_scale", attrs.get("strain scale")))]
-
-        def visit(name, obj):
-            if not isinstance(obj, h5py.Group):
-                return
-            a = obj.attrs
-            if "k0" in a and "k1" in a and "tu" in obj:
-                model["2D"][(int(a["k0"]), int(a["k1"]))] = {k: obj[k][()].ravel() for k in ("tu", "tv", "p", "mu", "mv", "muv")}
-            elif "k" in a and "t" in obj:
-                model["1D"][int(a["k"])] = {k: obj[k][()].ravel() for k in ("t", "p", "m")}
-        f.visititems(visit)
+        model["const"] = float(f["constant"][()])
+        model["scale"] = [float(x) for x in np.ravel(f["strain_scale"][()])]
+        for name, g in f.get("1D", {}).items():
+            model["1D"][int(g.attrs["k"])] = {k: g[k][()].ravel() for k in ("t", "p", "m")}
+        for name, g in f.get("2D", {}).items():
+            model["2D"][(int(g.attrs["k0"]), int(g.attrs["k1"]))] = {k: g[k][()].ravel() for k in ("tu", "tv", "p", "mu", "mv", "muv")}
     return model
 
 

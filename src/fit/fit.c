@@ -1,19 +1,26 @@
 /* HylcFit: lifecycle, options, viewer and results of the fitting pipeline (include/hylc/fit.h). */
 #include <hylc/private/fitimpl.h>
+#include <stdarg.h>
+#include <stdio.h>
 
 const char *const HylcFitFamilies[] = {"woven", "knit", "stockinette", "HylcFitFamily", "HYLC_FIT_FAMILY_", NULL};
 
-/* the family's constants (method-spec §9, §S3.4): everything but the stockinette shares one set */
-static void FamilyDefaults(HylcFit fit, HylcFitFamily family)
+/* the family's constants (method-spec §9, §S3.4): everything but the stockinette shares one set; the
+   family is the object's type name */
+static PetscErrorCode FamilyDefaults(HylcFit fit, HylcFitFamily family)
 {
   const PetscBool stock = family == HYLC_FIT_FAMILY_STOCKINETTE;
-  fit->family           = family;
-  fit->reg              = stock ? 1e-2 : 1e-3;
-  fit->factor2bend      = stock ? 0.3 : 0.9;
-  fit->kBendStretch[0]  = 2;
-  fit->kBendStretch[1]  = stock ? 4 : 7;
-  fit->kBendSym[0]      = stock ? 3 : 5;
-  fit->kBendSym[1]      = stock ? 3 : 5;
+
+  PetscFunctionBegin;
+  fit->family          = family;
+  fit->reg             = stock ? 1e-2 : 1e-3;
+  fit->factor2bend     = stock ? 0.3 : 0.9;
+  fit->kBendStretch[0] = 2;
+  fit->kBendStretch[1] = stock ? 4 : 7;
+  fit->kBendSym[0]     = stock ? 3 : 5;
+  fit->kBendSym[1]     = stock ? 3 : 5;
+  PetscCall(PetscObjectChangeTypeName((PetscObject)fit, HylcFitFamilies[family]));
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /*@C
@@ -54,7 +61,7 @@ PetscErrorCode HylcFitCreate(MPI_Comm comm, HylcFit *out)
   fit->min2            = 25;
   fit->terms           = (1 << HYLC_PLAN_NTERM) - 2; /* every term but the zero sample */
   fit->rhoA            = -1;
-  FamilyDefaults(fit, HYLC_FIT_FAMILY_WOVEN);
+  PetscCall(FamilyDefaults(fit, HYLC_FIT_FAMILY_WOVEN));
   *out = fit;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -134,7 +141,7 @@ PetscErrorCode HylcFitSetFamily(HylcFit fit, HylcFitFamily family)
 {
   PetscFunctionBegin;
   PetscValidHeaderSpecific(fit, HYLC_FIT_CLASSID, 1);
-  FamilyDefaults(fit, family);
+  PetscCall(FamilyDefaults(fit, family));
   PetscCall(HylcFitResetResults_Private(fit));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -193,7 +200,7 @@ PetscErrorCode HylcFitSetFromOptions(HylcFit fit)
   PetscCall(PetscOptionsString("-fit_output", "HDF5 material file to write (docs/material.md)", "HylcFitSetOutputs", fit->output, fit->output, sizeof(fit->output), NULL));
   PetscCall(PetscOptionsString("-fit_json", "ARCSim-HYLC JSON material file to write", "HylcFitSetOutputs", fit->json, fit->json, sizeof(fit->json), NULL));
   PetscCall(PetscOptionsEnum("-fit_family", "Pattern family: woven and knit share the constants; stockinette: -fit_reg 1e-2 and coarse 2D bending knots (factor 0.3, 2+4 and 3+3)", "HylcFitSetFamily", HylcFitFamilies, family, &family, &set));
-  if (set) FamilyDefaults(fit, (HylcFitFamily)family);
+  if (set) PetscCall(FamilyDefaults(fit, (HylcFitFamily)family));
   PetscCall(PetscOptionsReal("-fit_reg", "Quasiconvex marching: minimum outward slope p^x_min in J/m^2 per normalised unit (S28)", "HylcFitSetFromOptions", fit->reg, &fit->reg, NULL));
   PetscCall(PetscOptionsBool("-fit_quasiconvex", "Apply the quasiconvex marching (false: the unregularized fits, like rib1_noreg)", "HylcFitSetFromOptions", fit->quasiconvex, &fit->quasiconvex, NULL));
   PetscCall(PetscOptionsEnum("-fit_compat", "paper, or authors: the authors' code's two departures (S42 x-clamp dropped; mv <= -reg on the minimum's row)", "HylcFitSetFromOptions", HylcFitCompats, compat, &compat, NULL));
@@ -409,6 +416,31 @@ PetscErrorCode HylcFitGetTermStats(HylcFit fit, PetscInt t, PetscInt *n, PetscRe
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* C-library formatting (PETSc's printf turns %g of 3.0 into "3."): a line on the viewer, a string */
+static PetscErrorCode Line(PetscViewer viewer, const char fmt[], ...)
+{
+  char    buf[1024];
+  va_list ap;
+
+  PetscFunctionBegin;
+  va_start(ap, fmt);
+  vsnprintf(buf, sizeof(buf), fmt, ap);
+  va_end(ap);
+  PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode Fmt(char buf[], size_t size, const char fmt[], ...)
+{
+  va_list ap;
+
+  PetscFunctionBegin;
+  va_start(ap, fmt);
+  vsnprintf(buf, size, fmt, ap);
+  va_end(ap);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /*@C
   HylcFitView - Prints the settings and, after HylcFitCompute, f0, the strain scale, the area density
   and per term: knots, data range, samples and the RMS residual of the model against the data.
@@ -425,35 +457,35 @@ PetscErrorCode HylcFitView(HylcFit fit, PetscViewer viewer)
   if (!iascii) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PetscObjectPrintClassNamePrefixType((PetscObject)fit, viewer));
   PetscCall(PetscViewerASCIIPushTab(viewer));
-  PetscCall(PetscViewerASCIIPrintf(viewer, "input: %s\n", fit->source[0] ? fit->source : (fit->input[0] ? fit->input : "(none)")));
-  PetscCall(PetscViewerASCIIPrintf(viewer, "family %s, reg %g%s, compat %s, MLS kernel %g of the span (sigma = kernel/%g), FD step %g of the knot spacing\n", HylcFitFamilies[fit->family], (double)fit->reg, fit->quasiconvex ? "" : " (marching off)", HylcFitCompats[fit->compat], (double)fit->kernel, (double)fit->truncation, (double)fit->fdEps));
-  PetscCall(PetscViewerASCIIPrintf(viewer, "knots: 1D %" PetscInt_FMT " x %g; 2D factor %g (bending pairs %g), stretch %" PetscInt_FMT "+%" PetscInt_FMT ", poisson %" PetscInt_FMT "+%" PetscInt_FMT ", symmetric %" PetscInt_FMT "+%" PetscInt_FMT ", bending pairs %" PetscInt_FMT "+%" PetscInt_FMT " / %" PetscInt_FMT "+%" PetscInt_FMT "\n", fit->nk1, (double)fit->factor1, (double)fit->factor2,
-                                   (double)fit->factor2bend, fit->kStretch[0], fit->kStretch[1], fit->kPoisson[0], fit->kPoisson[1], fit->kSym[0], fit->kSym[1], fit->kBendStretch[0], fit->kBendStretch[1], fit->kBendSym[0], fit->kBendSym[1]));
+  PetscCall(Line(viewer, "input: %s\n", fit->source[0] ? fit->source : (fit->input[0] ? fit->input : "(none)")));
+  PetscCall(Line(viewer, "reg %g%s, compat %s, MLS kernel %g of the span (sigma = kernel/%g), FD step %g of the knot spacing\n", (double)fit->reg, fit->quasiconvex ? "" : " (marching off)", HylcFitCompats[fit->compat], (double)fit->kernel, (double)fit->truncation, (double)fit->fdEps));
+  PetscCall(Line(viewer, "knots: 1D %" PetscInt_FMT " x %g; 2D factor %g (bending pairs %g), stretch %" PetscInt_FMT "+%" PetscInt_FMT ", poisson %" PetscInt_FMT "+%" PetscInt_FMT ", symmetric %" PetscInt_FMT "+%" PetscInt_FMT ", bending pairs %" PetscInt_FMT "+%" PetscInt_FMT " / %" PetscInt_FMT "+%" PetscInt_FMT "\n", fit->nk1, (double)fit->factor1, (double)fit->factor2,
+                 (double)fit->factor2bend, fit->kStretch[0], fit->kStretch[1], fit->kPoisson[0], fit->kPoisson[1], fit->kSym[0], fit->kSym[1], fit->kBendStretch[0], fit->kBendStretch[1], fit->kBendSym[0], fit->kBendSym[1]));
   if (fit->setupcalled) {
-    PetscCall(PetscViewerASCIIPrintf(viewer, "samples: %" PetscInt_FMT " used of %" PetscInt_FMT " rows (%" PetscInt_FMT " not converged)\n", fit->n, fit->nrows, fit->nskipped));
-    PetscCall(PetscViewerASCIIPrintf(viewer, "area density: %.6g kg/m^2 (%s)\n", (double)fit->rhoA, fit->rhoSource));
+    PetscCall(Line(viewer, "samples: %" PetscInt_FMT " used of %" PetscInt_FMT " rows (%" PetscInt_FMT " not converged)\n", fit->n, fit->nrows, fit->nskipped));
+    PetscCall(Line(viewer, "area density: %.6g kg/m^2 (%s)\n", (double)fit->rhoA, fit->rhoSource));
   }
   if (fit->computed) {
     const PetscReal *z = fit->z + 6 * fit->f0row;
-    PetscCall(PetscViewerASCIIPrintf(viewer, "f0: %.9g J/m^2 (row %" PetscInt_FMT ", strain (%g, %g, %g, %g, %g, %g))\n", (double)fit->f0, fit->row[fit->f0row], (double)z[0], (double)z[1], (double)z[2], (double)z[3], (double)z[4], (double)z[5]));
-    PetscCall(PetscViewerASCIIPrintf(viewer, "strain scale: %g %g %g %g %g\n", (double)fit->scale[0], (double)fit->scale[1], (double)fit->scale[2], (double)fit->scale[3], (double)fit->scale[5]));
+    PetscCall(Line(viewer, "f0: %.9g J/m^2 (row %" PetscInt_FMT ", strain (%g, %g, %g, %g, %g, %g))\n", (double)fit->f0, fit->row[fit->f0row], (double)z[0], (double)z[1], (double)z[2], (double)z[3], (double)z[4], (double)z[5]));
+    PetscCall(Line(viewer, "strain scale: %g %g %g %g %g\n", (double)fit->scale[0], (double)fit->scale[1], (double)fit->scale[2], (double)fit->scale[3], (double)fit->scale[5]));
     for (int t = 1; t < HYLC_PLAN_NTERM; t++) {
       char knots[64], range[160];
       if (!fit->has[t]) {
-        PetscCall(PetscViewerASCIIPrintf(viewer, "%-8s not fitted (%s)\n", HylcPlanTermName(t), (fit->terms >> t) & 1 ? "no samples" : "not in -fit_terms"));
+        PetscCall(Line(viewer, "%-8s not fitted (%s)\n", HylcPlanTermName(t), (fit->terms >> t) & 1 ? "no samples" : "not in -fit_terms"));
         continue;
       }
       if (t <= 5) {
         const int c = t - 1;
-        PetscCall(PetscSNPrintf(knots, sizeof(knots), "%" PetscInt_FMT " knots", fit->s1[c].n));
-        PetscCall(PetscSNPrintf(range, sizeof(range), "%s in [%.4g, %.4g]", HylcPlanTermName(t), (double)fit->statMin[t][0], (double)fit->statMax[t][0]));
+        PetscCall(Fmt(knots, sizeof(knots), "%" PetscInt_FMT " knots", fit->s1[c].n));
+        PetscCall(Fmt(range, sizeof(range), "%s in [%.4g, %.4g]", HylcPlanTermName(t), (double)fit->statMin[t][0], (double)fit->statMax[t][0]));
       } else {
         int ci, cj;
         HylcPlanPair(t, &ci, &cj);
-        PetscCall(PetscSNPrintf(knots, sizeof(knots), "%" PetscInt_FMT "x%" PetscInt_FMT " knots", fit->s2[t - 6].nu, fit->s2[t - 6].nv));
-        PetscCall(PetscSNPrintf(range, sizeof(range), "%s in [%.4g, %.4g], %s in [%.4g, %.4g]", HylcPlanTermName(1 + ci), (double)fit->statMin[t][0], (double)fit->statMax[t][0], HylcPlanTermName(1 + cj), (double)fit->statMin[t][1], (double)fit->statMax[t][1]));
+        PetscCall(Fmt(knots, sizeof(knots), "%" PetscInt_FMT "x%" PetscInt_FMT " knots", fit->s2[t - 6].nu, fit->s2[t - 6].nv));
+        PetscCall(Fmt(range, sizeof(range), "%s in [%.4g, %.4g], %s in [%.4g, %.4g]", HylcPlanTermName(1 + ci), (double)fit->statMin[t][0], (double)fit->statMax[t][0], HylcPlanTermName(1 + cj), (double)fit->statMin[t][1], (double)fit->statMax[t][1]));
       }
-      PetscCall(PetscViewerASCIIPrintf(viewer, "%-8s %-11s %5" PetscInt_FMT " samples, %s; RMS residual %.3g J/m^2 (%.3g%% of max |psi - f0| %.3g)\n", HylcPlanTermName(t), knots, fit->statN[t], range, (double)fit->statRms[t], fit->statRange[t] > 0 ? (double)(100 * fit->statRms[t] / fit->statRange[t]) : 0.0, (double)fit->statRange[t]));
+      PetscCall(Line(viewer, "%-8s %-11s %5" PetscInt_FMT " samples, %s; RMS residual %.3g J/m^2 (%.3g%% of max |psi - f0| %.3g)\n", HylcPlanTermName(t), knots, fit->statN[t], range, (double)fit->statRms[t], fit->statRange[t] > 0 ? (double)(100 * fit->statRms[t] / fit->statRange[t]) : 0.0, (double)fit->statRange[t]));
     }
   }
   PetscCall(PetscViewerASCIIPopTab(viewer));

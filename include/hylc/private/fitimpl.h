@@ -36,11 +36,11 @@ struct _p_HylcFit {
   PetscInt         terms;                                                           /* bit t: fit term t */
   /* data: the rows used (status 0), in file order */
   PetscInt   n;
-  PetscReal *z, *psi;                    /* n x 6, n */
-  PetscInt  *term, *row;                 /* term, row in the file */
-  PetscReal  rhoA;                       /* resolved area density (kg/m^2), <= 0 unknown */
-  char       rhoSource[256];             /* how rhoA was obtained */
-  PetscReal  radius, restLength, px, py; /* from the samples file's /reference (0 if absent) */
+  PetscReal *z, *psi;                             /* n x 6, n */
+  PetscInt  *term, *row;                          /* term, row in the file */
+  PetscReal  rhoA;                                /* resolved area density (kg/m^2), <= 0 unknown */
+  char       rhoSource[PETSC_MAX_PATH_LEN + 256]; /* how rhoA was obtained */
+  PetscReal  radius, restLength, px, py;          /* from the samples file's /reference (0 if absent) */
   char       source[PETSC_MAX_PATH_LEN + 64];
   PetscInt   nrows, nskipped; /* rows in the input, rows not used (status != 0) */
   PetscReal  zabsmax[6];      /* max |strain| over every computed row, converged or not (the plan's range) */
