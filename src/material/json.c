@@ -662,11 +662,10 @@ static PetscErrorCode ReadDoc(Doc *d, const JVal *root)
   PetscCheck(v->num >= 0, d->comm, PETSC_ERR_USER_INPUT, "%s:%d: density: the area density must be >= 0 (kg/m^2), got %s", d->name, v->line, HylcFormatDoubleRepr(v->num, b));
   d->density = v->num;
   v          = Member(root, "strain scale");
-  PetscCall(GetNumbers(d, v, "strain scale", 5, " (sigma of sx, sa, sy, II00, II11)", &buf, NULL));
-  for (int k = 0; k < 5; k++) {
-    d->scale[k] = buf[k];
-    PetscCheck(buf[k] > 0, d->comm, PETSC_ERR_USER_INPUT, "%s:%d: strain scale[%d]: must be positive, got %s", d->name, v->items[k].line, k, HylcFormatDoubleRepr(buf[k], b));
-  }
+  PetscCall(GetNumbers(d, v, "strain scale", 5, " (sigma of sx, sa, sy, II00, II11)", NULL, NULL));
+  for (int k = 0; k < 5; k++) PetscCheck(v->items[k].num > 0, d->comm, PETSC_ERR_USER_INPUT, "%s:%d: strain scale[%d]: must be positive, got %s", d->name, v->items[k].line, k, HylcFormatDoubleRepr(v->items[k].num, b));
+  PetscCall(GetNumbers(d, v, "strain scale", 5, NULL, &buf, NULL));
+  for (int k = 0; k < 5; k++) d->scale[k] = buf[k];
   PetscCall(PetscFree(buf));
   if ((v = Member(root, "strain shift"))) {
     PetscCall(GetNumbers(d, v, "strain shift", 5, NULL, NULL, NULL));

@@ -427,12 +427,13 @@ PetscErrorCode HylcMaterialLoadFromString(HylcMaterial m, const char name[], con
 @*/
 PetscErrorCode HylcMaterialLoad(HylcMaterial m, const char path[])
 {
-  MPI_Comm    comm;
-  PetscMPIInt rank;
-  long        len = 0;
-  int         err = 0;
-  char       *bytes;
-  FILE       *fp = NULL;
+  MPI_Comm       comm;
+  PetscMPIInt    rank;
+  long           len = 0;
+  int            err = 0;
+  char          *bytes;
+  PetscErrorCode ierr;
+  FILE          *fp = NULL;
 
   PetscFunctionBegin;
   PetscValidHeaderSpecific(m, HYLC_MATERIAL_CLASSID, 1);
@@ -464,12 +465,15 @@ PetscErrorCode HylcMaterialLoad(HylcMaterial m, const char path[])
   if (len) PetscCallMPI(MPI_Bcast(bytes, (PetscMPIInt)len, MPI_CHAR, 0, comm));
   bytes[len] = 0;
   if (len >= 8 && !memcmp(bytes, HDF5Signature, 8))
-    PetscCall(HylcMaterialParseHDF5_Private(m, path, bytes, (size_t)len));
-  else {
-    PetscCheck(strlen(bytes) == (size_t)len, comm, PETSC_ERR_USER_INPUT, "%s: contains a NUL byte at offset %zu: neither a JSON nor an HDF5 material file", path, strlen(bytes));
-    PetscCall(HylcMaterialParseJSON_Private(m, path, bytes, (size_t)len));
-  }
+    ierr = HylcMaterialParseHDF5_Private(m, path, bytes, (size_t)len);
+  else if (strlen(bytes) != (size_t)len) {
+    const size_t at = strlen(bytes);
+    PetscCall(PetscFree(bytes));
+    SETERRQ(comm, PETSC_ERR_USER_INPUT, "%s: contains a NUL byte at offset %zu: neither a JSON nor an HDF5 material file", path, at);
+  } else
+    ierr = HylcMaterialParseJSON_Private(m, path, bytes, (size_t)len);
   PetscCall(PetscFree(bytes));
+  PetscCall(ierr);
   PetscCall(PetscStrncpy(m->source, path, sizeof(m->source)));
   PetscCall(PetscLogEventEnd(HYLC_MaterialLoad, m, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -535,15 +539,17 @@ PetscErrorCode HylcMaterialWriteBytes_Private(HylcMaterial m, const char path[],
 @*/
 PetscErrorCode HylcMaterialWriteJSON(HylcMaterial m, const char path[])
 {
-  char  *text;
-  size_t len;
+  char          *text;
+  size_t         len;
+  PetscErrorCode ierr;
 
   PetscFunctionBegin;
   PetscValidHeaderSpecific(m, HYLC_MATERIAL_CLASSID, 1);
   PetscCall(PetscLogEventBegin(HYLC_MaterialWrite, m, 0, 0, 0));
   PetscCall(HylcMaterialFormatJSON_Private(m, &text, &len));
-  PetscCall(HylcMaterialWriteBytes_Private(m, path, "JSON material", text, len));
+  ierr = HylcMaterialWriteBytes_Private(m, path, "JSON material", text, len);
   PetscCall(PetscFree(text));
+  PetscCall(ierr);
   PetscCall(PetscLogEventEnd(HYLC_MaterialWrite, m, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -555,15 +561,17 @@ PetscErrorCode HylcMaterialWriteJSON(HylcMaterial m, const char path[])
 @*/
 PetscErrorCode HylcMaterialWriteHDF5(HylcMaterial m, const char path[], const char optionsText[])
 {
-  void  *image;
-  size_t len;
+  void          *image;
+  size_t         len;
+  PetscErrorCode ierr;
 
   PetscFunctionBegin;
   PetscValidHeaderSpecific(m, HYLC_MATERIAL_CLASSID, 1);
   PetscCall(PetscLogEventBegin(HYLC_MaterialWrite, m, 0, 0, 0));
   PetscCall(HylcMaterialFormatHDF5_Private(m, optionsText, &image, &len));
-  PetscCall(HylcMaterialWriteBytes_Private(m, path, "HDF5 material", image, len));
+  ierr = HylcMaterialWriteBytes_Private(m, path, "HDF5 material", image, len);
   PetscCall(PetscFree(image));
+  PetscCall(ierr);
   PetscCall(PetscLogEventEnd(HYLC_MaterialWrite, m, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
