@@ -95,56 +95,143 @@ static inline void QuotDirect(PetscReal s, const PetscReal hp[3], const PetscRea
   q->W3  = (q->Qaa - 6 * q->W1) / (4 * w);
 }
 
+/* The interval of x among the knots, as HylcSplineLocate (-1 left of t[0], n-1 from t[n-1] on), with a
+   first guess from the mean knot spacing (ih = (n-1) / (t[n-1] - t[0])): one or two steps for the
+   nearly uniform knots of the tables. */
+static inline PetscInt Loc(PetscInt n, const PetscReal t[], PetscReal ih, PetscReal x)
+{
+  PetscInt i;
+
+  if (!(x >= t[0])) return -1;
+  if (x >= t[n - 1]) return n - 1;
+  i = (PetscInt)((x - t[0]) * ih);
+  if (i > n - 2) i = n - 2;
+  while (x < t[i]) i--;
+  while (x >= t[i + 1]) i++;
+  return i;
+}
+
+/* the Hermite basis of HylcHermiteBasis with nd derivatives: the spline is sum_c a[0][c] p[i+c] +
+   b[0][c] m[i+c]; a[d], b[d] are the d-th derivatives */
+typedef struct {
+  PetscInt  i;
+  PetscReal a[3][2], b[3][2];
+} Basis;
+
+static inline void BasisAt(PetscInt n, const PetscReal t[], PetscReal ih, HylcSplineExt ext, PetscReal x, int nd, Basis *B)
+{
+  const PetscInt loc = Loc(n, t, ih, x);
+
+  for (int d = 0; d <= nd; d++) B->a[d][0] = B->a[d][1] = B->b[d][0] = B->b[d][1] = 0;
+  if (loc < 0 || loc >= n - 1) {
+    const int c = loc < 0 ? 0 : 1;
+    B->i        = loc < 0 ? 0 : n - 2;
+    if (ext != HYLC_EXT_ZERO) B->a[0][c] = 1;
+    if (ext == HYLC_EXT_LINEAR) {
+      B->b[0][c] = x - t[loc < 0 ? 0 : n - 1];
+      if (nd > 0) B->b[1][c] = 1;
+    }
+  } else {
+    const PetscReal h = t[loc + 1] - t[loc], s = (x - t[loc]) / h, s2 = s * s, s3 = s2 * s;
+    B->i       = loc;
+    B->a[0][0] = 2 * s3 - 3 * s2 + 1;
+    B->a[0][1] = -2 * s3 + 3 * s2;
+    B->b[0][0] = (s3 - 2 * s2 + s) * h;
+    B->b[0][1] = (s3 - s2) * h;
+    if (nd > 0) {
+      B->a[1][0] = (6 * s2 - 6 * s) / h;
+      B->a[1][1] = -B->a[1][0];
+      B->b[1][0] = 3 * s2 - 4 * s + 1;
+      B->b[1][1] = 3 * s2 - 2 * s;
+    }
+    if (nd > 1) {
+      B->a[2][0] = (12 * s - 6) / (h * h);
+      B->a[2][1] = -B->a[2][0];
+      B->b[2][0] = (6 * s - 4) / h;
+      B->b[2][1] = (6 * s - 2) / h;
+    }
+  }
+}
+
+/* f[d] = d-th derivative of a 1D spline at x, d <= nd */
+static inline void Eval1D(const HylcSpline1D *sp, PetscReal ih, PetscReal x, int nd, PetscReal f[3])
+{
+  Basis            B;
+  const PetscReal *p, *m;
+
+  BasisAt(sp->n, sp->t, ih, sp->ext, x, nd, &B);
+  p = sp->p + B.i;
+  m = sp->m + B.i;
+  for (int d = 0; d <= nd; d++) f[d] = B.a[d][0] * p[0] + B.a[d][1] * p[1] + B.b[d][0] * m[0] + B.b[d][1] * m[1];
+}
+
+/* the node values P[o][.] and v-slopes M[o][.] of the restriction v -> d^o f(u, v)/du^o (o <= nd), for
+   the v-nodes j0..j1 (at most 3), from the u-basis Bu */
+static inline void SliceV(const HylcSpline2D *sp, const Basis *Bu, PetscInt j0, PetscInt j1, int nd, PetscReal P[3][3], PetscReal M[3][3])
+{
+  for (PetscInt j = j0; j <= j1; j++) {
+    const PetscInt   k = j * sp->nu + Bu->i;
+    const PetscReal *p = sp->p + k, *mu = sp->mu + k, *mv = sp->mv + k, *muv = sp->muv + k;
+    for (int o = 0; o <= nd; o++) {
+      P[o][j - j0] = Bu->a[o][0] * p[0] + Bu->a[o][1] * p[1] + Bu->b[o][0] * mu[0] + Bu->b[o][1] * mu[1];
+      M[o][j - j0] = Bu->a[o][0] * mv[0] + Bu->a[o][1] * mv[1] + Bu->b[o][0] * muv[0] + Bu->b[o][1] * muv[1];
+    }
+  }
+}
+
+/* f[o][r] = d^(o+r) f / du^o dv^r of a 2D spline at (u, v), o + r <= nd, from the u-basis Bu (nd derivatives) */
+static inline void Eval2D(const HylcSpline2D *sp, const Basis *Bu, PetscReal ihv, PetscReal v, int nd, PetscReal f[3][3])
+{
+  Basis     Bv;
+  PetscReal P[3][3], M[3][3];
+
+  BasisAt(sp->nv, sp->tv, ihv, sp->ext, v, nd, &Bv);
+  SliceV(sp, Bu, Bv.i, Bv.i + 1, nd, P, M);
+  for (int o = 0; o <= nd; o++)
+    for (int r = 0; r <= nd - o; r++) f[o][r] = Bv.a[r][0] * P[o][0] + Bv.a[r][1] * P[o][1] + Bv.b[r][0] * M[o][0] + Bv.b[r][1] * M[o][1];
+}
+
 /* a 1D bending constituent h(x) = f_k(x) at x = a +- s */
-static void Quot1D(const HylcSpline1D *sp, PetscReal sw, PetscReal a, PetscReal s, int level, Quot *q)
+static void Quot1D(const HylcSpline1D *sp, PetscReal sw, PetscReal ih, PetscReal a, PetscReal s, int level, Quot *q)
 {
   PetscReal hp[3] = {0, 0, 0}, hm[3] = {0, 0, 0};
 
   if (s < sw) {
     const PetscReal ss = s < S_TINY ? 0 : s;
-    const PetscInt  L = HylcSplineLocate(sp->n, sp->t, a - ss), R = HylcSplineLocate(sp->n, sp->t, a + ss);
+    const PetscInt  L = Loc(sp->n, sp->t, ih, a - ss), R = Loc(sp->n, sp->t, ih, a + ss);
     if (R - L <= 1) {
       QuotPieces(sp->n, sp->t, sp->p, sp->m, 0, sp->ext, L, R, a, ss, q);
       return;
     }
   }
-  hp[0] = HylcSpline1DEval(sp, a + s, level ? &hp[1] : NULL, level > 1 ? &hp[2] : NULL);
-  hm[0] = HylcSpline1DEval(sp, a - s, level ? &hm[1] : NULL, level > 1 ? &hm[2] : NULL);
+  Eval1D(sp, ih, a + s, level, hp);
+  Eval1D(sp, ih, a - s, level, hm);
   QuotDirect(s, hp, hm, level, q);
 }
 
 /* a 2D bending constituent h(x) = f_ik(u, x) at x = a +- s, and (level >= 1) its u-derivatives: q[0] for
-   h, q[1] for dh/du (level - 1 a-derivatives), q[2] for d2h/du2 (level 2, none) */
-static void Quot2D(const HylcSpline2D *sp, PetscReal sw, PetscReal u, PetscReal a, PetscReal s, int level, Quot q[3])
+   h, q[1] for dh/du (level - 1 a-derivatives), q[2] for d2h/du2 (level 2, none); Bu: the u-basis */
+static void Quot2D(const HylcSpline2D *sp, PetscReal sw, PetscReal ihv, const Basis *Bu, PetscReal a, PetscReal s, int level, Quot q[3])
 {
-  PetscReal fp, fm, gp[2], gm[2], Hp[3] = {0, 0, 0}, Hm[3] = {0, 0, 0};
+  PetscReal fp[3][3], fm[3][3];
 
   if (s < sw) {
     const PetscReal ss = s < S_TINY ? 0 : s;
-    const PetscInt  L = HylcSplineLocate(sp->nv, sp->tv, a - ss), R = HylcSplineLocate(sp->nv, sp->tv, a + ss);
+    const PetscInt  L = Loc(sp->nv, sp->tv, ihv, a - ss), R = Loc(sp->nv, sp->tv, ihv, a + ss);
     if (R - L <= 1) {
       const PetscInt j0 = PetscMax(L, 0), j1 = PetscMin(R + 1, sp->nv - 1);
-      PetscReal      P[3], M[3], Pu[3], Mu[3], Puu[3], Muu[3];
-      HylcHermite2DSliceV(sp->nu, sp->nv, sp->tu, sp->p, sp->mu, sp->mv, sp->muv, sp->ext, u, j0, j1, P, M, level > 0 ? Pu : NULL, level > 0 ? Mu : NULL, level > 1 ? Puu : NULL, level > 1 ? Muu : NULL);
-      QuotPieces(sp->nv, sp->tv, P, M, j0, sp->ext, L, R, a, ss, &q[0]);
-      if (level > 0) QuotPieces(sp->nv, sp->tv, Pu, Mu, j0, sp->ext, L, R, a, ss, &q[1]);
-      if (level > 1) QuotPieces(sp->nv, sp->tv, Puu, Muu, j0, sp->ext, L, R, a, ss, &q[2]);
+      PetscReal      P[3][3], M[3][3];
+      SliceV(sp, Bu, j0, j1, level, P, M);
+      for (int o = 0; o <= level; o++) QuotPieces(sp->nv, sp->tv, P[o], M[o], j0, sp->ext, L, R, a, ss, &q[o]);
       return;
     }
   }
-  fp = HylcSpline2DEval(sp, u, a + s, level ? gp : NULL, level > 1 ? Hp : NULL);
-  fm = HylcSpline2DEval(sp, u, a - s, level ? gm : NULL, level > 1 ? Hm : NULL);
-  {
-    const PetscReal hp0[3] = {fp, level ? gp[1] : 0, Hp[2]}, hm0[3] = {fm, level ? gm[1] : 0, Hm[2]};
-    QuotDirect(s, hp0, hm0, level, &q[0]);
-  }
-  if (level > 0) {
-    const PetscReal hp1[3] = {gp[0], Hp[1], 0}, hm1[3] = {gm[0], Hm[1], 0};
-    QuotDirect(s, hp1, hm1, level - 1, &q[1]);
-  }
-  if (level > 1) {
-    const PetscReal hp2[3] = {Hp[0], 0, 0}, hm2[3] = {Hm[0], 0, 0};
-    QuotDirect(s, hp2, hm2, 0, &q[2]);
+  Eval2D(sp, Bu, ihv, a + s, level, fp);
+  Eval2D(sp, Bu, ihv, a - s, level, fm);
+  for (int o = 0; o <= level; o++) {
+    const PetscReal hp[3] = {fp[o][0], o < level ? fp[o][1] : 0, o + 1 < level ? fp[o][2] : 0};
+    const PetscReal hm[3] = {fm[o][0], o < level ? fm[o][1] : 0, o + 1 < level ? fm[o][2] : 0};
+    QuotDirect(s, hp, hm, level - o, &q[o]);
   }
 }
 
@@ -194,39 +281,46 @@ PetscErrorCode HylcMaterialEvaluate(HylcMaterial m, const PetscReal s[6], PetscR
   }
   /* in-plane: 1D terms and the pairs (0,1) (0,2) (1,2) */
   for (PetscInt k = 0; k < 3; k++) {
-    PetscReal d1, d2;
+    PetscReal f[3];
     if (!m->has1[k]) continue;
-    E += HylcSpline1DEval(&m->t1[k], X[k], level ? &d1 : NULL, level > 1 ? &d2 : NULL);
-    if (level) g[k] += d1 * is[k];
-    if (level > 1) H[k][k] += d2 * is[k] * is[k];
+    Eval1D(&m->t1[k], m->ih1[k], X[k], level, f);
+    E += f[0];
+    if (level) g[k] += f[1] * is[k];
+    if (level > 1) H[k][k] += f[2] * is[k] * is[k];
   }
   for (PetscInt q = 0; q < HYLC_MATERIAL_N2D; q++) {
-    const PetscInt i = HylcMaterialPairs[q][0], j = HylcMaterialPairs[q][1];
-    PetscReal      gg[2], hh[3];
+    const PetscInt      i = HylcMaterialPairs[q][0], j = HylcMaterialPairs[q][1];
+    const HylcSpline2D *sp = &m->t2[q];
+    Basis               Bu;
+    PetscReal           f[3][3];
     if (j > 2 || !m->has2[q]) continue;
-    E += HylcSpline2DEval(&m->t2[q], X[i], X[j], level ? gg : NULL, level > 1 ? hh : NULL);
+    BasisAt(sp->nu, sp->tu, m->ihu[q], sp->ext, X[i], level, &Bu);
+    Eval2D(sp, &Bu, m->ihv[q], X[j], level, f);
+    E += f[0][0];
     if (level) {
-      g[i] += gg[0] * is[i];
-      g[j] += gg[1] * is[j];
+      g[i] += f[1][0] * is[i];
+      g[j] += f[0][1] * is[j];
     }
     if (level > 1) {
-      H[i][i] += hh[0] * is[i] * is[i];
-      H[i][j] += hh[1] * is[i] * is[j];
-      H[j][j] += hh[2] * is[j] * is[j];
+      H[i][i] += f[2][0] * is[i] * is[i];
+      H[i][j] += f[1][1] * is[i] * is[j];
+      H[j][j] += f[0][2] * is[j] * is[j];
     }
   }
   /* bending: the 1D terms 3 (f, x) and 4 (g, y), and the pairs (i, 3), (i, 4) */
   for (PetscInt k = 3; k < 5; k++) {
     Quot q;
     if (!m->has1[k]) continue;
-    Quot1D(&m->t1[k], m->sw1[k], A * is[k], S * is[k], level, &q);
+    Quot1D(&m->t1[k], m->sw1[k], m->ih1[k], A * is[k], S * is[k], level, &q);
     Add(&T0, &q, k == 3 ? 1 : -1, is[k], 1);
   }
   for (PetscInt r = 0; r < HYLC_MATERIAL_N2D; r++) {
     const PetscInt i = HylcMaterialPairs[r][0], k = HylcMaterialPairs[r][1];
     Quot           q[3];
+    Basis          Bu;
     if (k < 3 || !m->has2[r]) continue;
-    Quot2D(&m->t2[r], m->sw2[r], X[i], A * is[k], S * is[k], level, q);
+    BasisAt(m->t2[r].nu, m->t2[r].tu, m->ihu[r], m->t2[r].ext, X[i], level, &Bu);
+    Quot2D(&m->t2[r], m->sw2[r], m->ihv[r], &Bu, A * is[k], S * is[k], level, q);
     Add(&T0, &q[0], k == 3 ? 1 : -1, is[k], 1);
     if (level) Add(&Tu[i], &q[1], k == 3 ? 1 : -1, is[k], is[i]);
     if (level > 1) Add(&Tuu[i], &q[2], k == 3 ? 1 : -1, is[k], is[i] * is[i]);

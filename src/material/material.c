@@ -334,6 +334,7 @@ PetscErrorCode HylcMaterialSet1D(HylcMaterial m, const HylcSpline1D *s)
   PetscCall(PetscArraycpy(m->t1[k].m, s->m, s->n));
   m->has1[k] = PETSC_TRUE;
   m->sw1[k]  = HalfMinSpacing(s->n, s->t);
+  m->ih1[k]  = (s->n - 1) / (s->t[s->n - 1] - s->t[0]);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -379,6 +380,8 @@ PetscErrorCode HylcMaterialSet2D(HylcMaterial m, const HylcSpline2D *s)
   PetscCall(PetscArraycpy(m->t2[q].muv, s->muv, N));
   m->has2[q] = PETSC_TRUE;
   m->sw2[q]  = HalfMinSpacing(s->nv, s->tv);
+  m->ihu[q]  = (s->nu - 1) / (s->tu[s->nu - 1] - s->tu[0]);
+  m->ihv[q]  = (s->nv - 1) / (s->tv[s->nv - 1] - s->tv[0]);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -14,13 +14,14 @@ struct _p_HylcMaterial {
   PetscInt     shift[5]; /* the JSON's informational strain shift */
   PetscReal    C0;       /* constant (J/m^2) */
   PetscBool    has1[HYLC_MATERIAL_N1D], has2[HYLC_MATERIAL_N2D];
-  HylcSpline1D t1[HYLC_MATERIAL_N1D];                          /* term k at index k */
-  HylcSpline2D t2[HYLC_MATERIAL_N2D];                          /* pair at its index in HylcMaterialPairs */
-  PetscReal    sw1[HYLC_MATERIAL_N1D], sw2[HYLC_MATERIAL_N2D]; /* evaluator: below this half-split (in
-                                                                     table units) the bending divided
-                                                                     differences use the piecewise-polynomial
-                                                                     form (docs/material.md) */
-  char source[PETSC_MAX_PATH_LEN];                             /* file it was loaded from ("" if built in memory) */
+  HylcSpline1D t1[HYLC_MATERIAL_N1D]; /* term k at index k */
+  HylcSpline2D t2[HYLC_MATERIAL_N2D]; /* pair at its index in HylcMaterialPairs */
+  /* evaluator: below sw (table units) the bending divided differences of a term use the
+     piecewise-polynomial form (docs/material.md); ih = (n - 1) / (t[n-1] - t[0]) of each knot vector
+     is the first guess of the interval search */
+  PetscReal sw1[HYLC_MATERIAL_N1D], sw2[HYLC_MATERIAL_N2D];
+  PetscReal ih1[HYLC_MATERIAL_N1D], ihu[HYLC_MATERIAL_N2D], ihv[HYLC_MATERIAL_N2D];
+  char      source[PETSC_MAX_PATH_LEN]; /* file it was loaded from ("" if built in memory) */
 };
 
 /* JSON (src/material/json.c) */
