@@ -161,7 +161,10 @@ PetscErrorCode HylcMaterialView(HylcMaterial m, PetscViewer viewer)
   if (!viewer) PetscCall(PetscViewerASCIIGetStdout(PetscObjectComm((PetscObject)m), &viewer));
   PetscCall(PetscObjectTypeCompare((PetscObject)viewer, PETSCVIEWERASCII, &iascii));
   if (!iascii) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(PetscObjectPrintClassNamePrefixType((PetscObject)m, viewer));
+  {
+    const char *prefix = ((PetscObject)m)->prefix;
+    PetscCall(PetscViewerASCIIPrintf(viewer, "HylcMaterial%s%s: homogenized cloth material (spline tables)\n", prefix ? " " : "", prefix ? prefix : ""));
+  }
   PetscCall(PetscViewerASCIIPushTab(viewer));
   if (m->source[0]) PetscCall(PetscViewerASCIIPrintf(viewer, "source: %s\n", m->source));
   PetscCall(PetscViewerASCIIPrintf(viewer, "density: %s kg/m^2, constant: %s J/m^2\n", G(b[0], m->density), G(b[1], m->C0)));
