@@ -86,6 +86,10 @@ done
 # 2 ranks: rank 0 reads and broadcasts, prints once
 $MPIEXEC -n 2 $tool -material a.h5 -strain 0.1,0.2,-0.1,30,-20,10 -derivatives >np2.txt 2>&1 || { cat np2.txt; die "2-rank run failed"; }
 cmp -s der.txt np2.txt || { cat np2.txt; die "2-rank output differs"; }
+$MPIEXEC -n 2 $tool -material small.json -eval_json np2.json -eval_hdf5 np2.h5 >np2w.txt 2>&1 || { cat np2w.txt; die "2-rank conversion failed"; }
+[ "$(grep -c '^wrote' np2w.txt)" = 2 ] || { cat np2w.txt; die "2-rank conversion: expected one message per file"; }
+cmp -s a.json np2.json || die "2-rank JSON differs"
+$tool -material np2.h5 -eval_json np2b.json >/dev/null 2>&1 && cmp -s a.json np2b.json || die "2-rank HDF5 differs"
 
 # the paper's tables
 ref=${HYLC_REFDATA:-../shared/refdata}/materials
