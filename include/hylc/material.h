@@ -60,3 +60,19 @@ PETSC_EXTERN PetscErrorCode HylcMaterialGet2D(HylcMaterial, PetscInt k0, PetscIn
    symmetric). Exact limits at equal eigenvalues of II (finite and continuous where the model is):
    see docs/material.md. Not collective; thread-safe; no allocation. */
 PETSC_EXTERN PetscErrorCode HylcMaterialEvaluate(HylcMaterial, const PetscReal s[6], PetscReal *psi, PetscReal grad[6], PetscReal hess[36]);
+
+/* Names of the terms, as the sampling plan's (HylcPlanTermName): 1D "sx" "sa" "sy" "II00" "II11"; 2D
+   "sx-sa" "sx-sy" "sx-II00" "sx-II11" "sa-sy" "sa-II00" "sa-II11" "sy-II00" "sy-II11". */
+PETSC_EXTERN const char *const HylcMaterialTermNames1D[HYLC_MATERIAL_N1D];
+PETSC_EXTERN const char *const HylcMaterialTermNames2D[HYLC_MATERIAL_N2D];
+/* Index of (k0, k1) in HylcMaterialPairs, or -1 if the model has no such term. */
+PETSC_EXTERN PetscInt HylcMaterialPairIndex(PetscInt k0, PetscInt k1);
+
+/* The JSON's "strain shift" (informational: "sx, sy are 0-centred"; default 1,0,1,0,0; not used by the
+   evaluator, kept so that files round-trip). */
+PETSC_EXTERN PetscErrorCode HylcMaterialSetStrainShift(HylcMaterial, const PetscInt[5]);
+PETSC_EXTERN PetscErrorCode HylcMaterialGetStrainShift(HylcMaterial, PetscInt[5]);
+/* Removes every term and resets density, strain scale (1), shift and constant to their defaults. */
+PETSC_EXTERN PetscErrorCode HylcMaterialReset(HylcMaterial);
+/* Parses a JSON material from text; name is used in messages. Collective: every rank passes the same text. */
+PETSC_EXTERN PetscErrorCode HylcMaterialLoadFromString(HylcMaterial, const char name[], const char text[]);

@@ -60,3 +60,21 @@ PETSC_EXTERN PetscReal HylcSpline2DEval(const HylcSpline2D *, PetscReal u, Petsc
 /* Raw-array forms of the same evaluations (for the fitting kernels, which work on bare arrays). */
 PETSC_EXTERN PetscReal HylcHermite1DEval(PetscInt n, const PetscReal t[], const PetscReal p[], const PetscReal m[], HylcSplineExt ext, PetscReal x, PetscReal *d1, PetscReal *d2);
 PETSC_EXTERN PetscReal HylcHermite2DEval(PetscInt nu, PetscInt nv, const PetscReal tu[], const PetscReal tv[], const PetscReal p[], const PetscReal mu[], const PetscReal mv[], const PetscReal muv[], HylcSplineExt ext, PetscReal u, PetscReal v, PetscReal g[2], PetscReal H[3]);
+
+/* Local polynomial form of the pieces of a 1D Hermite spline (for the exact divided differences of the
+   material evaluator). Piece i is the cubic (or, extrapolating, linear/constant/zero) polynomial the
+   spline follows on its interval: i = -1 left of t[0], i = 0..n-2 on [t[i], t[i+1]), i = n-1 from t[n-1]
+   on (the numbering of HylcSplineLocate). Node data are read as p[j - j0], m[j - j0] (j0 = 0 for whole
+   arrays; a caller holding only the nodes j0, j0+1, ... of a slice passes its first node), and only
+   the nodes max(i, 0)..min(i + 1, n - 1) of the piece are touched.
+   HylcHermite1DPiece: c[0..3] with piece_i(x) = sum_k c[k] (x - x0)^k, for any x0.
+   HylcHermite1DKnotJump: J[0..3] with piece_k(x) - piece_{k-1}(x) = sum_r J[r] (x - t[k])^r, the jump
+   of the spline's polynomial across knot k (0 <= k <= n-1); J[0] = J[1] = 0 exactly wherever the
+   spline is C1 (every inner knot; the end knots with linear extrapolation). */
+PETSC_EXTERN void HylcHermite1DPiece(PetscInt n, const PetscReal t[], const PetscReal p[], const PetscReal m[], PetscInt j0, HylcSplineExt ext, PetscInt i, PetscReal x0, PetscReal c[4]);
+PETSC_EXTERN void HylcHermite1DKnotJump(PetscInt n, const PetscReal t[], const PetscReal p[], const PetscReal m[], PetscInt j0, HylcSplineExt ext, PetscInt k, PetscReal J[4]);
+
+/* The restriction v -> f(u, v) of a 2D spline at fixed u is the 1D Hermite spline on tv (same extrapolation
+   mode) with node values P[j] and slopes M[j] = df/dv; this returns them for the v-nodes j = j0..j1 (into
+   P[j - j0], M[j - j0]) and, where Pu/Mu and Puu/Muu are not NULL, their first and second u-derivatives. */
+PETSC_EXTERN void HylcHermite2DSliceV(PetscInt nu, PetscInt nv, const PetscReal tu[], const PetscReal p[], const PetscReal mu[], const PetscReal mv[], const PetscReal muv[], HylcSplineExt ext, PetscReal u, PetscInt j0, PetscInt j1, PetscReal P[], PetscReal M[], PetscReal Pu[], PetscReal Mu[], PetscReal Puu[], PetscReal Muu[]);

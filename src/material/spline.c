@@ -124,3 +124,75 @@ PetscReal HylcSpline2DEval(const HylcSpline2D *s, PetscReal u, PetscReal v, Pets
 {
   return HylcHermite2DEval(s->nu, s->nv, s->tu, s->tv, s->p, s->mu, s->mv, s->muv, s->ext, u, v, g, H);
 }
+
+/* the piece polynomial about its own origin k: sum c[r] (x - k)^r */
+static void PieceOwn(PetscInt n, const PetscReal t[], const PetscReal p[], const PetscReal m[], PetscInt j0, HylcSplineExt ext, PetscInt i, PetscReal *k, PetscReal c[4])
+{
+  if (i < 0 || i >= n - 1) {
+    const PetscInt e = i < 0 ? 0 : n - 1;
+    *k               = t[e];
+    c[0]             = ext == HYLC_EXT_ZERO ? 0 : p[e - j0];
+    c[1]             = ext == HYLC_EXT_LINEAR ? m[e - j0] : 0;
+    c[2] = c[3] = 0;
+  } else {
+    const PetscReal h = t[i + 1] - t[i], m0 = m[i - j0], m1 = m[i + 1 - j0], d = (p[i + 1 - j0] - p[i - j0]) / h;
+    *k   = t[i];
+    c[0] = p[i - j0];
+    c[1] = m0;
+    c[2] = (3 * d - 2 * m0 - m1) / h;
+    c[3] = (m0 + m1 - 2 * d) / (h * h);
+  }
+}
+
+/* re-expands sum c[r] (x - k)^r about x0 */
+static void Shift(const PetscReal c[4], PetscReal e, PetscReal out[4])
+{
+  out[0] = c[0] + e * (c[1] + e * (c[2] + e * c[3]));
+  out[1] = c[1] + e * (2 * c[2] + 3 * e * c[3]);
+  out[2] = c[2] + 3 * e * c[3];
+  out[3] = c[3];
+}
+
+void HylcHermite1DPiece(PetscInt n, const PetscReal t[], const PetscReal p[], const PetscReal m[], PetscInt j0, HylcSplineExt ext, PetscInt i, PetscReal x0, PetscReal c[4])
+{
+  PetscReal k, own[4];
+
+  PieceOwn(n, t, p, m, j0, ext, i, &k, own);
+  Shift(own, x0 - k, c);
+}
+
+void HylcHermite1DKnotJump(PetscInt n, const PetscReal t[], const PetscReal p[], const PetscReal m[], PetscInt j0, HylcSplineExt ext, PetscInt k, PetscReal J[4])
+{
+  PetscReal L[4], R[4];
+
+  HylcHermite1DPiece(n, t, p, m, j0, ext, k - 1, t[k], L);
+  HylcHermite1DPiece(n, t, p, m, j0, ext, k, t[k], R);
+  J[2] = R[2] - L[2];
+  J[3] = R[3] - L[3];
+  J[0] = J[1] = 0;
+  if (k == 0) { /* the first interval minus the extrapolation on the left, at t[0] */
+    J[0] = ext == HYLC_EXT_ZERO ? p[-j0] : 0;
+    J[1] = ext == HYLC_EXT_LINEAR ? 0 : m[-j0];
+  }
+  if (k == n - 1) { /* the extrapolation on the right minus the last interval, at t[n-1] */
+    J[0] = ext == HYLC_EXT_ZERO ? -p[n - 1 - j0] : 0;
+    J[1] = ext == HYLC_EXT_LINEAR ? 0 : -m[n - 1 - j0];
+  }
+}
+
+void HylcHermite2DSliceV(PetscInt nu, PetscInt nv, const PetscReal tu[], const PetscReal p[], const PetscReal mu[], const PetscReal mv[], const PetscReal muv[], HylcSplineExt ext, PetscReal u, PetscInt j0, PetscInt j1, PetscReal P[], PetscReal M[], PetscReal Pu[], PetscReal Mu[], PetscReal Puu[], PetscReal Muu[])
+{
+  PetscReal      a[2], b[2], da[2], db[2], dda[2], ddb[2];
+  const PetscInt i = HylcHermiteBasis(nu, tu, ext, u, a, b, da, db, dda, ddb);
+
+  (void)nv;
+  for (PetscInt j = j0; j <= j1; j++) {
+    const PetscInt k = j * nu + i;
+    P[j - j0]        = a[0] * p[k] + a[1] * p[k + 1] + b[0] * mu[k] + b[1] * mu[k + 1];
+    M[j - j0]        = a[0] * mv[k] + a[1] * mv[k + 1] + b[0] * muv[k] + b[1] * muv[k + 1];
+    if (Pu) Pu[j - j0] = da[0] * p[k] + da[1] * p[k + 1] + db[0] * mu[k] + db[1] * mu[k + 1];
+    if (Mu) Mu[j - j0] = da[0] * mv[k] + da[1] * mv[k + 1] + db[0] * muv[k] + db[1] * muv[k + 1];
+    if (Puu) Puu[j - j0] = dda[0] * p[k] + dda[1] * p[k + 1] + ddb[0] * mu[k] + ddb[1] * mu[k + 1];
+    if (Muu) Muu[j - j0] = dda[0] * mv[k] + dda[1] * mv[k + 1] + ddb[0] * muv[k] + ddb[1] * muv[k + 1];
+  }
+}
