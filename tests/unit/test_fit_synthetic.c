@@ -14,7 +14,7 @@
 #include "fittest.h"
 #include <string.h>
 
-#define V FitTestV
+#define V                                       FitTestV
 #define MakeData(n1, n2, drop, n, z, psi, term) FitTestMakeData("woven", n1, n2, drop, n, z, psi, term)
 
 /* fits the data with the given options; checks accuracy and the structural properties */
@@ -37,6 +37,25 @@ static PetscErrorCode Check(const char *label, const char *options, PetscBool st
   HYLC_CHECK(f0 == psi[0], "%s: f0 %g is not the zero sample's %g", label, f0, psi[0]);
   PetscCall(HylcFitGetStrainScale(fit, scale));
   for (int c = 0; c < 5; c++) HYLC_CHECK(scale[c] == V[c], "%s: strain scale %d: %g, expected %g", label, c, scale[c], V[c]);
+  /* the material filled by HylcFitRun evaluates to the same model (S26) */
+  {
+    HylcMaterial mat;
+    PetscReal    sc[5], c0, rho;
+    PetscCall(HylcMaterialCreate(PETSC_COMM_SELF, &mat));
+    PetscCall(HylcFitRun(fit, mat));
+    PetscCall(HylcMaterialGetStrainScale(mat, sc));
+    PetscCall(HylcMaterialGetConstant(mat, &c0));
+    PetscCall(HylcMaterialGetDensity(mat, &rho));
+    HYLC_CHECK(c0 == f0 && rho == 0.3 && sc[3] == V[3], "%s: material constants", label);
+    for (PetscInt k = 0; k < n; k++) {
+      PetscReal a, b;
+      PetscCall(HylcFitEvaluateAxes(fit, z + 6 * k, &a));
+      PetscCall(HylcMaterialEvaluate(mat, z + 6 * k, &b, NULL, NULL));
+      HYLC_CHECK(fabs(a - b) <= 1e-12 * fabs(a), "%s: sample %d: HylcMaterialEvaluate %.17g, the fit's model %.17g", label, (int)k, b, a);
+      if (fabs(a - b) > 1e-12 * fabs(a)) break;
+    }
+    PetscCall(HylcMaterialDestroy(&mat));
+  }
   /* accuracy at every sample */
   for (PetscInt k = 0; k < n; k++) {
     PetscReal f;
