@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Pictures of a material fit, in the spirit of Fig. S4 of the HYLC supplement.
 
-    /usr/bin/python3 examples/plot_fit.py SAMPLES MODEL OUTDIR
+    /usr/bin/python3 examples/plot_fit.py [--terms sx,sx-sa,...] [--dpi 110] SAMPLES MODEL OUTDIR
 
 SAMPLES  the samples file of hylc-sample (HDF5; rows with status 0 are used) or the paper's raw
          layout (a directory with data.txt, or data.txt itself; 150 x 5 1D rows, then 9 n2 x n2 grids)
@@ -12,6 +12,8 @@ OUTDIR   created if needed; receives one PNG per term:
          2D terms   <term>.png: three panels -- the samples, the model f0 + f_i + f_j + f_ij on a grid over
                     the samples' range, and the residual model - data at the samples
          and index.txt listing them with the RMS residual of each term.
+--terms  draw only these terms (names as in the samples file: sx sa sy II00 II11 sx-sa ... sy-II11)
+--dpi    resolution of the PNGs (default 110)
 
 Needs Debian's python3-numpy, python3-h5py and python3-matplotlib (use /usr/bin/python3: a pyenv
 python3 first on PATH will not see them). The spline evaluation is the cubic / bicubic Hermite form
@@ -142,7 +144,7 @@ def model_psi(model, z):
     return f
 
 
-def plot_1d(model, z, psi, c, out):
+def plot_1d(model, z, psi, c, out, dpi=110):
     x = z[:, STRAIN_INDEX[c]]
     lo, hi = x.min(), x.max()
     pad = 0.1 * (hi - lo)
@@ -163,11 +165,11 @@ def plot_1d(model, z, psi, c, out):
     ax.set_title(TERMS[1 + c])
     ax.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(out, dpi=110)
+    fig.savefig(out, dpi=dpi)
     plt.close(fig)
 
 
-def plot_2d(model, z, psi, t, out):
+def plot_2d(model, z, psi, t, out, dpi=110):
     ci, cj = PAIRS[t - 6]
     x, y = z[:, STRAIN_INDEX[ci]], z[:, STRAIN_INDEX[cj]]
     fit = model_psi(model, z)
@@ -198,29 +200,46 @@ def plot_2d(model, z, psi, t, out):
     for ax in axs:
         ax.set_xlabel(COORD[ci] + UNITS[ci])
         ax.set_ylabel(COORD[cj] + UNITS[cj])
-    fig.savefig(out, dpi=110)
+    fig.savefig(out, dpi=dpi)
     plt.close(fig)
 
 
 def main(argv):
-    if len(argv) != 4 or argv[1] in ("-h", "--help", "-help"):
+    args, terms, dpi = [], None, 110
+    it = iter(argv[1:])
+    for a in it:
+        if a in ("-h", "--help", "-help"):
+            print(__doc__)
+            return 0
+        if a == "--terms":
+            terms = next(it, "").split(",")
+            bad = [t for t in terms if t not in TERMS[1:]]
+            if bad:
+                sys.exit("plot_fit.py: unknown term(s) %s (use %s)" % (", ".join(bad), " ".join(TERMS[1:])))
+        elif a == "--dpi":
+            dpi = int(next(it, "110"))
+        else:
+            args.append(a)
+    if len(args) != 3:
         print(__doc__)
-        return 0 if len(argv) == 2 else 2
-    z, psi, term = load_samples(argv[1])
-    model = load_model(argv[2])
-    outdir = argv[3]
+        return 2
+    z, psi, term = load_samples(args[0])
+    model = load_model(args[1])
+    outdir = args[2]
     os.makedirs(outdir, exist_ok=True)
     lines = []
     for t in range(1, 15):
+        if terms is not None and TERMS[t] not in terms:
+            continue
         sel = term == t
         if not sel.any():
             lines.append("%-8s no samples" % TERMS[t])
             continue
         out = os.path.join(outdir, TERMS[t] + ".png")
         if t <= 5:
-            plot_1d(model, z[sel], psi[sel], t - 1, out)
+            plot_1d(model, z[sel], psi[sel], t - 1, out, dpi)
         else:
-            plot_2d(model, z[sel], psi[sel], t, out)
+            plot_2d(model, z[sel], psi[sel], t, out, dpi)
         rms = np.sqrt(np.mean((model_psi(model, z[sel]) - psi[sel]) ** 2))
         lines.append("%-8s %-12s %5d samples  RMS residual %.4g J/m^2" % (TERMS[t], os.path.basename(out), sel.sum(), rms))
     with open(os.path.join(outdir, "index.txt"), "w") as fh:
