@@ -69,7 +69,7 @@ static PetscErrorCode G(HylcFit fit, GFun *g, int t, PetscReal x, PetscReal y, P
 static PetscErrorCode GrowWarning(HylcFit fit, const GFun *g, int t, PetscInt evals)
 {
   PetscFunctionBegin;
-  if (g->grown) PetscCall(PetscPrintf(PetscObjectComm((PetscObject)fit), "[fit] warning: term %s: too few samples within the MLS kernel at %" PetscInt_FMT " of %" PetscInt_FMT " evaluation points; the kernel was enlarged there (up to %g x -fit_mls_kernel)\n", HylcPlanTermName(t), g->grown, evals, (double)g->growMax));
+  if (g->grown) PetscCall(PetscFPrintf(PetscObjectComm((PetscObject)fit), PETSC_STDERR, "[fit] warning: term %s: too few samples within the MLS kernel at %" PetscInt_FMT " of %" PetscInt_FMT " evaluation points; the kernel was enlarged there (up to %g x -fit_mls_kernel)\n", HylcPlanTermName(t), g->grown, evals, (double)g->growMax));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -311,7 +311,7 @@ PetscErrorCode HylcFitCompute(HylcFit fit)
     PetscCall(PetscLogEventBegin(HYLC_FitTerm, fit, 0, 0, 0));
     PetscCall(Gather(fit, t, ci, cj, &n, &u, &v, &l));
     if (n == 0)
-      PetscCall(PetscPrintf(comm, "[fit] warning: term %s has no samples in %s: left out of the model\n", HylcPlanTermName(t), fit->source));
+      PetscCall(PetscFPrintf(comm, PETSC_STDERR, "[fit] warning: term %s has no samples in %s: left out of the model\n", HylcPlanTermName(t), fit->source));
     else {
       const PetscInt need = t <= 5 ? fit->min1 : fit->min2;
       if (n < need) PetscCall(PetscFree3(u, v, l));
