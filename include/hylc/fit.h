@@ -20,9 +20,9 @@
 
 typedef struct _p_HylcFit *HylcFit;
 
-/* Pattern families with their own fitting constants (method-spec §9, §S3.4): GENERIC (every pattern
-   but the stockinette; the names "woven" and "knit" select it too) and STOCKINETTE (reg 1e-2, coarse
-   2D bending knots with factor 0.3). */
+/* Pattern families with their own fitting constants (method-spec §9, §S3.4): WOVEN and KNIT share the
+   constants of every pattern but the stockinette; STOCKINETTE has reg 1e-2 and coarse 2D bending knots
+   (factor 0.3, 2+4 and 3+3). The family is the object's type name. */
 typedef enum {
   HYLC_FIT_FAMILY_WOVEN       = 0,
   HYLC_FIT_FAMILY_KNIT        = 1,
