@@ -1,7 +1,11 @@
 #!/usr/bin/env bash
-# make demo: the main job on a built-in default.  For now: generate a stockinette tile with the pattern
-# tool, print its summary, write it as .pyp and as 3x3 tiled VTK polylines (open in ParaView, apply a
-# Tube filter with the yarn radius).  Outputs go to out/demo/.
+# make demo: the whole pipeline on a built-in default, outputs in out/demo/:
+#   1. a generated stockinette tile (pattern tool: summary, .pyp, 3x3 tiled VTK polylines for ParaView);
+#   2. one microscale sample of a generated plain weave (hylc-solve);
+#   3. the sampling job of config/demo.yaml on 2 MPI ranks (reference state, 4351 samples, HDF5);
+#   4. the fit of those samples (hylc-fit: HDF5 and ARCSim-HYLC JSON tables);
+#   5. the fitted energy and its derivatives at one strain (hylc-eval), and PNG plots of the fit when
+#      python3-matplotlib is installed (examples/plot_fit.py).
 set -eu
 cd "$(dirname "$0")/.."
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_pml=ob1
@@ -25,5 +29,19 @@ if command -v h5dump >/dev/null; then
   h5dump -d /samples/psi -c 8 "$out/samples.h5" | awk '/DATA {/{f=1} f{print} f&&/}/{exit}'
 fi
 echo
+echo "== the fit: spline tables of the homogenized material (docs/fit.md)"
+build/bin/hylc-fit -fit_input "$out/samples.h5" -fit_output "$out/model.h5" -fit_json "$out/model.json"
+echo
+echo "== the fitted energy density at sx = 0.1, sa = 0.2, II00 = 20 1/m (hylc-eval)"
+build/bin/hylc-eval -material "$out/model.json" -strain 0.1,0.2,0,20,0,0 -derivatives
+plots=""
+if /usr/bin/python3 -c 'import h5py, matplotlib' 2>/dev/null; then
+  echo
+  echo "== plots of every term (examples/plot_fit.py)"
+  /usr/bin/python3 examples/plot_fit.py "$out/samples.h5" "$out/model.h5" "$out/plots"
+  plots=", $out/plots/*.png (fit plots)"
+fi
+echo
 echo "demo outputs: $out/stockinette.pyp (pattern), $out/stockinette.vtk and $out/plain_sx0.1.vtk (ParaView),"
-echo "              $out/reference.pyp (reference state), $out/samples.h5 (HDF5 samples, docs/output-format.md)"
+echo "              $out/reference.pyp (reference state), $out/samples.h5 (HDF5 samples, docs/output-format.md),"
+echo "              $out/model.h5 and $out/model.json (fitted material, docs/material.md)$plots"

@@ -96,5 +96,9 @@ PETSC_EXTERN PetscErrorCode HylcPatternGetVertexLoop(HylcPattern, PetscInt, Pets
 /* Analysis. Not collective. */
 PETSC_EXTERN PetscErrorCode HylcPatternGetYarnLength(HylcPattern, PetscReal *, PetscReal *);
 PETSC_EXTERN PetscErrorCode HylcPatternGetAreaDensity(HylcPattern, PetscReal, PetscReal *);
+/* The default volumetric yarn density (kg/m^3) of a yarn of radius r (m): 0.12 kg/m^2 / r, which
+   reproduces the area densities of the paper's tables for basket, satin, stockinette and honeycomb
+   (docs/fit.md). Used by hylc-sample (info.txt) and hylc-fit when no density is given. */
+static inline PetscReal     HylcDefaultYarnDensity(PetscReal r) { return 0.12 / r; }
 PETSC_EXTERN PetscErrorCode HylcPatternIsExcludedPair(HylcPattern, PetscReal, PetscInt, PetscInt, const PetscInt[2], PetscBool *);
 PETSC_EXTERN PetscErrorCode HylcPatternMinSegmentDistance(HylcPattern, PetscReal, PetscReal *, PetscInt[4]);

@@ -110,7 +110,7 @@ static PetscErrorCode ReadSamplesHDF5(HylcFit fit, const char path[])
   /* area density from the reference pattern */
   PetscCall(ReadReference(fit, path));
   if (fit->radius > 0 && fit->restLength > 0 && fit->px > 0 && fit->py > 0) {
-    const PetscReal rho = fit->yarnDensity > 0 ? fit->yarnDensity : 0.12 / fit->radius;
+    const PetscReal rho = fit->yarnDensity > 0 ? fit->yarnDensity : HylcDefaultYarnDensity(fit->radius);
     fit->rhoA           = rho * PETSC_PI * fit->radius * fit->radius * fit->restLength / (fit->px * fit->py);
     snprintf(fit->rhoSource, sizeof(fit->rhoSource), "yarn density %g kg/m^3%s x pi r^2 L / (px py) with r = %g m, L = %g m, px py = %g m^2 of %s/reference", (double)rho, fit->yarnDensity > 0 ? " (-fit_yarn_density)" : " (0.12 kg/m^2 / r)", (double)fit->radius, (double)fit->restLength, (double)(fit->px * fit->py), path);
   } else {

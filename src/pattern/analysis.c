@@ -28,7 +28,7 @@ PetscErrorCode HylcPatternGetYarnLength(HylcPattern p, PetscReal *length, PetscR
 
 /*@C
   HylcPatternGetAreaDensity - Mass per tile area, rho * pi r^2 * (sum of rest lengths) / (px py), in
-  kg/m^2, for a volumetric yarn density rho in kg/m^3. Not collective.
+  kg/m^2, for a volumetric yarn density rho in kg/m^3 (rho <= 0: HylcDefaultYarnDensity(r)). Not collective.
 @*/
 PetscErrorCode HylcPatternGetAreaDensity(HylcPattern p, PetscReal rho, PetscReal *rhoA)
 {
@@ -36,6 +36,7 @@ PetscErrorCode HylcPatternGetAreaDensity(HylcPattern p, PetscReal rho, PetscReal
 
   PetscFunctionBegin;
   PetscCall(HylcPatternGetYarnLength(p, NULL, &R));
+  if (rho <= 0) rho = HylcDefaultYarnDensity(p->radius);
   *rhoA = rho * PETSC_PI * p->radius * p->radius * R / (p->px * p->py);
   PetscFunctionReturn(PETSC_SUCCESS);
 }

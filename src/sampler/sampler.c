@@ -8,20 +8,20 @@
 #define TAG_RECORDS 7301
 #define TAG_DONE    7302
 
-static const char *const Families[]                 = {"woven", "stockinette", "honeycomb", "rib", "HylcPlanFamily", "", NULL};
+static const char *const Families[] = {"woven", "stockinette", "honeycomb", "rib", "HylcPlanFamily", "", NULL};
 
 struct _n_HylcSampler {
-  MPI_Comm      comm;
-  PetscMPIInt   rank, size;
-  HylcPattern   pat;
-  HylcYarnModel model;
-  HylcMicro     micro;
-  HylcPlan      plan;
-  char          output[PETSC_MAX_PATH_LEN];
-  PetscBool     resume;
-  PetscInt      batch;
-  PetscReal     progress; /* seconds between progress lines */
-  long          nsamples;
+  MPI_Comm            comm;
+  PetscMPIInt         rank, size;
+  HylcPattern         pat;
+  HylcYarnModel       model;
+  HylcMicro           micro;
+  HylcPlan            plan;
+  char                output[PETSC_MAX_PATH_LEN];
+  PetscBool           resume;
+  PetscInt            batch;
+  PetscReal           progress; /* seconds between progress lines */
+  long                nsamples;
   PetscInt            refmode; /* 0 auto, 1 compute, 2 none */
   HylcReferenceParams refpar;
   char                refout[PETSC_MAX_PATH_LEN];
@@ -42,7 +42,7 @@ PetscErrorCode HylcSamplerCreate(MPI_Comm comm, HylcSampler *s)
   PetscCall(PetscStrncpy(S->output, "samples.h5", sizeof(S->output)));
   S->batch    = 1;
   S->progress = 5;
-  S->density  = 1200;
+  S->density  = 0;
   *s          = S;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -91,11 +91,11 @@ static PetscErrorCode RangeOption(PetscOptionItems *PetscOptionsObject, const ch
 @*/
 PetscErrorCode HylcSamplerSetFromOptions(HylcSampler S)
 {
-  PetscEnum   fam     = 0;
-  const char *cn[5]   = {"sx", "sa", "sy", "II00", "II11"};
-  char      terms[512] = "all";
-  PetscInt  n1 = 150, n2 = 50;
-  PetscReal r;
+  PetscEnum   fam        = 0;
+  const char *cn[5]      = {"sx", "sa", "sy", "II00", "II11"};
+  char        terms[512] = "all";
+  PetscInt    n1 = 150, n2 = 50;
+  PetscReal   r;
 
   PetscFunctionBegin;
   PetscCall(HylcPatternCreate(S->comm, &S->pat));
@@ -140,7 +140,7 @@ PetscErrorCode HylcSamplerSetFromOptions(HylcSampler S)
   PetscCall(PetscOptionsInt("-sampler_batch", "Samples per batch (unit of work of a rank)", "HylcSampler", S->batch, &S->batch, NULL));
   PetscCall(PetscOptionsReal("-sampler_progress", "Seconds between progress lines", "HylcSampler", S->progress, &S->progress, NULL));
   PetscCall(PetscOptionsString("-sampler_export_raw", "Also write the paper's raw layout into this directory: data.txt (rows sx sa sy II00 II01 II11 Psi in the order of C4) and info.txt (area, area density)", "HylcSampler", S->rawdir, S->rawdir, sizeof(S->rawdir), NULL));
-  PetscCall(PetscOptionsReal("-sampler_density", "Volumetric yarn density for the area density of info.txt (kg/m^3)", "HylcSampler", S->density, &S->density, NULL));
+  PetscCall(PetscOptionsReal("-sampler_density", "Volumetric yarn density for the area density of info.txt (kg/m^3; <= 0: 0.12 kg/m^2 / r, as hylc-fit)", "HylcSampler", S->density, &S->density, NULL));
   PetscOptionsEnd();
   PetscCheck(n1 >= 1 && n1 <= 1024 && n2 >= 1 && n2 <= 1024, S->comm, PETSC_ERR_USER_INPUT, "-sampler_n1 and -sampler_n2 must be in 1..1024");
   PetscCheck(S->batch >= 1, S->comm, PETSC_ERR_USER_INPUT, "-sampler_batch must be at least 1");
@@ -276,7 +276,8 @@ static PetscErrorCode Drain(HylcSampler S, HylcJournal J, Progress *pg, PetscInt
     if (wait) {
       PetscCallMPI(MPI_Probe(MPI_ANY_SOURCE, MPI_ANY_TAG, S->comm, &st));
       flag = 1;
-    } else PetscCallMPI(MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, S->comm, &flag, &st));
+    } else
+      PetscCallMPI(MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, S->comm, &flag, &st));
     if (!flag) break;
     if (st.MPI_TAG == TAG_DONE) {
       int dummy;
@@ -370,7 +371,7 @@ PetscErrorCode HylcSamplerRun(HylcSampler S)
   PetscCall(PetscMalloc1(S->batch, &recs));
   /* dynamic scheduling: the next batch comes from a shared counter on rank 0 (MPI one-sided atomic
      fetch-and-add, no involvement of rank 0); which rank solves a sample does not change its result */
-  const long nb = (S->nsamples + S->batch - 1) / S->batch;
+  const long nb      = (S->nsamples + S->batch - 1) / S->batch;
   long      *counter = NULL, one = 1, b;
   MPI_Win    win;
   PetscCallMPI(MPI_Win_allocate(S->rank ? 0 : (MPI_Aint)sizeof(long), sizeof(long), MPI_INFO_NULL, S->comm, &counter, &win));
@@ -388,7 +389,8 @@ PetscErrorCode HylcSamplerRun(HylcSampler S)
       if (!S->rank) PetscCall(Drain(S, J, &pg, &finished, PETSC_FALSE));
     }
     if (!n) continue;
-    if (S->rank) PetscCallMPI(MPI_Send(recs, (PetscMPIInt)(n * sizeof(HylcSampleRecord)), MPI_BYTE, 0, TAG_RECORDS, S->comm));
+    if (S->rank)
+      PetscCallMPI(MPI_Send(recs, (PetscMPIInt)(n * sizeof(HylcSampleRecord)), MPI_BYTE, 0, TAG_RECORDS, S->comm));
     else {
       PetscCall(HylcJournalAppend(J, recs, n));
       for (PetscInt i = 0; i < n; i++) pg.failed += recs[i].status != HYLC_MICRO_CONVERGED;

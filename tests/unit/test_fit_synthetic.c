@@ -1,5 +1,5 @@
 /* The fitting pipeline (HylcFitCompute) on synthetic samples of a known smooth quasiconvex Psi, taken
-   on the sampling plan of Algorithm C4 (include/hylc/plan.h; 150 1D samples, 20 x 20 2D grids):
+   on the sampling plan of Algorithm C4 (include/hylc/plan.h; 150 1D samples, 50 x 50 2D grids: the full 23,251-sample plan):
    - the model (S26) reproduces Psi to 1 % at every sample with the woven settings, in paper and authors
      compat modes (worst 0.81 %, at the range ends where the splines extrapolate beyond the 0.95 / 0.9
      knot spans); with the stockinette settings to 2 % inside the knots;
@@ -26,7 +26,7 @@ static PetscErrorCode Check(const char *label, const char *options, PetscBool st
   PetscInt  *term;
 
   PetscFunctionBeginUser;
-  MakeData(150, 20, -1, &n, &z, &psi, &term);
+  MakeData(150, 50, -1, &n, &z, &psi, &term);
   PetscCall(PetscOptionsClear(NULL));
   PetscCall(PetscOptionsInsertString(NULL, options));
   PetscCall(HylcFitCreate(PETSC_COMM_SELF, &fit));
