@@ -29,17 +29,17 @@ typedef enum {
 PETSC_EXTERN const char *const HylcMicroStatuses[];
 
 typedef struct {
-  PetscReal       z[6];          /* the strain */
-  PetscReal       psi;           /* E / A (J/m^2) */
-  PetscReal       energy;        /* E (J) */
-  PetscReal       parts[4];      /* stretch, bend, twist, contact energy (J) */
+  PetscReal       z[6];     /* the strain */
+  PetscReal       psi;      /* E / A (J/m^2) */
+  PetscReal       energy;   /* E (J) */
+  PetscReal       parts[4]; /* stretch, bend, twist, contact energy (J) */
   HylcMicroStatus status;
-  PetscInt        iterations;    /* Newton iterations */
-  PetscInt        retries;       /* alpha increases for indefinite K */
-  PetscInt        stalls;        /* line searches without decrease */
-  PetscReal       residual;      /* |z| / |z0| at the end */
-  PetscReal       cresidual;     /* |A y - dL| / r at the end */
-  PetscLogDouble  time;          /* wall time of the solve (s) */
+  PetscInt        iterations;                                /* Newton iterations */
+  PetscInt        retries;                                   /* alpha increases for indefinite K */
+  PetscInt        stalls;                                    /* line searches without decrease */
+  PetscReal       residual;                                  /* |z| / |z0| at the end */
+  PetscReal       cresidual;                                 /* |A y - dL| / r at the end */
+  PetscLogDouble  time;                                      /* wall time of the solve (s) */
   PetscLogDouble  tAssembly, tContact, tFactor, tLineSearch; /* parts of it (s) */
 } HylcMicroResult;
 

@@ -15,7 +15,7 @@ PETSC_EXTERN PetscLogEvent HYLC_TileEvaluate, HYLC_TileBroadphase, HYLC_TileCont
 PETSC_EXTERN PetscLogEvent HYLC_PeriodicSetUp, HYLC_PeriodicEvaluate, HYLC_MicroSolve, HYLC_SamplerRun;
 
 /* The fill-reducing ordering used for the Newton factorization unless -micro_factor_pc_factor_mat_ordering_type says otherwise. */
-PETSC_EXTERN const char *HylcDefaultOrdering(void);
+PETSC_EXTERN const char   *HylcDefaultOrdering(void);
 PETSC_EXTERN PetscClassId  HYLC_MIDSURFACE_CLASSID;
 PETSC_EXTERN PetscLogEvent HYLC_MacroSetUp, HYLC_MacroPoisson, HYLC_MacroEvaluate;
 PETSC_EXTERN PetscClassId  HYLC_MATERIAL_CLASSID, HYLC_FIT_CLASSID;

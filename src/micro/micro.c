@@ -9,8 +9,8 @@ typedef struct {
   /* parameters */
   PetscReal alphaStart, alphaEnd; /* alpha^ schedule: alphaStart (alphaEnd/alphaStart)^(min(i, alphaIts)/alphaIts) */
   PetscInt  alphaIts, maxRetries;
-  PetscReal twistScale;           /* mu; <= 0: 1/r */
-  PetscReal stepP0, stepP1;       /* d_max = (p0 + p1 clamp(lambda_min(I), 0, 1)) r */
+  PetscReal twistScale;     /* mu; <= 0: 1/r */
+  PetscReal stepP0, stepP1; /* d_max = (p0 + p1 clamp(lambda_min(I), 0, 1)) r */
   PetscReal lsFactor;
   PetscInt  lsMax, maxStalls;
   PetscReal rtol, atol, ctol, maxTime;
@@ -22,7 +22,7 @@ struct _n_HylcMicro {
   HylcPattern   pat;
   HylcYarnModel model;
   HylcPeriodic  P;
-  PetscInt      ny, m;  /* unknowns, constraint rows */
+  PetscInt      ny, m;     /* unknowns, constraint rows */
   PetscReal     mu, r, ks; /* twist scale, yarn radius, stretching stiffness k_s */
   SNES          snes;
   Mat           K;
@@ -34,18 +34,18 @@ struct _n_HylcMicro {
   PetscReal       *c, *Z, *S, *Sinv, *wl, *tmp;
   PetscReal        alpha;
   /* state of a solve */
-  PetscBool      haveH;     /* K holds the unscaled H_y of the state in X */
-  PetscReal      E0;        /* energy of the current iterate */
-  PetscReal      parts[4];
-  PetscReal      z0;        /* |z| at the first iteration */
-  PetscReal      lastz, lastc;
-  PetscInt       stalls, stallsTotal, retries;
-  PetscLogDouble tStart, tFactor, tLineSearch;
+  PetscBool       haveH; /* K holds the unscaled H_y of the state in X */
+  PetscReal       E0;    /* energy of the current iterate */
+  PetscReal       parts[4];
+  PetscReal       z0; /* |z| at the first iteration */
+  PetscReal       lastz, lastc;
+  PetscInt        stalls, stallsTotal, retries;
+  PetscLogDouble  tStart, tFactor, tLineSearch;
   HylcMicroStatus status;
-  PetscBool      statusSet;
-  PetscInt       nhist, caphist;
-  PetscReal     *hist;
-  PetscBool      setFromOptionsCalled;
+  PetscBool       statusSet;
+  PetscInt        nhist, caphist;
+  PetscReal      *hist;
+  PetscBool       setFromOptionsCalled;
 };
 
 static PetscErrorCode MicroParamsDefault(MicroParams *p)
@@ -175,7 +175,6 @@ static PetscErrorCode ToY(HylcMicro M, Vec X, PetscReal y[])
   PetscCall(VecRestoreArrayRead(X, &x));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
-
 
 /* energy at X without raising errors: a degenerate state (zero-length or folded edge) gives +inf */
 static PetscErrorCode SafeEnergy(HylcMicro M, Vec X, PetscReal *E, PetscReal parts[4])
@@ -588,10 +587,10 @@ PetscErrorCode HylcMicroSolve(HylcMicro M, const PetscReal z[6], HylcMicroResult
   PetscCall(VecGetArray(M->X, &x));
   for (PetscInt i = 0; i < M->ny; i++) x[i] = (i % 4 == 3) ? M->yw[i] / M->mu : M->yw[i];
   PetscCall(VecRestoreArray(M->X, &x));
-  M->haveH     = PETSC_FALSE;
-  M->stalls    = M->stallsTotal = M->retries = 0;
-  M->statusSet = PETSC_FALSE;
-  M->status    = HYLC_MICRO_CONVERGED;
+  M->haveH  = PETSC_FALSE;
+  M->stalls = M->stallsTotal = M->retries = 0;
+  M->statusSet                            = PETSC_FALSE;
+  M->status                               = HYLC_MICRO_CONVERGED;
   M->tFactor = M->tLineSearch = 0;
   M->nhist                    = 0;
   M->E0                       = PETSC_INFINITY;
@@ -600,12 +599,18 @@ PetscErrorCode HylcMicroSolve(HylcMicro M, const PetscReal z[6], HylcMicroResult
   PetscCall(PetscPopErrorHandler());
   PetscCall(SNESGetConvergedReason(M->snes, &reason));
   PetscCall(SNESGetIterationNumber(M->snes, &its));
-  if (ierr) res->status = HYLC_MICRO_FAILED;
-  else if (reason > 0) res->status = HYLC_MICRO_CONVERGED;
-  else if (M->statusSet) res->status = M->status;
-  else if (reason == SNES_DIVERGED_MAX_IT) res->status = HYLC_MICRO_MAX_IT;
-  else if (reason == SNES_DIVERGED_FNORM_NAN || reason == SNES_DIVERGED_FUNCTION_DOMAIN) res->status = HYLC_MICRO_NONFINITE;
-  else res->status = HYLC_MICRO_FAILED;
+  if (ierr)
+    res->status = HYLC_MICRO_FAILED;
+  else if (reason > 0)
+    res->status = HYLC_MICRO_CONVERGED;
+  else if (M->statusSet)
+    res->status = M->status;
+  else if (reason == SNES_DIVERGED_MAX_IT)
+    res->status = HYLC_MICRO_MAX_IT;
+  else if (reason == SNES_DIVERGED_FNORM_NAN || reason == SNES_DIVERGED_FUNCTION_DOMAIN)
+    res->status = HYLC_MICRO_NONFINITE;
+  else
+    res->status = HYLC_MICRO_FAILED;
   /* the final state and its energy */
   PetscCall(SafeEnergy(M, M->X, &res->energy, res->parts));
   if (!PetscIsNormalReal(res->energy) && res->energy != 0) res->status = HYLC_MICRO_NONFINITE;

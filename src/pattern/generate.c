@@ -248,11 +248,11 @@ PetscErrorCode HylcPatternSetRestFromGeometry(HylcPattern p)
     HylcOrthonormalizeDirector(t + 3 * v, p->refD1 + 3 * v);
   }
   for (PetscInt v = 0; v < p->nv; v++) {
-    const PetscInt u = p->prev[v];
-    PetscReal      kb[3], d2e[3], d2f[3], m1e[3], m2e[3], m1f[3], m2f[3];
+    const PetscInt  u = p->prev[v];
+    PetscReal       kb[3], d2e[3], d2f[3], m1e[3], m2e[3], m1f[3], m2f[3];
     const PetscReal m = HylcReferenceTwist(t + 3 * u, p->refD1 + 3 * u, t + 3 * v, p->refD1 + 3 * v);
     p->refTwist[v]    = m + 2 * PETSC_PI * round((p->refTwist[v] - m) / (2 * PETSC_PI)); /* the branch nearest the stored value */
-    p->restTwist[v] = p->refTwist[v] + p->theta[v] - p->theta[u];
+    p->restTwist[v]   = p->refTwist[v] + p->theta[v] - p->theta[u];
     HylcCurvatureBinormal(t + 3 * u, t + 3 * v, kb);
     HylcCross3(t + 3 * u, p->refD1 + 3 * u, d2e);
     HylcCross3(t + 3 * v, p->refD1 + 3 * v, d2f);

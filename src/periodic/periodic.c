@@ -11,38 +11,38 @@ const char *const HylcSlideConstraints[] = {"none", "global", "per_yarn", "HylcS
 #define SMAX 8 /* |lattice shift| bound of ghosts */
 
 typedef struct {
-  PetscInt  e, f;    /* incoming and outgoing full edges */
-  PetscInt  v[3];    /* full vertices prev, centre, next */
-  PetscReal w;       /* fractional weight */
+  PetscInt  e, f; /* incoming and outgoing full edges */
+  PetscInt  v[3]; /* full vertices prev, centre, next */
+  PetscReal w;    /* fractional weight */
 } BendElem;
 
 struct _n_HylcPeriodic {
-  char                prefix[64];
-  HylcPattern         pat;
-  HylcPatternData     D;
-  HylcYarnModel       model;
-  HylcYarnConstants   c;
+  char                   prefix[64];
+  HylcPattern            pat;
+  HylcPatternData        D;
+  HylcYarnModel          model;
+  HylcYarnConstants      c;
   HylcRodBendTwistParams btpar;
-  HylcMidsurface      ms;
-  PetscReal           z[6];
-  HylcSlideConstraint slide;
-  PetscReal           marginFactor; /* contact-ghost margin: max(3 r, factor min(px, py)) */
-  PetscBool           setup;
-  PetscInt            N; /* original vertices */
-  PetscReal          *xi; /* reference (xi1, xi2, h) of the originals, recentred */
+  HylcMidsurface         ms;
+  PetscReal              z[6];
+  HylcSlideConstraint    slide;
+  PetscReal              marginFactor; /* contact-ghost margin: max(3 r, factor min(px, py)) */
+  PetscBool              setup;
+  PetscInt               N;  /* original vertices */
+  PetscReal             *xi; /* reference (xi1, xi2, h) of the originals, recentred */
   /* full vertices: original o, shift s; the first N are the originals */
   PetscInt   nfv, capfv, *fo, *fs;
-  PetscReal *T, *d;       /* per full vertex: T (9), d (3) */
-  PetscBool *rigidId;     /* T == I exactly */
-  PetscHMapI vmap, emap;  /* (o, s) -> full vertex / full edge */
+  PetscReal *T, *d;      /* per full vertex: T (9), d (3) */
+  PetscBool *rigidId;    /* T == I exactly */
+  PetscHMapI vmap, emap; /* (o, s) -> full vertex / full edge */
   /* full edges: source full vertex (edge leaving o(src) in copy s(src)) and head */
-  PetscInt   nfe, capfe, *esrc, *ehead;
-  PetscReal *et, *ed1, *et0, *ed10; /* frames per full edge (and saved copy) */
-  PetscReal *sw;                    /* stretch weight per full edge (0: contact-only edge) */
-  unsigned char *eghost;            /* edge has no original vertex */
+  PetscInt       nfe, capfe, *esrc, *ehead;
+  PetscReal     *et, *ed1, *et0, *ed10; /* frames per full edge (and saved copy) */
+  PetscReal     *sw;                    /* stretch weight per full edge (0: contact-only edge) */
+  unsigned char *eghost;                /* edge has no original vertex */
   /* bend/twist elements */
-  PetscInt  nbe, capbe;
-  BendElem *be;
+  PetscInt   nbe, capbe;
+  BendElem  *be;
   PetscReal *mref, *mref0;
   /* state */
   PetscReal *y, *y0, *x; /* y and the initial guess y0: 4 N; x: 3 per full vertex */
@@ -57,11 +57,11 @@ struct _n_HylcPeriodic {
   PetscInt     ncand, capcand, *cpairs;  /* candidates for the Hessian's structure (boxes inflated by pairMargin r) */
   PetscReal   *cw;
   PetscReal    pairMargin;
-  PetscReal   *pw;                       /* pair weights */
+  PetscReal   *pw; /* pair weights */
   /* COO */
   PetscInt     ncoo, capcoo, *coopos; /* element-entry values coov and where each goes in the CSR values */
   PetscScalar *coov;
-  PetscInt    *rowptr, *colind, nnz;      /* the CSR structure of H_y: 4x4 blocks of coupled vertices */
+  PetscInt    *rowptr, *colind, nnz; /* the CSR structure of H_y: 4x4 blocks of coupled vertices */
   PetscInt     coonpairs, *coopairs; /* the pairs of the current COO structure, a superset of the touching ones */
   PetscReal   *coopw;
   Mat          cooMat;
@@ -119,8 +119,8 @@ static PetscErrorCode PeriodicReset(HylcPeriodic P)
   PetscCall(PetscFree2(P->rowptr, P->colind));
   PetscCall(PetscFree2(P->coopairs, P->coopw));
   P->nfv = P->capfv = P->nfe = P->capfe = P->nbe = P->capbe = P->npairs = P->cappairs = P->ncoo = P->capcoo = P->coonpairs = 0;
-  P->cooMat = NULL;
-  P->setup  = PETSC_FALSE;
+  P->cooMat                                                                                                                = NULL;
+  P->setup                                                                                                                 = PETSC_FALSE;
   P->tEval = P->tContact = P->tAssemble = 0;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -203,10 +203,10 @@ static PetscErrorCode FullVertex(HylcPeriodic P, PetscInt o, PetscInt s1, PetscI
     P->fo = fo;
     P->fs = fs;
   }
-  *k                   = P->nfv++;
-  P->fo[*k]            = o;
-  P->fs[2 * *k]        = s1;
-  P->fs[2 * *k + 1]    = s2;
+  *k                = P->nfv++;
+  P->fo[*k]         = o;
+  P->fs[2 * *k]     = s1;
+  P->fs[2 * *k + 1] = s2;
   PetscCall(PetscHMapISet(P->vmap, key, *k));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -222,8 +222,8 @@ static PetscErrorCode FullEdge(HylcPeriodic P, PetscInt o, PetscInt s1, PetscInt
   PetscCall(FullVertex(P, o, s1, s2, &k0));
   PetscCall(FullVertex(P, P->D.next[o], s1 + P->D.shift[2 * o], s2 + P->D.shift[2 * o + 1], &k1));
   if (P->nfe == P->capfe) {
-    PetscInt     *es, *eh;
-    PetscReal    *sw;
+    PetscInt      *es, *eh;
+    PetscReal     *sw;
     unsigned char *eg;
     P->capfe = P->capfe ? 2 * P->capfe : 2 * P->N + 16;
     PetscCall(PetscMalloc4(P->capfe, &es, P->capfe, &eh, P->capfe, &sw, P->capfe, &eg));
@@ -298,8 +298,8 @@ static inline void Mat3(const PetscReal M[9], const PetscReal v[3], PetscReal ou
 
 static PetscErrorCode SetUpConstraints(HylcPeriodic P, const PetscReal *x0)
 {
-  const PetscInt N = P->N, nl_rows = P->slide == HYLC_SLIDE_GLOBAL ? 1 : 0;
-  PetscInt       nloops, m;
+  const PetscInt         N = P->N, nl_rows = P->slide == HYLC_SLIDE_GLOBAL ? 1 : 0;
+  PetscInt               nloops, m;
   const HylcMacroStrain *ms;
 
   PetscFunctionBegin;
@@ -580,7 +580,7 @@ PetscErrorCode HylcPeriodicSetState(HylcPeriodic P, const PetscReal y[])
   PetscCheck(P->setup, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE, "Call HylcPeriodicSetUp() first");
   if (y != P->y) PetscCall(PetscArraycpy(P->y, y, 4 * P->N));
   for (PetscInt k = 0; k < P->nfv; k++) {
-    const PetscInt   o = P->fo[k];
+    const PetscInt   o  = P->fo[k];
     const PetscReal *xo = P->y + 4 * o;
     if (P->rigidId[k])
       for (int i = 0; i < 3; i++) P->x[3 * k + i] = xo[i] + P->d[3 * k + i];
@@ -711,7 +711,8 @@ static PetscErrorCode FindPairs(HylcPeriodic P)
     PetscCheck(!HylcBVHCreate((int)P->nfe, &P->bvh), PETSC_COMM_SELF, PETSC_ERR_MEM, "Cannot create the broadphase");
     PetscCheck(!HylcBVHBuild(P->bvh, P->segx, NULL, P->pairMargin * P->c.r), PETSC_COMM_SELF, PETSC_ERR_MEM, "Cannot build the broadphase");
     PetscCheck(!HylcBVHSetGhost(P->bvh, P->eghost), PETSC_COMM_SELF, PETSC_ERR_MEM, "Cannot set ghost flags");
-  } else PetscCheck(!HylcBVHRefit(P->bvh, P->segx, NULL), PETSC_COMM_SELF, PETSC_ERR_MEM, "Cannot refit the broadphase");
+  } else
+    PetscCheck(!HylcBVHRefit(P->bvh, P->segx, NULL), PETSC_COMM_SELF, PETSC_ERR_MEM, "Cannot refit the broadphase");
   PetscCheck(!HylcBVHQuery(P->bvh, &P->cand), PETSC_COMM_SELF, PETSC_ERR_MEM, "Broadphase query failed");
   HylcPairListSort(&P->cand);
   P->npairs = P->ncand = 0;
@@ -741,9 +742,9 @@ PetscErrorCode HylcPeriodicGetNumContactPairs(HylcPeriodic P, PetscInt *n)
 
 /* local element layout: a list of "slots", each a full vertex position (3 dofs) or a twist (1 dof) */
 typedef struct {
-  PetscInt n;        /* number of local dofs */
-  PetscInt vert[4];  /* full vertex of each position slot (-1 none) */
-  PetscInt pos[4];   /* local offset of each position slot */
+  PetscInt n;       /* number of local dofs */
+  PetscInt vert[4]; /* full vertex of each position slot (-1 none) */
+  PetscInt pos[4];  /* local offset of each position slot */
   PetscInt npos;
   PetscInt twist[2]; /* local offset of twist dofs and their original vertex */
   PetscInt two[2];
@@ -854,7 +855,8 @@ static void     StructElementDofs(const HylcPeriodic P, PetscInt k, PetscInt idx
   if (k < P->nfe) {
     StretchLayout(P, k, &L);
     if (P->sw[k] == 0) L.n = 0; /* no original vertex: not assembled */
-  } else if (k < P->nfe + P->nbe) BendLayout(P, P->be + (k - P->nfe), &L);
+  } else if (k < P->nfe + P->nbe)
+    BendLayout(P, P->be + (k - P->nfe), &L);
   else {
     const PetscInt p = k - P->nfe - P->nbe;
     ContactLayout(P, P->coopairs[2 * p], P->coopairs[2 * p + 1], &L);
@@ -879,7 +881,7 @@ static PetscErrorCode SetCOO(HylcPeriodic P, Mat H)
   PetscCall(PetscMalloc2(2 * P->ncand + 1, &P->coopairs, P->ncand + 1, &P->coopw));
   PetscCall(PetscArraycpy(P->coopairs, P->cpairs, 2 * P->ncand));
   PetscCall(PetscArraycpy(P->coopw, P->cw, P->ncand));
-  P->coonpairs = P->ncand;
+  P->coonpairs        = P->ncand;
   const PetscInt nent = P->nfe * 36 + P->nbe * 121 + P->coonpairs * 144, nel = NumStructElements(P);
   if (nent > P->capcoo) {
     PetscCall(PetscFree2(P->coopos, P->coov));
@@ -929,7 +931,7 @@ static PetscErrorCode SetCOO(HylcPeriodic P, Mat H)
       const PetscInt row = 4 * a + i;
       PetscInt       c   = P->rowptr[row];
       for (PetscInt q = 0; q < deg[a]; q++) {
-        const unsigned bits = (mask[start[a] + q] >> (4 * i)) & 0xFu;
+        const unsigned bits          = (mask[start[a] + q] >> (4 * i)) & 0xFu;
         boff[4 * (start[a] + q) + i] = c;
         for (PetscInt j = 0; j < 4; j++)
           if (bits & (1u << j)) P->colind[c++] = 4 * nbr[start[a] + q] + j;
@@ -991,8 +993,10 @@ PetscErrorCode HylcPeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts[4]
   PetscCall(PetscLogEventBegin(HYLC_PeriodicEvaluate, 0, 0, 0, 0));
   PetscCall(PetscTime(&t0));
   if (gy) PetscCall(PetscArrayzero(gy, 4 * P->N));
-  if (mask & HYLC_TERM_CONTACT) PetscCall(FindPairs(P));
-  else P->npairs = 0;
+  if (mask & HYLC_TERM_CONTACT)
+    PetscCall(FindPairs(P));
+  else
+    P->npairs = 0;
   if (H) PetscCall(SetCOO(P, H));
   hv = H ? P->coov : NULL;
   for (PetscInt e = 0; e < P->nfe; e++) {
@@ -1013,7 +1017,7 @@ PetscErrorCode HylcPeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts[4]
   }
   const int bt = ((mask & HYLC_TERM_BEND) ? HYLC_ROD_BEND : 0) | ((mask & HYLC_TERM_TWIST) ? HYLC_ROD_TWIST : 0);
   for (PetscInt b = 0; b < P->nbe; b++) {
-    const BendElem     *B = P->be + b;
+    const BendElem     *B  = P->be + b;
     const PetscInt      oc = P->fo[B->v[1]], ou = P->fo[B->v[0]];
     HylcRodBendTwistRef ref;
     double              en[2];
@@ -1032,8 +1036,8 @@ PetscErrorCode HylcPeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts[4]
     ref.mref      = P->mref[b];
     ref.kappa0[0] = ref.kappa0[2] = P->D.restKappa[2 * oc];
     ref.kappa0[1] = ref.kappa0[3] = P->D.restKappa[2 * oc + 1];
-    ref.tau0      = P->D.restTwist[oc];
-    ref.lbar      = 0.5 * (P->D.restLength[ou] + P->D.restLength[oc]);
+    ref.tau0                      = P->D.restTwist[oc];
+    ref.lbar                      = 0.5 * (P->D.restLength[ou] + P->D.restLength[oc]);
     if (bt) {
       const int err = (gy || H) ? HylcRodBendTwist(x, &ref, &P->btpar, B->w, bt, en, gy ? ge : NULL, H ? He : NULL) : HylcRodBendTwistEnergy(x, &ref, &P->btpar, B->w, en);
       PetscCheck(!err, PETSC_COMM_SELF, PETSC_ERR_FP, "Bending element at vertex %" PetscInt_FMT " is degenerate", oc);
@@ -1056,8 +1060,10 @@ PetscErrorCode HylcPeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts[4]
     for (int a = 0; a < 4; a++)
       for (int c = 0; c < 3; c++) x[3 * a + c] = P->x[3 * L.vert[a] + c];
     const PetscReal la = P->D.restLength[P->fo[P->esrc[i]]], lb = P->D.restLength[P->fo[P->esrc[j]]];
-    if (P->model.contactType == HYLC_CONTACT_QUADRATURE) en = HylcContactQuadrature(x, x + 3, x + 6, x + 9, la, lb, P->c.kc, P->c.r, (int)P->model.contactPoints, pw[p], gy ? ge : NULL, H ? He : NULL);
-    else en = HylcContactClosestPoint(x, x + 3, x + 6, x + 9, la, lb, P->c.kc, P->c.r, pw[p], gy ? ge : NULL, H ? He : NULL, NULL, NULL, NULL);
+    if (P->model.contactType == HYLC_CONTACT_QUADRATURE)
+      en = HylcContactQuadrature(x, x + 3, x + 6, x + 9, la, lb, P->c.kc, P->c.r, (int)P->model.contactPoints, pw[p], gy ? ge : NULL, H ? He : NULL);
+    else
+      en = HylcContactClosestPoint(x, x + 3, x + 6, x + 9, la, lb, P->c.kc, P->c.r, pw[p], gy ? ge : NULL, H ? He : NULL, NULL, NULL, NULL);
     E[3] += en;
     Scatter(P, &L, ge, He, gy, hv ? hv + k : NULL);
     k += 144;

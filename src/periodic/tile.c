@@ -11,10 +11,10 @@ struct _n_HylcTile {
   HylcYarnConstants      c;
   HylcRodBendTwistParams btpar;
   PetscInt               nv;
-  PetscReal              L[2][3];    /* lattice vectors */
-  PetscReal             *q;          /* 4 per vertex: x, y, z, theta of the outgoing edge */
-  PetscReal             *t, *d1;     /* stored unit tangent and reference director per edge (3 each) */
-  PetscReal             *mref;       /* stored reference twist per vertex */
+  PetscReal              L[2][3]; /* lattice vectors */
+  PetscReal             *q;       /* 4 per vertex: x, y, z, theta of the outgoing edge */
+  PetscReal             *t, *d1;  /* stored unit tangent and reference director per edge (3 each) */
+  PetscReal             *mref;    /* stored reference twist per vertex */
   /* broadphase over the tile and its periodic copies */
   PetscInt       nshift, capshift, *shifts; /* shifts[0] = (0,0), then the copies */
   double        *segx;                      /* 6 per segment of the extended list */
@@ -23,7 +23,7 @@ struct _n_HylcTile {
   HylcBVH        bvh;
   HylcPairList   cand;
   /* contact pairs (a, b, s1, s2): segment a and the copy of segment b shifted by s */
-  PetscInt  npairs, cappairs, *pairs;
+  PetscInt npairs, cappairs, *pairs;
   /* COO structure of the Hessian for the pair list it was built for */
   PetscInt     ncoo, capcoo, *cooi, *cooj;
   PetscScalar *coov;
@@ -183,7 +183,7 @@ PetscErrorCode HylcTileUpdateFrames(HylcTile T)
 /* Periodic copies that can come within contact distance of the tile; fills the extended segment list. */
 static PetscErrorCode TileUpdateCopies(HylcTile T)
 {
-  const PetscReal cut = 2 * T->c.r * 1.01;
+  const PetscReal cut   = 2 * T->c.r * 1.01;
   PetscReal       lo[2] = {PETSC_MAX_REAL, PETSC_MAX_REAL}, hi[2] = {PETSC_MIN_REAL, PETSC_MIN_REAL};
   PetscInt        m[2];
 
@@ -199,7 +199,7 @@ static PetscErrorCode TileUpdateCopies(HylcTile T)
   /* s L in (box - box) + ball(cut): bound |s| through the inverse of the in-plane lattice matrix */
   {
     const PetscReal W = hi[0] - lo[0] + cut, H = hi[1] - lo[1] + cut;
-    const PetscReal det = T->L[0][0] * T->L[1][1] - T->L[0][1] * T->L[1][0];
+    const PetscReal det       = T->L[0][0] * T->L[1][1] - T->L[0][1] * T->L[1][0];
     const PetscReal inv[2][2] = {{T->L[1][1] / det, -T->L[1][0] / det}, {-T->L[0][1] / det, T->L[0][0] / det}};
     for (int k = 0; k < 2; k++) m[k] = (PetscInt)PetscCeilReal(PetscAbsReal(inv[k][0]) * W + PetscAbsReal(inv[k][1]) * H);
   }
@@ -209,7 +209,7 @@ static PetscErrorCode TileUpdateCopies(HylcTile T)
     PetscCall(PetscMalloc1(2 * nshift, &T->shifts));
     T->capshift = nshift;
   }
-  T->nshift = 0;
+  T->nshift                    = 0;
   T->shifts[2 * T->nshift]     = 0;
   T->shifts[2 * T->nshift + 1] = 0;
   T->nshift++;
@@ -237,7 +237,8 @@ static PetscErrorCode TileUpdateCopies(HylcTile T)
     PetscCheck(!HylcBVHCreate((int)nseg, &T->bvh), PETSC_COMM_SELF, PETSC_ERR_MEM, "Cannot create the broadphase");
     PetscCheck(!HylcBVHBuild(T->bvh, T->segx, NULL, T->c.r), PETSC_COMM_SELF, PETSC_ERR_MEM, "Cannot build the broadphase");
     PetscCheck(!HylcBVHSetGhost(T->bvh, T->ghost), PETSC_COMM_SELF, PETSC_ERR_MEM, "Cannot set ghost flags");
-  } else PetscCheck(!HylcBVHRefit(T->bvh, T->segx, NULL), PETSC_COMM_SELF, PETSC_ERR_MEM, "Cannot refit the broadphase");
+  } else
+    PetscCheck(!HylcBVHRefit(T->bvh, T->segx, NULL), PETSC_COMM_SELF, PETSC_ERR_MEM, "Cannot refit the broadphase");
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -394,15 +395,17 @@ static PetscErrorCode TileSetCOO(HylcTile T, Mat H)
 @*/
 PetscErrorCode HylcTileEvaluate(HylcTile T, int mask, PetscReal parts[4], PetscReal g[], Mat H)
 {
-  PetscInt  k = 0, idx[12];
+  PetscInt  k    = 0, idx[12];
   PetscReal E[4] = {0, 0, 0, 0};
   double    x[12], ge[12], He[144];
 
   PetscFunctionBegin;
   PetscCall(PetscLogEventBegin(HYLC_TileEvaluate, 0, 0, 0, 0));
   if (g) PetscCall(PetscArrayzero(g, 4 * T->nv));
-  if (mask & HYLC_TERM_CONTACT) PetscCall(TileFindPairs(T));
-  else T->npairs = 0;
+  if (mask & HYLC_TERM_CONTACT)
+    PetscCall(TileFindPairs(T));
+  else
+    T->npairs = 0;
   if (H) PetscCall(TileSetCOO(T, H));
   PetscScalar *hv = T->coov;
   /* stretching, one element per edge */
@@ -430,9 +433,9 @@ PetscErrorCode HylcTileEvaluate(HylcTile T, int mask, PetscReal parts[4], PetscR
     EdgeEnds(T, u, -T->D.shift[2 * u], -T->D.shift[2 * u + 1], a0, a1); /* incoming edge, ending at x_v */
     EdgeEnds(T, v, 0, 0, a1, b1);
     for (int d = 0; d < 3; d++) {
-      x[d]     = a0[d];
-      x[4 + d] = a1[d];
-      x[8 + d] = b1[d];
+      x[d]       = a0[d];
+      x[4 + d]   = a1[d];
+      x[8 + d]   = b1[d];
       ref.te[d]  = T->t[3 * u + d];
       ref.d1e[d] = T->d1[3 * u + d];
       ref.tf[d]  = T->t[3 * v + d];
@@ -469,8 +472,10 @@ PetscErrorCode HylcTileEvaluate(HylcTile T, int mask, PetscReal parts[4], PetscR
     EdgeEnds(T, P[0], 0, 0, x, x + 3);
     EdgeEnds(T, P[1], P[2], P[3], x + 6, x + 9);
     ContactDofs(T, P, idx);
-    if (T->model.contactType == HYLC_CONTACT_QUADRATURE) e = HylcContactQuadrature(x, x + 3, x + 6, x + 9, T->D.restLength[P[0]], T->D.restLength[P[1]], T->c.kc, T->c.r, (int)T->model.contactPoints, 1.0, g ? ge : NULL, H ? He : NULL);
-    else e = HylcContactClosestPoint(x, x + 3, x + 6, x + 9, T->D.restLength[P[0]], T->D.restLength[P[1]], T->c.kc, T->c.r, 1.0, g ? ge : NULL, H ? He : NULL, NULL, NULL, NULL);
+    if (T->model.contactType == HYLC_CONTACT_QUADRATURE)
+      e = HylcContactQuadrature(x, x + 3, x + 6, x + 9, T->D.restLength[P[0]], T->D.restLength[P[1]], T->c.kc, T->c.r, (int)T->model.contactPoints, 1.0, g ? ge : NULL, H ? He : NULL);
+    else
+      e = HylcContactClosestPoint(x, x + 3, x + 6, x + 9, T->D.restLength[P[0]], T->D.restLength[P[1]], T->c.kc, T->c.r, 1.0, g ? ge : NULL, H ? He : NULL, NULL, NULL, NULL);
     E[3] += e;
     if (g)
       for (int i = 0; i < 12; i++) g[idx[i]] += ge[i];

@@ -35,7 +35,9 @@ int HylcSampleRange(int c, double zmin, double zmax, int N, double Z[])
     const double a = -sqrt(fabs(zmin)), b = sqrt(fabs(zmax));
     for (int k = 0; k < N; k++) {
       const double t = N > 1 ? a + (b - a) * k / (N - 1) : a;
-      Z[k]           = (t > 0 ? 1 : t < 0 ? -1 : 0) * t * t;
+      Z[k]           = (t > 0 ? 1 : t < 0 ? -1
+                                          : 0) *
+             t * t;
     }
     Z[0] = zmin; /* exact end points */
     if (N > 1) Z[N - 1] = zmax;
@@ -92,15 +94,20 @@ int HylcPlanDefaults(const char *family, double scale, HylcPlan *p)
 {
   /* 1D limits of method-spec §8: sx = sy range, sa, II00, II11 (1/m at r = 1 mm) */
   double s0, s1, sa, b0, b1;
-  if (!strcmp(family, "woven")) s0 = -0.60, s1 = 1.00, sa = 0.75, b0 = 170, b1 = 170;
-  else if (!strcmp(family, "stockinette")) s0 = -0.50, s1 = 0.80, sa = 0.75, b0 = 200, b1 = 230;
-  else if (!strcmp(family, "honeycomb")) s0 = -0.50, s1 = 0.80, sa = 0.75, b0 = 120, b1 = 120;
-  else if (!strcmp(family, "rib")) s0 = -0.65, s1 = 1.00, sa = 0.60, b0 = 100, b1 = 80;
-  else return -1;
+  if (!strcmp(family, "woven"))
+    s0 = -0.60, s1 = 1.00, sa = 0.75, b0 = 170, b1 = 170;
+  else if (!strcmp(family, "stockinette"))
+    s0 = -0.50, s1 = 0.80, sa = 0.75, b0 = 200, b1 = 230;
+  else if (!strcmp(family, "honeycomb"))
+    s0 = -0.50, s1 = 0.80, sa = 0.75, b0 = 120, b1 = 120;
+  else if (!strcmp(family, "rib"))
+    s0 = -0.65, s1 = 1.00, sa = 0.60, b0 = 100, b1 = 80;
+  else
+    return -1;
   memset(p, 0, sizeof(*p));
-  p->n1        = 150;
-  p->n2        = 50;
-  p->terms     = (1 << HYLC_PLAN_NTERM) - 1;
+  p->n1              = 150;
+  p->n2              = 50;
+  p->terms           = (1 << HYLC_PLAN_NTERM) - 1;
   const double lo[5] = {s0, -sa, s0, -b0 * scale, -b1 * scale}, hi[5] = {s1, sa, s1, b0 * scale, b1 * scale};
   for (int c = 0; c < 5; c++) {
     p->min1[c] = lo[c];
@@ -115,9 +122,12 @@ int HylcPlanDefaults(const char *family, double scale, HylcPlan *p)
       const int other = c[1 - a], x = c[a];
       double    mn, mx;
       if (x == 0 || x == 2) {
-        if (other == 0 || other == 2) mn = 0.74 * lo[x], mx = hi[x]; /* the Poisson pair (sx, sy) */
-        else mn = -0.1, mx = 0.84 * hi[x];
-      } else if (x == 1) mn = 0.8 * lo[x], mx = 0.8 * hi[x];
+        if (other == 0 || other == 2)
+          mn = 0.74 * lo[x], mx = hi[x]; /* the Poisson pair (sx, sy) */
+        else
+          mn = -0.1, mx = 0.84 * hi[x];
+      } else if (x == 1)
+        mn = 0.8 * lo[x], mx = 0.8 * hi[x];
       else {
         const double f = ((x == 3 && other == 0) || (x == 4 && other == 2)) ? 0.72 : 0.8; /* same axis */
         mn = f * lo[x], mx = f * hi[x];

@@ -83,13 +83,17 @@ static PetscErrorCode InPlaneMinimum(HylcMicro M, const HylcReferenceParams *par
     PetscReal c[2], xr[2], fr;
     for (int d = 0; d < 2; d++) c[d] = 0.5 * (x[0][d] + x[1][d]);
     for (int d = 0; d < 2; d++) xr[d] = c[d] + (c[d] - x[2][d]);
-    if (xr[0] < par->lo || xr[0] > par->hi || xr[1] < par->lo || xr[1] > par->hi) fr = PETSC_INFINITY;
-    else PetscCall(EnergyAt(M, xr[0], xr[1], &fr, &n));
+    if (xr[0] < par->lo || xr[0] > par->hi || xr[1] < par->lo || xr[1] > par->hi)
+      fr = PETSC_INFINITY;
+    else
+      PetscCall(EnergyAt(M, xr[0], xr[1], &fr, &n));
     if (fr < f[0]) { /* expand */
       PetscReal xe[2], fe;
       for (int d = 0; d < 2; d++) xe[d] = c[d] + 2 * (c[d] - x[2][d]);
-      if (xe[0] < par->lo || xe[0] > par->hi || xe[1] < par->lo || xe[1] > par->hi) fe = PETSC_INFINITY;
-      else PetscCall(EnergyAt(M, xe[0], xe[1], &fe, &n));
+      if (xe[0] < par->lo || xe[0] > par->hi || xe[1] < par->lo || xe[1] > par->hi)
+        fe = PETSC_INFINITY;
+      else
+        PetscCall(EnergyAt(M, xe[0], xe[1], &fe, &n));
       if (fe < fr) {
         x[2][0] = xe[0], x[2][1] = xe[1], f[2] = fe;
       } else {

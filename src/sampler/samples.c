@@ -520,7 +520,6 @@ static PetscErrorCode H5DatasetInt(hid_t loc, const char name[], PetscInt n, Pet
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-
 static PetscErrorCode WriteSamplesGroup(hid_t file, long N, const HylcSampleRecord recs[], const unsigned char done[])
 {
   double *strain, *psi, *parts, *res, *cres, *t;

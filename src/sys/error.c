@@ -63,7 +63,7 @@ int HylcMainFinalize(PetscErrorCode ierr)
 @*/
 PetscErrorCode HylcCheckOptionsUsed(MPI_Comm comm)
 {
-  PetscInt n = 0;
+  PetscInt n     = 0;
   char   **names = NULL, **values = NULL, list[1024] = "";
 
   PetscFunctionBegin;

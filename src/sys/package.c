@@ -6,7 +6,7 @@ PetscLogEvent HYLC_PatternLoad, HYLC_PatternWrite, HYLC_PatternGenerate, HYLC_Pa
 PetscLogEvent HYLC_TileEvaluate, HYLC_TileBroadphase, HYLC_TileContact, HYLC_TileAssemble;
 PetscLogEvent HYLC_PeriodicSetUp, HYLC_PeriodicEvaluate, HYLC_MicroSolve, HYLC_SamplerRun;
 
-const char *HylcDefaultOrdering(void) { return MATORDERINGMETISND; }
+const char   *HylcDefaultOrdering(void) { return MATORDERINGMETISND; }
 PetscClassId  HYLC_MIDSURFACE_CLASSID;
 PetscLogEvent HYLC_MacroSetUp, HYLC_MacroPoisson, HYLC_MacroEvaluate;
 PetscClassId  HYLC_MATERIAL_CLASSID, HYLC_FIT_CLASSID;

@@ -1,8 +1,8 @@
 /* HylcYarnModel: yarn material and contact parameters with options and documented defaults. */
 #include <hylc/yarn.h>
 
-static const char *const ContactTypes[]    = {"quadrature", "closest", "HylcContactType", "HYLC_CONTACT_", NULL};
-static const char *const CurvatureTypes[]  = {"averaged", "per_edge", "HylcRodCurvatureVariant", "HYLC_ROD_CURVATURE_", NULL};
+static const char *const ContactTypes[]   = {"quadrature", "closest", "HylcContactType", "HYLC_CONTACT_", NULL};
+static const char *const CurvatureTypes[] = {"averaged", "per_edge", "HylcRodCurvatureVariant", "HYLC_ROD_CURVATURE_", NULL};
 
 PetscErrorCode HylcYarnModelDefault(HylcYarnModel *m)
 {

@@ -11,12 +11,18 @@
 
 typedef struct {
   const char *name;
-  PetscReal   sx, sy; /* sigma of II00, II11 (1/m) */
+  PetscReal   sx, sy;           /* sigma of II00, II11 (1/m) */
   PetscReal   paper1D, paper2D; /* implied CPU-s per sample, Table S1 */
 } Case;
 
 static const Case cases[] = {
-  {"basket", 170, 170, 11, 6.3}, {"satin", 170, 170, 8.5, 9.2}, {"stockinette", 200, 230, 2.2, 5.7}, {"cartridge_belt_rib", 100, 80, 28, 25}, {"slip_stitch_honeycomb", 120, 120, 13, 19}, {"satin_small", 1700, 1700, 7.9, 8.6}, {"stockinette_small", 2000, 2300, 4.8, 4.8},
+    {"basket", 170, 170, 11, 6.3},
+    {"satin", 170, 170, 8.5, 9.2},
+    {"stockinette", 200, 230, 2.2, 5.7},
+    {"cartridge_belt_rib", 100, 80, 28, 25},
+    {"slip_stitch_honeycomb", 120, 120, 13, 19},
+    {"satin_small", 1700, 1700, 7.9, 8.6},
+    {"stockinette_small", 2000, 2300, 4.8, 4.8},
 };
 
 static PetscErrorCode Run(const char *root, const char *dir, const Case *c)
@@ -27,9 +33,17 @@ static PetscErrorCode Run(const char *root, const char *dir, const Case *c)
   HylcPattern     p;
   HylcMicro       M;
   const PetscReal zs[9][6] = {
-    {0, 0, 0, 0, 0, 0}, {0.3, 0, 0, 0, 0, 0}, {-0.3, 0, 0, 0, 0, 0}, {0, 0, 0.3, 0, 0, 0}, {0, 0.5, 0, 0, 0, 0}, {0, 0, 0, 0.8 * c->sx, 0, 0}, {0, 0, 0, -0.8 * c->sx, 0, 0}, {0, 0, 0, 0, 0, 0.8 * c->sy}, {0, 0, 0, 0, 0, -0.8 * c->sy},
+      {0, 0, 0, 0, 0, 0},
+      {0.3, 0, 0, 0, 0, 0},
+      {-0.3, 0, 0, 0, 0, 0},
+      {0, 0, 0.3, 0, 0, 0},
+      {0, 0.5, 0, 0, 0, 0},
+      {0, 0, 0, 0.8 * c->sx, 0, 0},
+      {0, 0, 0, -0.8 * c->sx, 0, 0},
+      {0, 0, 0, 0, 0, 0.8 * c->sy},
+      {0, 0, 0, 0, 0, -0.8 * c->sy},
   };
-  const char *label[9] = {"z = 0", "sx = +0.3", "sx = -0.3", "sy = +0.3", "sa = +0.5", "II00 = +0.8 s", "II00 = -0.8 s", "II11 = +0.8 s", "II11 = -0.8 s"};
+  const char    *label[9] = {"z = 0", "sx = +0.3", "sx = -0.3", "sy = +0.3", "sa = +0.5", "II00 = +0.8 s", "II00 = -0.8 s", "II11 = +0.8 s", "II11 = -0.8 s"};
   PetscLogDouble total = 0, worst = 0;
   PetscInt       nconv = 0;
 
@@ -77,7 +91,8 @@ int main(int argc, char **argv)
   if (getenv("HYLC_ROOT")) PetscCall(PetscStrncpy(root, getenv("HYLC_ROOT"), sizeof(root)));
   PetscCall(PetscSNPrintf(dir, sizeof(dir), "%s/patterns/hylc2020", env ? env : "../shared/refdata"));
   PetscCall(PetscTestDirectory(dir, 'r', &have));
-  if (!have) PetscCall(PetscPrintf(PETSC_COMM_SELF, "bench_solve: %s not found; skipped\n", dir));
+  if (!have)
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, "bench_solve: %s not found; skipped\n", dir));
   else
     for (size_t k = 0; k < sizeof(cases) / sizeof(cases[0]); k++) {
       PetscBool sel = (PetscBool)(argc < 2);

@@ -7,13 +7,13 @@
 
 static PetscErrorCode Bench(const char *dir, const char *name)
 {
-  char          path[PETSC_MAX_PATH_LEN];
-  HylcPattern   p;
-  HylcTile      T;
-  HylcYarnModel m;
-  Mat           H;
-  PetscInt      n, np, reps = 50;
-  PetscReal    *g, e[4];
+  char           path[PETSC_MAX_PATH_LEN];
+  HylcPattern    p;
+  HylcTile       T;
+  HylcYarnModel  m;
+  Mat            H;
+  PetscInt       n, np, reps = 50;
+  PetscReal     *g, e[4];
   PetscLogDouble t0, t1, tE, tEg, tEgH, tFirst;
 
   PetscFunctionBegin;
@@ -60,8 +60,10 @@ static PetscErrorCode Bench(const char *dir, const char *name)
         for (PetscInt v = 0; v < N; v++, k++) {
           const PetscInt w = D.next[v];
           for (int d = 0; d < 3; d++) {
-            x[6 * k + d]     = D.X[3 * v + d] + (d == 0 ? s1 * D.px : d == 1 ? s2 * D.py : 0);
-            x[6 * k + 3 + d] = D.X[3 * w + d] + (d == 0 ? (s1 + D.shift[2 * v]) * D.px : d == 1 ? (s2 + D.shift[2 * v + 1]) * D.py : 0);
+            x[6 * k + d]     = D.X[3 * v + d] + (d == 0 ? s1 * D.px : d == 1 ? s2 * D.py
+                                                                             : 0);
+            x[6 * k + 3 + d] = D.X[3 * w + d] + (d == 0 ? (s1 + D.shift[2 * v]) * D.px : d == 1 ? (s2 + D.shift[2 * v + 1]) * D.py
+                                                                                                : 0);
           }
           ghost[k] = (unsigned char)(s1 || s2);
         }
@@ -99,7 +101,8 @@ int main(int argc, char **argv)
   const char *env = getenv("HYLC_REFDATA");
   PetscCall(PetscSNPrintf(dir, sizeof(dir), "%s/patterns/hylc2020", env ? env : "../shared/refdata"));
   PetscCall(PetscTestDirectory(dir, 'r', &have));
-  if (!have) PetscCall(PetscPrintf(PETSC_COMM_SELF, "bench_tile: %s not found; skipped\n", dir));
+  if (!have)
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, "bench_tile: %s not found; skipped\n", dir));
   else {
     PetscCall(Bench(dir, "stockinette"));
     PetscCall(Bench(dir, "cartridge_belt_rib"));

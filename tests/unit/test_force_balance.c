@@ -14,7 +14,14 @@ typedef struct {
 } Case;
 
 static const Case cases[] = {
-  {"satin_small", 0.15, PETSC_FALSE}, {"slip_stitch_honeycomb", 0.15, PETSC_FALSE}, {"satin", 0, PETSC_FALSE}, {"basket", 0, PETSC_FALSE}, {"basket", 0, PETSC_TRUE}, {"stockinette_small", 0, PETSC_FALSE}, {"stockinette", 0, PETSC_FALSE}, {"cartridge_belt_rib", 0, PETSC_FALSE},
+    {"satin_small", 0.15, PETSC_FALSE},
+    {"slip_stitch_honeycomb", 0.15, PETSC_FALSE},
+    {"satin", 0, PETSC_FALSE},
+    {"basket", 0, PETSC_FALSE},
+    {"basket", 0, PETSC_TRUE},
+    {"stockinette_small", 0, PETSC_FALSE},
+    {"stockinette", 0, PETSC_FALSE},
+    {"cartridge_belt_rib", 0, PETSC_FALSE},
 };
 
 static PetscErrorCode Balance(const char *root, const char *dir, const Case *c, PetscBool report)

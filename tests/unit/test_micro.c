@@ -204,8 +204,10 @@ int main(int argc, char **argv)
   PetscCall(TestShearSymmetry());
   PetscCall(PetscSNPrintf(dir, sizeof(dir), "%s/patterns/hylc2020", env ? env : "../shared/refdata"));
   PetscCall(PetscTestDirectory(dir, 'r', &have));
-  if (have) PetscCall(TestPaperPatterns(root ? root : ".", dir));
-  else PetscCall(PetscPrintf(PETSC_COMM_SELF, "note: %s not found: the paper-pattern checks were skipped\n", dir));
+  if (have)
+    PetscCall(TestPaperPatterns(root ? root : ".", dir));
+  else
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, "note: %s not found: the paper-pattern checks were skipped\n", dir));
   PetscCall(PetscFinalize());
   return HYLC_TEST_RESULT();
 }

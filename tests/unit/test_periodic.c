@@ -33,14 +33,14 @@ static PetscReal Sum(const PetscReal e[4]) { return e[0] + e[1] + e[2] + e[3]; }
 /* II = 0: HylcPeriodic vs HylcTile, and tile vs supercell */
 static PetscErrorCode TestFlat(HylcPattern p, const char *what, const PetscReal z[6])
 {
-  HylcYarnModel      m;
-  HylcPeriodic       P, Q;
-  HylcTile           T;
-  HylcPattern        sp;
-  PetscInt           n, ns;
-  PetscReal         *y, *ys, e[4], et[4], es[4], px, py;
+  HylcYarnModel          m;
+  HylcPeriodic           P, Q;
+  HylcTile               T;
+  HylcPattern            sp;
+  PetscInt               n, ns;
+  PetscReal             *y, *ys, e[4], et[4], es[4], px, py;
   const HylcMacroStrain *ms;
-  unsigned long long st = 5;
+  unsigned long long     st = 5;
 
   PetscFunctionBegin;
   PetscCall(HylcYarnModelDefault(&m));
@@ -175,14 +175,14 @@ static PetscErrorCode TestDerivatives(HylcPattern p, const char *what, const Pet
 /* straight periodic yarn along x bent by II00 = kappa */
 static PetscErrorCode BentYarnEnergy(PetscInt N, PetscReal kappa, PetscReal *Eb, PetscReal *exact)
 {
-  const PetscReal px = 8e-3, py = 20e-3, r = 1e-3;
-  PetscReal      *pts;
-  PetscInt        nv[1] = {N}, w[2] = {1, 0};
-  HylcPattern     p;
-  HylcPeriodic    P;
-  HylcYarnModel   m;
+  const PetscReal   px = 8e-3, py = 20e-3, r = 1e-3;
+  PetscReal        *pts;
+  PetscInt          nv[1] = {N}, w[2] = {1, 0};
+  HylcPattern       p;
+  HylcPeriodic      P;
+  HylcYarnModel     m;
   HylcYarnConstants c;
-  PetscReal       e[4], z[6] = {0, 0, 0, kappa, 0, 0};
+  PetscReal         e[4], z[6] = {0, 0, 0, kappa, 0, 0};
 
   PetscFunctionBegin;
   PetscCall(PetscMalloc1(3 * N, &pts));
@@ -250,7 +250,9 @@ static PetscErrorCode TestConstraints(HylcPattern p)
     PetscCall(HylcPeriodicSetUp(P));
     PetscCall(HylcPeriodicGetSizes(P, &n, NULL, NULL, &nc));
     PetscCall(HylcPeriodicGetConstraints(P, &nc, &A, &dL, &Ai));
-    HYLC_CHECK(nc == 3 + (sl == 0 ? 0 : sl == 1 ? 1 : nloops), "slide %s: %d constraint rows", HylcSlideConstraints[sl], (int)nc);
+    HYLC_CHECK(nc == 3 + (sl == 0 ? 0 : sl == 1 ? 1
+                                                : nloops),
+               "slide %s: %d constraint rows", HylcSlideConstraints[sl], (int)nc);
     PetscCall(PetscMalloc1(n, &y));
     PetscCall(HylcPeriodicGetInitialState(P, y));
     PetscCall(HylcPeriodicConstraintResidual(P, y, c));

@@ -38,7 +38,7 @@ int main(int argc, char **argv)
   HYLC_CHECK(r0.status == HYLC_MICRO_CONVERGED && r0.iterations <= 3, "reference state is not an equilibrium: %s after %d iterations", HylcMicroStatuses[r0.status], (int)r0.iterations);
   HYLC_CHECK(r0.energy > 0, "tension left no energy");
   for (int k = 0; k < 4; k++) {
-    PetscReal z[6] = {0, 0, 0, 0, 0, 0};
+    PetscReal z[6]   = {0, 0, 0, 0, 0, 0};
     z[k < 2 ? 0 : 2] = (k % 2) ? 0.01 : -0.01;
     PetscCall(HylcMicroSolve(M, z, &r));
     HYLC_CHECK(r.status == HYLC_MICRO_CONVERGED && r.energy >= r0.energy * (1 - 1e-6), "not an in-plane minimum: E(%g, %g) = %.10g < E(0) = %.10g", (double)z[0], (double)z[2], (double)r.energy, (double)r0.energy);

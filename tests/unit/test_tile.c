@@ -48,7 +48,7 @@ static PetscErrorCode CheckDerivatives(HylcTile T, const char *what, PetscReal r
     q[i] = q0 - h;
     PetscCall(HylcTileSetState(T, q));
     PetscCall(HylcTileEvaluate(T, HYLC_TERM_ALL, Em, gm, NULL));
-    q[i] = q0;
+    q[i]               = q0;
     const PetscReal fd = ((Ep[0] + Ep[1] + Ep[2] + Ep[3]) - (Em[0] + Em[1] + Em[2] + Em[3])) / (2 * h);
     gerr               = PetscMax(gerr, PetscAbsReal(fd - g[i]));
     /* column i of H against the FD of the gradient (H is symmetric) */
@@ -178,15 +178,15 @@ static PetscErrorCode TestSupercellAndTranslation(HylcPattern p, const char *wha
 /* A straight periodic yarn along x stretched by eps: E = 1/2 ks eps^2 L. */
 static PetscErrorCode TestStretchedYarn(void)
 {
-  const PetscInt  N = 8;
-  const PetscReal px = 8e-3, py = 5e-3, r = 1e-3, eps = 0.07;
-  PetscReal       pts[3 * 8];
-  PetscInt        nv[1] = {N}, w[2] = {1, 0};
-  HylcPattern     p;
-  HylcTile        T;
-  HylcYarnModel   m;
+  const PetscInt    N  = 8;
+  const PetscReal   px = 8e-3, py = 5e-3, r = 1e-3, eps = 0.07;
+  PetscReal         pts[3 * 8];
+  PetscInt          nv[1] = {N}, w[2] = {1, 0};
+  HylcPattern       p;
+  HylcTile          T;
+  HylcYarnModel     m;
   HylcYarnConstants c;
-  PetscReal       q[4 * 8], e[4], g[4 * 8];
+  PetscReal         q[4 * 8], e[4], g[4 * 8];
 
   PetscFunctionBegin;
   for (PetscInt k = 0; k < N; k++) {

@@ -14,8 +14,8 @@ struct _p_HylcPattern {
   HylcPatternGenParams gen;                          /* generator parameters */
   PetscBool            setupcalled;
   PetscBool            hasdata;
-  PetscReal            viewDensity;    /* volumetric density used by the summary (kg/m^3) */
-  PetscReal            viewExcludeArc; /* same-yarn exclusion arc for the summary's distance (units of r) */
+  PetscReal            viewDensity;       /* volumetric density used by the summary (kg/m^3) */
+  PetscReal            viewExcludeArc;    /* same-yarn exclusion arc for the summary's distance (units of r) */
   PetscBool            consistentPeriods; /* loader: replace the stored periods by those the periodic edges' rest lengths imply */
   /* data */
   PetscInt   nv;
