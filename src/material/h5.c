@@ -242,35 +242,7 @@ PetscErrorCode HylcMaterialFormatHDF5_Private(HylcMaterial m, const char options
 /* Reading                                                                                            */
 /* ------------------------------------------------------------------------------------------------ */
 
-typedef struct {
-  const char  *name;
-  MPI_Comm     comm;
-  PetscReal    density, scale[5], C0;
-  PetscInt     shift[5];
-  PetscInt     n1, n2;
-  HylcSpline1D s1[HYLC_MATERIAL_N1D];
-  HylcSpline2D s2[HYLC_MATERIAL_N2D];
-} H5Doc;
-
-static void H5DocFree(H5Doc *d)
-{
-  for (PetscInt i = 0; i < d->n1; i++) {
-    PetscFree(d->s1[i].t);
-    PetscFree(d->s1[i].p);
-    PetscFree(d->s1[i].m);
-  }
-  for (PetscInt i = 0; i < d->n2; i++) {
-    PetscFree(d->s2[i].tu);
-    PetscFree(d->s2[i].tv);
-    PetscFree(d->s2[i].p);
-    PetscFree(d->s2[i].mu);
-    PetscFree(d->s2[i].mv);
-    PetscFree(d->s2[i].muv);
-  }
-  d->n1 = d->n2 = 0;
-}
-
-static PetscErrorCode Exists(const H5Doc *d, hid_t loc, const char path[], const char name[], PetscBool required, PetscBool *has)
+static PetscErrorCode Exists(const HylcMaterialDoc *d, hid_t loc, const char path[], const char name[], PetscBool required, PetscBool *has)
 {
   htri_t e;
 
@@ -282,7 +254,7 @@ static PetscErrorCode Exists(const H5Doc *d, hid_t loc, const char path[], const
 }
 
 /* a string attribute (variable or fixed length) into buf */
-static PetscErrorCode ReadAttrString(const H5Doc *d, hid_t loc, const char path[], const char name[], char buf[], size_t size)
+static PetscErrorCode ReadAttrString(const HylcMaterialDoc *d, hid_t loc, const char path[], const char name[], char buf[], size_t size)
 {
   hid_t  a, t, mt;
   htri_t vlen;
@@ -318,7 +290,7 @@ static PetscErrorCode ReadAttrString(const H5Doc *d, hid_t loc, const char path[
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode ReadAttrLong(const H5Doc *d, hid_t loc, const char path[], const char name[], long long *v)
+static PetscErrorCode ReadAttrLong(const HylcMaterialDoc *d, hid_t loc, const char path[], const char name[], long long *v)
 {
   hid_t  a, s;
   htri_t e;
@@ -337,7 +309,7 @@ static PetscErrorCode ReadAttrLong(const H5Doc *d, hid_t loc, const char path[],
 
 /* a dataset of the given rank with its dimensions (dims[0] outermost); the data as doubles (or ints) in
    freshly allocated *out */
-static PetscErrorCode ReadData(const H5Doc *d, hid_t loc, const char path[], const char name[], int rank, hsize_t dims[], PetscReal **out, PetscInt *iout)
+static PetscErrorCode ReadData(const HylcMaterialDoc *d, hid_t loc, const char path[], const char name[], int rank, hsize_t dims[], PetscReal **out, PetscInt *iout)
 {
   hid_t   ds, sp;
   int     r;
@@ -375,7 +347,7 @@ static PetscErrorCode ReadData(const H5Doc *d, hid_t loc, const char path[], con
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode ReadScalar(const H5Doc *d, hid_t loc, const char name[], PetscReal *v)
+static PetscErrorCode ReadScalar(const HylcMaterialDoc *d, hid_t loc, const char name[], PetscReal *v)
 {
   PetscReal *buf;
 
@@ -387,7 +359,7 @@ static PetscErrorCode ReadScalar(const H5Doc *d, hid_t loc, const char name[], P
 }
 
 /* every member of group g must be one of the names[] */
-static PetscErrorCode CheckMembers(const H5Doc *d, hid_t g, const char path[], int nnames, const char *const names[])
+static PetscErrorCode CheckMembers(const HylcMaterialDoc *d, hid_t g, const char path[], int nnames, const char *const names[])
 {
   H5G_info_t info;
 
@@ -403,7 +375,7 @@ static PetscErrorCode CheckMembers(const H5Doc *d, hid_t g, const char path[], i
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode ReadExt(const H5Doc *d, hid_t g, const char path[], HylcSplineExt *ext)
+static PetscErrorCode ReadExt(const HylcMaterialDoc *d, hid_t g, const char path[], HylcSplineExt *ext)
 {
   long long e;
 
@@ -414,7 +386,7 @@ static PetscErrorCode ReadExt(const H5Doc *d, hid_t g, const char path[], HylcSp
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode ReadContents(H5Doc *d, hid_t file)
+static PetscErrorCode ReadContents(HylcMaterialDoc *d, hid_t file)
 {
   char                     fmt[64];
   long long                version, v;
@@ -507,17 +479,14 @@ static PetscErrorCode ReadContents(H5Doc *d, hid_t file)
 
 PetscErrorCode HylcMaterialParseHDF5_Private(HylcMaterial m, const char name[], const void *image, size_t len)
 {
-  hid_t          fapl, file;
-  H5E_auto2_t    efunc;
-  void          *edata;
-  H5Doc          d;
-  PetscErrorCode ierr;
+  hid_t           fapl, file;
+  H5E_auto2_t     efunc;
+  void           *edata;
+  HylcMaterialDoc d;
+  PetscErrorCode  ierr;
 
   PetscFunctionBegin;
-  PetscCall(PetscMemzero(&d, sizeof(d)));
-  d.name = name;
-  d.comm = PetscObjectComm((PetscObject)m);
-  for (int k = 0; k < 5; k++) d.shift[k] = (k == 0 || k == 2) ? 1 : 0;
+  HylcMaterialDocInit(&d, m, name);
   H5File = name;
   H5Eget_auto2(H5E_DEFAULT, &efunc, &edata);
   H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
@@ -539,16 +508,8 @@ PetscErrorCode HylcMaterialParseHDF5_Private(HylcMaterial m, const char name[], 
   H5Pclose(fapl);
   H5Eset_auto2(H5E_DEFAULT, efunc, edata);
   H5File = "?";
-  if (ierr) H5DocFree(&d);
+  if (ierr) HylcMaterialDocFree(&d);
   PetscCall(ierr);
-  ierr = HylcMaterialReset(m);
-  if (!ierr) ierr = HylcMaterialSetDensity(m, d.density);
-  if (!ierr) ierr = HylcMaterialSetStrainScale(m, d.scale);
-  if (!ierr) ierr = HylcMaterialSetStrainShift(m, d.shift);
-  if (!ierr) ierr = HylcMaterialSetConstant(m, d.C0);
-  for (PetscInt i = 0; i < d.n1 && !ierr; i++) ierr = HylcMaterialSet1D(m, &d.s1[i]);
-  for (PetscInt i = 0; i < d.n2 && !ierr; i++) ierr = HylcMaterialSet2D(m, &d.s2[i]);
-  H5DocFree(&d);
-  PetscCall(ierr);
+  PetscCall(HylcMaterialDocInstall(m, &d));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

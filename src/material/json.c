@@ -470,34 +470,6 @@ static PetscErrorCode ParseDocument(const char name[], MPI_Comm comm, const char
 /* Schema                                                                                             */
 /* ------------------------------------------------------------------------------------------------ */
 
-typedef struct {
-  const char  *name;
-  MPI_Comm     comm;
-  PetscReal    density, scale[5], C0;
-  PetscInt     shift[5];
-  PetscInt     n1, n2;
-  HylcSpline1D s1[HYLC_MATERIAL_N1D];
-  HylcSpline2D s2[HYLC_MATERIAL_N2D];
-} Doc;
-
-static void DocFree(Doc *d)
-{
-  for (PetscInt i = 0; i < d->n1; i++) {
-    PetscFree(d->s1[i].t);
-    PetscFree(d->s1[i].p);
-    PetscFree(d->s1[i].m);
-  }
-  for (PetscInt i = 0; i < d->n2; i++) {
-    PetscFree(d->s2[i].tu);
-    PetscFree(d->s2[i].tv);
-    PetscFree(d->s2[i].p);
-    PetscFree(d->s2[i].mu);
-    PetscFree(d->s2[i].mv);
-    PetscFree(d->s2[i].muv);
-  }
-  d->n1 = d->n2 = 0;
-}
-
 static JVal *Member(const JVal *obj, const char key[])
 {
   for (PetscInt i = 0; i < obj->n; i++)
@@ -505,7 +477,7 @@ static JVal *Member(const JVal *obj, const char key[])
   return NULL;
 }
 
-static PetscErrorCode ExpectType(const Doc *d, const JVal *v, JType t, const char path[])
+static PetscErrorCode ExpectType(const HylcMaterialDoc *d, const JVal *v, JType t, const char path[])
 {
   PetscFunctionBegin;
   PetscCheck(v->type == t, d->comm, PETSC_ERR_USER_INPUT, "%s:%d: %s: expected %s, got %s", d->name, v->line, path, TypeName(t), TypeName(v->type));
@@ -513,7 +485,7 @@ static PetscErrorCode ExpectType(const Doc *d, const JVal *v, JType t, const cha
 }
 
 /* every key of obj must be one of known[]; every one of required[] must be there */
-static PetscErrorCode CheckKeys(const Doc *d, const JVal *obj, const char path[], const char *const known[], int nknown, const char *const required[], int nrequired)
+static PetscErrorCode CheckKeys(const HylcMaterialDoc *d, const JVal *obj, const char path[], const char *const known[], int nknown, const char *const required[], int nrequired)
 {
   char list[256] = "";
 
@@ -533,7 +505,7 @@ static PetscErrorCode CheckKeys(const Doc *d, const JVal *obj, const char path[]
 }
 
 /* an array of numbers; n < 0: any length; else exactly n (what explains n in the message) */
-static PetscErrorCode GetNumbers(const Doc *d, const JVal *v, const char path[], PetscInt n, const char what[], PetscReal **out, PetscInt *nout)
+static PetscErrorCode GetNumbers(const HylcMaterialDoc *d, const JVal *v, const char path[], PetscInt n, const char what[], PetscReal **out, PetscInt *nout)
 {
   PetscFunctionBegin;
   PetscCall(ExpectType(d, v, JARR, path));
@@ -547,7 +519,7 @@ static PetscErrorCode GetNumbers(const Doc *d, const JVal *v, const char path[],
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode GetKnots(const Doc *d, const JVal *v, const char path[], PetscReal **out, PetscInt *n)
+static PetscErrorCode GetKnots(const HylcMaterialDoc *d, const JVal *v, const char path[], PetscReal **out, PetscInt *n)
 {
   char b0[32], b1[32];
 
@@ -561,7 +533,7 @@ static PetscErrorCode GetKnots(const Doc *d, const JVal *v, const char path[], P
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode GetInt(const Doc *d, const JVal *v, const char path[], PetscInt lo, PetscInt hi, const char what[], PetscInt *out)
+static PetscErrorCode GetInt(const HylcMaterialDoc *d, const JVal *v, const char path[], PetscInt lo, PetscInt hi, const char what[], PetscInt *out)
 {
   char b[32];
 
@@ -572,7 +544,7 @@ static PetscErrorCode GetInt(const Doc *d, const JVal *v, const char path[], Pet
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode GetExt(const Doc *d, const JVal *obj, const char path[], HylcSplineExt *ext)
+static PetscErrorCode GetExt(const HylcMaterialDoc *d, const JVal *obj, const char path[], HylcSplineExt *ext)
 {
   const JVal *v = Member(obj, "ext");
   char        p[128];
@@ -587,7 +559,7 @@ static PetscErrorCode GetExt(const Doc *d, const JVal *obj, const char path[], H
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode Read1D(Doc *d, const JVal *v, const char path[])
+static PetscErrorCode Read1D(HylcMaterialDoc *d, const JVal *v, const char path[])
 {
   static const char *const known[] = {"k", "t", "p", "m", "ext"};
   char                     p[128];
@@ -611,7 +583,7 @@ static PetscErrorCode Read1D(Doc *d, const JVal *v, const char path[])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode Read2D(Doc *d, const JVal *v, const char path[])
+static PetscErrorCode Read2D(HylcMaterialDoc *d, const JVal *v, const char path[])
 {
   static const char *const known[] = {"k0", "k1", "tu", "tv", "p", "mu", "mv", "muv", "ext"};
   static const char *const arr[]   = {"p", "mu", "mv", "muv"};
@@ -645,7 +617,7 @@ static PetscErrorCode Read2D(Doc *d, const JVal *v, const char path[])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode ReadDoc(Doc *d, const JVal *root)
+static PetscErrorCode ReadDoc(HylcMaterialDoc *d, const JVal *root)
 {
   static const char *const topKnown[]    = {"density", "strain scale", "strain shift", "coeffs"};
   static const char *const topRequired[] = {"density", "strain scale", "coeffs"};
@@ -709,30 +681,19 @@ static PetscErrorCode ReadDoc(Doc *d, const JVal *root)
 
 PetscErrorCode HylcMaterialParseJSON_Private(HylcMaterial m, const char name[], const char *text, size_t len)
 {
-  JVal           root;
-  Doc            d;
-  PetscErrorCode ierr;
+  JVal            root;
+  HylcMaterialDoc d;
+  PetscErrorCode  ierr;
 
   PetscFunctionBegin;
   PetscCall(PetscMemzero(&root, sizeof(root)));
-  PetscCall(PetscMemzero(&d, sizeof(d)));
-  d.name = name;
-  d.comm = PetscObjectComm((PetscObject)m);
-  for (int k = 0; k < 5; k++) d.shift[k] = (k == 0 || k == 2) ? 1 : 0;
+  HylcMaterialDocInit(&d, m, name);
   ierr = ParseDocument(name, d.comm, text, len, &root);
   if (!ierr) ierr = ReadDoc(&d, &root);
   JFree(&root);
-  if (ierr) DocFree(&d);
+  if (ierr) HylcMaterialDocFree(&d);
   PetscCall(ierr);
-  ierr = HylcMaterialReset(m);
-  if (!ierr) ierr = HylcMaterialSetDensity(m, d.density);
-  if (!ierr) ierr = HylcMaterialSetStrainScale(m, d.scale);
-  if (!ierr) ierr = HylcMaterialSetStrainShift(m, d.shift);
-  if (!ierr) ierr = HylcMaterialSetConstant(m, d.C0);
-  for (PetscInt i = 0; i < d.n1 && !ierr; i++) ierr = HylcMaterialSet1D(m, &d.s1[i]);
-  for (PetscInt i = 0; i < d.n2 && !ierr; i++) ierr = HylcMaterialSet2D(m, &d.s2[i]);
-  DocFree(&d);
-  PetscCall(ierr);
+  PetscCall(HylcMaterialDocInstall(m, &d));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

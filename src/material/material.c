@@ -96,6 +96,49 @@ PetscErrorCode HylcMaterialReset(HylcMaterial m)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+void HylcMaterialDocInit(HylcMaterialDoc *d, HylcMaterial m, const char name[])
+{
+  memset(d, 0, sizeof(*d));
+  d->name = name;
+  d->comm = PetscObjectComm((PetscObject)m);
+  for (int k = 0; k < 5; k++) d->shift[k] = (k == 0 || k == 2) ? 1 : 0;
+}
+
+void HylcMaterialDocFree(HylcMaterialDoc *d)
+{
+  for (PetscInt i = 0; i < d->n1; i++) {
+    PetscFree(d->s1[i].t);
+    PetscFree(d->s1[i].p);
+    PetscFree(d->s1[i].m);
+  }
+  for (PetscInt i = 0; i < d->n2; i++) {
+    PetscFree(d->s2[i].tu);
+    PetscFree(d->s2[i].tv);
+    PetscFree(d->s2[i].p);
+    PetscFree(d->s2[i].mu);
+    PetscFree(d->s2[i].mv);
+    PetscFree(d->s2[i].muv);
+  }
+  d->n1 = d->n2 = 0;
+}
+
+PetscErrorCode HylcMaterialDocInstall(HylcMaterial m, HylcMaterialDoc *d)
+{
+  PetscErrorCode ierr;
+
+  PetscFunctionBegin;
+  ierr = HylcMaterialReset(m);
+  if (!ierr) ierr = HylcMaterialSetDensity(m, d->density);
+  if (!ierr) ierr = HylcMaterialSetStrainScale(m, d->scale);
+  if (!ierr) ierr = HylcMaterialSetStrainShift(m, d->shift);
+  if (!ierr) ierr = HylcMaterialSetConstant(m, d->C0);
+  for (PetscInt i = 0; i < d->n1 && !ierr; i++) ierr = HylcMaterialSet1D(m, &d->s1[i]);
+  for (PetscInt i = 0; i < d->n2 && !ierr; i++) ierr = HylcMaterialSet2D(m, &d->s2[i]);
+  HylcMaterialDocFree(d);
+  PetscCall(ierr);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /*@C
   HylcMaterialDestroy - Destroys a material. Accepts NULL; sets the handle to NULL. Collective.
 @*/

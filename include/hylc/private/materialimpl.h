@@ -24,6 +24,23 @@ struct _p_HylcMaterial {
   char      source[PETSC_MAX_PATH_LEN]; /* file it was loaded from ("" if built in memory) */
 };
 
+/* The contents of a material file as read by the JSON and HDF5 parsers, before they are installed. */
+typedef struct {
+  const char  *name; /* file name, for messages */
+  MPI_Comm     comm;
+  PetscReal    density, scale[5], C0;
+  PetscInt     shift[5];
+  PetscInt     n1, n2; /* terms read so far */
+  HylcSpline1D s1[HYLC_MATERIAL_N1D];
+  HylcSpline2D s2[HYLC_MATERIAL_N2D];
+} HylcMaterialDoc;
+/* empty document for file 'name' of material m (strain shift [1,0,1,0,0]) */
+PETSC_INTERN void HylcMaterialDocInit(HylcMaterialDoc *, HylcMaterial, const char name[]);
+/* frees the term arrays */
+PETSC_INTERN void HylcMaterialDocFree(HylcMaterialDoc *);
+/* replaces the material's contents by the document (validated by the Set functions), then frees it */
+PETSC_INTERN PetscErrorCode HylcMaterialDocInstall(HylcMaterial, HylcMaterialDoc *);
+
 /* JSON (src/material/json.c) */
 PETSC_INTERN PetscErrorCode HylcMaterialParseJSON_Private(HylcMaterial, const char name[], const char *text, size_t len);
 PETSC_INTERN PetscErrorCode HylcMaterialFormatJSON_Private(HylcMaterial, char **text, size_t *len);
