@@ -3,8 +3,8 @@
    the Fritsch-Carlson monotone cubic, and the modified Carlson-Fritsch monotone bicubic (S36-S42).
    Plain C on plain arrays, in place; 2D arrays have nu*nv entries, node (i, j) at j*nu + i (u = first
    coordinate, index i; v = second, index j), as in include/hylc/spline.h.
-   Knots are strictly increasing. No allocation beyond small stack buffers is assumed by callers: the
-   2D kernels allocate their own scratch (they return non-zero only when that fails). */
+   Knots are strictly increasing. The 1D kernels do not allocate; the 2D kernels allocate their own
+   scratch and return an error code only when that fails. */
 #include <hylc/sys.h>
 
 /* How the 1D slopes are limited on an interval with secant d != 0, alpha = m_i/d, beta = m_{i+1}/d:
@@ -37,11 +37,11 @@ PETSC_EXTERN void HylcMonotoneCubic(PetscInt n, const PetscReal t[], const Petsc
    of imin, -m on the left) >= reg. The slope at imin is left alone. */
 PETSC_EXTERN void HylcQuasiconvex1D(PetscInt n, const PetscReal t[], PetscInt imin, PetscReal reg, PetscReal p[], PetscReal m[]);
 
-/* Quasiconvex marching of a 2D table from (imin, jmin): every node off the two grid lines through the
-   minimum, in order of squared index distance from it, is raised to at least its neighbours toward the
-   minimum (in i and in j) plus reg times the knot distance; the axis lines are marched like 1D tables
-   first; then mu and mv are sign-clamped by the direction from the minimum (|.| >= reg, outward).
-   compat selects the treatment of the minimum's own row/column (see HylcFitCompat). */
+/* Quasiconvex marching of a 2D table from (imin, jmin): every other node, in order of squared index
+   distance from the minimum, is raised to at least each of its neighbours toward the minimum (in i
+   and in j) plus reg times the knot distance; on the two grid lines through the minimum this is the
+   1D marching. Then mu and mv are sign-clamped by the direction from the minimum (|.| >= reg,
+   outward); compat selects the treatment of the minimum's own row/column (see HylcFitCompat). */
 PETSC_EXTERN PetscErrorCode HylcQuasiconvex2D(PetscInt nu, PetscInt nv, const PetscReal tu[], const PetscReal tv[], PetscInt imin, PetscInt jmin, PetscReal reg, HylcFitCompat compat, PetscReal p[], PetscReal mu[], PetscReal mv[]);
 
 /* The modified Carlson-Fritsch monotone bicubic (§S5), in place on mu, mv, muv (p is not changed):

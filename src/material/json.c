@@ -787,6 +787,15 @@ static PetscErrorCode Array(Out *o, int level, PetscInt n, const PetscReal rv[],
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* ',\n<indent>"key": [numbers]' of a spline entry (level 4) */
+static PetscErrorCode Member4(Out *o, const char key[], PetscInt n, const PetscReal v[])
+{
+  PetscFunctionBegin;
+  PetscCall(Key(o, 4, key, PETSC_TRUE));
+  PetscCall(Array(o, 4, n, v, NULL));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode HylcMaterialFormatJSON_Private(HylcMaterial m, char **text, size_t *len)
 {
   Out      o = {NULL, 0, 0};
@@ -820,12 +829,9 @@ PetscErrorCode HylcMaterialFormatJSON_Private(HylcMaterial m, char **text, size_
       PetscCall(Put(&o, "{"));
       PetscCall(Key(&o, 4, "k", PETSC_FALSE));
       PetscCall(Int(&o, s->k));
-      PetscCall(Key(&o, 4, "t", PETSC_TRUE));
-      PetscCall(Array(&o, 4, s->n, s->t, NULL));
-      PetscCall(Key(&o, 4, "p", PETSC_TRUE));
-      PetscCall(Array(&o, 4, s->n, s->p, NULL));
-      PetscCall(Key(&o, 4, "m", PETSC_TRUE));
-      PetscCall(Array(&o, 4, s->n, s->m, NULL));
+      PetscCall(Member4(&o, "t", s->n, s->t));
+      PetscCall(Member4(&o, "p", s->n, s->p));
+      PetscCall(Member4(&o, "m", s->n, s->m));
       if (s->ext != HYLC_EXT_LINEAR) {
         PetscCall(Key(&o, 4, "ext", PETSC_TRUE));
         PetscCall(Int(&o, (PetscInt)s->ext));
@@ -855,18 +861,12 @@ PetscErrorCode HylcMaterialFormatJSON_Private(HylcMaterial m, char **text, size_
       PetscCall(Int(&o, s->k0));
       PetscCall(Key(&o, 4, "k1", PETSC_TRUE));
       PetscCall(Int(&o, s->k1));
-      PetscCall(Key(&o, 4, "tu", PETSC_TRUE));
-      PetscCall(Array(&o, 4, s->nu, s->tu, NULL));
-      PetscCall(Key(&o, 4, "tv", PETSC_TRUE));
-      PetscCall(Array(&o, 4, s->nv, s->tv, NULL));
-      PetscCall(Key(&o, 4, "p", PETSC_TRUE));
-      PetscCall(Array(&o, 4, N, s->p, NULL));
-      PetscCall(Key(&o, 4, "mu", PETSC_TRUE));
-      PetscCall(Array(&o, 4, N, s->mu, NULL));
-      PetscCall(Key(&o, 4, "mv", PETSC_TRUE));
-      PetscCall(Array(&o, 4, N, s->mv, NULL));
-      PetscCall(Key(&o, 4, "muv", PETSC_TRUE));
-      PetscCall(Array(&o, 4, N, s->muv, NULL));
+      PetscCall(Member4(&o, "tu", s->nu, s->tu));
+      PetscCall(Member4(&o, "tv", s->nv, s->tv));
+      PetscCall(Member4(&o, "p", N, s->p));
+      PetscCall(Member4(&o, "mu", N, s->mu));
+      PetscCall(Member4(&o, "mv", N, s->mv));
+      PetscCall(Member4(&o, "muv", N, s->muv));
       if (s->ext != HYLC_EXT_LINEAR) {
         PetscCall(Key(&o, 4, "ext", PETSC_TRUE));
         PetscCall(Int(&o, (PetscInt)s->ext));
