@@ -13,6 +13,7 @@ PETSC_EXTERN PetscClassId  HYLC_PATTERN_CLASSID;
 PETSC_EXTERN PetscLogEvent HYLC_PatternLoad, HYLC_PatternWrite, HYLC_PatternGenerate, HYLC_PatternDistance;
 PETSC_EXTERN PetscLogEvent HYLC_TileEvaluate, HYLC_TileBroadphase, HYLC_TileContact, HYLC_TileAssemble;
 PETSC_EXTERN PetscLogEvent HYLC_PeriodicSetUp, HYLC_PeriodicEvaluate, HYLC_MicroSolve, HYLC_SamplerRun;
+PETSC_EXTERN PetscLogEvent HYLC_CholSymbolic, HYLC_CholNumeric, HYLC_CholSolve;
 
 /* The fill-reducing ordering used for the Newton factorization unless -micro_factor_pc_factor_mat_ordering_type says otherwise. */
 PETSC_EXTERN const char   *HylcDefaultOrdering(void);
@@ -29,6 +30,8 @@ PETSC_EXTERN PetscLogEvent HYLC_MaterialLoad, HYLC_MaterialWrite, HYLC_FitRun, H
    hylc object call HylcInitializePackage() first. Log event ORDER_MetisND. */
 #define MATORDERINGMETISND "metisnd"
 PETSC_EXTERN PetscLogEvent HYLC_MetisND;
+/* METIS_NodeND of a CSR graph (symmetric, no self loops): perm[new] = old (src/sys/metis.c). */
+PETSC_EXTERN PetscErrorCode HylcMetisNodeND(PetscInt n, const PetscInt xadj[], const PetscInt adj[], PetscInt perm[]);
 
 /* Registers hylc's classes and log events (idempotent; called by every XCreate). Not collective. */
 PETSC_EXTERN PetscErrorCode HylcInitializePackage(void);

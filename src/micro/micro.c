@@ -1,6 +1,7 @@
 /* HylcMicro: constrained, regularized Newton on SNES (see include/hylc/micro.h). */
 #include <hylc/micro.h>
 #include <hylc/geom.h>
+#include <hylc/chol.h>
 #include <petsctime.h>
 
 const char *const HylcMicroStatuses[] = {"converged", "iteration_cap", "time_cap", "stalled", "nonfinite", "failed", "HylcMicroStatus", "HYLC_MICRO_", NULL};
@@ -14,6 +15,7 @@ typedef struct {
   PetscReal lsFactor;
   PetscInt  lsMax, maxStalls;
   PetscReal rtol, atol, ctol, maxTime;
+  PetscBool petscFactor; /* factor K with a PETSc PC (prefix micro_factor_) instead of HylcChol */
 } MicroParams;
 
 struct _n_HylcMicro {
@@ -28,7 +30,8 @@ struct _n_HylcMicro {
   Mat           K;
   Vec           X, mvec;
   PetscReal    *yw, *gw; /* work: unscaled unknowns and gradient */
-  PC            inner;
+  PC            inner;   /* PETSc factorization (-micro_factor_type petsc) */
+  HylcChol      chol;    /* hylc's supernodal Cholesky (default) */
   /* KKT data */
   const PetscReal *A, *dL, *AAtinv;
   PetscReal       *c, *Z, *S, *Sinv, *wl, *tmp;
@@ -51,20 +54,21 @@ struct _n_HylcMicro {
 static PetscErrorCode MicroParamsDefault(MicroParams *p)
 {
   PetscFunctionBegin;
-  p->alphaStart = 5000;
-  p->alphaEnd   = 5;
-  p->alphaIts   = 400;
-  p->maxRetries = 12;
-  p->twistScale = 0;
-  p->stepP0     = 0.05;
-  p->stepP1     = 0.15;
-  p->lsFactor   = 0.1;
-  p->lsMax      = 11;
-  p->maxStalls  = 5;
-  p->rtol       = 1e-5;
-  p->atol       = 1e-10;
-  p->ctol       = 1e-4;
-  p->maxTime    = 60;
+  p->alphaStart  = 5000;
+  p->alphaEnd    = 5;
+  p->alphaIts    = 400;
+  p->maxRetries  = 12;
+  p->twistScale  = 0;
+  p->stepP0      = 0.05;
+  p->stepP1      = 0.15;
+  p->lsFactor    = 0.1;
+  p->lsMax       = 11;
+  p->maxStalls   = 5;
+  p->rtol        = 1e-5;
+  p->atol        = 1e-10;
+  p->ctol        = 1e-4;
+  p->maxTime     = 60;
+  p->petscFactor = PETSC_FALSE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -90,6 +94,7 @@ static PetscErrorCode MicroFreeSolver(HylcMicro M)
   PetscCall(VecDestroy(&M->mvec));
   PetscCall(PetscFree2(M->yw, M->gw));
   PetscCall(PCDestroy(&M->inner));
+  PetscCall(HylcCholDestroy(&M->chol));
   PetscCall(PetscFree6(M->c, M->Z, M->S, M->Sinv, M->wl, M->tmp));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -129,6 +134,8 @@ PetscErrorCode HylcMicroSetPattern(HylcMicro M, HylcPattern pat, const HylcYarnM
 . -micro_twist_scale <1/r>       - mu, the scale of the twist unknowns (0: 1/r)
 . -micro_step_p0 <0.05>, -micro_step_p1 <0.15> - step limit (p0 + p1 clamp(lambda_min(I),0,1)) r
 . -micro_ls_factor <0.1>, -micro_ls_max <11> - backtracking factor and number of trials
+. -micro_factor_type <hylc>      - hylc: the supernodal Cholesky of include/hylc/chol.h; petsc: PCCHOLESKY
+                                   with the options -micro_factor_pc_* (ordering metisnd by default)
 . -micro_max_stalls <5>          - consecutive failed line searches before giving up
 . -micro_rtol <1e-5>             - |z| < rtol |z0|
 . -micro_atol <1e-10>            - or |z| < atol k_s
@@ -154,6 +161,13 @@ PetscErrorCode HylcMicroSetFromOptions(HylcMicro M)
   PetscCall(PetscOptionsReal("-micro_rtol", "Convergence: projected gradient |z| < rtol |z0|", "HylcMicro", p->rtol, &p->rtol, NULL));
   PetscCall(PetscOptionsReal("-micro_atol", "Convergence also when |z| < atol k_s (k_s = Es pi r^2, a force): for tiles already at rest", "HylcMicro", p->atol, &p->atol, NULL));
   PetscCall(PetscOptionsReal("-micro_ctol", "Convergence: constraint residual |A y - dL| < ctol r", "HylcMicro", p->ctol, &p->ctol, NULL));
+  {
+    const char *types[] = {"hylc", "petsc"};
+    PetscInt    t       = p->petscFactor ? 1 : 0;
+    PetscCall(PetscOptionsEList("-micro_factor_type", "Factorization of the Newton matrix: hylc (supernodal Cholesky on vertex blocks) or petsc (PCCHOLESKY, options -micro_factor_pc_*)", "HylcMicro", types, 2, types[t], &t, NULL));
+    PetscCheck(!M->snes || (t == 1) == p->petscFactor, M->comm, PETSC_ERR_ARG_WRONGSTATE, "-micro_factor_type cannot change after the solver is set up");
+    p->petscFactor = (PetscBool)(t == 1);
+  }
   PetscCall(PetscOptionsReal("-micro_max_time", "Wall-time cap per solve (s); status time_cap", "HylcMicro", p->maxTime, &p->maxTime, NULL));
   PetscOptionsEnd();
   PetscCheck(p->alphaStart > 0 && p->alphaEnd > 0 && p->alphaIts >= 1, M->comm, PETSC_ERR_USER_INPUT, "-micro_alpha_start, -micro_alpha_end must be positive and -micro_alpha_its at least 1");
@@ -253,6 +267,25 @@ static PetscErrorCode FormJacobian(SNES snes, Vec X, Mat J, Mat Jpre, void *ctx)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* x = K^-1 b with the current factorization */
+static PetscErrorCode FactorApply(HylcMicro M, Vec b, Vec x)
+{
+  const PetscScalar *ba;
+  PetscScalar       *xa;
+
+  PetscFunctionBegin;
+  if (!M->chol) {
+    PetscCall(PCApply(M->inner, b, x));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCall(VecGetArrayRead(b, &ba));
+  PetscCall(VecGetArray(x, &xa));
+  PetscCall(HylcCholSolve(M->chol, ba, xa));
+  PetscCall(VecRestoreArray(x, &xa));
+  PetscCall(VecRestoreArrayRead(b, &ba));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* factor K and form the Schur complement data Z = K^-1 M A^T and S^-1 = (A M Z)^-1 */
 static PetscErrorCode KKTFactor(HylcMicro M, PetscBool *ok)
 {
@@ -265,25 +298,35 @@ static PetscErrorCode KKTFactor(HylcMicro M, PetscBool *ok)
 
   PetscFunctionBegin;
   PetscCall(PetscTime(&t0));
-  PetscCall(PCSetOperators(M->inner, M->K, M->K));
-  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
-  ierr = PCSetUp(M->inner);
-  PetscCall(PetscPopErrorHandler());
-  PetscCall(PCGetFailedReason(M->inner, &reason));
-  *ok = (PetscBool)(!ierr && reason == PC_NOERROR);
-  if (*ok) {
+  if (M->chol)
+    PetscCall(HylcCholFactor(M->chol, M->K, 4, ok));
+  else {
+    PetscCall(PCSetOperators(M->inner, M->K, M->K));
+    PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+    ierr = PCSetUp(M->inner);
+    PetscCall(PetscPopErrorHandler());
+    PetscCall(PCGetFailedReason(M->inner, &reason));
+    *ok = (PetscBool)(!ierr && reason == PC_NOERROR);
+  }
+  if (*ok && M->chol) { /* Z = K^-1 M A^T: all m right-hand sides in one pass over the factor */
+    for (PetscInt i = 0; i < m; i++)
+      for (PetscInt k = 0; k < n; k++) M->Z[i * n + k] = M->A[i * n + k] * ((k % 4 == 3) ? M->mu : 1.0);
+    PetscCall(HylcCholSolveMany(M->chol, m, M->Z, M->Z));
+  } else if (*ok) {
     PetscCall(MatCreateVecs(M->K, &x, &b));
     for (PetscInt i = 0; i < m; i++) {
       PetscCall(VecGetArray(b, &a));
       for (PetscInt k = 0; k < n; k++) a[k] = M->A[i * n + k] * ((k % 4 == 3) ? M->mu : 1.0);
       PetscCall(VecRestoreArray(b, &a));
-      PetscCall(PCApply(M->inner, b, x));
+      PetscCall(FactorApply(M, b, x));
       PetscCall(VecGetArray(x, &a));
       for (PetscInt k = 0; k < n; k++) M->Z[i * n + k] = PetscRealPart(a[k]);
       PetscCall(VecRestoreArray(x, &a));
     }
     PetscCall(VecDestroy(&x));
     PetscCall(VecDestroy(&b));
+  }
+  if (*ok) {
     for (PetscInt i = 0; i < m; i++)
       for (PetscInt j = 0; j < m; j++) {
         PetscReal s = 0;
@@ -329,7 +372,7 @@ static PetscErrorCode KKTSolve(HylcMicro M, Vec b, Vec x)
   PetscScalar   *xa;
 
   PetscFunctionBegin;
-  PetscCall(PCApply(M->inner, b, x));
+  PetscCall(FactorApply(M, b, x));
   PetscCall(VecGetArray(x, &xa));
   for (PetscInt i = 0; i < m; i++) {
     PetscReal s = M->c[i];
@@ -519,11 +562,14 @@ static PetscErrorCode MicroSetUpSolver(HylcMicro M)
   PetscCall(VecDuplicate(M->X, &M->mvec));
   PetscCall(PetscMalloc2(M->ny, &M->yw, M->ny, &M->gw));
   PetscCall(PetscMalloc6(M->m, &M->c, M->m * M->ny, &M->Z, M->m * M->m, &M->S, M->m * M->m, &M->Sinv, M->m, &M->wl, M->m, &M->tmp));
-  PetscCall(PCCreate(PETSC_COMM_SELF, &M->inner));
-  PetscCall(PCSetType(M->inner, PCCHOLESKY));
-  PetscCall(PCFactorSetMatOrderingType(M->inner, HylcDefaultOrdering()));
-  PetscCall(PCSetOptionsPrefix(M->inner, "micro_factor_"));
-  PetscCall(PCSetFromOptions(M->inner));
+  if (M->par.petscFactor) {
+    PetscCall(PCCreate(PETSC_COMM_SELF, &M->inner));
+    PetscCall(PCSetType(M->inner, PCCHOLESKY));
+    PetscCall(PCFactorSetMatOrderingType(M->inner, HylcDefaultOrdering()));
+    PetscCall(PCSetOptionsPrefix(M->inner, "micro_factor_"));
+    PetscCall(PCSetFromOptions(M->inner));
+  } else
+    PetscCall(HylcCholCreate(&M->chol));
   PetscCall(SNESCreate(PETSC_COMM_SELF, &M->snes));
   PetscCall(SNESSetOptionsPrefix(M->snes, "micro_"));
   PetscCall(SNESSetType(M->snes, SNESNEWTONLS));
@@ -542,7 +588,7 @@ static PetscErrorCode MicroSetUpSolver(HylcMicro M)
   PetscCall(PCShellSetContext(pc, M));
   PetscCall(PCShellSetSetUp(pc, KKTSetUp));
   PetscCall(PCShellSetApply(pc, KKTApply));
-  PetscCall(PCShellSetName(pc, "hylc KKT (S22): Schur complement around a Cholesky factorization (-micro_factor_pc_*)"));
+  PetscCall(PCShellSetName(pc, M->chol ? "hylc KKT (S22): Schur complement around HylcChol, a supernodal Cholesky (-micro_factor_type)" : "hylc KKT (S22): Schur complement around a PETSc Cholesky factorization (-micro_factor_pc_*)"));
   PetscCall(SNESSetFromOptions(M->snes));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

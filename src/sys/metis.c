@@ -118,6 +118,35 @@ static PetscErrorCode MatGetOrdering_HylcMetisND(Mat mat, MatOrderingType type, 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMetisNodeND - METIS_NodeND ordering of a graph given in CSR form (xadj[n + 1], adj; symmetric, no
+  self loops): perm[new] = old. The options of "metisnd" apply. A graph without edges gets the identity.
+  Not collective.
+@*/
+PetscErrorCode HylcMetisNodeND(PetscInt n, const PetscInt xadj[], const PetscInt adj[], PetscInt perm[])
+{
+  idx_t *xa, *ad, *pm, *ip, nv = (idx_t)n, opt[METIS_NOPTIONS];
+  int    st;
+
+  PetscFunctionBegin;
+  PetscCall(MetisOptions(opt));
+  if (n == 0 || xadj[n] == 0) {
+    for (PetscInt i = 0; i < n; i++) perm[i] = i;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCall(PetscMalloc4(n + 1, &xa, xadj[n], &ad, n, &pm, n, &ip));
+  for (PetscInt i = 0; i <= n; i++) xa[i] = (idx_t)xadj[i];
+  for (PetscInt k = 0; k < xadj[n]; k++) ad[k] = (idx_t)adj[k];
+  PetscCall(PetscLogEventBegin(HYLC_MetisND, 0, 0, 0, 0));
+  st = METIS_NodeND(&nv, xa, ad, NULL, opt, pm, ip);
+  PetscCall(PetscLogEventEnd(HYLC_MetisND, 0, 0, 0, 0));
+  if (st == METIS_OK)
+    for (PetscInt i = 0; i < n; i++) perm[i] = (PetscInt)pm[i];
+  PetscCall(PetscFree4(xa, ad, pm, ip));
+  PetscCheck(st == METIS_OK, PETSC_COMM_SELF, PETSC_ERR_LIB, "METIS_NodeND failed (%s, code %d) on a graph of %" PetscInt_FMT " vertices and %" PetscInt_FMT " edges", MetisError(st), st, n, xadj[n] / 2);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Registers "metisnd" with PETSc (called by HylcInitializePackage()). Not collective. */
 PetscErrorCode HylcMetisRegister(void)
 {

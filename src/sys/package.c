@@ -5,6 +5,7 @@ PetscClassId  HYLC_PATTERN_CLASSID;
 PetscLogEvent HYLC_PatternLoad, HYLC_PatternWrite, HYLC_PatternGenerate, HYLC_PatternDistance;
 PetscLogEvent HYLC_TileEvaluate, HYLC_TileBroadphase, HYLC_TileContact, HYLC_TileAssemble;
 PetscLogEvent HYLC_PeriodicSetUp, HYLC_PeriodicEvaluate, HYLC_MicroSolve, HYLC_SamplerRun;
+PetscLogEvent HYLC_CholSymbolic, HYLC_CholNumeric, HYLC_CholSolve;
 
 const char   *HylcDefaultOrdering(void) { return MATORDERINGMETISND; }
 PetscClassId  HYLC_MIDSURFACE_CLASSID;
@@ -41,6 +42,9 @@ PetscErrorCode HylcInitializePackage(void)
   PetscCall(PetscLogEventRegister("PERIODIC_Evaluate", HYLC_PATTERN_CLASSID, &HYLC_PeriodicEvaluate));
   PetscCall(PetscLogEventRegister("MICRO_Solve", HYLC_PATTERN_CLASSID, &HYLC_MicroSolve));
   PetscCall(PetscLogEventRegister("SAMPLER_Run", HYLC_PATTERN_CLASSID, &HYLC_SamplerRun));
+  PetscCall(PetscLogEventRegister("CHOL_Symbolic", HYLC_PATTERN_CLASSID, &HYLC_CholSymbolic));
+  PetscCall(PetscLogEventRegister("CHOL_Numeric", HYLC_PATTERN_CLASSID, &HYLC_CholNumeric));
+  PetscCall(PetscLogEventRegister("CHOL_Solve", HYLC_PATTERN_CLASSID, &HYLC_CholSolve));
   PetscCall(PetscClassIdRegister("HylcMidsurface", &HYLC_MIDSURFACE_CLASSID));
   PetscCall(PetscLogEventRegister("MACRO_SetUp", HYLC_MIDSURFACE_CLASSID, &HYLC_MacroSetUp));
   PetscCall(PetscLogEventRegister("MACRO_Poisson", HYLC_MIDSURFACE_CLASSID, &HYLC_MacroPoisson));

@@ -1,0 +1,49 @@
+#pragma once
+/* HylcChol: a supernodal sparse Cholesky factorization A = P^T L L^T P for the Newton matrices of the
+   microscale solve (src/micro/chol.c).
+
+   The matrices are symmetric positive definite (after the regularization alpha I), of order 4 N for N
+   yarn vertices, with a structure of 4 x 4 vertex blocks that changes rarely. HylcChol works on that
+   block structure: a METIS nested-dissection ordering of the vertex graph, the elimination tree and the
+   column structures of L on vertices, fundamental supernodes, and dense column-major supernode panels.
+   Compared with PETSc's native Cholesky of the same SeqAIJ matrix (MATSOLVERPETSC), the symbolic phase
+   is on a graph 16 times smaller, and the numeric phase runs dense 4 x 4 block kernels; see
+   docs/performance.md for the figures.
+
+   Usage:
+     HylcCholCreate(&chol);
+     HylcCholFactor(chol, A, 4, &spd);   symbolic phase when A's nonzero pattern changed, then numeric
+     HylcCholSolve(chol, b, x);          x = A^-1 b
+     HylcCholDestroy(&chol);
+   A is a SeqAIJ matrix with a symmetric nonzero pattern and symmetric values; only the entries on and
+   below the diagonal of the permuted matrix are read. Not collective. */
+#include <hylc/sys.h>
+#include <petscmat.h>
+
+typedef struct _n_HylcChol *HylcChol;
+
+typedef enum {
+  HYLC_CHOL_ORDERING_METIS,  /* METIS_NodeND of the block graph (default) */
+  HYLC_CHOL_ORDERING_NATURAL /* the order of A (tests) */
+} HylcCholOrdering;
+
+typedef struct {
+  PetscInt       n, bs;               /* order and block size */
+  PetscInt       nsuper;              /* supernodes */
+  PetscCount     nnzL;                /* stored entries of L (dense supernode panels, diagonal blocks in full) */
+  PetscLogDouble flops;               /* floating-point operations of one numeric factorization */
+  PetscInt       nsymbolic, nnumeric; /* phases run since creation */
+} HylcCholInfo;
+
+PETSC_EXTERN PetscErrorCode HylcCholCreate(HylcChol *);
+PETSC_EXTERN PetscErrorCode HylcCholDestroy(HylcChol *);
+PETSC_EXTERN PetscErrorCode HylcCholSetOrdering(HylcChol, HylcCholOrdering);
+/* Factors A (block size bs, which must divide its order). *spd is PETSC_FALSE, and the factor unusable,
+   when a pivot is not positive (A is not positive definite) or not finite. */
+PETSC_EXTERN PetscErrorCode HylcCholFactor(HylcChol, Mat A, PetscInt bs, PetscBool *spd);
+/* x = A^-1 b with the last successful factorization; x may equal b. */
+PETSC_EXTERN PetscErrorCode HylcCholSolve(HylcChol, const PetscScalar b[], PetscScalar x[]);
+/* the same for nrhs right-hand sides stored one after the other (b[j n + i]); x may equal b */
+PETSC_EXTERN PetscErrorCode HylcCholSolveMany(HylcChol, PetscInt nrhs, const PetscScalar b[], PetscScalar x[]);
+PETSC_EXTERN PetscErrorCode HylcCholGetInfo(HylcChol, HylcCholInfo *);
+PETSC_EXTERN PetscErrorCode HylcCholView(HylcChol, PetscViewer);

@@ -1,0 +1,440 @@
+/* HylcChol: supernodal sparse Cholesky on a block structure (see include/hylc/chol.h).
+
+   Symbolic phase, on the graph of the nb = n / bs blocks ("vertices"):
+     1. the block graph of A and its METIS nested-dissection ordering perm (new -> old);
+     2. the elimination tree (Liu's algorithm with path compression);
+     3. the column structures of L: struct(j) = {i > j : A_ij != 0} U (U_children c struct(c) \ {j});
+     4. fundamental supernodes: j joins the supernode of j - 1 when j - 1 is its only child and
+        struct(j - 1) = {j} U struct(j);
+     5. for each supernode s with block columns [f, f + w) its block rows R_s = {f} U struct(f), sorted, and
+        a dense column-major panel of bs |R_s| rows and bs w columns;
+     6. amap: the position in the panels of every entry of A on or below the permuted diagonal.
+   Numeric phase (right-looking over supernodes): scatter A into the panels; for each supernode, the
+   dense Cholesky of its panel (diagonal block and the rows below it), then the update of every ancestor
+   column block c in R_s by the bs x bs blocks L_r L_c^T (r >= c in R_s), written into the ancestor's panel
+   through the relative positions of R_s's rows in its row list. */
+#include <hylc/chol.h>
+
+struct _n_HylcChol {
+  HylcCholOrdering ordering;
+  Mat              A; /* the matrix of the symbolic phase (not referenced; compared by address and state) */
+  PetscObjectState nzstate;
+  PetscInt         n, bs, nb, nnzA;
+  PetscInt        *perm, *iperm; /* blocks: new -> old, old -> new */
+  PetscInt         nsup, *sfirst, *snode, *rptr, *rows;
+  PetscCount      *voff;  /* start of each panel in L */
+  PetscInt        *amap;  /* per entry of A: index into L, or -1 (above the diagonal) */
+  PetscReal       *L, *y; /* panels; solve work (ycap entries) */
+  PetscInt         ycap;
+  PetscInt        *relpos;
+  PetscBool        factored;
+  HylcCholInfo     info;
+};
+
+PetscErrorCode HylcCholCreate(HylcChol *chol)
+{
+  PetscFunctionBegin;
+  PetscCall(HylcInitializePackage());
+  PetscCall(PetscNew(chol));
+  (*chol)->ordering = HYLC_CHOL_ORDERING_METIS;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode CholReset(HylcChol C)
+{
+  PetscFunctionBegin;
+  PetscCall(PetscFree2(C->perm, C->iperm));
+  PetscCall(PetscFree4(C->sfirst, C->snode, C->rptr, C->voff));
+  PetscCall(PetscFree(C->rows));
+  PetscCall(PetscFree(C->amap));
+  PetscCall(PetscFree2(C->L, C->relpos));
+  C->A        = NULL;
+  C->factored = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcCholDestroy(HylcChol *chol)
+{
+  PetscFunctionBegin;
+  if (!*chol) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(CholReset(*chol));
+  PetscCall(PetscFree((*chol)->y));
+  PetscCall(PetscFree(*chol));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcCholSetOrdering(HylcChol C, HylcCholOrdering ord)
+{
+  PetscFunctionBegin;
+  if (ord != C->ordering) PetscCall(CholReset(C));
+  C->ordering = ord;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* appends v to a growing array */
+static PetscErrorCode Push(PetscInt **a, PetscInt *n, PetscInt *cap, PetscInt v)
+{
+  PetscFunctionBegin;
+  if (*n == *cap) {
+    PetscInt *b;
+    *cap = *cap ? 2 * *cap : 1024;
+    PetscCall(PetscMalloc1(*cap, &b));
+    PetscCall(PetscArraycpy(b, *a, *n));
+    PetscCall(PetscFree(*a));
+    *a = b;
+  }
+  (*a)[(*n)++] = v;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode CholSymbolic(HylcChol C, Mat A, PetscInt bs)
+{
+  PetscInt        n, nb, *xadj, *adj, *mark, *parent, *anc, *head, *next, *cstart, *ccnt, *cs = NULL, ncs = 0, capcs = 0;
+  const PetscInt *ia, *ja;
+  PetscBool       done;
+
+  PetscFunctionBegin;
+  PetscCall(PetscLogEventBegin(HYLC_CholSymbolic, 0, 0, 0, 0));
+  PetscCall(CholReset(C));
+  PetscCall(MatGetRowIJ(A, 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done));
+  PetscCheck(done, PETSC_COMM_SELF, PETSC_ERR_SUP, "HylcChol: cannot get the row structure of the matrix");
+  PetscCheck(bs >= 1 && n % bs == 0, PETSC_COMM_SELF, PETSC_ERR_ARG_SIZ, "HylcChol: block size %" PetscInt_FMT " does not divide the order %" PetscInt_FMT, bs, n);
+  nb   = n / bs;
+  C->n = n, C->bs = bs, C->nb = nb, C->nnzA = ia[n];
+
+  /* 1. the block graph (without self loops) and its ordering */
+  PetscCall(PetscMalloc3(nb + 1, &xadj, ia[n] + 1, &adj, nb, &mark));
+  for (PetscInt BI = 0; BI < nb; BI++) mark[BI] = -1;
+  xadj[0] = 0;
+  for (PetscInt BI = 0; BI < nb; BI++) {
+    PetscInt k = xadj[BI];
+    for (PetscInt i = bs * BI; i < bs * (BI + 1); i++)
+      for (PetscInt t = ia[i]; t < ia[i + 1]; t++) {
+        const PetscInt BJ = ja[t] / bs;
+        if (BJ != BI && mark[BJ] != BI) {
+          mark[BJ] = BI;
+          adj[k++] = BJ;
+        }
+      }
+    xadj[BI + 1] = k;
+  }
+  PetscCall(PetscMalloc2(nb, &C->perm, nb, &C->iperm));
+  if (C->ordering == HYLC_CHOL_ORDERING_METIS)
+    PetscCall(HylcMetisNodeND(nb, xadj, adj, C->perm));
+  else
+    for (PetscInt BI = 0; BI < nb; BI++) C->perm[BI] = BI;
+  for (PetscInt k = 0; k < nb; k++) C->iperm[C->perm[k]] = k;
+
+  /* 2. elimination tree, in the new numbering */
+  PetscCall(PetscMalloc6(nb, &parent, nb, &anc, nb, &head, nb, &next, nb + 1, &cstart, nb, &ccnt));
+  for (PetscInt k = 0; k < nb; k++) {
+    const PetscInt old = C->perm[k];
+    parent[k] = anc[k] = -1;
+    for (PetscInt t = xadj[old]; t < xadj[old + 1]; t++) {
+      PetscInt i = C->iperm[adj[t]];
+      while (i != -1 && i < k) {
+        const PetscInt inext = anc[i];
+        anc[i]               = k;
+        if (inext == -1) parent[i] = k;
+        i = inext;
+      }
+    }
+  }
+  for (PetscInt k = 0; k < nb; k++) head[k] = -1;
+  for (PetscInt k = nb - 1; k >= 0; k--)
+    if (parent[k] >= 0) {
+      next[k]         = head[parent[k]];
+      head[parent[k]] = k;
+    }
+
+  /* 3. column structures (rows below the diagonal, sorted) */
+  for (PetscInt k = 0; k < nb; k++) mark[k] = -1;
+  for (PetscInt j = 0; j < nb; j++) {
+    const PetscInt old = C->perm[j];
+    cstart[j]          = ncs;
+    for (PetscInt t = xadj[old]; t < xadj[old + 1]; t++) {
+      const PetscInt i = C->iperm[adj[t]];
+      if (i > j && mark[i] != j) {
+        mark[i] = j;
+        PetscCall(Push(&cs, &ncs, &capcs, i));
+      }
+    }
+    for (PetscInt c = head[j]; c != -1; c = next[c])
+      for (PetscInt t = cstart[c]; t < cstart[c] + ccnt[c]; t++) {
+        const PetscInt i = cs[t];
+        if (i > j && mark[i] != j) {
+          mark[i] = j;
+          PetscCall(Push(&cs, &ncs, &capcs, i));
+        }
+      }
+    ccnt[j] = ncs - cstart[j];
+    PetscCall(PetscSortInt(ccnt[j], cs + cstart[j]));
+  }
+
+  /* 4. fundamental supernodes */
+  PetscCall(PetscMalloc4(nb + 1, &C->sfirst, nb, &C->snode, nb + 1, &C->rptr, nb + 1, &C->voff));
+  C->nsup = 0;
+  for (PetscInt j = 0; j < nb; j++) {
+    const PetscBool join = (PetscBool)(j > 0 && parent[j - 1] == j && head[j] == j - 1 && next[j - 1] == -1 && ccnt[j - 1] == ccnt[j] + 1);
+    if (!join) C->sfirst[C->nsup++] = j;
+    C->snode[j] = C->nsup - 1;
+  }
+  C->sfirst[C->nsup] = nb;
+
+  /* 5. row lists and panels */
+  C->rptr[0]    = 0;
+  C->voff[0]    = 0;
+  C->info.flops = 0;
+  for (PetscInt s = 0; s < C->nsup; s++) {
+    const PetscInt f = C->sfirst[s], w = C->sfirst[s + 1] - f, nr = 1 + ccnt[f];
+    C->rptr[s + 1] = C->rptr[s] + nr;
+    C->voff[s + 1] = C->voff[s] + (PetscCount)(bs * nr) * (bs * w);
+    /* flops: the panel factorization, then the updates (2 bs^2 W per block pair r >= c below the panel) */
+    const PetscInt W = bs * w, ld = bs * nr, nbelow = nr - w;
+    for (PetscInt k = 0; k < W; k++) C->info.flops += 1 + (ld - k - 1) + (PetscLogDouble)(W - k - 1) * (2 * ld - W - k);
+    C->info.flops += (2.0 * bs * bs * W + bs * bs) * nbelow * (nbelow + 1) / 2;
+  }
+  PetscCall(PetscMalloc1(C->rptr[C->nsup] + 1, &C->rows));
+  for (PetscInt s = 0; s < C->nsup; s++) {
+    const PetscInt f    = C->sfirst[s];
+    C->rows[C->rptr[s]] = f;
+    PetscCall(PetscArraycpy(C->rows + C->rptr[s] + 1, cs + cstart[f], ccnt[f]));
+  }
+
+  /* 6. where each entry of A goes */
+  PetscCall(PetscMalloc1(ia[n] + 1, &C->amap));
+  for (PetscInt i = 0; i < n; i++) {
+    const PetscInt BI = C->iperm[i / bs], ii = i % bs;
+    for (PetscInt t = ia[i]; t < ia[i + 1]; t++) {
+      const PetscInt BJ = C->iperm[ja[t] / bs], jj = ja[t] % bs;
+      C->amap[t] = -1;
+      if (BI < BJ || (BI == BJ && ii < jj)) continue;
+      const PetscInt s = C->snode[BJ], nr = C->rptr[s + 1] - C->rptr[s];
+      PetscInt       pos;
+      PetscCall(PetscFindInt(BI, nr, C->rows + C->rptr[s], &pos));
+      PetscCheck(pos >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "HylcChol: entry (%" PetscInt_FMT ", %" PetscInt_FMT ") outside the symbolic structure", i, ja[t]);
+      C->amap[t] = (PetscInt)(C->voff[s] + (PetscCount)(bs * (BJ - C->sfirst[s]) + jj) * (bs * nr) + bs * pos + ii);
+    }
+  }
+  PetscCall(MatRestoreRowIJ(A, 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done));
+  PetscCall(PetscMalloc2(C->voff[C->nsup], &C->L, nb, &C->relpos));
+  C->info.n      = C->n;
+  C->info.bs     = bs;
+  C->info.nsuper = C->nsup;
+  C->info.nnzL   = C->voff[C->nsup];
+  C->info.nsymbolic++;
+  PetscCall(PetscFree(cs));
+  PetscCall(PetscFree6(parent, anc, head, next, cstart, ccnt));
+  PetscCall(PetscFree3(xadj, adj, mark));
+  C->A = A;
+  PetscCall(MatGetNonzeroState(A, &C->nzstate));
+  PetscCall(PetscLogEventEnd(HYLC_CholSymbolic, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* c (bs x bs, row-major) = sum_k a[k ld + i] b[k ld + j] over k < W: one block of L_r L_c^T */
+static inline void BlockProduct4(PetscInt W, PetscInt ld, const PetscReal *a, const PetscReal *b, PetscReal c[16])
+{
+  PetscReal c00 = 0, c01 = 0, c02 = 0, c03 = 0, c10 = 0, c11 = 0, c12 = 0, c13 = 0;
+  PetscReal c20 = 0, c21 = 0, c22 = 0, c23 = 0, c30 = 0, c31 = 0, c32 = 0, c33 = 0;
+  for (PetscInt k = 0; k < W; k++, a += ld, b += ld) {
+    const PetscReal a0 = a[0], a1 = a[1], a2 = a[2], a3 = a[3], b0 = b[0], b1 = b[1], b2 = b[2], b3 = b[3];
+    c00 += a0 * b0, c01 += a0 * b1, c02 += a0 * b2, c03 += a0 * b3;
+    c10 += a1 * b0, c11 += a1 * b1, c12 += a1 * b2, c13 += a1 * b3;
+    c20 += a2 * b0, c21 += a2 * b1, c22 += a2 * b2, c23 += a2 * b3;
+    c30 += a3 * b0, c31 += a3 * b1, c32 += a3 * b2, c33 += a3 * b3;
+  }
+  c[0] = c00, c[1] = c01, c[2] = c02, c[3] = c03, c[4] = c10, c[5] = c11, c[6] = c12, c[7] = c13;
+  c[8] = c20, c[9] = c21, c[10] = c22, c[11] = c23, c[12] = c30, c[13] = c31, c[14] = c32, c[15] = c33;
+}
+
+static inline void BlockProduct(PetscInt bs, PetscInt W, PetscInt ld, const PetscReal *a, const PetscReal *b, PetscReal c[])
+{
+  for (PetscInt i = 0; i < bs * bs; i++) c[i] = 0;
+  for (PetscInt k = 0; k < W; k++, a += ld, b += ld)
+    for (PetscInt i = 0; i < bs; i++)
+      for (PetscInt j = 0; j < bs; j++) c[i * bs + j] += a[i] * b[j];
+}
+
+/* tgt (bs x bs, column-major with leading dimension ldt) -= the block product of a and b over W columns */
+static inline void BlockUpdate(PetscInt bs, PetscInt W, PetscInt ld, const PetscReal *a, const PetscReal *b, PetscReal blk[], PetscReal *tgt, PetscInt ldt)
+{
+  if (bs == 4) {
+    BlockProduct4(W, ld, a, b, blk);
+    for (PetscInt j = 0; j < 4; j++, tgt += ldt) tgt[0] -= blk[j], tgt[1] -= blk[4 + j], tgt[2] -= blk[8 + j], tgt[3] -= blk[12 + j];
+  } else {
+    BlockProduct(bs, W, ld, a, b, blk);
+    for (PetscInt j = 0; j < bs; j++, tgt += ldt)
+      for (PetscInt i = 0; i < bs; i++) tgt[i] -= blk[i * bs + j];
+  }
+}
+
+static PetscErrorCode CholNumeric(HylcChol C, Mat A, PetscBool *spd)
+{
+  const PetscInt     bs = C->bs;
+  const PetscScalar *av;
+  PetscReal          cb[64], *blk = cb;
+
+  PetscFunctionBegin;
+  PetscCall(PetscLogEventBegin(HYLC_CholNumeric, 0, 0, 0, 0));
+  *spd        = PETSC_TRUE;
+  C->factored = PETSC_FALSE;
+  if (bs * bs > 64) PetscCall(PetscMalloc1(bs * bs, &blk));
+  PetscCall(PetscArrayzero(C->L, C->voff[C->nsup]));
+  PetscCall(MatSeqAIJGetArrayRead(A, &av));
+  for (PetscInt t = 0; t < C->nnzA; t++)
+    if (C->amap[t] >= 0) C->L[C->amap[t]] = PetscRealPart(av[t]);
+  PetscCall(MatSeqAIJRestoreArrayRead(A, &av));
+  for (PetscInt s = 0; s < C->nsup && *spd; s++) {
+    const PetscInt  f = C->sfirst[s], w = C->sfirst[s + 1] - f, nr = C->rptr[s + 1] - C->rptr[s], ld = bs * nr, W = bs * w;
+    const PetscInt *R = C->rows + C->rptr[s];
+    PetscReal      *P = C->L + C->voff[s];
+    /* the panel: dense Cholesky of the diagonal block and triangular solve of the rows below, left-looking
+       by block columns (the block products of the previous columns, then an unblocked step on bs columns) */
+    for (PetscInt jb = 0; jb < w && *spd; jb++) {
+      PetscReal *cjb = P + (PetscCount)bs * jb * ld;
+      if (jb)
+        for (PetscInt r = jb; r < nr; r++) {
+          PetscReal *tgt = cjb + bs * r;
+          BlockUpdate(bs, bs * jb, ld, P + bs * r, P + bs * jb, blk, tgt, ld);
+        }
+      for (PetscInt k = bs * jb; k < bs * (jb + 1); k++) {
+        PetscReal *ck = P + k * ld, d = ck[k];
+        if (!(d > 0) || !PetscIsNormalReal(d)) {
+          *spd = PETSC_FALSE;
+          break;
+        }
+        d                   = PetscSqrtReal(d);
+        ck[k]               = d;
+        const PetscReal inv = 1 / d;
+        for (PetscInt i = k + 1; i < ld; i++) ck[i] *= inv;
+        for (PetscInt j = k + 1; j < bs * (jb + 1); j++) {
+          PetscReal      *cj = P + j * ld;
+          const PetscReal l  = ck[j];
+          for (PetscInt i = j; i < ld; i++) cj[i] -= ck[i] * l;
+        }
+      }
+    }
+    if (!*spd) break;
+    /* updates of the ancestors, one target supernode (a run of R) at a time */
+    for (PetscInt p = w; p < nr;) {
+      const PetscInt  t = C->snode[R[p]], ft = C->sfirst[t], lt = C->sfirst[t + 1], nrt = C->rptr[t + 1] - C->rptr[t], ldt = bs * nrt;
+      const PetscInt *Rt = C->rows + C->rptr[t];
+      PetscReal      *Pt = C->L + C->voff[t];
+      PetscInt        q1 = p;
+      while (q1 < nr && R[q1] < lt) q1++;
+      for (PetscInt i = 0; i < nrt; i++) C->relpos[Rt[i]] = i;
+      for (PetscInt q = p; q < q1; q++) {
+        PetscReal *tcol = Pt + (PetscCount)bs * (R[q] - ft) * ldt;
+        for (PetscInt r = q; r < nr; r++) {
+          BlockUpdate(bs, W, ld, P + bs * r, P + bs * q, blk, tcol + bs * C->relpos[R[r]], ldt);
+        }
+      }
+      p = q1;
+    }
+  }
+  if (blk != cb) PetscCall(PetscFree(blk));
+  C->factored = *spd;
+  C->info.nnumeric++;
+  PetscCall(PetscLogFlops(C->info.flops));
+  PetscCall(PetscLogEventEnd(HYLC_CholNumeric, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcCholFactor(HylcChol C, Mat A, PetscInt bs, PetscBool *spd)
+{
+  PetscObjectState st;
+
+  PetscFunctionBegin;
+  PetscCall(MatGetNonzeroState(A, &st));
+  if (A != C->A || st != C->nzstate || bs != C->bs) PetscCall(CholSymbolic(C, A, bs));
+  PetscCall(CholNumeric(C, A, spd));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcCholSolveMany(HylcChol C, PetscInt nrhs, const PetscScalar b[], PetscScalar x[])
+{
+  const PetscInt bs = C->bs, n = C->n, m = nrhs;
+  PetscReal     *y;
+
+  PetscFunctionBegin;
+  PetscCheck(C->factored, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE, "HylcCholSolve: no successful factorization");
+  if (m <= 0) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscLogEventBegin(HYLC_CholSolve, 0, 0, 0, 0));
+  if (n * m > C->ycap) {
+    PetscCall(PetscFree(C->y));
+    C->ycap = n * m;
+    PetscCall(PetscMalloc1(C->ycap, &C->y));
+  }
+  y = C->y; /* permuted, the right-hand sides interleaved: y[m g + j] */
+  for (PetscInt BI = 0; BI < C->nb; BI++)
+    for (PetscInt i = 0; i < bs; i++)
+      for (PetscInt j = 0; j < m; j++) y[m * (bs * C->iperm[BI] + i) + j] = PetscRealPart(b[j * n + bs * BI + i]);
+  /* L z = y */
+  for (PetscInt s = 0; s < C->nsup; s++) {
+    const PetscInt   f = C->sfirst[s], w = C->sfirst[s + 1] - f, nr = C->rptr[s + 1] - C->rptr[s], ld = bs * nr, W = bs * w, c0 = bs * f;
+    const PetscInt  *R = C->rows + C->rptr[s];
+    const PetscReal *P = C->L + C->voff[s];
+    for (PetscInt k = 0; k < W; k++) {
+      const PetscReal *ck = P + k * ld;
+      PetscReal       *yk = y + m * (c0 + k);
+      for (PetscInt j = 0; j < m; j++) yk[j] /= ck[k];
+      for (PetscInt i = k + 1; i < W; i++)
+        for (PetscInt j = 0; j < m; j++) y[m * (c0 + i) + j] -= ck[i] * yk[j];
+      for (PetscInt r = w; r < nr; r++)
+        for (PetscInt i = 0; i < bs; i++) {
+          PetscReal *yr = y + m * (bs * R[r] + i);
+          for (PetscInt j = 0; j < m; j++) yr[j] -= ck[bs * r + i] * yk[j];
+        }
+    }
+  }
+  /* L^T x = z */
+  for (PetscInt s = C->nsup - 1; s >= 0; s--) {
+    const PetscInt   f = C->sfirst[s], w = C->sfirst[s + 1] - f, nr = C->rptr[s + 1] - C->rptr[s], ld = bs * nr, W = bs * w, c0 = bs * f;
+    const PetscInt  *R = C->rows + C->rptr[s];
+    const PetscReal *P = C->L + C->voff[s];
+    for (PetscInt k = W - 1; k >= 0; k--) {
+      const PetscReal *ck = P + k * ld;
+      PetscReal       *yk = y + m * (c0 + k);
+      for (PetscInt i = k + 1; i < W; i++)
+        for (PetscInt j = 0; j < m; j++) yk[j] -= ck[i] * y[m * (c0 + i) + j];
+      for (PetscInt r = w; r < nr; r++)
+        for (PetscInt i = 0; i < bs; i++) {
+          const PetscReal *yr = y + m * (bs * R[r] + i);
+          for (PetscInt j = 0; j < m; j++) yk[j] -= ck[bs * r + i] * yr[j];
+        }
+      for (PetscInt j = 0; j < m; j++) yk[j] /= ck[k];
+    }
+  }
+  for (PetscInt BI = 0; BI < C->nb; BI++)
+    for (PetscInt i = 0; i < bs; i++)
+      for (PetscInt j = 0; j < m; j++) x[j * n + bs * BI + i] = y[m * (bs * C->iperm[BI] + i) + j];
+  PetscCall(PetscLogFlops(4.0 * m * (PetscLogDouble)C->voff[C->nsup]));
+  PetscCall(PetscLogEventEnd(HYLC_CholSolve, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcCholSolve(HylcChol C, const PetscScalar b[], PetscScalar x[])
+{
+  PetscFunctionBegin;
+  PetscCall(HylcCholSolveMany(C, 1, b, x));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcCholGetInfo(HylcChol C, HylcCholInfo *info)
+{
+  PetscFunctionBegin;
+  *info = C->info;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcCholView(HylcChol C, PetscViewer viewer)
+{
+  char buf[256];
+
+  PetscFunctionBegin;
+  if (!viewer) PetscCall(PetscViewerASCIIGetStdout(PETSC_COMM_SELF, &viewer));
+  snprintf(buf, sizeof(buf), "HylcChol: order %d, block size %d, ordering %s, %d supernodes, %.0f stored entries of L, %.3g flops per factorization, %d symbolic / %d numeric phases\n", (int)C->info.n, (int)C->info.bs, C->ordering == HYLC_CHOL_ORDERING_METIS ? "metis" : "natural", (int)C->info.nsuper, (double)C->info.nnzL, (double)C->info.flops, (int)C->info.nsymbolic, (int)C->info.nnumeric);
+  PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
