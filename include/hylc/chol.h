@@ -12,7 +12,7 @@
 
    Usage:
      HylcCholCreate(&chol);
-     HylcCholFactor(chol, A, 4, &spd);   symbolic phase when A's nonzero pattern changed, then numeric
+     HylcCholFactor(chol, A, 4, &ok);    symbolic phase when A's nonzero pattern changed, then numeric
      HylcCholSolve(chol, b, x);          x = A^-1 b
      HylcCholDestroy(&chol);
    A is a SeqAIJ matrix with a symmetric nonzero pattern and symmetric values; only the entries on and
@@ -38,9 +38,16 @@ typedef struct {
 PETSC_EXTERN PetscErrorCode HylcCholCreate(HylcChol *);
 PETSC_EXTERN PetscErrorCode HylcCholDestroy(HylcChol *);
 PETSC_EXTERN PetscErrorCode HylcCholSetOrdering(HylcChol, HylcCholOrdering);
-/* Factors A (block size bs, which must divide its order). *spd is PETSC_FALSE, and the factor unusable,
-   when a pivot is not positive (A is not positive definite) or not finite. */
-PETSC_EXTERN PetscErrorCode HylcCholFactor(HylcChol, Mat A, PetscInt bs, PetscBool *spd);
+/* Factors A (block size bs, which must divide its order) as A = P^T L S L^T P, S = diag(+-1) the signs of
+   the pivots: the Cholesky factorization when A is positive definite. *ok is PETSC_FALSE, and the factor
+   unusable, when a pivot is zero or tiny (|d| <= 1e-14 |A_kk|), not finite, or negative while indefinite
+   matrices are refused (the default: then *ok says whether A is positive definite). */
+PETSC_EXTERN PetscErrorCode HylcCholFactor(HylcChol, Mat A, PetscInt bs, PetscBool *ok);
+/* Accept indefinite matrices (negative pivots; no pivoting, so only for matrices whose leading principal
+   minors do not vanish, as regularized Hessians). Default PETSC_FALSE. */
+PETSC_EXTERN PetscErrorCode HylcCholSetIndefinite(HylcChol, PetscBool);
+/* The inertia of the last factored matrix (Sylvester): negative and positive eigenvalues. */
+PETSC_EXTERN PetscErrorCode HylcCholGetInertia(HylcChol, PetscInt *nneg, PetscInt *npos);
 /* x = A^-1 b with the last successful factorization; x may equal b. */
 PETSC_EXTERN PetscErrorCode HylcCholSolve(HylcChol, const PetscScalar b[], PetscScalar x[]);
 /* the same for nrhs right-hand sides stored one after the other (b[j n + i]); x may equal b */

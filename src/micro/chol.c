@@ -26,6 +26,9 @@ struct _n_HylcChol {
   PetscInt        *amap;  /* per entry of A: index into L, or -1 (above the diagonal) */
   PetscReal       *L, *y; /* panels; solve work (ycap entries) */
   PetscInt         ycap;
+  PetscReal       *sg, *dA; /* pivot signs, |diagonal of A| (permuted) */
+  PetscInt         nneg;    /* negative pivots of the last factorization */
+  PetscBool        indefinite;
   PetscInt        *relpos;
   PetscBool        factored;
   HylcCholInfo     info;
@@ -47,7 +50,7 @@ static PetscErrorCode CholReset(HylcChol C)
   PetscCall(PetscFree4(C->sfirst, C->snode, C->rptr, C->voff));
   PetscCall(PetscFree(C->rows));
   PetscCall(PetscFree(C->amap));
-  PetscCall(PetscFree2(C->L, C->relpos));
+  PetscCall(PetscFree4(C->L, C->relpos, C->sg, C->dA));
   C->A        = NULL;
   C->factored = PETSC_FALSE;
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -217,7 +220,7 @@ static PetscErrorCode CholSymbolic(HylcChol C, Mat A, PetscInt bs)
     }
   }
   PetscCall(MatRestoreRowIJ(A, 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done));
-  PetscCall(PetscMalloc2(C->voff[C->nsup], &C->L, nb, &C->relpos));
+  PetscCall(PetscMalloc4(C->voff[C->nsup], &C->L, nb, &C->relpos, C->n, &C->sg, C->n, &C->dA));
   C->info.n      = C->n;
   C->info.bs     = bs;
   C->info.nsuper = C->nsup;
@@ -232,13 +235,15 @@ static PetscErrorCode CholSymbolic(HylcChol C, Mat A, PetscInt bs)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* c (bs x bs, row-major) = sum_k a[k ld + i] b[k ld + j] over k < W: one block of L_r L_c^T */
-static inline void BlockProduct4(PetscInt W, PetscInt ld, const PetscReal *a, const PetscReal *b, PetscReal c[16])
+/* c (4 x 4, row-major) = sum_k a[k ld + i] b[k ld + j] over k < W: one block of L_r L_c^T; with signs sg,
+   sum_k a[k ld + i] sg[k] b[k ld + j] (L_r S L_c^T) */
+static inline void BlockProduct4(PetscInt W, PetscInt ld, const PetscReal *a, const PetscReal *b, const PetscReal *sg, PetscReal c[16])
 {
   PetscReal c00 = 0, c01 = 0, c02 = 0, c03 = 0, c10 = 0, c11 = 0, c12 = 0, c13 = 0;
   PetscReal c20 = 0, c21 = 0, c22 = 0, c23 = 0, c30 = 0, c31 = 0, c32 = 0, c33 = 0;
   for (PetscInt k = 0; k < W; k++, a += ld, b += ld) {
-    const PetscReal a0 = a[0], a1 = a[1], a2 = a[2], a3 = a[3], b0 = b[0], b1 = b[1], b2 = b[2], b3 = b[3];
+    const PetscReal s  = sg ? sg[k] : 1.0;
+    const PetscReal a0 = a[0], a1 = a[1], a2 = a[2], a3 = a[3], b0 = s * b[0], b1 = s * b[1], b2 = s * b[2], b3 = s * b[3];
     c00 += a0 * b0, c01 += a0 * b1, c02 += a0 * b2, c03 += a0 * b3;
     c10 += a1 * b0, c11 += a1 * b1, c12 += a1 * b2, c13 += a1 * b3;
     c20 += a2 * b0, c21 += a2 * b1, c22 += a2 * b2, c23 += a2 * b3;
@@ -248,74 +253,87 @@ static inline void BlockProduct4(PetscInt W, PetscInt ld, const PetscReal *a, co
   c[8] = c20, c[9] = c21, c[10] = c22, c[11] = c23, c[12] = c30, c[13] = c31, c[14] = c32, c[15] = c33;
 }
 
-static inline void BlockProduct(PetscInt bs, PetscInt W, PetscInt ld, const PetscReal *a, const PetscReal *b, PetscReal c[])
+static inline void BlockProduct(PetscInt bs, PetscInt W, PetscInt ld, const PetscReal *a, const PetscReal *b, const PetscReal *sg, PetscReal c[])
 {
   for (PetscInt i = 0; i < bs * bs; i++) c[i] = 0;
-  for (PetscInt k = 0; k < W; k++, a += ld, b += ld)
+  for (PetscInt k = 0; k < W; k++, a += ld, b += ld) {
+    const PetscReal s = sg ? sg[k] : 1.0;
     for (PetscInt i = 0; i < bs; i++)
-      for (PetscInt j = 0; j < bs; j++) c[i * bs + j] += a[i] * b[j];
+      for (PetscInt j = 0; j < bs; j++) c[i * bs + j] += a[i] * s * b[j];
+  }
 }
 
-/* tgt (bs x bs, column-major with leading dimension ldt) -= the block product of a and b over W columns */
-static inline void BlockUpdate(PetscInt bs, PetscInt W, PetscInt ld, const PetscReal *a, const PetscReal *b, PetscReal blk[], PetscReal *tgt, PetscInt ldt)
+/* tgt (bs x bs, column-major with leading dimension ldt) -= the block product of a and b over W columns.
+   Without negative pivots (sg = NULL) the bs = 4 kernel is specialized by the compiler for the no-sign case. */
+static inline void BlockUpdate(PetscInt bs, PetscInt W, PetscInt ld, const PetscReal *a, const PetscReal *b, const PetscReal *sg, PetscReal blk[], PetscReal *tgt, PetscInt ldt)
 {
   if (bs == 4) {
-    BlockProduct4(W, ld, a, b, blk);
+    if (sg)
+      BlockProduct4(W, ld, a, b, sg, blk);
+    else
+      BlockProduct4(W, ld, a, b, NULL, blk);
     for (PetscInt j = 0; j < 4; j++, tgt += ldt) tgt[0] -= blk[j], tgt[1] -= blk[4 + j], tgt[2] -= blk[8 + j], tgt[3] -= blk[12 + j];
   } else {
-    BlockProduct(bs, W, ld, a, b, blk);
+    BlockProduct(bs, W, ld, a, b, sg, blk);
     for (PetscInt j = 0; j < bs; j++, tgt += ldt)
       for (PetscInt i = 0; i < bs; i++) tgt[i] -= blk[i * bs + j];
   }
 }
 
-static PetscErrorCode CholNumeric(HylcChol C, Mat A, PetscBool *spd)
+/* The signed factorization A = L S L^T, S = diag(+-1) (the sign of each pivot): L_kk = sqrt(|d_k|). With
+   positive pivots only it is the Cholesky factorization. A pivot that is zero or tiny against the diagonal
+   of A (|d_k| <= 1e-14 |A_kk|), not finite, or negative when indefinite matrices are refused, stops it. */
+static PetscErrorCode CholNumeric(HylcChol C, Mat A, PetscBool *ok)
 {
   const PetscInt     bs = C->bs;
   const PetscScalar *av;
-  PetscReal          cb[64], *blk = cb;
+  PetscReal          cb[64], *blk = cb, *sg = C->sg, *dA = C->dA;
 
   PetscFunctionBegin;
   PetscCall(PetscLogEventBegin(HYLC_CholNumeric, 0, 0, 0, 0));
-  *spd        = PETSC_TRUE;
+  *ok         = PETSC_TRUE;
   C->factored = PETSC_FALSE;
+  C->nneg     = 0;
   if (bs * bs > 64) PetscCall(PetscMalloc1(bs * bs, &blk));
   PetscCall(PetscArrayzero(C->L, C->voff[C->nsup]));
   PetscCall(MatSeqAIJGetArrayRead(A, &av));
   for (PetscInt t = 0; t < C->nnzA; t++)
     if (C->amap[t] >= 0) C->L[C->amap[t]] = PetscRealPart(av[t]);
   PetscCall(MatSeqAIJRestoreArrayRead(A, &av));
-  for (PetscInt s = 0; s < C->nsup && *spd; s++) {
-    const PetscInt  f = C->sfirst[s], w = C->sfirst[s + 1] - f, nr = C->rptr[s + 1] - C->rptr[s], ld = bs * nr, W = bs * w;
-    const PetscInt *R = C->rows + C->rptr[s];
-    PetscReal      *P = C->L + C->voff[s];
-    /* the panel: dense Cholesky of the diagonal block and triangular solve of the rows below, left-looking
-       by block columns (the block products of the previous columns, then an unblocked step on bs columns) */
-    for (PetscInt jb = 0; jb < w && *spd; jb++) {
+  for (PetscInt s = 0; s < C->nsup; s++) {
+    const PetscInt ld = bs * (C->rptr[s + 1] - C->rptr[s]), c0 = bs * C->sfirst[s], W = bs * (C->sfirst[s + 1] - C->sfirst[s]);
+    for (PetscInt k = 0; k < W; k++) dA[c0 + k] = PetscAbsReal(C->L[C->voff[s] + k * ld + k]);
+  }
+  for (PetscInt s = 0; s < C->nsup && *ok; s++) {
+    const PetscInt  f = C->sfirst[s], w = C->sfirst[s + 1] - f, nr = C->rptr[s + 1] - C->rptr[s], ld = bs * nr, W = bs * w, c0 = bs * f;
+    const PetscInt *R   = C->rows + C->rptr[s];
+    PetscReal      *P   = C->L + C->voff[s];
+    PetscBool       neg = PETSC_FALSE;
+    /* the panel: dense factorization of the diagonal block and triangular solve of the rows below,
+       left-looking by block columns (block products of the previous columns, then an unblocked step) */
+    for (PetscInt jb = 0; jb < w && *ok; jb++) {
       PetscReal *cjb = P + (PetscCount)bs * jb * ld;
       if (jb)
-        for (PetscInt r = jb; r < nr; r++) {
-          PetscReal *tgt = cjb + bs * r;
-          BlockUpdate(bs, bs * jb, ld, P + bs * r, P + bs * jb, blk, tgt, ld);
-        }
+        for (PetscInt r = jb; r < nr; r++) BlockUpdate(bs, bs * jb, ld, P + bs * r, P + bs * jb, neg ? sg + c0 : NULL, blk, cjb + bs * r, ld);
       for (PetscInt k = bs * jb; k < bs * (jb + 1); k++) {
         PetscReal *ck = P + k * ld, d = ck[k];
-        if (!(d > 0) || !PetscIsNormalReal(d)) {
-          *spd = PETSC_FALSE;
+        if (!PetscIsNormalReal(d) || PetscAbsReal(d) <= 1e-14 * dA[c0 + k] || (d < 0 && !C->indefinite)) {
+          *ok = PETSC_FALSE;
           break;
         }
-        d                   = PetscSqrtReal(d);
-        ck[k]               = d;
-        const PetscReal inv = 1 / d;
+        sg[c0 + k] = d < 0 ? -1.0 : 1.0;
+        if (d < 0) neg = PETSC_TRUE, C->nneg++;
+        ck[k]               = PetscSqrtReal(PetscAbsReal(d));
+        const PetscReal inv = sg[c0 + k] / ck[k];
         for (PetscInt i = k + 1; i < ld; i++) ck[i] *= inv;
         for (PetscInt j = k + 1; j < bs * (jb + 1); j++) {
           PetscReal      *cj = P + j * ld;
-          const PetscReal l  = ck[j];
+          const PetscReal l  = ck[j] * sg[c0 + k];
           for (PetscInt i = j; i < ld; i++) cj[i] -= ck[i] * l;
         }
       }
     }
-    if (!*spd) break;
+    if (!*ok) break;
     /* updates of the ancestors, one target supernode (a run of R) at a time */
     for (PetscInt p = w; p < nr;) {
       const PetscInt  t = C->snode[R[p]], ft = C->sfirst[t], lt = C->sfirst[t + 1], nrt = C->rptr[t + 1] - C->rptr[t], ldt = bs * nrt;
@@ -326,29 +344,43 @@ static PetscErrorCode CholNumeric(HylcChol C, Mat A, PetscBool *spd)
       for (PetscInt i = 0; i < nrt; i++) C->relpos[Rt[i]] = i;
       for (PetscInt q = p; q < q1; q++) {
         PetscReal *tcol = Pt + (PetscCount)bs * (R[q] - ft) * ldt;
-        for (PetscInt r = q; r < nr; r++) {
-          BlockUpdate(bs, W, ld, P + bs * r, P + bs * q, blk, tcol + bs * C->relpos[R[r]], ldt);
-        }
+        for (PetscInt r = q; r < nr; r++) BlockUpdate(bs, W, ld, P + bs * r, P + bs * q, neg ? sg + c0 : NULL, blk, tcol + bs * C->relpos[R[r]], ldt);
       }
       p = q1;
     }
   }
   if (blk != cb) PetscCall(PetscFree(blk));
-  C->factored = *spd;
+  C->factored = *ok;
   C->info.nnumeric++;
   PetscCall(PetscLogFlops(C->info.flops));
   PetscCall(PetscLogEventEnd(HYLC_CholNumeric, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode HylcCholFactor(HylcChol C, Mat A, PetscInt bs, PetscBool *spd)
+PetscErrorCode HylcCholFactor(HylcChol C, Mat A, PetscInt bs, PetscBool *ok)
 {
   PetscObjectState st;
 
   PetscFunctionBegin;
   PetscCall(MatGetNonzeroState(A, &st));
   if (A != C->A || st != C->nzstate || bs != C->bs) PetscCall(CholSymbolic(C, A, bs));
-  PetscCall(CholNumeric(C, A, spd));
+  PetscCall(CholNumeric(C, A, ok));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcCholGetInertia(HylcChol C, PetscInt *nneg, PetscInt *npos)
+{
+  PetscFunctionBegin;
+  PetscCheck(C->factored, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE, "HylcCholGetInertia: no successful factorization");
+  if (nneg) *nneg = C->nneg;
+  if (npos) *npos = C->n - C->nneg;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcCholSetIndefinite(HylcChol C, PetscBool allow)
+{
+  PetscFunctionBegin;
+  C->indefinite = allow;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -388,7 +420,12 @@ PetscErrorCode HylcCholSolveMany(HylcChol C, PetscInt nrhs, const PetscScalar b[
         }
     }
   }
-  /* L^T x = z */
+  /* S z */
+  if (C->nneg)
+    for (PetscInt g = 0; g < n; g++)
+      if (C->sg[g] < 0)
+        for (PetscInt j = 0; j < m; j++) y[m * g + j] = -y[m * g + j];
+  /* L^T x = S z */
   for (PetscInt s = C->nsup - 1; s >= 0; s--) {
     const PetscInt   f = C->sfirst[s], w = C->sfirst[s + 1] - f, nr = C->rptr[s + 1] - C->rptr[s], ld = bs * nr, W = bs * w, c0 = bs * f;
     const PetscInt  *R = C->rows + C->rptr[s];

@@ -16,6 +16,7 @@ typedef struct {
   PetscInt  lsMax, maxStalls;
   PetscReal rtol, atol, ctol, maxTime;
   PetscBool petscFactor; /* factor K with a PETSc PC (prefix micro_factor_) instead of HylcChol */
+  PetscBool indefinite;  /* accept a factorization of an indefinite K (the descent test still applies) */
 } MicroParams;
 
 struct _n_HylcMicro {
@@ -69,6 +70,7 @@ static PetscErrorCode MicroParamsDefault(MicroParams *p)
   p->ctol        = 1e-4;
   p->maxTime     = 60;
   p->petscFactor = PETSC_FALSE;
+  p->indefinite  = PETSC_TRUE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -136,6 +138,9 @@ PetscErrorCode HylcMicroSetPattern(HylcMicro M, HylcPattern pat, const HylcYarnM
 . -micro_ls_factor <0.1>, -micro_ls_max <11> - backtracking factor and number of trials
 . -micro_factor_type <hylc>      - hylc: the supernodal Cholesky of include/hylc/chol.h; petsc: PCCHOLESKY
                                    with the options -micro_factor_pc_* (ordering metisnd by default)
+. -micro_factor_indefinite <true> - accept the factorization of an indefinite K (signed Cholesky L S L^T, as
+                                   PETSc's and Eigen's LDL^T do) when the step is a descent direction of
+                                   positive curvature; false: alpha x 10 at any negative pivot
 . -micro_max_stalls <5>          - consecutive failed line searches before giving up
 . -micro_rtol <1e-5>             - |z| < rtol |z0|
 . -micro_atol <1e-10>            - or |z| < atol k_s
@@ -168,6 +173,7 @@ PetscErrorCode HylcMicroSetFromOptions(HylcMicro M)
     PetscCheck(!M->snes || (t == 1) == p->petscFactor, M->comm, PETSC_ERR_ARG_WRONGSTATE, "-micro_factor_type cannot change after the solver is set up");
     p->petscFactor = (PetscBool)(t == 1);
   }
+  PetscCall(PetscOptionsBool("-micro_factor_indefinite", "Accept the factorization of an indefinite Newton matrix if the step descends with positive curvature (false: alpha x 10 at any negative pivot; hylc factorization only)", "HylcMicro", p->indefinite, &p->indefinite, NULL));
   PetscCall(PetscOptionsReal("-micro_max_time", "Wall-time cap per solve (s); status time_cap", "HylcMicro", p->maxTime, &p->maxTime, NULL));
   PetscOptionsEnd();
   PetscCheck(p->alphaStart > 0 && p->alphaEnd > 0 && p->alphaIts >= 1, M->comm, PETSC_ERR_USER_INPUT, "-micro_alpha_start, -micro_alpha_end must be positive and -micro_alpha_its at least 1");
@@ -568,8 +574,10 @@ static PetscErrorCode MicroSetUpSolver(HylcMicro M)
     PetscCall(PCFactorSetMatOrderingType(M->inner, HylcDefaultOrdering()));
     PetscCall(PCSetOptionsPrefix(M->inner, "micro_factor_"));
     PetscCall(PCSetFromOptions(M->inner));
-  } else
+  } else {
     PetscCall(HylcCholCreate(&M->chol));
+    PetscCall(HylcCholSetIndefinite(M->chol, M->par.indefinite));
+  }
   PetscCall(SNESCreate(PETSC_COMM_SELF, &M->snes));
   PetscCall(SNESSetOptionsPrefix(M->snes, "micro_"));
   PetscCall(SNESSetType(M->snes, SNESNEWTONLS));
