@@ -47,7 +47,7 @@ static PetscErrorCode RandomSPD(PetscInt nb, PetscInt bs, PetscReal p, PetscReal
 }
 
 /* factor, solve A x = b for a random b; check the residual and the agreement with PETSc's Cholesky */
-static PetscErrorCode CheckSolve(Mat A, PetscInt bs, HylcCholOrdering ord, const char *label, unsigned long long *seed)
+static PetscErrorCode CheckSolve(Mat A, PetscInt bs, HylcCholOrdering ord, PetscBool relax, const char *label, unsigned long long *seed)
 {
   HylcChol           C;
   PetscBool          spd;
@@ -70,6 +70,7 @@ static PetscErrorCode CheckSolve(Mat A, PetscInt bs, HylcCholOrdering ord, const
   PetscCall(VecRestoreArray(b, &xa));
   PetscCall(HylcCholCreate(&C));
   PetscCall(HylcCholSetOrdering(C, ord));
+  PetscCall(HylcCholSetRelaxed(C, relax));
   PetscCall(HylcCholFactor(C, A, bs, &spd));
   HYLC_CHECK(spd, "%s: SPD matrix reported indefinite", label);
   PetscCall(VecGetArrayRead(b, &ba));
@@ -112,12 +113,12 @@ static PetscErrorCode TestRandom(void)
   PetscFunctionBegin;
   for (int a = 0; a < 3; a++)
     for (int k = 0; k < 4; k++)
-      for (int o = 0; o < 2; o++) {
+      for (int o = 0; o < 3; o++) {
         Mat  A;
         char label[64];
         PetscCall(RandomSPD(nbs[k], bss[a], 0.02, 0.5, &seed, &A));
-        PetscCall(PetscSNPrintf(label, sizeof(label), "random bs %d nb %d %s", (int)bss[a], (int)nbs[k], o ? "natural" : "metis"));
-        PetscCall(CheckSolve(A, bss[a], o ? HYLC_CHOL_ORDERING_NATURAL : HYLC_CHOL_ORDERING_METIS, label, &seed));
+        PetscCall(PetscSNPrintf(label, sizeof(label), "random bs %d nb %d %s%s", (int)bss[a], (int)nbs[k], o == 1 ? "natural" : "metis", o == 2 ? " fundamental supernodes" : ""));
+        PetscCall(CheckSolve(A, bss[a], o == 1 ? HYLC_CHOL_ORDERING_NATURAL : HYLC_CHOL_ORDERING_METIS, (PetscBool)(o != 2), label, &seed));
         PetscCall(MatDestroy(&A));
       }
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -331,7 +332,8 @@ static PetscErrorCode TestPaperTiles(void)
       PetscCall(MatShift(H, dmax));
       PetscCall(VecDestroy(&d));
     }
-    PetscCall(CheckSolve(H, 4, HYLC_CHOL_ORDERING_METIS, names[t], &seed));
+    PetscCall(CheckSolve(H, 4, HYLC_CHOL_ORDERING_METIS, PETSC_TRUE, names[t], &seed));
+    PetscCall(CheckSolve(H, 4, HYLC_CHOL_ORDERING_METIS, PETSC_FALSE, names[t], &seed));
     PetscCall(MatDestroy(&H));
     PetscCall(PetscFree(y));
     PetscCall(HylcPeriodicDestroy(&P));
