@@ -869,11 +869,13 @@ static void     StructElementDofs(const HylcPeriodic P, PetscInt k, PetscInt idx
    vertices in a CSR matrix, and the position in its value array of every element-matrix entry. It is
    rebuilt only when a touching pair falls outside it; the matrix's nonzero pattern, hence the symbolic
    factorization, is then reused. (This replaces MatSetPreallocationCOO, whose sort of all element entries
-   cost as much as ten evaluations.) */
+   cost as much as ten evaluations.) The rows are built one vertex at a time from the elements incident to
+   it, so every lookup of a neighbour block is O(1). */
 static PetscErrorCode SetCOO(HylcPeriodic P, Mat H)
 {
-  const PetscInt N = P->N;
-  PetscInt      *deg, *start, *nbr, k = 0, idx[12], n;
+  const PetscInt  N = P->N;
+  PetscInt       *doff, *dof, *koff, *sel, *istart, *inc, *start, *nbr, *mark, *where, *vpos, maxdeg = 0;
+  unsigned short *mask;
 
   PetscFunctionBegin;
   if (H == P->cooMat && PairsCovered(P)) PetscFunctionReturn(PETSC_SUCCESS);
@@ -888,74 +890,98 @@ static PetscErrorCode SetCOO(HylcPeriodic P, Mat H)
     P->capcoo = nent + nent / 4;
     PetscCall(PetscMalloc2(P->capcoo, &P->coopos, P->capcoo, &P->coov));
   }
-  /* vertex adjacency: an upper bound of the neighbours per vertex, then the sorted unique lists */
-  PetscCall(PetscCalloc2(N + 1, &deg, N + 1, &start));
+  /* the dofs of every element (dof[doff[e] + p], p < n), and the offset koff[e] of its first entry in the
+     element order of coopos: entry (p, q) of element e is coopos[koff[e] + p n + q] */
+  PetscCall(PetscMalloc3(nel + 1, &doff, 12 * nel + 1, &dof, nel + 1, &koff));
+  doff[0] = koff[0] = 0;
   for (PetscInt e = 0; e < nel; e++) {
-    StructElementDofs(P, e, idx, &n);
-    for (PetscInt a = 0; a < n; a++) deg[idx[a] / 4] += n;
+    PetscInt n;
+    StructElementDofs(P, e, dof + doff[e], &n);
+    doff[e + 1] = doff[e] + n;
+    koff[e + 1] = koff[e] + n * n;
   }
-  for (PetscInt a = 0; a < N; a++) start[a + 1] = start[a] + deg[a];
-  PetscCall(PetscMalloc1(start[N] + 1, &nbr));
-  PetscCall(PetscArrayzero(deg, N));
-  for (PetscInt e = 0; e < nel; e++) {
-    StructElementDofs(P, e, idx, &n);
-    for (PetscInt a = 0; a < n; a++)
-      for (PetscInt b = 0; b < n; b++) nbr[start[idx[a] / 4] + deg[idx[a] / 4]++] = idx[b] / 4;
-  }
-  for (PetscInt a = 0; a < N; a++) PetscCall(PetscSortRemoveDupsInt(&deg[a], nbr + start[a]));
-  /* which of the 16 entries of each vertex block are used (positions do not couple with twists in
-     stretch and contact elements): a 16-bit mask per block */
-  unsigned short *mask;
-  PetscInt       *boff;
-  PetscCall(PetscCalloc2(start[N] + 1, &mask, 4 * (start[N] + 1), &boff));
-  for (PetscInt e = 0; e < nel; e++) {
-    StructElementDofs(P, e, idx, &n);
-    for (PetscInt p = 0; p < n; p++) {
-      const PetscInt a = idx[p] / 4;
-      for (PetscInt q = 0; q < n; q++) {
-        PetscInt loc;
-        PetscCall(PetscFindInt(idx[q] / 4, deg[a], nbr + start[a], &loc));
-        mask[start[a] + loc] |= (unsigned short)(1u << (4 * (idx[p] % 4) + idx[q] % 4));
+  const PetscInt ndof = doff[nel], ncoo = koff[nel];
+  /* incidence: the element dof slots s (index into dof) of every vertex a, inc[istart[a] .. istart[a+1]),
+     and the element sel[s] of each slot */
+  PetscCall(PetscMalloc2(ndof + 1, &sel, ndof + 1, &inc));
+  PetscCall(PetscCalloc2(N + 1, &istart, N + 1, &start));
+  for (PetscInt e = 0; e < nel; e++)
+    for (PetscInt s = doff[e]; s < doff[e + 1]; s++) {
+      sel[s] = e;
+      istart[dof[s] / 4 + 1]++;
+    }
+  for (PetscInt a = 0; a < N; a++) istart[a + 1] += istart[a];
+  for (PetscInt s = 0; s < ndof; s++) inc[istart[dof[s] / 4]++] = s;
+  for (PetscInt a = N; a > 0; a--) istart[a] = istart[a - 1];
+  istart[0] = 0;
+  /* vertex adjacency, the sorted neighbours nbr[start[a] .. start[a+1]) of each vertex (distinct via the
+     marker mark[b] == a; where[b] is b's position in the row being built), and which of the 16 entries of
+     each vertex block are used (positions do not couple with twists in stretch and contact elements): a
+     16-bit mask per block. A row has at most its incident entries as neighbours, hence the bound ncoo. */
+  PetscCall(PetscMalloc4(ncoo + 1, &nbr, ncoo + 1, &mask, N, &mark, N, &where));
+  for (PetscInt b = 0; b < N; b++) mark[b] = -1;
+  for (PetscInt a = 0; a < N; a++) {
+    PetscInt *row = nbr + start[a], m = 0;
+    for (PetscInt t = istart[a]; t < istart[a + 1]; t++) {
+      const PetscInt e = sel[inc[t]];
+      for (PetscInt s = doff[e]; s < doff[e + 1]; s++) {
+        const PetscInt b = dof[s] / 4;
+        if (mark[b] != a) {
+          mark[b]  = a;
+          row[m++] = b;
+        }
       }
     }
+    PetscCall(PetscSortInt(m, row));
+    start[a + 1] = start[a] + m;
+    maxdeg       = PetscMax(maxdeg, m);
+    for (PetscInt q = 0; q < m; q++) {
+      where[row[q]]      = q;
+      mask[start[a] + q] = 0;
+    }
+    for (PetscInt t = istart[a]; t < istart[a + 1]; t++) {
+      const PetscInt sp = inc[t], e = sel[sp], i = dof[sp] % 4; /* the slot sp is row 4a + i of element e */
+      for (PetscInt s = doff[e]; s < doff[e + 1]; s++) mask[start[a] + where[dof[s] / 4]] |= (unsigned short)(1u << (4 * i + dof[s] % 4));
+    }
   }
-  /* CSR of the scalar rows: row 4a + i has, for every neighbour block, the columns its mask uses */
+  /* CSR of the scalar rows: row 4a + i has, for every neighbour block, the columns its mask uses, entry
+     (i, j) of the row's block q at the position vpos[16q + 4i + j] of the CSR values; then where each
+     element entry of row vertex a goes */
   PetscCall(PetscFree2(P->rowptr, P->colind));
   PetscInt nnz = 0;
-  for (PetscInt a = 0; a < N; a++)
-    for (PetscInt q = 0; q < deg[a]; q++) nnz += __builtin_popcount(mask[start[a] + q]);
+  for (PetscInt q = 0; q < start[N]; q++) nnz += __builtin_popcount(mask[q]);
   PetscCall(PetscMalloc2(4 * N + 1, &P->rowptr, nnz + 1, &P->colind));
+  PetscCall(PetscMalloc1(16 * maxdeg + 1, &vpos));
   P->rowptr[0] = 0;
-  for (PetscInt a = 0; a < N; a++)
+  for (PetscInt a = 0; a < N; a++) {
+    const PetscInt        deg = start[a + 1] - start[a], *row = nbr + start[a];
+    const unsigned short *rmask = mask + start[a];
     for (PetscInt i = 0; i < 4; i++) {
-      const PetscInt row = 4 * a + i;
-      PetscInt       c   = P->rowptr[row];
-      for (PetscInt q = 0; q < deg[a]; q++) {
-        const unsigned bits          = (mask[start[a] + q] >> (4 * i)) & 0xFu;
-        boff[4 * (start[a] + q) + i] = c;
+      const PetscInt r = 4 * a + i;
+      PetscInt       c = P->rowptr[r];
+      for (PetscInt q = 0; q < deg; q++) {
         for (PetscInt j = 0; j < 4; j++)
-          if (bits & (1u << j)) P->colind[c++] = 4 * nbr[start[a] + q] + j;
+          if (rmask[q] & (1u << (4 * i + j))) {
+            vpos[16 * q + 4 * i + j] = c;
+            P->colind[c++]           = 4 * row[q] + j;
+          }
       }
-      P->rowptr[row + 1] = c;
+      P->rowptr[r + 1] = c;
     }
-  P->nnz = nnz;
-  /* where each element entry goes in the CSR values */
-  for (PetscInt e = 0; e < nel; e++) {
-    StructElementDofs(P, e, idx, &n);
-    for (PetscInt p = 0; p < n; p++) {
-      const PetscInt a = idx[p] / 4, i = idx[p] % 4;
-      for (PetscInt q = 0; q < n; q++, k++) {
-        PetscInt loc;
-        PetscCall(PetscFindInt(idx[q] / 4, deg[a], nbr + start[a], &loc));
-        const unsigned bits = (mask[start[a] + loc] >> (4 * i)) & 0xFu, j = (unsigned)(idx[q] % 4);
-        P->coopos[k] = boff[4 * (start[a] + loc) + i] + __builtin_popcount(bits & ((1u << j) - 1u));
-      }
+    for (PetscInt q = 0; q < deg; q++) where[row[q]] = q;
+    for (PetscInt t = istart[a]; t < istart[a + 1]; t++) {
+      const PetscInt sp = inc[t], e = sel[sp], n = doff[e + 1] - doff[e], i = dof[sp] % 4;
+      PetscInt       k = koff[e] + (sp - doff[e]) * n;
+      for (PetscInt s = doff[e]; s < doff[e + 1]; s++, k++) P->coopos[k] = vpos[16 * where[dof[s] / 4] + 4 * i + dof[s] % 4];
     }
   }
-  PetscCall(PetscFree2(mask, boff));
-  P->ncoo = k;
-  PetscCall(PetscFree2(deg, start));
-  PetscCall(PetscFree(nbr));
+  P->nnz  = nnz;
+  P->ncoo = ncoo;
+  PetscCall(PetscFree(vpos));
+  PetscCall(PetscFree4(nbr, mask, mark, where));
+  PetscCall(PetscFree2(istart, start));
+  PetscCall(PetscFree2(sel, inc));
+  PetscCall(PetscFree3(doff, dof, koff));
   PetscCall(MatSeqAIJSetPreallocationCSR(H, P->rowptr, P->colind, NULL));
   P->cooMat = H;
   PetscFunctionReturn(PETSC_SUCCESS);
