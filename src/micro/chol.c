@@ -23,9 +23,9 @@ struct _n_HylcChol {
   PetscInt         n, bs, nb, nnzA;
   PetscInt        *perm, *iperm; /* blocks: new -> old, old -> new */
   PetscInt         nsup, *sfirst, *snode, *rptr, *rows;
-  PetscCount      *voff;  /* start of each panel in L */
-  PetscInt        *amap;  /* per entry of A: index into L, or -1 (above the diagonal) */
-  PetscReal       *L, *y; /* panels; solve work (ycap entries) */
+  PetscCount      *voff;       /* start of each panel in L */
+  PetscInt        *amap;       /* per entry of A: index into L, or -1 (above the diagonal) */
+  PetscReal       *L, *y, *tw; /* panels; solve work (ycap entries each) */
   PetscInt         ycap;
   PetscReal       *sg, *dA; /* pivot signs, |diagonal of A| (permuted) */
   PetscInt         nneg;    /* negative pivots of the last factorization */
@@ -64,7 +64,7 @@ PetscErrorCode HylcCholDestroy(HylcChol *chol)
   PetscFunctionBegin;
   if (!*chol) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(CholReset(*chol));
-  PetscCall(PetscFree((*chol)->y));
+  PetscCall(PetscFree2((*chol)->y, (*chol)->tw));
   PetscCall(PetscFree(*chol));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -436,7 +436,7 @@ PetscErrorCode HylcCholSetIndefinite(HylcChol C, PetscBool allow)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode HylcCholSolveMany(HylcChol C, PetscInt nrhs, const PetscScalar b[], PetscScalar x[])
+HYLC_KERNEL_CLONES PetscErrorCode HylcCholSolveMany(HylcChol C, PetscInt nrhs, const PetscScalar b[], PetscScalar x[])
 {
   const PetscInt bs = C->bs, n = C->n, m = nrhs;
   PetscReal     *y;
@@ -446,53 +446,77 @@ PetscErrorCode HylcCholSolveMany(HylcChol C, PetscInt nrhs, const PetscScalar b[
   if (m <= 0) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PetscLogEventBegin(HYLC_CholSolve, 0, 0, 0, 0));
   if (n * m > C->ycap) {
-    PetscCall(PetscFree(C->y));
+    PetscCall(PetscFree2(C->y, C->tw));
     C->ycap = n * m;
-    PetscCall(PetscMalloc1(C->ycap, &C->y));
+    PetscCall(PetscMalloc2(C->ycap, &C->y, C->ycap, &C->tw));
   }
   y = C->y; /* permuted, the right-hand sides interleaved: y[m g + j] */
   for (PetscInt BI = 0; BI < C->nb; BI++)
     for (PetscInt i = 0; i < bs; i++)
       for (PetscInt j = 0; j < m; j++) y[m * (bs * C->iperm[BI] + i) + j] = PetscRealPart(b[j * n + bs * BI + i]);
-  /* L z = y */
+  /* L z = y, a supernode at a time: the triangular solve with the diagonal block, then the rows below as
+     one dense product t = L_below z_s, subtracted from y at the rows R_s */
   for (PetscInt s = 0; s < C->nsup; s++) {
-    const PetscInt   f = C->sfirst[s], w = C->sfirst[s + 1] - f, nr = C->rptr[s + 1] - C->rptr[s], ld = bs * nr, W = bs * w, c0 = bs * f;
+    const PetscInt   f = C->sfirst[s], w = C->sfirst[s + 1] - f, nr = C->rptr[s + 1] - C->rptr[s], ld = bs * nr, W = bs * w;
     const PetscInt  *R = C->rows + C->rptr[s];
     const PetscReal *P = C->L + C->voff[s];
+    PetscReal       *X = y + m * bs * f, *t = C->tw;
     for (PetscInt k = 0; k < W; k++) {
       const PetscReal *ck = P + k * ld;
-      PetscReal       *yk = y + m * (c0 + k);
-      for (PetscInt j = 0; j < m; j++) yk[j] /= ck[k];
+      PetscReal       *xk = X + m * k;
+      for (PetscInt j = 0; j < m; j++) xk[j] /= ck[k];
       for (PetscInt i = k + 1; i < W; i++)
-        for (PetscInt j = 0; j < m; j++) y[m * (c0 + i) + j] -= ck[i] * yk[j];
-      for (PetscInt r = w; r < nr; r++)
-        for (PetscInt i = 0; i < bs; i++) {
-          PetscReal *yr = y + m * (bs * R[r] + i);
-          for (PetscInt j = 0; j < m; j++) yr[j] -= ck[bs * r + i] * yk[j];
-        }
+        for (PetscInt j = 0; j < m; j++) X[m * i + j] -= ck[i] * xk[j];
     }
+    if (ld == W) continue;
+    PetscCall(PetscArrayzero(t, m * (ld - W)));
+    for (PetscInt k = 0; k < W; k++) {
+      const PetscReal *ck = P + k * ld + W, *xk = X + m * k;
+      if (m == 1)
+        for (PetscInt i = 0; i < ld - W; i++) t[i] += ck[i] * xk[0];
+      else
+        for (PetscInt i = 0; i < ld - W; i++)
+          for (PetscInt j = 0; j < m; j++) t[m * i + j] += ck[i] * xk[j];
+    }
+    for (PetscInt r = w; r < nr; r++)
+      for (PetscInt i = 0; i < bs; i++) {
+        PetscReal       *yr = y + m * (bs * R[r] + i);
+        const PetscReal *tr = t + m * (bs * (r - w) + i);
+        for (PetscInt j = 0; j < m; j++) yr[j] -= tr[j];
+      }
   }
   /* S z */
   if (C->nneg)
     for (PetscInt g = 0; g < n; g++)
       if (C->sg[g] < 0)
         for (PetscInt j = 0; j < m; j++) y[m * g + j] = -y[m * g + j];
-  /* L^T x = S z */
+  /* L^T x = S z: gather the solution at the rows below, then dot products and the diagonal block */
   for (PetscInt s = C->nsup - 1; s >= 0; s--) {
-    const PetscInt   f = C->sfirst[s], w = C->sfirst[s + 1] - f, nr = C->rptr[s + 1] - C->rptr[s], ld = bs * nr, W = bs * w, c0 = bs * f;
+    const PetscInt   f = C->sfirst[s], w = C->sfirst[s + 1] - f, nr = C->rptr[s + 1] - C->rptr[s], ld = bs * nr, W = bs * w;
     const PetscInt  *R = C->rows + C->rptr[s];
     const PetscReal *P = C->L + C->voff[s];
+    PetscReal       *X = y + m * bs * f, *t = C->tw;
+    for (PetscInt r = w; r < nr; r++)
+      for (PetscInt i = 0; i < bs; i++) {
+        const PetscReal *yr = y + m * (bs * R[r] + i);
+        PetscReal       *tr = t + m * (bs * (r - w) + i);
+        for (PetscInt j = 0; j < m; j++) tr[j] = yr[j];
+      }
     for (PetscInt k = W - 1; k >= 0; k--) {
       const PetscReal *ck = P + k * ld;
-      PetscReal       *yk = y + m * (c0 + k);
-      for (PetscInt i = k + 1; i < W; i++)
-        for (PetscInt j = 0; j < m; j++) yk[j] -= ck[i] * y[m * (c0 + i) + j];
-      for (PetscInt r = w; r < nr; r++)
-        for (PetscInt i = 0; i < bs; i++) {
-          const PetscReal *yr = y + m * (bs * R[r] + i);
-          for (PetscInt j = 0; j < m; j++) yk[j] -= ck[bs * r + i] * yr[j];
-        }
-      for (PetscInt j = 0; j < m; j++) yk[j] /= ck[k];
+      PetscReal       *xk = X + m * k;
+      if (m == 1) {
+        PetscReal v = xk[0];
+        for (PetscInt i = 0; i < ld - W; i++) v -= ck[W + i] * t[i];
+        for (PetscInt i = k + 1; i < W; i++) v -= ck[i] * X[i];
+        xk[0] = v / ck[k];
+      } else {
+        for (PetscInt i = 0; i < ld - W; i++)
+          for (PetscInt j = 0; j < m; j++) xk[j] -= ck[W + i] * t[m * i + j];
+        for (PetscInt i = k + 1; i < W; i++)
+          for (PetscInt j = 0; j < m; j++) xk[j] -= ck[i] * X[m * i + j];
+        for (PetscInt j = 0; j < m; j++) xk[j] /= ck[k];
+      }
     }
   }
   for (PetscInt BI = 0; BI < C->nb; BI++)
