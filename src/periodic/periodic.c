@@ -422,13 +422,23 @@ PetscErrorCode HylcPeriodicSetUp(HylcPeriodic P)
   PetscCall(HylcMidsurfaceSetBox(P->ms, lo, hi));
   PetscCall(HylcMidsurfaceSetUp(P->ms));
 
-  /* contact ghosts: copies of tile edges in the 8 neighbouring tiles within the margin, measured on the
-     deformed initial guess */
+  /* contact ghosts: copies of tile edges in the neighbouring tiles within the margin, measured on the
+     deformed initial guess. Usually the 8 neighbours; more rings when the stored vertices spread over more
+     than a period (a file may store any periodic copy of a vertex) */
   {
     const PetscReal margin = PetscMax(3 * P->c.r, P->marginFactor * PetscMin(P->D.px, P->D.py));
     PetscReal       blo[3] = {PETSC_MAX_REAL, PETSC_MAX_REAL, PETSC_MAX_REAL}, bhi[3] = {PETSC_MIN_REAL, PETSC_MIN_REAL, PETSC_MIN_REAL};
-    PetscReal      *xih, *xo;
-    PetscCall(PetscMalloc2(3 * N * 9 * 2, &xih, 3 * N * 9 * 2, &xo));
+    PetscReal      *xih, *xo, xmin[2] = {PETSC_MAX_REAL, PETSC_MAX_REAL}, xmax[2] = {PETSC_MIN_REAL, PETSC_MIN_REAL};
+    PetscInt        k1, k2;
+    for (PetscInt o = 0; o < N; o++)
+      for (int i = 0; i < 2; i++) {
+        xmin[i] = PetscMin(xmin[i], P->xi[3 * o + i]);
+        xmax[i] = PetscMax(xmax[i], P->xi[3 * o + i]);
+      }
+    k1                     = 1 + (PetscInt)PetscMax(0, PetscCeilReal((xmax[0] - xmin[0]) / P->D.px - 1.05));
+    k2                     = 1 + (PetscInt)PetscMax(0, PetscCeilReal((xmax[1] - xmin[1]) / P->D.py - 1.05));
+    const PetscInt ncopies = (2 * k1 + 1) * (2 * k2 + 1);
+    PetscCall(PetscMalloc2(3 * N * ncopies * 2, &xih, 3 * N * ncopies * 2, &xo));
     for (PetscInt o = 0; o < N; o++)
       for (int i = 0; i < 3; i++) xih[3 * o + i] = P->xi[3 * o + i];
     PetscCall(HylcMidsurfaceEvaluate(P->ms, N, xih, xo, NULL));
@@ -438,8 +448,8 @@ PetscErrorCode HylcPeriodicSetUp(HylcPeriodic P)
         bhi[i] = PetscMax(bhi[i], xo[3 * o + i]);
       }
     PetscInt q = 0;
-    for (PetscInt s1 = -1; s1 <= 1; s1++)
-      for (PetscInt s2 = -1; s2 <= 1; s2++) {
+    for (PetscInt s1 = -k1; s1 <= k1; s1++)
+      for (PetscInt s2 = -k2; s2 <= k2; s2++) {
         if (!s1 && !s2) continue;
         for (PetscInt o = 0; o < N; o++, q++) {
           const PetscInt w = P->D.next[o];
@@ -453,8 +463,8 @@ PetscErrorCode HylcPeriodicSetUp(HylcPeriodic P)
       }
     PetscCall(HylcMidsurfaceEvaluate(P->ms, 2 * q, xih, xo, NULL));
     q = 0;
-    for (PetscInt s1 = -1; s1 <= 1; s1++)
-      for (PetscInt s2 = -1; s2 <= 1; s2++) {
+    for (PetscInt s1 = -k1; s1 <= k1; s1++)
+      for (PetscInt s2 = -k2; s2 <= k2; s2++) {
         if (!s1 && !s2) continue;
         for (PetscInt o = 0; o < N; o++, q++) {
           PetscBool near = PETSC_TRUE;

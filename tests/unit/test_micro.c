@@ -3,8 +3,12 @@
    - bent by II00 = kappa it converges to 1/2 B kappa^2 L / A within the discretization error;
    - the energy never increases between accepted iterates;
    - a solve gives bitwise the same result alone and after other solves with the same solver;
-   - on the paper's patterns (when present): z = 0 converges on all seven; Psi(sa) = Psi(-sa) for basket
-     and satin within the stopping tolerance. */
+   - on the paper's patterns (when present): z = 0 converges on all seven;
+   - mirror equivariance: the mirror image (x -> -x) of a pattern sheared by sa has the energy of the
+     pattern sheared by -sa (the paper's basket and satin, a generated twill), to 1e-9; so Psi(sa) = Psi(-sa)
+     holds exactly as far as a pattern is mirror symmetric (the stored basket and satin are not, by 3-8 %:
+     docs/method.md);
+   - representation: storing vertices one or two periods away (the same periodic object) changes nothing. */
 #include <hylc/micro.h>
 #include "hylctest.h"
 
@@ -141,6 +145,108 @@ static PetscErrorCode TestShearSymmetry(void)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* the image of p under the mirror x -> -x: positions and directors mirrored, the material angles and
+   twists negated, the second curvature component negated (the frame stays right-handed: d2 -> -M d2) */
+static PetscErrorCode MirrorX(HylcPattern p, HylcPattern *q)
+{
+  HylcPatternData d;
+  PetscInt        n;
+  PetscReal      *X, *th, *RK, *RT, *D1, *RefT;
+  PetscInt       *sh;
+
+  PetscFunctionBegin;
+  PetscCall(HylcPatternGetData(p, &d));
+  n = d.nv;
+  PetscCall(PetscMalloc6(3 * n, &X, n, &th, 2 * n, &RK, n, &RT, 3 * n, &D1, n, &RefT));
+  PetscCall(PetscMalloc1(2 * n, &sh));
+  for (PetscInt v = 0; v < n; v++) {
+    X[3 * v] = -d.X[3 * v], X[3 * v + 1] = d.X[3 * v + 1], X[3 * v + 2] = d.X[3 * v + 2];
+    D1[3 * v] = -d.refD1[3 * v], D1[3 * v + 1] = d.refD1[3 * v + 1], D1[3 * v + 2] = d.refD1[3 * v + 2];
+    th[v] = -d.theta[v], RT[v] = -d.restTwist[v], RefT[v] = -d.refTwist[v];
+    RK[2 * v] = d.restKappa[2 * v], RK[2 * v + 1] = -d.restKappa[2 * v + 1];
+    sh[2 * v] = -d.shift[2 * v], sh[2 * v + 1] = d.shift[2 * v + 1];
+  }
+  PetscCall(HylcPatternCreate(PETSC_COMM_SELF, q));
+  PetscCall(HylcPatternSetData(*q, n, d.px, d.py, d.radius, X, th, d.next, sh, d.restLength, RK, RT, D1, RefT));
+  PetscCall(PetscFree6(X, th, RK, RT, D1, RefT));
+  PetscCall(PetscFree(sh));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* the same periodic object with every third vertex stored one or two periods away */
+static PetscErrorCode Rewrap(HylcPattern p, HylcPattern *q)
+{
+  HylcPatternData d;
+  PetscReal      *X;
+  PetscInt       *sh;
+
+  PetscFunctionBegin;
+  PetscCall(HylcPatternGetData(p, &d));
+  PetscCall(PetscMalloc2(3 * d.nv, &X, 2 * d.nv, &sh));
+  PetscCall(PetscArraycpy(X, d.X, 3 * d.nv));
+  PetscCall(PetscArraycpy(sh, d.shift, 2 * d.nv));
+  for (PetscInt v = 0; v < d.nv; v += 3) {
+    const PetscInt l[2] = {v % 2 ? 1 : -2, v % 6 ? 0 : 1}, u = d.prev[v];
+    X[3 * v] += l[0] * d.px, X[3 * v + 1] += l[1] * d.py;
+    sh[2 * v] += l[0], sh[2 * v + 1] += l[1]; /* the edge leaving v: X[next] + shift p - X[v] unchanged */
+    sh[2 * u] -= l[0], sh[2 * u + 1] -= l[1]; /* the edge entering v */
+  }
+  PetscCall(HylcPatternCreate(PETSC_COMM_SELF, q));
+  PetscCall(HylcPatternSetData(*q, d.nv, d.px, d.py, d.radius, X, d.theta, d.next, sh, d.restLength, d.restKappa, d.restTwist, d.refD1, d.refTwist));
+  PetscCall(PetscFree2(X, sh));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* psi of the mirror image at +sa against psi of p at -sa; psi of the rewrapped copy against p */
+static PetscErrorCode CheckMirrorAndWrap(const char *name, HylcPattern p, const HylcYarnModel *m, PetscReal sa)
+{
+  HylcPattern     q, w;
+  HylcMicro       M, Q, W;
+  HylcMicroResult rm, rq, rp, rw;
+  const PetscReal zp[6] = {0.02, sa, 0, 0, 0, 0}, zm[6] = {0.02, -sa, 0, 0, 0, 0};
+
+  PetscFunctionBegin;
+  PetscCall(MirrorX(p, &q));
+  PetscCall(Rewrap(p, &w));
+  PetscCall(HylcMicroCreate(PETSC_COMM_SELF, &M));
+  PetscCall(HylcMicroSetPattern(M, p, m));
+  PetscCall(HylcMicroCreate(PETSC_COMM_SELF, &Q));
+  PetscCall(HylcMicroSetPattern(Q, q, m));
+  PetscCall(HylcMicroCreate(PETSC_COMM_SELF, &W));
+  PetscCall(HylcMicroSetPattern(W, w, m));
+  PetscCall(HylcMicroSolve(M, zm, &rm));
+  PetscCall(HylcMicroSolve(Q, zp, &rq));
+  PetscCall(HylcMicroSolve(M, zp, &rp));
+  PetscCall(HylcMicroSolve(W, zp, &rw));
+  HYLC_CHECK(rm.status == HYLC_MICRO_CONVERGED && rq.status == HYLC_MICRO_CONVERGED && rp.status == HYLC_MICRO_CONVERGED && rw.status == HYLC_MICRO_CONVERGED, "%s: status %s %s %s %s", name, HylcMicroStatuses[rm.status], HylcMicroStatuses[rq.status], HylcMicroStatuses[rp.status], HylcMicroStatuses[rw.status]);
+  HYLC_CHECK(PetscAbsReal(rq.psi - rm.psi) <= 1e-9 * rm.psi, "%s: mirror image at sa = %g: psi %.12g, the pattern at sa = %g: psi %.12g", name, (double)sa, (double)rq.psi, (double)-sa, (double)rm.psi);
+  HYLC_CHECK(PetscAbsReal(rw.psi - rp.psi) <= 1e-9 * rp.psi, "%s: vertices stored a period away: psi %.12g instead of %.12g", name, (double)rw.psi, (double)rp.psi);
+  if (getenv("HYLC_REPORT")) PetscCall(PetscPrintf(PETSC_COMM_SELF, "%s: psi(+%g) = %.10g, psi(-%g) = %.10g, mirror image at +%g: %.10g, rewrapped: %.10g\n", name, (double)sa, (double)rp.psi, (double)sa, (double)rm.psi, (double)sa, (double)rq.psi, (double)rw.psi));
+  PetscCall(HylcMicroDestroy(&M));
+  PetscCall(HylcMicroDestroy(&Q));
+  PetscCall(HylcMicroDestroy(&W));
+  PetscCall(HylcPatternDestroy(&q));
+  PetscCall(HylcPatternDestroy(&w));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode TestMirrorTwill(void)
+{
+  HylcPattern          p;
+  HylcPatternGenParams g;
+  HylcYarnModel        m;
+
+  PetscFunctionBegin;
+  PetscCall(HylcPatternGenParamsDefault(&g));
+  PetscCall(HylcPatternCreate(PETSC_COMM_SELF, &p));
+  PetscCall(HylcPatternGenerate(p, HYLCPATTERNTWILL, &g));
+  PetscCall(HylcYarnModelDefault(&m));
+  m.kc = 50;
+  PetscCall(CheckMirrorAndWrap("generated twill", p, &m, 0.3));
+  PetscCall(HylcPatternDestroy(&p));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode LoadConfigured(const char *root, const char *dir, const char *name, HylcPattern *p, HylcYarnModel *m)
 {
   char         path[PETSC_MAX_PATH_LEN];
@@ -182,9 +288,10 @@ static PetscErrorCode TestPaperPatterns(const char *root, const char *dir)
       PetscCall(HylcMicroSolve(M, zp, &rp));
       PetscCall(HylcMicroSolve(M, zm, &rm));
       HYLC_CHECK(rp.status == HYLC_MICRO_CONVERGED && rm.status == HYLC_MICRO_CONVERGED, "%s sa = +-0.3: status %s, %s", names[k], HylcMicroStatuses[rp.status], HylcMicroStatuses[rm.status]);
-      /* measured, not asserted: the stored basket and satin are not mirror symmetric to this accuracy
-         (docs/method.md); the mirror symmetry of the solver is asserted on a generated plain weave */
+      /* Psi(sa) - Psi(-sa) is measured, not asserted: the stored basket and satin are not mirror symmetric
+         (3-8 %, docs/method.md). Asserted: the solver is mirror equivariant on them */
       if (getenv("HYLC_REPORT")) PetscCall(PetscPrintf(PETSC_COMM_SELF, "%s: psi(+0.3) = %.10g, psi(-0.3) = %.10g\n", names[k], (double)rp.psi, (double)rm.psi));
+      PetscCall(CheckMirrorAndWrap(names[k], p, &m, 0.3));
     }
     PetscCall(HylcMicroDestroy(&M));
     PetscCall(HylcPatternDestroy(&p));
@@ -202,6 +309,7 @@ int main(int argc, char **argv)
   PetscCall(TestAnalytic());
   PetscCall(TestReproducible());
   PetscCall(TestShearSymmetry());
+  PetscCall(TestMirrorTwill());
   PetscCall(PetscSNPrintf(dir, sizeof(dir), "%s/patterns/hylc2020", env ? env : "../shared/refdata"));
   PetscCall(PetscTestDirectory(dir, 'r', &have));
   if (have)
