@@ -18,7 +18,7 @@
 
 struct _n_HylcChol {
   HylcCholOrdering ordering;
-  Mat              A; /* the matrix of the symbolic phase (not referenced; compared by address and state) */
+  Mat              A; /* the matrix of the symbolic phase (referenced), and its nonzero state then */
   PetscObjectState nzstate;
   PetscInt         n, bs, nb, nnzA;
   PetscInt        *perm, *iperm; /* blocks: new -> old, old -> new */
@@ -54,7 +54,7 @@ static PetscErrorCode CholReset(HylcChol C)
   PetscCall(PetscFree(C->rows));
   PetscCall(PetscFree(C->amap));
   PetscCall(PetscFree4(C->L, C->relpos, C->sg, C->dA));
-  C->A        = NULL;
+  PetscCall(MatDestroy(&C->A));
   C->factored = PETSC_FALSE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -262,6 +262,7 @@ static PetscErrorCode CholSymbolic(HylcChol C, Mat A, PetscInt bs)
   PetscCall(PetscFree(cs));
   PetscCall(PetscFree6(parent, anc, head, next, cstart, ccnt));
   PetscCall(PetscFree3(xadj, adj, mark));
+  PetscCall(PetscObjectReference((PetscObject)A));
   C->A = A;
   PetscCall(MatGetNonzeroState(A, &C->nzstate));
   PetscCall(PetscLogEventEnd(HYLC_CholSymbolic, 0, 0, 0, 0));
@@ -406,6 +407,11 @@ PetscErrorCode HylcCholFactor(HylcChol C, Mat A, PetscInt bs, PetscBool *ok)
   PetscObjectState st;
 
   PetscFunctionBegin;
+  {
+    PetscBool aij;
+    PetscCall(PetscObjectTypeCompare((PetscObject)A, MATSEQAIJ, &aij));
+    PetscCheck(aij, PETSC_COMM_SELF, PETSC_ERR_SUP, "HylcCholFactor: the matrix must be MATSEQAIJ");
+  }
   PetscCall(MatGetNonzeroState(A, &st));
   if (A != C->A || st != C->nzstate || bs != C->bs) PetscCall(CholSymbolic(C, A, bs));
   PetscCall(CholNumeric(C, A, ok));
