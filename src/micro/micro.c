@@ -174,6 +174,7 @@ PetscErrorCode HylcMicroSetFromOptions(HylcMicro M)
     p->petscFactor = (PetscBool)(t == 1);
   }
   PetscCall(PetscOptionsBool("-micro_factor_indefinite", "Accept the factorization of an indefinite Newton matrix if the step descends with positive curvature (false: alpha x 10 at any negative pivot; hylc factorization only)", "HylcMicro", p->indefinite, &p->indefinite, NULL));
+  if (M->chol) PetscCall(HylcCholSetIndefinite(M->chol, p->indefinite));
   PetscCall(PetscOptionsReal("-micro_max_time", "Wall-time cap per solve (s); status time_cap", "HylcMicro", p->maxTime, &p->maxTime, NULL));
   PetscOptionsEnd();
   PetscCheck(p->alphaStart > 0 && p->alphaEnd > 0 && p->alphaIts >= 1, M->comm, PETSC_ERR_USER_INPUT, "-micro_alpha_start, -micro_alpha_end must be positive and -micro_alpha_its at least 1");
