@@ -11,6 +11,7 @@
 #include <hylc/periodic.h>
 #include <hylc/chol.h>
 #include <petsctime.h>
+#include "../unit/tilehessian.h"
 
 static const char *const Orderings[] = {MATORDERINGNATURAL, MATORDERINGRCM, MATORDERINGND, MATORDERINGAMD, MATORDERINGMETISND};
 #define NORD 5
@@ -162,16 +163,14 @@ static PetscErrorCode BenchHylcChol(Mat K, PetscInt reps, PetscLogDouble *tt, Pe
 
 static PetscErrorCode Bench(const char *dir, const char *name, const PetscReal z[6], PetscInt reps)
 {
-  char          path[PETSC_MAX_PATH_LEN];
-  PetscBool     have, spd = PETSC_FALSE;
-  HylcPattern   p;
-  HylcYarnModel m;
-  HylcPeriodic  P;
-  Mat           H, K = NULL;
-  Vec           d;
-  PetscInt      n;
-  PetscReal    *y, e[4], dmax, alpha = 0, nzK;
-  MatInfo       minfo;
+  char        path[PETSC_MAX_PATH_LEN];
+  PetscBool   have, spd = PETSC_FALSE;
+  HylcPattern p;
+  Mat         H, K = NULL;
+  Vec         d;
+  PetscInt    n;
+  PetscReal   dmax, alpha = 0, nzK;
+  MatInfo     minfo;
 
   PetscFunctionBegin;
   PetscCall(PetscSNPrintf(path, sizeof(path), "%s/%s.pyp", dir, name));
@@ -182,16 +181,8 @@ static PetscErrorCode Bench(const char *dir, const char *name, const PetscReal z
   }
   PetscCall(HylcPatternCreate(PETSC_COMM_SELF, &p));
   PetscCall(HylcPatternLoad(p, path));
-  PetscCall(HylcYarnModelDefault(&m));
-  PetscCall(HylcPeriodicCreate(p, &m, &P));
-  PetscCall(HylcPeriodicSetStrain(P, z));
-  PetscCall(HylcPeriodicSetUp(P));
-  PetscCall(HylcPeriodicGetSizes(P, &n, NULL, NULL, NULL));
-  PetscCall(PetscMalloc1(n, &y));
-  PetscCall(HylcPeriodicGetInitialState(P, y));
-  PetscCall(HylcPeriodicSetState(P, y));
-  PetscCall(HylcPeriodicCreateMatrix(P, &H));
-  PetscCall(HylcPeriodicEvaluate(P, HYLC_TERM_ALL, e, NULL, H));
+  PetscCall(HylcTestTileHessian(p, z, &H));
+  PetscCall(MatGetSize(H, &n, NULL));
   PetscCall(MatCreateVecs(H, &d, NULL));
   PetscCall(MatGetDiagonal(H, d));
   PetscCall(VecNorm(d, NORM_INFINITY, &dmax));
@@ -224,8 +215,6 @@ static PetscErrorCode Bench(const char *dir, const char *name, const PetscReal z
   }
   PetscCall(MatDestroy(&K));
   PetscCall(MatDestroy(&H));
-  PetscCall(PetscFree(y));
-  PetscCall(HylcPeriodicDestroy(&P));
   PetscCall(HylcPatternDestroy(&p));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

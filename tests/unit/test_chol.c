@@ -11,6 +11,7 @@
 #include <hylc/chol.h>
 #include <hylc/periodic.h>
 #include "hylctest.h"
+#include "tilehessian.h"
 
 /* a random symmetric matrix of nb blocks of size bs: block-sparse (each block pair coupled with
    probability p, within a band of blocks plus a few long links), made diagonally dominant by shift */
@@ -299,11 +300,7 @@ static PetscErrorCode TestPaperTiles(void)
     char            path[PETSC_MAX_PATH_LEN];
     PetscBool       have;
     HylcPattern     p;
-    HylcYarnModel   m;
-    HylcPeriodic    P;
     Mat             H;
-    PetscInt        n;
-    PetscReal      *y, e[4];
     const PetscReal z[6] = {0.1, 0.05, -0.05, 0, 0, 0};
     PetscCall(PetscSNPrintf(path, sizeof(path), "%s/patterns/hylc2020/%s.pyp", env ? env : "../shared/refdata", names[t]));
     PetscCall(PetscTestFile(path, 'r', &have));
@@ -313,16 +310,7 @@ static PetscErrorCode TestPaperTiles(void)
     }
     PetscCall(HylcPatternCreate(PETSC_COMM_SELF, &p));
     PetscCall(HylcPatternLoad(p, path));
-    PetscCall(HylcYarnModelDefault(&m));
-    PetscCall(HylcPeriodicCreate(p, &m, &P));
-    PetscCall(HylcPeriodicSetStrain(P, z));
-    PetscCall(HylcPeriodicSetUp(P));
-    PetscCall(HylcPeriodicGetSizes(P, &n, NULL, NULL, NULL));
-    PetscCall(PetscMalloc1(n, &y));
-    PetscCall(HylcPeriodicGetInitialState(P, y));
-    PetscCall(HylcPeriodicSetState(P, y));
-    PetscCall(HylcPeriodicCreateMatrix(P, &H));
-    PetscCall(HylcPeriodicEvaluate(P, HYLC_TERM_ALL, e, NULL, H));
+    PetscCall(HylcTestTileHessian(p, z, &H));
     {
       Vec       d;
       PetscReal dmax;
@@ -335,8 +323,6 @@ static PetscErrorCode TestPaperTiles(void)
     PetscCall(CheckSolve(H, 4, HYLC_CHOL_ORDERING_METIS, PETSC_TRUE, names[t], &seed));
     PetscCall(CheckSolve(H, 4, HYLC_CHOL_ORDERING_METIS, PETSC_FALSE, names[t], &seed));
     PetscCall(MatDestroy(&H));
-    PetscCall(PetscFree(y));
-    PetscCall(HylcPeriodicDestroy(&P));
     PetscCall(HylcPatternDestroy(&p));
   }
   PetscFunctionReturn(PETSC_SUCCESS);

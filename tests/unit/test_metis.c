@@ -12,6 +12,7 @@
 #include <hylc/periodic.h>
 #include <petscksp.h>
 #include "hylctest.h"
+#include "tilehessian.h"
 
 /* checks that the ordering of A is a permutation, the same for rows and columns */
 static PetscErrorCode CheckOrdering(Mat A, const char *what, IS *rowOut, IS *colOut)
@@ -257,11 +258,9 @@ static PetscErrorCode TestPeriodicHessian(void)
 {
   HylcPatternGenParams g;
   HylcPattern          p;
-  HylcYarnModel        m;
-  HylcPeriodic         P;
   Mat                  H;
   PetscInt             n;
-  PetscReal           *y, e[4], hinf;
+  PetscReal            hinf;
   PetscBool            sym;
   const PetscReal      z[6] = {0.05, 0.1, -0.05, 120, 0, 0};
 
@@ -269,16 +268,8 @@ static PetscErrorCode TestPeriodicHessian(void)
   PetscCall(HylcPatternGenParamsDefault(&g));
   PetscCall(HylcPatternCreate(PETSC_COMM_SELF, &p));
   PetscCall(HylcPatternGenerate(p, HYLCPATTERNSTOCKINETTE, &g));
-  PetscCall(HylcYarnModelDefault(&m));
-  PetscCall(HylcPeriodicCreate(p, &m, &P));
-  PetscCall(HylcPeriodicSetStrain(P, z));
-  PetscCall(HylcPeriodicSetUp(P));
-  PetscCall(HylcPeriodicGetSizes(P, &n, NULL, NULL, NULL));
-  PetscCall(PetscMalloc1(n, &y));
-  PetscCall(HylcPeriodicGetInitialState(P, y));
-  PetscCall(HylcPeriodicSetState(P, y));
-  PetscCall(HylcPeriodicCreateMatrix(P, &H));
-  PetscCall(HylcPeriodicEvaluate(P, HYLC_TERM_ALL, e, NULL, H));
+  PetscCall(HylcTestTileHessian(p, z, &H));
+  PetscCall(MatGetSize(H, &n, NULL));
   PetscCall(MatNorm(H, NORM_INFINITY, &hinf));
   PetscCall(MatIsSymmetric(H, 1e-10 * hinf, &sym));
   HYLC_CHECK(sym, "stockinette H_y is not symmetric");
@@ -287,8 +278,6 @@ static PetscErrorCode TestPeriodicHessian(void)
   HYLC_CHECK(n > 100, "stockinette tile has only %d unknowns", (int)n);
   PetscCall(CheckMatrix(H, "stockinette K = H_y + |H_y|_inf I", PETSC_TRUE));
   PetscCall(MatDestroy(&H));
-  PetscCall(PetscFree(y));
-  PetscCall(HylcPeriodicDestroy(&P));
   PetscCall(HylcPatternDestroy(&p));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
