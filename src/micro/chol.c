@@ -15,6 +15,7 @@
    column block c in R_s by the bs x bs blocks L_r L_c^T (r >= c in R_s), written into the ancestor's panel
    through the relative positions of R_s's rows in its row list. */
 #include <hylc/chol.h>
+#include <hylc/private/clones.h>
 
 struct _n_HylcChol {
   HylcCholOrdering ordering;
@@ -317,18 +318,8 @@ static inline void BlockUpdate(PetscInt bs, PetscInt W, PetscInt ld, const Petsc
 /* The signed factorization A = L S L^T, S = diag(+-1) (the sign of each pivot): L_kk = sqrt(|d_k|). With
    positive pivots only it is the Cholesky factorization. A pivot that is zero or tiny against the diagonal
    of A (|d_k| <= 1e-14 |A_kk|), not finite, or negative when indefinite matrices are refused, stops it. */
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__has_attribute)
-#  if __has_attribute(target_clones)
-/* a clone for x86-64 processors with AVX2 and FMA (chosen at load time): the 4 x 4 block kernels run
-   about twice as fast (docs/performance.md) */
-#    define HYLC_KERNEL_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
-#  endif
-#endif
-#if !defined(HYLC_KERNEL_CLONES)
-#  define HYLC_KERNEL_CLONES
-#endif
 
-HYLC_KERNEL_CLONES static PetscErrorCode CholNumeric(HylcChol C, Mat A, PetscBool *ok)
+HYLC_TARGET_CLONES static PetscErrorCode CholNumeric(HylcChol C, Mat A, PetscBool *ok)
 {
   const PetscInt     bs = C->bs;
   const PetscScalar *av;
@@ -442,7 +433,7 @@ PetscErrorCode HylcCholSetIndefinite(HylcChol C, PetscBool allow)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-HYLC_KERNEL_CLONES PetscErrorCode HylcCholSolveMany(HylcChol C, PetscInt nrhs, const PetscScalar b[], PetscScalar x[])
+HYLC_TARGET_CLONES PetscErrorCode HylcCholSolveMany(HylcChol C, PetscInt nrhs, const PetscScalar b[], PetscScalar x[])
 {
   const PetscInt bs = C->bs, n = C->n, m = nrhs;
   PetscReal     *y;
