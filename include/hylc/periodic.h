@@ -24,9 +24,10 @@
 typedef struct _n_HylcPeriodic *HylcPeriodic;
 
 typedef enum {
-  HYLC_SLIDE_NONE     = 0,
-  HYLC_SLIDE_GLOBAL   = 1,
-  HYLC_SLIDE_PER_YARN = 2
+  HYLC_SLIDE_NONE       = 0,
+  HYLC_SLIDE_GLOBAL     = 1,
+  HYLC_SLIDE_PER_YARN   = 2,
+  HYLC_SLIDE_PER_FAMILY = 3 /* one row per yarn family (loops of the same winding direction), each yarn in its canonical direction */
 } HylcSlideConstraint;
 PETSC_EXTERN const char *const HylcSlideConstraints[];
 

@@ -6,7 +6,7 @@
 #include <petsc/private/hashmapi.h>
 #include <petsctime.h>
 
-const char *const HylcSlideConstraints[] = {"none", "global", "per_yarn", "HylcSlideConstraint", "HYLC_SLIDE_", NULL};
+const char *const HylcSlideConstraints[] = {"none", "global", "per_yarn", "per_family", "HylcSlideConstraint", "HYLC_SLIDE_", NULL};
 
 #define SMAX 8 /* |lattice shift| bound of ghosts */
 
@@ -146,7 +146,9 @@ PetscErrorCode HylcPeriodicSetOptionsPrefix(HylcPeriodic P, const char prefix[])
 
 /*@C
   HylcPeriodicSetFromOptions - Options:
-+ -periodic_slide <global>       - slide constraint: none, global (one row), per_yarn (one row per loop)
++ -periodic_slide <global>       - slide constraint: none, global (one row), per_yarn (one row per loop),
+                                   per_family (one row per yarn family, invariant under mirrors and under
+                                   the direction in which a file lists each yarn; docs/method.md)
 . -periodic_margin <0.25>        - contact ghosts: copies of edges within max(3 r, margin min(px, py)) of the tile
 - -macro_*                        - the midsurface (HylcMidsurfaceSetFromOptions())
 @*/
@@ -156,7 +158,7 @@ PetscErrorCode HylcPeriodicSetFromOptions(HylcPeriodic P)
 
   PetscFunctionBegin;
   PetscOptionsBegin(PETSC_COMM_SELF, P->prefix[0] ? P->prefix : NULL, "Periodic tile options", "HylcPeriodic");
-  PetscCall(PetscOptionsEnum("-periodic_slide", "Slide constraint: none, global (one row) or per_yarn (one row per yarn loop)", "HylcPeriodicSetSlideConstraint", HylcSlideConstraints, sl, &sl, NULL));
+  PetscCall(PetscOptionsEnum("-periodic_slide", "Slide constraint: none, global (one row), per_yarn (one row per yarn loop) or per_family (one row per yarn family, each yarn in its canonical direction)", "HylcPeriodicSetSlideConstraint", HylcSlideConstraints, sl, &sl, NULL));
   PetscCall(PetscOptionsReal("-periodic_pair_margin", "Hessian structure: keep segment pairs whose boxes inflated by this many r overlap, so that it changes rarely", "HylcPeriodicEvaluate", P->pairMargin, &P->pairMargin, NULL));
   PetscCall(PetscOptionsReal("-periodic_margin", "Contact ghosts: copies of edges within max(3 r, margin * min(px, py)) of the tile", "HylcPeriodicSetUp", P->marginFactor, &P->marginFactor, NULL));
   PetscOptionsEnd();
@@ -296,15 +298,54 @@ static inline void Mat3(const PetscReal M[9], const PetscReal v[3], PetscReal ou
   for (int i = 0; i < 3; i++) out[i] = M[3 * i] * v[0] + M[3 * i + 1] * v[1] + M[3 * i + 2] * v[2];
 }
 
+/* per_family: the family (row) and the sign of each loop. A loop's canonical direction is its winding
+   divided by the gcd of its components, made lexicographically positive (sign -1 if that reverses it);
+   loops of equal canonical direction form a family; loops that close inside the tile (zero winding) form
+   their own family with their stored direction. */
+static PetscErrorCode SlideFamilies(HylcPattern pat, PetscInt nloops, PetscInt fam[], PetscReal sgn[], PetscInt *nfam)
+{
+  PetscInt *dir;
+
+  PetscFunctionBegin;
+  PetscCall(PetscMalloc1(2 * nloops, &dir));
+  *nfam = 0;
+  for (PetscInt l = 0; l < nloops; l++) {
+    PetscInt w[2], a, b, g;
+    PetscCall(HylcPatternGetLoop(pat, l, NULL, NULL, w));
+    a = PetscAbsInt(w[0]), b = PetscAbsInt(w[1]);
+    while (b) {
+      const PetscInt t = a % b;
+      a = b, b = t;
+    }
+    g      = a ? a : 1;
+    sgn[l] = (w[0] < 0 || (w[0] == 0 && w[1] < 0)) ? -1.0 : 1.0;
+    w[0] = (PetscInt)sgn[l] * w[0] / g, w[1] = (PetscInt)sgn[l] * w[1] / g;
+    fam[l] = -1;
+    for (PetscInt f = 0; f < *nfam; f++)
+      if (dir[2 * f] == w[0] && dir[2 * f + 1] == w[1]) fam[l] = f;
+    if (fam[l] < 0) {
+      dir[2 * *nfam] = w[0], dir[2 * *nfam + 1] = w[1];
+      fam[l] = (*nfam)++;
+    }
+  }
+  PetscCall(PetscFree(dir));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode SetUpConstraints(HylcPeriodic P, const PetscReal *x0)
 {
-  const PetscInt         N = P->N, nl_rows = P->slide == HYLC_SLIDE_GLOBAL ? 1 : 0;
-  PetscInt               nloops, m;
+  const PetscInt         N = P->N;
+  PetscInt               nloops, m, nfam = 0, *fam;
+  PetscReal             *sgn;
   const HylcMacroStrain *ms;
 
   PetscFunctionBegin;
   PetscCall(HylcPatternGetNumLoops(P->pat, &nloops));
-  m        = 3 + (P->slide == HYLC_SLIDE_PER_YARN ? nloops : nl_rows);
+  PetscCall(PetscMalloc2(nloops, &fam, nloops, &sgn));
+  if (P->slide == HYLC_SLIDE_PER_FAMILY) PetscCall(SlideFamilies(P->pat, nloops, fam, sgn, &nfam));
+  m        = 3 + (P->slide == HYLC_SLIDE_PER_YARN ? nloops : P->slide == HYLC_SLIDE_PER_FAMILY ? nfam
+                                                         : P->slide == HYLC_SLIDE_GLOBAL       ? 1
+                                                                                               : 0);
   P->ncons = m;
   PetscCall(PetscCalloc3(m * 4 * N, &P->A, m, &P->dL, m * m, &P->AAtinv));
   PetscCall(HylcMidsurfaceGetStrain(P->ms, &ms));
@@ -336,15 +377,15 @@ static PetscErrorCode SetUpConstraints(HylcPeriodic P, const PetscReal *x0)
     tau[2] = te[2] + tf[2];
     PetscCheck(HylcNormalize3(tau) > 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "Yarn folds back at vertex %" PetscInt_FMT ": no tangent for the slide constraint", o);
     Mat3(R, tau, Rtau);
-    PetscInt row = 3;
-    if (P->slide == HYLC_SLIDE_PER_YARN) {
-      PetscInt l;
-      PetscCall(HylcPatternGetVertexLoop(P->pat, o, &l, NULL));
-      row += l;
-    }
-    for (int j = 0; j < 3; j++) P->A[row * 4 * N + 4 * o + j] = wo * Rtau[j];
-    P->dL[row] += wo * HylcDot3(tau, Rtx);
+    PetscInt  row = 3, l;
+    PetscReal s   = 1;
+    PetscCall(HylcPatternGetVertexLoop(P->pat, o, &l, NULL));
+    if (P->slide == HYLC_SLIDE_PER_YARN) row += l;
+    if (P->slide == HYLC_SLIDE_PER_FAMILY) row += fam[l], s = sgn[l];
+    for (int j = 0; j < 3; j++) P->A[row * 4 * N + 4 * o + j] = s * wo * Rtau[j];
+    P->dL[row] += s * wo * HylcDot3(tau, Rtx);
   }
+  PetscCall(PetscFree2(fam, sgn));
   /* (A A^T)^-1 of the small SPD matrix */
   {
     PetscReal *M, *I1;

@@ -198,7 +198,7 @@ static PetscErrorCode Rewrap(HylcPattern p, HylcPattern *q)
 }
 
 /* psi of the mirror image at +sa against psi of p at -sa; psi of the rewrapped copy against p */
-static PetscErrorCode CheckMirrorAndWrap(const char *name, HylcPattern p, const HylcYarnModel *m, PetscReal sa)
+static PetscErrorCode CheckMirrorAndWrap(const char *name, HylcPattern p, const HylcYarnModel *m, PetscReal sa, HylcSlideConstraint slide)
 {
   HylcPattern     q, w;
   HylcMicro       M, Q, W;
@@ -214,6 +214,14 @@ static PetscErrorCode CheckMirrorAndWrap(const char *name, HylcPattern p, const 
   PetscCall(HylcMicroSetPattern(Q, q, m));
   PetscCall(HylcMicroCreate(PETSC_COMM_SELF, &W));
   PetscCall(HylcMicroSetPattern(W, w, m));
+  {
+    HylcMicro all[3] = {M, Q, W};
+    for (int k = 0; k < 3; k++) {
+      HylcPeriodic P;
+      PetscCall(HylcMicroGetPeriodic(all[k], &P));
+      PetscCall(HylcPeriodicSetSlideConstraint(P, slide));
+    }
+  }
   PetscCall(HylcMicroSolve(M, zm, &rm));
   PetscCall(HylcMicroSolve(Q, zp, &rq));
   PetscCall(HylcMicroSolve(M, zp, &rp));
@@ -242,7 +250,22 @@ static PetscErrorCode TestMirrorTwill(void)
   PetscCall(HylcPatternGenerate(p, HYLCPATTERNTWILL, &g));
   PetscCall(HylcYarnModelDefault(&m));
   m.kc = 50;
-  PetscCall(CheckMirrorAndWrap("generated twill", p, &m, 0.3));
+  PetscCall(CheckMirrorAndWrap("generated twill", p, &m, 0.3, HYLC_SLIDE_GLOBAL));
+  /* per_family: 3 + 2 constraint rows on a woven (warp and weft), 3 + 1 on a knit */
+  for (int k = 0; k < 2; k++) {
+    HylcPattern  q;
+    HylcPeriodic P;
+    PetscInt     mc;
+    PetscCall(HylcPatternCreate(PETSC_COMM_SELF, &q));
+    PetscCall(HylcPatternGenerate(q, k ? HYLCPATTERNSTOCKINETTE : HYLCPATTERNTWILL, &g));
+    PetscCall(HylcPeriodicCreate(q, &m, &P));
+    PetscCall(HylcPeriodicSetSlideConstraint(P, HYLC_SLIDE_PER_FAMILY));
+    PetscCall(HylcPeriodicSetUp(P));
+    PetscCall(HylcPeriodicGetSizes(P, NULL, NULL, NULL, &mc));
+    HYLC_CHECK(mc == (k ? 4 : 5), "%s: %d constraint rows with -periodic_slide per_family", k ? "stockinette" : "twill", (int)mc);
+    PetscCall(HylcPeriodicDestroy(&P));
+    PetscCall(HylcPatternDestroy(&q));
+  }
   PetscCall(HylcPatternDestroy(&p));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -291,7 +314,7 @@ static PetscErrorCode TestPaperPatterns(const char *root, const char *dir)
       /* Psi(sa) - Psi(-sa) is measured, not asserted: the stored basket and satin are not mirror symmetric
          (3-8 %, docs/method.md). Asserted: the solver is mirror equivariant on them */
       if (getenv("HYLC_REPORT")) PetscCall(PetscPrintf(PETSC_COMM_SELF, "%s: psi(+0.3) = %.10g, psi(-0.3) = %.10g\n", names[k], (double)rp.psi, (double)rm.psi));
-      PetscCall(CheckMirrorAndWrap(names[k], p, &m, 0.3));
+      PetscCall(CheckMirrorAndWrap(names[k], p, &m, 0.3, HYLC_SLIDE_GLOBAL));
     }
     PetscCall(HylcMicroDestroy(&M));
     PetscCall(HylcPatternDestroy(&p));

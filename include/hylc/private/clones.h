@@ -6,10 +6,10 @@
    whole solve, so not used there.) Results then differ in the last bits between
    processors with and without FMA, never between runs on one machine. Plain C, no PETSc. */
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__has_attribute)
-  #if __has_attribute(target_clones)
-    #define HYLC_TARGET_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
-  #endif
+#  if __has_attribute(target_clones)
+#    define HYLC_TARGET_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
+#  endif
 #endif
 #if !defined(HYLC_TARGET_CLONES)
-  #define HYLC_TARGET_CLONES
+#  define HYLC_TARGET_CLONES
 #endif
