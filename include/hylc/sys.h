@@ -46,5 +46,7 @@ PETSC_EXTERN PetscErrorCode HylcPushErrorHandler(void);
    PetscFinalize() on one rank or MPI_Abort() on several (other ranks may wait in a collective).
    Programs write: ierr = Run(); return HylcMainFinalize(ierr); */
 PETSC_EXTERN int HylcMainFinalize(PetscErrorCode);
+/* fsync the directory holding path, so that a rename into it is durable (errors ignored). Not collective. */
+PETSC_EXTERN void HylcSyncParentDirectory(const char path[]);
 /* Refuses options nothing has read (before any work). Collective. */
 PETSC_EXTERN PetscErrorCode HylcCheckOptionsUsed(MPI_Comm);

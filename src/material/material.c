@@ -528,26 +528,6 @@ PetscErrorCode HylcMaterialLoad(HylcMaterial m, const char path[])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* fsync the directory holding path (errors ignored: not every file system supports it) */
-static void SyncDirectory(const char path[])
-{
-  char        dir[PETSC_MAX_PATH_LEN];
-  const char *slash = strrchr(path, '/');
-  int         fd;
-
-  if (!slash)
-    snprintf(dir, sizeof(dir), ".");
-  else if (slash == path)
-    snprintf(dir, sizeof(dir), "/");
-  else
-    snprintf(dir, sizeof(dir), "%.*s", (int)(slash - path), path);
-  fd = open(dir, O_RDONLY);
-  if (fd >= 0) {
-    (void)fsync(fd);
-    close(fd);
-  }
-}
-
 /* rank 0 writes the bytes to path.tmp, syncs and renames it to path; every rank returns the outcome */
 PetscErrorCode HylcMaterialWriteBytes_Private(HylcMaterial m, const char path[], const char what[], const void *bytes, size_t len)
 {
@@ -573,7 +553,7 @@ PetscErrorCode HylcMaterialWriteBytes_Private(HylcMaterial m, const char path[],
       if (err)
         remove(tmp);
       else
-        SyncDirectory(path);
+        HylcSyncParentDirectory(path);
     }
   }
   PetscCallMPI(MPI_Bcast(&err, 1, MPI_INT, 0, comm));

@@ -105,27 +105,6 @@ static int UnpackRecord(const unsigned char b[JOURNAL_RECSIZE], long nsamples, H
   return 0;
 }
 
-/* fsync the directory holding path, so that a rename into it is durable (errors ignored: some file
-   systems do not support it) */
-static void SyncParentDirectory(const char path[])
-{
-  char        dir[PETSC_MAX_PATH_LEN];
-  const char *slash = strrchr(path, '/');
-  int         fd;
-
-  if (!slash)
-    snprintf(dir, sizeof(dir), ".");
-  else if (slash == path)
-    snprintf(dir, sizeof(dir), "/");
-  else
-    snprintf(dir, sizeof(dir), "%.*s", (int)(slash - path), path);
-  fd = open(dir, O_RDONLY);
-  if (fd >= 0) {
-    (void)fsync(fd);
-    close(fd);
-  }
-}
-
 /* takes the exclusive lock of an open journal (the caller closes fp on error) */
 static PetscErrorCode JournalLock(FILE *fp, const char path[])
 {
@@ -182,7 +161,7 @@ static PetscErrorCode JournalCreateFile(HylcJournal j)
   PetscCall(PetscFree(head));
   PetscCheck(!fclose(fp), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot write journal %s: %s", tmp, strerror(errno));
   PetscCheck(!rename(tmp, j->path), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot rename %s to %s: %s", tmp, j->path, strerror(errno));
-  SyncParentDirectory(j->path);
+  HylcSyncParentDirectory(j->path);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -765,7 +744,7 @@ PetscErrorCode HylcSamplesWriteHDF5(const char path[], long nsamples, const Hylc
   PetscCall(ierr);
   PetscCall(SyncFile(tmp));
   PetscCheck(!rename(tmp, path), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot rename %s to %s: %s", tmp, path, strerror(errno));
-  SyncParentDirectory(path);
+  HylcSyncParentDirectory(path);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
