@@ -48,5 +48,17 @@ PETSC_EXTERN PetscErrorCode HylcPushErrorHandler(void);
 PETSC_EXTERN int HylcMainFinalize(PetscErrorCode);
 /* fsync the directory holding path, so that a rename into it is durable (errors ignored). Not collective. */
 PETSC_EXTERN void HylcSyncParentDirectory(const char path[]);
+/* Path checks made before any work (src/sys/file.c). Not collective; errors on comm.
+   HylcFileCheckInput: an existing readable regular file (a directory is refused as such).
+   HylcFileCheckOutput: not a directory, parent directory exists and is writable.
+   HylcFileCheckDistinct: the output is not the input (same device and inode). */
+PETSC_EXTERN PetscErrorCode HylcFileCheckInput(MPI_Comm, const char[], const char[]);
+PETSC_EXTERN PetscErrorCode HylcFileCheckOutput(MPI_Comm, const char[], const char[]);
+PETSC_EXTERN PetscErrorCode HylcFileCheckDistinct(MPI_Comm, const char[], const char[], const char[], const char[]);
+/* Atomic text output: write to a unique temporary beside path, then HylcFileCommitTemp() (fsync, rename,
+   fsync of the directory) or HylcFileAbortTemp() on an error path. A full disk leaves path untouched. */
+PETSC_EXTERN PetscErrorCode HylcFileOpenTemp(const char[], char[], size_t, FILE **);
+PETSC_EXTERN PetscErrorCode HylcFileCommitTemp(FILE **, const char[], const char[]);
+PETSC_EXTERN void           HylcFileAbortTemp(FILE **, const char[]);
 /* Refuses options nothing has read (before any work). Collective. */
 PETSC_EXTERN PetscErrorCode HylcCheckOptionsUsed(MPI_Comm);

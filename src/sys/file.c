@@ -1,8 +1,30 @@
 /* Small file-system helpers shared by the writers of samples and materials. */
 #include <hylc/sys.h>
+#include <errno.h>
 #include <fcntl.h>
+#include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
+
+/* " (-option)" for messages, or "" (a small ring of buffers: several may appear in one message) */
+static const char *W(const char option[])
+{
+  static char buf[4][PETSC_MAX_PATH_LEN];
+  static int  k;
+  if (!option || !option[0]) return "";
+  k = (k + 1) % 4;
+  snprintf(buf[k], sizeof(buf[k]), " (%s)", option);
+  return buf[k];
+}
+
+/* the process's file-creation mask (read without changing it for good) */
+static mode_t HylcUmask(void)
+{
+  mode_t m = umask(022);
+  umask(m);
+  return m;
+}
 
 /* fsync the directory holding path, so that a rename into it is durable (errors ignored: some file
    systems do not support it) */
@@ -23,4 +45,156 @@ void HylcSyncParentDirectory(const char path[])
     (void)fsync(fd);
     close(fd);
   }
+}
+
+/*@C
+  HylcFileCheckInput - Checks that an input path names a readable regular file (not a directory).
+  Not collective.
+
+  Input Parameters:
++ comm   - communicator the error is raised on
+. path   - the path
+- option - the option that named it (for the message), or NULL
+
+  Level: developer
+@*/
+PetscErrorCode HylcFileCheckInput(MPI_Comm comm, const char path[], const char option[])
+{
+  struct stat st;
+
+  PetscFunctionBegin;
+  PetscCheck(path && path[0], comm, PETSC_ERR_USER_INPUT, "Empty input path%s%s", option ? " for " : "", option ? option : "");
+  PetscCheck(stat(path, &st) == 0, comm, PETSC_ERR_FILE_OPEN, "Cannot open %s%s: %s", path, W(option), strerror(errno));
+  PetscCheck(!S_ISDIR(st.st_mode), comm, PETSC_ERR_FILE_OPEN, "Cannot read %s%s: it is a directory", path, W(option));
+  PetscCheck(S_ISREG(st.st_mode), comm, PETSC_ERR_FILE_OPEN, "Cannot read %s%s: not a regular file", path, W(option));
+  PetscCheck(access(path, R_OK) == 0, comm, PETSC_ERR_FILE_OPEN, "Cannot read %s%s: %s", path, W(option), strerror(errno));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcFileCheckOutput - Checks, before any work, that a file can be written at path: the path is not a
+  directory, its parent directory exists and is writable. Not collective.
+
+  Input Parameters:
++ comm   - communicator the error is raised on
+. path   - the path of the file to be written
+- option - the option that named it (for the message), or NULL
+
+  Level: developer
+@*/
+PetscErrorCode HylcFileCheckOutput(MPI_Comm comm, const char path[], const char option[])
+{
+  char        dir[PETSC_MAX_PATH_LEN];
+  const char *slash;
+  struct stat st;
+
+  PetscFunctionBegin;
+  PetscCheck(path && path[0], comm, PETSC_ERR_USER_INPUT, "Empty output path%s%s", option ? " for " : "", option ? option : "");
+  slash = strrchr(path, '/');
+  PetscCheck(slash == NULL || slash[1] != 0, comm, PETSC_ERR_FILE_OPEN, "Cannot write %s%s: it names a directory", path, W(option));
+  PetscCheck(stat(path, &st) != 0 || !S_ISDIR(st.st_mode), comm, PETSC_ERR_FILE_OPEN, "Cannot write %s%s: it is a directory", path, W(option));
+  if (!slash)
+    PetscCall(PetscStrncpy(dir, ".", sizeof(dir)));
+  else if (slash == path)
+    PetscCall(PetscStrncpy(dir, "/", sizeof(dir)));
+  else
+    PetscCall(PetscSNPrintf(dir, sizeof(dir), "%.*s", (int)(slash - path), path));
+  PetscCheck(stat(dir, &st) == 0, comm, PETSC_ERR_FILE_OPEN, "Cannot write %s%s: directory %s does not exist", path, W(option), dir);
+  PetscCheck(S_ISDIR(st.st_mode), comm, PETSC_ERR_FILE_OPEN, "Cannot write %s%s: %s is not a directory", path, W(option), dir);
+  PetscCheck(access(dir, W_OK | X_OK) == 0, comm, PETSC_ERR_FILE_OPEN, "Cannot write %s%s: directory %s is not writable", path, W(option), dir);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcFileCheckDistinct - Refuses an output path that names the same file as an input (same device and
+  inode, so links and different spellings are caught). An output that does not exist yet is distinct.
+  Not collective.
+
+  Input Parameters:
++ comm   - communicator the error is raised on
+. out    - the output path
+. outopt - the option that named the output
+. in     - the input path (NULL or empty: nothing to check)
+- inopt  - the option that named the input
+
+  Level: developer
+@*/
+PetscErrorCode HylcFileCheckDistinct(MPI_Comm comm, const char out[], const char outopt[], const char in[], const char inopt[])
+{
+  struct stat so, si;
+
+  PetscFunctionBegin;
+  if (!out || !out[0] || !in || !in[0]) PetscFunctionReturn(PETSC_SUCCESS);
+  if (stat(out, &so) != 0 || stat(in, &si) != 0) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCheck(!(so.st_dev == si.st_dev && so.st_ino == si.st_ino), comm, PETSC_ERR_USER_INPUT, "Output %s (%s) is the input %s (%s): refusing to overwrite an input", out, outopt ? outopt : "output", in, inopt ? inopt : "input");
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcFileOpenTemp - Opens a new temporary file beside path (same directory, unique name), to be
+  renamed onto path by HylcFileCommitTemp() once completely written, or removed by HylcFileAbortTemp().
+  A crash or a full disk never leaves a partial file at path. Not collective.
+
+  Input Parameters:
++ path   - the final path
+- len    - size of tmp
+
+  Output Parameters:
++ tmp    - the temporary path
+- fp     - the open stream
+
+  Level: developer
+@*/
+PetscErrorCode HylcFileOpenTemp(const char path[], char tmp[], size_t len, FILE **fp)
+{
+  int fd;
+
+  PetscFunctionBegin;
+  *fp = NULL;
+  PetscCall(PetscSNPrintf(tmp, len, "%s.tmp.XXXXXX", path));
+  fd = mkstemp(tmp);
+  PetscCheck(fd >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot write %s: %s", path, strerror(errno));
+  (void)fchmod(fd, 0644 & ~HylcUmask());
+  *fp = fdopen(fd, "w");
+  if (!*fp) {
+    close(fd);
+    unlink(tmp);
+    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot write %s: %s", path, strerror(errno));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcFileCommitTemp - Flushes, syncs and closes a stream from HylcFileOpenTemp() and renames it onto
+  path; on any failure (a full disk, say) removes the temporary and raises PETSC_ERR_FILE_WRITE, leaving
+  path as it was. Not collective.
+@*/
+PetscErrorCode HylcFileCommitTemp(FILE **fp, const char tmp[], const char path[])
+{
+  int bad;
+
+  PetscFunctionBegin;
+  if (!*fp) PetscFunctionReturn(PETSC_SUCCESS);
+  bad = ferror(*fp) || fflush(*fp) != 0 || fsync(fileno(*fp)) != 0;
+  bad = (fclose(*fp) != 0) || bad;
+  *fp = NULL;
+  if (!bad) bad = rename(tmp, path) != 0;
+  if (bad) {
+    int e = errno;
+    unlink(tmp);
+    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot write %s: %s", path, strerror(e));
+  }
+  HylcSyncParentDirectory(path);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcFileAbortTemp - Closes and removes a temporary from HylcFileOpenTemp() (on an error path; never
+  raises). Not collective.
+@*/
+void HylcFileAbortTemp(FILE **fp, const char tmp[])
+{
+  if (*fp) fclose(*fp);
+  *fp = NULL;
+  if (tmp && tmp[0]) unlink(tmp);
 }
