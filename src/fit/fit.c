@@ -175,7 +175,7 @@ static PetscErrorCode KnotPairOption(PetscOptionItems *PetscOptionsObject, HylcF
 . -fit_compat <paper>              - paper or authors (the two departures of method-spec §9.1)
 . -fit_mls_kernel <0.15>, -fit_mls_truncation <3> - MLS kernel (fraction of span), kernel / sigma
 . -fit_mls_grow <1.5>             - kernel growth where the MLS is singular (<= 1: error)
-. -fit_fd_eps <0.1>                - FD step as a fraction of the smallest knot spacing
+. -fit_fd_eps <0.1>                - FD width (points at +-half of it) as a fraction of the smallest knot spacing
 . -fit_knots1d <11>, -fit_knots1d_factor <0.95> - 1D knots
 . -fit_knots2d_factor <0.9>, -fit_knots2d_stretch <2,7>, -fit_knots2d_poisson <4,7>, -fit_knots2d_symmetric <5,5>
 . -fit_monotone_rule <circle>, -fit_flat_tol <1e-8>, -fit_end_slope <1e-8>
@@ -211,7 +211,7 @@ PetscErrorCode HylcFitSetFromOptions(HylcFit fit)
   PetscCall(PetscOptionsReal("-fit_mls_truncation", "MLS kernel radius / Gaussian sigma (weights are zero beyond the radius)", "HylcFitSetFromOptions", fit->truncation, &fit->truncation, NULL));
   PetscCall(PetscOptionsReal("-fit_mls_grow", "Where the MLS has too few samples in its kernel (singular), enlarge the kernel by this factor until it has (with a warning); <= 1: error", "HylcFitSetFromOptions", fit->mlsGrow, &fit->mlsGrow, NULL));
   PetscCall(PetscOptionsBool("-fit_symmetrize_sa", "Symmetrize the MLS in sa: g(u) = (g(u) + g(-u)) / 2 in symlog space", "HylcFitSetFromOptions", fit->symmetrize, &fit->symmetrize, NULL));
-  PetscCall(PetscOptionsReal("-fit_fd_eps", "Central-difference step for the Hermite slopes, as a fraction of the smallest knot spacing", "HylcFitSetFromOptions", fit->fdEps, &fit->fdEps, NULL));
+  PetscCall(PetscOptionsReal("-fit_fd_eps", "Width of the central differences for the Hermite slopes (points at +-half of it), as a fraction of the smallest knot spacing", "HylcFitSetFromOptions", fit->fdEps, &fit->fdEps, NULL));
   PetscCall(PetscOptionsInt("-fit_knots1d", "Knots of a 1D term", "HylcFitSetFromOptions", fit->nk1, &fit->nk1, NULL));
   PetscCall(PetscOptionsReal("-fit_knots1d_factor", "1D knots span factor x [min, max] of the data (then shifted so that 0 is a knot)", "HylcFitSetFromOptions", fit->factor1, &fit->factor1, NULL));
   PetscCall(PetscOptionsReal("-fit_knots2d_factor", "2D knots span factor x [min, 0] and [0, max] of the data", "HylcFitSetFromOptions", fit->factor2, &fit->factor2, NULL));
@@ -458,7 +458,7 @@ PetscErrorCode HylcFitView(HylcFit fit, PetscViewer viewer)
   PetscCall(PetscObjectPrintClassNamePrefixType((PetscObject)fit, viewer));
   PetscCall(PetscViewerASCIIPushTab(viewer));
   PetscCall(Line(viewer, "input: %s\n", fit->source[0] ? fit->source : (fit->input[0] ? fit->input : "(none)")));
-  PetscCall(Line(viewer, "reg %g%s, compat %s, MLS kernel %g of the span (sigma = kernel/%g), FD step %g of the knot spacing\n", (double)fit->reg, fit->quasiconvex ? "" : " (marching off)", HylcFitCompats[fit->compat], (double)fit->kernel, (double)fit->truncation, (double)fit->fdEps));
+  PetscCall(Line(viewer, "reg %g%s, compat %s, MLS kernel %g of the span (sigma = kernel/%g), FD width %g of the knot spacing\n", (double)fit->reg, fit->quasiconvex ? "" : " (marching off)", HylcFitCompats[fit->compat], (double)fit->kernel, (double)fit->truncation, (double)fit->fdEps));
   PetscCall(Line(viewer, "knots: 1D %" PetscInt_FMT " x %g; 2D factor %g (bending pairs %g), stretch %" PetscInt_FMT "+%" PetscInt_FMT ", poisson %" PetscInt_FMT "+%" PetscInt_FMT ", symmetric %" PetscInt_FMT "+%" PetscInt_FMT ", bending pairs %" PetscInt_FMT "+%" PetscInt_FMT " / %" PetscInt_FMT "+%" PetscInt_FMT "\n", fit->nk1, (double)fit->factor1, (double)fit->factor2,
                  (double)fit->factor2bend, fit->kStretch[0], fit->kStretch[1], fit->kPoisson[0], fit->kPoisson[1], fit->kSym[0], fit->kSym[1], fit->kBendStretch[0], fit->kBendStretch[1], fit->kBendSym[0], fit->kBendSym[1]));
   if (fit->setupcalled) {

@@ -131,14 +131,14 @@ static PetscErrorCode Fit1D(HylcFit fit, int c, PetscInt n, const PetscReal u[],
   PetscCall(PetscMalloc3(nk, &tk, nk, &p, nk, &m));
   i0 = HylcFitKnots1D(mn, mx, fit->factor1, nk, tk);
   PetscCheck(i0 >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "1D knots");
-  eps = fit->fdEps * MinSpacing(nk, tk);
+  eps = fit->fdEps * MinSpacing(nk, tk); /* the width of the central difference: g at t -+ eps/2 */
   g   = (GFun){n, u, NULL, l, fit->kernel * (mx - mn), 0, fit->truncation, 1, (c == 1 && fit->symmetrize) ? 0 : -1, 0, 1};
   for (PetscInt i = 0; i < nk; i++) {
     PetscReal a, b;
     PetscCall(G(fit, &g, t, tk[i], 0, &p[i]));
-    PetscCall(G(fit, &g, t, tk[i] + eps, 0, &a));
-    PetscCall(G(fit, &g, t, tk[i] - eps, 0, &b));
-    m[i] = (a - b) / (2 * eps);
+    PetscCall(G(fit, &g, t, tk[i] + 0.5 * eps, 0, &a));
+    PetscCall(G(fit, &g, t, tk[i] - 0.5 * eps, 0, &b));
+    m[i] = (a - b) / eps;
   }
   PetscCall(GrowWarning(fit, &g, t, 3 * nk));
   PetscCall(PetscLogEventEnd(HYLC_FitMLS, fit, 0, 0, 0));
@@ -207,7 +207,7 @@ static PetscErrorCode Fit2D(HylcFit fit, int t, PetscInt n, const PetscReal u[],
     PetscCall(PetscArraycpy(tu, bu, nu));
     PetscCall(PetscArraycpy(tv, bv, nv));
   }
-  eps = fit->fdEps * PetscMin(MinSpacing(nu, tu), MinSpacing(nv, tv));
+  eps = fit->fdEps * PetscMin(MinSpacing(nu, tu), MinSpacing(nv, tv)); /* the width of the differences */
   {
     const int sym = !fit->symmetrize ? -1 : ci == 1 ? 0
                                         : cj == 1   ? 1
@@ -217,20 +217,20 @@ static PetscErrorCode Fit2D(HylcFit fit, int t, PetscInt n, const PetscReal u[],
   for (PetscInt j = 0; j < nv; j++)
     for (PetscInt i = 0; i < nu; i++) {
       const PetscInt  k = j * nu + i;
-      const PetscReal x = tu[i], y = tv[j];
+      const PetscReal x = tu[i], y = tv[j], e = 0.5 * eps;
       PetscReal       gpp, gpm, gmp, gmm, gp0, gm0, g0p, g0m;
       PetscCall(G(fit, &g, t, x, y, &p[k]));
-      PetscCall(G(fit, &g, t, x + eps, y, &gp0));
-      PetscCall(G(fit, &g, t, x - eps, y, &gm0));
-      PetscCall(G(fit, &g, t, x, y + eps, &g0p));
-      PetscCall(G(fit, &g, t, x, y - eps, &g0m));
-      PetscCall(G(fit, &g, t, x + eps, y + eps, &gpp));
-      PetscCall(G(fit, &g, t, x + eps, y - eps, &gpm));
-      PetscCall(G(fit, &g, t, x - eps, y + eps, &gmp));
-      PetscCall(G(fit, &g, t, x - eps, y - eps, &gmm));
-      mu[k]  = (gp0 - gm0) / (2 * eps);
-      mv[k]  = (g0p - g0m) / (2 * eps);
-      muv[k] = (gpp - gpm - gmp + gmm) / (4 * eps * eps);
+      PetscCall(G(fit, &g, t, x + e, y, &gp0));
+      PetscCall(G(fit, &g, t, x - e, y, &gm0));
+      PetscCall(G(fit, &g, t, x, y + e, &g0p));
+      PetscCall(G(fit, &g, t, x, y - e, &g0m));
+      PetscCall(G(fit, &g, t, x + e, y + e, &gpp));
+      PetscCall(G(fit, &g, t, x + e, y - e, &gpm));
+      PetscCall(G(fit, &g, t, x - e, y + e, &gmp));
+      PetscCall(G(fit, &g, t, x - e, y - e, &gmm));
+      mu[k]  = (gp0 - gm0) / eps;
+      mv[k]  = (g0p - g0m) / eps;
+      muv[k] = (gpp - gpm - gmp + gmm) / (eps * eps);
     }
   PetscCall(GrowWarning(fit, &g, t, 9 * nu * nv));
   PetscCall(PetscLogEventEnd(HYLC_FitMLS, fit, 0, 0, 0));

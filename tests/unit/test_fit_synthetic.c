@@ -1,7 +1,7 @@
 /* The fitting pipeline (HylcFitCompute) on synthetic samples of a known smooth quasiconvex Psi, taken
    on the sampling plan of Algorithm C4 (include/hylc/plan.h; 150 1D samples, 50 x 50 2D grids: the full 23,251-sample plan):
    - the model (S26) reproduces Psi to 1 % at every sample with the woven settings, in paper and authors
-     compat modes (worst 0.81 %, at the range ends where the splines extrapolate beyond the 0.95 / 0.9
+     compat modes (worst 0.83 %, at the range ends where the splines extrapolate beyond the 0.95 / 0.9
      knot spans); with the stockinette settings to 2 % inside the knots;
    - f0 is the zero sample's Psi, the strain scale the max |strain| of the data, the knots as in §9.1;
    - 2D residual terms vanish on the axes, are zero at compressed nodes (and on the whole compressed

@@ -23,7 +23,7 @@ struct _p_HylcFit {
   PetscBool        zeroStrict;                                                      /* ... also muv on the bordering axis line */
   PetscReal        kernel, truncation;                                              /* MLS kernel (fraction of the span), kernel / sigma */
   PetscReal        mlsGrow;                                                         /* kernel growth factor where the MLS is singular (<= 1: error) */
-  PetscReal        fdEps;                                                           /* FD step (fraction of the smallest knot spacing) */
+  PetscReal        fdEps;                                                           /* FD width (fraction of the smallest knot spacing) */
   PetscReal        flatTol;                                                         /* 1D: |dp| below this -> flat interval */
   PetscReal        endSlope;                                                        /* boundary slopes at least this, outward */
   PetscInt         nk1;                                                             /* 1D knots */
