@@ -49,6 +49,7 @@ PETSC_EXTERN PetscErrorCode HylcPeriodicSetState(HylcPeriodic, const PetscReal[]
 PETSC_EXTERN PetscErrorCode HylcPeriodicGetFullPositions(HylcPeriodic, PetscInt *, const PetscReal **, const PetscInt **, const PetscInt **);
 PETSC_EXTERN PetscErrorCode HylcPeriodicCreateMatrix(HylcPeriodic, Mat *);
 PETSC_EXTERN PetscErrorCode HylcPeriodicEvaluate(HylcPeriodic, int, PetscReal[4], PetscReal[], Mat);
+PETSC_EXTERN PetscErrorCode HylcPeriodicEvaluateFinite(HylcPeriodic, int, PetscReal[4], PetscReal[], Mat, PetscBool *);
 PETSC_EXTERN PetscErrorCode HylcPeriodicUpdateFrames(HylcPeriodic);
 PETSC_EXTERN PetscErrorCode HylcPeriodicSaveFrames(HylcPeriodic);
 PETSC_EXTERN PetscErrorCode HylcPeriodicRestoreFrames(HylcPeriodic);

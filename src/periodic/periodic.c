@@ -1051,12 +1051,9 @@ static inline void Scatter(const HylcPeriodic P, const Layout *L, double ge[], d
     for (PetscInt i = 0; i < L->n * L->n; i++) hv[i] = He[i];
 }
 
-/*@C
-  HylcPeriodicEvaluate - Energy of the current state (parts: stretch, bend, twist, contact, for the terms
-  in mask), and optionally the reduced gradient g_y (4 per original vertex, overwritten) and reduced
-  Hessian H_y (from HylcPeriodicCreateMatrix(), overwritten). Not collective.
-@*/
-PetscErrorCode HylcPeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts[4], PetscReal gy[], Mat H)
+/* the evaluation; a degenerate element or a non-finite energy is no error: *bad = 1 (zero-length edge at
+   original vertex *badv), 2 (degenerate bending element at *badv) or 3 (non-finite energy), parts = +inf */
+static PetscErrorCode PeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts[4], PetscReal gy[], Mat H, int *bad, PetscInt *badv)
 {
   PetscReal    E[4] = {0, 0, 0, 0};
   double       x[12], ge[12], He[144];
@@ -1065,6 +1062,8 @@ PetscErrorCode HylcPeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts[4]
   PetscInt     k = 0;
 
   PetscFunctionBegin;
+  *bad  = 0;
+  *badv = -1;
   PetscCheck(P->setup, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE, "Call HylcPeriodicSetUp() first");
   PetscLogDouble t0, t1, tc0, tc1;
   PetscCall(PetscLogEventBegin(HYLC_PeriodicEvaluate, 0, 0, 0, 0));
@@ -1085,7 +1084,11 @@ PetscErrorCode HylcPeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts[4]
     }
     if (mask & HYLC_TERM_STRETCH) {
       double en;
-      PetscCheck(!HylcRodStretch(x, P->D.restLength[P->fo[P->esrc[e]]], P->c.ks, P->sw[e], &en, gy ? ge : NULL, H ? He : NULL), PETSC_COMM_SELF, PETSC_ERR_FP, "Zero-length edge");
+      if (HylcRodStretch(x, P->D.restLength[P->fo[P->esrc[e]]], P->c.ks, P->sw[e], &en, gy ? ge : NULL, H ? He : NULL)) {
+        *bad  = 1;
+        *badv = P->fo[P->esrc[e]];
+        break;
+      }
       E[0] += en;
       Scatter(P, &L, ge, He, gy, hv ? hv + k : NULL);
     } else if (hv)
@@ -1093,7 +1096,7 @@ PetscErrorCode HylcPeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts[4]
     k += 36;
   }
   const int bt = ((mask & HYLC_TERM_BEND) ? HYLC_ROD_BEND : 0) | ((mask & HYLC_TERM_TWIST) ? HYLC_ROD_TWIST : 0);
-  for (PetscInt b = 0; b < P->nbe; b++) {
+  for (PetscInt b = 0; b < P->nbe && !*bad; b++) {
     const BendElem     *B  = P->be + b;
     const PetscInt      oc = P->fo[B->v[1]], ou = P->fo[B->v[0]];
     HylcRodBendTwistRef ref;
@@ -1117,7 +1120,11 @@ PetscErrorCode HylcPeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts[4]
     ref.lbar                      = 0.5 * (P->D.restLength[ou] + P->D.restLength[oc]);
     if (bt) {
       const int err = (gy || H) ? HylcRodBendTwist(x, &ref, &P->btpar, B->w, bt, en, gy ? ge : NULL, H ? He : NULL) : HylcRodBendTwistEnergy(x, &ref, &P->btpar, B->w, en);
-      PetscCheck(!err, PETSC_COMM_SELF, PETSC_ERR_FP, "Bending element at vertex %" PetscInt_FMT " is degenerate", oc);
+      if (err) {
+        *bad  = 2;
+        *badv = oc;
+        break;
+      }
       if (mask & HYLC_TERM_BEND) E[1] += en[0];
       if (mask & HYLC_TERM_TWIST) E[2] += en[1];
       Scatter(P, &L, ge, He, gy, hv ? hv + k : NULL);
@@ -1127,7 +1134,8 @@ PetscErrorCode HylcPeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts[4]
   }
   PetscCall(PetscLogEventBegin(HYLC_TileContact, 0, 0, 0, 0));
   PetscCall(PetscTime(&tc0));
-  const PetscInt   np = H ? P->coonpairs : P->npairs; /* with a Hessian: every pair of its structure (the others give 0) */
+  const PetscInt   np = *bad ? 0 : H ? P->coonpairs
+                                     : P->npairs; /* with a Hessian: every pair of its structure (the others give 0) */
   const PetscInt  *pl = H ? P->coopairs : P->pairs;
   const PetscReal *pw = H ? P->coopw : P->pw;
   for (PetscInt p = 0; p < np; p++) {
@@ -1148,7 +1156,7 @@ PetscErrorCode HylcPeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts[4]
   PetscCall(PetscTime(&tc1));
   P->tContact += tc1 - tc0;
   PetscCall(PetscLogEventEnd(HYLC_TileContact, 0, 0, 0, 0));
-  if (H) {
+  if (H && !*bad) {
     PetscCall(PetscLogEventBegin(HYLC_TileAssemble, 0, 0, 0, 0));
     PetscCall(PetscTime(&tc0));
     PetscScalar *v;
@@ -1162,9 +1170,45 @@ PetscErrorCode HylcPeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts[4]
   }
   PetscCall(PetscTime(&t1));
   P->tEval += t1 - t0;
-  for (int i = 0; i < 4; i++) parts[i] = E[i];
-  PetscCheck(PetscIsNormalReal(E[0] + E[1] + E[2] + E[3]) || E[0] + E[1] + E[2] + E[3] == 0, PETSC_COMM_SELF, PETSC_ERR_FP, "Energy is not finite: stretch %g, bend %g, twist %g, contact %g", (double)E[0], (double)E[1], (double)E[2], (double)E[3]);
+  if (!*bad && !(PetscIsNormalReal(E[0] + E[1] + E[2] + E[3]) || E[0] + E[1] + E[2] + E[3] == 0)) *bad = 3;
+  for (int i = 0; i < 4; i++) parts[i] = *bad == 1 || *bad == 2 ? PETSC_INFINITY : E[i];
   PetscCall(PetscLogEventEnd(HYLC_PeriodicEvaluate, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPeriodicEvaluate - Energy of the current state (parts: stretch, bend, twist, contact, for the terms
+  in mask), and optionally the reduced gradient g_y (4 per original vertex, overwritten) and reduced
+  Hessian H_y (from HylcPeriodicCreateMatrix(), overwritten). A degenerate geometry or a non-finite energy is a PETSC_ERR_FP error
+  (see HylcPeriodicEvaluateFinite()). Not collective.
+@*/
+PetscErrorCode HylcPeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts[4], PetscReal gy[], Mat H)
+{
+  int      bad;
+  PetscInt v;
+
+  PetscFunctionBegin;
+  PetscCall(PeriodicEvaluate(P, mask, parts, gy, H, &bad, &v));
+  PetscCheck(bad != 1, PETSC_COMM_SELF, PETSC_ERR_FP, "Zero-length edge at vertex %" PetscInt_FMT, v);
+  PetscCheck(bad != 2, PETSC_COMM_SELF, PETSC_ERR_FP, "Bending element at vertex %" PetscInt_FMT " is degenerate", v);
+  PetscCheck(bad != 3, PETSC_COMM_SELF, PETSC_ERR_FP, "Energy is not finite: stretch %g, bend %g, twist %g, contact %g", (double)parts[0], (double)parts[1], (double)parts[2], (double)parts[3]);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPeriodicEvaluateFinite - HylcPeriodicEvaluate() for a solver's trial states: a degenerate geometry
+  (a zero-length edge, a degenerate bending element) or a non-finite energy is a result, not an error:
+  *finite = PETSC_FALSE and the energy counts as +inf (gy and H are then undefined). Any other failure
+  is an error. Not collective.
+@*/
+PetscErrorCode HylcPeriodicEvaluateFinite(HylcPeriodic P, int mask, PetscReal parts[4], PetscReal gy[], Mat H, PetscBool *finite)
+{
+  int      bad;
+  PetscInt v;
+
+  PetscFunctionBegin;
+  PetscCall(PeriodicEvaluate(P, mask, parts, gy, H, &bad, &v));
+  *finite = (PetscBool)!bad;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
