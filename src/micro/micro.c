@@ -643,6 +643,7 @@ PetscErrorCode HylcMicroSolve(HylcMicro M, const PetscReal z[6], HylcMicroResult
   PetscInt            its;
   HylcYarnConstants   c;
   PetscReal           area;
+  PetscInt            m;
 
   PetscFunctionBegin;
   PetscCheck(M->P, M->comm, PETSC_ERR_ARG_WRONGSTATE, "Call HylcMicroSetPattern() first");
@@ -661,7 +662,12 @@ PetscErrorCode HylcMicroSolve(HylcMicro M, const PetscReal z[6], HylcMicroResult
   PetscCall(HylcPeriodicSetStrain(M->P, z));
   PetscCall(HylcPeriodicSetUp(M->P));
   PetscCall(HylcPeriodicGetConstants(M->P, &c));
-  PetscCall(HylcPeriodicGetConstraints(M->P, NULL, &M->A, &M->dL, &M->AAtinv));
+  PetscCall(HylcPeriodicGetConstraints(M->P, &m, &M->A, &M->dL, &M->AAtinv));
+  if (M->snes && m != M->m) { /* the number of independent constraint rows may depend on the strain */
+    PetscCall(PetscFree6(M->c, M->Z, M->S, M->Sinv, M->wl, M->tmp));
+    M->m = m;
+    PetscCall(PetscMalloc6(M->m, &M->c, M->m * M->ny, &M->Z, M->m * M->m, &M->S, M->m * M->m, &M->Sinv, M->m, &M->wl, M->m, &M->tmp));
+  }
   M->r  = c.r;
   M->ks = c.ks;
   M->mu = M->par.twistScale > 0 ? M->par.twistScale : 1.0 / c.r;
