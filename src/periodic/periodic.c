@@ -186,6 +186,49 @@ PetscErrorCode HylcPeriodicSetStrain(HylcPeriodic P, const PetscReal z[6])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPeriodicCheckStrain - Refuses a strain z = (sx, sa, sy, II00, II01, II11) that does not give a valid,
+  representable deformed tile, with a one-line PETSC_ERR_USER_INPUT error "<name>: <component> = <value>:
+  <reason>" (name: e.g. the option, "-strain"). Beyond HylcPeriodicSetStrain()'s validity (finite, |sa| < 1,
+  1 + sx > 0, 1 + sy > 0) it bounds the stretch factors 1 + sx, 1 + sy by HYLC_PERIODIC_MAX_STRETCH and the
+  angle the midsurface normal turns across one period, |N (px, 0)|, |N (0, py)|, |N (px, +-py)| with
+  N = -A^-T II, by 2 pi (a tile bent further wraps onto itself; at extreme II the midsurface collapses to
+  a point). Subnormal components are valid. Not collective. See docs/method.md.
+@*/
+PetscErrorCode HylcPeriodicCheckStrain(HylcPeriodic P, const PetscReal z[6], const char name[])
+{
+  static const char *const comp[6] = {"sx", "sa", "sy", "II00", "II01", "II11"};
+  double                   zd[6], N[4];
+  char                     v[6][32]; /* C formatting: PETSc's printf appends '.' to integral %g values */
+
+  PetscFunctionBegin;
+  for (int k = 0; k < 6; k++) {
+    PetscCheck(!PetscIsInfOrNanReal(z[k]), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: %s is not finite", name, comp[k]);
+    zd[k] = (double)z[k];
+  }
+  for (int k = 0; k < 6; k++) snprintf(v[k], sizeof(v[k]), "%.15g", zd[k]);
+  PetscCheck(PetscAbsReal(z[1]) < 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: sa = %s: |sa| must be below 1 (sa is the cosine of the angle between the deformed warp and weft directions)", name, v[1]);
+  for (int k = 0; k < 3; k += 2) {
+    PetscCheck(1 + z[k] > 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: %s = %s: the stretch factor 1 + %s must be positive", name, comp[k], v[k], comp[k]);
+    PetscCheck(1 + z[k] <= HYLC_PERIODIC_MAX_STRETCH, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: %s = %s: the stretch factor 1 + %s must be at most 1e3", name, comp[k], v[k], comp[k]);
+  }
+  HylcMacroNormalDerivatives(zd, N);
+  {
+    const double px = P->D.px, py = P->D.py, c4[4][2] = {{px, 0}, {0, py}, {px, py}, {px, -py}};
+    for (int i = 0; i < 4; i++) {
+      const double a = N[0] * c4[i][0] + N[1] * c4[i][1], b = N[2] * c4[i][0] + N[3] * c4[i][1], ang = PetscSqrtReal(a * a + b * b);
+      if (!(ang <= 2 * PETSC_PI)) {
+        const int k = PetscAbsReal(z[3]) >= PetscAbsReal(z[4]) && PetscAbsReal(z[3]) >= PetscAbsReal(z[5]) ? 3 : PetscAbsReal(z[4]) >= PetscAbsReal(z[5]) ? 4
+                                                                                                                                                          : 5;
+        char      msg[160];
+        snprintf(msg, sizeof(msg), "the midsurface would turn by %.3g rad across one period (periods %g m, %g m)", ang, px, py);
+        SETERRQ(PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: %s = %s: %s; at most 2 pi (a tile bent further wraps onto itself)", name, comp[k], v[k], msg);
+      }
+    }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode HylcPeriodicSetSlideConstraint(HylcPeriodic P, HylcSlideConstraint s)
 {
   PetscFunctionBegin;
