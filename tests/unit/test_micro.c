@@ -1,5 +1,6 @@
 /* HylcMicro, the Newton solver:
-   - a straight periodic yarn stretched by sx converges to 1/2 ks eps^2 L / A (relative 1e-8);
+   - a straight periodic yarn (default slide constraint: its dependent row is dropped, 3 rows remain)
+     stretched by sx converges to 1/2 ks eps^2 L / A (relative 1e-8), and Psi(0.2) / Psi(0.1) = 4;
    - bent by II00 = kappa it converges to 1/2 B kappa^2 L / A within the discretization error;
    - the energy never increases between accepted iterates;
    - a solve gives bitwise the same result alone and after other solves with the same solver;
