@@ -12,7 +12,9 @@
      reference frames are transported after each accepted step (trial states are evaluated against the
      stored frames, which the kernels transport internally, so nothing has to be restored);
    - convergence: |z| < rtol |z0| for the projected gradient z (S23-S25) and |A y - dL| < ctol r.
-   A sample that does not converge is data, not an error: see HylcMicroResult.status. */
+   A sample that does not converge is data, not an error: see HylcMicroResult.status. An error inside the
+   solve is an error (the sample has no result): only a failed factorization (the regularization's job)
+   and a degenerate or non-finite trial state (energy +inf) are outcomes of the method. */
 #include <hylc/periodic.h>
 #include <petscsnes.h>
 
@@ -23,8 +25,10 @@ typedef enum {
   HYLC_MICRO_MAX_IT    = 1, /* iteration cap */
   HYLC_MICRO_MAX_TIME  = 2, /* wall-time cap */
   HYLC_MICRO_STALLED   = 3, /* line search found no decrease several times in a row */
-  HYLC_MICRO_NONFINITE = 4, /* non-finite energy or gradient */
-  HYLC_MICRO_FAILED    = 5  /* linear solver failure or invalid set-up */
+  HYLC_MICRO_NONFINITE = 4  /* non-finite energy or gradient */
+  /* 5 is reserved (was "failed"): an error inside a solve (a bug, no memory, a bad option) is an error of
+     HylcMicroSolve(), never a status; a Newton matrix that cannot be factored after every increase of
+     alpha ends the solve as stalled (nonfinite if the matrix is not finite) */
 } HylcMicroStatus;
 PETSC_EXTERN const char *const HylcMicroStatuses[];
 

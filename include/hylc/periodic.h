@@ -36,6 +36,9 @@ PETSC_EXTERN PetscErrorCode HylcPeriodicDestroy(HylcPeriodic *);
 PETSC_EXTERN PetscErrorCode HylcPeriodicSetOptionsPrefix(HylcPeriodic, const char[]);
 PETSC_EXTERN PetscErrorCode HylcPeriodicSetFromOptions(HylcPeriodic);
 PETSC_EXTERN PetscErrorCode HylcPeriodicSetStrain(HylcPeriodic, const PetscReal[6]);
+/* the largest stretch factor 1 + sx, 1 + sy that HylcPeriodicCheckStrain() accepts */
+#define HYLC_PERIODIC_MAX_STRETCH 1e3 /* the message of HylcPeriodicCheckStrain() says 1e3 */
+PETSC_EXTERN PetscErrorCode HylcPeriodicCheckStrain(HylcPeriodic, const PetscReal[6], const char[]);
 PETSC_EXTERN PetscErrorCode HylcPeriodicSetSlideConstraint(HylcPeriodic, HylcSlideConstraint);
 PETSC_EXTERN PetscErrorCode HylcPeriodicSetUp(HylcPeriodic);
 PETSC_EXTERN PetscErrorCode HylcPeriodicView(HylcPeriodic, PetscViewer);
@@ -49,6 +52,7 @@ PETSC_EXTERN PetscErrorCode HylcPeriodicSetState(HylcPeriodic, const PetscReal[]
 PETSC_EXTERN PetscErrorCode HylcPeriodicGetFullPositions(HylcPeriodic, PetscInt *, const PetscReal **, const PetscInt **, const PetscInt **);
 PETSC_EXTERN PetscErrorCode HylcPeriodicCreateMatrix(HylcPeriodic, Mat *);
 PETSC_EXTERN PetscErrorCode HylcPeriodicEvaluate(HylcPeriodic, int, PetscReal[4], PetscReal[], Mat);
+PETSC_EXTERN PetscErrorCode HylcPeriodicEvaluateFinite(HylcPeriodic, int, PetscReal[4], PetscReal[], Mat, PetscBool *);
 PETSC_EXTERN PetscErrorCode HylcPeriodicUpdateFrames(HylcPeriodic);
 PETSC_EXTERN PetscErrorCode HylcPeriodicSaveFrames(HylcPeriodic);
 PETSC_EXTERN PetscErrorCode HylcPeriodicRestoreFrames(HylcPeriodic);

@@ -4,6 +4,7 @@ static const char help[] = "hylc-solve: the equilibrium of a periodic yarn tile 
                            "Prints psi (J/m^2), the energy parts, the status, the Newton iterations and the wall time.\n\n";
 
 #include <hylc/micro.h>
+#include <hylc/sys.h>
 
 static PetscErrorCode Run(void)
 {
@@ -23,16 +24,38 @@ static PetscErrorCode Run(void)
   PetscCall(HylcYarnModelDefault(&model));
   PetscCall(HylcYarnModelSetFromOptions(PETSC_COMM_SELF, NULL, &model));
   PetscOptionsBegin(PETSC_COMM_SELF, NULL, "hylc-solve options", "hylc-solve");
-  PetscCall(PetscOptionsRealArray("-strain", "Macroscopic strain sx,sa,sy,II00,II01,II11 (II in 1/m)", "HylcMicroSolve", z, &nz, &flg));
+  PetscCall(PetscOptionsRealArray("-strain", "Macroscopic strain sx,sa,sy,II00,II01,II11 (II in 1/m): finite, |sa| < 1, 0 < 1+sx, 1+sy <= 1e3, the midsurface turning by at most 2 pi across a period (docs/method.md)", "HylcMicroSolve", z, &nz, &flg));
   PetscCheck(!flg || nz == 6, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-strain needs 6 comma-separated values sx,sa,sy,II00,II01,II11, got %" PetscInt_FMT, nz);
   PetscCall(PetscOptionsString("-solve_output", "Write the equilibrium tile as .pyp (positions and twists; rest data unchanged)", "hylc-solve", out, out, sizeof(out), NULL));
   PetscCall(PetscOptionsString("-solve_vtk", "Write the equilibrium, tiled, as legacy-VTK polylines", "hylc-solve", vtk, vtk, sizeof(vtk), NULL));
   nt = 2;
   PetscCall(PetscOptionsIntArray("-solve_vtk_tiles", "Tile copies nx,ny in the VTK file", "hylc-solve", tiles, &nt, NULL));
   PetscOptionsEnd();
+  /* every output path checked before the solve, and never an input */
+  {
+    char      in[PETSC_MAX_PATH_LEN] = "";
+    PetscBool same;
+    PetscCall(PetscOptionsGetString(NULL, NULL, "-pattern_file", in, sizeof(in), NULL));
+    if (out[0]) {
+      PetscCall(HylcFileCheckOutput(PETSC_COMM_SELF, out, "-solve_output"));
+      PetscCall(HylcFileCheckDistinct(PETSC_COMM_SELF, out, "-solve_output", in, "-pattern_file"));
+      PetscCheck(z[1] == 0 && z[3] == 0 && z[4] == 0 && z[5] == 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-solve_output %s: a deformed tile is a .pyp pattern only without shear and bending (sa = II = 0); use -solve_vtk instead", out);
+    }
+    if (vtk[0]) {
+      PetscCall(HylcFileCheckOutput(PETSC_COMM_SELF, vtk, "-solve_vtk"));
+      PetscCall(HylcFileCheckDistinct(PETSC_COMM_SELF, vtk, "-solve_vtk", in, "-pattern_file"));
+    }
+    PetscCall(PetscStrcmp(out, vtk, &same));
+    PetscCheck(!out[0] || !same, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-solve_output and -solve_vtk name the same file %s", out);
+  }
   PetscCall(HylcMicroCreate(PETSC_COMM_SELF, &micro));
   PetscCall(HylcMicroSetPattern(micro, pat, &model));
   PetscCall(HylcMicroSetFromOptions(micro));
+  {
+    HylcPeriodic P;
+    PetscCall(HylcMicroGetPeriodic(micro, &P));
+    PetscCall(HylcPeriodicCheckStrain(P, z, "-strain"));
+  }
   PetscCall(HylcMicroSolve(micro, z, &res));
   PetscCall(HylcMicroResultView(&res, PETSC_VIEWER_STDOUT_SELF));
   if (out[0] || vtk[0]) {

@@ -4,7 +4,13 @@
 #include <hylc/chol.h>
 #include <petsctime.h>
 
+/* "failed" names the reserved value 5 (no longer produced: errors inside a solve are errors), so that the
+   status_names of files and the journals of older runs keep their meaning */
 const char *const HylcMicroStatuses[] = {"converged", "iteration_cap", "time_cap", "stalled", "nonfinite", "failed", "HylcMicroStatus", "HYLC_MICRO_", NULL};
+
+/* fault injection for tests (docs/method.md): HYLC_INJECT_ERROR=N makes the N-th HylcMicroSolve() of the
+   process raise PETSC_ERR_LIB from inside the SNES function evaluation */
+static PetscInt injectAt = -1, solveCount = 0; /* injectAt: -1 unread, 0 off */
 
 typedef struct {
   /* parameters */
@@ -47,6 +53,8 @@ struct _n_HylcMicro {
   PetscLogDouble  tStart, tFactor, tLineSearch;
   HylcMicroStatus status;
   PetscBool       statusSet;
+  PetscBool       factorFailed; /* the Newton matrix could not be factored after every alpha increase */
+  PetscBool       inject;       /* this solve raises the injected error (HYLC_INJECT_ERROR) */
   PetscInt        nhist, caphist;
   PetscReal      *hist;
   PetscBool       setFromOptionsCalled;
@@ -197,19 +205,18 @@ static PetscErrorCode ToY(HylcMicro M, Vec X, PetscReal y[])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* energy at X without raising errors: a degenerate state (zero-length or folded edge) gives +inf */
+/* energy at X: a degenerate state (zero-length or folded edge) or a non-finite energy gives +inf (a result
+   of the trial step, not an error; every other failure is an error) */
 static PetscErrorCode SafeEnergy(HylcMicro M, Vec X, PetscReal *E, PetscReal parts[4])
 {
-  PetscErrorCode ierr;
-  PetscReal      e[4] = {0, 0, 0, 0};
+  PetscReal e[4] = {0, 0, 0, 0};
+  PetscBool finite;
 
   PetscFunctionBegin;
   PetscCall(ToY(M, X, M->yw));
   PetscCall(HylcPeriodicSetState(M->P, M->yw));
-  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
-  ierr = HylcPeriodicEvaluate(M->P, HYLC_TERM_ALL, e, NULL, NULL);
-  PetscCall(PetscPopErrorHandler());
-  *E = ierr ? PETSC_INFINITY : e[0] + e[1] + e[2] + e[3];
+  PetscCall(HylcPeriodicEvaluateFinite(M->P, HYLC_TERM_ALL, e, NULL, NULL, &finite));
+  *E = finite ? e[0] + e[1] + e[2] + e[3] : PETSC_INFINITY;
   if (!PetscIsNormalReal(*E) && *E != 0) *E = PETSC_INFINITY;
   if (parts)
     for (int k = 0; k < 4; k++) parts[k] = e[k];
@@ -227,22 +234,21 @@ static PetscErrorCode FormObjective(SNES snes, Vec X, PetscReal *E, void *ctx)
 /* F = M g_y at X; also the energy and the unscaled Hessian (into K) for the Jacobian that follows */
 static PetscErrorCode FormFunction(SNES snes, Vec X, Vec F, void *ctx)
 {
-  HylcMicro      M = (HylcMicro)ctx;
-  PetscScalar   *f;
-  PetscErrorCode ierr;
+  HylcMicro    M = (HylcMicro)ctx;
+  PetscScalar *f;
+  PetscBool    finite;
 
   PetscFunctionBegin;
   (void)snes;
+  PetscCheck(!M->inject, PETSC_COMM_SELF, PETSC_ERR_LIB, "injected error (HYLC_INJECT_ERROR=%" PetscInt_FMT ")", injectAt);
   PetscCall(ToY(M, X, M->yw));
   PetscCall(HylcPeriodicSetState(M->P, M->yw));
-  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
-  ierr = HylcPeriodicEvaluate(M->P, HYLC_TERM_ALL, M->parts, M->gw, M->K);
-  PetscCall(PetscPopErrorHandler());
-  M->haveH = (PetscBool)!ierr;
+  PetscCall(HylcPeriodicEvaluateFinite(M->P, HYLC_TERM_ALL, M->parts, M->gw, M->K, &finite));
+  M->haveH = finite;
   PetscCall(VecGetArray(F, &f));
-  for (PetscInt i = 0; i < M->ny; i++) f[i] = ierr ? PETSC_INFINITY : ((i % 4 == 3) ? M->mu * M->gw[i] : M->gw[i]);
+  for (PetscInt i = 0; i < M->ny; i++) f[i] = !finite ? PETSC_INFINITY : ((i % 4 == 3) ? M->mu * M->gw[i] : M->gw[i]);
   PetscCall(VecRestoreArray(F, &f));
-  M->E0 = ierr ? PETSC_INFINITY : M->parts[0] + M->parts[1] + M->parts[2] + M->parts[3];
+  M->E0 = !finite ? PETSC_INFINITY : M->parts[0] + M->parts[1] + M->parts[2] + M->parts[3];
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -301,19 +307,19 @@ static PetscErrorCode KKTFactor(HylcMicro M, PetscBool *ok)
   Vec            b, x;
   PetscScalar   *a;
   PetscLogDouble t0, t1;
-  PetscErrorCode ierr;
 
   PetscFunctionBegin;
   PetscCall(PetscTime(&t0));
   if (M->chol)
     PetscCall(HylcCholFactor(M->chol, M->K, 4, ok));
   else {
+    /* a zero pivot is reported by PETSc's factorizations as a failed reason, not an error (the matrix's
+       erroriffailure is false): that is the regularization's job; any error is an error */
     PetscCall(PCSetOperators(M->inner, M->K, M->K));
-    PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
-    ierr = PCSetUp(M->inner);
-    PetscCall(PetscPopErrorHandler());
+    PetscCall(PCSetUp(M->inner));
     PetscCall(PCGetFailedReason(M->inner, &reason));
-    *ok = (PetscBool)(!ierr && reason == PC_NOERROR);
+    *ok = (PetscBool)(reason == PC_NOERROR);
+    if (!*ok) PetscCall(PetscInfo(NULL, "PETSc factorization of the Newton matrix failed: %s\n", PCFailedReasons[reason]));
   }
   if (*ok && M->chol) { /* Z = K^-1 M A^T: all m right-hand sides in one pass over the factor */
     for (PetscInt i = 0; i < m; i++)
@@ -368,7 +374,8 @@ static PetscErrorCode KKTSetUp(PC pc)
   PetscCall(PCShellGetContext(pc, &M));
   PetscCall(KKTFactor(M, &ok));
   for (PetscInt k = 0; !ok && k < M->par.maxRetries; k++) PetscCall(KKTIncreaseAlpha(M, &ok));
-  PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_CONV_FAILED, "Factorization of the Newton matrix failed after %" PetscInt_FMT " regularization increases", M->par.maxRetries);
+  /* no step: the line search ends the solve (status stalled, or nonfinite for a non-finite matrix) */
+  if (!ok) M->factorFailed = PETSC_TRUE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -407,6 +414,10 @@ static PetscErrorCode KKTApply(PC pc, Vec b, Vec x)
 
   PetscFunctionBegin;
   PetscCall(PCShellGetContext(pc, &M));
+  if (M->factorFailed) {
+    PetscCall(VecSet(x, 0));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   PetscCall(VecDuplicate(x, &Kx));
   for (PetscInt k = 0;; k++) {
     PetscBool ok;
@@ -417,7 +428,11 @@ static PetscErrorCode KKTApply(PC pc, Vec b, Vec x)
     PetscCall(VecDot(x, Kx, &curv));
     if ((PetscRealPart(descent) > 0 && PetscRealPart(curv) > 0) || k >= M->par.maxRetries) break;
     PetscCall(KKTIncreaseAlpha(M, &ok));
-    PetscCheck(ok, PETSC_COMM_SELF, PETSC_ERR_CONV_FAILED, "Factorization of the Newton matrix failed");
+    if (!ok) {
+      M->factorFailed = PETSC_TRUE;
+      PetscCall(VecSet(x, 0));
+      break;
+    }
   }
   PetscCall(VecDestroy(&Kx));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -439,6 +454,19 @@ static PetscErrorCode LineSearch(SNESLineSearch ls, void *ctx)
   PetscCall(PetscTime(&t0));
   PetscCall(SNESLineSearchGetSNES(ls, &snes));
   PetscCall(SNESLineSearchGetVecs(ls, &X, &F, &Y, &W, &G));
+  if (M->factorFailed) { /* no Newton step: the iterate stays and the solve ends */
+    PetscReal knorm;
+    PetscCall(MatNorm(M->K, NORM_FROBENIUS, &knorm));
+    M->status    = PetscIsInfOrNanReal(knorm) ? HYLC_MICRO_NONFINITE : HYLC_MICRO_STALLED;
+    M->statusSet = PETSC_TRUE;
+    PetscCall(VecNorm(X, NORM_2, &xnorm));
+    PetscCall(VecNorm(F, NORM_2, &fnorm));
+    PetscCall(SNESLineSearchSetNorms(ls, xnorm, fnorm, 0));
+    PetscCall(SNESLineSearchSetLambda(ls, 0));
+    PetscCall(PetscTime(&t1));
+    M->tLineSearch += t1 - t0;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   PetscCall(HylcPeriodicGetMacroStrain(M->P, &ms));
   dmax = (M->par.stepP0 + M->par.stepP1 * PetscClipInterval(ms->lambdaMin, 0, 1)) * M->r;
   /* the largest vertex displacement of the linear step (ghosts are rotated copies: the same lengths) */
@@ -613,12 +641,20 @@ PetscErrorCode HylcMicroSolve(HylcMicro M, const PetscReal z[6], HylcMicroResult
   PetscScalar        *x;
   SNESConvergedReason reason;
   PetscInt            its;
-  PetscErrorCode      ierr;
   HylcYarnConstants   c;
   PetscReal           area;
+  PetscInt            m;
 
   PetscFunctionBegin;
   PetscCheck(M->P, M->comm, PETSC_ERR_ARG_WRONGSTATE, "Call HylcMicroSetPattern() first");
+  if (injectAt < 0) { /* read once per process */
+    const char *env = getenv("HYLC_INJECT_ERROR");
+    char       *end = NULL;
+    long        n   = env ? strtol(env, &end, 10) : 0;
+    PetscCheck(!env || (end != env && !*end && n >= 0 && n < PETSC_MAX_INT), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "HYLC_INJECT_ERROR=%s: expected a non-negative integer (the 1-based number of the solve that raises an injected error)", env);
+    injectAt = (PetscInt)n;
+  }
+  M->inject = (PetscBool)(injectAt > 0 && ++solveCount == injectAt);
   PetscCall(PetscMemzero(res, sizeof(*res)));
   for (int k = 0; k < 6; k++) res->z[k] = z[k];
   PetscCall(PetscLogEventBegin(HYLC_MicroSolve, 0, 0, 0, 0));
@@ -626,7 +662,12 @@ PetscErrorCode HylcMicroSolve(HylcMicro M, const PetscReal z[6], HylcMicroResult
   PetscCall(HylcPeriodicSetStrain(M->P, z));
   PetscCall(HylcPeriodicSetUp(M->P));
   PetscCall(HylcPeriodicGetConstants(M->P, &c));
-  PetscCall(HylcPeriodicGetConstraints(M->P, NULL, &M->A, &M->dL, &M->AAtinv));
+  PetscCall(HylcPeriodicGetConstraints(M->P, &m, &M->A, &M->dL, &M->AAtinv));
+  if (M->snes && m != M->m) { /* the number of independent constraint rows may depend on the strain */
+    PetscCall(PetscFree6(M->c, M->Z, M->S, M->Sinv, M->wl, M->tmp));
+    M->m = m;
+    PetscCall(PetscMalloc6(M->m, &M->c, M->m * M->ny, &M->Z, M->m * M->m, &M->S, M->m * M->m, &M->Sinv, M->m, &M->wl, M->m, &M->tmp));
+  }
   M->r  = c.r;
   M->ks = c.ks;
   M->mu = M->par.twistScale > 0 ? M->par.twistScale : 1.0 / c.r;
@@ -644,19 +685,17 @@ PetscErrorCode HylcMicroSolve(HylcMicro M, const PetscReal z[6], HylcMicroResult
   PetscCall(VecRestoreArray(M->X, &x));
   M->haveH  = PETSC_FALSE;
   M->stalls = M->stallsTotal = M->retries = 0;
-  M->statusSet                            = PETSC_FALSE;
-  M->status                               = HYLC_MICRO_CONVERGED;
+  M->statusSet = M->factorFailed = PETSC_FALSE;
+  M->status                      = HYLC_MICRO_CONVERGED;
   M->tFactor = M->tLineSearch = 0;
   M->nhist                    = 0;
   M->E0                       = PETSC_INFINITY;
-  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
-  ierr = SNESSolve(M->snes, NULL, M->X);
-  PetscCall(PetscPopErrorHandler());
+  /* an error inside the solve (a bug, no memory, a bad option) is an error: only the outcomes of the
+     method are statuses (a failed factorization and a degenerate trial state are outcomes, handled above) */
+  PetscCall(SNESSolve(M->snes, NULL, M->X));
   PetscCall(SNESGetConvergedReason(M->snes, &reason));
   PetscCall(SNESGetIterationNumber(M->snes, &its));
-  if (ierr)
-    res->status = HYLC_MICRO_FAILED;
-  else if (reason > 0)
+  if (reason > 0)
     res->status = HYLC_MICRO_CONVERGED;
   else if (M->statusSet)
     res->status = M->status;
@@ -665,7 +704,7 @@ PetscErrorCode HylcMicroSolve(HylcMicro M, const PetscReal z[6], HylcMicroResult
   else if (reason == SNES_DIVERGED_FNORM_NAN || reason == SNES_DIVERGED_FUNCTION_DOMAIN)
     res->status = HYLC_MICRO_NONFINITE;
   else
-    res->status = HYLC_MICRO_FAILED;
+    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_PLIB, "The Newton solve ended with the unexpected SNES reason %s", SNESConvergedReasons[reason]);
   /* the final state and its energy */
   PetscCall(SafeEnergy(M, M->X, &res->energy, res->parts));
   if (!PetscIsNormalReal(res->energy) && res->energy != 0) res->status = HYLC_MICRO_NONFINITE;

@@ -47,7 +47,8 @@ struct _n_HylcPeriodic {
   /* state */
   PetscReal *y, *y0, *x; /* y and the initial guess y0: 4 N; x: 3 per full vertex */
   /* constraints */
-  PetscInt   ncons;
+  PetscInt   ncons, ndropped; /* independent constraint rows kept, linearly dependent rows dropped */
+  PetscReal  crtol;           /* relative tolerance of the dependence test (-periodic_constraint_rtol) */
   PetscReal *A, *dL, *AAtinv;
   /* contact */
   HylcBVH      bvh;
@@ -83,6 +84,7 @@ PetscErrorCode HylcPeriodicCreate(HylcPattern pat, const HylcYarnModel *model, H
   P->slide        = HYLC_SLIDE_GLOBAL;
   P->marginFactor = 0.25;
   P->pairMargin   = 1.05;
+  P->crtol        = 1e-6;
   PetscCall(HylcPatternGetData(pat, &P->D));
   PetscCall(HylcYarnModelGetConstants(model, P->D.radius, &P->c));
   P->btpar.B       = P->c.B;
@@ -150,6 +152,8 @@ PetscErrorCode HylcPeriodicSetOptionsPrefix(HylcPeriodic P, const char prefix[])
                                    per_family (one row per yarn family, invariant under mirrors and under
                                    the direction in which a file lists each yarn; docs/method.md)
 . -periodic_margin <0.25>        - contact ghosts: copies of edges within max(3 r, margin min(px, py)) of the tile
+. -periodic_constraint_rtol <1e-6> - drop a constraint row within this relative distance of the span of the
+                                   rows before it (linearly dependent: straight yarns; docs/method.md)
 - -macro_*                        - the midsurface (HylcMidsurfaceSetFromOptions())
 @*/
 PetscErrorCode HylcPeriodicSetFromOptions(HylcPeriodic P)
@@ -161,7 +165,10 @@ PetscErrorCode HylcPeriodicSetFromOptions(HylcPeriodic P)
   PetscCall(PetscOptionsEnum("-periodic_slide", "Slide constraint: none, global (one row), per_yarn (one row per yarn loop) or per_family (one row per yarn family, each yarn in its canonical direction)", "HylcPeriodicSetSlideConstraint", HylcSlideConstraints, sl, &sl, NULL));
   PetscCall(PetscOptionsReal("-periodic_pair_margin", "Hessian structure: keep segment pairs whose boxes inflated by this many r overlap, so that it changes rarely", "HylcPeriodicEvaluate", P->pairMargin, &P->pairMargin, NULL));
   PetscCall(PetscOptionsReal("-periodic_margin", "Contact ghosts: copies of edges within max(3 r, margin * min(px, py)) of the tile", "HylcPeriodicSetUp", P->marginFactor, &P->marginFactor, NULL));
+  PetscCall(PetscOptionsReal("-periodic_constraint_rtol", "A constraint row whose distance to the span of the rows before it is at most this times its norm is dropped as linearly dependent (straight yarns: the slide row repeats the translation)", "HylcPeriodicSetUp", P->crtol, &P->crtol, NULL));
   PetscOptionsEnd();
+  PetscCheck(P->crtol > 0 && P->crtol < 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-periodic_constraint_rtol must be in (0, 1), got %g", (double)P->crtol);
+  P->setup = PETSC_FALSE;
   P->slide = (HylcSlideConstraint)sl;
   PetscCheck(P->pairMargin >= 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-periodic_pair_margin must be at least 1 (boxes inflated by r find every touching pair)");
   PetscCheck(P->marginFactor >= 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-periodic_margin must not be negative");
@@ -176,6 +183,49 @@ PetscErrorCode HylcPeriodicSetStrain(HylcPeriodic P, const PetscReal z[6])
   PetscCheck(err == HYLC_MACRO_STRAIN_OK, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "Invalid strain (%g, %g, %g, %g, %g, %g): %s", (double)z[0], (double)z[1], (double)z[2], (double)z[3], (double)z[4], (double)z[5], HylcMacroStrainErrorString(err));
   for (int k = 0; k < 6; k++) P->z[k] = z[k];
   P->setup = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPeriodicCheckStrain - Refuses a strain z = (sx, sa, sy, II00, II01, II11) that does not give a valid,
+  representable deformed tile, with a one-line PETSC_ERR_USER_INPUT error "<name>: <component> = <value>:
+  <reason>" (name: e.g. the option, "-strain"). Beyond HylcPeriodicSetStrain()'s validity (finite, |sa| < 1,
+  1 + sx > 0, 1 + sy > 0) it bounds the stretch factors 1 + sx, 1 + sy by HYLC_PERIODIC_MAX_STRETCH and the
+  angle the midsurface normal turns across one period, |N (px, 0)|, |N (0, py)|, |N (px, +-py)| with
+  N = -A^-T II, by 2 pi (a tile bent further wraps onto itself; at extreme II the midsurface collapses to
+  a point). Subnormal components are valid. Not collective. See docs/method.md.
+@*/
+PetscErrorCode HylcPeriodicCheckStrain(HylcPeriodic P, const PetscReal z[6], const char name[])
+{
+  static const char *const comp[6] = {"sx", "sa", "sy", "II00", "II01", "II11"};
+  double                   zd[6], N[4];
+  char                     v[6][32]; /* C formatting: PETSc's printf appends '.' to integral %g values */
+
+  PetscFunctionBegin;
+  for (int k = 0; k < 6; k++) {
+    PetscCheck(!PetscIsInfOrNanReal(z[k]), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: %s is not finite", name, comp[k]);
+    zd[k] = (double)z[k];
+  }
+  for (int k = 0; k < 6; k++) snprintf(v[k], sizeof(v[k]), "%.15g", zd[k]);
+  PetscCheck(PetscAbsReal(z[1]) < 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: sa = %s: |sa| must be below 1 (sa is the cosine of the angle between the deformed warp and weft directions)", name, v[1]);
+  for (int k = 0; k < 3; k += 2) {
+    PetscCheck(1 + z[k] > 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: %s = %s: the stretch factor 1 + %s must be positive", name, comp[k], v[k], comp[k]);
+    PetscCheck(1 + z[k] <= HYLC_PERIODIC_MAX_STRETCH, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: %s = %s: the stretch factor 1 + %s must be at most 1e3", name, comp[k], v[k], comp[k]);
+  }
+  HylcMacroNormalDerivatives(zd, N);
+  {
+    const double px = P->D.px, py = P->D.py, c4[4][2] = {{px, 0}, {0, py}, {px, py}, {px, -py}};
+    for (int i = 0; i < 4; i++) {
+      const double a = N[0] * c4[i][0] + N[1] * c4[i][1], b = N[2] * c4[i][0] + N[3] * c4[i][1], ang = PetscSqrtReal(a * a + b * b);
+      if (!(ang <= 2 * PETSC_PI)) {
+        const int k = PetscAbsReal(z[3]) >= PetscAbsReal(z[4]) && PetscAbsReal(z[3]) >= PetscAbsReal(z[5]) ? 3 : PetscAbsReal(z[4]) >= PetscAbsReal(z[5]) ? 4
+                                                                                                                                                          : 5;
+        char      msg[160];
+        snprintf(msg, sizeof(msg), "the midsurface would turn by %.3g rad across one period (periods %g m, %g m)", ang, px, py);
+        SETERRQ(PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: %s = %s: %s; at most 2 pi (a tile bent further wraps onto itself)", name, comp[k], v[k], msg);
+      }
+    }
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -332,6 +382,56 @@ static PetscErrorCode SlideFamilies(HylcPattern pat, PetscInt nloops, PetscInt f
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Reduces the m constraint rows of A (and dL) to an independent set, in order: modified Gram-Schmidt with
+   one reorthogonalization on the rows of A (not on A A^T, which would square the condition); row i is
+   dropped when its distance to the span of the rows kept before it is at most crtol |a_i|. The translation
+   rows come first and are independent, so a slide row that repeats them (straight yarns; parallel straight
+   yarns under per_yarn) is the one dropped. Dropping a dependent row does not change the feasible set: at
+   the initial guess every row vanishes, and a dependent row is a combination of the kept ones. When no row
+   is dropped, A and dL are untouched (bitwise). */
+static PetscErrorCode ReduceConstraints(HylcPeriodic P, PetscInt *m)
+{
+  const PetscInt n = 4 * P->N, m0 = *m;
+  PetscReal     *Q, *r;
+  PetscInt       nq = 0, kept = 0;
+
+  PetscFunctionBegin;
+  PetscCall(PetscMalloc2(m0 * n, &Q, n, &r));
+  for (PetscInt i = 0; i < m0; i++) {
+    const PetscReal *a  = P->A + i * n;
+    PetscReal        a2 = 0, r2 = 0, scale = 0;
+    for (PetscInt k = 0; k < n; k++) scale = PetscMax(scale, PetscAbsReal(a[k]));
+    PetscCheck(scale > 0 && !PetscIsInfOrNanReal(scale) && !PetscIsInfOrNanReal(P->dL[i]), PETSC_COMM_SELF, PETSC_ERR_FP, "Constraint row %" PetscInt_FMT " is zero or not finite (|a| max %g, dL %g): is the strain representable?", i, (double)scale, (double)P->dL[i]);
+    for (PetscInt k = 0; k < n; k++) {
+      r[k] = a[k] / scale; /* scaled: no overflow or underflow in the squares */
+      a2 += r[k] * r[k];
+    }
+    for (int pass = 0; pass < 2; pass++)
+      for (PetscInt q = 0; q < nq; q++) {
+        PetscReal d = 0;
+        for (PetscInt k = 0; k < n; k++) d += Q[q * n + k] * r[k];
+        for (PetscInt k = 0; k < n; k++) r[k] -= d * Q[q * n + k];
+      }
+    for (PetscInt k = 0; k < n; k++) r2 += r[k] * r[k];
+    if (r2 <= P->crtol * P->crtol * a2) {
+      PetscCall(PetscInfo(NULL, "constraint row %" PetscInt_FMT " dropped: linearly dependent on the rows before it (relative distance %g <= %g)\n", i, (double)PetscSqrtReal(r2 / a2), (double)P->crtol));
+      continue;
+    }
+    const PetscReal rn = PetscSqrtReal(r2);
+    for (PetscInt k = 0; k < n; k++) Q[nq * n + k] = r[k] / rn;
+    nq++;
+    if (kept != i) {
+      PetscCall(PetscArraycpy(P->A + kept * n, a, n));
+      P->dL[kept] = P->dL[i];
+    }
+    kept++;
+  }
+  PetscCall(PetscFree2(Q, r));
+  P->ndropped = m0 - kept;
+  P->ncons = *m = kept;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode SetUpConstraints(HylcPeriodic P, const PetscReal *x0)
 {
   const PetscInt         N = P->N;
@@ -386,6 +486,7 @@ static PetscErrorCode SetUpConstraints(HylcPeriodic P, const PetscReal *x0)
     P->dL[row] += s * wo * HylcDot3(tau, Rtx);
   }
   PetscCall(PetscFree2(fam, sgn));
+  PetscCall(ReduceConstraints(P, &m));
   /* (A A^T)^-1 of the small SPD matrix */
   {
     PetscReal *M, *I1;
@@ -395,8 +496,10 @@ static PetscErrorCode SetUpConstraints(HylcPeriodic P, const PetscReal *x0)
       for (PetscInt j = 0; j < m; j++)
         for (PetscInt k = 0; k < 4 * N; k++) M[i * m + j] += P->A[i * 4 * N + k] * P->A[j * 4 * N + k];
     }
-    const int err = HylcDenseInverse((int)m, M, I1, 1e-10);
-    PetscCheck(!err, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "The constraint rows are (nearly) linearly dependent (row %d): with straight yarns the slide constraint repeats the translation; use -periodic_slide none", -1 - err);
+    /* the kept rows are independent to crtol (sin of the angle to the span of the others): the pivots of
+       A A^T are at least about crtol^2 times its diagonal */
+    const int err = HylcDenseInverse((int)m, M, I1, 1e-2 * P->crtol * P->crtol);
+    PetscCheck(!err, PETSC_COMM_SELF, PETSC_ERR_PLIB, "The reduced constraint rows are numerically dependent (row %d) although they passed the dependence test with -periodic_constraint_rtol %g", -1 - err, (double)P->crtol);
     PetscCall(PetscArraycpy(P->AAtinv, I1, m * m));
     PetscCall(PetscFree2(M, I1));
   }
@@ -1051,12 +1154,9 @@ static inline void Scatter(const HylcPeriodic P, const Layout *L, double ge[], d
     for (PetscInt i = 0; i < L->n * L->n; i++) hv[i] = He[i];
 }
 
-/*@C
-  HylcPeriodicEvaluate - Energy of the current state (parts: stretch, bend, twist, contact, for the terms
-  in mask), and optionally the reduced gradient g_y (4 per original vertex, overwritten) and reduced
-  Hessian H_y (from HylcPeriodicCreateMatrix(), overwritten). Not collective.
-@*/
-PetscErrorCode HylcPeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts[4], PetscReal gy[], Mat H)
+/* the evaluation; a degenerate element or a non-finite energy is no error: *bad = 1 (zero-length edge at
+   original vertex *badv), 2 (degenerate bending element at *badv) or 3 (non-finite energy), parts = +inf */
+static PetscErrorCode PeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts[4], PetscReal gy[], Mat H, int *bad, PetscInt *badv)
 {
   PetscReal    E[4] = {0, 0, 0, 0};
   double       x[12], ge[12], He[144];
@@ -1065,6 +1165,8 @@ PetscErrorCode HylcPeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts[4]
   PetscInt     k = 0;
 
   PetscFunctionBegin;
+  *bad  = 0;
+  *badv = -1;
   PetscCheck(P->setup, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE, "Call HylcPeriodicSetUp() first");
   PetscLogDouble t0, t1, tc0, tc1;
   PetscCall(PetscLogEventBegin(HYLC_PeriodicEvaluate, 0, 0, 0, 0));
@@ -1085,7 +1187,11 @@ PetscErrorCode HylcPeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts[4]
     }
     if (mask & HYLC_TERM_STRETCH) {
       double en;
-      PetscCheck(!HylcRodStretch(x, P->D.restLength[P->fo[P->esrc[e]]], P->c.ks, P->sw[e], &en, gy ? ge : NULL, H ? He : NULL), PETSC_COMM_SELF, PETSC_ERR_FP, "Zero-length edge");
+      if (HylcRodStretch(x, P->D.restLength[P->fo[P->esrc[e]]], P->c.ks, P->sw[e], &en, gy ? ge : NULL, H ? He : NULL)) {
+        *bad  = 1;
+        *badv = P->fo[P->esrc[e]];
+        break;
+      }
       E[0] += en;
       Scatter(P, &L, ge, He, gy, hv ? hv + k : NULL);
     } else if (hv)
@@ -1093,7 +1199,7 @@ PetscErrorCode HylcPeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts[4]
     k += 36;
   }
   const int bt = ((mask & HYLC_TERM_BEND) ? HYLC_ROD_BEND : 0) | ((mask & HYLC_TERM_TWIST) ? HYLC_ROD_TWIST : 0);
-  for (PetscInt b = 0; b < P->nbe; b++) {
+  for (PetscInt b = 0; b < P->nbe && !*bad; b++) {
     const BendElem     *B  = P->be + b;
     const PetscInt      oc = P->fo[B->v[1]], ou = P->fo[B->v[0]];
     HylcRodBendTwistRef ref;
@@ -1117,7 +1223,11 @@ PetscErrorCode HylcPeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts[4]
     ref.lbar                      = 0.5 * (P->D.restLength[ou] + P->D.restLength[oc]);
     if (bt) {
       const int err = (gy || H) ? HylcRodBendTwist(x, &ref, &P->btpar, B->w, bt, en, gy ? ge : NULL, H ? He : NULL) : HylcRodBendTwistEnergy(x, &ref, &P->btpar, B->w, en);
-      PetscCheck(!err, PETSC_COMM_SELF, PETSC_ERR_FP, "Bending element at vertex %" PetscInt_FMT " is degenerate", oc);
+      if (err) {
+        *bad  = 2;
+        *badv = oc;
+        break;
+      }
       if (mask & HYLC_TERM_BEND) E[1] += en[0];
       if (mask & HYLC_TERM_TWIST) E[2] += en[1];
       Scatter(P, &L, ge, He, gy, hv ? hv + k : NULL);
@@ -1127,7 +1237,8 @@ PetscErrorCode HylcPeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts[4]
   }
   PetscCall(PetscLogEventBegin(HYLC_TileContact, 0, 0, 0, 0));
   PetscCall(PetscTime(&tc0));
-  const PetscInt   np = H ? P->coonpairs : P->npairs; /* with a Hessian: every pair of its structure (the others give 0) */
+  const PetscInt   np = *bad ? 0 : H ? P->coonpairs
+                                     : P->npairs; /* with a Hessian: every pair of its structure (the others give 0) */
   const PetscInt  *pl = H ? P->coopairs : P->pairs;
   const PetscReal *pw = H ? P->coopw : P->pw;
   for (PetscInt p = 0; p < np; p++) {
@@ -1148,7 +1259,7 @@ PetscErrorCode HylcPeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts[4]
   PetscCall(PetscTime(&tc1));
   P->tContact += tc1 - tc0;
   PetscCall(PetscLogEventEnd(HYLC_TileContact, 0, 0, 0, 0));
-  if (H) {
+  if (H && !*bad) {
     PetscCall(PetscLogEventBegin(HYLC_TileAssemble, 0, 0, 0, 0));
     PetscCall(PetscTime(&tc0));
     PetscScalar *v;
@@ -1162,9 +1273,45 @@ PetscErrorCode HylcPeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts[4]
   }
   PetscCall(PetscTime(&t1));
   P->tEval += t1 - t0;
-  for (int i = 0; i < 4; i++) parts[i] = E[i];
-  PetscCheck(PetscIsNormalReal(E[0] + E[1] + E[2] + E[3]) || E[0] + E[1] + E[2] + E[3] == 0, PETSC_COMM_SELF, PETSC_ERR_FP, "Energy is not finite: stretch %g, bend %g, twist %g, contact %g", (double)E[0], (double)E[1], (double)E[2], (double)E[3]);
+  if (!*bad && !(PetscIsNormalReal(E[0] + E[1] + E[2] + E[3]) || E[0] + E[1] + E[2] + E[3] == 0)) *bad = 3;
+  for (int i = 0; i < 4; i++) parts[i] = *bad == 1 || *bad == 2 ? PETSC_INFINITY : E[i];
   PetscCall(PetscLogEventEnd(HYLC_PeriodicEvaluate, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPeriodicEvaluate - Energy of the current state (parts: stretch, bend, twist, contact, for the terms
+  in mask), and optionally the reduced gradient g_y (4 per original vertex, overwritten) and reduced
+  Hessian H_y (from HylcPeriodicCreateMatrix(), overwritten). A degenerate geometry or a non-finite energy is a PETSC_ERR_FP error
+  (see HylcPeriodicEvaluateFinite()). Not collective.
+@*/
+PetscErrorCode HylcPeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts[4], PetscReal gy[], Mat H)
+{
+  int      bad;
+  PetscInt v;
+
+  PetscFunctionBegin;
+  PetscCall(PeriodicEvaluate(P, mask, parts, gy, H, &bad, &v));
+  PetscCheck(bad != 1, PETSC_COMM_SELF, PETSC_ERR_FP, "Zero-length edge at vertex %" PetscInt_FMT, v);
+  PetscCheck(bad != 2, PETSC_COMM_SELF, PETSC_ERR_FP, "Bending element at vertex %" PetscInt_FMT " is degenerate", v);
+  PetscCheck(bad != 3, PETSC_COMM_SELF, PETSC_ERR_FP, "Energy is not finite: stretch %g, bend %g, twist %g, contact %g", (double)parts[0], (double)parts[1], (double)parts[2], (double)parts[3]);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPeriodicEvaluateFinite - HylcPeriodicEvaluate() for a solver's trial states: a degenerate geometry
+  (a zero-length edge, a degenerate bending element) or a non-finite energy is a result, not an error:
+  *finite = PETSC_FALSE and the energy counts as +inf (gy and H are then undefined). Any other failure
+  is an error. Not collective.
+@*/
+PetscErrorCode HylcPeriodicEvaluateFinite(HylcPeriodic P, int mask, PetscReal parts[4], PetscReal gy[], Mat H, PetscBool *finite)
+{
+  int      bad;
+  PetscInt v;
+
+  PetscFunctionBegin;
+  PetscCall(PeriodicEvaluate(P, mask, parts, gy, H, &bad, &v));
+  *finite = (PetscBool)!bad;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -1185,7 +1332,7 @@ PetscErrorCode HylcPeriodicView(HylcPeriodic P, PetscViewer viewer)
 {
   PetscFunctionBegin;
   PetscCheck(P->setup, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE, "Call HylcPeriodicSetUp() first");
-  PetscCall(PetscViewerASCIIPrintf(viewer, "periodic tile: strain (%g, %g, %g, %g, %g, %g); %" PetscInt_FMT " original and %" PetscInt_FMT " ghost vertices, %" PetscInt_FMT " edges, %" PetscInt_FMT " bend-twist elements, %" PetscInt_FMT " constraints (slide %s)\n", (double)P->z[0], (double)P->z[1], (double)P->z[2], (double)P->z[3], (double)P->z[4], (double)P->z[5], P->N, P->nfv - P->N, P->nfe, P->nbe, P->ncons, HylcSlideConstraints[P->slide]));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "periodic tile: strain (%g, %g, %g, %g, %g, %g); %" PetscInt_FMT " original and %" PetscInt_FMT " ghost vertices, %" PetscInt_FMT " edges, %" PetscInt_FMT " bend-twist elements, %" PetscInt_FMT " constraints (slide %s; %" PetscInt_FMT " linearly dependent rows dropped)\n", (double)P->z[0], (double)P->z[1], (double)P->z[2], (double)P->z[3], (double)P->z[4], (double)P->z[5], P->N, P->nfv - P->N, P->nfe, P->nbe, P->ncons, HylcSlideConstraints[P->slide], P->ndropped));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -1,5 +1,6 @@
 /* HylcMicro, the Newton solver:
-   - a straight periodic yarn stretched by sx converges to 1/2 ks eps^2 L / A (relative 1e-8);
+   - a straight periodic yarn (default slide constraint: its dependent row is dropped, 3 rows remain)
+     stretched by sx converges to 1/2 ks eps^2 L / A (relative 1e-8), and Psi(0.2) / Psi(0.1) = 4;
    - bent by II00 = kappa it converges to 1/2 B kappa^2 L / A within the discretization error;
    - the energy never increases between accepted iterates;
    - a solve gives bitwise the same result alone and after other solves with the same solver;
@@ -42,8 +43,13 @@ static PetscErrorCode SolveStraight(PetscInt N, const PetscReal z[6], HylcMicroR
   PetscCall(HylcMicroCreate(PETSC_COMM_SELF, &M));
   PetscCall(HylcMicroSetPattern(M, p, &m));
   PetscCall(HylcMicroGetPeriodic(M, &P));
-  PetscCall(HylcPeriodicSetSlideConstraint(P, HYLC_SLIDE_NONE)); /* a straight yarn's slide row repeats the translation */
+  /* the default slide constraint: its row repeats the translation row of a straight yarn and is dropped */
   PetscCall(HylcMicroSolve(M, z, res));
+  {
+    PetscInt nc;
+    PetscCall(HylcPeriodicGetConstraints(P, &nc, NULL, NULL, NULL));
+    HYLC_CHECK(nc == 3, "straight yarn, default slide constraint: %d independent constraint rows, expected 3", (int)nc);
+  }
   PetscCall(HylcPeriodicGetConstants(P, c));
   PetscCall(HylcPeriodicGetArea(P, area));
   /* monotone energy */
@@ -71,6 +77,15 @@ static PetscErrorCode TestAnalytic(void)
     const PetscReal exact = 0.5 * c.ks * eps * eps * 8e-3 / area;
     HYLC_CHECK(res.status == HYLC_MICRO_CONVERGED, "stretched yarn: status %s", HylcMicroStatuses[res.status]);
     HYLC_CHECK(PetscAbsReal(res.psi - exact) <= 1e-8 * exact, "stretched yarn eps = %g: psi %.12g vs %.12g", (double)eps, (double)res.psi, (double)exact);
+  }
+  /* Psi(0.2) / Psi(0.1) = 4 (Psi = 1/2 k_s eps^2 L / A) with the default options */
+  {
+    HylcMicroResult r1, r2;
+    const PetscReal z1[6] = {0.1, 0, 0, 0, 0, 0}, z2[6] = {0.2, 0, 0, 0, 0, 0};
+    PetscCall(SolveStraight(16, z1, &r1, &c, &area));
+    PetscCall(SolveStraight(16, z2, &r2, &c, &area));
+    HYLC_CHECK(r1.status == HYLC_MICRO_CONVERGED && r2.status == HYLC_MICRO_CONVERGED, "stretched yarn: statuses %s, %s", HylcMicroStatuses[r1.status], HylcMicroStatuses[r2.status]);
+    HYLC_CHECK(PetscAbsReal(r2.psi / r1.psi - 4) <= 1e-7, "stretched yarn: Psi(0.2) / Psi(0.1) = %.12g, expected 4", (double)(r2.psi / r1.psi));
   }
   /* bent: the error shrinks at second order with the edge length */
   PetscReal err[2];

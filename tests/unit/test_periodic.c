@@ -5,7 +5,9 @@
      boundaries;
    - a straight periodic yarn bent by II00 = kappa has bending energy 1/2 B kappa^2 L at the initial guess,
      with a discretization error of second order in the edge length;
-   - the constraints hold at the initial guess. */
+   - the constraints hold at the initial guess;
+   - straight yarns (one, two parallel, two crossing families, diagonal): with every slide variant the rows
+     that repeat the translation (or each other) are dropped, flat, sheared and bent. */
 #include <hylc/periodic.h>
 #include "hylctest.h"
 
@@ -196,8 +198,7 @@ static PetscErrorCode BentYarnEnergy(PetscInt N, PetscReal kappa, PetscReal *Eb,
   PetscCall(HylcYarnModelDefault(&m));
   PetscCall(HylcPeriodicCreate(p, &m, &P));
   PetscCall(HylcPeriodicSetStrain(P, z));
-  PetscCall(HylcPeriodicSetSlideConstraint(P, HYLC_SLIDE_NONE)); /* a straight yarn's slide row repeats the translation */
-  PetscCall(HylcPeriodicSetUp(P));
+  PetscCall(HylcPeriodicSetUp(P)); /* default slide constraint: its row repeats the translation and is dropped */
   PetscCall(HylcPeriodicEvaluate(P, HYLC_TERM_ALL, e, NULL, NULL));
   PetscCall(HylcPeriodicGetConstants(P, &c));
   *Eb    = e[1];
@@ -273,6 +274,79 @@ static PetscErrorCode TestConstraints(HylcPattern p)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* straight yarns: the slide rows that repeat translation rows are dropped, for every slide variant, flat,
+   sheared and bent; the kept rows vanish at the initial guess and (A A^T)^-1 is their inverse. Tiles:
+   0: one yarn along x; 1: two parallel yarns along x; 2: a yarn along x and one along y (3 r above it);
+   3: one diagonal yarn (winding (1, 1)) */
+static PetscErrorCode TestStraightConstraints(void)
+{
+  const PetscReal px = 8e-3, py = 8e-3, r = 5e-4;
+  const PetscInt  N        = 8;
+  const PetscReal zs[3][6] = {
+      {0, 0, 0, 0, 0, 0},
+      {0.1, 0.3, -0.05, 0, 0, 0},
+      {0.05, 0.1, 0, 80, 0, 40}};
+  /* independent rows per tile and slide variant (none, global, per_yarn, per_family): a slide row that is
+     a combination of translation rows goes; the relative slide of two parallel yarns (per_yarn) and the
+     slide rows of crossing families stay */
+  const PetscInt expect[4][4] = {
+      {3, 3, 3, 3},
+      {3, 3, 4, 3},
+      {3, 4, 5, 5},
+      {3, 3, 3, 3}};
+  HylcYarnModel m;
+
+  PetscFunctionBegin;
+  PetscCall(HylcYarnModelDefault(&m));
+  for (int t = 0; t < 4; t++) {
+    PetscReal   pts[3 * 16];
+    PetscInt    nv[2] = {N, N}, w[4] = {1, 0, 1, 0}, nl = (t == 1 || t == 2) ? 2 : 1;
+    HylcPattern p;
+    for (PetscInt k = 0; k < N; k++) {
+      const PetscReal s = (k + 0.5) / (PetscReal)N - 0.5;
+      pts[3 * k] = s * px, pts[3 * k + 1] = t == 3 ? s * py : (t == 1 ? -0.25 * py : 0), pts[3 * k + 2] = 0;
+      if (t == 1) pts[3 * (N + k)] = s * px, pts[3 * (N + k) + 1] = 0.25 * py, pts[3 * (N + k) + 2] = 0;
+      if (t == 2) pts[3 * (N + k)] = 0.25 * px, pts[3 * (N + k) + 1] = s * py, pts[3 * (N + k) + 2] = 3 * r;
+    }
+    if (t == 2) w[2] = 0, w[3] = 1;
+    if (t == 3) w[1] = 1;
+    PetscCall(HylcPatternCreate(PETSC_COMM_SELF, &p));
+    PetscCall(HylcPatternSetFromCurves(p, px, py, r, nl, nv, w, pts));
+    for (int sl = 0; sl < 4; sl++)
+      for (int iz = 0; iz < 3; iz++) {
+        HylcPeriodic     P;
+        PetscInt         n, nc;
+        const PetscReal *A, *dL, *Ai;
+        PetscReal       *y, c[8];
+        PetscCall(HylcPeriodicCreate(p, &m, &P));
+        PetscCall(HylcPeriodicSetStrain(P, zs[iz]));
+        PetscCall(HylcPeriodicSetSlideConstraint(P, (HylcSlideConstraint)sl));
+        PetscCall(HylcPeriodicSetUp(P));
+        PetscCall(HylcPeriodicGetSizes(P, &n, NULL, NULL, NULL));
+        PetscCall(HylcPeriodicGetConstraints(P, &nc, &A, &dL, &Ai));
+        HYLC_CHECK(nc == expect[t][sl], "straight tile %d, slide %s, strain %d: %d constraint rows kept, expected %d", t, HylcSlideConstraints[sl], iz, (int)nc, (int)expect[t][sl]);
+        PetscCall(PetscMalloc1(n, &y));
+        PetscCall(HylcPeriodicGetInitialState(P, y));
+        PetscCall(HylcPeriodicConstraintResidual(P, y, c));
+        for (PetscInt i = 0; i < nc; i++) HYLC_CHECK(PetscAbsReal(c[i]) <= 1e-12 * r, "straight tile %d, slide %s: residual %g in row %d", t, HylcSlideConstraints[sl], (double)c[i], (int)i);
+        for (PetscInt i = 0; i < nc; i++)
+          for (PetscInt j = 0; j < nc; j++) {
+            PetscReal s = 0;
+            for (PetscInt k = 0; k < nc; k++) {
+              PetscReal aat = 0;
+              for (PetscInt q = 0; q < n; q++) aat += A[i * n + q] * A[k * n + q];
+              s += aat * Ai[k * nc + j];
+            }
+            HYLC_CHECK(PetscAbsReal(s - (i == j)) < 1e-9, "straight tile %d: (A A^T)(A A^T)^-1 differs from I at (%d, %d): %g", t, (int)i, (int)j, (double)s);
+          }
+        PetscCall(PetscFree(y));
+        PetscCall(HylcPeriodicDestroy(&P));
+      }
+    PetscCall(HylcPatternDestroy(&p));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 int main(int argc, char **argv)
 {
   HylcPattern     weave, knit;
@@ -292,6 +366,7 @@ int main(int argc, char **argv)
   PetscCall(TestDerivatives(knit, "stockinette doubly curved", bent2, HYLC_CONTACT_QUADRATURE));
   PetscCall(TestBentYarn());
   PetscCall(TestConstraints(knit));
+  PetscCall(TestStraightConstraints());
   PetscCall(HylcPatternDestroy(&weave));
   PetscCall(HylcPatternDestroy(&knit));
   PetscCall(PetscFinalize());
