@@ -144,7 +144,11 @@ static PetscErrorCode JournalLockPath(const char path[], int *fdout, PetscBool *
     if (fd < 0 && errno == ENOENT && attempt < 100) continue; /* removed between the two opens */
     PetscCheck(fd >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot open journal %s: %s", path, strerror(errno));
     if (flock(fd, LOCK_EX | LOCK_NB)) {
-      int err = errno, pid = err == EWOULDBLOCK ? LockHolder(fd) : 0;
+      int err = errno, pid = 0;
+      for (int k = 0; err == EWOULDBLOCK && !pid && k < 3; k++) { /* the holder may be between its lock and /proc/locks */
+        if (k) usleep(10000);
+        pid = LockHolder(fd);
+      }
       close(fd);
       PetscCheck(err != EWOULDBLOCK || pid <= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Journal %s is in use by another job (pid %d): is the same run already going?", path, pid);
       PetscCheck(err != EWOULDBLOCK, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Journal %s is in use by another job: is the same run already going?", path);
