@@ -24,14 +24,24 @@ typedef struct _n_HylcJournal *HylcJournal;
 /* ---- Journal: append-only binary file of finished samples (format: docs/output-format.md) ----
    Plain C stdio + POSIX, used by rank 0 only; errors are raised on PETSC_COMM_SELF and name the file. */
 
-/* Opens the journal 'path' of a run of 'nsamples' samples identified by the text 'fingerprint' (any
-   string that changes when the run would compute different samples: pattern, plan and solver options).
-   resume = PETSC_FALSE: creates a new journal (an existing file is replaced). resume = PETSC_TRUE:
-   reopens an existing journal, keeps every intact record and truncates a torn or garbled tail (left by a
-   process killed mid-write) to the last good record; a journal of a different run (other fingerprint or
-   sample count) or a file that is not a journal is refused; a missing file starts a new journal.
-   The file is locked (flock) while open. Not collective. */
-PETSC_EXTERN PetscErrorCode HylcJournalOpen(const char path[], PetscBool resume, long nsamples, const char fingerprint[], HylcJournal *);
+/* How HylcJournalOpen treats an existing journal. */
+typedef enum {
+  HYLC_JOURNAL_NEW,      /* a new run: an existing journal holding samples is refused (say -sampler_resume or -sampler_overwrite) */
+  HYLC_JOURNAL_RESUME,   /* continue the run of an existing journal (a missing or empty one starts a new journal) */
+  HYLC_JOURNAL_OVERWRITE /* start over: an existing journal is emptied */
+} HylcJournalMode;
+
+/* Opens the journal 'path' of a run of 'nsamples' samples identified by the text 'identity' (the run's
+   identity, HylcSamplesIdentity(): lines "kind name value"; the journal stores it with its SHA-256).
+   The first thing done is an exclusive lock (flock) of the journal file itself, held until
+   HylcJournalClose (or process exit): a second process on the same journal is refused with "in use by
+   another job (pid N)" before it reads, creates or changes anything. Then, by mode (HylcJournalMode):
+   a new journal is written in place (header, fsync); on resume every intact record is kept and a torn
+   or garbled tail (left by a process killed mid-write) is truncated to the last good record; a journal of
+   a different run (other identity digest or sample count) is refused with the differences named
+   (HylcSamplesIdentityDiff), as is an older journal format or a file that is not a journal.
+   Not collective. */
+PETSC_EXTERN PetscErrorCode HylcJournalOpen(const char path[], HylcJournalMode mode, long nsamples, const char identity[], HylcJournal *);
 /* Appends n records (recs[i].index in [0, nsamples)), then fflush and fsync: once it returns, the
    records survive SIGKILL and power loss. A later record of the same sample replaces an earlier one. */
 PETSC_EXTERN PetscErrorCode HylcJournalAppend(HylcJournal, const HylcSampleRecord[], PetscInt);
@@ -45,14 +55,26 @@ PETSC_EXTERN PetscErrorCode HylcJournalGetInfo(HylcJournal, long *, PetscInt *);
 /* Closes the file (the journal stays on disk) and frees the object; accepts NULL. */
 PETSC_EXTERN PetscErrorCode HylcJournalClose(HylcJournal *);
 
+/* ---- The identity of a run (src/sampler/identity.c, docs/output-format.md) ----
+   A canonical text of everything that can change a sample's result: versions (hylc, its build, PETSc),
+   the pattern (every field of HylcPatternData; arrays as SHA-256 of their bytes) and every option of the
+   global database except the neutral ones (HylcSamplesOptionIsNeutral), sorted. Not collective. */
+PETSC_EXTERN PetscErrorCode HylcSamplesIdentity(HylcPattern, char **);
+PETSC_EXTERN void           HylcSamplesIdentityDigest(const char[], char[65]);
+PETSC_EXTERN PetscErrorCode HylcSamplesIdentityDiff(const char was[], const char now[], char **);
+PETSC_EXTERN PetscBool      HylcSamplesOptionIsNeutral(const char[]);
+
 /* ---- HDF5 output (schema: docs/output-format.md) ---- */
 
-/* Writes the samples file 'path' atomically (to "path.tmp", then rename): /samples (one row per sample
+/* Writes the samples file 'path' atomically (built in memory, written to a unique temporary beside it,
+   fsync, rename; on any failure the temporary is removed, every HDF5 id closed, and path untouched): /samples (one row per sample
    of the plan; samples not done have status -1, term -1, NaN values and -1 counts), /reference (the
    reference pattern's arrays), /material (the yarn model, raw and resolved), /options (the complete
    options text; NULL: PetscOptionsGetAll of the global database) and provenance attributes on /.
    reference and model may be NULL (the groups are then omitted). Not collective (call on rank 0). */
 PETSC_EXTERN PetscErrorCode HylcSamplesWriteHDF5(const char path[], long nsamples, const HylcSampleRecord recs[], const unsigned char done[], HylcPattern reference, const HylcYarnModel *model, const char optionsText[]);
+/* The same, and /provenance from the run's identity text (HylcSamplesIdentity; NULL: no /provenance). */
+PETSC_EXTERN PetscErrorCode HylcSamplesWriteHDF5WithIdentity(const char path[], long nsamples, const HylcSampleRecord recs[], const unsigned char done[], HylcPattern reference, const HylcYarnModel *model, const char optionsText[], const char identity[]);
 /* Reads /samples of a file written by HylcSamplesWriteHDF5: the sample count, records (indexed by
    sample) and done flags (status >= 0), allocated with PetscMalloc (free with PetscFree); optionsText
    (may be NULL) receives the /options text (PetscFree). Not collective. */

@@ -4,6 +4,7 @@
 #include <petsctime.h>
 #include <unistd.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #define TAG_RECORDS 7301
 #define TAG_DONE    7302
@@ -18,7 +19,9 @@ struct _n_HylcSampler {
   HylcMicro           micro;
   HylcPlan            plan;
   char                output[PETSC_MAX_PATH_LEN];
-  PetscBool           resume;
+  PetscBool           resume, overwrite;
+  HylcJournal         journal;  /* rank 0: open and locked from HylcSamplerSetUp() to the end of the run */
+  char               *identity; /* rank 0: the run's identity text (HylcSamplesIdentity) */
   PetscInt            batch;
   PetscReal           progress; /* seconds between progress lines */
   long                nsamples;
@@ -51,6 +54,8 @@ PetscErrorCode HylcSamplerDestroy(HylcSampler *s)
 {
   PetscFunctionBegin;
   if (!*s) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(HylcJournalClose(&(*s)->journal));
+  PetscCall(PetscFree((*s)->identity));
   PetscCall(HylcMicroDestroy(&(*s)->micro));
   PetscCall(HylcPatternDestroy(&(*s)->pat));
   PetscCall(PetscFree(*s));
@@ -80,7 +85,9 @@ static PetscErrorCode RangeOption(PetscOptionItems *PetscOptionsObject, const ch
   HylcSamplerSetFromOptions - Options of the sampling job (besides -pattern_*, -yarn_*, -micro_*,
   -periodic_*, -macro_*):
 + -sampler_output <samples.h5>    - the HDF5 output (its journal: <output>.journal)
-. -sampler_resume                 - continue an interrupted run from its journal
+. -sampler_resume                 - continue an interrupted run from its journal (refused if its settings differ)
+. -sampler_overwrite              - start over: replace an existing output and its journal (without either
+                                    option an existing output or a journal holding samples is refused)
 . -sampler_family <woven>         - default ranges of method-spec §8: woven, stockinette, honeycomb, rib
 . -sampler_range_<c> min,max      - 1D range of c = sx, sa, sy, II00, II11 (II in 1/m; 2D ranges follow)
 . -sampler_n1 <150>, -sampler_n2 <50> - samples per 1D term, per axis of a 2D term
@@ -117,7 +124,8 @@ PetscErrorCode HylcSamplerSetFromOptions(HylcSampler S)
   }
   PetscOptionsBegin(S->comm, NULL, "Sampling job (Algorithm C4)", "HylcSampler");
   PetscCall(PetscOptionsString("-sampler_output", "HDF5 output file (the journal is <output>.journal)", "HylcSampler", S->output, S->output, sizeof(S->output), NULL));
-  PetscCall(PetscOptionsBool("-sampler_resume", "Continue an interrupted run from its journal", "HylcSampler", S->resume, &S->resume, NULL));
+  PetscCall(PetscOptionsBool("-sampler_resume", "Continue an interrupted run from its journal <output>.journal (refused, naming the differences, if any setting that changes results differs)", "HylcSampler", S->resume, &S->resume, NULL));
+  PetscCall(PetscOptionsBool("-sampler_overwrite", "Start over: replace an existing output and its journal (without -sampler_resume or this, an existing output or journal with samples is refused)", "HylcSampler", S->overwrite, &S->overwrite, NULL));
   PetscCall(PetscOptionsEnum("-sampler_family", "Default sampling ranges of method-spec 8 (II scaled by 1 mm / r)", "HylcSampler", Families, fam, &fam, NULL));
   PetscCheck(!HylcPlanDefaults(Families[fam], 1e-3 / r, &S->plan), S->comm, PETSC_ERR_USER_INPUT, "Unknown sampling family");
   for (int c = 0; c < 5; c++) {
@@ -177,28 +185,78 @@ PetscErrorCode HylcSamplerSetFromOptions(HylcSampler S)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* rank 0, before any solve: every output path writable and none of them an input, the existing output
+   and journal as the mode allows, then the journal locked and opened (resume: the identity checked) */
+static PetscErrorCode CheckOutputsAndLock(HylcSampler S)
+{
+  char        jpath[PETSC_MAX_PATH_LEN + 16], pfile[PETSC_MAX_PATH_LEN] = "", raw[2][PETSC_MAX_PATH_LEN + 16];
+  PetscBool   haspf = PETSC_FALSE;
+  struct stat st;
+
+  PetscFunctionBegin;
+  PetscCall(PetscSNPrintf(jpath, sizeof(jpath), "%s.journal", S->output));
+  PetscCall(PetscOptionsGetString(NULL, NULL, "-pattern_file", pfile, sizeof(pfile), &haspf));
+  PetscCall(HylcFileCheckOutput(PETSC_COMM_SELF, S->output, "-sampler_output"));
+  PetscCall(HylcFileCheckOutput(PETSC_COMM_SELF, jpath, "the journal of -sampler_output"));
+  PetscCall(HylcFileCheckDistinct(PETSC_COMM_SELF, S->output, "-sampler_output", pfile, "-pattern_file"));
+  PetscCall(HylcFileCheckDistinct(PETSC_COMM_SELF, jpath, "the journal of -sampler_output", pfile, "-pattern_file"));
+  if (S->refout[0]) {
+    PetscCall(HylcFileCheckOutput(PETSC_COMM_SELF, S->refout, "-reference_output"));
+    PetscCall(HylcFileCheckDistinct(PETSC_COMM_SELF, S->refout, "-reference_output", pfile, "-pattern_file"));
+    PetscCall(HylcFileCheckDistinct(PETSC_COMM_SELF, S->refout, "-reference_output", S->output, "-sampler_output"));
+    PetscCall(HylcFileCheckDistinct(PETSC_COMM_SELF, S->refout, "-reference_output", jpath, "the journal of -sampler_output"));
+    PetscCheck(strcmp(S->refout, S->output) && strcmp(S->refout, jpath), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-reference_output %s is the samples file or its journal", S->refout);
+  }
+  if (S->rawdir[0]) {
+    PetscCheck(stat(S->rawdir, &st) == 0 && S_ISDIR(st.st_mode), PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot write into -sampler_export_raw %s: %s", S->rawdir, stat(S->rawdir, &st) ? "no such directory (create it first)" : "not a directory");
+    PetscCall(PetscSNPrintf(raw[0], sizeof(raw[0]), "%s/data.txt", S->rawdir));
+    PetscCall(PetscSNPrintf(raw[1], sizeof(raw[1]), "%s/info.txt", S->rawdir));
+    for (int i = 0; i < 2; i++) {
+      PetscCall(HylcFileCheckOutput(PETSC_COMM_SELF, raw[i], "-sampler_export_raw"));
+      PetscCall(HylcFileCheckDistinct(PETSC_COMM_SELF, raw[i], "-sampler_export_raw", pfile, "-pattern_file"));
+    }
+  }
+  if (!S->resume && !S->overwrite) PetscCheck(access(S->output, F_OK) != 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "Output %s exists: start over with -sampler_overwrite, or continue its run with -sampler_resume", S->output);
+  if (S->resume) PetscCheck(access(S->output, F_OK) != 0 || access(jpath, F_OK) == 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-sampler_resume: output %s exists but its journal %s does not, so there is no run to continue: start over with -sampler_overwrite", S->output, jpath);
+  PetscCall(HylcSamplesIdentity(S->pat, &S->identity));
+  PetscCall(HylcJournalOpen(jpath, S->resume ? HYLC_JOURNAL_RESUME : (S->overwrite ? HYLC_JOURNAL_OVERWRITE : HYLC_JOURNAL_NEW), S->nsamples, S->identity, &S->journal));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /*@C
-  HylcSamplerSetUp - Refuses unknown options and an unwritable output (before any work), then computes
-  the reference state when asked for (Algorithm C1). Collective.
+  HylcSamplerSetUp - Before any solve: refuses unknown options, checks every output path (writable,
+  not a directory, not an input), locks and opens the journal (a resume with other settings is refused
+  here, naming them); the verdict of rank 0 is shared, so every rank raises the same error. Then
+  computes the reference state when asked for (Algorithm C1). Collective.
 @*/
 PetscErrorCode HylcSamplerSetUp(HylcSampler S)
 {
   HylcPatternType type;
   PetscBool       isfile;
-  int             ok = 1;
+  int             code      = 0;
+  char            msg[2048] = "";
 
   PetscFunctionBegin;
   PetscCheck(S->micro, S->comm, PETSC_ERR_ARG_WRONGSTATE, "Call HylcSamplerSetFromOptions() first");
   PetscCall(HylcCheckOptionsUsed(S->comm));
-  if (!S->rank) { /* the output's directory must be writable */
-    char dir[PETSC_MAX_PATH_LEN], *slash;
-    PetscCall(PetscStrncpy(dir, S->output, sizeof(dir)));
-    slash = strrchr(dir, '/');
-    if (slash) *slash = 0;
-    ok = access(slash ? (dir[0] ? dir : "/") : ".", W_OK) == 0;
+  PetscCheck(!(S->resume && S->overwrite), S->comm, PETSC_ERR_USER_INPUT, "-sampler_resume (continue the run) and -sampler_overwrite (start over) exclude each other");
+  if (!S->rank) {
+    PetscErrorCode ierr;
+    PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+    ierr = CheckOutputsAndLock(S);
+    PetscCall(PetscPopErrorHandler());
+    if (ierr) {
+      char *text = NULL;
+      code       = (int)ierr;
+      PetscCall(PetscErrorMessage(ierr, NULL, &text));
+      PetscCall(PetscStrncpy(msg, text && text[0] ? text : "checking the outputs failed", sizeof(msg)));
+    }
   }
-  PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, S->comm));
-  PetscCheck(ok, S->comm, PETSC_ERR_FILE_OPEN, "Cannot write the output -sampler_output %s: its directory is not writable", S->output);
+  PetscCallMPI(MPI_Bcast(&code, 1, MPI_INT, 0, S->comm));
+  if (code) {
+    PetscCallMPI(MPI_Bcast(msg, (PetscMPIInt)sizeof(msg), MPI_CHAR, 0, S->comm));
+    SETERRQ(S->comm, (PetscErrorCode)code, "%s", msg);
+  }
   PetscCall(HylcPatternGetType(S->pat, &type));
   PetscCall(PetscStrcmp(type, HYLCPATTERNFILE, &isfile));
   if (S->refmode == 1 || (S->refmode == 0 && !isfile)) {
@@ -303,29 +361,27 @@ static PetscErrorCode Drain(HylcSampler S, HylcJournal J, Progress *pg, PetscInt
    and the area density (kg/m^2) */
 static PetscErrorCode ExportRaw(HylcSampler S, const HylcSampleRecord *all, const unsigned char *done)
 {
-  char      path[PETSC_MAX_PATH_LEN + 16];
+  char      path[PETSC_MAX_PATH_LEN + 16], tmp[PETSC_MAX_PATH_LEN + 32];
   FILE     *fp;
   PetscReal px, py, rhoA;
   long      rows = 0, skipped = 0;
 
   PetscFunctionBegin;
   PetscCall(PetscSNPrintf(path, sizeof(path), "%s/data.txt", S->rawdir));
-  fp = fopen(path, "w");
-  PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot write %s (-sampler_export_raw)", path);
+  PetscCall(HylcFileOpenTemp(path, tmp, sizeof(tmp), &fp));
   for (long k = 0; k < S->nsamples; k++) {
     if (!done[k] || all[k].term == 0) continue;
     if (all[k].status != HYLC_MICRO_CONVERGED) skipped++;
     fprintf(fp, "%.17g %.17g %.17g %.17g %.17g %.17g %.17g\n", all[k].z[0], all[k].z[1], all[k].z[2], all[k].z[3], all[k].z[4], all[k].z[5], all[k].psi);
     rows++;
   }
-  PetscCheck(fclose(fp) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot write %s", path);
+  PetscCall(HylcFileCommitTemp(&fp, tmp, path));
   PetscCall(HylcPatternGetPeriods(S->pat, &px, &py));
   PetscCall(HylcPatternGetAreaDensity(S->pat, S->density, &rhoA));
   PetscCall(PetscSNPrintf(path, sizeof(path), "%s/info.txt", S->rawdir));
-  fp = fopen(path, "w");
-  PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot write %s (-sampler_export_raw)", path);
+  PetscCall(HylcFileOpenTemp(path, tmp, sizeof(tmp), &fp));
   fprintf(fp, "area %.17g\ndensity %.17g\n", (double)(px * py), (double)rhoA);
-  PetscCheck(fclose(fp) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot write %s", path);
+  PetscCall(HylcFileCommitTemp(&fp, tmp, path));
   PetscCall(PetscPrintf(PETSC_COMM_SELF, "[sampler] wrote %s/data.txt (%ld rows%s) and info.txt\n", S->rawdir, rows, skipped ? ", some not converged: see /samples/status" : ""));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -336,8 +392,8 @@ static PetscErrorCode ExportRaw(HylcSampler S, const HylcSampleRecord *all, cons
 @*/
 PetscErrorCode HylcSamplerRun(HylcSampler S)
 {
-  char              jpath[PETSC_MAX_PATH_LEN + 16], fingerprint[1024];
-  HylcJournal       J = NULL;
+  char              jpath[PETSC_MAX_PATH_LEN + 16];
+  HylcJournal       J = S->journal;
   unsigned char    *done;
   HylcSampleRecord *recs;
   Progress          pg;
@@ -346,12 +402,7 @@ PetscErrorCode HylcSamplerRun(HylcSampler S)
   PetscFunctionBegin;
   PetscCall(PetscLogEventBegin(HYLC_SamplerRun, 0, 0, 0, 0));
   PetscCall(PetscSNPrintf(jpath, sizeof(jpath), "%s.journal", S->output));
-  {
-    /* the run's identity: pattern, model, plan (a resumed run must be the same run) */
-    HylcPatternData D;
-    PetscCall(HylcPatternGetData(S->pat, &D));
-    PetscCall(PetscSNPrintf(fingerprint, sizeof(fingerprint), "hylc %s; pattern N=%d px=%.17g py=%.17g r=%.17g X0=%.17g; yarn E=%.17g Es=%.17g G=%.17g kc=%.17g r=%.17g pts=%d type=%d arc=%.17g; plan n1=%d n2=%d terms=%d ranges=%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g", HYLC_VERSION_STRING, (int)D.nv, (double)D.px, (double)D.py, (double)D.radius, (double)D.X[0], (double)S->model.E, (double)S->model.Es, (double)S->model.G, (double)S->model.kc, (double)S->model.radius, (int)S->model.contactPoints, (int)S->model.contactType, (double)S->model.excludeArc, S->plan.n1, S->plan.n2, S->plan.terms, S->plan.min1[0], S->plan.max1[0], S->plan.min1[1], S->plan.max1[1], S->plan.min1[2], S->plan.max1[2], S->plan.min1[3], S->plan.max1[3], S->plan.min1[4], S->plan.max1[4]));
-  }
+  PetscCheck(S->rank || J, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE, "Call HylcSamplerSetUp() first");
   PetscCall(PetscMalloc1(S->nsamples + 1, &done));
   PetscCall(PetscArrayzero(done, S->nsamples + 1));
   PetscCall(PetscMemzero(&pg, sizeof(pg)));
@@ -359,7 +410,6 @@ PetscErrorCode HylcSamplerRun(HylcSampler S)
   if (!S->rank) {
     const unsigned char *jd;
     PetscInt             nd;
-    PetscCall(HylcJournalOpen(jpath, S->resume, S->nsamples, fingerprint, &J));
     PetscCall(HylcJournalGetDone(J, &nd, &jd));
     PetscCall(PetscArraycpy(done, jd, S->nsamples));
     pg.done = pg.converged0 = nd;
@@ -413,11 +463,11 @@ PetscErrorCode HylcSamplerRun(HylcSampler S)
     PetscCall(HylcJournalGetDone(J, &nd, &jd));
     PetscCall(HylcJournalGetRecords(J, &all));
     PetscCall(PetscOptionsGetAll(NULL, &opts));
-    PetscCall(HylcSamplesWriteHDF5(S->output, S->nsamples, all, jd, S->pat, &S->model, opts));
+    PetscCall(HylcSamplesWriteHDF5WithIdentity(S->output, S->nsamples, all, jd, S->pat, &S->model, opts, S->identity));
     PetscCall(PetscFree(opts));
     PetscCall(PetscPrintf(PETSC_COMM_SELF, "[sampler] wrote %s: %ld samples, %ld not converged\n", S->output, (long)nd, pg.failed));
     if (S->rawdir[0]) PetscCall(ExportRaw(S, all, jd));
-    PetscCall(HylcJournalClose(&J));
+    PetscCall(HylcJournalClose(&S->journal));
   }
   PetscCall(PetscFree(recs));
   PetscCall(PetscFree(done));

@@ -3,6 +3,7 @@
      any moment (plain C stdio + POSIX);
    - the HDF5 samples file (raw HDF5 C API), written atomically. */
 #include <hylc/samples.h>
+#include <hylc/sha256.h>
 #include <petsc/private/petscimpl.h>
 #include <hdf5.h>
 #include <errno.h>
@@ -13,6 +14,7 @@
 #include <string.h>
 #include <sys/file.h>
 #include <sys/stat.h>
+#include <sys/sysmacros.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -22,15 +24,16 @@
 
 #define JOURNAL_MAGIC     "HYLCJNL1"
 #define JOURNAL_BOM       0x01020304u
-#define JOURNAL_VERSION   1u
+#define JOURNAL_VERSION   2u  /* 1: a short fingerprint (hylc before the complete identity) */
 #define JOURNAL_PAYLOAD   136 /* packed record without checksum */
 #define JOURNAL_RECSIZE   (JOURNAL_PAYLOAD + 8)
-#define JOURNAL_FIXEDHEAD 32 /* header bytes before the fingerprint text */
-#define JOURNAL_MAXFP     (1 << 24)
+#define JOURNAL_FIXEDHEAD 64 /* header bytes before the identity text: 32 fixed + the SHA-256 of the identity */
+#define JOURNAL_MAXID     (1 << 24)
 
 struct _n_HylcJournal {
   char             *path;
-  char             *fingerprint;
+  char             *identity;
+  unsigned char     digest[32];
   FILE             *fp;
   long              nsamples;
   PetscInt          ndone, ndropped;
@@ -105,106 +108,138 @@ static int UnpackRecord(const unsigned char b[JOURNAL_RECSIZE], long nsamples, H
   return 0;
 }
 
-/* takes the exclusive lock of an open journal (the caller closes fp on error) */
-static PetscErrorCode JournalLock(FILE *fp, const char path[])
+/* the pid holding a flock on the file of fd, from /proc/locks (Linux), or 0 if unknown */
+static int LockHolder(int fd)
+{
+  struct stat   st;
+  char          line[256];
+  FILE         *f;
+  int           pid = 0;
+  unsigned      maj, min;
+  unsigned long ino;
+
+  if (fstat(fd, &st) || !(f = fopen("/proc/locks", "r"))) return 0;
+  while (!pid && fgets(line, sizeof(line), f)) {
+    char type[16];
+    int  p;
+    if (sscanf(line, "%*d: %15s %*s %*s %d %x:%x:%lu", type, &p, &maj, &min, &ino) == 5 && !strcmp(type, "FLOCK") && maj == major(st.st_dev) && min == minor(st.st_dev) && ino == (unsigned long)st.st_ino) pid = p;
+  }
+  fclose(f);
+  return pid;
+}
+
+/* Opens (creating it if missing) and locks the journal file before anything is read or written; the
+   lock is on the file's inode, so the path is checked to still name it after locking (a racing
+   process may have removed the file it created). *created: this call created the file. */
+static PetscErrorCode JournalLockPath(const char path[], int *fdout, PetscBool *created)
 {
   PetscFunctionBegin;
-  if (flock(fileno(fp), LOCK_EX | LOCK_NB)) {
-    int err = errno;
-    PetscCheck(err != EWOULDBLOCK, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Journal %s is in use by another process (is the same run already going?)", path);
-    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot lock journal %s: %s", path, strerror(err));
+  *fdout = -1;
+  for (int attempt = 0;; attempt++) {
+    struct stat a, b;
+    int         fd = open(path, O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+
+    *created = fd >= 0 ? PETSC_TRUE : PETSC_FALSE;
+    if (fd < 0 && errno == EEXIST) fd = open(path, O_RDWR | O_CLOEXEC);
+    if (fd < 0 && errno == ENOENT && attempt < 100) continue; /* removed between the two opens */
+    PetscCheck(fd >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot open journal %s: %s", path, strerror(errno));
+    if (flock(fd, LOCK_EX | LOCK_NB)) {
+      int err = errno, pid = 0;
+      for (int k = 0; err == EWOULDBLOCK && !pid && k < 3; k++) { /* the holder may be between its lock and /proc/locks */
+        if (k) usleep(10000);
+        pid = LockHolder(fd);
+      }
+      close(fd);
+      PetscCheck(err != EWOULDBLOCK || pid <= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Journal %s is in use by another job (pid %d): is the same run already going?", path, pid);
+      PetscCheck(err != EWOULDBLOCK, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Journal %s is in use by another job: is the same run already going?", path);
+      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot lock journal %s: %s", path, strerror(err));
+    }
+    if (!fstat(fd, &a) && !stat(path, &b) && a.st_dev == b.st_dev && a.st_ino == b.st_ino) {
+      *fdout = fd;
+      break;
+    }
+    close(fd); /* the path names another file now: lock that one */
+    PetscCheck(attempt < 100, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot lock journal %s: it keeps being replaced", path);
   }
+  if (*created) HylcSyncParentDirectory(path);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* writes a new journal holding only the header: to path.tmp, fsync, rename */
-static PetscErrorCode JournalCreateFile(HylcJournal j)
+/* writes the header of a new journal in place (the file is locked and emptied first), then fsync */
+static PetscErrorCode JournalWriteHeader(HylcJournal j, int fd)
 {
-  char           tmp[PETSC_MAX_PATH_LEN];
-  size_t         L = strlen(j->fingerprint), H = JOURNAL_FIXEDHEAD + L + 8;
+  size_t         L = strlen(j->identity), H = JOURNAL_FIXEDHEAD + L + 8;
   unsigned char *head;
   uint32_t       u[4] = {JOURNAL_BOM, JOURNAL_VERSION, JOURNAL_RECSIZE, (uint32_t)L};
   int64_t        ns   = j->nsamples;
   uint64_t       h;
-  FILE          *fp;
+  ssize_t        w;
 
   PetscFunctionBegin;
-  /* refuse to replace a journal that another process is writing */
-  fp = fopen(j->path, "rb");
-  if (fp) {
-    PetscErrorCode ierr = JournalLock(fp, j->path);
-    fclose(fp);
-    PetscCall(ierr);
-  }
-  PetscCheck(strlen(j->path) + 5 <= sizeof(tmp), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Journal path too long: %s", j->path);
-  snprintf(tmp, sizeof(tmp), "%s.tmp", j->path);
   PetscCall(PetscMalloc1(H, &head));
   memcpy(head, JOURNAL_MAGIC, 8);
   memcpy(head + 8, u, 16);
   memcpy(head + 24, &ns, 8);
-  memcpy(head + JOURNAL_FIXEDHEAD, j->fingerprint, L);
+  memcpy(head + 32, j->digest, 32);
+  memcpy(head + JOURNAL_FIXEDHEAD, j->identity, L);
   h = Fnv1a64(head, JOURNAL_FIXEDHEAD + L);
   memcpy(head + JOURNAL_FIXEDHEAD + L, &h, 8);
-  fp = fopen(tmp, "wb");
-  if (!fp) {
+  if (ftruncate(fd, 0) || (w = pwrite(fd, head, H, 0)) != (ssize_t)H || fsync(fd)) {
     int err = errno;
+    if (ftruncate(fd, 0)) { /* leave no partial header behind (an empty journal is a new one) */
+    }
     PetscCall(PetscFree(head));
-    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot create journal %s: %s", tmp, strerror(err));
-  }
-  if (fwrite(head, 1, H, fp) != H || fflush(fp) || fsync(fileno(fp))) {
-    int err = errno;
-    fclose(fp);
-    remove(tmp);
-    PetscCall(PetscFree(head));
-    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot write journal %s: %s", tmp, strerror(err));
+    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot write journal %s: %s", j->path, strerror(err ? err : ENOSPC));
   }
   PetscCall(PetscFree(head));
-  PetscCheck(!fclose(fp), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot write journal %s: %s", tmp, strerror(errno));
-  PetscCheck(!rename(tmp, j->path), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot rename %s to %s: %s", tmp, j->path, strerror(errno));
-  HylcSyncParentDirectory(j->path);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* reads and checks the header of an existing journal; *hsize: header bytes */
-static PetscErrorCode JournalReadHeader(HylcJournal j, long *hsize)
+/* reads and checks the header of an existing journal: *hsize header bytes; *same: its identity and
+   sample count are this run's (else *why: the differences, PetscFree) */
+static PetscErrorCode JournalReadHeader(HylcJournal j, long *hsize, PetscBool *same, char **why)
 {
   unsigned char fixed[JOURNAL_FIXEDHEAD], *head;
   uint32_t      u[4];
   int64_t       ns;
   uint64_t      h, hs;
-  size_t        L;
+  size_t        L, got;
 
   PetscFunctionBegin;
-  PetscCheck(fread(fixed, 1, JOURNAL_FIXEDHEAD, j->fp) == JOURNAL_FIXEDHEAD && !memcmp(fixed, JOURNAL_MAGIC, 8), PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s is not a hylc journal (bad magic); remove it or run without -sampler_resume", j->path);
+  *same = PETSC_FALSE;
+  *why  = NULL;
+  got   = fread(fixed, 1, JOURNAL_FIXEDHEAD, j->fp);
+  PetscCheck(got >= 16 && !memcmp(fixed, JOURNAL_MAGIC, 8), PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s is not a hylc journal (bad magic): remove it or choose another -sampler_output", j->path);
+  memcpy(u, fixed + 8, 8);
+  PetscCheck(u[0] == JOURNAL_BOM, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "Journal %s was written on a machine of another byte order", j->path);
+  PetscCheck(u[1] >= JOURNAL_VERSION, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "Journal %s was written by an earlier hylc (journal format %u, without the complete run identity) and cannot be resumed safely: start over with -sampler_overwrite", j->path, (unsigned)u[1]);
+  PetscCheck(got == JOURNAL_FIXEDHEAD, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "Journal %s: corrupt header (too short): start over with -sampler_overwrite", j->path);
   memcpy(u, fixed + 8, 16);
   memcpy(&ns, fixed + 24, 8);
-  PetscCheck(u[0] == JOURNAL_BOM, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "Journal %s was written on a machine of another byte order", j->path);
-  PetscCheck(u[1] == JOURNAL_VERSION && u[2] == JOURNAL_RECSIZE, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "Journal %s has format version %u (record size %u); this hylc writes version %u (record size %u)", j->path, (unsigned)u[1], (unsigned)u[2], JOURNAL_VERSION, (unsigned)JOURNAL_RECSIZE);
-  PetscCheck(u[3] < JOURNAL_MAXFP, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "Journal %s: corrupt header (fingerprint length %u)", j->path, (unsigned)u[3]);
+  PetscCheck(u[1] == JOURNAL_VERSION && u[2] == JOURNAL_RECSIZE, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "Journal %s has format version %u (record size %u); this hylc reads version %u (record size %u)", j->path, (unsigned)u[1], (unsigned)u[2], JOURNAL_VERSION, (unsigned)JOURNAL_RECSIZE);
+  PetscCheck(u[3] < JOURNAL_MAXID, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "Journal %s: corrupt header (identity length %u): start over with -sampler_overwrite", j->path, (unsigned)u[3]);
   L = u[3];
   PetscCall(PetscMalloc1(JOURNAL_FIXEDHEAD + L + 1, &head));
   memcpy(head, fixed, JOURNAL_FIXEDHEAD);
   if (fread(head + JOURNAL_FIXEDHEAD, 1, L, j->fp) != L || fread(&hs, 1, 8, j->fp) != 8 || (h = Fnv1a64(head, JOURNAL_FIXEDHEAD + L)) != hs) {
     PetscCall(PetscFree(head));
-    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "Journal %s: corrupt header (checksum mismatch)", j->path);
+    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "Journal %s: corrupt header (checksum mismatch): start over with -sampler_overwrite", j->path);
   }
   head[JOURNAL_FIXEDHEAD + L] = 0;
-  if (ns != j->nsamples || strcmp((char *)head + JOURNAL_FIXEDHEAD, j->fingerprint)) {
-    const char *stored = (char *)head + JOURNAL_FIXEDHEAD, *mine = j->fingerprint;
-    size_t      k = 0;
-    char        msg[512];
-
-    while (stored[k] && stored[k] == mine[k]) k++;
-    k = k > 30 ? k - 30 : 0;
-    if (ns != j->nsamples)
-      snprintf(msg, sizeof(msg), "it has %lld samples, this run %ld", (long long)ns, j->nsamples);
-    else
-      snprintf(msg, sizeof(msg), "the fingerprints differ; journal: ...%.80s..., this run: ...%.80s...", stored + k, mine + k);
-    PetscCall(PetscFree(head));
-    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "Journal %s belongs to a different run (%s); remove it or run without -sampler_resume", j->path, msg);
-  }
+  *hsize                      = (long)(JOURNAL_FIXEDHEAD + L + 8);
+  if (memcmp(head + 32, j->digest, 32)) {
+    PetscCall(HylcSamplesIdentityDiff((char *)head + JOURNAL_FIXEDHEAD, j->identity, why));
+    if (!(*why)[0]) { /* same lines, another order or spacing: not this hylc's canonical text */
+      PetscCall(PetscFree(*why));
+      PetscCall(PetscStrallocpy("the identity digests differ", why));
+    }
+  } else if (ns != j->nsamples) {
+    char msg[128];
+    PetscCall(PetscSNPrintf(msg, sizeof(msg), "it has %lld samples, this run %ld", (long long)ns, j->nsamples));
+    PetscCall(PetscStrallocpy(msg, why));
+  } else
+    *same = PETSC_TRUE;
   PetscCall(PetscFree(head));
-  *hsize = (long)(JOURNAL_FIXEDHEAD + L + 8);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -234,17 +269,41 @@ static PetscErrorCode JournalReadRecords(HylcJournal j, long hsize)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode JournalOpen_Private(HylcJournal j, PetscBool resume)
+static PetscErrorCode JournalOpen_Private(HylcJournal j, HylcJournalMode mode, PetscBool *created)
 {
-  long hsize;
+  int         fd;
+  struct stat st;
+  long        hsize = 0;
+  PetscBool   same, fresh;
+  char       *why = NULL;
 
   PetscFunctionBegin;
-  if (!resume || access(j->path, F_OK)) PetscCall(JournalCreateFile(j));
-  j->fp = fopen(j->path, "r+b");
+  PetscCall(JournalLockPath(j->path, &fd, created));
+  j->fp = fdopen(fd, "r+b");
+  if (!j->fp) close(fd);
   PetscCheck(j->fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot open journal %s: %s", j->path, strerror(errno));
-  PetscCall(JournalLock(j->fp, j->path));
-  PetscCall(JournalReadHeader(j, &hsize));
-  PetscCall(JournalReadRecords(j, hsize));
+  PetscCheck(!fstat(fd, &st), PETSC_COMM_SELF, PETSC_ERR_FILE_READ, "Cannot stat journal %s: %s", j->path, strerror(errno));
+  fresh = (PetscBool)(st.st_size == 0 || mode == HYLC_JOURNAL_OVERWRITE); /* empty: a new file, or a creator that died before its header */
+  if (!fresh) {
+    PetscCall(JournalReadHeader(j, &hsize, &same, &why));
+    if (mode == HYLC_JOURNAL_NEW) {
+      const long nrec = (long)((st.st_size - hsize) / JOURNAL_RECSIZE);
+      PetscCall(PetscFree(why));
+      PetscCheck(st.st_size == hsize, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "Journal %s holds %ld sample%s of an earlier run: continue it with -sampler_resume, or start over with -sampler_overwrite", j->path, nrec, nrec == 1 ? "" : "s");
+      fresh = PETSC_TRUE; /* a header without records: nothing to lose */
+    } else if (!same) {
+      char msg[1024];
+      PetscCall(PetscStrncpy(msg, why, sizeof(msg)));
+      PetscCall(PetscFree(why));
+      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "Journal %s belongs to a different run: %s. Resume with that run's settings, or start over with -sampler_overwrite", j->path, msg);
+    }
+  }
+  if (fresh) {
+    PetscCall(JournalWriteHeader(j, fd));
+    hsize = (long)(JOURNAL_FIXEDHEAD + strlen(j->identity) + 8);
+    PetscCheck(!fseeko(j->fp, hsize, SEEK_SET), PETSC_COMM_SELF, PETSC_ERR_FILE_READ, "Cannot seek in journal %s: %s", j->path, strerror(errno));
+  } else
+    PetscCall(JournalReadRecords(j, hsize));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -252,34 +311,44 @@ static void JournalFree(HylcJournal j)
 {
   if (j->fp) fclose(j->fp); /* closing releases the lock */
   PetscFree(j->path);
-  PetscFree(j->fingerprint);
+  PetscFree(j->identity);
   PetscFree(j->done);
   PetscFree(j->recs);
   PetscFree(j);
 }
 
 /*@C
-  HylcJournalOpen - Creates or (resume) reopens the journal of a run; see include/hylc/samples.h. Not collective.
+  HylcJournalOpen - Locks, then creates, resumes or overwrites the journal of a run; see
+  include/hylc/samples.h. Not collective.
 @*/
-PetscErrorCode HylcJournalOpen(const char path[], PetscBool resume, long nsamples, const char fingerprint[], HylcJournal *journal)
+PetscErrorCode HylcJournalOpen(const char path[], HylcJournalMode mode, long nsamples, const char identity[], HylcJournal *journal)
 {
   HylcJournal    j;
+  PetscBool      created = PETSC_FALSE;
   PetscErrorCode ierr;
 
   PetscFunctionBegin;
   PetscValidCharPointer(path, 1);
   PetscValidPointer(journal, 5);
   *journal = NULL;
+  PetscCheck(mode == HYLC_JOURNAL_NEW || mode == HYLC_JOURNAL_RESUME || mode == HYLC_JOURNAL_OVERWRITE, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Journal %s: unknown mode %d", path, (int)mode);
   PetscCheck(nsamples >= 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Journal %s: negative number of samples %ld", path, nsamples);
-  PetscCheck(!fingerprint || strlen(fingerprint) < JOURNAL_MAXFP, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Journal %s: fingerprint too long", path);
+  PetscCheck(!identity || strlen(identity) < JOURNAL_MAXID, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Journal %s: identity too long", path);
   PetscCall(PetscNew(&j));
   j->nsamples = nsamples;
   PetscCall(PetscStrallocpy(path, &j->path));
-  PetscCall(PetscStrallocpy(fingerprint ? fingerprint : "", &j->fingerprint));
+  PetscCall(PetscStrallocpy(identity ? identity : "", &j->identity));
+  {
+    HylcSha256 s;
+    HylcSha256Init(&s);
+    HylcSha256Update(&s, j->identity, strlen(j->identity));
+    HylcSha256Final(&s, j->digest);
+  }
   PetscCall(PetscCalloc1(nsamples + 1, &j->done));
   PetscCall(PetscCalloc1(nsamples + 1, &j->recs));
-  ierr = JournalOpen_Private(j, resume);
-  if (ierr) JournalFree(j); /* closes the file and releases the lock */
+  ierr = JournalOpen_Private(j, mode, &created);
+  if (ierr && created && j->fp) unlink(j->path); /* still locked: nobody else has it; leave no empty journal */
+  if (ierr) JournalFree(j);                      /* closes the file and releases the lock */
   PetscCall(ierr);
   *journal = j;
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -681,70 +750,165 @@ static PetscErrorCode WriteFile(hid_t file, long N, const HylcSampleRecord recs[
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* fsync a closed file by name (durability of the data before the rename) */
-static PetscErrorCode SyncFile(const char path[])
+/* a one-dimensional dataset of n strings */
+static PetscErrorCode H5StringList(hid_t loc, const char name[], int n, const char *const values[], const char description[])
 {
-  int fd = open(path, O_RDONLY);
+  hid_t   t, s, d;
+  hsize_t dim = (hsize_t)n;
 
   PetscFunctionBegin;
-  PetscCheck(fd >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot reopen %s: %s", path, strerror(errno));
-  if (fsync(fd)) {
-    int err = errno;
-    close(fd);
-    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot fsync %s: %s", path, strerror(err));
+  HylcCallHDF5Id(t, H5Tcopy(H5T_C_S1));
+  HylcCallHDF5(H5Tset_size(t, H5T_VARIABLE));
+  HylcCallHDF5(H5Tset_cset(t, H5T_CSET_UTF8));
+  HylcCallHDF5Id(s, H5Screate_simple(1, &dim, NULL));
+  HylcCallHDF5Id(d, H5Dcreate2(loc, name, t, s, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+  if (n) HylcCallHDF5(H5Dwrite(d, t, H5S_ALL, H5S_ALL, H5P_DEFAULT, values));
+  PetscCall(H5AttrString(d, "description", description));
+  HylcCallHDF5(H5Dclose(d));
+  HylcCallHDF5(H5Sclose(s));
+  HylcCallHDF5(H5Tclose(t));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* /provenance: the run's identity text, its SHA-256, and its lines by kind */
+static PetscErrorCode WriteProvenance(hid_t file, const char identity[])
+{
+  char         hex[65], *copy, *line, *save = NULL;
+  const char  *version[3] = {"", "", ""};
+  const char **opts, **pat;
+  int          nopt = 0, npat = 0, nlines = 1;
+  hid_t        g;
+
+  PetscFunctionBegin;
+  HylcSamplesIdentityDigest(identity, hex);
+  for (const char *c = identity; *c; c++) nlines += *c == '\n';
+  PetscCall(PetscStrallocpy(identity, &copy));
+  PetscCall(PetscMalloc2(nlines, &opts, nlines, &pat));
+  for (line = strtok_r(copy, "\n", &save); line; line = strtok_r(NULL, "\n", &save)) {
+    if (!strncmp(line, "option ", 7))
+      opts[nopt++] = line + 7;
+    else if (!strncmp(line, "pattern ", 8))
+      pat[npat++] = line + 8;
+    else if (!strncmp(line, "version hylc ", 13))
+      version[0] = line + 13;
+    else if (!strncmp(line, "version build ", 14))
+      version[1] = line + 14;
+    else if (!strncmp(line, "version petsc ", 14))
+      version[2] = line + 14;
   }
-  close(fd);
+  HylcCallHDF5Id(g, H5Gcreate2(file, "provenance", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+  PetscCall(H5AttrString(g, "description", "the identity of the run: everything that can change a sample's result (versions, the pattern bit for bit, every option but the neutral ones of docs/output-format.md); digest = SHA-256 of the identity text, as in the journal"));
+  PetscCall(H5AttrString(g, "digest", hex));
+  PetscCall(H5AttrString(g, "digest_algorithm", "sha256"));
+  PetscCall(H5AttrString(g, "hylc_version", version[0]));
+  PetscCall(H5AttrString(g, "hylc_build", version[1]));
+  PetscCall(H5AttrString(g, "petsc_version", version[2]));
+  PetscCall(H5StringList(g, "options", nopt, opts, "the options of the identity, \"-name value\", sorted by name (neutral options left out)"));
+  PetscCall(H5StringList(g, "pattern", npat, pat, "the pattern of the identity, \"field value\" (scalars) or \"field sha256:<digest of the array's bytes>\" (arrays, native layout)"));
+  {
+    hid_t t, s, d;
+    HylcCallHDF5Id(t, H5Tcopy(H5T_C_S1));
+    HylcCallHDF5(H5Tset_size(t, H5T_VARIABLE));
+    HylcCallHDF5(H5Tset_cset(t, H5T_CSET_UTF8));
+    HylcCallHDF5Id(s, H5Screate(H5S_SCALAR));
+    HylcCallHDF5Id(d, H5Dcreate2(g, "identity", t, s, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+    HylcCallHDF5(H5Dwrite(d, t, H5S_ALL, H5S_ALL, H5P_DEFAULT, &identity));
+    PetscCall(H5AttrString(d, "description", "the canonical identity text (its SHA-256 is /provenance@digest)"));
+    HylcCallHDF5(H5Dclose(d));
+    HylcCallHDF5(H5Sclose(s));
+    HylcCallHDF5(H5Tclose(t));
+  }
+  HylcCallHDF5(H5Gclose(g));
+  PetscCall(PetscFree2(opts, pat));
+  PetscCall(PetscFree(copy));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* builds the whole file in memory (HDF5's core driver, no backing store) and returns its image */
+static PetscErrorCode BuildImage(const char path[], long nsamples, const HylcSampleRecord recs[], const unsigned char done[], HylcPattern reference, const HylcYarnModel *model, const char optionsText[], const char identity[], void **image, size_t *size)
+{
+  hid_t          fapl, file;
+  ssize_t        n;
+  PetscErrorCode ierr;
+  char           msg[256];
+
+  PetscFunctionBegin;
+  *image = NULL;
+  *size  = 0;
+  HylcCallHDF5Id(fapl, H5Pcreate(H5P_FILE_ACCESS));
+  if (H5Pset_fclose_degree(fapl, H5F_CLOSE_STRONG) < 0 || H5Pset_fapl_core(fapl, 1 << 20, 0) < 0 || (file = H5Fcreate(path, H5F_ACC_TRUNC, H5P_DEFAULT, fapl)) < 0) {
+    HylcHDF5ErrorText(msg);
+    H5Pclose(fapl);
+    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "Cannot create the samples file %s in memory%s", path, msg);
+  }
+  H5Pclose(fapl);
+  ierr = WriteFile(file, nsamples, recs, done, reference, model, optionsText);
+  if (!ierr && identity) ierr = WriteProvenance(file, identity);
+  if (!ierr) {
+    if (H5Fflush(file, H5F_SCOPE_GLOBAL) < 0 || (n = H5Fget_file_image(file, NULL, 0)) <= 0) {
+      HylcHDF5ErrorText(msg);
+      H5Fclose(file);
+      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "Cannot build the samples file %s%s", path, msg);
+    }
+    ierr = PetscMalloc((size_t)n, image);
+    if (!ierr && H5Fget_file_image(file, *image, (size_t)n) != n) {
+      HylcHDF5ErrorText(msg);
+      H5Fclose(file);
+      PetscCall(PetscFree(*image));
+      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "Cannot build the samples file %s%s", path, msg);
+    }
+    *size = (size_t)n;
+  }
+  H5Fclose(file); /* strong close: also every object an error left open */
+  if (ierr) PetscCall(PetscFree(*image));
+  PetscCall(ierr);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /*@C
-  HylcSamplesWriteHDF5 - Writes the samples file (docs/output-format.md) atomically: path.tmp, then
-  rename. Not collective (rank 0).
+  HylcSamplesWriteHDF5WithIdentity - Writes the samples file (docs/output-format.md) atomically: the
+  HDF5 image is built in memory, written to a unique temporary beside path, fsynced and renamed; on any
+  failure (a full disk, say) the temporary is removed, path is left as it was and the error names it.
+  Not collective (rank 0).
 @*/
-PetscErrorCode HylcSamplesWriteHDF5(const char path[], long nsamples, const HylcSampleRecord recs[], const unsigned char done[], HylcPattern reference, const HylcYarnModel *model, const char optionsText[])
+PetscErrorCode HylcSamplesWriteHDF5WithIdentity(const char path[], long nsamples, const HylcSampleRecord recs[], const unsigned char done[], HylcPattern reference, const HylcYarnModel *model, const char optionsText[], const char identity[])
 {
   char           tmp[PETSC_MAX_PATH_LEN];
-  hid_t          fapl = -1, file = -1;
   H5E_auto2_t    efunc;
-  void          *edata;
+  void          *edata, *image = NULL;
+  size_t         size = 0;
+  FILE          *fp   = NULL;
   PetscErrorCode ierr;
 
   PetscFunctionBegin;
   PetscValidCharPointer(path, 1);
   PetscCheck(nsamples >= 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%s: negative number of samples %ld", path, nsamples);
-  PetscCheck(strlen(path) + 5 <= sizeof(tmp), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Output path too long: %s", path);
-  snprintf(tmp, sizeof(tmp), "%s.tmp", path);
-  HylcH5File = tmp;
+  HylcH5File = path;
   /* HDF5 prints nothing itself: its innermost message goes into the PETSc error */
   H5Eget_auto2(H5E_DEFAULT, &efunc, &edata);
   H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
-  fapl = H5Pcreate(H5P_FILE_ACCESS);
-  if (fapl >= 0) H5Pset_fclose_degree(fapl, H5F_CLOSE_STRONG); /* closing the file closes whatever an error left open */
-  file = H5Fcreate(tmp, H5F_ACC_TRUNC, H5P_DEFAULT, fapl >= 0 ? fapl : H5P_DEFAULT);
-  if (file < 0) {
-    char msg[256];
-    HylcHDF5ErrorText(msg);
-    if (fapl >= 0) H5Pclose(fapl);
-    H5Eset_auto2(H5E_DEFAULT, efunc, edata);
-    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot create the samples file %s%s", tmp, msg);
-  }
-  ierr = WriteFile(file, nsamples, recs, done, reference, model, optionsText);
-  if (H5Fclose(file) < 0 && !ierr) {
-    char msg[256];
-    HylcHDF5ErrorText(msg);
-    H5Pclose(fapl);
-    H5Eset_auto2(H5E_DEFAULT, efunc, edata);
-    remove(tmp);
-    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot close the samples file %s%s", tmp, msg);
-  }
-  if (fapl >= 0) H5Pclose(fapl);
+  ierr = BuildImage(path, nsamples, recs, done, reference, model, optionsText, identity, &image, &size);
   H5Eset_auto2(H5E_DEFAULT, efunc, edata);
   HylcH5File = "?";
-  if (ierr) remove(tmp);
   PetscCall(ierr);
-  PetscCall(SyncFile(tmp));
-  PetscCheck(!rename(tmp, path), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot rename %s to %s: %s", tmp, path, strerror(errno));
-  HylcSyncParentDirectory(path);
+  ierr = HylcFileOpenTemp(path, tmp, sizeof(tmp), &fp);
+  if (!ierr) {
+    if (fwrite(image, 1, size, fp) != size) { /* the error (ENOSPC, EFBIG) stays on the stream: CommitTemp reports it */
+    }
+    ierr = HylcFileCommitTemp(&fp, tmp, path);
+  }
+  PetscCall(PetscFree(image));
+  PetscCall(ierr);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcSamplesWriteHDF5 - HylcSamplesWriteHDF5WithIdentity() without /provenance. Not collective.
+@*/
+PetscErrorCode HylcSamplesWriteHDF5(const char path[], long nsamples, const HylcSampleRecord recs[], const unsigned char done[], HylcPattern reference, const HylcYarnModel *model, const char optionsText[])
+{
+  PetscFunctionBegin;
+  PetscCall(HylcSamplesWriteHDF5WithIdentity(path, nsamples, recs, done, reference, model, optionsText, NULL));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

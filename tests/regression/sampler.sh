@@ -24,30 +24,47 @@ $MPIEXEC -n 3 $tool "${common[@]}" -sampler_output three.h5 >three.txt 2>&1 || {
 [ "$(data one.h5)" = "$(data three.h5)" ] || die "1 and 3 ranks give different data"
 h5dump -d /samples/status one.h5 | grep -q '(0): 0' || die "status dataset"
 
-# killed with SIGKILL, then resumed: the same data, finished samples not recomputed
+# killed with SIGKILL, then resumed (1 and 2 ranks): the same data, finished samples not recomputed; a
+# resume with a setting that changes results is refused before any solve, naming it, journal untouched
 long=(-pattern_type plain -yarn_kc 50 -sampler_terms sx,sa -sampler_n1 40 -sampler_progress 0.5 -sampler_batch 1)
 $tool "${long[@]}" -sampler_output ref.h5 >ref.txt 2>&1 || { cat ref.txt; die "reference run failed"; }
-rm -f kill.h5 kill.h5.journal
-$MPIEXEC -n 2 $tool "${long[@]}" -sampler_output kill.h5 >kill1.txt 2>&1 &
-pid=$!
-s0=
-for i in $(seq 1 1000); do
-  if [ -f kill.h5.journal ]; then
-    s=$(stat -c %s kill.h5.journal)
-    [ -z "$s0" ] && s0=$s
-    [ "$s" -ge $((s0 + 3 * 144)) ] && break
-  fi
-  sleep 0.005
+for np in 1 2; do
+  k=kill$np.h5
+  rm -f $k $k.journal
+  $MPIEXEC -n $np $tool "${long[@]}" -sampler_output $k >kill1.txt 2>&1 &
+  pid=$!
+  s0=
+  for i in $(seq 1 1000); do
+    if [ -f $k.journal ]; then
+      s=$(stat -c %s $k.journal)
+      [ -z "$s0" ] && [ "$s" -gt 0 ] && s0=$s
+      [ -n "$s0" ] && [ "$s" -ge $((s0 + 3 * 144)) ] && break
+    fi
+    sleep 0.005
+  done
+  kill -9 $pid 2>/dev/null; pkill -9 -f "hylc-sample.*$k" 2>/dev/null; wait $pid 2>/dev/null
+  jsize=$(stat -c %s $k.journal)
+  # a setting that changes results: refused before any solve, naming the option and both values
+  $MPIEXEC -n $np $tool "${long[@]}" -sampler_output $k -sampler_resume -micro_rtol 1e-3 >bad.txt 2>&1 && die "$np ranks: resume with -micro_rtol added accepted"
+  grep -q "option -micro_rtol added ('1e-3')" bad.txt || { cat bad.txt; die "$np ranks: the refusal does not name -micro_rtol"; }
+  grep -q '\[sampler\]' bad.txt && { cat bad.txt; die "$np ranks: work started before the refusal"; }
+  $tool "${long[@]}" -sampler_n1 6 -sampler_output $k -sampler_resume >bad.txt 2>&1 && die "resume of a different plan accepted"
+  grep -q "option -sampler_n1 changed from '40' to '6'" bad.txt || { cat bad.txt; die "unclear message for a changed option"; }
+  $tool "${long[@]}" -sampler_output $k >bad.txt 2>&1 && die "a rerun without -sampler_resume replaced a partial journal"
+  grep -q "sampler_resume.*sampler_overwrite" bad.txt || { cat bad.txt; die "the refusal of a rerun does not say how to continue or start over"; }
+  [ "$(stat -c %s $k.journal)" = "$jsize" ] || die "a refused run changed the journal"
+  # progress options, the batch size and output-only options do not change results: accepted
+  $MPIEXEC -n $np $tool "${long[@]}" -sampler_output $k -sampler_resume -sampler_progress 3 -sampler_batch 3 >kill2.txt 2>&1 || { cat kill2.txt; die "$np ranks: resume failed"; }
+  done_before=$(sed -n 's/.*; \([0-9]*\) already done.*/\1/p' kill2.txt)
+  [ -n "$done_before" ] || { cat kill2.txt; die "resume did not report the finished samples"; }
+  [ "$done_before" -gt 0 ] && [ "$done_before" -lt 80 ] || { cat kill2.txt; die "$np ranks: the kill did not interrupt the run ($done_before of 80 done)"; }
+  [ "$(data ref.h5)" = "$(data $k)" ] || die "$np ranks: resumed run gives different data"
+  echo "$np ranks: resumed after $done_before of 80 finished samples"
 done
-kill -9 $pid 2>/dev/null; pkill -9 -f "hylc-sample.*kill.h5" 2>/dev/null; wait $pid 2>/dev/null
-$MPIEXEC -n 2 $tool "${long[@]}" -sampler_output kill.h5 -sampler_resume >kill2.txt 2>&1 || { cat kill2.txt; die "resume failed"; }
-done_before=$(sed -n 's/.*; \([0-9]*\) already done.*/\1/p' kill2.txt)
-[ -n "$done_before" ] || { cat kill2.txt; die "resume did not report the finished samples"; }
-[ "$done_before" -gt 0 ] && [ "$done_before" -lt 80 ] || { cat kill2.txt; die "the kill did not interrupt the run ($done_before of 80 done)"; }
-[ "$(data ref.h5)" = "$(data kill.h5)" ] || die "resumed run gives different data"
-# a resume of a different run is refused
-$tool "${long[@]}" -sampler_n1 6 -sampler_output kill.h5 -sampler_resume >bad.txt 2>&1 && die "resume of a different run accepted"
-grep -qi 'journal' bad.txt || { cat bad.txt; die "unclear message for a foreign journal"; }
+# the batch size does not change results (it is left out of the run identity)
+$MPIEXEC -n 2 $tool "${long[@]}" -sampler_batch 7 -sampler_output batch7.h5 >b7.txt 2>&1 || { cat b7.txt; die "batch 7 run failed"; }
+[ "$(data ref.h5)" = "$(data batch7.h5)" ] || die "-sampler_batch 7 gives different data"
+[ "$(h5dump -a /provenance/digest ref.h5 | grep '(0)')" = "$(h5dump -a /provenance/digest batch7.h5 | grep '(0)')" ] || die "-sampler_batch changed the digest"
 
 # samples that do not converge are recorded with their status, never dropped
 $tool "${common[@]}" -sampler_reference none -sampler_terms sx -micro_snes_max_it 1 -sampler_output cap.h5 >cap.txt 2>&1 || { cat cap.txt; die "capped run failed"; }
@@ -67,15 +84,14 @@ refuse "sampler_n1 and -sampler_n2 must be in 1..1024" -sampler_n1 0
 refuse "sampler_n1 and -sampler_n2 must be in 1..1024" -sampler_n2 -3
 refuse "needs two values min,max with min <= max" -sampler_range_sa 0.5,-0.5
 refuse "Cannot open pattern file 'missing.pyp'" -pattern_type file -pattern_file missing.pyp
-refuse "Cannot write the output" -sampler_output /nonexistent-dir/out.h5
+refuse "Cannot write /nonexistent-dir/out.h5 \(-sampler_output\): directory /nonexistent-dir does not exist" -sampler_output /nonexistent-dir/out.h5
 refuse "Unknown option\\(s\\): -sampler_outptu" -sampler_outptu x.h5
 refuse "sampler_batch must be at least 1" -sampler_batch 0
 # -help documents every option of the job and does no work
 rm -f samples.h5 samples.h5.journal
 $tool -pattern_type plain -help >help.txt 2>&1 || { tail help.txt; die "-help failed"; }
-for opt in -sampler_output -sampler_resume -sampler_terms -sampler_n1 -sampler_n2 -sampler_family -sampler_range_sx -sampler_batch -sampler_progress -sampler_export_raw -sampler_reference -reference_output -reference_etol -micro_rtol -micro_snes_max_it -periodic_slide -yarn_kc -pattern_file; do
+for opt in -sampler_output -sampler_resume -sampler_overwrite -sampler_terms -sampler_n1 -sampler_n2 -sampler_family -sampler_range_sx -sampler_batch -sampler_progress -sampler_export_raw -sampler_reference -reference_output -reference_etol -micro_rtol -micro_snes_max_it -periodic_slide -yarn_kc -pattern_file; do
   grep -q -- "$opt" help.txt || die "-help does not document $opt"
 done
 [ ! -e samples.h5.journal ] || die "-help started the job"
-echo "resumed after $done_before of 80 finished samples"
 exit 0

@@ -104,7 +104,7 @@ static PetscErrorCode TestJournal(void)
 
   PetscFunctionBegin;
   memset(want, 0, sizeof(want));
-  PetscCall(HylcJournalOpen(path, PETSC_FALSE, n, "pattern=plain -plan_n1 10", &j));
+  PetscCall(HylcJournalOpen(path, HYLC_JOURNAL_OVERWRITE, n, "pattern=plain -plan_n1 10", &j));
   PetscCall(CheckJournal(j, n, want, "new journal"));
   PetscCall(AppendRange(j, 0, 100, want));
   for (long k = 200; k < 210; k++) { /* out of order, one at a time */
@@ -116,23 +116,23 @@ static PetscErrorCode TestJournal(void)
   PetscCall(HylcJournalClose(&j));
   HYLC_CHECK(j == NULL, "Close sets the handle to NULL");
   PetscCall(HylcJournalClose(&j));
-  HYLC_CHECK(FileSize(path) == 32 + 25 + 8 + 110 * RECSIZE, "journal size %ld", FileSize(path));
+  HYLC_CHECK(FileSize(path) == 64 + 25 + 8 + 110 * RECSIZE, "journal size %ld", FileSize(path));
 
   /* resume: every record back, then more appended, then again */
-  PetscCall(HylcJournalOpen(path, PETSC_TRUE, n, "pattern=plain -plan_n1 10", &j));
+  PetscCall(HylcJournalOpen(path, HYLC_JOURNAL_RESUME, n, "pattern=plain -plan_n1 10", &j));
   PetscCall(CheckJournal(j, n, want, "resumed journal"));
   PetscCall(HylcJournalGetInfo(j, &ns, &ndropped));
   HYLC_CHECK(ns == n && ndropped == 0, "info: %ld samples, %d dropped", ns, (int)ndropped);
   PetscCall(AppendRange(j, 100, 150, want));
   PetscCall(HylcJournalClose(&j));
-  PetscCall(HylcJournalOpen(path, PETSC_TRUE, n, "pattern=plain -plan_n1 10", &j));
+  PetscCall(HylcJournalOpen(path, HYLC_JOURNAL_RESUME, n, "pattern=plain -plan_n1 10", &j));
   PetscCall(CheckJournal(j, n, want, "resumed twice"));
   /* a later record of the same sample replaces the earlier one; ndone counts samples */
   MakeRecord(5, &r);
   r.psi = 42;
   PetscCall(HylcJournalAppend(j, &r, 1));
   PetscCall(HylcJournalClose(&j));
-  PetscCall(HylcJournalOpen(path, PETSC_TRUE, n, "pattern=plain -plan_n1 10", &j));
+  PetscCall(HylcJournalOpen(path, HYLC_JOURNAL_RESUME, n, "pattern=plain -plan_n1 10", &j));
   {
     const HylcSampleRecord *recs;
     PetscCall(HylcJournalGetRecords(j, &recs));
@@ -142,12 +142,12 @@ static PetscErrorCode TestJournal(void)
   PetscCall(HylcJournalClose(&j));
 
   /* without resume the journal starts over; resume of a missing file starts a new one */
-  PetscCall(HylcJournalOpen(path, PETSC_FALSE, n, "pattern=plain -plan_n1 10", &j));
+  PetscCall(HylcJournalOpen(path, HYLC_JOURNAL_OVERWRITE, n, "pattern=plain -plan_n1 10", &j));
   memset(want, 0, sizeof(want));
   PetscCall(CheckJournal(j, n, want, "restarted journal"));
   PetscCall(HylcJournalClose(&j));
   unlink("j2.journal");
-  PetscCall(HylcJournalOpen("j2.journal", PETSC_TRUE, n, "x", &j));
+  PetscCall(HylcJournalOpen("j2.journal", HYLC_JOURNAL_RESUME, n, "x", &j));
   PetscCall(CheckJournal(j, n, want, "resume of a missing journal"));
   PetscCall(HylcJournalClose(&j));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -160,14 +160,14 @@ static PetscErrorCode TestTornTail(void)
   unsigned char want[40];
   HylcJournal   j;
   PetscInt      ndropped;
-  long          full, H = 32 + (long)strlen(fp) + 8;
+  long          full, H = 64 + (long)strlen(fp) + 8;
   FILE         *f;
   unsigned char garbage[300];
 
   PetscFunctionBegin;
   memset(want, 0, sizeof(want));
   for (int i = 0; i < 300; i++) garbage[i] = (unsigned char)(37 * i + 11);
-  PetscCall(HylcJournalOpen(path, PETSC_FALSE, n, fp, &j));
+  PetscCall(HylcJournalOpen(path, HYLC_JOURNAL_OVERWRITE, n, fp, &j));
   PetscCall(AppendRange(j, 0, 10, want));
   PetscCall(HylcJournalClose(&j));
   full = FileSize(path);
@@ -176,7 +176,7 @@ static PetscErrorCode TestTornTail(void)
   /* a record cut in the middle (SIGKILL during the write) */
   HYLC_CHECK(truncate(path, full - 50) == 0, "truncate");
   want[9] = 0;
-  PetscCall(HylcJournalOpen(path, PETSC_TRUE, n, fp, &j));
+  PetscCall(HylcJournalOpen(path, HYLC_JOURNAL_RESUME, n, fp, &j));
   PetscCall(CheckJournal(j, n, want, "torn last record"));
   PetscCall(HylcJournalGetInfo(j, NULL, &ndropped));
   HYLC_CHECK(ndropped == 1, "torn record: %d dropped", (int)ndropped);
@@ -191,7 +191,7 @@ static PetscErrorCode TestTornTail(void)
     f          = fopen(path, "ab");
     HYLC_CHECK(f && fwrite(garbage, 1, len, f) == len, "append garbage");
     if (f) fclose(f);
-    PetscCall(HylcJournalOpen(path, PETSC_TRUE, n, fp, &j));
+    PetscCall(HylcJournalOpen(path, HYLC_JOURNAL_RESUME, n, fp, &j));
     PetscCall(CheckJournal(j, n, want, pass ? "300 bytes of garbage" : "37 bytes of garbage"));
     PetscCall(HylcJournalGetInfo(j, NULL, &ndropped));
     HYLC_CHECK(ndropped == (pass ? 3 : 1), "garbage: %d dropped", (int)ndropped);
@@ -203,7 +203,7 @@ static PetscErrorCode TestTornTail(void)
   memset(garbage, 0, sizeof(garbage));
   HYLC_CHECK(f && fwrite(garbage, 1, RECSIZE, f) == RECSIZE, "append zeros");
   if (f) fclose(f);
-  PetscCall(HylcJournalOpen(path, PETSC_TRUE, n, fp, &j));
+  PetscCall(HylcJournalOpen(path, HYLC_JOURNAL_RESUME, n, fp, &j));
   PetscCall(CheckJournal(j, n, want, "zero record"));
   PetscCall(HylcJournalClose(&j));
 
@@ -218,7 +218,7 @@ static PetscErrorCode TestTornTail(void)
     fclose(f);
   }
   for (int k = 5; k < 12; k++) want[k] = 0;
-  PetscCall(HylcJournalOpen(path, PETSC_TRUE, n, fp, &j));
+  PetscCall(HylcJournalOpen(path, HYLC_JOURNAL_RESUME, n, fp, &j));
   PetscCall(CheckJournal(j, n, want, "damaged record 5"));
   PetscCall(HylcJournalClose(&j));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -233,12 +233,12 @@ static PetscErrorCode TestRefused(void)
   FILE            *f;
 
   PetscFunctionBegin;
-  PetscCall(HylcJournalOpen(path, PETSC_FALSE, 20, "run A", &j));
+  PetscCall(HylcJournalOpen(path, HYLC_JOURNAL_OVERWRITE, 20, "run A", &j));
   /* locked while open */
   PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
-  ierr = HylcJournalOpen(path, PETSC_TRUE, 20, "run A", &j2);
+  ierr = HylcJournalOpen(path, HYLC_JOURNAL_RESUME, 20, "run A", &j2);
   HYLC_CHECK(ierr && j2 == NULL && ErrorMentions(ierr, path) && ErrorMentions(ierr, "in use"), "a journal in use is refused (%d)", (int)ierr);
-  ierr = HylcJournalOpen(path, PETSC_FALSE, 20, "run A", &j2);
+  ierr = HylcJournalOpen(path, HYLC_JOURNAL_OVERWRITE, 20, "run A", &j2);
   HYLC_CHECK(ierr && j2 == NULL, "a journal in use is not replaced (%d)", (int)ierr);
   MakeRecord(3, &r);
   r.index = 20;
@@ -250,22 +250,22 @@ static PetscErrorCode TestRefused(void)
   PetscCall(HylcJournalClose(&j));
 
   PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
-  ierr = HylcJournalOpen(path, PETSC_TRUE, 20, "run B", &j);
+  ierr = HylcJournalOpen(path, HYLC_JOURNAL_RESUME, 20, "run B", &j);
   HYLC_CHECK(ierr == PETSC_ERR_USER_INPUT && ErrorMentions(ierr, path) && ErrorMentions(ierr, "different run"), "other fingerprint refused (%d)", (int)ierr);
-  ierr = HylcJournalOpen(path, PETSC_TRUE, 21, "run A", &j);
+  ierr = HylcJournalOpen(path, HYLC_JOURNAL_RESUME, 21, "run A", &j);
   HYLC_CHECK(ierr == PETSC_ERR_USER_INPUT && ErrorMentions(ierr, path) && ErrorMentions(ierr, "21"), "other sample count refused (%d)", (int)ierr);
   f = fopen("notajournal.txt", "w");
   if (f) {
     fputs("sx sa sy II00 II01 II11 psi\n0 0 0 0 0 0 0\n", f);
     fclose(f);
   }
-  ierr = HylcJournalOpen("notajournal.txt", PETSC_TRUE, 20, "run A", &j);
+  ierr = HylcJournalOpen("notajournal.txt", HYLC_JOURNAL_RESUME, 20, "run A", &j);
   HYLC_CHECK(ierr == PETSC_ERR_FILE_UNEXPECTED && ErrorMentions(ierr, "notajournal.txt"), "a file that is not a journal is refused (%d)", (int)ierr);
-  ierr = HylcJournalOpen("no/such/dir/x.journal", PETSC_FALSE, 20, "run A", &j);
+  ierr = HylcJournalOpen("no/such/dir/x.journal", HYLC_JOURNAL_NEW, 20, "run A", &j);
   HYLC_CHECK(ierr == PETSC_ERR_FILE_OPEN && ErrorMentions(ierr, "no/such/dir/x.journal"), "unwritable journal refused (%d)", (int)ierr);
   PetscCall(PetscPopErrorHandler());
   /* the refused resumes left the journal intact */
-  PetscCall(HylcJournalOpen(path, PETSC_TRUE, 20, "run A", &j));
+  PetscCall(HylcJournalOpen(path, HYLC_JOURNAL_RESUME, 20, "run A", &j));
   {
     PetscInt ndone;
     PetscCall(HylcJournalGetDone(j, &ndone, NULL));
@@ -473,7 +473,7 @@ static PetscErrorCode JournalWriter(const char path[])
   HylcSampleRecord r[2];
 
   PetscFunctionBegin;
-  PetscCall(HylcJournalOpen(path, PETSC_FALSE, NKILL, "kill test", &j));
+  PetscCall(HylcJournalOpen(path, HYLC_JOURNAL_OVERWRITE, NKILL, "kill test", &j));
   printf("started\n");
   fflush(stdout);
   for (long k = 0; k < NKILL; k++) {
@@ -496,7 +496,7 @@ static PetscErrorCode JournalCheck(const char path[])
   int                     bad = 0;
 
   PetscFunctionBegin;
-  PetscCall(HylcJournalOpen(path, PETSC_TRUE, NKILL, "kill test", &j));
+  PetscCall(HylcJournalOpen(path, HYLC_JOURNAL_RESUME, NKILL, "kill test", &j));
   PetscCall(HylcJournalGetDone(j, &ndone, &done));
   PetscCall(HylcJournalGetInfo(j, NULL, &ndropped));
   PetscCall(HylcJournalGetRecords(j, &recs));
@@ -515,7 +515,7 @@ static PetscErrorCode JournalCheck(const char path[])
     PetscCall(HylcJournalAppend(j, &r, 1));
   }
   PetscCall(HylcJournalClose(&j));
-  PetscCall(HylcJournalOpen(path, PETSC_TRUE, NKILL, "kill test", &j));
+  PetscCall(HylcJournalOpen(path, HYLC_JOURNAL_RESUME, NKILL, "kill test", &j));
   PetscCall(HylcJournalGetDone(j, &ndone, NULL));
   HYLC_CHECK(ndone == PetscMin(m + 10, NKILL), "continued journal: ndone %d, expected %ld", (int)ndone, m + 10);
   PetscCall(HylcJournalClose(&j));
