@@ -317,7 +317,7 @@ static PetscErrorCode Report(HylcSampler S, Progress *pg, PetscBool force)
   pg->last               = now;
   const double rate      = (pg->done - pg->converged0) / PetscMax(now - pg->t0, 1e-9);
   const double remaining = rate > 0 ? (pg->total - pg->done) / rate : 0;
-  PetscCall(PetscPrintf(PETSC_COMM_SELF, "[sampler] %ld/%ld samples (%.1f%%), %ld failed, %.2f samples/s, ETA %.0f s\n", pg->done, pg->total, 100.0 * pg->done / PetscMax(pg->total, 1), pg->failed, rate, remaining));
+  PetscCall(PetscPrintf(PETSC_COMM_SELF, "[sampler] %ld/%ld samples (%.1f%%), %ld not converged, %.2f samples/s, ETA %.0f s\n", pg->done, pg->total, 100.0 * pg->done / PetscMax(pg->total, 1), pg->failed, rate, remaining));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

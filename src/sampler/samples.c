@@ -609,7 +609,7 @@ static PetscErrorCode WriteSamplesGroup(hid_t file, long N, const HylcSampleReco
   PetscCall(H5Dataset(g, "strain", PETSC_FALSE, (hsize_t)N, 6, strain, "1 for sx, sa, sy; 1/m for II00, II01, II11", "macroscopic strain z = (sx, sa, sy, II00, II01, II11): in-plane stretch/shear and the second fundamental form"));
   PetscCall(H5Dataset(g, "psi", PETSC_FALSE, (hsize_t)N, 0, psi, "J/m^2", "area energy density psi = E / A of the equilibrium (A: reference tile area)"));
   PetscCall(H5Dataset(g, "term", PETSC_TRUE, (hsize_t)N, 0, term, "1", "term of the sampling plan: 0 zero sample, 1..5 one-dimensional, 6..14 two-dimensional; index into /samples@term_names; -1 not computed"));
-  PetscCall(H5Dataset(g, "status", PETSC_TRUE, (hsize_t)N, 0, status, "1", "HylcMicroStatus of the Newton solve, index into /samples@status_names (0 converged, 1 iteration_cap, 2 time_cap, 3 stalled, 4 nonfinite, 5 failed); -1: not computed (the run ended before this sample, all its values are NaN or -1)"));
+  PetscCall(H5Dataset(g, "status", PETSC_TRUE, (hsize_t)N, 0, status, "1", "HylcMicroStatus of the Newton solve, index into /samples@status_names (0 converged, 1 iteration_cap, 2 time_cap, 3 stalled, 4 nonfinite; 5 failed is reserved, no longer produced); -1: not computed (the run ended before this sample, all its values are NaN or -1)"));
   PetscCall(H5Dataset(g, "iterations", PETSC_TRUE, (hsize_t)N, 0, its, "1", "Newton iterations; -1 not computed"));
   PetscCall(H5Dataset(g, "retries", PETSC_TRUE, (hsize_t)N, 0, retries, "1", "regularization increases (alpha x 10 for an indefinite K); -1 not computed"));
   PetscCall(H5Dataset(g, "energy_parts", PETSC_FALSE, (hsize_t)N, 4, parts, "J", "energy of the tile by kind: columns stretch, bend, twist, contact"));
