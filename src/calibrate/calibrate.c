@@ -273,8 +273,9 @@ PetscErrorCode HylcCalibrateSetFromOptions(HylcCalibrate C)
     PetscCall(PetscOptionsRealArray(opt, help, "HylcCalibrateSetBounds", v, &n, &set));
     if (set) {
       PetscCheck(n == 2, comm, PETSC_ERR_USER_INPUT, "%s needs two values lo,hi", opt);
-      PetscCheck(v[0] > 0 && v[1] > 0, comm, PETSC_ERR_USER_INPUT, "%s %g,%g: bounds must be positive (the parameters are optimised in log space)", opt, (double)v[0], (double)v[1]);
-      PetscCheck(v[0] <= v[1], comm, PETSC_ERR_USER_INPUT, "%s %g,%g: inverted bounds (lo > hi)", opt, (double)v[0], (double)v[1]);
+      snprintf(help, sizeof(help), "%g,%g", (double)v[0], (double)v[1]); /* C formatting for the message */
+      PetscCheck(v[0] > 0 && v[1] > 0, comm, PETSC_ERR_USER_INPUT, "%s %s: bounds must be positive (the parameters are optimised in log space)", opt, help);
+      PetscCheck(v[0] <= v[1], comm, PETSC_ERR_USER_INPUT, "%s %s: inverted bounds (lo > hi)", opt, help);
       C->lo[j] = v[0];
       C->hi[j] = v[1];
     }
@@ -319,8 +320,11 @@ PetscErrorCode HylcCalibrateSetFromOptions(HylcCalibrate C)
     if (C->lo[j] < 0) C->lo[j] = C->p0[j] / 1000;
     if (C->hi[j] < 0) C->hi[j] = C->p0[j] * 1000;
     PetscCheck(C->lo[j] <= C->hi[j], comm, PETSC_ERR_USER_INPUT, "-calibrate_bounds_%s %g,%g: inverted bounds (lo > hi)", HylcCalibrateParamNames[j], (double)C->lo[j], (double)C->hi[j]);
-    if (C->role[j] == HYLC_CALIBRATE_FREE)
-      PetscCheck(C->p0[j] >= C->lo[j] && C->p0[j] <= C->hi[j], comm, PETSC_ERR_USER_INPUT, "The initial %s = %g (from -yarn_%s) is outside -calibrate_bounds_%s %g,%g", HylcCalibrateParamNames[j], (double)C->p0[j], HylcCalibrateParamNames[j], HylcCalibrateParamNames[j], (double)C->lo[j], (double)C->hi[j]);
+    if (C->role[j] == HYLC_CALIBRATE_FREE) {
+      char msg[128];
+      snprintf(msg, sizeof(msg), "%g (from -yarn_%s) is outside -calibrate_bounds_%s %g,%g", (double)C->p0[j], HylcCalibrateParamNames[j], HylcCalibrateParamNames[j], (double)C->lo[j], (double)C->hi[j]);
+      PetscCheck(C->p0[j] >= C->lo[j] && C->p0[j] <= C->hi[j], comm, PETSC_ERR_USER_INPUT, "The initial %s = %s", HylcCalibrateParamNames[j], msg);
+    }
   }
   /* terms */
   if (terms[0]) {

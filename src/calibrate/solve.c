@@ -334,6 +334,8 @@ PetscErrorCode HylcCalibrateSolve(HylcCalibrate C)
     }
     PetscCall(PetscPrintf(comm, "[calibrate] %" PetscInt_FMT " samples (target %s, %s) on %d ranks; %s\n", m, C->target, HylcCalibTargetTypes[C->targetResolved], (int)C->size, line));
   }
+  if (C->z[0] != 0 || C->z[1] != 0 || C->z[2] != 0 || C->z[3] != 0 || C->z[4] != 0 || C->z[5] != 0)
+    PetscCall(PetscPrintf(comm, "[calibrate] the target has no zero strain: base strain z_b = (%g, %g, %g, %g, %g, %g), the row nearest to it; dPsi = Psi(z) - Psi(z_b)\n", (double)C->z[0], (double)C->z[1], (double)C->z[2], (double)C->z[3], (double)C->z[4], (double)C->z[5]));
   Expand(C, x, p);
   PetscCall(PetscTime(&t0));
   PetscCall(HylcCalibrateSolveSamples_Private(C, p, rec));
