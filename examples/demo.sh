@@ -6,7 +6,7 @@
 #   4. the fit of those samples (hylc-fit: HDF5 and ARCSim-HYLC JSON tables);
 #   5. the fitted energy and its derivatives at one strain (hylc-eval), and PNG plots of the fit when
 #      python3-matplotlib is installed (examples/plot_fit.py);
-#   6. a calibration (hylc-calibrate): the yarn parameters recovered from 60 of those samples, starting
+#   6. a calibration (hylc-calibrate): the yarn parameters recovered from about 70 of those samples, starting
 #      from wrong values (E x 2, Es / 2, kc / 2.5), with plots (examples/plot_calibrate.py).
 set -eu
 cd "$(dirname "$0")/.."
@@ -44,7 +44,7 @@ if /usr/bin/python3 -c 'import h5py, matplotlib' 2>/dev/null; then
   plots=", $out/plots/*.png (fit plots)"
 fi
 echo
-echo "== calibration: E, Es, kc recovered from 60 of the samples, starting from E x 2, Es / 2, kc / 2.5 (hylc-calibrate)"
+echo "== calibration: E, Es, kc recovered from about 70 of the samples (-calibrate_max_samples 60), starting from E x 2, Es / 2, kc / 2.5 (hylc-calibrate)"
 mpiexec --oversubscribe -n 2 build/bin/hylc-calibrate -pattern_file "$out/reference.pyp" -calibrate_target "$out/samples.h5" \
   -calibrate_max_samples 60 -yarn_E 2e6 -yarn_Es 5e5 -yarn_kc 20 -calibrate_params E,Es,kc \
   -calibrate_output "$out/calibrated.yaml" -calibrate_dump "$out/calibrate.csv"

@@ -124,7 +124,7 @@ PetscErrorCode HylcCalibrateEvaluate(HylcCalibrate C, const PetscReal p[], Petsc
 /* the full parameter vector from the log values of the active parameters: tied ones follow E */
 static void Expand(HylcCalibrate C, const PetscReal x[], PetscReal p[])
 {
-  for (int j = 0; j < HYLC_CALIBRATE_NPARAM; j++) p[j] = PetscExpReal(x[j]);
+  for (int j = 0; j < HYLC_CALIBRATE_NPARAM; j++) p[j] = C->role[j] == HYLC_CALIBRATE_FIXED ? C->p0[j] : PetscExpReal(x[j]); /* fixed: exactly the initial value */
   for (int j = 1; j < HYLC_CALIBRATE_NPARAM; j++)
     if (C->role[j] == HYLC_CALIBRATE_TIED) p[j] = C->p0[j] * (p[0] / C->p0[0]);
 }
