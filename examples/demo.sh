@@ -5,7 +5,9 @@
 #   3. the sampling job of config/demo.yaml on 2 MPI ranks (reference state, 4351 samples, HDF5);
 #   4. the fit of those samples (hylc-fit: HDF5 and ARCSim-HYLC JSON tables);
 #   5. the fitted energy and its derivatives at one strain (hylc-eval), and PNG plots of the fit when
-#      python3-matplotlib is installed (examples/plot_fit.py).
+#      python3-matplotlib is installed (examples/plot_fit.py);
+#   6. a calibration (hylc-calibrate): the yarn parameters recovered from about 70 of those samples, starting
+#      from wrong values (E x 2, Es / 2, kc / 2.5), with plots (examples/plot_calibrate.py).
 set -eu
 cd "$(dirname "$0")/.."
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_pml=ob1
@@ -42,6 +44,17 @@ if /usr/bin/python3 -c 'import h5py, matplotlib' 2>/dev/null; then
   plots=", $out/plots/*.png (fit plots)"
 fi
 echo
+echo "== calibration: E, Es, kc recovered from about 70 of the samples (-calibrate_max_samples 60), starting from E x 2, Es / 2, kc / 2.5 (hylc-calibrate)"
+mpiexec --oversubscribe -n 2 build/bin/hylc-calibrate -pattern_file "$out/reference.pyp" -calibrate_target "$out/samples.h5" \
+  -calibrate_max_samples 60 -yarn_E 2e6 -yarn_Es 5e5 -yarn_kc 20 -calibrate_params E,Es,kc \
+  -calibrate_output "$out/calibrated.yaml" -calibrate_dump "$out/calibrate.csv"
+grep '^yarn_' "$out/calibrated.yaml"
+if [ -n "$plots" ]; then
+  /usr/bin/python3 examples/plot_calibrate.py "$out/calibrate.csv" "$out/calibrate_plots" | tail -1
+  plots="$plots, $out/calibrate_plots/*.png (calibration plots)"
+fi
+echo
 echo "demo outputs: $out/stockinette.pyp (pattern), $out/stockinette.vtk and $out/plain_sx0.1.vtk (ParaView),"
 echo "              $out/reference.pyp (reference state), $out/samples.h5 (HDF5 samples, docs/output-format.md),"
-echo "              $out/model.h5 and $out/model.json (fitted material, docs/material.md)$plots"
+echo "              $out/model.h5 and $out/model.json (fitted material, docs/material.md),"
+echo "              $out/calibrated.yaml and $out/calibrate.csv (calibration, docs/calibrate.md)$plots"

@@ -21,6 +21,8 @@ PETSC_EXTERN PetscClassId  HYLC_MIDSURFACE_CLASSID;
 PETSC_EXTERN PetscLogEvent HYLC_MacroSetUp, HYLC_MacroPoisson, HYLC_MacroEvaluate;
 PETSC_EXTERN PetscClassId  HYLC_MATERIAL_CLASSID, HYLC_FIT_CLASSID;
 PETSC_EXTERN PetscLogEvent HYLC_MaterialLoad, HYLC_MaterialWrite, HYLC_FitRun, HYLC_FitTerm, HYLC_FitMLS, HYLC_FitMonotone;
+PETSC_EXTERN PetscClassId  HYLC_CALIBRATE_CLASSID;
+PETSC_EXTERN PetscLogEvent HYLC_CalibrateSetUp, HYLC_CalibrateSolve, HYLC_CalibrateEvaluate, HYLC_CalibrateGather;
 
 /* The fill-reducing ordering METIS_NodeND (METIS 5 nested dissection of the graph of A + A^T), registered
    by HylcInitializePackage() for sequential matrices: MatGetOrdering(A, MATORDERINGMETISND, &rperm,

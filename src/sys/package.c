@@ -12,6 +12,8 @@ PetscClassId  HYLC_MIDSURFACE_CLASSID;
 PetscLogEvent HYLC_MacroSetUp, HYLC_MacroPoisson, HYLC_MacroEvaluate;
 PetscClassId  HYLC_MATERIAL_CLASSID, HYLC_FIT_CLASSID;
 PetscLogEvent HYLC_MaterialLoad, HYLC_MaterialWrite, HYLC_FitRun, HYLC_FitTerm, HYLC_FitMLS, HYLC_FitMonotone;
+PetscClassId  HYLC_CALIBRATE_CLASSID;
+PetscLogEvent HYLC_CalibrateSetUp, HYLC_CalibrateSolve, HYLC_CalibrateEvaluate, HYLC_CalibrateGather;
 
 PETSC_INTERN PetscErrorCode HylcMetisRegister(void);
 
@@ -57,6 +59,11 @@ PetscErrorCode HylcInitializePackage(void)
   PetscCall(PetscLogEventRegister("FIT_Term", HYLC_FIT_CLASSID, &HYLC_FitTerm));
   PetscCall(PetscLogEventRegister("FIT_MLS", HYLC_FIT_CLASSID, &HYLC_FitMLS));
   PetscCall(PetscLogEventRegister("FIT_Monotone", HYLC_FIT_CLASSID, &HYLC_FitMonotone));
+  PetscCall(PetscClassIdRegister("HylcCalibrate", &HYLC_CALIBRATE_CLASSID));
+  PetscCall(PetscLogEventRegister("CALIB_SetUp", HYLC_CALIBRATE_CLASSID, &HYLC_CalibrateSetUp));
+  PetscCall(PetscLogEventRegister("CALIB_Solve", HYLC_CALIBRATE_CLASSID, &HYLC_CalibrateSolve));
+  PetscCall(PetscLogEventRegister("CALIB_Evaluate", HYLC_CALIBRATE_CLASSID, &HYLC_CalibrateEvaluate));
+  PetscCall(PetscLogEventRegister("CALIB_Gather", HYLC_CALIBRATE_CLASSID, &HYLC_CalibrateGather));
   PetscCall(HylcMetisRegister());
   PetscCall(PetscRegisterFinalize(HylcFinalizePackage));
   PetscFunctionReturn(PETSC_SUCCESS);

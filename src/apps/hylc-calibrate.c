@@ -1,0 +1,35 @@
+static const char help[] = "hylc-calibrate: yarn parameters (E, Es, G, kc) that best reproduce a target energy response\n"
+                           "(a material table, or strain-energy pairs); Levenberg-Marquardt in log parameters with the\n"
+                           "envelope-theorem Jacobian (one solve per sample per iteration), samples spread over MPI ranks.\n"
+                           "docs/calibrate.md.\n\n"
+                           "  mpirun -n 2 hylc-calibrate -options_file config/satin_small.yaml -calibrate_target satin01.json \\\n"
+                           "      -calibrate_params E,Es,kc -calibrate_output satin_small-calibrated.yaml\n"
+                           "  hylc-calibrate -pattern_file ref.pyp -calibrate_target samples.h5 -calibrate_params E,Es,G,kc\n"
+                           "  hylc-calibrate -pattern_file ref.pyp -calibrate_target measured.csv   (header sx,sa,sy,II00,II01,II11,psi)\n\n";
+
+#include <hylc/calibrate.h>
+
+static PetscErrorCode Run(void)
+{
+  HylcCalibrate C;
+  PetscBool     help_only;
+
+  PetscFunctionBeginUser;
+  PetscCall(HylcCalibrateCreate(PETSC_COMM_WORLD, &C));
+  PetscCall(HylcCalibrateSetFromOptions(C));
+  PetscCall(PetscOptionsHasHelp(NULL, &help_only));
+  if (!help_only) { /* -help: every option has been listed; do no work */
+    PetscCall(HylcCalibrateSetUp(C));
+    PetscCall(HylcCalibrateSolve(C));
+    PetscCall(HylcCalibrateView(C, PETSC_VIEWER_STDOUT_WORLD));
+  }
+  PetscCall(HylcCalibrateDestroy(&C));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+int main(int argc, char **argv)
+{
+  PetscCall(PetscInitialize(&argc, &argv, NULL, help));
+  PetscCall(HylcPushErrorHandler());
+  return HylcMainFinalize(Run());
+}

@@ -1,0 +1,76 @@
+#pragma once
+/* Private definition of HylcCalibrate (src/calibrate/ only). */
+#include <hylc/calibrate.h>
+#include <petsc/private/petscimpl.h>
+
+#define HYLC_CALIB_NTERM   (HYLC_PLAN_NTERM + 1) /* the plan's 15 terms and "other" (rows of a file off the plan's axes) */
+#define HYLC_CALIB_OTHER   HYLC_PLAN_NTERM
+#define HYLC_CALIB_NRECORD 7 /* per sample and evaluation: psi, dpsi/dlog p (4), status, iterations */
+
+typedef enum {
+  HYLC_CALIB_TARGET_AUTO    = 0,
+  HYLC_CALIB_TARGET_TABLE   = 1,
+  HYLC_CALIB_TARGET_SAMPLES = 2,
+  HYLC_CALIB_TARGET_RAW     = 3,
+  HYLC_CALIB_TARGET_CSV     = 4
+} HylcCalibTargetType;
+PETSC_INTERN const char *const HylcCalibTargetTypes[];
+
+struct _HylcCalibrateOps {
+  PetscErrorCode (*view)(HylcCalibrate, PetscViewer);
+};
+
+struct _p_HylcCalibrate {
+  PETSCHEADER(struct _HylcCalibrateOps);
+  PetscMPIInt rank, size;
+  /* files */
+  char                target[PETSC_MAX_PATH_LEN], output[PETSC_MAX_PATH_LEN], dump[PETSC_MAX_PATH_LEN], refout[PETSC_MAX_PATH_LEN];
+  HylcCalibTargetType targetType; /* as given (auto) and as resolved in SetUp */
+  HylcCalibTargetType targetResolved;
+  /* the tile */
+  HylcPattern         pat;
+  char                patLabel[PETSC_MAX_PATH_LEN + 64];
+  HylcYarnModel       model; /* the initial model as read from -yarn_* */
+  HylcMicro           micro; /* this rank's solver (PETSC_COMM_SELF) */
+  HylcReferenceParams refpar;
+  PetscInt            refmode; /* 0 auto, 1 compute, 2 none */
+  PetscBool           refComputed;
+  /* parameters */
+  HylcCalibrateRole role[HYLC_CALIBRATE_NPARAM];
+  PetscReal         p0[HYLC_CALIBRATE_NPARAM], p[HYLC_CALIBRATE_NPARAM]; /* initial (resolved), current */
+  PetscReal         lo[HYLC_CALIBRATE_NPARAM], hi[HYLC_CALIBRATE_NPARAM];
+  PetscBool         held[HYLC_CALIBRATE_NPARAM];  /* free but not determined by the data: held */
+  PetscBool         bound[HYLC_CALIBRATE_NPARAM]; /* free and ending at a bound */
+  /* sampling of a table target */
+  HylcPlan plan;
+  PetscInt n1, n2, terms; /* samples per 1D term, per 2D axis; bit t: term t */
+  /* thinning of a file target */
+  PetscInt stride, maxSamples;
+  /* objective */
+  PetscReal wzero, w[HYLC_CALIB_NTERM];
+  /* Levenberg-Marquardt */
+  PetscInt  maxIt, maxReject;
+  PetscReal lambda0, xtol, ftol, fatol, flatTol;
+  /* the samples: 0 is the base strain z_b */
+  PetscInt   m;
+  PetscReal *z, *tpsi; /* 6m, m: strains and the target energy */
+  PetscInt  *term;     /* m */
+  PetscInt   nt[HYLC_CALIB_NTERM];
+  PetscReal  range[HYLC_CALIB_NTERM];
+  PetscInt   nrows, nskipped; /* file rows read, rows not used (not converged in a samples file, or thinned) */
+  /* results */
+  PetscReal     *rec0, *rec1; /* m x HYLC_CALIB_NRECORD: the initial and the final evaluation */
+  PetscReal      f0, f1;
+  PetscInt       its, nevals;
+  PetscBool      setupcalled, solved;
+  PetscLogDouble tsolve;
+};
+
+/* target.c: reads the target and fills z, target, term, nt, range (collective) */
+PETSC_INTERN PetscErrorCode HylcCalibrateReadTarget_Private(HylcCalibrate);
+/* term name (the plan's names and "other") */
+PETSC_INTERN const char *HylcCalibrateTermName_Private(PetscInt t);
+/* solve.c: one evaluation at explicit p (no ties): the records (m x HYLC_CALIB_NRECORD) on every rank */
+PETSC_INTERN PetscErrorCode HylcCalibrateSolveSamples_Private(HylcCalibrate, const PetscReal p[], PetscReal rec[]);
+/* solve.c: residuals r (m + 1; entry m is the base term) and Jacobian J ((m+1) x 4, row-major) from records */
+PETSC_INTERN PetscErrorCode HylcCalibrateResiduals_Private(HylcCalibrate, const PetscReal rec[], PetscReal r[], PetscReal J[], PetscReal *f, PetscInt *nfailed);

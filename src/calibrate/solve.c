@@ -1,0 +1,477 @@
+/* HylcCalibrate: evaluation of the samples over the ranks, the objective with its envelope-theorem
+   Jacobian, Levenberg-Marquardt in log parameters, and the outputs (docs/calibrate.md). */
+#include "calibrateimpl.h"
+#include <petsctime.h>
+#include <stdio.h>
+#include <string.h>
+#include <time.h>
+
+/* energy part matching parameter j: E bend (1), Es stretch (0), G twist (2), kc contact (3) */
+static const int PartOf[HYLC_CALIBRATE_NPARAM] = {1, 0, 2, 3};
+
+PetscErrorCode HylcCalibrateSolveSamples_Private(HylcCalibrate C, const PetscReal p[], PetscReal rec[])
+{
+  MPI_Comm      comm  = PetscObjectComm((PetscObject)C);
+  HylcYarnModel model = C->model;
+  PetscInt      nloc = 0, j = 0;
+  PetscReal    *buf, *all;
+  PetscMPIInt  *counts, *displs;
+
+  PetscFunctionBegin;
+  model.E  = p[0];
+  model.Es = p[1];
+  model.G  = p[2];
+  model.kc = p[3];
+  PetscCall(PetscLogEventBegin(HYLC_CalibrateEvaluate, C, 0, 0, 0));
+  PetscCall(HylcMicroSetPattern(C->micro, C->pat, &model));
+  PetscCall(HylcMicroSetUp(C->micro));
+  for (PetscInt k = C->rank; k < C->m; k += C->size) nloc++;
+  PetscCall(PetscMalloc1(nloc * HYLC_CALIB_NRECORD + 1, &buf));
+  /* static cyclic split: each sample is solved from the reference state by this rank's own solver, so its
+     result does not depend on which rank solves it */
+  for (PetscInt k = C->rank; k < C->m; k += C->size, j++) {
+    HylcMicroResult res;
+    HylcPeriodic    P;
+    PetscReal       area, *o = buf + j * HYLC_CALIB_NRECORD;
+    PetscCall(HylcMicroSolve(C->micro, C->z + 6 * k, &res));
+    PetscCall(HylcMicroGetPeriodic(C->micro, &P));
+    PetscCall(HylcPeriodicGetArea(P, &area));
+    o[0] = res.psi;
+    for (int q = 0; q < HYLC_CALIBRATE_NPARAM; q++) o[1 + q] = res.parts[PartOf[q]] / area; /* dPsi/dlog p_q */
+    o[5] = (PetscReal)res.status;
+    o[6] = (PetscReal)res.iterations;
+  }
+  PetscCall(PetscLogEventEnd(HYLC_CalibrateEvaluate, C, 0, 0, 0));
+  PetscCall(PetscLogEventBegin(HYLC_CalibrateGather, C, 0, 0, 0));
+  PetscCall(PetscMalloc3(C->size, &counts, C->size, &displs, C->m * HYLC_CALIB_NRECORD + 1, &all));
+  for (PetscMPIInt r = 0, off = 0; r < C->size; r++) {
+    PetscInt nr = 0;
+    for (PetscInt k = r; k < C->m; k += C->size) nr++;
+    counts[r] = (PetscMPIInt)(nr * HYLC_CALIB_NRECORD);
+    displs[r] = off;
+    off += counts[r];
+  }
+  PetscCallMPI(MPI_Allgatherv(buf, (PetscMPIInt)(nloc * HYLC_CALIB_NRECORD), MPIU_REAL, all, counts, displs, MPIU_REAL, comm));
+  for (PetscMPIInt r = 0; r < C->size; r++) {
+    PetscInt jj = 0;
+    for (PetscInt k = r; k < C->m; k += C->size, jj++) PetscCall(PetscArraycpy(rec + k * HYLC_CALIB_NRECORD, all + displs[r] + jj * HYLC_CALIB_NRECORD, HYLC_CALIB_NRECORD));
+  }
+  PetscCall(PetscFree3(counts, displs, all));
+  PetscCall(PetscFree(buf));
+  PetscCall(PetscLogEventEnd(HYLC_CalibrateGather, C, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* r[0] = sqrt(w0) (Psi(z_b) - Psi_T(z_b)) / |Psi_T(z_b)|,
+   r[i] = sqrt(w_t / n_t) ((Psi_i - Psi_b) - (T_i - T_b)) / R_t for the other samples (0 if not converged);
+   J[i][q] = dr_i / dlog p_q (no ties); f = sum r^2 (infinite if the base sample did not converge) */
+PetscErrorCode HylcCalibrateResiduals_Private(HylcCalibrate C, const PetscReal rec[], PetscReal r[], PetscReal J[], PetscReal *f, PetscInt *nfailed)
+{
+  const PetscInt   NR = HYLC_CALIB_NRECORD, NP = HYLC_CALIBRATE_NPARAM;
+  const PetscReal *b  = rec;
+  PetscReal        s  = 0, scale0;
+  PetscInt         nf = 0;
+
+  PetscFunctionBegin;
+  scale0 = PetscAbsReal(C->tpsi[0]);
+  if (scale0 == 0)
+    for (PetscInt t = 1; t < HYLC_CALIB_NTERM; t++) scale0 = PetscMax(scale0, C->range[t]);
+  for (PetscInt i = 0; i < C->m; i++) {
+    const PetscReal *o = rec + i * NR;
+    if (o[5] != 0 || (i && b[5] != 0)) {
+      r[i] = 0;
+      for (PetscInt q = 0; q < NP; q++) J[i * NP + q] = 0;
+      nf++;
+      continue;
+    }
+    if (!i) {
+      const PetscReal c = PetscSqrtReal(C->wzero) / scale0;
+      r[0]              = c * (o[0] - C->tpsi[0]);
+      for (PetscInt q = 0; q < NP; q++) J[q] = c * o[1 + q];
+    } else {
+      const PetscInt  t = C->term[i];
+      const PetscReal c = PetscSqrtReal(C->w[t] / C->nt[t]) / C->range[t];
+      r[i]              = c * ((o[0] - b[0]) - (C->tpsi[i] - C->tpsi[0]));
+      for (PetscInt q = 0; q < NP; q++) J[i * NP + q] = c * (o[1 + q] - b[1 + q]);
+    }
+    s += r[i] * r[i];
+  }
+  *f = b[5] != 0 ? PETSC_INFINITY : s;
+  if (nfailed) *nfailed = nf;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcCalibrateEvaluate(HylcCalibrate C, const PetscReal p[], PetscReal *f, PetscReal grad[], PetscInt *nfailed)
+{
+  PetscReal *rec, *r, *J;
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
+  PetscCheck(C->setupcalled, PetscObjectComm((PetscObject)C), PETSC_ERR_ARG_WRONGSTATE, "Call HylcCalibrateSetUp() first");
+  for (int q = 0; q < HYLC_CALIBRATE_NPARAM; q++) PetscCheck(p[q] > 0, PetscObjectComm((PetscObject)C), PETSC_ERR_ARG_OUTOFRANGE, "Parameter %s = %g must be positive", HylcCalibrateParamNames[q], (double)p[q]);
+  PetscCall(PetscMalloc3(C->m * HYLC_CALIB_NRECORD, &rec, C->m, &r, C->m * HYLC_CALIBRATE_NPARAM, &J));
+  PetscCall(HylcCalibrateSolveSamples_Private(C, p, rec));
+  PetscCall(HylcCalibrateResiduals_Private(C, rec, r, J, f, nfailed));
+  if (grad)
+    for (int q = 0; q < HYLC_CALIBRATE_NPARAM; q++) {
+      grad[q] = 0;
+      for (PetscInt i = 0; i < C->m; i++) grad[q] += 2 * r[i] * J[i * HYLC_CALIBRATE_NPARAM + q];
+    }
+  PetscCall(PetscFree3(rec, r, J));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* the full parameter vector from the log values of the active parameters: tied ones follow E */
+static void Expand(HylcCalibrate C, const PetscReal x[], PetscReal p[])
+{
+  for (int j = 0; j < HYLC_CALIBRATE_NPARAM; j++) p[j] = C->role[j] == HYLC_CALIBRATE_FIXED ? C->p0[j] : PetscExpReal(x[j]); /* fixed: exactly the initial value */
+  for (int j = 1; j < HYLC_CALIBRATE_NPARAM; j++)
+    if (C->role[j] == HYLC_CALIBRATE_TIED) p[j] = C->p0[j] * (p[0] / C->p0[0]);
+}
+
+/* eigenvalues (ascending) and eigenvectors (columns of V) of a symmetric n x n matrix, n <= 4 (Jacobi) */
+static void SymEig(int n, const PetscReal A0[], PetscReal ev[], PetscReal V[])
+{
+  PetscReal A[16];
+  for (int i = 0; i < n * n; i++) A[i] = A0[i];
+  for (int i = 0; i < n; i++)
+    for (int j = 0; j < n; j++) V[i * n + j] = i == j;
+  for (int sweep = 0; sweep < 60; sweep++) {
+    PetscReal off = 0;
+    for (int i = 0; i < n; i++)
+      for (int j = i + 1; j < n; j++) off += A[i * n + j] * A[i * n + j];
+    if (off < 1e-300) break;
+    for (int pp = 0; pp < n; pp++)
+      for (int q = pp + 1; q < n; q++) {
+        if (A[pp * n + q] == 0) continue;
+        const PetscReal th = 0.5 * PetscAtan2Real(2 * A[pp * n + q], A[q * n + q] - A[pp * n + pp]);
+        const PetscReal c = PetscCosReal(th), s = PetscSinReal(th);
+        for (int k = 0; k < n; k++) { /* A = A G */
+          const PetscReal akp = A[k * n + pp], akq = A[k * n + q];
+          A[k * n + pp] = c * akp - s * akq;
+          A[k * n + q]  = s * akp + c * akq;
+        }
+        for (int k = 0; k < n; k++) { /* A = G^T A */
+          const PetscReal apk = A[pp * n + k], aqk = A[q * n + k];
+          A[pp * n + k] = c * apk - s * aqk;
+          A[q * n + k]  = s * apk + c * aqk;
+        }
+        for (int k = 0; k < n; k++) {
+          const PetscReal vkp = V[k * n + pp], vkq = V[k * n + q];
+          V[k * n + pp] = c * vkp - s * vkq;
+          V[k * n + q]  = s * vkp + c * vkq;
+        }
+      }
+  }
+  for (int i = 0; i < n; i++) ev[i] = A[i * n + i];
+  for (int i = 0; i < n; i++) /* sort ascending */
+    for (int j = i + 1; j < n; j++)
+      if (ev[j] < ev[i]) {
+        PetscReal t = ev[i];
+        ev[i]       = ev[j];
+        ev[j]       = t;
+        for (int k = 0; k < n; k++) {
+          t            = V[k * n + i];
+          V[k * n + i] = V[k * n + j];
+          V[k * n + j] = t;
+        }
+      }
+}
+
+/* solves the n x n system M d = b (n <= 4) by Gaussian elimination with partial pivoting; -1 if singular */
+static int Solve4(int n, PetscReal M[], PetscReal b[])
+{
+  for (int k = 0; k < n; k++) {
+    int piv = k;
+    for (int i = k + 1; i < n; i++)
+      if (PetscAbsReal(M[i * n + k]) > PetscAbsReal(M[piv * n + k])) piv = i;
+    if (M[piv * n + k] == 0) return -1;
+    if (piv != k) {
+      for (int j = 0; j < n; j++) {
+        PetscReal t    = M[k * n + j];
+        M[k * n + j]   = M[piv * n + j];
+        M[piv * n + j] = t;
+      }
+      PetscReal t = b[k];
+      b[k]        = b[piv];
+      b[piv]      = t;
+    }
+    for (int i = k + 1; i < n; i++) {
+      const PetscReal l = M[i * n + k] / M[k * n + k];
+      for (int j = k; j < n; j++) M[i * n + j] -= l * M[k * n + j];
+      b[i] -= l * b[k];
+    }
+  }
+  for (int i = n - 1; i >= 0; i--) {
+    for (int j = i + 1; j < n; j++) b[i] -= M[i * n + j] * b[j];
+    b[i] /= M[i * n + i];
+  }
+  return 0;
+}
+
+/* columns of the active parameters (E's column also carries the tied parameters) */
+static void ActiveJacobian(HylcCalibrate C, const PetscReal J[], const int act[], int na, PetscReal Jc[])
+{
+  for (PetscInt i = 0; i < C->m; i++)
+    for (int a = 0; a < na; a++) {
+      const int j = act[a];
+      PetscReal v = J[i * HYLC_CALIBRATE_NPARAM + j];
+      if (j == 0)
+        for (int q = 1; q < HYLC_CALIBRATE_NPARAM; q++)
+          if (C->role[q] == HYLC_CALIBRATE_TIED) v += J[i * HYLC_CALIBRATE_NPARAM + q];
+      Jc[i * na + a] = v;
+    }
+}
+
+static PetscErrorCode PrintLine(HylcCalibrate C, const char what[], PetscInt it, PetscReal f, const PetscReal p[], PetscReal step, PetscReal lambda, PetscInt nfailed, PetscLogDouble dt)
+{
+  char buf[512];
+  int  len;
+
+  PetscFunctionBegin;
+  if (f < PETSC_INFINITY)
+    len = snprintf(buf, sizeof(buf), "[calibrate] %-6s %3d  f %.6e", what, (int)it, (double)f);
+  else
+    len = snprintf(buf, sizeof(buf), "[calibrate] %-6s %3d  f inf (the base sample did not converge)", what, (int)it);
+  len += snprintf(buf + len, sizeof(buf) - len, "  E %.6g  Es %.6g  G %.6g  kc %.6g", (double)p[0], (double)p[1], (double)p[2], (double)p[3]);
+  if (step >= 0) len += snprintf(buf + len, sizeof(buf) - len, "  step %.2e  lambda %.1e", (double)step, (double)lambda);
+  if (nfailed && f < PETSC_INFINITY) len += snprintf(buf + len, sizeof(buf) - len, "  (%d samples not converged, left out)", (int)nfailed);
+  snprintf(buf + len, sizeof(buf) - len, "  %.1f s\n", dt);
+  PetscCall(PetscPrintf(PetscObjectComm((PetscObject)C), "%s", buf));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode WriteYAML(HylcCalibrate C)
+{
+  char        tmp[PETSC_MAX_PATH_LEN + 32];
+  FILE       *fp;
+  time_t      now = time(NULL);
+  char        stamp[64];
+  const char *roles[3] = {"free", "tied to E", "fixed"};
+
+  PetscFunctionBegin;
+  if (C->rank || !C->output[0]) PetscFunctionReturn(PETSC_SUCCESS);
+  strftime(stamp, sizeof(stamp), "%Y-%m-%d %H:%M UTC", gmtime(&now));
+  PetscCall(HylcFileOpenTemp(C->output, tmp, sizeof(tmp), &fp));
+  fprintf(fp, "# yarn parameters calibrated by hylc-calibrate %s (%s); docs/calibrate.md\n", HYLC_VERSION_STRING, stamp);
+  fprintf(fp, "# pattern: %s%s\n", C->patLabel, C->refComputed ? " (its reference state computed with the initial parameters, kept fixed)" : "");
+  fprintf(fp, "# target: %s (%s), %d samples\n", C->target, HylcCalibTargetTypes[C->targetResolved], (int)C->m);
+  fprintf(fp, "# objective: %.6e -> %.6e in %d iterations\n", (double)C->f0, (double)C->f1, (int)C->its);
+  for (int j = 0; j < HYLC_CALIBRATE_NPARAM; j++)
+    fprintf(fp, "# %-2s %-9s initial %.9g%s%s\n", HylcCalibrateParamNames[j], roles[C->role[j]], (double)C->p0[j], C->held[j] ? " HELD (not determined by the data)" : "", C->bound[j] ? " AT BOUND" : "");
+  fprintf(fp, "# use after the pattern's options: -options_file config/<p>.yaml -options_file %s\n", C->output);
+  fprintf(fp, "yarn_E:  %.9g   # bending Young's modulus (Pa)\n", (double)C->p[0]);
+  fprintf(fp, "yarn_Es: %.9g   # stretching modulus (Pa)\n", (double)C->p[1]);
+  fprintf(fp, "yarn_G:  %.9g   # shear modulus (Pa)\n", (double)C->p[2]);
+  fprintf(fp, "yarn_kc: %.9g   # contact stiffness (N/m)\n", (double)C->p[3]);
+  PetscCall(HylcFileCommitTemp(&fp, tmp, C->output));
+  PetscCall(PetscPrintf(PETSC_COMM_SELF, "[calibrate] wrote %s\n", C->output));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode WriteDump(HylcCalibrate C)
+{
+  char  tmp[PETSC_MAX_PATH_LEN + 32];
+  FILE *fp;
+
+  PetscFunctionBegin;
+  if (C->rank || !C->dump[0]) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(HylcFileOpenTemp(C->dump, tmp, sizeof(tmp), &fp));
+  fprintf(fp, "index,term,sx,sa,sy,II00,II01,II11,target,initial,calibrated,status_initial,status_calibrated\n");
+  for (PetscInt i = 0; i < C->m; i++) {
+    const PetscReal *z = C->z + 6 * i;
+    fprintf(fp, "%d,%s,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%d\n", (int)i, HylcCalibrateTermName_Private(C->term[i]), z[0], z[1], z[2], z[3], z[4], z[5], (double)C->tpsi[i], (double)C->rec0[i * HYLC_CALIB_NRECORD], (double)C->rec1[i * HYLC_CALIB_NRECORD], (int)C->rec0[i * HYLC_CALIB_NRECORD + 5], (int)C->rec1[i * HYLC_CALIB_NRECORD + 5]);
+  }
+  PetscCall(HylcFileCommitTemp(&fp, tmp, C->dump));
+  PetscCall(PetscPrintf(PETSC_COMM_SELF, "[calibrate] wrote %s\n", C->dump));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcCalibrateSolve - Levenberg-Marquardt on the normalised residuals in log parameters (docs/calibrate.md):
+  one solve per sample per trial point; the Jacobian comes with it (envelope theorem). Prints a line per
+  iteration, holds parameters along flat directions, flags parameters at a bound, and writes
+  -calibrate_output and -calibrate_dump. Collective.
+@*/
+PetscErrorCode HylcCalibrateSolve(HylcCalibrate C)
+{
+  MPI_Comm       comm = PetscObjectComm((PetscObject)C);
+  const PetscInt NP = HYLC_CALIBRATE_NPARAM, m = C->m;
+  PetscReal     *rec, *r, *J, *rect, *rt, *Jt, *Jc;
+  PetscReal      x[HYLC_CALIBRATE_NPARAM], p[HYLC_CALIBRATE_NPARAM], xlo[HYLC_CALIBRATE_NPARAM], xhi[HYLC_CALIBRATE_NPARAM];
+  PetscReal      f, ft, lambda         = C->lambda0;
+  PetscInt       nfailed, nft, rejects = 0;
+  PetscLogDouble t0, t1, ts;
+  const char    *reason = "iteration limit (-calibrate_max_it)";
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
+  PetscCall(HylcCalibrateSetUp(C));
+  PetscCall(PetscLogEventBegin(HYLC_CalibrateSolve, C, 0, 0, 0));
+  PetscCall(PetscTime(&ts));
+  /* separate allocations: the current and trial arrays are swapped on acceptance */
+  PetscCall(PetscMalloc1(m * HYLC_CALIB_NRECORD, &rec));
+  PetscCall(PetscMalloc1(m * HYLC_CALIB_NRECORD, &rect));
+  PetscCall(PetscMalloc1(m, &r));
+  PetscCall(PetscMalloc1(m, &rt));
+  PetscCall(PetscMalloc1(m * NP, &J));
+  PetscCall(PetscMalloc1(m * NP, &Jt));
+  PetscCall(PetscMalloc1(m * NP, &Jc));
+  for (int j = 0; j < NP; j++) {
+    x[j]       = PetscLogReal(C->p0[j]);
+    xlo[j]     = PetscLogReal(C->lo[j]);
+    xhi[j]     = PetscLogReal(C->hi[j]);
+    C->held[j] = C->bound[j] = PETSC_FALSE;
+  }
+  {
+    char line[256] = "";
+    for (int j = 0; j < NP; j++) {
+      PetscCall(PetscStrlcat(line, j ? ", " : "", sizeof(line)));
+      PetscCall(PetscStrlcat(line, HylcCalibrateParamNames[j], sizeof(line)));
+      PetscCall(PetscStrlcat(line, C->role[j] == HYLC_CALIBRATE_FREE ? " free" : C->role[j] == HYLC_CALIBRATE_TIED ? " tied to E"
+                                                                                                                   : " fixed",
+                             sizeof(line)));
+    }
+    PetscCall(PetscPrintf(comm, "[calibrate] %" PetscInt_FMT " samples (target %s, %s) on %d ranks; %s\n", m, C->target, HylcCalibTargetTypes[C->targetResolved], (int)C->size, line));
+  }
+  if (C->z[0] != 0 || C->z[1] != 0 || C->z[2] != 0 || C->z[3] != 0 || C->z[4] != 0 || C->z[5] != 0)
+    PetscCall(PetscPrintf(comm, "[calibrate] the target has no zero strain: base strain z_b = (%g, %g, %g, %g, %g, %g), the row nearest to it; dPsi = Psi(z) - Psi(z_b)\n", (double)C->z[0], (double)C->z[1], (double)C->z[2], (double)C->z[3], (double)C->z[4], (double)C->z[5]));
+  Expand(C, x, p);
+  PetscCall(PetscTime(&t0));
+  PetscCall(HylcCalibrateSolveSamples_Private(C, p, rec));
+  PetscCall(HylcCalibrateResiduals_Private(C, rec, r, J, &f, &nfailed));
+  PetscCall(PetscTime(&t1));
+  C->nevals = 1;
+  PetscCheck(f < PETSC_INFINITY, comm, PETSC_ERR_NOT_CONVERGED, "The base sample (strain %g %g %g %g %g %g) did not converge with the initial parameters; check -yarn_* and -micro_*", (double)C->z[0], (double)C->z[1], (double)C->z[2], (double)C->z[3], (double)C->z[4], (double)C->z[5]);
+  PetscCall(PetscArraycpy(C->rec0, rec, m * HYLC_CALIB_NRECORD));
+  C->f0 = f;
+  PetscCall(PrintLine(C, "it", 0, f, p, -1, 0, nfailed, t1 - t0));
+  C->its = 0;
+  while (C->its < C->maxIt) {
+    int       act[HYLC_CALIBRATE_NPARAM], na = 0, pin[HYLC_CALIBRATE_NPARAM];
+    PetscReal A[16], g[4], d[4], M[16], ev[4], V[16], xt[HYLC_CALIBRATE_NPARAM], step = 0;
+
+    if (f <= C->fatol) {
+      reason = "objective below -calibrate_fatol";
+      break;
+    }
+    /* active parameters; hold those along a flat direction of the Jacobian */
+    for (;;) {
+      na = 0;
+      for (int j = 0; j < NP; j++)
+        if (C->role[j] == HYLC_CALIBRATE_FREE && !C->held[j]) act[na++] = j;
+      if (!na) break;
+      ActiveJacobian(C, J, act, na, Jc);
+      for (int a = 0; a < na; a++)
+        for (int b = 0; b < na; b++) {
+          A[a * na + b] = 0;
+          for (PetscInt i = 0; i < m; i++) A[a * na + b] += Jc[i * na + a] * Jc[i * na + b];
+        }
+      SymEig(na, A, ev, V);
+      if (PetscSqrtReal(PetscMax(ev[0], 0)) >= C->flatTol) break;
+      {
+        int worst = 0;
+        for (int a = 1; a < na; a++)
+          if (PetscAbsReal(V[a * na + 0]) > PetscAbsReal(V[worst * na + 0])) worst = a;
+        C->held[act[worst]] = PETSC_TRUE;
+        PetscCall(PetscPrintf(comm, "[calibrate] %s is not determined by the data (singular value %.2e of the Jacobian < -calibrate_flat_tol %g): held at %g\n", HylcCalibrateParamNames[act[worst]], (double)PetscSqrtReal(PetscMax(ev[0], 0)), (double)C->flatTol, (double)PetscExpReal(x[act[worst]])));
+      }
+    }
+    if (!na) {
+      reason = "no parameter left to fit";
+      break;
+    }
+    for (int a = 0; a < na; a++) {
+      g[a] = 0;
+      for (PetscInt i = 0; i < m; i++) g[a] += Jc[i * na + a] * r[i];
+      /* a parameter at a bound whose descent direction points outward stays there for this step */
+      pin[a] = (x[act[a]] <= xlo[act[a]] && g[a] > 0) || (x[act[a]] >= xhi[act[a]] && g[a] < 0);
+    }
+    for (int a = 0; a < na; a++)
+      for (int b = 0; b < na; b++) {
+        M[a * na + b] = (pin[a] || pin[b]) ? (a == b) : A[a * na + b] + (a == b ? lambda * A[a * na + a] : 0);
+      }
+    for (int a = 0; a < na; a++) d[a] = pin[a] ? 0 : -g[a];
+    if (Solve4(na, M, d)) {
+      reason = "singular Levenberg-Marquardt system";
+      break;
+    }
+    for (int j = 0; j < NP; j++) xt[j] = x[j];
+    for (int a = 0; a < na; a++) {
+      const int j = act[a];
+      xt[j]       = PetscMin(PetscMax(x[j] + d[a], xlo[j]), xhi[j]);
+      step        = PetscMax(step, PetscAbsReal(xt[j] - x[j]));
+    }
+    Expand(C, xt, p);
+    PetscCall(PetscTime(&t0));
+    PetscCall(HylcCalibrateSolveSamples_Private(C, p, rect));
+    PetscCall(HylcCalibrateResiduals_Private(C, rect, rt, Jt, &ft, &nft));
+    PetscCall(PetscTime(&t1));
+    C->nevals++;
+    if (ft < f) {
+      const PetscReal df = f - ft;
+      PetscReal      *sw;
+      for (int j = 0; j < NP; j++) x[j] = xt[j];
+      f  = ft;
+      sw = rec, rec = rect, rect = sw;
+      sw = r, r = rt, rt = sw;
+      sw = J, J = Jt, Jt = sw;
+      nfailed = nft;
+      lambda  = PetscMax(lambda / 3, 1e-12);
+      rejects = 0;
+      C->its++;
+      PetscCall(PrintLine(C, "it", C->its, f, p, step, lambda, nfailed, t1 - t0));
+      if (step < C->xtol) {
+        reason = "step below -calibrate_xtol";
+        break;
+      }
+      if (df < C->ftol * (f + df)) {
+        reason = "relative decrease below -calibrate_ftol";
+        break;
+      }
+    } else {
+      PetscCall(PrintLine(C, "reject", C->its + 1, ft, p, step, lambda, nft, t1 - t0));
+      lambda *= 4;
+      if (++rejects >= C->maxReject) {
+        reason = "no further decrease (-calibrate_max_reject trial steps rejected)";
+        break;
+      }
+      if (step < C->xtol) {
+        reason = "step below -calibrate_xtol";
+        break;
+      }
+    }
+  }
+  Expand(C, x, C->p);
+  for (int j = 0; j < NP; j++)
+    if (C->role[j] == HYLC_CALIBRATE_FREE && !C->held[j]) C->bound[j] = (x[j] <= xlo[j] + 1e-9) || (x[j] >= xhi[j] - 1e-9);
+  C->f1 = f;
+  PetscCall(PetscArraycpy(C->rec1, rec, m * HYLC_CALIB_NRECORD));
+  PetscCall(PetscTime(&t1));
+  C->tsolve = t1 - ts;
+  C->solved = PETSC_TRUE;
+  PetscCall(PetscPrintf(comm, "[calibrate] stopped: %s\n", reason));
+  for (int j = 0; j < NP; j++)
+    if (C->bound[j]) PetscCall(PetscPrintf(comm, "[calibrate] warning: %s = %g ends at a bound of -calibrate_bounds_%s [%g, %g]\n", HylcCalibrateParamNames[j], (double)C->p[j], HylcCalibrateParamNames[j], (double)C->lo[j], (double)C->hi[j]));
+  if (nfailed) {
+    PetscInt shown = 0;
+    PetscCall(PetscPrintf(comm, "[calibrate] %" PetscInt_FMT " samples did not converge with the final parameters and were left out:\n", nfailed));
+    for (PetscInt i = 0; i < m && shown < 10; i++) {
+      const PetscReal *o = rec + i * HYLC_CALIB_NRECORD, *z = C->z + 6 * i;
+      if (o[5] == 0) continue;
+      shown++;
+      PetscCall(PetscPrintf(comm, "  sample %" PetscInt_FMT " (%s) strain %g %g %g %g %g %g: %s after %d iterations\n", i, HylcCalibrateTermName_Private(C->term[i]), (double)z[0], (double)z[1], (double)z[2], (double)z[3], (double)z[4], (double)z[5], HylcMicroStatuses[(int)o[5]], (int)o[6]));
+    }
+  }
+  PetscCall(WriteYAML(C));
+  PetscCall(WriteDump(C));
+  PetscCall(PetscFree(rec));
+  PetscCall(PetscFree(rect));
+  PetscCall(PetscFree(r));
+  PetscCall(PetscFree(rt));
+  PetscCall(PetscFree(J));
+  PetscCall(PetscFree(Jt));
+  PetscCall(PetscFree(Jc));
+  PetscCall(PetscLogEventEnd(HYLC_CalibrateSolve, C, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

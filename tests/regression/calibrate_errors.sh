@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# hylc-calibrate refuses bad input with a one-line error before any solve: an unknown parameter name,
+# inverted or non-positive bounds, a missing target, a directory target without data.txt, an unknown
+# term, a CSV without the needed columns, an unwritable output; -help lists the options.
+set -u
+cd "$HYLC_TMP"
+die() { echo "FAIL: $*"; exit 1; }
+tool=$HYLC_BIN/hylc-calibrate
+printf 'sx,sa,sy,II00,II01,II11,psi\n0,0,0,0,0,0,1\n0.1,0,0,0,0,0,2\n' >ok.csv
+printf 'sx,sa,sy,II00,II11,psi\n0,0,0,0,0,1\n' >nocol.csv
+printf 'sx,sa,sy,II00,II01,II11,psi\n0,0,0,0,0,0,1\n0.1,0,x,0,0,0,2\n' >badnum.csv
+mkdir -p emptydir
+base=(-pattern_type plain -calibrate_reference none)
+expect() { # pattern args...
+  local pat=$1; shift
+  $MPIEXEC -n 2 $tool "${base[@]}" "$@" >out.txt 2>&1 && { cat out.txt; die "accepted: $*"; }
+  [ "$(grep -c '^hylc: error' out.txt)" = 1 ] || { cat out.txt; die "not one error line: $*"; }
+  grep -q "^hylc: error[^:]*: .*$pat" out.txt || { cat out.txt; die "message should match '$pat': $*"; }
+  grep -q '^\[calibrate\]' out.txt && { cat out.txt; die "work was done before the error: $*"; }
+  return 0
+}
+expect "-calibrate_params: unknown parameter 'Ex'" -calibrate_target ok.csv -calibrate_params E,Ex
+expect "-calibrate_tie: unknown parameter 'H'" -calibrate_target ok.csv -calibrate_tie H
+expect "-calibrate_bounds_E 2e+06,100000: inverted bounds" -calibrate_target ok.csv -calibrate_bounds_E 2e6,1e5
+expect "-calibrate_bounds_kc .*must be positive" -calibrate_target ok.csv -calibrate_bounds_kc 0,10
+expect "initial E = 1e+06 .* outside -calibrate_bounds_E" -calibrate_target ok.csv -calibrate_bounds_E 1,10
+expect "Cannot open missing.json" -calibrate_target missing.json
+expect "emptydir/data.txt" -calibrate_target emptydir
+expect "No target" -calibrate_params E
+expect "-calibrate_terms: unknown term 'sz'" -calibrate_target ok.csv -calibrate_terms sx,sz
+expect "nocol.csv:1: the header has no column 'II01'" -calibrate_target nocol.csv
+expect "badnum.csv:3: column sy: 'x' is not a finite number" -calibrate_target badnum.csv
+expect "-calibrate_output" -calibrate_target ok.csv -calibrate_output nodir/p.yaml
+expect "Unknown option.*-calibrate_paramz" -calibrate_target ok.csv -calibrate_paramz E
+# -help documents every option of the tool
+$tool -help >help.txt 2>&1 || { cat help.txt; die "-help failed"; }
+for o in target target_type output dump params tie bounds_E bounds_Es bounds_G bounds_kc terms n n2 stride max_samples \
+  weight_zero weights max_it max_reject lambda xtol ftol fatol flat_tol reference; do
+  grep -q -- "-calibrate_$o " help.txt || grep -q -- "-calibrate_$o <" help.txt || die "-help does not list -calibrate_$o"
+done
+grep -q -- '-sampler_family' help.txt && grep -q -- '-yarn_E' help.txt && grep -q -- '-micro_rtol' help.txt || die "-help lacks the pattern/yarn/solver options"
+exit 0
