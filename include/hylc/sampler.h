@@ -15,3 +15,10 @@ PETSC_EXTERN PetscErrorCode HylcSamplerSetFromOptions(HylcSampler);
 PETSC_EXTERN PetscErrorCode HylcSamplerSetUp(HylcSampler);
 PETSC_EXTERN PetscErrorCode HylcSamplerRun(HylcSampler);
 PETSC_EXTERN PetscErrorCode HylcSamplerGetPlan(HylcSampler, const HylcPlan **);
+
+/* The plan's options, shared by hylc-sample and hylc-calibrate (src/sampler/planopts.c): family names,
+   -sampler_family and -sampler_range_<c> inside a PetscOptionsBegin/End block (ranges checked), and a term
+   list ("all", "1d" or comma-separated names). Collective. */
+PETSC_EXTERN const char *const HylcPlanFamilies[];
+PETSC_EXTERN PetscErrorCode    HylcPlanRangesFromOptions(PetscOptionItems *, MPI_Comm, PetscReal, const char[], HylcPlan *);
+PETSC_EXTERN PetscErrorCode    HylcPlanTermsFromString(MPI_Comm, const char[], const char[], int *);

@@ -1,11 +1,11 @@
 /* HylcCalibrate: lifecycle, options, setters and getters (include/hylc/calibrate.h, docs/calibrate.md). */
 #include "calibrateimpl.h"
+#include <hylc/sampler.h>
 #include <stdio.h>
 #include <string.h>
 
 const char *const        HylcCalibrateParamNames[HYLC_CALIBRATE_NPARAM] = {"E", "Es", "G", "kc"};
 const char *const        HylcCalibTargetTypes[]                         = {"auto", "table", "samples", "raw", "csv", "HylcCalibTargetType", "HYLC_CALIB_TARGET_", NULL};
-static const char *const Families[]                                     = {"woven", "stockinette", "honeycomb", "rib", "HylcPlanFamily", "", NULL};
 static const char *const RefModes[]                                     = {"auto", "compute", "none", "HylcCalibrateReference", "", NULL};
 static const char *const RoleNames[]                                    = {"free", "tied to E", "fixed"};
 
@@ -153,25 +153,6 @@ static PetscErrorCode ParseParamList(MPI_Comm comm, const char opt[], const char
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* a 1D range option "-sampler_range_<name> min,max" (the sampler's own option, so that config/ files apply) */
-static PetscErrorCode RangeOption(PetscOptionItems *PetscOptionsObject, MPI_Comm comm, const char name[], double *mn, double *mx)
-{
-  PetscReal v[2] = {*mn, *mx};
-  PetscInt  n    = 2;
-  PetscBool set;
-  char      opt[64];
-
-  PetscFunctionBegin;
-  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-sampler_range_%s", name));
-  PetscCall(PetscOptionsRealArray(opt, "Strain range min,max of this term for a table target (II in 1/m; clipped to the table's knots)", "HylcCalibrate", v, &n, &set));
-  if (set) {
-    PetscCheck(n == 2 && v[0] <= v[1], comm, PETSC_ERR_USER_INPUT, "%s needs two values min,max with min <= max", opt);
-    *mn = v[0];
-    *mx = v[1];
-  }
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 /*@C
   HylcCalibrateSetFromOptions - Options (docs/calibrate.md has the table); besides -pattern_*, -yarn_*
   (the initial values), -reference_*, -micro_*:
@@ -194,12 +175,11 @@ static PetscErrorCode RangeOption(PetscOptionItems *PetscOptionsObject, MPI_Comm
 @*/
 PetscErrorCode HylcCalibrateSetFromOptions(HylcCalibrate C)
 {
-  MPI_Comm    comm = PetscObjectComm((PetscObject)C);
-  PetscReal   r;
-  char        params[256] = "", tie[256] = "G", terms[512] = "", weights[1024] = "";
-  PetscBool   set, pset, tset;
-  PetscEnum   tt = (PetscEnum)C->targetType, fam = 0, rm = (PetscEnum)C->refmode;
-  const char *cn[5] = {"sx", "sa", "sy", "II00", "II11"};
+  MPI_Comm  comm = PetscObjectComm((PetscObject)C);
+  PetscReal r;
+  char      params[256] = "", tie[256] = "G", terms[512] = "", weights[1024] = "";
+  PetscBool set, pset, tset;
+  PetscEnum tt = (PetscEnum)C->targetType, rm = (PetscEnum)C->refmode;
 
   PetscFunctionBegin;
   PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
@@ -239,21 +219,7 @@ PetscErrorCode HylcCalibrateSetFromOptions(HylcCalibrate C)
 
   /* the plan's ranges under the sampler's names, so that -options_file config/<p>.yaml applies */
   PetscOptionsBegin(comm, NULL, "Calibration: the plan's ranges (table target; the sampler's options)", "HylcCalibrate");
-  PetscCall(PetscOptionsEnum("-sampler_family", "Default ranges of method-spec 8 (II scaled by 1 mm / r): woven, stockinette, honeycomb, rib", "HylcCalibrate", Families, fam, &fam, NULL));
-  PetscCheck(!HylcPlanDefaults(Families[fam], 1e-3 / r, &C->plan), comm, PETSC_ERR_USER_INPUT, "Unknown sampling family");
-  for (int c = 0; c < 5; c++) {
-    const double mn0 = C->plan.min1[c], mx0 = C->plan.max1[c];
-    PetscCall(RangeOption(PetscOptionsObject, comm, cn[c], &C->plan.min1[c], &C->plan.max1[c]));
-    for (int t = 6; t < HYLC_PLAN_NTERM; t++) { /* 2D ranges follow the 1D ones in proportion, as in hylc-sample */
-      int ci, cj;
-      HylcPlanPair(t, &ci, &cj);
-      for (int a = 0; a < 2; a++)
-        if ((a ? cj : ci) == c) {
-          if (mn0 != 0) C->plan.min2[t - 6][a] *= C->plan.min1[c] / mn0;
-          if (mx0 != 0) C->plan.max2[t - 6][a] *= C->plan.max1[c] / mx0;
-        }
-    }
-  }
+  PetscCall(HylcPlanRangesFromOptions(PetscOptionsObject, comm, r, "HylcCalibrate", &C->plan));
   PetscCall(PetscOptionsString("-reference_output", "Write the reference state as .pyp", "HylcCalibrate", C->refout, C->refout, sizeof(C->refout), NULL));
   PetscOptionsEnd();
 
@@ -328,37 +294,15 @@ PetscErrorCode HylcCalibrateSetFromOptions(HylcCalibrate C)
   }
   /* terms */
   if (terms[0]) {
-    PetscBool all, d1;
-    PetscCall(PetscStrcmp(terms, "all", &all));
-    PetscCall(PetscStrcmp(terms, "1d", &d1));
-    if (all)
-      C->terms = (1 << HYLC_PLAN_NTERM) - 1;
-    else if (d1)
-      C->terms = (1 << 6) - 1;
-    else {
-      char *tok, *save = NULL;
-      C->terms = 0;
-      for (tok = strtok_r(terms, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
-        int found = -1;
-        for (int t = 0; t < HYLC_PLAN_NTERM; t++) {
-          PetscBool eq;
-          PetscCall(PetscStrcmp(tok, HylcPlanTermName(t), &eq));
-          if (eq) found = t;
-        }
-        PetscCheck(found >= 0, comm, PETSC_ERR_USER_INPUT, "-calibrate_terms: unknown term '%s' (use zero, sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11, 1d or all)", tok);
-        C->terms |= 1 << found;
-      }
-    }
+    int mask;
+    PetscCall(HylcPlanTermsFromString(comm, "-calibrate_terms", terms, &mask));
+    C->terms = (PetscInt)mask;
   }
   C->terms |= 1; /* the base sample is always solved */
   PetscCheck(C->n1 >= 2 && C->n1 <= 1024 && C->n2 >= 2 && C->n2 <= 1024, comm, PETSC_ERR_USER_INPUT, "-calibrate_n and -calibrate_n2 must be in 2..1024, got %" PetscInt_FMT " and %" PetscInt_FMT, C->n1, C->n2);
   C->plan.n1    = (int)C->n1;
   C->plan.n2    = (int)C->n2;
   C->plan.terms = (int)C->terms;
-  for (int c = 0; c < 5; c++) {
-    double Z[1];
-    PetscCheck(!HylcSampleRange(c, C->plan.min1[c], C->plan.max1[c], 1, Z), comm, PETSC_ERR_USER_INPUT, "-sampler_range_%s %g,%g is not a valid range (sx, sy > -1; the others must contain 0)", cn[c], C->plan.min1[c], C->plan.max1[c]);
-  }
   PetscCheck(C->stride >= 1, comm, PETSC_ERR_USER_INPUT, "-calibrate_stride must be >= 1, got %" PetscInt_FMT, C->stride);
   PetscCheck(C->maxSamples >= 0, comm, PETSC_ERR_USER_INPUT, "-calibrate_max_samples must be >= 0, got %" PetscInt_FMT, C->maxSamples);
   PetscCheck(C->wzero >= 0, comm, PETSC_ERR_USER_INPUT, "-calibrate_weight_zero must be >= 0, got %g", (double)C->wzero);

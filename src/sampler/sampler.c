@@ -9,8 +9,6 @@
 #define TAG_RECORDS 7301
 #define TAG_DONE    7302
 
-static const char *const Families[] = {"woven", "stockinette", "honeycomb", "rib", "HylcPlanFamily", "", NULL};
-
 struct _n_HylcSampler {
   MPI_Comm            comm;
   PetscMPIInt         rank, size;
@@ -62,25 +60,6 @@ PetscErrorCode HylcSamplerDestroy(HylcSampler *s)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* a 1D range option "-sampler_range_<name> min,max" */
-static PetscErrorCode RangeOption(PetscOptionItems *PetscOptionsObject, const char name[], const char help[], double *mn, double *mx)
-{
-  PetscReal v[2] = {*mn, *mx};
-  PetscInt  n    = 2;
-  PetscBool set;
-  char      opt[64];
-
-  PetscFunctionBegin;
-  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-sampler_range_%s", name));
-  PetscCall(PetscOptionsRealArray(opt, help, "HylcSampler", v, &n, &set));
-  if (set) {
-    PetscCheck(n == 2 && v[0] <= v[1], PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "%s needs two values min,max with min <= max", opt);
-    *mn = v[0];
-    *mx = v[1];
-  }
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 /*@C
   HylcSamplerSetFromOptions - Options of the sampling job (besides -pattern_*, -yarn_*, -micro_*,
   -periodic_*, -macro_*):
@@ -98,11 +77,9 @@ static PetscErrorCode RangeOption(PetscOptionItems *PetscOptionsObject, const ch
 @*/
 PetscErrorCode HylcSamplerSetFromOptions(HylcSampler S)
 {
-  PetscEnum   fam        = 0;
-  const char *cn[5]      = {"sx", "sa", "sy", "II00", "II11"};
-  char        terms[512] = "all";
-  PetscInt    n1 = 150, n2 = 50;
-  PetscReal   r;
+  char      terms[512] = "all";
+  PetscInt  n1 = 150, n2 = 50;
+  PetscReal r;
 
   PetscFunctionBegin;
   PetscCall(HylcPatternCreate(S->comm, &S->pat));
@@ -126,22 +103,7 @@ PetscErrorCode HylcSamplerSetFromOptions(HylcSampler S)
   PetscCall(PetscOptionsString("-sampler_output", "HDF5 output file (the journal is <output>.journal)", "HylcSampler", S->output, S->output, sizeof(S->output), NULL));
   PetscCall(PetscOptionsBool("-sampler_resume", "Continue an interrupted run from its journal <output>.journal (refused, naming the differences, if any setting that changes results differs)", "HylcSampler", S->resume, &S->resume, NULL));
   PetscCall(PetscOptionsBool("-sampler_overwrite", "Start over: replace an existing output and its journal (without -sampler_resume or this, an existing output or journal with samples is refused)", "HylcSampler", S->overwrite, &S->overwrite, NULL));
-  PetscCall(PetscOptionsEnum("-sampler_family", "Default sampling ranges of method-spec 8 (II scaled by 1 mm / r)", "HylcSampler", Families, fam, &fam, NULL));
-  PetscCheck(!HylcPlanDefaults(Families[fam], 1e-3 / r, &S->plan), S->comm, PETSC_ERR_USER_INPUT, "Unknown sampling family");
-  for (int c = 0; c < 5; c++) {
-    const double mn0 = S->plan.min1[c], mx0 = S->plan.max1[c];
-    PetscCall(RangeOption(PetscOptionsObject, cn[c], "1D sampling range min,max of this strain (II in 1/m); the 2D ranges scale with it", &S->plan.min1[c], &S->plan.max1[c]));
-    /* 2D ranges follow the 1D ones in proportion */
-    for (int t = 6; t < HYLC_PLAN_NTERM; t++) {
-      int ci, cj;
-      HylcPlanPair(t, &ci, &cj);
-      for (int a = 0; a < 2; a++)
-        if ((a ? cj : ci) == c) {
-          if (mn0 != 0) S->plan.min2[t - 6][a] *= S->plan.min1[c] / mn0;
-          if (mx0 != 0) S->plan.max2[t - 6][a] *= S->plan.max1[c] / mx0;
-        }
-    }
-  }
+  PetscCall(HylcPlanRangesFromOptions(PetscOptionsObject, S->comm, r, "HylcSampler", &S->plan));
   PetscCall(PetscOptionsInt("-sampler_n1", "Samples per 1D term", "HylcSampler", n1, &n1, NULL));
   PetscCall(PetscOptionsInt("-sampler_n2", "Samples per axis of a 2D term", "HylcSampler", n2, &n2, NULL));
   PetscCall(PetscOptionsString("-sampler_terms", "Terms to sample: all, or a comma list of zero, sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11", "HylcSampler", terms, terms, sizeof(terms), NULL));
@@ -152,30 +114,10 @@ PetscErrorCode HylcSamplerSetFromOptions(HylcSampler S)
   PetscOptionsEnd();
   PetscCheck(n1 >= 1 && n1 <= 1024 && n2 >= 1 && n2 <= 1024, S->comm, PETSC_ERR_USER_INPUT, "-sampler_n1 and -sampler_n2 must be in 1..1024");
   PetscCheck(S->batch >= 1, S->comm, PETSC_ERR_USER_INPUT, "-sampler_batch must be at least 1");
-  S->plan.n1 = (int)n1;
-  S->plan.n2 = (int)n2;
-  {
-    PetscBool all;
-    PetscCall(PetscStrcmp(terms, "all", &all));
-    if (!all) {
-      char *tok, *save = NULL;
-      S->plan.terms = 0;
-      for (tok = strtok_r(terms, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
-        int found = -1;
-        for (int t = 0; t < HYLC_PLAN_NTERM; t++) {
-          PetscBool eq;
-          PetscCall(PetscStrcmp(tok, HylcPlanTermName(t), &eq));
-          if (eq) found = t;
-        }
-        PetscCheck(found >= 0, S->comm, PETSC_ERR_USER_INPUT, "-sampler_terms: unknown term '%s' (use zero, sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11 or all)", tok);
-        S->plan.terms |= 1 << found;
-      }
-    }
-  }
-  for (int c = 0; c < 5; c++) {
-    double Z[1];
-    PetscCheck(!HylcSampleRange(c, S->plan.min1[c], S->plan.max1[c], 1, Z), S->comm, PETSC_ERR_USER_INPUT, "-sampler_range_%s %g,%g is not a valid range (sx, sy > -1; the others must contain 0)", cn[c], S->plan.min1[c], S->plan.max1[c]);
-  }
+  S->plan.n1    = (int)n1;
+  S->plan.n2    = (int)n2;
+  S->plan.terms = (1 << HYLC_PLAN_NTERM) - 1;
+  PetscCall(HylcPlanTermsFromString(S->comm, "-sampler_terms", terms, &S->plan.terms));
   PetscCall(HylcMicroCreate(PETSC_COMM_SELF, &S->micro));
   PetscCall(HylcMicroSetPattern(S->micro, S->pat, &S->model));
   PetscCall(HylcMicroSetFromOptions(S->micro));
