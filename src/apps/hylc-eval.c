@@ -77,7 +77,7 @@ static PetscErrorCode Eval(HylcMaterial mat)
   PetscCall(PetscOptionsGetString(NULL, NULL, "-material_file", matFile, sizeof(matFile), &hasMatFile));
   PetscCheck(!(hasFile && hasMatFile), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "Both -material and -material_file were given; use one");
   PetscCall(PetscOptionsHasHelp(NULL, &help));
-  if (help) { /* -help: every option has been listed; do no work */
+  if (help) {                                   /* -help: every option has been listed; do no work */
     PetscCall(HylcMaterialSetFromOptions(mat)); /* lists -material_file, -material_view */
     PetscFunctionReturn(PETSC_SUCCESS);
   }

@@ -18,8 +18,10 @@
    Range: the computation runs in double; when a result comes out non-finite for finite strains (a
    strain near the largest double, a table whose coefficients overflow an intermediate quantity), it is
    repeated in long double (x86: 15-bit exponent, so no intermediate of a table the loader accepts can
-   overflow, docs/material.md) and each result is rounded to double, a magnitude beyond the largest
-   double becoming +-PETSC_MAX_REAL (saturated). Ordinary strains never take the fallback. */
+   overflow, docs/material.md) and each non-finite result is replaced by its long double value rounded
+   to double, a magnitude beyond the largest double becoming +-PETSC_MAX_REAL (saturated). The finite
+   results of the double pass are kept, so Psi does not depend on whether derivatives were asked for.
+   Ordinary strains never take the fallback. */
 #include <hylc/private/materialimpl.h>
 #include <math.h>
 #include <float.h>
@@ -76,18 +78,18 @@ PetscErrorCode HylcMaterialEvaluate(HylcMaterial m, const PetscReal s[6], PetscR
     if (!isfinite(H[i])) finite = PETSC_FALSE;
   for (int i = 0; i < 6; i++)
     if (!isfinite(s[i])) inputFinite = PETSC_FALSE;
-  if (!finite && inputFinite) { /* the long double fallback */
+  if (!finite && inputFinite) { /* the long double fallback, for the results that are not finite */
     long double El, gl[6] = {0, 0, 0, 0, 0, 0}, Hl[36];
     Evaluate_l(m, s, level, &El, gl, Hl);
     PetscCheck(!isnan(El), PETSC_COMM_SELF, PETSC_ERR_PLIB, "Psi is NaN at the finite strain (%g, %g, %g, %g, %g, %g)", (double)s[0], (double)s[1], (double)s[2], (double)s[3], (double)s[4], (double)s[5]);
-    E = Saturate(El);
+    if (!isfinite(E)) E = Saturate(El);
     for (int i = 0; i < 6 && level; i++) {
       PetscCheck(!isnan(gl[i]), PETSC_COMM_SELF, PETSC_ERR_PLIB, "grad Psi is NaN at a finite strain");
-      g[i] = Saturate(gl[i]);
+      if (!isfinite(g[i])) g[i] = Saturate(gl[i]);
     }
     for (int i = 0; i < 36 && level > 1; i++) {
       PetscCheck(!isnan(Hl[i]), PETSC_COMM_SELF, PETSC_ERR_PLIB, "The Hessian of Psi is NaN at a finite strain");
-      H[i] = Saturate(Hl[i]);
+      if (!isfinite(H[i])) H[i] = Saturate(Hl[i]);
     }
   }
   if (psi) *psi = E;

@@ -47,12 +47,15 @@ static inline PetscInt F(Loc)(PetscInt n, const PetscReal t[], PetscReal ih, R x
     if (x >= t[i]) {
       if (x < t[i + 1]) return i;
       if (i + 2 <= n - 1 && x < t[i + 2]) return i + 1;
-    } else if (i >= 1 && x >= t[i - 1]) return i - 1;
+    } else if (i >= 1 && x >= t[i - 1])
+      return i - 1;
   }
   while (hi - lo > 1) { /* t[lo] <= x < t[hi] */
     const PetscInt mid = lo + (hi - lo) / 2;
-    if (x >= t[mid]) lo = mid;
-    else hi = mid;
+    if (x >= t[mid])
+      lo = mid;
+    else
+      hi = mid;
   }
   return lo;
 }
@@ -81,8 +84,10 @@ static void F(Piece)(PetscInt n, const PetscReal t[], const R P[], const R M[], 
 {
   R k, own[4];
 
-  F(PieceOwn)(n, t, P, M, j0, ext, i, &k, own);
-  F(ShiftPoly)(own, x0 - k, c);
+  F(PieceOwn)
+  (n, t, P, M, j0, ext, i, &k, own);
+  F(ShiftPoly)
+  (own, x0 - k, c);
 }
 
 /* HylcHermite1DKnotJump on node data P, M */
@@ -90,8 +95,10 @@ static void F(KnotJump)(PetscInt n, const PetscReal t[], const R P[], const R M[
 {
   R L[4], Rt[4];
 
-  F(Piece)(n, t, P, M, j0, ext, k - 1, t[k], L);
-  F(Piece)(n, t, P, M, j0, ext, k, t[k], Rt);
+  F(Piece)
+  (n, t, P, M, j0, ext, k - 1, t[k], L);
+  F(Piece)
+  (n, t, P, M, j0, ext, k, t[k], Rt);
   J[2] = Rt[2] - L[2];
   J[3] = Rt[3] - L[3];
   J[0] = J[1] = 0;
@@ -106,12 +113,13 @@ static void F(KnotJump)(PetscInt n, const PetscReal t[], const R P[], const R M[
 }
 
 /* the piece form: x- = a - s in piece L, x+ = a + s in piece Rp (Rp - L <= 1); node data P, M from j0 */
-static void F(QuotPieces)(PetscInt n, const PetscReal t[], const R P[], const R M[], PetscInt j0, HylcSplineExt ext, PetscInt L, PetscInt Rp, R a, R s, F(Quot) *q)
+static void F(QuotPieces)(PetscInt n, const PetscReal t[], const R P[], const R M[], PetscInt j0, HylcSplineExt ext, PetscInt L, PetscInt Rp, R a, R s, F(Quot) * q)
 {
   R       l[4], d[4] = {0, 0, 0, 0};
   const R w = s * s;
 
-  F(Piece)(n, t, P, M, j0, ext, L, a, l);
+  F(Piece)
+  (n, t, P, M, j0, ext, L, a, l);
   q->P   = l[0] + l[2] * w;
   q->Q   = l[1] + l[3] * w;
   q->Pa  = l[1] + 3 * l[3] * w;
@@ -124,8 +132,10 @@ static void F(QuotPieces)(PetscInt n, const PetscReal t[], const R P[], const R 
   if (Rp == L) return;
   for (PetscInt k = L + 1; k <= Rp; k++) { /* h_R - h_L: the sum of the jumps at the knots between */
     R J[4], e[4];
-    F(KnotJump)(n, t, P, M, j0, ext, k, J);
-    F(ShiftPoly)(J, a - t[k], e);
+    F(KnotJump)
+    (n, t, P, M, j0, ext, k, J);
+    F(ShiftPoly)
+    (J, a - t[k], e);
     for (int r = 0; r < 4; r++) d[r] += e[r];
   }
   {
@@ -143,7 +153,7 @@ static void F(QuotPieces)(PetscInt n, const PetscReal t[], const R P[], const R 
 }
 
 /* the direct form from h, h', h'' at a + s (hp) and a - s (hm); nd = number of a-derivatives wanted */
-static inline void F(QuotDirect)(R s, const R hp[3], const R hm[3], int nd, F(Quot) *q)
+static inline void F(QuotDirect)(R s, const R hp[3], const R hm[3], int nd, F(Quot) * q)
 {
   const R w = s * s, i2s = 0.5 / s;
 
@@ -161,7 +171,7 @@ static inline void F(QuotDirect)(R s, const R hp[3], const R hm[3], int nd, F(Qu
   q->W3  = (q->Qaa - 6 * q->W1) / (4 * w);
 }
 
-static inline void F(BasisAt)(PetscInt n, const PetscReal t[], PetscReal ih, HylcSplineExt ext, R x, int nd, F(Basis) *B)
+static inline void F(BasisAt)(PetscInt n, const PetscReal t[], PetscReal ih, HylcSplineExt ext, R x, int nd, F(Basis) * B)
 {
   const PetscInt loc = F(Loc)(n, t, ih, x);
 
@@ -199,10 +209,12 @@ static inline void F(BasisAt)(PetscInt n, const PetscReal t[], PetscReal ih, Hyl
 /* f[d] = d-th derivative of a 1D spline at x, d <= nd */
 static inline void F(Eval1D)(const HylcSpline1D *sp, PetscReal ih, R x, int nd, R f[3])
 {
-  F(Basis)         B;
+  F(Basis)
+  B;
   const PetscReal *p, *m;
 
-  F(BasisAt)(sp->n, sp->t, ih, sp->ext, x, nd, &B);
+  F(BasisAt)
+  (sp->n, sp->t, ih, sp->ext, x, nd, &B);
   p = sp->p + B.i;
   m = sp->m + B.i;
   for (int d = 0; d <= nd; d++) f[d] = B.a[d][0] * p[0] + B.a[d][1] * p[1] + B.b[d][0] * m[0] + B.b[d][1] * m[1];
@@ -210,7 +222,7 @@ static inline void F(Eval1D)(const HylcSpline1D *sp, PetscReal ih, R x, int nd, 
 
 /* the node values P[o][.] and v-slopes M[o][.] of the restriction v -> d^o f(u, v)/du^o (o <= nd), for
    the v-nodes j0..j1 (at most 3), from the u-basis Bu */
-static inline void F(SliceV)(const HylcSpline2D *sp, const F(Basis) *Bu, PetscInt j0, PetscInt j1, int nd, R P[3][3], R M[3][3])
+static inline void F(SliceV)(const HylcSpline2D *sp, const F(Basis) * Bu, PetscInt j0, PetscInt j1, int nd, R P[3][3], R M[3][3])
 {
   for (PetscInt j = j0; j <= j1; j++) {
     const PetscInt   k = j * sp->nu + Bu->i;
@@ -223,19 +235,22 @@ static inline void F(SliceV)(const HylcSpline2D *sp, const F(Basis) *Bu, PetscIn
 }
 
 /* f[o][r] = d^(o+r) f / du^o dv^r of a 2D spline at (u, v), o + r <= nd, from the u-basis Bu (nd derivatives) */
-static inline void F(Eval2D)(const HylcSpline2D *sp, const F(Basis) *Bu, PetscReal ihv, R v, int nd, R f[3][3])
+static inline void F(Eval2D)(const HylcSpline2D *sp, const F(Basis) * Bu, PetscReal ihv, R v, int nd, R f[3][3])
 {
-  F(Basis) Bv;
-  R        P[3][3], M[3][3];
+  F(Basis)
+  Bv;
+  R P[3][3], M[3][3];
 
-  F(BasisAt)(sp->nv, sp->tv, ihv, sp->ext, v, nd, &Bv);
-  F(SliceV)(sp, Bu, Bv.i, Bv.i + 1, nd, P, M);
+  F(BasisAt)
+  (sp->nv, sp->tv, ihv, sp->ext, v, nd, &Bv);
+  F(SliceV)
+  (sp, Bu, Bv.i, Bv.i + 1, nd, P, M);
   for (int o = 0; o <= nd; o++)
     for (int r = 0; r <= nd - o; r++) f[o][r] = Bv.a[r][0] * P[o][0] + Bv.a[r][1] * P[o][1] + Bv.b[r][0] * M[o][0] + Bv.b[r][1] * M[o][1];
 }
 
 /* a 1D bending constituent h(x) = f_k(x) at x = a +- s */
-static void F(Quot1D)(const HylcSpline1D *sp, PetscReal sw, PetscReal ih, R a, R s, int level, F(Quot) *q)
+static void F(Quot1D)(const HylcSpline1D *sp, PetscReal sw, PetscReal ih, R a, R s, int level, F(Quot) * q)
 {
   R hp[3] = {0, 0, 0}, hm[3] = {0, 0, 0};
 
@@ -249,18 +264,22 @@ static void F(Quot1D)(const HylcSpline1D *sp, PetscReal sw, PetscReal ih, R a, R
         P[j - j0] = sp->p[j];
         M[j - j0] = sp->m[j];
       }
-      F(QuotPieces)(sp->n, sp->t, P, M, j0, sp->ext, L, Rp, a, ss, q);
+      F(QuotPieces)
+      (sp->n, sp->t, P, M, j0, sp->ext, L, Rp, a, ss, q);
       return;
     }
   }
-  F(Eval1D)(sp, ih, a + s, level, hp);
-  F(Eval1D)(sp, ih, a - s, level, hm);
-  F(QuotDirect)(s, hp, hm, level, q);
+  F(Eval1D)
+  (sp, ih, a + s, level, hp);
+  F(Eval1D)
+  (sp, ih, a - s, level, hm);
+  F(QuotDirect)
+  (s, hp, hm, level, q);
 }
 
 /* a 2D bending constituent h(x) = f_ik(u, x) at x = a +- s, and (level >= 1) its u-derivatives: q[0] for
    h, q[1] for dh/du (level - 1 a-derivatives), q[2] for d2h/du2 (level 2, none); Bu: the u-basis */
-static void F(Quot2D)(const HylcSpline2D *sp, PetscReal sw, PetscReal ihv, const F(Basis) *Bu, R a, R s, int level, F(Quot) q[3])
+static void F(Quot2D)(const HylcSpline2D *sp, PetscReal sw, PetscReal ihv, const F(Basis) * Bu, R a, R s, int level, F(Quot) q[3])
 {
   R fp[3][3], fm[3][3];
 
@@ -270,17 +289,22 @@ static void F(Quot2D)(const HylcSpline2D *sp, PetscReal sw, PetscReal ihv, const
     if (Rp - L <= 1) {
       const PetscInt j0 = PetscMax(L, 0), j1 = PetscMin(Rp + 1, sp->nv - 1);
       R              P[3][3], M[3][3];
-      F(SliceV)(sp, Bu, j0, j1, level, P, M);
-      for (int o = 0; o <= level; o++) F(QuotPieces)(sp->nv, sp->tv, P[o], M[o], j0, sp->ext, L, Rp, a, ss, &q[o]);
+      F(SliceV)
+      (sp, Bu, j0, j1, level, P, M);
+      for (int o = 0; o <= level; o++) F(QuotPieces)
+      (sp->nv, sp->tv, P[o], M[o], j0, sp->ext, L, Rp, a, ss, &q[o]);
       return;
     }
   }
-  F(Eval2D)(sp, Bu, ihv, a + s, level, fp);
-  F(Eval2D)(sp, Bu, ihv, a - s, level, fm);
+  F(Eval2D)
+  (sp, Bu, ihv, a + s, level, fp);
+  F(Eval2D)
+  (sp, Bu, ihv, a - s, level, fm);
   for (int o = 0; o <= level; o++) {
     const R hp[3] = {fp[o][0], o < level ? fp[o][1] : 0, o + 1 < level ? fp[o][2] : 0};
     const R hm[3] = {fm[o][0], o < level ? fm[o][1] : 0, o + 1 < level ? fm[o][2] : 0};
-    F(QuotDirect)(s, hp, hm, level - o, &q[o]);
+    F(QuotDirect)
+    (s, hp, hm, level - o, &q[o]);
   }
 }
 
@@ -288,7 +312,7 @@ static void F(Quot2D)(const HylcSpline2D *sp, PetscReal sw, PetscReal ihv, const
    is = 1/sigma of its bending coordinate, f = the factor of its u-derivative order (1, 1/sigma_i, 1/sigma_i^2).
    The P-type part P, P_A, P_AA, P_w = Q_a/2, P_Aw = Q_aa/2, P_ww = W2/2 is the same for f and g; the
    Q-type part Q, Q_A, Q_AA, Q_w, Q_Aw, Q_ww carries the sign. */
-static inline void F(Add)(F(Bend) *T, const F(Quot) *q, R sg, R is, R f)
+static inline void F(Add)(F(Bend) * T, const F(Quot) * q, R sg, R is, R f)
 {
   const R is2 = is * is, is3 = is2 * is, is4 = is2 * is2, is5 = is4 * is, fs = f * sg;
 
@@ -328,7 +352,8 @@ static void F(Evaluate)(HylcMaterial m, const PetscReal s[6], int level, R *psi,
   /* halves first: (s3 + s5) / 2 overflows for strains near the largest double */
   const R A = 0.5 * (R)s[3] + 0.5 * (R)s[5], B = 0.5 * (R)s[3] - 0.5 * (R)s[5], C = s[4], S = F(Hypot)(B, C);
   R       E = m->C0, g[6] = {0, 0, 0, 0, 0, 0}, H[6][6];
-  F(Bend) T0, Tu[3], Tuu[3];
+  F(Bend)
+  T0, Tu[3], Tuu[3];
 
   memset(H, 0, sizeof(H));
   memset(&T0, 0, sizeof(T0));
@@ -338,7 +363,8 @@ static void F(Evaluate)(HylcMaterial m, const PetscReal s[6], int level, R *psi,
   for (PetscInt k = 0; k < 3; k++) {
     R f[3];
     if (!m->has1[k]) continue;
-    F(Eval1D)(&m->t1[k], m->ih1[k], X[k], level, f);
+    F(Eval1D)
+    (&m->t1[k], m->ih1[k], X[k], level, f);
     E += f[0];
     if (level) g[k] += f[1] * is[k];
     if (level > 1) H[k][k] += f[2] * is[k] * is[k];
@@ -346,11 +372,14 @@ static void F(Evaluate)(HylcMaterial m, const PetscReal s[6], int level, R *psi,
   for (PetscInt q = 0; q < HYLC_MATERIAL_N2D; q++) {
     const PetscInt      i = HylcMaterialPairs[q][0], j = HylcMaterialPairs[q][1];
     const HylcSpline2D *sp = &m->t2[q];
-    F(Basis)            Bu;
-    R                   f[3][3];
+    F(Basis)
+    Bu;
+    R f[3][3];
     if (j > 2 || !m->has2[q]) continue;
-    F(BasisAt)(sp->nu, sp->tu, m->ihu[q], sp->ext, X[i], level, &Bu);
-    F(Eval2D)(sp, &Bu, m->ihv[q], X[j], level, f);
+    F(BasisAt)
+    (sp->nu, sp->tu, m->ihu[q], sp->ext, X[i], level, &Bu);
+    F(Eval2D)
+    (sp, &Bu, m->ihv[q], X[j], level, f);
     E += f[0][0];
     if (level) {
       g[i] += f[1][0] * is[i];
@@ -364,21 +393,31 @@ static void F(Evaluate)(HylcMaterial m, const PetscReal s[6], int level, R *psi,
   }
   /* bending: the 1D terms 3 (f, x) and 4 (g, y), and the pairs (i, 3), (i, 4) */
   for (PetscInt k = 3; k < 5; k++) {
-    F(Quot) q;
+    F(Quot)
+    q;
     if (!m->has1[k]) continue;
-    F(Quot1D)(&m->t1[k], m->sw1[k], m->ih1[k], A * is[k], S * is[k], level, &q);
-    F(Add)(&T0, &q, k == 3 ? 1 : -1, is[k], 1);
+    F(Quot1D)
+    (&m->t1[k], m->sw1[k], m->ih1[k], A * is[k], S * is[k], level, &q);
+    F(Add)
+    (&T0, &q, k == 3 ? 1 : -1, is[k], 1);
   }
   for (PetscInt r = 0; r < HYLC_MATERIAL_N2D; r++) {
     const PetscInt i = HylcMaterialPairs[r][0], k = HylcMaterialPairs[r][1];
-    F(Quot)        q[3];
-    F(Basis)       Bu;
+    F(Quot)
+    q[3];
+    F(Basis)
+    Bu;
     if (k < 3 || !m->has2[r]) continue;
-    F(BasisAt)(m->t2[r].nu, m->t2[r].tu, m->ihu[r], m->t2[r].ext, X[i], level, &Bu);
-    F(Quot2D)(&m->t2[r], m->sw2[r], m->ihv[r], &Bu, A * is[k], S * is[k], level, q);
-    F(Add)(&T0, &q[0], k == 3 ? 1 : -1, is[k], 1);
-    if (level) F(Add)(&Tu[i], &q[1], k == 3 ? 1 : -1, is[k], is[i]);
-    if (level > 1) F(Add)(&Tuu[i], &q[2], k == 3 ? 1 : -1, is[k], is[i] * is[i]);
+    F(BasisAt)
+    (m->t2[r].nu, m->t2[r].tu, m->ihu[r], m->t2[r].ext, X[i], level, &Bu);
+    F(Quot2D)
+    (&m->t2[r], m->sw2[r], m->ihv[r], &Bu, A * is[k], S * is[k], level, q);
+    F(Add)
+    (&T0, &q[0], k == 3 ? 1 : -1, is[k], 1);
+    if (level) F(Add)
+    (&Tu[i], &q[1], k == 3 ? 1 : -1, is[k], is[i]);
+    if (level > 1) F(Add)
+    (&Tuu[i], &q[2], k == 3 ? 1 : -1, is[k], is[i] * is[i]);
   }
   E += T0.P + B * T0.Q;
   if (level) {
@@ -400,8 +439,8 @@ static void F(Evaluate)(HylcMaterial m, const PetscReal s[6], int level, R *psi,
     H[4][5] += 0.5 * (EAC - EBC);
     H[4][4] += ECC;
     for (PetscInt i = 0; i < 3; i++) {
-      const F(Bend) *t   = &Tu[i];
-      const R        EuA = t->PA + B * t->QA, EuB = 2 * B * t->Pw + t->Q + 2 * B2 * t->Qw, EuC = 2 * C * (t->Pw + B * t->Qw);
+      const F(Bend) *t = &Tu[i];
+      const R EuA = t->PA + B * t->QA, EuB = 2 * B * t->Pw + t->Q + 2 * B2 * t->Qw, EuC = 2 * C * (t->Pw + B * t->Qw);
       H[i][3] += 0.5 * (EuA + EuB);
       H[i][5] += 0.5 * (EuA - EuB);
       H[i][4] += EuC;

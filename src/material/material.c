@@ -499,7 +499,8 @@ PetscErrorCode HylcMaterialLoad(HylcMaterial m, const char path[])
   if (rank == 0) {
     struct stat st;
     fp = fopen(path, "rb");
-    if (!fp) err = errno;
+    if (!fp)
+      err = errno;
     else if (fstat(fileno(fp), &st) || !S_ISREG(st.st_mode)) { /* a directory opens, and has no size */
       err = errno ? errno : EIO;
       if (!fstat(fileno(fp), &st)) err = S_ISDIR(st.st_mode) ? EISDIR : EINVAL;
