@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <string.h>
 #include <errno.h>
+#include <stdint.h>
 
 /* ---- HDF5: /reference and /material of a samples file, for the area density ---- */
 
@@ -75,6 +76,83 @@ static PetscErrorCode ReadReference(HylcFit fit, const char path[])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The datasets of /samples that HylcSamplesReadHDF5 reads, each checked by name, rank, shape and type
+   before it is read: a missing or misshapen dataset is a one-line error naming the file and the
+   dataset (HDF5's own error stack printing is off around these probes). The row count N is that of
+   /samples/strain (N x 6); every other dataset must have N rows. */
+static PetscErrorCode CheckSamplesDatasets(HylcFit fit, const char path[])
+{
+  static const struct {
+    const char *name;
+    int         cols; /* 0: a vector of N */
+    H5T_class_t cls;
+  } sets[] = {
+      {"strain", 6, H5T_FLOAT},
+      {"psi", 0, H5T_FLOAT},
+      {"energy_parts", 4, H5T_FLOAT},
+      {"residual", 0, H5T_FLOAT},
+      {"constraint_residual", 0, H5T_FLOAT},
+      {"time", 0, H5T_FLOAT},
+      {"term", 0, H5T_INTEGER},
+      {"status", 0, H5T_INTEGER},
+      {"iterations", 0, H5T_INTEGER},
+      {"retries", 0, H5T_INTEGER}};
+  MPI_Comm    comm = PetscObjectComm((PetscObject)fit);
+  H5E_auto2_t efunc;
+  void       *edata;
+  hid_t       file;
+  hsize_t     N                             = 0;
+  char        msg[PETSC_MAX_PATH_LEN + 256] = "";
+
+  PetscFunctionBegin;
+  H5Eget_auto2(H5E_DEFAULT, &efunc, &edata);
+  H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
+  file = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (file < 0)
+    snprintf(msg, sizeof(msg), "Cannot open the samples file %s (-fit_input) as HDF5", path);
+  else if (H5Lexists(file, "samples", H5P_DEFAULT) <= 0)
+    snprintf(msg, sizeof(msg), "%s (-fit_input): no group /samples (not a samples file of hylc-sample)", path);
+  for (size_t k = 0; file >= 0 && !msg[0] && k < sizeof(sets) / sizeof(sets[0]); k++) {
+    char    name[64];
+    hid_t   d, sp, ty;
+    hsize_t dims[3] = {0, 0, 0};
+    int     rank    = -1;
+    snprintf(name, sizeof(name), "samples/%s", sets[k].name);
+    if (H5Lexists(file, name, H5P_DEFAULT) <= 0) {
+      snprintf(msg, sizeof(msg), "%s (-fit_input): no dataset /%s", path, name);
+      break;
+    }
+    d = H5Dopen2(file, name, H5P_DEFAULT);
+    if (d < 0) {
+      snprintf(msg, sizeof(msg), "%s (-fit_input): /%s is not a dataset", path, name);
+      break;
+    }
+    sp = H5Dget_space(d);
+    ty = H5Dget_type(d);
+    if (sp >= 0) rank = H5Sget_simple_extent_ndims(sp);
+    if (rank >= 1 && rank <= 3) H5Sget_simple_extent_dims(sp, dims, NULL);
+    if (k == 0) N = dims[0];
+    if (rank != (sets[k].cols ? 2 : 1) || dims[0] != N || (sets[k].cols && dims[1] != (hsize_t)sets[k].cols)) {
+      char shape[64] = "";
+      for (int i = 0; i < rank && i < 3; i++) snprintf(shape + strlen(shape), sizeof(shape) - strlen(shape), "%s%llu", i ? " x " : "", (unsigned long long)dims[i]);
+      if (sets[k].cols)
+        snprintf(msg, sizeof(msg), "%s (-fit_input): dataset /%s has shape (%s), expected (N x %d)%s", path, name, rank > 0 ? shape : "scalar", sets[k].cols, k ? " with N the rows of /samples/strain" : "");
+      else
+        snprintf(msg, sizeof(msg), "%s (-fit_input): dataset /%s has shape (%s), expected (%llu): one row per row of /samples/strain", path, name, rank > 0 ? shape : "scalar", (unsigned long long)N);
+    } else if (ty < 0 || H5Tget_class(ty) != sets[k].cls)
+      snprintf(msg, sizeof(msg), "%s (-fit_input): dataset /%s holds %s, expected %s", path, name, ty >= 0 && H5Tget_class(ty) == H5T_INTEGER ? "integers" : ty >= 0 && H5Tget_class(ty) == H5T_FLOAT ? "floating-point numbers"
+                                                                                                                                                                                                      : "values of another type",
+               sets[k].cls == H5T_FLOAT ? "floating-point numbers" : "integers");
+    if (ty >= 0) H5Tclose(ty);
+    if (sp >= 0) H5Sclose(sp);
+    H5Dclose(d);
+  }
+  if (file >= 0) H5Fclose(file);
+  H5Eset_auto2(H5E_DEFAULT, efunc, edata);
+  PetscCheck(!msg[0], comm, PETSC_ERR_FILE_UNEXPECTED, "%s", msg);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode ReadSamplesHDF5(HylcFit fit, const char path[])
 {
   long              N;
@@ -84,6 +162,7 @@ static PetscErrorCode ReadSamplesHDF5(HylcFit fit, const char path[])
   MPI_Comm          comm = PetscObjectComm((PetscObject)fit);
 
   PetscFunctionBegin;
+  PetscCall(CheckSamplesDatasets(fit, path));
   PetscCall(HylcSamplesReadHDF5(path, &N, &recs, &done, NULL));
   PetscCall(PetscMalloc4(6 * N + 1, &fit->z, N + 1, &fit->psi, N + 1, &fit->term, N + 1, &fit->row));
   fit->nrows = (PetscInt)N;
@@ -170,6 +249,7 @@ static PetscErrorCode ReadRaw(HylcFit fit, const char data[], const char info[])
   PetscInt   n = 0, nalloc = 1024, lineno = 0, *lines;
   PetscReal *z, *psi;
   MPI_Comm   comm = PetscObjectComm((PetscObject)fit);
+  PetscInt   n1, n2;
 
   PetscFunctionBegin;
   PetscCheck(fp, comm, PETSC_ERR_FILE_OPEN, "Cannot open %s (-fit_input): %s", data, strerror(errno));
@@ -222,21 +302,34 @@ static PetscErrorCode ReadRaw(HylcFit fit, const char data[], const char info[])
   }
   fclose(fp);
   free(line);
-  /* block sizes: rows = 5 n1 + 9 n2^2 */
-  PetscInt n1 = fit->rawN1, n2 = fit->rawN2;
-  if (!n1) {
-    if (n2)
-      n1 = (n - 9 * n2 * n2) / 5;
-    else
-      while (n1 < n && z[6 * n1 + 1] == 0 && z[6 * n1 + 2] == 0 && z[6 * n1 + 3] == 0 && z[6 * n1 + 4] == 0 && z[6 * n1 + 5] == 0) n1++;
-  }
-  if (!n2 && n1 > 0 && n >= 5 * n1) {
-    const PetscInt q = (n - 5 * n1) / 9;
-    n2               = (PetscInt)(PetscSqrtReal((PetscReal)q) + 0.5);
-  }
-  if (!(n1 > 0 && n2 >= 0 && 5 * n1 + 9 * n2 * n2 == n)) {
-    PetscCall(PetscFree3(z, psi, lines));
-    SETERRQ(comm, PETSC_ERR_USER_INPUT, "%s: %" PetscInt_FMT " rows do not make 5 1D blocks of n1 = %" PetscInt_FMT " rows and 9 2D blocks of n2 x n2 = %" PetscInt_FMT " x %" PetscInt_FMT " rows (formats.md §5: 5 n1 + 9 n2^2 rows); give -fit_raw_n1 and -fit_raw_n2", data, n, n1, n2, n2);
+  /* block sizes: rows = 5 n1 + 9 n2^2, in 64-bit with every product range-checked (an -fit_raw_n2 near
+     the int range must not wrap around to a matching count) */
+  {
+    const int64_t N  = n;
+    int64_t       a1 = fit->rawN1, a2 = fit->rawN2;
+    PetscBool     ok;
+    if (a1 < 0 || a1 > N || a2 < 0 || a2 > N) {
+      PetscCall(PetscFree3(z, psi, lines));
+      SETERRQ(comm, PETSC_ERR_USER_INPUT, "%s: -fit_raw_n1 %" PetscInt_FMT " and -fit_raw_n2 %" PetscInt_FMT " must be in 0..%" PetscInt_FMT " (the rows of the file)", data, fit->rawN1, fit->rawN2, n);
+    }
+    if (!a1) {
+      if (a2)
+        a1 = a2 * a2 <= N && 9 * a2 * a2 <= N ? (N - 9 * a2 * a2) / 5 : 0; /* a2 <= N < 2^31: a2^2 < 2^62 fits, then 9 a2^2 <= 9 N */
+      else
+        while (a1 < N && z[6 * a1 + 1] == 0 && z[6 * a1 + 2] == 0 && z[6 * a1 + 3] == 0 && z[6 * a1 + 4] == 0 && z[6 * a1 + 5] == 0) a1++;
+    }
+    if (!a2 && a1 > 0 && N >= 5 * a1) {
+      const int64_t q = (N - 5 * a1) / 9;
+      a2              = (int64_t)(PetscSqrtReal((PetscReal)q) + 0.5);
+    }
+    /* a1, a2 <= N < 2^31: a2^2 <= N keeps 9 a2^2 below 2^35 */
+    ok = (PetscBool)(a1 > 0 && a2 >= 0 && a2 * a2 <= N && 5 * a1 + 9 * a2 * a2 == N);
+    if (!ok) {
+      PetscCall(PetscFree3(z, psi, lines));
+      SETERRQ(comm, PETSC_ERR_USER_INPUT, "%s: %" PetscInt_FMT " rows do not make 5 1D blocks of n1 = %" PetscInt64_FMT " rows and 9 2D blocks of n2 x n2 = %" PetscInt64_FMT " x %" PetscInt64_FMT " rows (formats.md §5: 5 n1 + 9 n2^2 rows); give -fit_raw_n1 and -fit_raw_n2", data, n, (PetscInt64)a1, (PetscInt64)a2, (PetscInt64)a2);
+    }
+    n1 = (PetscInt)a1;
+    n2 = (PetscInt)a2;
   }
   /* the term of each row by row order; every coordinate outside the term must be 0 */
   PetscCall(PetscMalloc4(6 * n + 1, &fit->z, n + 1, &fit->psi, n + 1, &fit->term, n + 1, &fit->row));
@@ -284,8 +377,11 @@ PetscErrorCode HylcFitReadInput_Private(HylcFit fit)
     PetscCall(PetscSNPrintf(data, sizeof(data), "%s/data.txt", fit->input));
     PetscCall(PetscSNPrintf(info, sizeof(info), "%s/info.txt", fit->input));
     PetscCheck(!stat(data, &st), comm, PETSC_ERR_FILE_OPEN, "-fit_input %s is a directory without data.txt (the paper's raw layout)", fit->input);
+    PetscCall(HylcFileCheckInput(comm, data, "-fit_input"));
+    if (!stat(info, &st)) PetscCall(HylcFileCheckInput(comm, info, "-fit_input")); /* optional; a directory is no info.txt */
     PetscCall(ReadRaw(fit, data, info));
   } else {
+    PetscCall(HylcFileCheckInput(comm, fit->input, "-fit_input"));
     htri_t      ish5;
     H5E_auto2_t efunc;
     void       *edata;
@@ -303,6 +399,7 @@ PetscErrorCode HylcFitReadInput_Private(HylcFit fit)
         PetscCall(PetscStrcpy(slash + 1, "info.txt"));
       else
         PetscCall(PetscStrcpy(info, "info.txt"));
+      if (!stat(info, &st)) PetscCall(HylcFileCheckInput(comm, info, "-fit_input"));
       PetscCall(ReadRaw(fit, fit->input, info));
     }
   }

@@ -13,350 +13,89 @@
      gives polynomials in w; a knot between A - S and A + S adds the jump polynomial of h at that knot
      (C1: starts at second order), so every quotient by a power of S is exact;
    - otherwise from h, h', h'' at A +- S directly.
-   Everything is computed in table units (x = lambda / sigma) and scaled at the end. */
+   Everything is computed in table units (x = lambda / sigma) and scaled at the end.
+
+   Range: the computation runs in double; when a result comes out non-finite for finite strains (a
+   strain near the largest double, a table whose coefficients overflow an intermediate quantity), it is
+   repeated in long double (x86: 15-bit exponent, so no intermediate of a table the loader accepts can
+   overflow, docs/material.md) and each non-finite result is replaced by its long double value rounded
+   to double, a magnitude beyond the largest double becoming +-PETSC_MAX_REAL (saturated). The finite
+   results of the double pass are kept, so Psi does not depend on whether derivatives were asked for.
+   Ordinary strains never take the fallback. */
 #include <hylc/private/materialimpl.h>
-
-/* divided-difference quantities of one constituent h in table units (a = A / sigma, s = S / sigma):
-   P, Q and their derivatives in a; W1 = dQ/dw, W2 = d2Q/dadw, W3 = d2Q/dw2 (w = s^2). */
-typedef struct {
-  PetscReal P, Q, Pa, Qa, Paa, Qaa, W1, W2, W3;
-} Quot;
-
-/* the bending part accumulated in physical units: P-type and Q-type quantities (see Add) */
-typedef struct {
-  PetscReal P, PA, PAA, Pw, PAw, Pww;
-  PetscReal Q, QA, QAA, Qw, QAw, Qww;
-} Bend;
+#include <math.h>
+#include <float.h>
+#include <string.h>
 
 /* below this half split (table units) the piece form uses s = 0: the one-sided (right) limit */
 #define S_TINY 1e-50
 
-static inline void ShiftPoly(const PetscReal c[4], PetscReal e, PetscReal out[4])
+#define R       double
+#define F(name) name##_d
+#define SQRT    sqrt
+#include "evaluate_body.h"
+#undef R
+#undef F
+#undef SQRT
+
+#define R       long double
+#define F(name) name##_l
+#define SQRT    sqrtl
+#include "evaluate_body.h"
+#undef R
+#undef F
+#undef SQRT
+
+/* a long double result as a double, saturated at +-PETSC_MAX_REAL */
+static inline PetscReal Saturate(long double v)
 {
-  out[0] = c[0] + e * (c[1] + e * (c[2] + e * c[3]));
-  out[1] = c[1] + e * (2 * c[2] + 3 * e * c[3]);
-  out[2] = c[2] + 3 * e * c[3];
-  out[3] = c[3];
-}
-
-/* the piece form: x- = a - s in piece L, x+ = a + s in piece R (R - L <= 1 in practice) */
-static void QuotPieces(PetscInt n, const PetscReal t[], const PetscReal p[], const PetscReal m[], PetscInt j0, HylcSplineExt ext, PetscInt L, PetscInt R, PetscReal a, PetscReal s, Quot *q)
-{
-  PetscReal       l[4], d[4] = {0, 0, 0, 0};
-  const PetscReal w = s * s;
-
-  HylcHermite1DPiece(n, t, p, m, j0, ext, L, a, l);
-  q->P   = l[0] + l[2] * w;
-  q->Q   = l[1] + l[3] * w;
-  q->Pa  = l[1] + 3 * l[3] * w;
-  q->Qa  = 2 * l[2];
-  q->Paa = 2 * l[2];
-  q->Qaa = 6 * l[3];
-  q->W1  = l[3];
-  q->W2  = 0;
-  q->W3  = 0;
-  if (R == L) return;
-  for (PetscInt k = L + 1; k <= R; k++) { /* h_R - h_L: the sum of the jumps at the knots between */
-    PetscReal J[4], e[4];
-    HylcHermite1DKnotJump(n, t, p, m, j0, ext, k, J);
-    ShiftPoly(J, a - t[k], e);
-    for (int r = 0; r < 4; r++) d[r] += e[r];
-  }
-  {
-    const PetscReal s3 = w * s;
-    q->P += 0.5 * (d[0] + d[1] * s + d[2] * w + d[3] * s3);
-    q->Q += 0.5 * (d[0] / s + d[1] + d[2] * s + d[3] * w);
-    q->Pa += 0.5 * (d[1] + 2 * d[2] * s + 3 * d[3] * w);
-    q->Qa += 0.5 * (d[1] / s + 2 * d[2] + 3 * d[3] * s);
-    q->Paa += d[2] + 3 * d[3] * s;
-    q->Qaa += d[2] / s + 3 * d[3];
-    q->W1 += 0.5 * d[3] + (d[2] * w - d[0]) / (4 * s3);
-    q->W2 = (3 * d[3] * w - d[1]) / (4 * s3);
-    q->W3 = (3 * d[0] - d[2] * w) / (8 * s3 * w);
-  }
-}
-
-/* the direct form from h, h', h'' at a + s (hp) and a - s (hm); nd = number of a-derivatives wanted */
-static inline void QuotDirect(PetscReal s, const PetscReal hp[3], const PetscReal hm[3], int nd, Quot *q)
-{
-  const PetscReal w = s * s, i2s = 0.5 / s;
-
-  q->P  = 0.5 * (hp[0] + hm[0]);
-  q->Q  = (hp[0] - hm[0]) * i2s;
-  q->Pa = q->Qa = q->Paa = q->Qaa = q->W1 = q->W2 = q->W3 = 0;
-  if (nd < 1) return;
-  q->Pa = 0.5 * (hp[1] + hm[1]);
-  q->Qa = (hp[1] - hm[1]) * i2s;
-  q->W1 = (q->Pa - q->Q) / (2 * w);
-  if (nd < 2) return;
-  q->Paa = 0.5 * (hp[2] + hm[2]);
-  q->Qaa = (hp[2] - hm[2]) * i2s;
-  q->W2  = (q->Paa - q->Qa) / (2 * w);
-  q->W3  = (q->Qaa - 6 * q->W1) / (4 * w);
-}
-
-/* The interval of x among the knots, as HylcSplineLocate (-1 left of t[0], n-1 from t[n-1] on), with a
-   first guess from the mean knot spacing (ih = (n-1) / (t[n-1] - t[0])): one or two steps for the
-   nearly uniform knots of the tables. */
-static inline PetscInt Loc(PetscInt n, const PetscReal t[], PetscReal ih, PetscReal x)
-{
-  PetscInt i;
-
-  if (!(x >= t[0])) return -1;
-  if (x >= t[n - 1]) return n - 1;
-  i = (PetscInt)((x - t[0]) * ih);
-  if (i > n - 2) i = n - 2;
-  while (x < t[i]) i--;
-  while (x >= t[i + 1]) i++;
-  return i;
-}
-
-/* the Hermite basis of HylcHermiteBasis with nd derivatives: the spline is sum_c a[0][c] p[i+c] +
-   b[0][c] m[i+c]; a[d], b[d] are the d-th derivatives */
-typedef struct {
-  PetscInt  i;
-  PetscReal a[3][2], b[3][2];
-} Basis;
-
-static inline void BasisAt(PetscInt n, const PetscReal t[], PetscReal ih, HylcSplineExt ext, PetscReal x, int nd, Basis *B)
-{
-  const PetscInt loc = Loc(n, t, ih, x);
-
-  for (int d = 0; d <= nd; d++) B->a[d][0] = B->a[d][1] = B->b[d][0] = B->b[d][1] = 0;
-  if (loc < 0 || loc >= n - 1) {
-    const int c = loc < 0 ? 0 : 1;
-    B->i        = loc < 0 ? 0 : n - 2;
-    if (ext != HYLC_EXT_ZERO) B->a[0][c] = 1;
-    if (ext == HYLC_EXT_LINEAR) {
-      B->b[0][c] = x - t[loc < 0 ? 0 : n - 1];
-      if (nd > 0) B->b[1][c] = 1;
-    }
-  } else {
-    const PetscReal h = t[loc + 1] - t[loc], s = (x - t[loc]) / h, s2 = s * s, s3 = s2 * s;
-    B->i       = loc;
-    B->a[0][0] = 2 * s3 - 3 * s2 + 1;
-    B->a[0][1] = -2 * s3 + 3 * s2;
-    B->b[0][0] = (s3 - 2 * s2 + s) * h;
-    B->b[0][1] = (s3 - s2) * h;
-    if (nd > 0) {
-      B->a[1][0] = (6 * s2 - 6 * s) / h;
-      B->a[1][1] = -B->a[1][0];
-      B->b[1][0] = 3 * s2 - 4 * s + 1;
-      B->b[1][1] = 3 * s2 - 2 * s;
-    }
-    if (nd > 1) {
-      B->a[2][0] = (12 * s - 6) / (h * h);
-      B->a[2][1] = -B->a[2][0];
-      B->b[2][0] = (6 * s - 4) / h;
-      B->b[2][1] = (6 * s - 2) / h;
-    }
-  }
-}
-
-/* f[d] = d-th derivative of a 1D spline at x, d <= nd */
-static inline void Eval1D(const HylcSpline1D *sp, PetscReal ih, PetscReal x, int nd, PetscReal f[3])
-{
-  Basis            B;
-  const PetscReal *p, *m;
-
-  BasisAt(sp->n, sp->t, ih, sp->ext, x, nd, &B);
-  p = sp->p + B.i;
-  m = sp->m + B.i;
-  for (int d = 0; d <= nd; d++) f[d] = B.a[d][0] * p[0] + B.a[d][1] * p[1] + B.b[d][0] * m[0] + B.b[d][1] * m[1];
-}
-
-/* the node values P[o][.] and v-slopes M[o][.] of the restriction v -> d^o f(u, v)/du^o (o <= nd), for
-   the v-nodes j0..j1 (at most 3), from the u-basis Bu */
-static inline void SliceV(const HylcSpline2D *sp, const Basis *Bu, PetscInt j0, PetscInt j1, int nd, PetscReal P[3][3], PetscReal M[3][3])
-{
-  for (PetscInt j = j0; j <= j1; j++) {
-    const PetscInt   k = j * sp->nu + Bu->i;
-    const PetscReal *p = sp->p + k, *mu = sp->mu + k, *mv = sp->mv + k, *muv = sp->muv + k;
-    for (int o = 0; o <= nd; o++) {
-      P[o][j - j0] = Bu->a[o][0] * p[0] + Bu->a[o][1] * p[1] + Bu->b[o][0] * mu[0] + Bu->b[o][1] * mu[1];
-      M[o][j - j0] = Bu->a[o][0] * mv[0] + Bu->a[o][1] * mv[1] + Bu->b[o][0] * muv[0] + Bu->b[o][1] * muv[1];
-    }
-  }
-}
-
-/* f[o][r] = d^(o+r) f / du^o dv^r of a 2D spline at (u, v), o + r <= nd, from the u-basis Bu (nd derivatives) */
-static inline void Eval2D(const HylcSpline2D *sp, const Basis *Bu, PetscReal ihv, PetscReal v, int nd, PetscReal f[3][3])
-{
-  Basis     Bv;
-  PetscReal P[3][3], M[3][3];
-
-  BasisAt(sp->nv, sp->tv, ihv, sp->ext, v, nd, &Bv);
-  SliceV(sp, Bu, Bv.i, Bv.i + 1, nd, P, M);
-  for (int o = 0; o <= nd; o++)
-    for (int r = 0; r <= nd - o; r++) f[o][r] = Bv.a[r][0] * P[o][0] + Bv.a[r][1] * P[o][1] + Bv.b[r][0] * M[o][0] + Bv.b[r][1] * M[o][1];
-}
-
-/* a 1D bending constituent h(x) = f_k(x) at x = a +- s */
-static void Quot1D(const HylcSpline1D *sp, PetscReal sw, PetscReal ih, PetscReal a, PetscReal s, int level, Quot *q)
-{
-  PetscReal hp[3] = {0, 0, 0}, hm[3] = {0, 0, 0};
-
-  if (s < sw) {
-    const PetscReal ss = s < S_TINY ? 0 : s;
-    const PetscInt  L = Loc(sp->n, sp->t, ih, a - ss), R = Loc(sp->n, sp->t, ih, a + ss);
-    if (R - L <= 1) {
-      QuotPieces(sp->n, sp->t, sp->p, sp->m, 0, sp->ext, L, R, a, ss, q);
-      return;
-    }
-  }
-  Eval1D(sp, ih, a + s, level, hp);
-  Eval1D(sp, ih, a - s, level, hm);
-  QuotDirect(s, hp, hm, level, q);
-}
-
-/* a 2D bending constituent h(x) = f_ik(u, x) at x = a +- s, and (level >= 1) its u-derivatives: q[0] for
-   h, q[1] for dh/du (level - 1 a-derivatives), q[2] for d2h/du2 (level 2, none); Bu: the u-basis */
-static void Quot2D(const HylcSpline2D *sp, PetscReal sw, PetscReal ihv, const Basis *Bu, PetscReal a, PetscReal s, int level, Quot q[3])
-{
-  PetscReal fp[3][3], fm[3][3];
-
-  if (s < sw) {
-    const PetscReal ss = s < S_TINY ? 0 : s;
-    const PetscInt  L = Loc(sp->nv, sp->tv, ihv, a - ss), R = Loc(sp->nv, sp->tv, ihv, a + ss);
-    if (R - L <= 1) {
-      const PetscInt j0 = PetscMax(L, 0), j1 = PetscMin(R + 1, sp->nv - 1);
-      PetscReal      P[3][3], M[3][3];
-      SliceV(sp, Bu, j0, j1, level, P, M);
-      for (int o = 0; o <= level; o++) QuotPieces(sp->nv, sp->tv, P[o], M[o], j0, sp->ext, L, R, a, ss, &q[o]);
-      return;
-    }
-  }
-  Eval2D(sp, Bu, ihv, a + s, level, fp);
-  Eval2D(sp, Bu, ihv, a - s, level, fm);
-  for (int o = 0; o <= level; o++) {
-    const PetscReal hp[3] = {fp[o][0], o < level ? fp[o][1] : 0, o + 1 < level ? fp[o][2] : 0};
-    const PetscReal hm[3] = {fm[o][0], o < level ? fm[o][1] : 0, o + 1 < level ? fm[o][2] : 0};
-    QuotDirect(s, hp, hm, level - o, &q[o]);
-  }
-}
-
-/* adds a constituent in table units to T in physical units: sg = +1 (x-bending f) or -1 (y-bending g),
-   is = 1/sigma of its bending coordinate, f = the factor of its u-derivative order (1, 1/sigma_i, 1/sigma_i^2).
-   The P-type part P, P_A, P_AA, P_w = Q_a/2, P_Aw = Q_aa/2, P_ww = W2/2 is the same for f and g; the
-   Q-type part Q, Q_A, Q_AA, Q_w, Q_Aw, Q_ww carries the sign. */
-static inline void Add(Bend *T, const Quot *q, PetscReal sg, PetscReal is, PetscReal f)
-{
-  const PetscReal is2 = is * is, is3 = is2 * is, is4 = is2 * is2, is5 = is4 * is, fs = f * sg;
-
-  T->P += f * q->P;
-  T->PA += f * q->Pa * is;
-  T->PAA += f * q->Paa * is2;
-  T->Pw += f * 0.5 * q->Qa * is2;
-  T->PAw += f * 0.5 * q->Qaa * is3;
-  T->Pww += f * 0.5 * q->W2 * is4;
-  T->Q += fs * q->Q * is;
-  T->QA += fs * q->Qa * is2;
-  T->QAA += fs * q->Qaa * is3;
-  T->Qw += fs * q->W1 * is3;
-  T->QAw += fs * q->W2 * is4;
-  T->Qww += fs * q->W3 * is5;
+  if (v > (long double)PETSC_MAX_REAL) return PETSC_MAX_REAL;
+  if (v < -(long double)PETSC_MAX_REAL) return -PETSC_MAX_REAL;
+  return (PetscReal)v;
 }
 
 /*@C
   HylcMaterialEvaluate - Psi(s) (J/m^2), and if grad (hess) is not NULL its gradient (Hessian, 6x6
   row-major, symmetric) with respect to s = (sx, sa, sy, II00, II01, II11). Exact at equal eigenvalues of
-  II (docs/material.md). Not collective; thread-safe; no allocation.
+  II (docs/material.md). For finite strains every result is finite: a value beyond the double range is
+  returned as +-PETSC_MAX_REAL (docs/material.md, "Range"); NaN or infinite strains propagate.
+  Not collective; thread-safe; no allocation.
 @*/
 PetscErrorCode HylcMaterialEvaluate(HylcMaterial m, const PetscReal s[6], PetscReal *psi, PetscReal grad[6], PetscReal hess[36])
 {
-  const int       level = hess ? 2 : (grad ? 1 : 0);
-  const PetscReal is[5] = {1 / m->scale[0], 1 / m->scale[1], 1 / m->scale[2], 1 / m->scale[3], 1 / m->scale[4]};
-  const PetscReal X[3]  = {s[0] * is[0], s[1] * is[1], s[2] * is[2]};
-  const PetscReal A = 0.5 * (s[3] + s[5]), B = 0.5 * (s[3] - s[5]), C = s[4], S = PetscSqrtReal(B * B + C * C);
-  PetscReal       E = m->C0, g[6] = {0, 0, 0, 0, 0, 0}, H[6][6];
-  Bend            T0, Tu[3], Tuu[3];
+  const int level = hess ? 2 : (grad ? 1 : 0);
+  PetscReal E, g[6] = {0, 0, 0, 0, 0, 0}, H[36];
+  PetscBool finite = PETSC_TRUE, inputFinite = PETSC_TRUE;
 
   PetscFunctionBegin;
   PetscValidHeaderSpecific(m, HYLC_MATERIAL_CLASSID, 1);
-  if (level > 1) PetscCall(PetscMemzero(H, sizeof(H)));
-  PetscCall(PetscMemzero(&T0, sizeof(T0)));
-  if (level) {
-    PetscCall(PetscMemzero(Tu, sizeof(Tu)));
-    PetscCall(PetscMemzero(Tuu, sizeof(Tuu)));
-  }
-  /* in-plane: 1D terms and the pairs (0,1) (0,2) (1,2) */
-  for (PetscInt k = 0; k < 3; k++) {
-    PetscReal f[3];
-    if (!m->has1[k]) continue;
-    Eval1D(&m->t1[k], m->ih1[k], X[k], level, f);
-    E += f[0];
-    if (level) g[k] += f[1] * is[k];
-    if (level > 1) H[k][k] += f[2] * is[k] * is[k];
-  }
-  for (PetscInt q = 0; q < HYLC_MATERIAL_N2D; q++) {
-    const PetscInt      i = HylcMaterialPairs[q][0], j = HylcMaterialPairs[q][1];
-    const HylcSpline2D *sp = &m->t2[q];
-    Basis               Bu;
-    PetscReal           f[3][3];
-    if (j > 2 || !m->has2[q]) continue;
-    BasisAt(sp->nu, sp->tu, m->ihu[q], sp->ext, X[i], level, &Bu);
-    Eval2D(sp, &Bu, m->ihv[q], X[j], level, f);
-    E += f[0][0];
-    if (level) {
-      g[i] += f[1][0] * is[i];
-      g[j] += f[0][1] * is[j];
+  PetscValidRealPointer(s, 2);
+  Evaluate_d(m, s, level, &E, g, H);
+  if (!isfinite(E)) finite = PETSC_FALSE;
+  for (int i = 0; i < 6 && level; i++)
+    if (!isfinite(g[i])) finite = PETSC_FALSE;
+  for (int i = 0; i < 36 && level > 1; i++)
+    if (!isfinite(H[i])) finite = PETSC_FALSE;
+  for (int i = 0; i < 6; i++)
+    if (!isfinite(s[i])) inputFinite = PETSC_FALSE;
+  if (!finite && inputFinite) { /* the long double fallback, for the results that are not finite */
+    long double El, gl[6] = {0, 0, 0, 0, 0, 0}, Hl[36];
+    Evaluate_l(m, s, level, &El, gl, Hl);
+    PetscCheck(!isnan(El), PETSC_COMM_SELF, PETSC_ERR_PLIB, "Psi is NaN at the finite strain (%g, %g, %g, %g, %g, %g)", (double)s[0], (double)s[1], (double)s[2], (double)s[3], (double)s[4], (double)s[5]);
+    if (!isfinite(E)) E = Saturate(El);
+    for (int i = 0; i < 6 && level; i++) {
+      PetscCheck(!isnan(gl[i]), PETSC_COMM_SELF, PETSC_ERR_PLIB, "grad Psi is NaN at a finite strain");
+      if (!isfinite(g[i])) g[i] = Saturate(gl[i]);
     }
-    if (level > 1) {
-      H[i][i] += f[2][0] * is[i] * is[i];
-      H[i][j] += f[1][1] * is[i] * is[j];
-      H[j][j] += f[0][2] * is[j] * is[j];
+    for (int i = 0; i < 36 && level > 1; i++) {
+      PetscCheck(!isnan(Hl[i]), PETSC_COMM_SELF, PETSC_ERR_PLIB, "The Hessian of Psi is NaN at a finite strain");
+      if (!isfinite(H[i])) H[i] = Saturate(Hl[i]);
     }
-  }
-  /* bending: the 1D terms 3 (f, x) and 4 (g, y), and the pairs (i, 3), (i, 4) */
-  for (PetscInt k = 3; k < 5; k++) {
-    Quot q;
-    if (!m->has1[k]) continue;
-    Quot1D(&m->t1[k], m->sw1[k], m->ih1[k], A * is[k], S * is[k], level, &q);
-    Add(&T0, &q, k == 3 ? 1 : -1, is[k], 1);
-  }
-  for (PetscInt r = 0; r < HYLC_MATERIAL_N2D; r++) {
-    const PetscInt i = HylcMaterialPairs[r][0], k = HylcMaterialPairs[r][1];
-    Quot           q[3];
-    Basis          Bu;
-    if (k < 3 || !m->has2[r]) continue;
-    BasisAt(m->t2[r].nu, m->t2[r].tu, m->ihu[r], m->t2[r].ext, X[i], level, &Bu);
-    Quot2D(&m->t2[r], m->sw2[r], m->ihv[r], &Bu, A * is[k], S * is[k], level, q);
-    Add(&T0, &q[0], k == 3 ? 1 : -1, is[k], 1);
-    if (level) Add(&Tu[i], &q[1], k == 3 ? 1 : -1, is[k], is[i]);
-    if (level > 1) Add(&Tuu[i], &q[2], k == 3 ? 1 : -1, is[k], is[i] * is[i]);
-  }
-  E += T0.P + B * T0.Q;
-  if (level) {
-    const PetscReal EA = T0.PA + B * T0.QA, EB = 2 * B * T0.Pw + T0.Q + 2 * B * B * T0.Qw, EC = 2 * C * T0.Pw + 2 * B * C * T0.Qw;
-    g[3] += 0.5 * (EA + EB);
-    g[5] += 0.5 * (EA - EB);
-    g[4] += EC;
-    for (PetscInt i = 0; i < 3; i++) g[i] += Tu[i].P + B * Tu[i].Q;
-  }
-  if (level > 1) {
-    const PetscReal B2 = B * B, EAA = T0.PAA + B * T0.QAA, EAB = 2 * B * T0.PAw + T0.QA + 2 * B2 * T0.QAw, EAC = 2 * C * (T0.PAw + B * T0.QAw);
-    const PetscReal EBB = 2 * T0.Pw + 4 * B2 * T0.Pww + 6 * B * T0.Qw + 4 * B2 * B * T0.Qww;
-    const PetscReal EBC = C * (4 * B * T0.Pww + 2 * T0.Qw + 4 * B2 * T0.Qww);
-    const PetscReal ECC = 2 * T0.Pw + 4 * C * C * T0.Pww + 2 * B * T0.Qw + 4 * B * C * C * T0.Qww;
-    H[3][3] += 0.25 * (EAA + 2 * EAB + EBB);
-    H[3][5] += 0.25 * (EAA - EBB);
-    H[5][5] += 0.25 * (EAA - 2 * EAB + EBB);
-    H[3][4] += 0.5 * (EAC + EBC);
-    H[4][5] += 0.5 * (EAC - EBC);
-    H[4][4] += ECC;
-    for (PetscInt i = 0; i < 3; i++) {
-      const Bend     *t   = &Tu[i];
-      const PetscReal EuA = t->PA + B * t->QA, EuB = 2 * B * t->Pw + t->Q + 2 * B2 * t->Qw, EuC = 2 * C * (t->Pw + B * t->Qw);
-      H[i][3] += 0.5 * (EuA + EuB);
-      H[i][5] += 0.5 * (EuA - EuB);
-      H[i][4] += EuC;
-      H[i][i] += Tuu[i].P + B * Tuu[i].Q;
-    }
-    for (PetscInt i = 0; i < 6; i++)
-      for (PetscInt j = 0; j < 6; j++) hess[6 * i + j] = i <= j ? H[i][j] : H[j][i];
   }
   if (psi) *psi = E;
   if (grad)
     for (PetscInt i = 0; i < 6; i++) grad[i] = g[i];
+  if (hess)
+    for (PetscInt i = 0; i < 36; i++) hess[i] = H[i];
   PetscFunctionReturn(PETSC_SUCCESS);
 }

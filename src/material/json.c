@@ -529,6 +529,11 @@ static PetscErrorCode GetKnots(const HylcMaterialDoc *d, const JVal *v, const ch
   for (PetscInt i = 1; i < *n; i++)
     PetscCheck(v->items[i].num > v->items[i - 1].num, d->comm, PETSC_ERR_USER_INPUT, "%s:%d: %s[%" PetscInt_FMT "]: knots must be strictly increasing, but %s <= %s (the knot before)", d->name, v->items[i].line, path, i, HylcFormatDoubleRepr(v->items[i].num, b0),
                HylcFormatDoubleRepr(v->items[i - 1].num, b1));
+  for (PetscInt i = 1; i < *n; i++) { /* the evaluator divides by the spacing (docs/material.md, "Range") */
+    const double h = v->items[i].num - v->items[i - 1].num;
+    PetscCheck(isfinite(h) && isfinite(1 / h), d->comm, PETSC_ERR_USER_INPUT, "%s:%d: %s[%" PetscInt_FMT "]: the knot spacing %s - %s %s (a spacing h must have h and 1/h finite)", d->name, v->items[i].line, path, i, HylcFormatDoubleRepr(v->items[i].num, b0), HylcFormatDoubleRepr(v->items[i - 1].num, b1),
+               isfinite(h) ? "is too small" : "overflows");
+  }
   PetscCall(GetNumbers(d, v, path, -1, NULL, out, NULL));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -635,7 +640,7 @@ static PetscErrorCode ReadDoc(HylcMaterialDoc *d, const JVal *root)
   d->density = v->num;
   v          = Member(root, "strain scale");
   PetscCall(GetNumbers(d, v, "strain scale", 5, " (sigma of sx, sa, sy, II00, II11)", NULL, NULL));
-  for (int k = 0; k < 5; k++) PetscCheck(v->items[k].num > 0, d->comm, PETSC_ERR_USER_INPUT, "%s:%d: strain scale[%d]: must be positive, got %s", d->name, v->items[k].line, k, HylcFormatDoubleRepr(v->items[k].num, b));
+  for (int k = 0; k < 5; k++) PetscCheck(v->items[k].num > 0 && isfinite(1 / v->items[k].num), d->comm, PETSC_ERR_USER_INPUT, "%s:%d: strain scale[%d]: must be positive with a finite inverse, got %s", d->name, v->items[k].line, k, HylcFormatDoubleRepr(v->items[k].num, b));
   PetscCall(GetNumbers(d, v, "strain scale", 5, NULL, &buf, NULL));
   for (int k = 0; k < 5; k++) d->scale[k] = buf[k];
   PetscCall(PetscFree(buf));

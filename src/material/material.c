@@ -3,8 +3,10 @@
 #include <hylc/private/materialimpl.h>
 #include <errno.h>
 #include <fcntl.h>
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 const PetscInt HylcMaterialPairs[HYLC_MATERIAL_N2D][2] = {
@@ -270,7 +272,7 @@ PetscErrorCode HylcMaterialSetStrainScale(HylcMaterial m, const PetscReal scale[
 
   PetscFunctionBegin;
   PetscValidHeaderSpecific(m, HYLC_MATERIAL_CLASSID, 1);
-  for (PetscInt k = 0; k < 5; k++) PetscCheck(!PetscIsInfOrNanReal(scale[k]) && scale[k] > 0, PetscObjectComm((PetscObject)m), PETSC_ERR_USER_INPUT, "Strain scale %" PetscInt_FMT " (%s) must be finite and positive, got %s", k, HylcMaterialTermNames1D[k], G(b, scale[k]));
+  for (PetscInt k = 0; k < 5; k++) PetscCheck(isfinite(scale[k]) && scale[k] > 0 && isfinite(1 / scale[k]), PetscObjectComm((PetscObject)m), PETSC_ERR_USER_INPUT, "Strain scale %" PetscInt_FMT " (%s) must be finite and positive with a finite inverse, got %s", k, HylcMaterialTermNames1D[k], G(b, scale[k]));
   for (PetscInt k = 0; k < 5; k++) m->scale[k] = scale[k];
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -328,6 +330,11 @@ static PetscErrorCode CheckKnots(MPI_Comm comm, const char what[], const char na
   for (PetscInt i = 0; i < n; i++) {
     PetscCheck(!PetscIsInfOrNanReal(t[i]), comm, PETSC_ERR_USER_INPUT, "%s: knot %s[%" PetscInt_FMT "] = %s is not finite", what, name, i, G(b0, t[i]));
     PetscCheck(i == 0 || t[i] > t[i - 1], comm, PETSC_ERR_USER_INPUT, "%s: knots %s must be strictly increasing, but %s[%" PetscInt_FMT "] = %s <= %s[%" PetscInt_FMT "] = %s", what, name, name, i, G(b0, t[i]), name, i - 1, G(b1, t[i - 1]));
+    if (i > 0) { /* the evaluator divides by the spacing (docs/material.md, "Range") */
+      const PetscReal h = t[i] - t[i - 1];
+      PetscCheck(isfinite(h) && isfinite(1 / h), comm, PETSC_ERR_USER_INPUT, "%s: the spacing %s[%" PetscInt_FMT "] - %s[%" PetscInt_FMT "] = %s - %s %s (knot spacings h must have h and 1/h finite)", what, name, i, name, i - 1, G(b0, t[i]), G(b1, t[i - 1]),
+                 isfinite(h) ? "is too small" : "overflows");
+    }
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -490,8 +497,16 @@ PetscErrorCode HylcMaterialLoad(HylcMaterial m, const char path[])
   PetscCall(PetscLogEventBegin(HYLC_MaterialLoad, m, 0, 0, 0));
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (rank == 0) {
+    struct stat st;
     fp = fopen(path, "rb");
-    if (!fp) err = errno;
+    if (!fp)
+      err = errno;
+    else if (fstat(fileno(fp), &st) || !S_ISREG(st.st_mode)) { /* a directory opens, and has no size */
+      err = errno ? errno : EIO;
+      if (!fstat(fileno(fp), &st)) err = S_ISDIR(st.st_mode) ? EISDIR : EINVAL;
+      fclose(fp);
+      fp = NULL;
+    }
     if (fp && fseek(fp, 0, SEEK_END) == 0)
       len = ftell(fp);
     else if (fp)
@@ -501,6 +516,8 @@ PetscErrorCode HylcMaterialLoad(HylcMaterial m, const char path[])
   }
   PetscCallMPI(MPI_Bcast(&len, 1, MPI_LONG, 0, comm));
   PetscCallMPI(MPI_Bcast(&err, 1, MPI_INT, 0, comm));
+  PetscCheck(err != EISDIR, comm, PETSC_ERR_FILE_OPEN, "Cannot read material file '%s': it is a directory", path);
+  PetscCheck(err != EINVAL, comm, PETSC_ERR_FILE_OPEN, "Cannot read material file '%s': not a regular file", path);
   PetscCheck(len >= 0, comm, PETSC_ERR_FILE_OPEN, "Cannot open material file '%s'%s%s", path, err ? ": " : "", err ? strerror(err) : "");
   PetscCheck(len < (1L << 30), comm, PETSC_ERR_USER_INPUT, "Material file '%s' is too large (%ld bytes)", path, len);
   PetscCall(PetscMalloc1(len + 1, &bytes));

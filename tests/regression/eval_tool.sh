@@ -64,7 +64,7 @@ expect_error() { # message-regex command...
   return 0
 }
 expect_error 'needs a material: -material' $tool -strain 0,0,0,0,0,0
-expect_error "Cannot open material file 'nosuch.json'" $tool -material nosuch.json -strain 0,0,0,0,0,0
+expect_error "Cannot open nosuch.json \(-material\): No such file" $tool -material nosuch.json -strain 0,0,0,0,0,0
 expect_error '-strain 0,0,0: needs 6 comma-separated values' $tool -material small.json -strain 0,0,0
 expect_error "-strain 0,a,0,0,0,0: 'a' is not a finite number" $tool -material small.json -strain 0,a,0,0,0,0
 expect_error '-strain 0,0,0,0,0,0,0: more than 6 values' $tool -material small.json -strain 0,0,0,0,0,0,0
@@ -73,7 +73,7 @@ expect_error 'Unknown option\(s\): -derivative ' $tool -material small.json -str
 expect_error 'Nothing to do' $tool -material small.json
 expect_error '-derivatives needs -strain' $tool -material small.json -derivatives -eval_json x.json
 expect_error 'Both -material and -material_file' $tool -material small.json -material_file small.json -strain 0,0,0,0,0,0
-expect_error "Cannot write the JSON material file 'no/such/dir/x.json'" $tool -material small.json -eval_json no/such/dir/x.json
+expect_error 'Cannot write no/such/dir/x.json \(-eval_json\): directory no/such/dir does not exist' $tool -material small.json -eval_json no/such/dir/x.json
 printf '{"density": 0.3,\n "strain scale": [1, 1, 1, 1, 1],\n "coeffs": {"const": 0, "1D": [{"k": 0, "t": [0, 1], "p": [0, 1], "m": [0]}]}}' >bad.json
 expect_error 'bad.json:3: coeffs.1D\[0\].m: expected 2 numbers \(one per knot\), got 1' $tool -material bad.json -strain 0,0,0,0,0,0
 
