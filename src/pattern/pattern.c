@@ -130,6 +130,41 @@ PetscErrorCode HylcPatternGetGenParams(HylcPattern p, HylcPatternGenParams *g)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+#define HYLC_STR_(x) #x
+#define HYLC_STR(x)  HYLC_STR_(x)
+
+/* A real option given on the command line or in a file: finite, and > 0 (positive) or >= 0. */
+static PetscErrorCode CheckReal(HylcPattern p, const char name[], PetscBool set, PetscReal v, PetscBool positive)
+{
+  const char *prefix = ((PetscObject)p)->prefix;
+  char        raw[256] = "", key[128];
+
+  PetscFunctionBegin;
+  if (!set) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscSNPrintf(key, sizeof(key), "-%s%s", prefix ? prefix : "", name + 1));
+  PetscCall(PetscOptionsGetString(((PetscObject)p)->options, NULL, key, raw, sizeof(raw), NULL));
+  PetscCheck(PetscIsNormalReal(v) || v == 0, PetscObjectComm((PetscObject)p), PETSC_ERR_USER_INPUT, "Option %s %s: not a finite number", key, raw);
+  PetscCheck(positive ? v > 0 : v >= 0, PetscObjectComm((PetscObject)p), PETSC_ERR_USER_INPUT, "Option %s %s: must be %s", key, raw, positive ? "positive" : "positive, or 0 for the default");
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* -pattern_size: exactly two integers, each in [1, HYLC_PATTERN_MAX_SIZE] */
+static PetscErrorCode CheckSize(HylcPattern p, const char name[], PetscInt n, const PetscInt size[2])
+{
+  MPI_Comm    comm   = PetscObjectComm((PetscObject)p);
+  const char *prefix = ((PetscObject)p)->prefix;
+  char        raw[256] = "", key[128];
+  PetscInt    nraw     = 1;
+
+  PetscFunctionBegin;
+  PetscCall(PetscSNPrintf(key, sizeof(key), "-%s%s", prefix ? prefix : "", name + 1));
+  PetscCall(PetscOptionsGetString(((PetscObject)p)->options, NULL, key, raw, sizeof(raw), NULL));
+  for (const char *c = raw; *c; c++) nraw += (*c == ',');
+  PetscCheck(n == 2 && nraw == 2, comm, PETSC_ERR_USER_INPUT, "Option %s %s: needs two integers nx,ny", key, raw);
+  PetscCheck(size[0] >= 1 && size[1] >= 1 && size[0] <= HYLC_PATTERN_MAX_SIZE && size[1] <= HYLC_PATTERN_MAX_SIZE, comm, PETSC_ERR_USER_INPUT, "Option %s %s: sizes must be integers from 1 to %d", key, raw, HYLC_PATTERN_MAX_SIZE);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /*@C
   HylcPatternSetFromOptions - Reads the pattern options. Collective.
 
@@ -166,18 +201,27 @@ PetscErrorCode HylcPatternSetFromOptions(HylcPattern p)
   (void)n;
   if (tflg) PetscCall(HylcPatternSetType(p, types[n]));
   PetscCheck(!(flg && tflg && n != 0), PetscObjectComm((PetscObject)p), PETSC_ERR_USER_INPUT, "Both -pattern_file %s and -pattern_type %s were given; use one", file, types[n]);
-  PetscCall(PetscOptionsReal("-pattern_radius", "Generators: yarn radius (m)", "HylcPatternGenerate", p->gen.radius, &p->gen.radius, NULL));
-  PetscCall(PetscOptionsReal("-pattern_spacing", "Wovens: distance between neighbouring parallel yarns (m); 0 = 4 r", "HylcPatternGenerate", p->gen.spacing, &p->gen.spacing, NULL));
-  PetscCall(PetscOptionsReal("-pattern_gap", "Wovens: clearance at crossings relative to 2r; 0 = 0.1", "HylcPatternGenerate", p->gen.gap, &p->gen.gap, NULL));
-  PetscCall(PetscOptionsReal("-pattern_wale", "Knits: stitch width along x (m); 0 = default", "HylcPatternGenerate", p->gen.wale, &p->gen.wale, NULL));
-  PetscCall(PetscOptionsReal("-pattern_course", "Knits: course height along y (m); 0 = default", "HylcPatternGenerate", p->gen.course, &p->gen.course, NULL));
-  PetscCall(PetscOptionsReal("-pattern_depth", "Knits: z amplitude of the loops (m); 0 = default", "HylcPatternGenerate", p->gen.depth, &p->gen.depth, NULL));
-  PetscCall(PetscOptionsReal("-pattern_seglen", "Generators: target edge length (m); 0 = r", "HylcPatternGenerate", p->gen.seglen, &p->gen.seglen, NULL));
+  PetscCall(PetscOptionsReal("-pattern_radius", "Generators: yarn radius (m), > 0", "HylcPatternGenerate", p->gen.radius, &p->gen.radius, &flg));
+  PetscCall(CheckReal(p, "-pattern_radius", flg, p->gen.radius, PETSC_TRUE));
+  PetscCall(PetscOptionsReal("-pattern_spacing", "Wovens: distance between neighbouring parallel yarns (m); 0 = 4 r", "HylcPatternGenerate", p->gen.spacing, &p->gen.spacing, &flg));
+  PetscCall(CheckReal(p, "-pattern_spacing", flg, p->gen.spacing, PETSC_FALSE));
+  PetscCall(PetscOptionsReal("-pattern_gap", "Wovens: clearance at crossings relative to 2r; 0 = 0.1", "HylcPatternGenerate", p->gen.gap, &p->gen.gap, &flg));
+  PetscCall(CheckReal(p, "-pattern_gap", flg, p->gen.gap, PETSC_FALSE));
+  PetscCall(PetscOptionsReal("-pattern_wale", "Knits: stitch width along x (m); 0 = default", "HylcPatternGenerate", p->gen.wale, &p->gen.wale, &flg));
+  PetscCall(CheckReal(p, "-pattern_wale", flg, p->gen.wale, PETSC_FALSE));
+  PetscCall(PetscOptionsReal("-pattern_course", "Knits: course height along y (m); 0 = default", "HylcPatternGenerate", p->gen.course, &p->gen.course, &flg));
+  PetscCall(CheckReal(p, "-pattern_course", flg, p->gen.course, PETSC_FALSE));
+  PetscCall(PetscOptionsReal("-pattern_depth", "Knits: z amplitude of the loops (m); 0 = default", "HylcPatternGenerate", p->gen.depth, &p->gen.depth, &flg));
+  PetscCall(CheckReal(p, "-pattern_depth", flg, p->gen.depth, PETSC_FALSE));
+  PetscCall(PetscOptionsReal("-pattern_seglen", "Generators: target edge length (m); 0 = r", "HylcPatternGenerate", p->gen.seglen, &p->gen.seglen, &flg));
+  PetscCall(CheckReal(p, "-pattern_seglen", flg, p->gen.seglen, PETSC_FALSE));
   n = 2;
-  PetscCall(PetscOptionsIntArray("-pattern_size", "Generators: tile size nx,ny in threads (wovens) or wales,courses (knits); 0 = smallest repeat", "HylcPatternGenerate", p->gen.size, &n, &flg));
-  if (flg) PetscCheck(n == 2, PetscObjectComm((PetscObject)p), PETSC_ERR_USER_INPUT, "-pattern_size needs two integers nx,ny, got %" PetscInt_FMT, n);
-  PetscCall(PetscOptionsReal("-pattern_density", "Volumetric yarn density for the summary's area density (kg/m^3)", "HylcPatternGetAreaDensity", p->viewDensity, &p->viewDensity, NULL));
-  PetscCall(PetscOptionsReal("-pattern_exclude_arc", "Summary: same-yarn segment pairs closer than this rest arc length (units of r) are not contacts", "HylcPatternMinSegmentDistance", p->viewExcludeArc, &p->viewExcludeArc, NULL));
+  PetscCall(PetscOptionsIntArray("-pattern_size", "Generators: tile size nx,ny (each 1 to " HYLC_STR(HYLC_PATTERN_MAX_SIZE) ") in threads (wovens) or wales,courses (knits); default the smallest repeat", "HylcPatternGenerate", p->gen.size, &n, &flg));
+  if (flg) PetscCall(CheckSize(p, "-pattern_size", n, p->gen.size));
+  PetscCall(PetscOptionsReal("-pattern_density", "Volumetric yarn density for the summary's area density (kg/m^3); 0 = the yarn model's default", "HylcPatternGetAreaDensity", p->viewDensity, &p->viewDensity, &flg));
+  PetscCall(CheckReal(p, "-pattern_density", flg, p->viewDensity, PETSC_FALSE));
+  PetscCall(PetscOptionsReal("-pattern_exclude_arc", "Summary: same-yarn segment pairs closer than this rest arc length (units of r) are not contacts", "HylcPatternMinSegmentDistance", p->viewExcludeArc, &p->viewExcludeArc, &flg));
+  PetscCall(CheckReal(p, "-pattern_exclude_arc", flg, p->viewExcludeArc, PETSC_FALSE));
   PetscCall(PetscOptionsBool("-pattern_consistent_periods", "Loader: replace the stored periods by the ones the rest lengths of the periodic edges imply (basket.pyp, method-spec 2.1b)", "HylcPatternLoad", p->consistentPeriods, &p->consistentPeriods, NULL));
   PetscCall(PetscObjectProcessOptionsHandlers((PetscObject)p, PetscOptionsObject));
   PetscOptionsEnd();

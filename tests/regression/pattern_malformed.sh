@@ -122,7 +122,7 @@ sed 's/^\*RT /*Twist /' good.pyp >unknown.pyp;       expect unknown-block "unkno
 head -c 300 good.pyp >truncated.pyp;                  expect truncated "truncated.pyp: missing block|truncated.pyp:[0-9]+: (block|unknown block)" truncated.pyp
 printf 'a\0b' >binary.pyp;                            expect binary "binary.pyp: contains a NUL byte" binary.pyp
 : >empty.pyp;                                         expect empty "empty.pyp: missing block '\*pattern'" empty.pyp
-expect missing-file "Cannot open pattern file" does_not_exist.pyp
+expect missing-file "Cannot open does_not_exist.pyp \(-pattern_file\): No such file" does_not_exist.pyp
 
 echo "$pass cases refused correctly, $fail wrong"
 [ $fail -eq 0 ] && [ $pass -ge 10 ]

@@ -50,3 +50,5 @@ PETSC_INTERN PetscErrorCode HylcPatternGenerateKnit_Private(HylcPattern, HylcPat
 #define HYLC_PATTERN_MSG_LEN (PETSC_MAX_PATH_LEN + 512)
 PETSC_INTERN PetscErrorCode HylcPatternKeepMessage_Private(MPI_Comm, int, const char *, const char *, PetscErrorCode, PetscErrorType, const char *, void *);
 PETSC_INTERN PetscErrorCode HylcPatternRaiseFromRank0_Private(MPI_Comm, PetscErrorCode, char[]);
+/* Largest tile size (threads or stitches per direction) the generators accept. */
+#define HYLC_PATTERN_MAX_SIZE 1000
