@@ -130,7 +130,7 @@ static PetscErrorCode PypParse(HylcPattern p, const char fname[], char *text, Py
     PetscCheck(r > 0, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": yarn radius must be positive, got %g", fname, ln, (double)r);
     /* some lattice translate of every yarn is another yarn within max(px, py) of it: a radius that large
        means yarns overlapping their own periodic images by more than a radius */
-    PetscCheck(r < PetscMax(px, py), comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": yarn radius %s is not smaller than the periods (px = %g, py = %g): every yarn would overlap its periodic images; not a physical tile", fname, ln, Num(b0, r), (double)px, (double)py);
+    PetscCheck(r < PetscMax(px, py), comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": yarn radius %s is not smaller than the periods (px = %g, py = %g): every yarn would overlap its periodic images; not a physical tile", fname, ln, (snprintf(b0, sizeof(b0), "%.9g", (double)r), b0), (double)px, (double)py);
     PetscCheck(IsIntIn(h[3], 1, PETSC_MAX_INT), comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": num_vertedges must be a positive integer, got %s", fname, ln, Num(b0, h[3]));
     nv = (PetscInt)h[3];
   }
