@@ -136,7 +136,7 @@ PetscErrorCode HylcPatternGetGenParams(HylcPattern p, HylcPatternGenParams *g)
 /* A real option given on the command line or in a file: finite, and > 0 (positive) or >= 0. */
 static PetscErrorCode CheckReal(HylcPattern p, const char name[], PetscBool set, PetscReal v, PetscBool positive)
 {
-  const char *prefix = ((PetscObject)p)->prefix;
+  const char *prefix   = ((PetscObject)p)->prefix;
   char        raw[256] = "", key[128];
 
   PetscFunctionBegin;
@@ -151,8 +151,8 @@ static PetscErrorCode CheckReal(HylcPattern p, const char name[], PetscBool set,
 /* -pattern_size: exactly two integers, each in [1, HYLC_PATTERN_MAX_SIZE] */
 static PetscErrorCode CheckSize(HylcPattern p, const char name[], PetscInt n, const PetscInt size[2])
 {
-  MPI_Comm    comm   = PetscObjectComm((PetscObject)p);
-  const char *prefix = ((PetscObject)p)->prefix;
+  MPI_Comm    comm     = PetscObjectComm((PetscObject)p);
+  const char *prefix   = ((PetscObject)p)->prefix;
   char        raw[256] = "", key[128];
   PetscInt    nraw     = 1;
 
@@ -211,7 +211,7 @@ PetscErrorCode HylcPatternSetFromOptions(HylcPattern p)
   PetscCall(PetscOptionsReal("-pattern_seglen", "Generators: target edge length (m); 0 = r", "HylcPatternGenerate", p->gen.seglen, &p->gen.seglen, &set[6]));
   n = 2;
   PetscCall(PetscOptionsIntArray("-pattern_size", "Generators: tile size nx,ny (each 1 to " HYLC_STR(HYLC_PATTERN_MAX_SIZE) ") in threads (wovens) or wales,courses (knits); default the smallest repeat", "HylcPatternGenerate", p->gen.size, &n, &flg));
-  nsize = n;
+  nsize   = n;
   sizeset = flg;
   PetscCall(PetscOptionsReal("-pattern_density", "Volumetric yarn density for the summary's area density (kg/m^3); 0 = the yarn model's default", "HylcPatternGetAreaDensity", p->viewDensity, &p->viewDensity, &set[7]));
   PetscCall(PetscOptionsReal("-pattern_exclude_arc", "Summary: same-yarn segment pairs closer than this rest arc length (units of r) are not contacts", "HylcPatternMinSegmentDistance", p->viewExcludeArc, &p->viewExcludeArc, &set[8]));

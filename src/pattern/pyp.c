@@ -293,8 +293,8 @@ static PetscErrorCode PypReadOnRank0(MPI_Comm comm, const char fname[], char **t
 {
   PetscMPIInt    rank;
   char           msg[HYLC_PATTERN_MSG_LEN] = "";
-  PetscErrorCode code = 0; /* rank 0's error */
-  FILE          *fp   = NULL;
+  PetscErrorCode code                      = 0; /* rank 0's error */
+  FILE          *fp                        = NULL;
 
   PetscFunctionBegin;
   *text = NULL;
