@@ -20,6 +20,7 @@ static PetscErrorCode RunPattern(HylcPattern pat)
   PetscCall(PetscOptionsIntArray("-pattern_vtk_tiles", "Number of tile copies nx,ny in the VTK file", "HylcPatternWriteVTK", tiles, &nt, &flg));
   PetscOptionsEnd();
   PetscCheck(!flg || (nt == 2 && tiles[0] >= 1 && tiles[1] >= 1), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-pattern_vtk_tiles needs two positive integers nx,ny");
+  PetscCheck((double)tiles[0] * tiles[1] <= 1e6, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-pattern_vtk_tiles %" PetscInt_FMT ",%" PetscInt_FMT ": at most 1e6 tile copies", tiles[0], tiles[1]);
   /* outputs checked before any work, and never onto the input */
   if (out[0]) PetscCall(HylcFileCheckOutput(PETSC_COMM_WORLD, out, "-pattern_output"));
   if (vtk[0]) PetscCall(HylcFileCheckOutput(PETSC_COMM_WORLD, vtk, "-pattern_vtk"));
