@@ -43,6 +43,10 @@ PETSC_EXTERN PetscErrorCode HylcInitializePackage(void);
    on), other errors with PETSc's full traceback. -hylc_traceback keeps PETSc's handler for all errors.
    Call right after PetscInitialize(). Not collective. */
 PETSC_EXTERN PetscErrorCode HylcPushErrorHandler(void);
+/* PetscInitialize() + HylcPushErrorHandler() for programs, after checking every options file on the
+   command line (-options_file, -options_file_yaml): a missing file, a directory or a malformed YAML file
+   ends the program with one line "hylc: error: file:line: problem" (src/sys/error.c). Collective. */
+PETSC_EXTERN PetscErrorCode HylcInitialize(int *, char ***, const char[], const char[]);
 
 /* Ends a program: on success PetscFinalize() and 0; on error (ierr != 0) the error code, after
    PetscFinalize() on one rank or MPI_Abort() on several (other ranks may wait in a collective).

@@ -4,16 +4,15 @@ static const char help[] = "hylc-pattern: load or generate a periodic yarn patte
                            "  hylc-pattern -pattern_file f.pyp -pattern_vtk f.vtk -pattern_vtk_tiles 3,3\n\n";
 
 #include <hylc/pattern.h>
+#include <hylc/sys.h>
 
-static PetscErrorCode Run(void)
+static PetscErrorCode RunPattern(HylcPattern pat)
 {
-  HylcPattern pat;
-  char        out[PETSC_MAX_PATH_LEN] = "", vtk[PETSC_MAX_PATH_LEN] = "";
-  PetscInt    tiles[2] = {1, 1}, nt = 2;
-  PetscBool   flg;
+  char      out[PETSC_MAX_PATH_LEN] = "", vtk[PETSC_MAX_PATH_LEN] = "";
+  PetscInt  tiles[2] = {1, 1}, nt = 2;
+  PetscBool flg;
 
   PetscFunctionBeginUser;
-  PetscCall(HylcPatternCreate(PETSC_COMM_WORLD, &pat));
   PetscCall(HylcPatternSetFromOptions(pat));
   PetscOptionsBegin(PETSC_COMM_WORLD, NULL, "hylc-pattern output options", "hylc-pattern");
   PetscCall(PetscOptionsString("-pattern_output", "Write the pattern to this .pyp file", "HylcPatternWrite", out, out, sizeof(out), NULL));
@@ -21,6 +20,22 @@ static PetscErrorCode Run(void)
   PetscCall(PetscOptionsIntArray("-pattern_vtk_tiles", "Number of tile copies nx,ny in the VTK file", "HylcPatternWriteVTK", tiles, &nt, &flg));
   PetscOptionsEnd();
   PetscCheck(!flg || (nt == 2 && tiles[0] >= 1 && tiles[1] >= 1), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-pattern_vtk_tiles needs two positive integers nx,ny");
+  PetscCheck((double)tiles[0] * tiles[1] <= 1e6, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-pattern_vtk_tiles %" PetscInt_FMT ",%" PetscInt_FMT ": at most 1e6 tile copies", tiles[0], tiles[1]);
+  /* outputs checked before any work, and never onto the input */
+  if (out[0]) PetscCall(HylcFileCheckOutput(PETSC_COMM_WORLD, out, "-pattern_output"));
+  if (vtk[0]) PetscCall(HylcFileCheckOutput(PETSC_COMM_WORLD, vtk, "-pattern_vtk"));
+  {
+    HylcPatternType type;
+    PetscBool       isfile;
+    PetscCall(HylcPatternGetType(pat, &type));
+    PetscCall(PetscStrcmp(type, HYLCPATTERNFILE, &isfile));
+    if (isfile) {
+      char in[PETSC_MAX_PATH_LEN] = "";
+      PetscCall(PetscOptionsGetString(NULL, NULL, "-pattern_file", in, sizeof(in), NULL));
+      PetscCall(HylcFileCheckDistinct(PETSC_COMM_WORLD, out, "-pattern_output", in, "-pattern_file"));
+      PetscCall(HylcFileCheckDistinct(PETSC_COMM_WORLD, vtk, "-pattern_vtk", in, "-pattern_file"));
+    }
+  }
   PetscCall(HylcPatternSetUp(pat));
   PetscCall(HylcPatternView(pat, PETSC_VIEWER_STDOUT_WORLD));
   if (out[0]) {
@@ -31,13 +46,24 @@ static PetscErrorCode Run(void)
     PetscCall(HylcPatternWriteVTK(pat, vtk, tiles[0], tiles[1]));
     PetscCall(PetscPrintf(PETSC_COMM_WORLD, "wrote %s (%" PetscInt_FMT " x %" PetscInt_FMT " tiles)\n", vtk, tiles[0], tiles[1]));
   }
-  PetscCall(HylcPatternDestroy(&pat));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode Run(void)
+{
+  HylcPattern    pat = NULL;
+  PetscErrorCode ierr;
+
+  PetscFunctionBeginUser;
+  PetscCall(HylcPatternCreate(PETSC_COMM_WORLD, &pat));
+  ierr = RunPattern(pat);
+  PetscCall(HylcPatternDestroy(&pat)); /* also on an error: nothing leaks */
+  PetscCall(ierr);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 int main(int argc, char **argv)
 {
-  PetscCall(PetscInitialize(&argc, &argv, NULL, help));
-  PetscCall(HylcPushErrorHandler());
+  PetscCall(HylcInitialize(&argc, &argv, NULL, help));
   return HylcMainFinalize(Run());
 }

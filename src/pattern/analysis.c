@@ -2,6 +2,10 @@
 #include <hylc/private/patternimpl.h>
 #include <hylc/geom.h>
 
+/* bounds of the periodic-image search of HylcPatternMinSegmentDistance() */
+#define HYLC_PATTERN_MAX_RINGS  500
+#define HYLC_PATTERN_MAX_IMAGES 1000000
+
 /*@C
   HylcPatternGetYarnLength - Total yarn length in the tile: current (sum of edge lengths) and rest
   (sum of rest lengths), in m. Not collective. Either output may be NULL.
@@ -115,7 +119,15 @@ PetscErrorCode HylcPatternMinSegmentDistance(HylcPattern p, PetscReal arcFactor,
       hi[d] = PetscMax(hi[d], PetscMax(seg[6 * v + d], seg[6 * v + 3 + d]));
     }
   }
-  const PetscInt mx = (PetscInt)PetscCeilReal((hi[0] - lo[0] + cut) / p->px), my = (PetscInt)PetscCeilReal((hi[1] - lo[1] + cut) / p->py);
+  /* periodic image rings needed to see every pair within the cut, in floating point (a tiny period
+     would overflow an integer) and capped: a tile whose periods are that small against its extent and
+     the contact range is not a physical tile */
+  const PetscReal rx = PetscCeilReal((hi[0] - lo[0] + cut) / p->px), ry = PetscCeilReal((hi[1] - lo[1] + cut) / p->py);
+  if (!(rx <= HYLC_PATTERN_MAX_RINGS && ry <= HYLC_PATTERN_MAX_RINGS && (2 * rx + 1) * (2 * ry + 1) <= HYLC_PATTERN_MAX_IMAGES)) {
+    PetscCall(PetscFree(seg));
+    SETERRQ(PetscObjectComm((PetscObject)p), PETSC_ERR_USER_INPUT, "%s%speriods px = %g, py = %g are too small for a tile whose vertices span %g x %g m with contact range 20 r = %g m: %.3g x %.3g periodic images to search (at most %d x %d, %d in all); not a physical tile", p->filename[0] ? p->filename : "", p->filename[0] ? ": " : "pattern: ", (double)p->px, (double)p->py, (double)(hi[0] - lo[0]), (double)(hi[1] - lo[1]), (double)cut, (double)(2 * rx + 1), (double)(2 * ry + 1), 2 * HYLC_PATTERN_MAX_RINGS + 1, 2 * HYLC_PATTERN_MAX_RINGS + 1, HYLC_PATTERN_MAX_IMAGES);
+  }
+  const PetscInt mx = (PetscInt)rx, my = (PetscInt)ry;
   for (PetscInt sx = -mx; sx <= mx; sx++) {
     for (PetscInt sy = -my; sy <= my; sy++) {
       const PetscInt  s[2] = {sx, sy};

@@ -130,6 +130,41 @@ PetscErrorCode HylcPatternGetGenParams(HylcPattern p, HylcPatternGenParams *g)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+#define HYLC_STR_(x) #x
+#define HYLC_STR(x)  HYLC_STR_(x)
+
+/* A real option given on the command line or in a file: finite, and > 0 (positive) or >= 0. */
+static PetscErrorCode CheckReal(HylcPattern p, const char name[], PetscBool set, PetscReal v, PetscBool positive)
+{
+  const char *prefix   = ((PetscObject)p)->prefix;
+  char        raw[256] = "", key[128];
+
+  PetscFunctionBegin;
+  if (!set) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscSNPrintf(key, sizeof(key), "-%s%s", prefix ? prefix : "", name + 1));
+  PetscCall(PetscOptionsGetString(((PetscObject)p)->options, NULL, key, raw, sizeof(raw), NULL));
+  PetscCheck(PetscIsNormalReal(v) || v == 0, PetscObjectComm((PetscObject)p), PETSC_ERR_USER_INPUT, "Option %s %s: not a finite number", key, raw);
+  PetscCheck(positive ? v > 0 : v >= 0, PetscObjectComm((PetscObject)p), PETSC_ERR_USER_INPUT, "Option %s %s: must be %s", key, raw, positive ? "positive" : "positive, or 0 for the default");
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* -pattern_size: exactly two integers, each in [1, HYLC_PATTERN_MAX_SIZE] */
+static PetscErrorCode CheckSize(HylcPattern p, const char name[], PetscInt n, const PetscInt size[2])
+{
+  MPI_Comm    comm     = PetscObjectComm((PetscObject)p);
+  const char *prefix   = ((PetscObject)p)->prefix;
+  char        raw[256] = "", key[128];
+  PetscInt    nraw     = 1;
+
+  PetscFunctionBegin;
+  PetscCall(PetscSNPrintf(key, sizeof(key), "-%s%s", prefix ? prefix : "", name + 1));
+  PetscCall(PetscOptionsGetString(((PetscObject)p)->options, NULL, key, raw, sizeof(raw), NULL));
+  for (const char *c = raw; *c; c++) nraw += (*c == ',');
+  PetscCheck(n == 2 && nraw == 2, comm, PETSC_ERR_USER_INPUT, "Option %s %s: needs two integers nx,ny", key, raw);
+  PetscCheck(size[0] >= 1 && size[1] >= 1 && size[0] <= HYLC_PATTERN_MAX_SIZE && size[1] <= HYLC_PATTERN_MAX_SIZE, comm, PETSC_ERR_USER_INPUT, "Option %s %s: sizes must be integers from 1 to %d", key, raw, HYLC_PATTERN_MAX_SIZE);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /*@C
   HylcPatternSetFromOptions - Reads the pattern options. Collective.
 
@@ -149,8 +184,8 @@ PetscErrorCode HylcPatternGetGenParams(HylcPattern p, HylcPatternGenParams *g)
 PetscErrorCode HylcPatternSetFromOptions(HylcPattern p)
 {
   char        file[PETSC_MAX_PATH_LEN] = "", type[64];
-  PetscBool   flg, tflg;
-  PetscInt    n       = 2;
+  PetscBool   flg, tflg, set[9] = {PETSC_FALSE}, sizeset = PETSC_FALSE, both;
+  PetscInt    n = 2, nsize = 0, tn;
   const char *types[] = {HYLCPATTERNFILE, HYLCPATTERNPLAIN, HYLCPATTERNBASKET, HYLCPATTERNTWILL, HYLCPATTERNSATIN, HYLCPATTERNSTOCKINETTE, HYLCPATTERNRIB};
 
   PetscFunctionBegin;
@@ -165,22 +200,36 @@ PetscErrorCode HylcPatternSetFromOptions(HylcPattern p)
   PetscCall(PetscOptionsEList("-pattern_type", "Pattern source: a file or a generator", "HylcPatternSetType", types, 7, type, &n, &tflg));
   (void)n;
   if (tflg) PetscCall(HylcPatternSetType(p, types[n]));
-  PetscCheck(!(flg && tflg && n != 0), PetscObjectComm((PetscObject)p), PETSC_ERR_USER_INPUT, "Both -pattern_file %s and -pattern_type %s were given; use one", file, types[n]);
-  PetscCall(PetscOptionsReal("-pattern_radius", "Generators: yarn radius (m)", "HylcPatternGenerate", p->gen.radius, &p->gen.radius, NULL));
-  PetscCall(PetscOptionsReal("-pattern_spacing", "Wovens: distance between neighbouring parallel yarns (m); 0 = 4 r", "HylcPatternGenerate", p->gen.spacing, &p->gen.spacing, NULL));
-  PetscCall(PetscOptionsReal("-pattern_gap", "Wovens: clearance at crossings relative to 2r; 0 = 0.1", "HylcPatternGenerate", p->gen.gap, &p->gen.gap, NULL));
-  PetscCall(PetscOptionsReal("-pattern_wale", "Knits: stitch width along x (m); 0 = default", "HylcPatternGenerate", p->gen.wale, &p->gen.wale, NULL));
-  PetscCall(PetscOptionsReal("-pattern_course", "Knits: course height along y (m); 0 = default", "HylcPatternGenerate", p->gen.course, &p->gen.course, NULL));
-  PetscCall(PetscOptionsReal("-pattern_depth", "Knits: z amplitude of the loops (m); 0 = default", "HylcPatternGenerate", p->gen.depth, &p->gen.depth, NULL));
-  PetscCall(PetscOptionsReal("-pattern_seglen", "Generators: target edge length (m); 0 = r", "HylcPatternGenerate", p->gen.seglen, &p->gen.seglen, NULL));
+  both = (PetscBool)(flg && tflg && n != 0);
+  tn   = n;
+  PetscCall(PetscOptionsReal("-pattern_radius", "Generators: yarn radius (m), > 0", "HylcPatternGenerate", p->gen.radius, &p->gen.radius, &set[0]));
+  PetscCall(PetscOptionsReal("-pattern_spacing", "Wovens: distance between neighbouring parallel yarns (m); 0 = 4 r", "HylcPatternGenerate", p->gen.spacing, &p->gen.spacing, &set[1]));
+  PetscCall(PetscOptionsReal("-pattern_gap", "Wovens: clearance at crossings relative to 2r; 0 = 0.1", "HylcPatternGenerate", p->gen.gap, &p->gen.gap, &set[2]));
+  PetscCall(PetscOptionsReal("-pattern_wale", "Knits: stitch width along x (m); 0 = default", "HylcPatternGenerate", p->gen.wale, &p->gen.wale, &set[3]));
+  PetscCall(PetscOptionsReal("-pattern_course", "Knits: course height along y (m); 0 = default", "HylcPatternGenerate", p->gen.course, &p->gen.course, &set[4]));
+  PetscCall(PetscOptionsReal("-pattern_depth", "Knits: z amplitude of the loops (m); 0 = default", "HylcPatternGenerate", p->gen.depth, &p->gen.depth, &set[5]));
+  PetscCall(PetscOptionsReal("-pattern_seglen", "Generators: target edge length (m); 0 = r", "HylcPatternGenerate", p->gen.seglen, &p->gen.seglen, &set[6]));
   n = 2;
-  PetscCall(PetscOptionsIntArray("-pattern_size", "Generators: tile size nx,ny in threads (wovens) or wales,courses (knits); 0 = smallest repeat", "HylcPatternGenerate", p->gen.size, &n, &flg));
-  if (flg) PetscCheck(n == 2, PetscObjectComm((PetscObject)p), PETSC_ERR_USER_INPUT, "-pattern_size needs two integers nx,ny, got %" PetscInt_FMT, n);
-  PetscCall(PetscOptionsReal("-pattern_density", "Volumetric yarn density for the summary's area density (kg/m^3)", "HylcPatternGetAreaDensity", p->viewDensity, &p->viewDensity, NULL));
-  PetscCall(PetscOptionsReal("-pattern_exclude_arc", "Summary: same-yarn segment pairs closer than this rest arc length (units of r) are not contacts", "HylcPatternMinSegmentDistance", p->viewExcludeArc, &p->viewExcludeArc, NULL));
+  PetscCall(PetscOptionsIntArray("-pattern_size", "Generators: tile size nx,ny (each 1 to " HYLC_STR(HYLC_PATTERN_MAX_SIZE) ") in threads (wovens) or wales,courses (knits); default the smallest repeat", "HylcPatternGenerate", p->gen.size, &n, &flg));
+  nsize   = n;
+  sizeset = flg;
+  PetscCall(PetscOptionsReal("-pattern_density", "Volumetric yarn density for the summary's area density (kg/m^3); 0 = the yarn model's default", "HylcPatternGetAreaDensity", p->viewDensity, &p->viewDensity, &set[7]));
+  PetscCall(PetscOptionsReal("-pattern_exclude_arc", "Summary: same-yarn segment pairs closer than this rest arc length (units of r) are not contacts", "HylcPatternMinSegmentDistance", p->viewExcludeArc, &p->viewExcludeArc, &set[8]));
   PetscCall(PetscOptionsBool("-pattern_consistent_periods", "Loader: replace the stored periods by the ones the rest lengths of the periodic edges imply (basket.pyp, method-spec 2.1b)", "HylcPatternLoad", p->consistentPeriods, &p->consistentPeriods, NULL));
   PetscCall(PetscObjectProcessOptionsHandlers((PetscObject)p, PetscOptionsObject));
   PetscOptionsEnd();
+  /* checked after PetscOptionsEnd(), so that an error leaves nothing allocated behind */
+  PetscCheck(!both, PetscObjectComm((PetscObject)p), PETSC_ERR_USER_INPUT, "Both -pattern_file %s and -pattern_type %s were given; use one", file, types[tn]);
+  PetscCall(CheckReal(p, "-pattern_radius", set[0], p->gen.radius, PETSC_TRUE));
+  PetscCall(CheckReal(p, "-pattern_spacing", set[1], p->gen.spacing, PETSC_FALSE));
+  PetscCall(CheckReal(p, "-pattern_gap", set[2], p->gen.gap, PETSC_FALSE));
+  PetscCall(CheckReal(p, "-pattern_wale", set[3], p->gen.wale, PETSC_FALSE));
+  PetscCall(CheckReal(p, "-pattern_course", set[4], p->gen.course, PETSC_FALSE));
+  PetscCall(CheckReal(p, "-pattern_depth", set[5], p->gen.depth, PETSC_FALSE));
+  PetscCall(CheckReal(p, "-pattern_seglen", set[6], p->gen.seglen, PETSC_FALSE));
+  PetscCall(CheckReal(p, "-pattern_density", set[7], p->viewDensity, PETSC_FALSE));
+  PetscCall(CheckReal(p, "-pattern_exclude_arc", set[8], p->viewExcludeArc, PETSC_FALSE));
+  if (sizeset) PetscCall(CheckSize(p, "-pattern_size", nsize, p->gen.size));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -56,18 +56,17 @@ static const char *Num(char buf[32], PetscReal v)
 /* Checks that a value stored as a real is an integer in [lo, hi). */
 static PetscBool IsIntIn(PetscReal v, PetscReal lo, PetscReal hi) { return (PetscBool)(v == PetscFloorReal(v) && v >= lo && v < hi); }
 
-/* Parses the text of a .pyp file. fname is used in messages only. */
-static PetscErrorCode HylcPatternParse_Private(HylcPattern p, const char fname[], char *text)
+/* Parses the text of a .pyp file into p; the scratch blocks blk[] and *erow_ are owned (and freed, also
+   on error) by the caller. fname is used in messages only. */
+static PetscErrorCode PypParse(HylcPattern p, const char fname[], char *text, PypBlockData blk[NBLK], PetscInt **erow_)
 {
-  MPI_Comm     comm = PetscObjectComm((PetscObject)p);
-  PypBlockData blk[NBLK];
-  PetscInt     cur = -1, lineno = 0, nv;
-  char        *s = text;
-  PetscReal    px, py, r;
-  char         b0[32], b1[32];
+  MPI_Comm  comm = PetscObjectComm((PetscObject)p);
+  PetscInt  cur = -1, lineno = 0, nv;
+  char     *s = text;
+  PetscReal px, py, r;
+  char      b0[32], b1[32];
 
   PetscFunctionBegin;
-  PetscCall(PetscMemzero(blk, sizeof(blk)));
   while (s && *s) {
     char *eol = strchr(s, '\n'), *c;
     if (eol) *eol = 0;
@@ -129,6 +128,9 @@ static PetscErrorCode HylcPatternParse_Private(HylcPattern p, const char fname[]
     r                   = h[2];
     PetscCheck(px > 0 && py > 0, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": periods must be positive, got px = %g, py = %g", fname, ln, (double)px, (double)py);
     PetscCheck(r > 0, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": yarn radius must be positive, got %g", fname, ln, (double)r);
+    /* some lattice translate of every yarn is another yarn within max(px, py) of it: a radius that large
+       means yarns overlapping their own periodic images by more than a radius */
+    PetscCheck(r < PetscMax(px, py), comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": yarn radius %s is not smaller than the periods (px = %g, py = %g): every yarn would overlap its periodic images; not a physical tile", fname, ln, (snprintf(b0, sizeof(b0), "%.9g", (double)r), b0), (double)px, (double)py);
     PetscCheck(IsIntIn(h[3], 1, PETSC_MAX_INT), comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": num_vertedges must be a positive integer, got %s", fname, ln, Num(b0, h[3]));
     nv = (PetscInt)h[3];
   }
@@ -151,7 +153,8 @@ static PetscErrorCode HylcPatternParse_Private(HylcPattern p, const char fname[]
   }
   /* edges: each row v0 v1 dx dy; RL and RefD1 are indexed by the source vertex v0 */
   PetscInt *erow;
-  PetscCall(PetscMalloc1(nv, &erow));
+  PetscCall(PetscMalloc1(nv, erow_));
+  erow = *erow_;
   for (PetscInt k = 0; k < nv; k++) {
     const PetscReal *e  = blk[BLK_E].val + 4 * k;
     const PetscInt   ln = blk[BLK_E].line[k];
@@ -224,9 +227,23 @@ static PetscErrorCode HylcPatternParse_Private(HylcPattern p, const char fname[]
   }
   if (nwarnRL) PetscCall(PetscPrintf(comm, "Warning: %s: %" PetscInt_FMT " edges have rest lengths more than 2%% off their current lengths (worst %.3g%%)\n", fname, nwarnRL, (double)(100 * worstRL)));
   if (nwarnD1) PetscCall(PetscPrintf(comm, "Warning: %s: %" PetscInt_FMT " reference directors were not perpendicular to their edges (worst |d1.t| = %.3g) and were re-orthogonalized\n", fname, nwarnD1, (double)worstD1));
+  PetscCall(HylcPatternBuildLoops_Private(p));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Parses the text of a .pyp file (fname is used in messages only); frees its scratch on every path. */
+static PetscErrorCode HylcPatternParse_Private(HylcPattern p, const char fname[], char *text)
+{
+  PypBlockData   blk[NBLK];
+  PetscInt      *erow = NULL;
+  PetscErrorCode ierr;
+
+  PetscFunctionBegin;
+  PetscCall(PetscMemzero(blk, sizeof(blk)));
+  ierr = PypParse(p, fname, text, blk, &erow);
   PetscCall(PetscFree(erow));
   for (int b = 0; b < NBLK; b++) PetscCall(PetscFree2(blk[b].val, blk[b].line));
-  PetscCall(HylcPatternBuildLoops_Private(p));
+  PetscCall(ierr);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -240,9 +257,85 @@ PetscErrorCode HylcPatternLoadFromString(HylcPattern p, const char name[], const
 
   PetscFunctionBegin;
   PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
+  PetscErrorCode ierr;
+
   PetscCall(PetscStrallocpy(text, &copy));
-  PetscCall(HylcPatternParse_Private(p, name, copy));
+  ierr = HylcPatternParse_Private(p, name, copy);
   PetscCall(PetscFree(copy));
+  PetscCall(ierr);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Error handler that keeps the message of the first error in ctx (HYLC_PATTERN_MSG_LEN chars): checks
+   and writes made on rank 0 only are then reported on every rank by HylcPatternRaiseFromRank0_Private(). */
+PetscErrorCode HylcPatternKeepMessage_Private(MPI_Comm comm, int line, const char *fun, const char *file, PetscErrorCode n, PetscErrorType t, const char *mess, void *ctx)
+{
+  (void)comm, (void)line, (void)fun, (void)file;
+  if (t == PETSC_ERROR_INITIAL && mess) PetscStrncpy((char *)ctx, mess, HYLC_PATTERN_MSG_LEN);
+  return n;
+}
+
+/* Broadcasts rank 0's error code (0: none) and message and raises it on comm. Collective. */
+PetscErrorCode HylcPatternRaiseFromRank0_Private(MPI_Comm comm, PetscErrorCode code, char msg[])
+{
+  int c = (int)code;
+
+  PetscFunctionBegin;
+  PetscCallMPI(MPI_Bcast(&c, 1, MPI_INT, 0, comm));
+  if (!c) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCallMPI(MPI_Bcast(msg, HYLC_PATTERN_MSG_LEN, MPI_CHAR, 0, comm));
+  SETERRQ(comm, (PetscErrorCode)c, "%s", msg);
+}
+
+/* Rank 0 reads the whole file (an existing regular file, not a directory, below 1 GiB) into *text
+   (allocated, NUL-terminated) and *len; errors are raised on comm on every rank with rank 0's message. */
+static PetscErrorCode PypReadOnRank0(MPI_Comm comm, const char fname[], char **text, long *len)
+{
+  PetscMPIInt    rank;
+  char           msg[HYLC_PATTERN_MSG_LEN] = "";
+  PetscErrorCode code                      = 0; /* rank 0's error */
+  FILE          *fp                        = NULL;
+
+  PetscFunctionBegin;
+  *text = NULL;
+  *len  = 0;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0) {
+    PetscCall(PetscPushErrorHandler(HylcPatternKeepMessage_Private, msg));
+    code = HylcFileCheckInput(PETSC_COMM_SELF, fname, "-pattern_file");
+    PetscCall(PetscPopErrorHandler());
+    if (!code) {
+      fp = fopen(fname, "rb");
+      if (fp && fseek(fp, 0, SEEK_END) == 0) *len = ftell(fp);
+      if (fp) rewind(fp);
+      if (!fp || *len < 0) {
+        code = PETSC_ERR_FILE_OPEN;
+        PetscCall(PetscSNPrintf(msg, sizeof(msg), "Cannot open pattern file '%s': %s", fname, strerror(errno)));
+      } else if (*len >= (1L << 30)) {
+        code = PETSC_ERR_USER_INPUT;
+        PetscCall(PetscSNPrintf(msg, sizeof(msg), "Pattern file '%s' is too large (%ld bytes; at most 1 GiB)", fname, *len));
+      }
+    }
+    if (code && fp) fclose(fp);
+  }
+  PetscCall(HylcPatternRaiseFromRank0_Private(comm, code, msg));
+  PetscCallMPI(MPI_Bcast(len, 1, MPI_LONG, 0, comm));
+  if (PetscMalloc1(*len + 1, text)) {
+    if (fp) fclose(fp);
+    SETERRQ(comm, PETSC_ERR_MEM, "Cannot allocate %ld bytes for pattern file '%s'", *len, fname);
+  }
+  if (rank == 0) {
+    size_t got = fread(*text, 1, (size_t)*len, fp);
+    if ((long)got != *len) {
+      code = PETSC_ERR_FILE_READ;
+      PetscCall(PetscSNPrintf(msg, sizeof(msg), "Cannot read pattern file '%s'%s%s", fname, ferror(fp) ? ": " : " (it changed while being read)", ferror(fp) ? strerror(errno) : ""));
+    }
+    fclose(fp);
+  }
+  if (code) PetscCall(PetscFree(*text));
+  PetscCall(HylcPatternRaiseFromRank0_Private(comm, code, msg));
+  PetscCallMPI(MPI_Bcast(*text, (PetscMPIInt)*len, MPI_CHAR, 0, comm));
+  (*text)[*len] = 0;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -252,38 +345,23 @@ PetscErrorCode HylcPatternLoadFromString(HylcPattern p, const char name[], const
 @*/
 PetscErrorCode HylcPatternLoad(HylcPattern p, const char fname[])
 {
-  MPI_Comm    comm = PetscObjectComm((PetscObject)p);
-  PetscMPIInt rank;
-  long        len = 0;
-  char       *text;
-  FILE       *fp = NULL;
+  MPI_Comm       comm = PetscObjectComm((PetscObject)p);
+  long           len  = 0;
+  char          *text = NULL;
+  PetscErrorCode ierr;
 
   PetscFunctionBegin;
   PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
   PetscCall(PetscLogEventBegin(HYLC_PatternLoad, p, 0, 0, 0));
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  if (rank == 0) {
-    fp = fopen(fname, "rb");
-    if (fp && fseek(fp, 0, SEEK_END) == 0) len = ftell(fp);
-    if (fp) rewind(fp);
-    if (!fp || len < 0) len = -1;
+  PetscCall(PypReadOnRank0(comm, fname, &text, &len));
+  if (strlen(text) != (size_t)len) {
+    const size_t at = strlen(text);
+    PetscCall(PetscFree(text));
+    SETERRQ(comm, PETSC_ERR_USER_INPUT, "%s: contains a NUL byte at offset %zu: not a text .pyp file", fname, at);
   }
-  PetscCallMPI(MPI_Bcast(&len, 1, MPI_LONG, 0, comm));
-  PetscCheck(len >= 0, comm, PETSC_ERR_FILE_OPEN, "Cannot open pattern file '%s'", fname);
-  PetscCheck(len < (1L << 30), comm, PETSC_ERR_USER_INPUT, "Pattern file '%s' is too large (%ld bytes)", fname, len);
-  PetscCall(PetscMalloc1(len + 1, &text));
-  if (rank == 0) {
-    size_t got = fread(text, 1, (size_t)len, fp);
-    fclose(fp);
-    if ((long)got != len) len = -1;
-  }
-  PetscCallMPI(MPI_Bcast(&len, 1, MPI_LONG, 0, comm));
-  PetscCheck(len >= 0, comm, PETSC_ERR_FILE_READ, "Cannot read pattern file '%s'", fname);
-  PetscCallMPI(MPI_Bcast(text, (PetscMPIInt)len, MPI_CHAR, 0, comm));
-  text[len] = 0;
-  PetscCheck(strlen(text) == (size_t)len, comm, PETSC_ERR_USER_INPUT, "%s: contains a NUL byte at offset %zu: not a text .pyp file", fname, strlen(text));
-  PetscCall(HylcPatternParse_Private(p, fname, text));
+  ierr = HylcPatternParse_Private(p, fname, text);
   PetscCall(PetscFree(text));
+  PetscCall(ierr);
   if (fname != p->filename) PetscCall(PetscStrncpy(p->filename, fname, sizeof(p->filename)));
   PetscCall(PetscObjectChangeTypeName((PetscObject)p, HYLCPATTERNFILE));
   p->setupcalled = PETSC_TRUE;
@@ -298,9 +376,10 @@ PetscErrorCode HylcPatternLoad(HylcPattern p, const char fname[])
 @*/
 PetscErrorCode HylcPatternWrite(HylcPattern p, const char fname[])
 {
-  MPI_Comm    comm = PetscObjectComm((PetscObject)p);
-  PetscMPIInt rank;
-  int         ok = 1;
+  MPI_Comm       comm = PetscObjectComm((PetscObject)p);
+  PetscMPIInt    rank;
+  PetscErrorCode code                      = 0;
+  char           msg[HYLC_PATTERN_MSG_LEN] = "";
 
   PetscFunctionBegin;
   PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
@@ -308,9 +387,13 @@ PetscErrorCode HylcPatternWrite(HylcPattern p, const char fname[])
   PetscCall(PetscLogEventBegin(HYLC_PatternWrite, p, 0, 0, 0));
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (rank == 0) {
-    FILE          *fp = fopen(fname, "w");
+    FILE          *fp = NULL;
     const PetscInt n  = p->nv;
-    if (fp) {
+    char           tmp[PETSC_MAX_PATH_LEN + 16];
+    /* a unique temporary beside fname, renamed onto it once complete: a full disk leaves no partial file */
+    PetscCall(PetscPushErrorHandler(HylcPatternKeepMessage_Private, msg));
+    code = HylcFileOpenTemp(fname, tmp, sizeof(tmp), &fp);
+    if (!code) {
       fprintf(fp, "*pattern # px py radius num_vertedges\n%.17g %.17g %.17g %d\n\n", (double)p->px, (double)p->py, (double)p->radius, (int)n);
       fprintf(fp, "*Q # dofs: x y z t\n");
       for (PetscInt v = 0; v < n; v++) fprintf(fp, "%.17g %.17g %.17g %.17g\n", (double)p->X[3 * v], (double)p->X[3 * v + 1], (double)p->X[3 * v + 2], (double)p->theta[v]);
@@ -329,13 +412,11 @@ PetscErrorCode HylcPatternWrite(HylcPattern p, const char fname[])
       for (PetscInt v = 0; v < n; v++) fprintf(fp, "%.17g %.17g %.17g\n", (double)p->refD1[3 * v], (double)p->refD1[3 * v + 1], (double)p->refD1[3 * v + 2]);
       fprintf(fp, "\n*RefT # reference twists\n");
       for (PetscInt v = 0; v < n; v++) fprintf(fp, "%.17g\n", (double)p->refTwist[v]);
-      ok = !ferror(fp);
-      ok = (fclose(fp) == 0) && ok;
-    } else
-      ok = 0;
+      code = HylcFileCommitTemp(&fp, tmp, fname);
+    }
+    PetscCall(PetscPopErrorHandler());
   }
-  PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm));
-  PetscCheck(ok, comm, PETSC_ERR_FILE_WRITE, "Cannot write pattern file '%s'", fname);
+  PetscCall(HylcPatternRaiseFromRank0_Private(comm, code, msg));
   PetscCall(PetscLogEventEnd(HYLC_PatternWrite, p, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

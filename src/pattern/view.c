@@ -15,6 +15,13 @@ PetscErrorCode HylcPatternView(HylcPattern p, PetscViewer viewer)
   if (!viewer) PetscCall(PetscViewerASCIIGetStdout(PetscObjectComm((PetscObject)p), &viewer));
   PetscCall(PetscObjectTypeCompare((PetscObject)viewer, PETSCVIEWERASCII, &iascii));
   if (!iascii) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscReal L = 0, R = 0, rhoA = 0, dmin = PETSC_INFINITY;
+  PetscInt  pair[4] = {-1, -1, 0, 0};
+  if (p->hasdata) { /* everything that can fail before the first line of output */
+    PetscCall(HylcPatternGetYarnLength(p, &L, &R));
+    PetscCall(HylcPatternGetAreaDensity(p, p->viewDensity, &rhoA));
+    PetscCall(HylcPatternMinSegmentDistance(p, p->viewExcludeArc, &dmin, pair));
+  }
   PetscCall(PetscObjectPrintClassNamePrefixType((PetscObject)p, viewer));
   PetscCall(PetscViewerASCIIPushTab(viewer));
   if (p->filename[0]) PetscCall(PetscViewerASCIIPrintf(viewer, "file: %s\n", p->filename));
@@ -23,11 +30,6 @@ PetscErrorCode HylcPatternView(HylcPattern p, PetscViewer viewer)
     PetscCall(PetscViewerASCIIPopTab(viewer));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
-  PetscReal L, R, rhoA, dmin;
-  PetscInt  pair[4];
-  PetscCall(HylcPatternGetYarnLength(p, &L, &R));
-  PetscCall(HylcPatternGetAreaDensity(p, p->viewDensity, &rhoA));
-  PetscCall(HylcPatternMinSegmentDistance(p, p->viewExcludeArc, &dmin, pair));
   PetscCall(PetscViewerASCIIPrintf(viewer, "vertices: %" PetscInt_FMT "\n", p->nv));
   PetscCall(PetscViewerASCIIPrintf(viewer, "loops: %" PetscInt_FMT "\n", p->nloops));
   PetscCall(PetscViewerASCIIPrintf(viewer, "periods: %.9g %.9g\n", (double)p->px, (double)p->py));
@@ -60,21 +62,27 @@ PetscErrorCode HylcPatternViewFromOptions(HylcPattern p, PetscObject obj, const 
 @*/
 PetscErrorCode HylcPatternWriteVTK(HylcPattern p, const char fname[], PetscInt ntx, PetscInt nty)
 {
-  MPI_Comm    comm = PetscObjectComm((PetscObject)p);
-  PetscMPIInt rank;
-  int         ok = 1;
+  MPI_Comm       comm = PetscObjectComm((PetscObject)p);
+  PetscMPIInt    rank;
+  PetscErrorCode code                      = 0;
+  char           msg[HYLC_PATTERN_MSG_LEN] = "";
 
   PetscFunctionBegin;
   PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
   PetscCheck(p->hasdata, comm, PETSC_ERR_ARG_WRONGSTATE, "Pattern has no data to write");
   PetscCheck(ntx >= 1 && nty >= 1, comm, PETSC_ERR_USER_INPUT, "VTK tiling must be at least 1x1, got %" PetscInt_FMT "x%" PetscInt_FMT, ntx, nty);
+  PetscCheck((double)ntx * (double)nty * (double)(p->nv + p->nloops) <= 1e8, comm, PETSC_ERR_USER_INPUT, "VTK tiling %" PetscInt_FMT "x%" PetscInt_FMT " of a %" PetscInt_FMT "-vertex tile gives %.3g points, more than 1e8", ntx, nty, p->nv, (double)ntx * (double)nty * (double)(p->nv + p->nloops));
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (rank == 0) {
-    FILE          *fp     = fopen(fname, "w");
+    FILE          *fp     = NULL;
     const PetscInt ncopy  = ntx * nty;
     const PetscInt npts   = ncopy * (p->nv + p->nloops);
     const PetscInt nlines = ncopy * p->nloops;
-    if (fp) {
+    char           tmp[PETSC_MAX_PATH_LEN + 16];
+    /* a unique temporary renamed onto fname once complete: a full disk leaves no partial file */
+    PetscCall(PetscPushErrorHandler(HylcPatternKeepMessage_Private, msg));
+    code = HylcFileOpenTemp(fname, tmp, sizeof(tmp), &fp);
+    if (!code) {
       fprintf(fp, "# vtk DataFile Version 3.0\nhylc yarn pattern (%d x %d tiles)\nASCII\nDATASET POLYDATA\n", (int)ntx, (int)nty);
       fprintf(fp, "FIELD FieldData 1\nradius 1 1 double\n%.10g\n", (double)p->radius);
       fprintf(fp, "POINTS %d double\n", (int)npts);
@@ -109,12 +117,10 @@ PetscErrorCode HylcPatternWriteVTK(HylcPattern p, const char fname[], PetscInt n
           const PetscInt *lv = p->loopVerts + p->loopStart[l], n = p->loopStart[l + 1] - p->loopStart[l];
           for (PetscInt k = 0; k <= n; k++) fprintf(fp, "%.10g\n", (double)p->theta[lv[k % n]]);
         }
-      ok = !ferror(fp);
-      ok = (fclose(fp) == 0) && ok;
-    } else
-      ok = 0;
+      code = HylcFileCommitTemp(&fp, tmp, fname);
+    }
+    PetscCall(PetscPopErrorHandler());
   }
-  PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm));
-  PetscCheck(ok, comm, PETSC_ERR_FILE_WRITE, "Cannot write VTK file '%s'", fname);
+  PetscCall(HylcPatternRaiseFromRank0_Private(comm, code, msg));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

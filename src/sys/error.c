@@ -1,11 +1,142 @@
 /* Concise error reports for user-input errors in hylc programs. */
 #include <hylc/sys.h>
+#include <ctype.h>
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+static int HylcIsSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
+
+static int HylcEndsWith(const char s[], const char suffix[])
+{
+  size_t n = strlen(s), m = strlen(suffix);
+  return n >= m && !strcmp(s + n - m, suffix);
+}
+
+/* Where option -name was set: "file:line" of the first options file on the command line that sets it
+   (YAML "name:" or plain "-name"), or "" (the command line, or not found). */
+static void HylcOptionSource(const char name[], char where[], size_t len)
+{
+  int    argc = 0;
+  char **args = NULL;
+
+  where[0] = 0;
+  if (PetscGetArgs(&argc, &args) || !args) return;
+  for (int i = 1; i < argc; i++)
+    if (args[i][0] == '-' && !strcmp(args[i] + 1, name)) return; /* given on the command line (last wins) */
+  for (int i = 1; i + 1 < argc; i++) {
+    if (strcmp(args[i], "-options_file") && strcmp(args[i], "-options_file_yaml")) continue;
+    const char  *f    = args[i + 1];
+    const int    yaml = !strcmp(args[i], "-options_file_yaml") || HylcEndsWith(f, ".yaml") || HylcEndsWith(f, ".yml");
+    FILE        *fp   = fopen(f, "r");
+    char         line[4096];
+    int          lineno = 0, found = 0;
+    const size_t n = strlen(name);
+    if (!fp) continue;
+    while (!found && fgets(line, sizeof(line), fp)) {
+      const char *s = line;
+      lineno++;
+      while (*s == ' ' || *s == '\t') s++;
+      if (yaml && !strncmp(s, name, n) && s[n] == ':') found = 1;
+      if (!yaml && s[0] == '-' && !strncmp(s + 1, name, n) && (HylcIsSpace(s[n + 1]) || !s[n + 1])) found = 1;
+    }
+    fclose(fp);
+    if (found) {
+      snprintf(where, len, "%s:%d: ", f, lineno);
+      return;
+    }
+  }
+}
+
+/* The options (up to three, "-a, -b") whose value is x or has x as one comma-separated element. */
+static int HylcOptionsWithValue(const char x[], char names[], size_t len, char first[], size_t flen)
+{
+  char *all = NULL, *tok, *save = NULL, *prev = NULL;
+  int   count = 0;
+
+  names[0] = first[0] = 0;
+  if (!x || !x[0] || PetscOptionsGetAll(NULL, &all) || !all) return 0;
+  for (tok = strtok_r(all, " ", &save); tok; tok = strtok_r(NULL, " ", &save)) {
+    const int isname = tok[0] == '-' && (isalpha((unsigned char)tok[1]) || tok[1] == '_');
+    if (isname) {
+      prev = tok;
+      continue;
+    }
+    if (!prev) continue;
+    /* tok is the value of prev: compare as a whole and element by element */
+    int          hit = !strcmp(tok, x);
+    const char  *e   = tok;
+    const size_t m   = strlen(x);
+    while (!hit && e) {
+      if (!strncmp(e, x, m) && (e[m] == ',' || e[m] == 0)) hit = 1;
+      e = strchr(e, ',');
+      if (e) e++;
+    }
+    if (hit) {
+      if (!count) snprintf(first, flen, "%s", prev + 1);
+      if (count < 3) {
+        if (count) strncat(names, " or ", len - strlen(names) - 1);
+        strncat(names, prev, len - strlen(names) - 1);
+      }
+      count++;
+    }
+    prev = NULL;
+  }
+  PetscFree(all);
+  return count;
+}
+
+/* Rewrites PETSc's messages about an option's value so that they name the option (and the options file
+   and line that set it): "Input string abc has no integer value" becomes
+   "config.yaml:7: option -sampler_n1: 'abc' is not an integer". Returns 1 if out holds a new message. */
+static int HylcDescribeOptionError(PetscErrorCode n, const char mess[], char out[], size_t len)
+{
+  char        x[256] = "", names[256], first[256], where[PETSC_MAX_PATH_LEN + 32];
+  const char *what   = NULL;
+
+  if (!mess) return 0;
+  if (!strncmp(mess, "Input string ", 13)) {
+    const char *a = mess + 13, *b = strstr(a, " has no ");
+    if (!b) return 0;
+    snprintf(x, sizeof(x), "%.*s", (int)PetscMin((size_t)(b - a), sizeof(x) - 1), a);
+    b += 8;
+    if (!strncmp(b, "integer", 7))
+      what = "is not an integer";
+    else if (!strncmp(b, "numeric", 7))
+      what = "is not a number";
+    else
+      what = "is not a valid value";
+  } else if (!strncmp(mess, "Unknown logical value: ", 23)) {
+    snprintf(x, sizeof(x), "%s", mess + 23);
+    what = "is not a boolean (true, false, yes, no, 1, 0)";
+  } else if (n == PETSC_ERR_ARG_UNKNOWN_TYPE && !strncmp(mess, "Unable to find requested ", 25)) {
+    const char *a = strrchr(mess, ' ');
+    if (!a) return 0;
+    snprintf(x, sizeof(x), "%s", a + 1);
+  } else
+    return 0;
+  /* strip trailing blanks and punctuation PETSc may have left */
+  for (size_t k = strlen(x); k && (HylcIsSpace(x[k - 1]) || x[k - 1] == '.'); k--) x[k - 1] = 0;
+  if (!HylcOptionsWithValue(x, names, sizeof(names), first, sizeof(first))) return 0;
+  HylcOptionSource(first, where, sizeof(where));
+  if (what)
+    snprintf(out, len, "%soption %s: '%s' %s", where, names, x, what);
+  else
+    snprintf(out, len, "%s%s (option %s %s)", where, mess, names, x);
+  return 1;
+}
 
 static PetscErrorCode HylcErrorHandler(MPI_Comm comm, int line, const char *fun, const char *file, PetscErrorCode n, PetscErrorType p, const char *mess, void *ctx)
 {
   (void)ctx;
-  const PetscBool user = (PetscBool)(n == PETSC_ERR_USER_INPUT || n == PETSC_ERR_FILE_OPEN || n == PETSC_ERR_FILE_READ || n == PETSC_ERR_FILE_WRITE || n == PETSC_ERR_FILE_UNEXPECTED || n == PETSC_ERR_ARG_OUTOFRANGE || n == PETSC_ERR_ARG_WRONG || n == PETSC_ERR_ARG_INCOMP || n == PETSC_ERR_NOT_CONVERGED);
+  /* errors in what the user gave: files, options and their values (PETSC_ERR_USER: a bad choice for an
+     option, "Unknown option silk for -sampler_family"; PETSC_ERR_ARG_UNKNOWN_TYPE: -micro_snes_type bogus) */
+  const PetscBool user = (PetscBool)(n == PETSC_ERR_USER_INPUT || n == PETSC_ERR_USER || n == PETSC_ERR_ARG_UNKNOWN_TYPE || n == PETSC_ERR_FILE_OPEN || n == PETSC_ERR_FILE_READ || n == PETSC_ERR_FILE_WRITE || n == PETSC_ERR_FILE_UNEXPECTED || n == PETSC_ERR_ARG_OUTOFRANGE || n == PETSC_ERR_ARG_WRONG || n == PETSC_ERR_ARG_INCOMP || n == PETSC_ERR_NOT_CONVERGED);
+  char            better[PETSC_MAX_PATH_LEN + 512];
   if (!user) return PetscTraceBackErrorHandler(comm, line, fun, file, n, p, mess, NULL);
+  if (p == PETSC_ERROR_INITIAL && HylcDescribeOptionError(n, mess, better, sizeof(better))) mess = better;
   if (p == PETSC_ERROR_INITIAL) {
     PetscMPIInt rank = 0, size = 1, wsize = 1, wrank = 0;
     if (comm != MPI_COMM_NULL) {
@@ -75,4 +206,217 @@ PetscErrorCode HylcCheckOptionsUsed(MPI_Comm comm)
   PetscCall(PetscOptionsLeftRestore(NULL, &n, &names, &values));
   PetscCheck(!list[0], comm, PETSC_ERR_USER_INPUT, "Unknown option(s):%s (misspelt, or not for this program; -help lists the options)", list);
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* ---------------------------------------------------------------------------------------------- */
+/* Options files checked before PetscInitialize(): PETSc 3.18 reads them inside PetscInitialize(),
+   before any hylc error handler exists, and reports a malformed YAML file as "YAML parser loading
+   error" with neither file nor line. */
+
+/* whether this process is rank 0 of the job, from the launcher's environment (MPI is not initialized) */
+static int HylcLaunchRankZero(void)
+{
+  const char *vars[] = {"OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK", "MPI_LOCALRANKID"};
+  for (size_t i = 0; i < sizeof(vars) / sizeof(vars[0]); i++) {
+    const char *v = getenv(vars[i]);
+    if (v && v[0]) return atoi(v) == 0;
+  }
+  return 1;
+}
+
+/* Checks one line-oriented YAML options file against the subset PETSc's option reader understands and
+   hylc's configs use: comments, blank lines, "key: value" (a plain scalar, a quoted string closed on
+   its line, or a one-line [list]), "key:" opening a block of more indented lines, and "- item" entries.
+   Returns 0, or writes "file:line: problem" to msg and returns 1. */
+static int HylcCheckYAMLFile(const char path[], char msg[], size_t len)
+{
+  FILE       *fp;
+  char        line[4096];
+  int         lineno = 0, depth = 0, indent[64], opened = 0, bad = 0;
+  struct stat st;
+
+  if (stat(path, &st) != 0) return snprintf(msg, len, "Cannot open options file %s: %s", path, strerror(errno)), 1;
+  if (S_ISDIR(st.st_mode)) return snprintf(msg, len, "Cannot read options file %s: it is a directory", path), 1;
+  fp = fopen(path, "r");
+  if (!fp) return snprintf(msg, len, "Cannot open options file %s: %s", path, strerror(errno)), 1;
+  indent[0] = 0;
+  while (!bad && fgets(line, sizeof(line), fp)) {
+    char  *s   = line, *key, *colon, *v;
+    int    ind = 0;
+    size_t n   = strlen(line);
+    lineno++;
+    if (n == sizeof(line) - 1 && line[n - 1] != '\n') {
+      snprintf(msg, len, "%s:%d: line longer than %d characters", path, lineno, (int)sizeof(line) - 2);
+      bad = 1;
+      break;
+    }
+    if (memchr(line, 0, n) != NULL || (n && (unsigned char)line[0] == 0)) continue;
+    while (*s == ' ') s++, ind++;
+    if (*s == '\t') {
+      snprintf(msg, len, "%s:%d: a tab in the indentation (YAML allows spaces only)", path, lineno);
+      bad = 1;
+      break;
+    }
+    /* strip a comment: '#' at the start or after a blank, outside quotes */
+    {
+      char q = 0;
+      for (char *c = s; *c; c++) {
+        if (q) {
+          if (*c == q) q = 0;
+        } else if (*c == '"' || *c == '\'') {
+          if (c == s || HylcIsSpace(c[-1]) || c[-1] == ':' || c[-1] == '[' || c[-1] == ',') q = *c;
+        } else if (*c == '#' && (c == s || HylcIsSpace(c[-1]))) {
+          *c = 0;
+          break;
+        }
+      }
+    }
+    n = strlen(s);
+    while (n && HylcIsSpace(s[n - 1])) s[--n] = 0;
+    if (!n) continue;
+    if (!strcmp(s, "---") || !strcmp(s, "...")) continue;
+    if (s[0] == '%') continue; /* a directive */
+    /* indentation: deeper only right after "key:", shallower only back to an open level */
+    if (ind > indent[depth]) {
+      if (!opened) {
+        snprintf(msg, len, "%s:%d: unexpected indentation ('%s' is indented but the line before is not a 'key:' opening a block)", path, lineno, s);
+        bad = 1;
+        break;
+      }
+      if (depth + 1 >= (int)(sizeof(indent) / sizeof(indent[0]))) {
+        snprintf(msg, len, "%s:%d: nested too deeply", path, lineno);
+        bad = 1;
+        break;
+      }
+      indent[++depth] = ind;
+    } else {
+      if (opened) {
+        snprintf(msg, len, "%s:%d: the block opened by the 'key:' on the line before is empty (give the key a value)", path, lineno - 1);
+        bad = 1;
+        break;
+      }
+      while (depth > 0 && ind < indent[depth]) depth--;
+      if (ind != indent[depth]) {
+        snprintf(msg, len, "%s:%d: inconsistent indentation (%d spaces; the enclosing block uses %d)", path, lineno, ind, indent[depth]);
+        bad = 1;
+        break;
+      }
+    }
+    opened = 0;
+    if (s[0] == '-' && (s[1] == 0 || s[1] == ' ')) continue; /* a sequence entry */
+    key   = s;
+    colon = NULL;
+    for (char *c = s; *c; c++)
+      if (*c == ':' && (c[1] == 0 || c[1] == ' ')) {
+        colon = c;
+        break;
+      }
+    if (!colon) {
+      snprintf(msg, len, "%s:%d: expected 'key: value', found '%s'", path, lineno, s);
+      bad = 1;
+      break;
+    }
+    for (char *c = key; c < colon; c++)
+      if (!(isalnum((unsigned char)*c) || *c == '_' || *c == '-' || *c == '.')) {
+        snprintf(msg, len, "%s:%d: '%.*s' is not an option name (letters, digits, '_' only)", path, lineno, (int)(colon - key), key);
+        bad = 1;
+        break;
+      }
+    if (bad) break;
+    if (colon == key) {
+      snprintf(msg, len, "%s:%d: empty key before ':'", path, lineno);
+      bad = 1;
+      break;
+    }
+    v = colon + 1;
+    while (*v == ' ') v++;
+    if (!*v) {
+      opened = 1; /* "key:" opens a block of more indented lines */
+      continue;
+    }
+    if (*v == '"' || *v == '\'') {
+      char *e = strchr(v + 1, *v);
+      if (!e) {
+        snprintf(msg, len, "%s:%d: unclosed quote in the value of '%.*s'", path, lineno, (int)(colon - key), key);
+        bad = 1;
+      } else if (e[1]) {
+        snprintf(msg, len, "%s:%d: text '%s' after the quoted value of '%.*s'", path, lineno, e + 1, (int)(colon - key), key);
+        bad = 1;
+      }
+    } else if (*v == '[' || *v == '{') {
+      const char close = *v == '[' ? ']' : '}';
+      if (v[strlen(v) - 1] != close) {
+        snprintf(msg, len, "%s:%d: unclosed '%c' in the value of '%.*s' (write lists on one line)", path, lineno, *v, (int)(colon - key), key);
+        bad = 1;
+      }
+    } else if (*v == ']' || *v == '}' || *v == '&' || *v == '*' || *v == '!' || *v == '|' || *v == '>' || *v == '@' || *v == '`') {
+      snprintf(msg, len, "%s:%d: value '%s' of '%.*s' starts with '%c', which YAML reserves (quote the value)", path, lineno, v, (int)(colon - key), key, *v);
+      bad = 1;
+    } else {
+      for (char *c = v; *c; c++)
+        if (*c == ':' && (c[1] == 0 || c[1] == ' ')) {
+          snprintf(msg, len, "%s:%d: a second ':' in '%s' (one 'key: value' per line)", path, lineno, s);
+          bad = 1;
+          break;
+        }
+    }
+  }
+  if (!bad && opened) {
+    snprintf(msg, len, "%s:%d: the block opened by the last 'key:' is empty (give the key a value)", path, lineno);
+    bad = 1;
+  }
+  if (!bad && ferror(fp)) {
+    snprintf(msg, len, "Cannot read options file %s: %s", path, strerror(errno));
+    bad = 1;
+  }
+  fclose(fp);
+  return bad;
+}
+
+/* Checks every options file named on the command line (-options_file F, YAML when F ends in .yaml or
+   .yml; -options_file_yaml F): it must exist and not be a directory, and a YAML file must be well formed.
+   Returns 0 or writes a one-line message and returns 1. */
+static int HylcCheckOptionsFiles(int argc, char **argv, char msg[], size_t len)
+{
+  for (int i = 1; i + 1 < argc; i++) {
+    const int yaml = !strcmp(argv[i], "-options_file_yaml");
+    if (strcmp(argv[i], "-options_file") && !yaml) continue;
+    const char *f = argv[i + 1];
+    struct stat st;
+    if (yaml || HylcEndsWith(f, ".yaml") || HylcEndsWith(f, ".yml")) {
+      if (HylcCheckYAMLFile(f, msg, len)) return 1;
+    } else if (stat(f, &st) != 0) {
+      snprintf(msg, len, "Cannot open options file %s: %s", f, strerror(errno));
+      return 1;
+    } else if (S_ISDIR(st.st_mode)) {
+      snprintf(msg, len, "Cannot read options file %s: it is a directory", f);
+      return 1;
+    }
+  }
+  return 0;
+}
+
+/*@C
+  HylcInitialize - PetscInitialize() for hylc programs, then HylcPushErrorHandler(). Before PETSc
+  starts, every options file on the command line (-options_file F, -options_file_yaml F) is checked:
+  a missing file, a directory or a malformed YAML file (a .yaml/.yml file outside the subset of YAML that
+  option files use: "key: value" lines, comments, "key:" blocks) ends the program with one line
+  "hylc: error: file:line: problem" and exit status PETSC_ERR_USER_INPUT (PETSc's own reader would
+  report neither file nor line). Collective on MPI_COMM_WORLD (as PetscInitialize()).
+  Programs write:  PetscCall(HylcInitialize(&argc, &argv, NULL, help));
+@*/
+PetscErrorCode HylcInitialize(int *argc, char ***argv, const char file[], const char help[])
+{
+  char msg[PETSC_MAX_PATH_LEN + 512];
+
+  if (argc && argv && HylcCheckOptionsFiles(*argc, *argv, msg, sizeof(msg))) {
+    if (HylcLaunchRankZero()) {
+      fprintf(stderr, "hylc: error: %s\n", msg);
+      fflush(stderr);
+    }
+    exit(PETSC_ERR_USER_INPUT);
+  }
+  PetscCall(PetscInitialize(argc, argv, file, help));
+  PetscCall(HylcPushErrorHandler());
+  return PETSC_SUCCESS;
 }

@@ -1,14 +1,21 @@
 #!/usr/bin/env bash
 # Malformed .pyp files: each must be refused with a clear message (naming the file, line and problem)
-# and a non-zero exit, never a crash. With HYLC_VALGRIND=1 (see pattern_malformed_valgrind.sh) every
-# case runs under valgrind memcheck, which must report no memory error.
+# and a non-zero exit, never a crash. With HYLC_VALGRIND=1 (see pattern_malformed_valgrind.sh) a
+# subset of the cases, one per error path of the reader (valgrind makes each run take seconds), runs
+# under valgrind memcheck, which must report no memory error and no definite leak (Open MPI's own
+# allocations in MPI_Init/MPI_Finalize are suppressed by tests/valgrind-mpi.supp).
 set -u
+supp=$(cd "$(dirname "$0")/.." && pwd)/valgrind-mpi.supp
 cd "$HYLC_TMP"
 tool=$HYLC_BIN/hylc-pattern
 vg=()
+vgcases=""
 if [ "${HYLC_VALGRIND:-0}" = 1 ]; then
   command -v valgrind >/dev/null || { echo "valgrind not installed"; exit 77; }
-  vg=(valgrind -q --error-exitcode=99 --track-origins=no)
+  vg=(valgrind -q --error-exitcode=99 --track-origins=no --num-callers=40 --leak-check=full
+      --errors-for-leak-kinds=definite --suppressions="$supp")
+  export OMPI_MCA_btl=self
+  vgcases=" missing-block repeated-block row-count non-numeric index-range two-outgoing zero-length director-parallel radius-period binary directory missing-file "
 fi
 
 # a valid base pattern: one straight yarn of 4 vertices along x
@@ -81,6 +88,7 @@ pass=0 fail=0
 # message matching REGEX that names the file
 expect() {
   local name=$1 re=$2 file=$3
+  [ -n "$vgcases" ] && [[ $vgcases != *" $name "* ]] && return
   "${vg[@]}" "$tool" -pattern_file "$file" >out.txt 2>err.txt
   local st=$?
   if [ $st -eq 0 ]; then echo "FAIL $name: accepted"; fail=$((fail + 1)); return; fi
@@ -110,6 +118,7 @@ setval E 2 3 0.5 <good.pyp >frac.pyp;                 expect fractional-offset "
 setval Q 2 1 -0.0015 <good.pyp >zero.pyp;             expect zero-length "zero.pyp:12: edge 0 -> 1 has zero length" zero.pyp
 setval pattern 1 3 0 <good.pyp >radius.pyp;           expect radius "radius.pyp:2: yarn radius must be positive" radius.pyp
 setval pattern 1 1 -0.004 <good.pyp >period.pyp;      expect period "period.pyp:2: periods must be positive" period.pyp
+setval pattern 1 3 0.004 <good.pyp >rp.pyp;          expect radius-period "rp.pyp:2: yarn radius 0.004 is not smaller than the periods \(px = 0.004, py = 0.002\)" rp.pyp
 setval pattern 1 4 4.5 <good.pyp >count.pyp;          expect vertex-count "count.pyp:2: num_vertedges must be a positive integer" count.pyp
 setval RL 3 1 0 <good.pyp >rl.pyp;                    expect rest-length "rl.pyp:19: rest length of the edge leaving vertex 2 must be positive" rl.pyp
 setval RefD1 2 1 1 <good.pyp | setval RefD1 2 3 0 >par.pyp
@@ -122,7 +131,8 @@ sed 's/^\*RT /*Twist /' good.pyp >unknown.pyp;       expect unknown-block "unkno
 head -c 300 good.pyp >truncated.pyp;                  expect truncated "truncated.pyp: missing block|truncated.pyp:[0-9]+: (block|unknown block)" truncated.pyp
 printf 'a\0b' >binary.pyp;                            expect binary "binary.pyp: contains a NUL byte" binary.pyp
 : >empty.pyp;                                         expect empty "empty.pyp: missing block '\*pattern'" empty.pyp
-expect missing-file "Cannot open pattern file" does_not_exist.pyp
+mkdir -p dir.pyp;                                     expect directory "Cannot read dir.pyp \(-pattern_file\): it is a directory" dir.pyp
+expect missing-file "Cannot open does_not_exist.pyp \(-pattern_file\): No such file" does_not_exist.pyp
 
 echo "$pass cases refused correctly, $fail wrong"
 [ $fail -eq 0 ] && [ $pass -ge 10 ]

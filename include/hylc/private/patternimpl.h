@@ -43,3 +43,12 @@ PETSC_INTERN PetscErrorCode HylcPatternAllocate_Private(HylcPattern, PetscInt);
 /* Generators */
 PETSC_INTERN PetscErrorCode HylcPatternGenerateWoven_Private(HylcPattern, HylcPatternType, const HylcPatternGenParams *);
 PETSC_INTERN PetscErrorCode HylcPatternGenerateKnit_Private(HylcPattern, HylcPatternType, const HylcPatternGenParams *);
+
+/* Rank-0-only work (reading a file, writing one) reported on every rank: push
+   HylcPatternKeepMessage_Private with a char[HYLC_PATTERN_MSG_LEN] as context on rank 0, keep the error
+   code, pop, then HylcPatternRaiseFromRank0_Private(comm, code, msg) on every rank. */
+#define HYLC_PATTERN_MSG_LEN (PETSC_MAX_PATH_LEN + 512)
+PETSC_INTERN PetscErrorCode HylcPatternKeepMessage_Private(MPI_Comm, int, const char *, const char *, PetscErrorCode, PetscErrorType, const char *, void *);
+PETSC_INTERN PetscErrorCode HylcPatternRaiseFromRank0_Private(MPI_Comm, PetscErrorCode, char[]);
+/* Largest tile size (threads or stitches per direction) the generators accept. */
+#define HYLC_PATTERN_MAX_SIZE 1000

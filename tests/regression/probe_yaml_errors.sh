@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Probe 4.8 (options files and values): a malformed YAML options file used to give PETSc's "YAML parser
+# loading error" with neither file nor line, and a non-numeric value "Input string abc has no integer
+# value" naming neither option nor file. Now one line naming the file, line, option and value.
+set -u
+. "$(dirname "$0")/probe_common.inc"
+cd "$HYLC_TMP"
+P=$HYLC_BIN/hylc-pattern
+printf 'pattern_type: plain\npattern_radius 1e-3\n' >nocolon.yaml
+refused no-colon "^hylc: error: nocolon.yaml:2: expected 'key: value', found 'pattern_radius 1e-3'" $P -options_file nocolon.yaml
+printf 'pattern_type: plain\n  pattern_radius: 1e-3\n' >indent.yaml
+refused indentation "^hylc: error: indent.yaml:2: unexpected indentation" $P -options_file indent.yaml
+printf '# comment\npattern_type: "plain\n' >quote.yaml
+refused unclosed-quote "^hylc: error: quote.yaml:2: unclosed quote in the value of 'pattern_type'" $P -options_file quote.yaml
+printf 'pattern_type: plain\n\tpattern_radius: 1e-3\n' >tab.yaml
+refused tab "^hylc: error: tab.yaml:2: a tab in the indentation" $P -options_file tab.yaml
+printf 'pattern_size: [4, 4\n' >bracket.yaml
+refused unclosed-list "^hylc: error: bracket.yaml:1: unclosed '\[' in the value of 'pattern_size'" $P -options_file bracket.yaml
+refused missing-file "^hylc: error: Cannot open options file nonexistent.yaml: No such file" $P -options_file nonexistent.yaml
+mkdir -p adir.yaml
+refused directory "^hylc: error: Cannot read options file adir.yaml: it is a directory" $P -options_file adir.yaml
+# values that are not numbers: the option and the file line that set it are named
+printf 'pattern_type: plain\n# the sampling plan\nsampler_n1: abc\n' >n1.yaml
+refused yaml-integer "^hylc: error: n1.yaml:3: option -sampler_n1: 'abc' is not an integer$" "$HYLC_BIN/hylc-sample" -options_file n1.yaml -sampler_output s.h5
+refused cmdline-real "^hylc: error: option -strain: 'a' is not a number$" "$HYLC_BIN/hylc-solve" -pattern_type plain -strain a,0,0,0,0,0
+refused cmdline-int "^hylc: error: option -pattern_size: 'x' is not an integer$" $P -pattern_type plain -pattern_size x,4
+# a well-formed file with comments, blank lines and a block still loads
+printf -- '---\n# a comment\npattern_type: plain   # trailing comment\n\npattern_radius: 1.0e-3\n' >good.yaml
+$P -options_file good.yaml >good.txt 2>&1 || { cat good.txt; echo "FAIL: a well-formed YAML file is refused"; exit 1; }
+grep -q 'type: plain' good.txt || { cat good.txt; echo "FAIL: good.yaml not applied"; exit 1; }
+finish
