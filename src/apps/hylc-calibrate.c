@@ -29,7 +29,6 @@ static PetscErrorCode Run(void)
 
 int main(int argc, char **argv)
 {
-  PetscCall(PetscInitialize(&argc, &argv, NULL, help));
-  PetscCall(HylcPushErrorHandler());
+  PetscCall(HylcInitialize(&argc, &argv, NULL, help));
   return HylcMainFinalize(Run());
 }

@@ -12,7 +12,7 @@ if [ "${HYLC_VALGRIND:-0}" = 1 ]; then
   command -v valgrind >/dev/null || { echo "valgrind not installed"; exit 77; }
   # definite leaks are errors too; Open MPI's own allocations in MPI_Init/MPI_Finalize are suppressed
   vg=(valgrind -q --error-exitcode=99 --track-origins=no --leak-check=full --errors-for-leak-kinds=definite
-      --num-callers=50 --suppressions="$here/valgrind.supp")
+      --num-callers=50 --suppressions="$here/../valgrind.supp")
 fi
 die() { echo "FAIL: $*"; exit 1; }
 

@@ -3,9 +3,9 @@
 # and a non-zero exit, never a crash. With HYLC_VALGRIND=1 (see pattern_malformed_valgrind.sh) a
 # subset of the cases, one per error path of the reader (valgrind makes each run take seconds), runs
 # under valgrind memcheck, which must report no memory error and no definite leak (Open MPI's own
-# allocations in MPI_Init/MPI_Finalize are suppressed by tests/valgrind-mpi.supp).
+# allocations in MPI_Init/MPI_Finalize are suppressed by tests/valgrind.supp).
 set -u
-supp=$(cd "$(dirname "$0")/.." && pwd)/valgrind-mpi.supp
+supp=$(cd "$(dirname "$0")/.." && pwd)/valgrind.supp
 cd "$HYLC_TMP"
 tool=$HYLC_BIN/hylc-pattern
 vg=()

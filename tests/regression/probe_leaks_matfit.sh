@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Issue 12, probe 4.12 (material and fit): no definite leak on the error exits of hylc-fit and hylc-eval
 # (valgrind --leak-check=full --errors-for-leak-kinds=definite; Open MPI's own allocations in
-# MPI_Init/MPI_Finalize suppressed by valgrind.supp). The malformed material files are covered by
+# MPI_Init/MPI_Finalize suppressed by tests/valgrind.supp). The malformed material files are covered by
 # material_malformed_valgrind.sh; here: a raw data.txt with a bad number and with a bad row count, a
 # fit refused after reading its input, an output that is the input, and a material refused by the
 # loader's spacing rule.
@@ -10,7 +10,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 cd "$HYLC_TMP"
 die() { echo "FAIL: $*"; exit 1; }
 command -v valgrind >/dev/null || { echo "valgrind not installed"; exit 77; }
-vg=(valgrind -q --error-exitcode=99 --leak-check=full --errors-for-leak-kinds=definite --num-callers=50 --suppressions="$here/valgrind.supp")
+vg=(valgrind -q --error-exitcode=99 --leak-check=full --errors-for-leak-kinds=definite --num-callers=50 --suppressions="$here/../valgrind.supp")
 fit=$HYLC_BIN/hylc-fit eval=$HYLC_BIN/hylc-eval
 "$HYLC_BIN/../tests/test_fit_input" -test_write_samples s.h5 >write.txt 2>&1 || { cat write.txt; die "writing s.h5 failed"; }
 mkdir -p raw bad
