@@ -83,7 +83,7 @@ refuse "unknown term 'shear'" -sampler_terms sx,shear
 refuse "sampler_n1 and -sampler_n2 must be in 1..1024" -sampler_n1 0
 refuse "sampler_n1 and -sampler_n2 must be in 1..1024" -sampler_n2 -3
 refuse "needs two values min,max with min <= max" -sampler_range_sa 0.5,-0.5
-refuse "Cannot open pattern file 'missing.pyp'" -pattern_type file -pattern_file missing.pyp
+refuse "Cannot open missing.pyp \(-pattern_file\)" -pattern_type file -pattern_file missing.pyp
 refuse "Cannot write /nonexistent-dir/out.h5 \(-sampler_output\): directory /nonexistent-dir does not exist" -sampler_output /nonexistent-dir/out.h5
 refuse "Unknown option\\(s\\): -sampler_outptu" -sampler_outptu x.h5
 refuse "sampler_batch must be at least 1" -sampler_batch 0
