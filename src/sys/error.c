@@ -115,6 +115,10 @@ static int HylcDescribeOptionError(PetscErrorCode n, const char mess[], char out
     const char *a = strrchr(mess, ' ');
     if (!a) return 0;
     snprintf(x, sizeof(x), "%s", a + 1);
+  } else if (n == PETSC_ERR_MISSING_FACTOR && !strncmp(mess, "Could not locate solver type ", 29)) {
+    const char *a = mess + 29, *b = strchr(a, ' ');
+    if (!b) return 0;
+    snprintf(x, sizeof(x), "%.*s", (int)PetscMin((size_t)(b - a), sizeof(x) - 1), a);
   } else
     return 0;
   /* strip trailing blanks and punctuation PETSc may have left */
@@ -132,8 +136,9 @@ static PetscErrorCode HylcErrorHandler(MPI_Comm comm, int line, const char *fun,
 {
   (void)ctx;
   /* errors in what the user gave: files, options and their values (PETSC_ERR_USER: a bad choice for an
-     option, "Unknown option silk for -sampler_family"; PETSC_ERR_ARG_UNKNOWN_TYPE: -micro_snes_type bogus) */
-  const PetscBool user = (PetscBool)(n == PETSC_ERR_USER_INPUT || n == PETSC_ERR_USER || n == PETSC_ERR_ARG_UNKNOWN_TYPE || n == PETSC_ERR_FILE_OPEN || n == PETSC_ERR_FILE_READ || n == PETSC_ERR_FILE_WRITE || n == PETSC_ERR_FILE_UNEXPECTED || n == PETSC_ERR_ARG_OUTOFRANGE || n == PETSC_ERR_ARG_WRONG || n == PETSC_ERR_ARG_INCOMP || n == PETSC_ERR_NOT_CONVERGED);
+     option, "Unknown option silk for -sampler_family"; PETSC_ERR_ARG_UNKNOWN_TYPE: -micro_snes_type bogus;
+     PETSC_ERR_MISSING_FACTOR: a factorization package PETSc does not have, -..._mat_solver_type nosuchsolver) */
+  const PetscBool user = (PetscBool)(n == PETSC_ERR_USER_INPUT || n == PETSC_ERR_USER || n == PETSC_ERR_ARG_UNKNOWN_TYPE || n == PETSC_ERR_MISSING_FACTOR || n == PETSC_ERR_FILE_OPEN || n == PETSC_ERR_FILE_READ || n == PETSC_ERR_FILE_WRITE || n == PETSC_ERR_FILE_UNEXPECTED || n == PETSC_ERR_ARG_OUTOFRANGE || n == PETSC_ERR_ARG_WRONG || n == PETSC_ERR_ARG_INCOMP || n == PETSC_ERR_NOT_CONVERGED);
   char            better[PETSC_MAX_PATH_LEN + 512];
   if (!user) return PetscTraceBackErrorHandler(comm, line, fun, file, n, p, mess, NULL);
   if (p == PETSC_ERROR_INITIAL && HylcDescribeOptionError(n, mess, better, sizeof(better))) mess = better;

@@ -26,4 +26,6 @@ grep -q 'HYLC_INJECT_ERROR=x1' bad.txt || { cat bad.txt; die "malformed HYLC_INJ
 $tool $args -micro_factor_type petsc -micro_factor_pc_factor_mat_solver_type nosuchsolver >nos.txt 2>&1 && { cat nos.txt; die "unknown solver type: exit 0"; }
 grep -q 'nosuchsolver' nos.txt || { cat nos.txt; die "unknown solver type not named"; }
 grep -q '^status:' nos.txt && { cat nos.txt; die "unknown solver type printed a status"; }
+[ "$(wc -l <nos.txt)" -le 3 ] || { cat nos.txt; die "unknown solver type: more than three lines of output"; }
+grep -q "option -micro_factor_pc_factor_mat_solver_type nosuchsolver" nos.txt || { cat nos.txt; die "the option is not named"; }
 exit 0
