@@ -56,18 +56,17 @@ static const char *Num(char buf[32], PetscReal v)
 /* Checks that a value stored as a real is an integer in [lo, hi). */
 static PetscBool IsIntIn(PetscReal v, PetscReal lo, PetscReal hi) { return (PetscBool)(v == PetscFloorReal(v) && v >= lo && v < hi); }
 
-/* Parses the text of a .pyp file. fname is used in messages only. */
-static PetscErrorCode HylcPatternParse_Private(HylcPattern p, const char fname[], char *text)
+/* Parses the text of a .pyp file into blk[] (zeroed by the caller) and *erowOut; the caller frees both, on
+   error too. fname is used in messages only. */
+static PetscErrorCode PypParse(HylcPattern p, const char fname[], char *text, PypBlockData blk[NBLK], PetscInt **erowOut)
 {
-  MPI_Comm     comm = PetscObjectComm((PetscObject)p);
-  PypBlockData blk[NBLK];
-  PetscInt     cur = -1, lineno = 0, nv;
-  char        *s = text;
-  PetscReal    px, py, r;
-  char         b0[32], b1[32];
+  MPI_Comm  comm = PetscObjectComm((PetscObject)p);
+  PetscInt  cur = -1, lineno = 0, nv;
+  char     *s = text;
+  PetscReal px, py, r;
+  char      b0[32], b1[32];
 
   PetscFunctionBegin;
-  PetscCall(PetscMemzero(blk, sizeof(blk)));
   while (s && *s) {
     char *eol = strchr(s, '\n'), *c;
     if (eol) *eol = 0;
@@ -152,6 +151,7 @@ static PetscErrorCode HylcPatternParse_Private(HylcPattern p, const char fname[]
   /* edges: each row v0 v1 dx dy; RL and RefD1 are indexed by the source vertex v0 */
   PetscInt *erow;
   PetscCall(PetscMalloc1(nv, &erow));
+  *erowOut = erow;
   for (PetscInt k = 0; k < nv; k++) {
     const PetscReal *e  = blk[BLK_E].val + 4 * k;
     const PetscInt   ln = blk[BLK_E].line[k];
@@ -224,9 +224,23 @@ static PetscErrorCode HylcPatternParse_Private(HylcPattern p, const char fname[]
   }
   if (nwarnRL) PetscCall(PetscPrintf(comm, "Warning: %s: %" PetscInt_FMT " edges have rest lengths more than 2%% off their current lengths (worst %.3g%%)\n", fname, nwarnRL, (double)(100 * worstRL)));
   if (nwarnD1) PetscCall(PetscPrintf(comm, "Warning: %s: %" PetscInt_FMT " reference directors were not perpendicular to their edges (worst |d1.t| = %.3g) and were re-orthogonalized\n", fname, nwarnD1, (double)worstD1));
+  PetscCall(HylcPatternBuildLoops_Private(p));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Parses the text of a .pyp file; frees the parser's buffers whether it succeeds or not. */
+static PetscErrorCode HylcPatternParse_Private(HylcPattern p, const char fname[], char *text)
+{
+  PypBlockData   blk[NBLK];
+  PetscInt      *erow = NULL;
+  PetscErrorCode ierr;
+
+  PetscFunctionBegin;
+  PetscCall(PetscMemzero(blk, sizeof(blk)));
+  ierr = PypParse(p, fname, text, blk, &erow);
   PetscCall(PetscFree(erow));
   for (int b = 0; b < NBLK; b++) PetscCall(PetscFree2(blk[b].val, blk[b].line));
-  PetscCall(HylcPatternBuildLoops_Private(p));
+  PetscCall(ierr);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -236,13 +250,15 @@ static PetscErrorCode HylcPatternParse_Private(HylcPattern p, const char fname[]
 @*/
 PetscErrorCode HylcPatternLoadFromString(HylcPattern p, const char name[], const char text[])
 {
-  char *copy;
+  char          *copy;
+  PetscErrorCode ierr;
 
   PetscFunctionBegin;
   PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
   PetscCall(PetscStrallocpy(text, &copy));
-  PetscCall(HylcPatternParse_Private(p, name, copy));
+  ierr = HylcPatternParse_Private(p, name, copy);
   PetscCall(PetscFree(copy));
+  PetscCall(ierr);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -252,11 +268,12 @@ PetscErrorCode HylcPatternLoadFromString(HylcPattern p, const char name[], const
 @*/
 PetscErrorCode HylcPatternLoad(HylcPattern p, const char fname[])
 {
-  MPI_Comm    comm = PetscObjectComm((PetscObject)p);
-  PetscMPIInt rank;
-  long        len = 0;
-  char       *text;
-  FILE       *fp = NULL;
+  MPI_Comm       comm = PetscObjectComm((PetscObject)p);
+  PetscMPIInt    rank;
+  long           len = 0;
+  char          *text;
+  FILE          *fp = NULL;
+  PetscErrorCode ierr;
 
   PetscFunctionBegin;
   PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
@@ -278,12 +295,18 @@ PetscErrorCode HylcPatternLoad(HylcPattern p, const char fname[])
     if ((long)got != len) len = -1;
   }
   PetscCallMPI(MPI_Bcast(&len, 1, MPI_LONG, 0, comm));
+  if (len < 0) PetscCall(PetscFree(text));
   PetscCheck(len >= 0, comm, PETSC_ERR_FILE_READ, "Cannot read pattern file '%s'", fname);
   PetscCallMPI(MPI_Bcast(text, (PetscMPIInt)len, MPI_CHAR, 0, comm));
   text[len] = 0;
-  PetscCheck(strlen(text) == (size_t)len, comm, PETSC_ERR_USER_INPUT, "%s: contains a NUL byte at offset %zu: not a text .pyp file", fname, strlen(text));
-  PetscCall(HylcPatternParse_Private(p, fname, text));
+  if (strlen(text) != (size_t)len) {
+    const size_t at = strlen(text);
+    PetscCall(PetscFree(text));
+    SETERRQ(comm, PETSC_ERR_USER_INPUT, "%s: contains a NUL byte at offset %zu: not a text .pyp file", fname, at);
+  }
+  ierr = HylcPatternParse_Private(p, fname, text);
   PetscCall(PetscFree(text));
+  PetscCall(ierr);
   if (fname != p->filename) PetscCall(PetscStrncpy(p->filename, fname, sizeof(p->filename)));
   PetscCall(PetscObjectChangeTypeName((PetscObject)p, HYLCPATTERNFILE));
   p->setupcalled = PETSC_TRUE;
