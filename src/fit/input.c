@@ -224,17 +224,19 @@ static PetscErrorCode ReadRaw(HylcFit fit, const char data[], const char info[])
   free(line);
   /* block sizes: rows = 5 n1 + 9 n2^2 */
   PetscInt n1 = fit->rawN1, n2 = fit->rawN2;
-  if (!n1) {
+  /* given sizes larger than the rows allow are refused below, before 5 n1 + 9 n2^2 could overflow */
+  const PetscBool fits = (PetscBool)(n1 <= n && (n2 <= 0 || n2 <= n / (9 * n2)));
+  if (fits && !n1) {
     if (n2)
       n1 = (n - 9 * n2 * n2) / 5;
     else
       while (n1 < n && z[6 * n1 + 1] == 0 && z[6 * n1 + 2] == 0 && z[6 * n1 + 3] == 0 && z[6 * n1 + 4] == 0 && z[6 * n1 + 5] == 0) n1++;
   }
-  if (!n2 && n1 > 0 && n >= 5 * n1) {
+  if (fits && !n2 && n1 > 0 && n >= 5 * n1) {
     const PetscInt q = (n - 5 * n1) / 9;
     n2               = (PetscInt)(PetscSqrtReal((PetscReal)q) + 0.5);
   }
-  if (!(n1 > 0 && n2 >= 0 && 5 * n1 + 9 * n2 * n2 == n)) {
+  if (!(fits && n1 > 0 && n2 >= 0 && 5 * n1 + 9 * n2 * n2 == n)) {
     PetscCall(PetscFree3(z, psi, lines));
     SETERRQ(comm, PETSC_ERR_USER_INPUT, "%s: %" PetscInt_FMT " rows do not make 5 1D blocks of n1 = %" PetscInt_FMT " rows and 9 2D blocks of n2 x n2 = %" PetscInt_FMT " x %" PetscInt_FMT " rows (formats.md §5: 5 n1 + 9 n2^2 rows); give -fit_raw_n1 and -fit_raw_n2", data, n, n1, n2, n2);
   }
