@@ -225,7 +225,7 @@ static PetscErrorCode ReadRaw(HylcFit fit, const char data[], const char info[])
   /* block sizes: rows = 5 n1 + 9 n2^2 */
   PetscInt n1 = fit->rawN1, n2 = fit->rawN2;
   /* given sizes larger than the rows allow are refused below, before 5 n1 + 9 n2^2 could overflow */
-  const PetscBool fits = (PetscBool)(n1 <= n && (n2 <= 0 || n2 <= n / (9 * n2)));
+  const PetscBool fits = (PetscBool)(n1 <= n && (n2 <= 0 || n2 <= n / 9 / n2));
   if (fits && !n1) {
     if (n2)
       n1 = (n - 9 * n2 * n2) / 5;
