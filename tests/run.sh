@@ -22,7 +22,7 @@ if [ "$asan" = 1 ]; then
   # the stacks of leaks are unwound slowly (Open MPI and libc have no frame pointers) so that the
   # suppressions of tests/lsan.supp match them; PETSc's signal handler would hide ASan's report of a
   # fault and its coalesced PetscMalloc2..7 would hide overruns between the arrays of one call
-  export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:fast_unwind_on_malloc=0:malloc_context_size=20}
+  export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:fast_unwind_on_malloc=0:malloc_context_size=20:suppressions=$top/tests/asan.supp}
   export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$top/tests/lsan.supp:print_suppressions=0}
   export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}
   export PETSC_OPTIONS="${PETSC_OPTIONS:-} -no_signal_handler -malloc_coalesce 0"
