@@ -5,6 +5,9 @@
 #   make bench      build and run the benchmarks (prints measured figures)
 #   make deps       install missing system packages (apt; as root or with sudo)
 #   make format     clang-format the sources
+#   make fuzz       build the libFuzzer harnesses (clang) and run each FUZZ_SECONDS (default 60) s
+#   ASAN=1          build into build-asan with -fsanitize=address,undefined; `make test ASAN=1` runs the
+#                   tests there (docs/testing.md); `make test-asan` runs the unit tests only
 #   V=1             show full command lines
 
 .SUFFIXES:
@@ -12,10 +15,16 @@
 .DEFAULT_GOAL := all
 SHELL := /bin/bash
 
-BUILD   ?= build
+ifeq ($(ASAN),1)
+  BUILD ?= build-asan
+  SAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer
+else
+  BUILD ?= build
+  SAN_FLAGS :=
+endif
 OBJ     := $(BUILD)/obj
 PKGS    := petsc hdf5-openmpi
-NOCHECK_GOALS := deps test demo clean format help distclean bench-run
+NOCHECK_GOALS := deps test test-asan demo clean format help distclean bench-run fuzz fuzz-build fuzz-deps
 PETSC_OK := $(shell pkg-config --exists $(PKGS) 2>/dev/null && echo yes)
 
 ifeq ($(filter $(NOCHECK_GOALS),$(MAKECMDGOALS)),)
@@ -31,7 +40,8 @@ ifeq ($(PETSC_OK),yes)
 endif
 OPT      ?= -O2 -g
 CFLAGS   ?= $(OPT)
-CFLAGS   += -Wall -Wextra -std=c11 -D_DEFAULT_SOURCE -Iinclude $(PKG_CFLAGS) -MMD -MP
+CFLAGS   += -Wall -Wextra -std=c11 -D_DEFAULT_SOURCE -Iinclude $(PKG_CFLAGS) -MMD -MP $(SAN_FLAGS)
+LDFLAGS  += $(SAN_FLAGS)
 LDLIBS   := $(PKG_LIBS) -lmetis -lm
 
 ifeq ($(V),1)
@@ -50,15 +60,17 @@ TEST_SRC  := $(sort $(wildcard tests/unit/*.c))
 TESTS     := $(TEST_SRC:tests/unit/%.c=$(BUILD)/tests/%)
 BENCH_SRC := $(sort $(wildcard tests/bench/*.c))
 BENCHES   := $(BENCH_SRC:tests/bench/%.c=$(BUILD)/bench/%)
+REPLAY_SRC := $(sort $(wildcard tests/fuzz/fuzz_*.c))
+REPLAYS   := $(REPLAY_SRC:tests/fuzz/%.c=$(BUILD)/fuzz/%)
 EX_SRC    := $(sort $(wildcard examples/*.c))
 EXAMPLES  := $(EX_SRC:examples/%.c=$(BUILD)/ex/%)
-ALL_OBJ   := $(LIB_OBJ) $(APP_SRC:%.c=$(OBJ)/%.o) $(TEST_SRC:%.c=$(OBJ)/%.o) $(BENCH_SRC:%.c=$(OBJ)/%.o) $(EX_SRC:%.c=$(OBJ)/%.o)
+ALL_OBJ   := $(LIB_OBJ) $(APP_SRC:%.c=$(OBJ)/%.o) $(TEST_SRC:%.c=$(OBJ)/%.o) $(REPLAY_SRC:%.c=$(OBJ)/%.o) $(OBJ)/tests/fuzz/replay.o $(BENCH_SRC:%.c=$(OBJ)/%.o) $(EX_SRC:%.c=$(OBJ)/%.o)
 
-.PHONY: all lib apps tests benches examples test demo bench deps format clean help
+.PHONY: all lib apps tests benches examples test test-asan demo bench deps format clean help fuzz fuzz-build fuzz-deps
 all: lib apps tests benches examples
 lib: $(LIB)
 apps: $(APPS)
-tests: $(TESTS)
+tests: $(TESTS) $(REPLAYS)
 benches: $(BENCHES)
 examples: $(EXAMPLES)
 
@@ -93,6 +105,11 @@ $(eval $(call link_rule,bin,src/apps))
 $(eval $(call link_rule,tests,tests/unit))
 $(eval $(call link_rule,bench,tests/bench))
 $(eval $(call link_rule,ex,examples))
+# the fuzz harnesses with a plain main (tests/fuzz/replay.c) for tests/regression/fuzz_regressions.sh
+$(BUILD)/fuzz/%: $(OBJ)/tests/fuzz/%.o $(OBJ)/tests/fuzz/replay.o $(LIB)
+	@mkdir -p $(@D)
+	@$(if $(Q),echo "  LD      $@")
+	$(Q)$(CC) $(LDFLAGS) -o $@ $< $(OBJ)/tests/fuzz/replay.o $(LIB) $(LDLIBS)
 
 deps:
 	@bash config/install-deps.sh
@@ -100,7 +117,13 @@ deps:
 test:
 	@bash config/install-deps.sh
 	@$(MAKE) --no-print-directory all
-	@bash tests/run.sh
+	@BUILD=$(BUILD) HYLC_ASAN=$(if $(filter 1,$(ASAN)),1,0) bash tests/run.sh
+
+# the unit tests (tests/unit) under ASan + UBSan, in build-asan
+test-asan:
+	@bash config/install-deps.sh
+	@$(MAKE) --no-print-directory ASAN=1 BUILD=build-asan lib tests
+	@BUILD=build-asan HYLC_ASAN=1 bash tests/run.sh --unit
 
 demo:
 	@bash config/install-deps.sh
@@ -116,7 +139,42 @@ format:
 clean:
 	rm -rf $(BUILD)
 
+# ---- libFuzzer harnesses (tests/fuzz, docs/testing.md): clang, -fsanitize=fuzzer,address,undefined ----
+FUZZ_BUILD   ?= build-fuzz
+FUZZ_CC      ?= clang-14
+FUZZ_SECONDS ?= 60
+FUZZ_NAMES   := $(patsubst tests/fuzz/%.c,%,$(sort $(wildcard tests/fuzz/fuzz_*.c)))
+FUZZ_SAN     := -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer
+FUZZ_CFLAGS  := -g -O1 -Wall -Wextra -std=c11 -D_DEFAULT_SOURCE -Iinclude $(PKG_CFLAGS) -MMD -MP $(FUZZ_SAN) -fsanitize=fuzzer-no-link
+FUZZ_OBJ     := $(LIB_SRC:%.c=$(FUZZ_BUILD)/obj/%.o)
+FUZZ_BINS    := $(FUZZ_NAMES:%=$(FUZZ_BUILD)/%)
+
+$(FUZZ_BUILD)/obj/%.o: %.c
+	@mkdir -p $(@D)
+	@$(if $(Q),echo "  FUZZCC  $<")
+	$(Q)$(FUZZ_CC) $(FUZZ_CFLAGS) -c $< -o $@
+
+$(FUZZ_BUILD)/libhylc.a: $(FUZZ_OBJ)
+	@$(if $(Q),echo "  AR      $@")
+	$(Q)rm -f $@ && ar rcs $@ $^
+
+$(FUZZ_BUILD)/fuzz_%: $(FUZZ_BUILD)/obj/tests/fuzz/fuzz_%.o $(FUZZ_BUILD)/libhylc.a
+	@$(if $(Q),echo "  LD      $@")
+	$(Q)$(FUZZ_CC) $(FUZZ_SAN) -fsanitize=fuzzer -o $@ $< $(FUZZ_BUILD)/libhylc.a $(LDLIBS)
+
+fuzz-deps:
+	@HYLC_DEPS_EXTRA="clang-14 libclang-rt-14-dev" bash config/install-deps.sh
+
+fuzz-build: fuzz-deps
+	@$(MAKE) --no-print-directory $(FUZZ_BINS)
+
+# runs every harness FUZZ_SECONDS seconds on its corpus (build-fuzz/corpus/<harness>, seeded by
+# tests/fuzz/seeds.sh); a crash, leak or timeout stops it with the input in build-fuzz/findings
+fuzz: fuzz-build
+	@FUZZ_BUILD=$(FUZZ_BUILD) FUZZ_SECONDS=$(FUZZ_SECONDS) bash tests/fuzz/run.sh $(FUZZ_NAMES)
+
 help:
-	@sed -n '2,9p' Makefile
+	@sed -n '2,11p' Makefile
 
 -include $(ALL_OBJ:.o=.d)
+-include $(wildcard $(FUZZ_BUILD)/obj/*/*/*.d $(FUZZ_BUILD)/obj/tests/fuzz/*.d)

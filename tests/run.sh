@@ -3,14 +3,31 @@
 # (tests/regression/*.sh).  Prints one line per test and closes with "N passed, N failed[, N skipped]".
 # Exit status: 0 if nothing failed.
 #   tests/run.sh [FILTER]     run the tests whose name contains FILTER
+#   tests/run.sh --unit [FILTER]   only the C unit tests
+# BUILD=dir takes the programs from dir (default build). HYLC_ASAN=1 (make test ASAN=1, make test-asan:
+# BUILD=build-asan) sets the sanitizer options and suppressions of docs/testing.md and skips the
+# valgrind tests (a sanitized program does not run under valgrind).
 # A unit test declares its MPI size with a comment line "hylc-test: nprocs=N" (default 1).
 # A regression script gets $HYLC_BIN, $HYLC_REFDATA, $MPIEXEC and a private $HYLC_TMP; it exits 0 to
 # pass, 77 to skip (its last output line says why), anything else to fail.
 set -u
 cd "$(dirname "$0")/.."
 top=$PWD
+unit_only=0
+[ "${1:-}" = --unit ] && { unit_only=1; shift; }
 filter=${1:-}
 build=${BUILD:-build}
+asan=${HYLC_ASAN:-0}
+if [ "$asan" = 1 ]; then
+  # the stacks of leaks are unwound slowly (Open MPI and libc have no frame pointers) so that the
+  # suppressions of tests/lsan.supp match them; PETSc's signal handler would hide ASan's report of a
+  # fault and its coalesced PetscMalloc2..7 would hide overruns between the arrays of one call
+  export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:fast_unwind_on_malloc=0:malloc_context_size=20:suppressions=$top/tests/asan.supp}
+  export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$top/tests/lsan.supp:print_suppressions=0}
+  export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}
+  export PETSC_OPTIONS="${PETSC_OPTIONS:-} -no_signal_handler -malloc_coalesce 0"
+  export HYLC_ASAN=1
+fi
 
 # Open MPI as root, more ranks than cores, quick start-up; harmless when not root.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_pml=ob1
@@ -68,9 +85,15 @@ done
 
 for script in tests/regression/*.sh; do
   [ -e "$script" ] || continue
+  [ $unit_only = 1 ] && break
   name=$(basename "$script" .sh)
   [ -n "$filter" ] && [[ $name != *"$filter"* ]] && continue
   log=$tmproot/$name.log
+  if [ "$asan" = 1 ] && [[ $name == *valgrind* ]]; then
+    echo "skipped under ASan: a sanitized program does not run under valgrind (run it with make test)" >"$log"
+    report "regression/$name" 77 0 "$log"
+    continue
+  fi
   export HYLC_TMP=$tmproot/reg-$name
   mkdir -p "$HYLC_TMP"
   run_one "regression/$name" "$log" bash "$script"

@@ -129,6 +129,7 @@ static PetscErrorCode Fit1D(HylcFit fit, int c, PetscInt n, const PetscReal u[],
   PetscCheck(mn < mx, PetscObjectComm((PetscObject)fit), PETSC_ERR_USER_INPUT, "%s: term %s: all %" PetscInt_FMT " samples have the same %s = %g", fit->source, HylcPlanTermName(t), n, HylcPlanTermName(t), (double)(mn * fit->scale[HylcPlanStrainIndex(c)]));
   PetscCall(PetscLogEventBegin(HYLC_FitMLS, fit, 0, 0, 0));
   PetscCall(PetscMalloc3(nk, &tk, nk, &p, nk, &m));
+  s->t = tk, s->p = p, s->m = m; /* owned by the fit from here (freed by HylcFitResetResults_Private, also on error) */
   i0 = HylcFitKnots1D(mn, mx, fit->factor1, nk, tk);
   PetscCheck(i0 >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "1D knots");
   eps = fit->fdEps * MinSpacing(nk, tk); /* the width of the central difference: g at t -+ eps/2 */
@@ -204,6 +205,7 @@ static PetscErrorCode Fit2D(HylcFit fit, int t, PetscInt n, const PetscReal u[],
     j0 = HylcFitKnots2D(vmn, vmx, fv, kv[0], kv[1], bv, &nv);
     PetscCheck(i0 >= 0 && j0 >= 0, comm, PETSC_ERR_USER_INPUT, "%s: term %s: fewer than 2 knots on an axis (data %s in [%g, %g], %s in [%g, %g] normalised; the 2D knots span [factor min, 0] and [0, factor max])", fit->source, HylcPlanTermName(t), HylcPlanTermName(1 + ci), (double)umn, (double)umx, HylcPlanTermName(1 + cj), (double)vmn, (double)vmx);
     PetscCall(PetscMalloc6(nu, &tu, nv, &tv, nu * nv, &p, nu * nv, &mu, nu * nv, &mv, nu * nv, &muv));
+    s->tu = tu, s->tv = tv, s->p = p, s->mu = mu, s->mv = mv, s->muv = muv; /* owned by the fit from here */
     PetscCall(PetscArraycpy(tu, bu, nu));
     PetscCall(PetscArraycpy(tv, bv, nv));
   }
@@ -316,10 +318,9 @@ PetscErrorCode HylcFitCompute(HylcFit fit)
       const PetscInt need = t <= 5 ? fit->min1 : fit->min2;
       if (n < need) PetscCall(PetscFree3(u, v, l));
       PetscCheck(n >= need, comm, PETSC_ERR_USER_INPUT, "%s: term %s has only %" PetscInt_FMT " usable samples (at least %" PetscInt_FMT " needed: -fit_min_samples_%s, or leave the term out with -fit_terms)", fit->source, HylcPlanTermName(t), n, need, t <= 5 ? "1d" : "2d");
-      if (t <= 5)
-        PetscCall(Fit1D(fit, ci, n, u, l));
-      else
-        PetscCall(Fit2D(fit, t, n, u, v, l));
+      PetscErrorCode ierr = t <= 5 ? Fit1D(fit, ci, n, u, l) : Fit2D(fit, t, n, u, v, l);
+      if (ierr) PetscCall(PetscFree3(u, v, l));
+      PetscCall(ierr);
       fit->has[t] = PETSC_TRUE;
     }
     PetscCall(PetscFree3(u, v, l));
