@@ -685,7 +685,8 @@ static PetscErrorCode WriteMaterialGroup(hid_t file, const HylcYarnModel *m, Pet
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode WriteOptions(hid_t file, const char text[])
+/* a scalar UTF-8 string dataset with a description */
+static PetscErrorCode H5ScalarString(hid_t loc, const char name[], const char text[], const char description[])
 {
   hid_t t, s, d;
 
@@ -694,12 +695,19 @@ static PetscErrorCode WriteOptions(hid_t file, const char text[])
   HylcCallHDF5(H5Tset_size(t, H5T_VARIABLE));
   HylcCallHDF5(H5Tset_cset(t, H5T_CSET_UTF8));
   HylcCallHDF5Id(s, H5Screate(H5S_SCALAR));
-  HylcCallHDF5Id(d, H5Dcreate2(file, "options", t, s, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+  HylcCallHDF5Id(d, H5Dcreate2(loc, name, t, s, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
   HylcCallHDF5(H5Dwrite(d, t, H5S_ALL, H5S_ALL, H5P_DEFAULT, &text));
-  PetscCall(H5AttrString(d, "description", "the complete PETSc options of the run (PetscOptionsGetAll: command line, options files, environment), one string"));
+  PetscCall(H5AttrString(d, "description", description));
   HylcCallHDF5(H5Dclose(d));
   HylcCallHDF5(H5Sclose(s));
   HylcCallHDF5(H5Tclose(t));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode WriteOptions(hid_t file, const char text[])
+{
+  PetscFunctionBegin;
+  PetscCall(H5ScalarString(file, "options", text, "the complete PETSc options of the run (PetscOptionsGetAll: command line, options files, environment), one string"));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -805,19 +813,7 @@ static PetscErrorCode WriteProvenance(hid_t file, const char identity[])
   PetscCall(H5AttrString(g, "petsc_version", version[2]));
   PetscCall(H5StringList(g, "options", nopt, opts, "the options of the identity, \"-name value\", sorted by name (neutral options left out)"));
   PetscCall(H5StringList(g, "pattern", npat, pat, "the pattern of the identity, \"field value\" (scalars) or \"field sha256:<digest of the array's bytes>\" (arrays, native layout)"));
-  {
-    hid_t t, s, d;
-    HylcCallHDF5Id(t, H5Tcopy(H5T_C_S1));
-    HylcCallHDF5(H5Tset_size(t, H5T_VARIABLE));
-    HylcCallHDF5(H5Tset_cset(t, H5T_CSET_UTF8));
-    HylcCallHDF5Id(s, H5Screate(H5S_SCALAR));
-    HylcCallHDF5Id(d, H5Dcreate2(g, "identity", t, s, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
-    HylcCallHDF5(H5Dwrite(d, t, H5S_ALL, H5S_ALL, H5P_DEFAULT, &identity));
-    PetscCall(H5AttrString(d, "description", "the canonical identity text (its SHA-256 is /provenance@digest)"));
-    HylcCallHDF5(H5Dclose(d));
-    HylcCallHDF5(H5Sclose(s));
-    HylcCallHDF5(H5Tclose(t));
-  }
+  PetscCall(H5ScalarString(g, "identity", identity, "the canonical identity text (its SHA-256 is /provenance@digest)"));
   HylcCallHDF5(H5Gclose(g));
   PetscCall(PetscFree2(opts, pat));
   PetscCall(PetscFree(copy));
