@@ -49,7 +49,8 @@ PETSC_EXTERN PetscErrorCode HylcPushErrorHandler(void);
 PETSC_EXTERN PetscErrorCode HylcInitialize(int *, char ***, const char[], const char[]);
 
 /* Ends a program: on success PetscFinalize() and 0; on error (ierr != 0) the error code, after
-   PetscFinalize() on one rank or MPI_Abort() on several (other ranks may wait in a collective).
+   PetscFinalize() when every rank ended with an error within a few seconds (an error raised collectively:
+   rank 0's message is never cut off), else MPI_Abort() (other ranks may wait in a collective).
    Programs write: ierr = Run(); return HylcMainFinalize(ierr); */
 PETSC_EXTERN int HylcMainFinalize(PetscErrorCode);
 /* fsync the directory holding path, so that a rename into it is durable (errors ignored). Not collective. */

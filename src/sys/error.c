@@ -1,5 +1,6 @@
 /* Concise error reports for user-input errors in hylc programs. */
 #include <hylc/sys.h>
+#include <unistd.h>
 #include <ctype.h>
 #include <errno.h>
 #include <stdio.h>
@@ -172,15 +173,41 @@ PetscErrorCode HylcPushErrorHandler(void)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* A duplicate of PETSC_COMM_WORLD used only by HylcMainFinalize() to learn whether every rank ended with
+   an error (created by HylcInitialize(); no other message ever travels on it). */
+static MPI_Comm HylcErrorComm = MPI_COMM_NULL;
+
+/* Whether every rank of PETSC_COMM_WORLD has reached HylcMainFinalize() with an error within a few
+   seconds (a non-blocking barrier on HylcErrorComm, polled). */
+static int HylcAllRanksFailed(void)
+{
+  MPI_Request req;
+  int         done = 0;
+  double      t0;
+
+  if (HylcErrorComm == MPI_COMM_NULL || MPI_Ibarrier(HylcErrorComm, &req) != MPI_SUCCESS) return 0;
+  t0 = MPI_Wtime();
+  while (!done && MPI_Wtime() - t0 < 5.0) {
+    if (MPI_Test(&req, &done, MPI_STATUS_IGNORE) != MPI_SUCCESS) return 0;
+    if (!done) usleep(1000);
+  }
+  return done;
+}
+
 int HylcMainFinalize(PetscErrorCode ierr)
 {
   PetscMPIInt size = 1;
   if (ierr) {
+    /* An error raised on every rank (bad input, checked collectively) ends the job normally, so that the
+       message printed by rank 0 is never cut off by an abort from another rank. An error on some ranks
+       only (others may wait in a collective) aborts the job once the others have not followed. */
     MPI_Comm_size(PETSC_COMM_WORLD, &size);
-    if (size > 1) MPI_Abort(PETSC_COMM_WORLD, (int)ierr); /* other ranks may be waiting in a collective */
+    if (size > 1 && !HylcAllRanksFailed()) MPI_Abort(PETSC_COMM_WORLD, (int)ierr);
+    if (HylcErrorComm != MPI_COMM_NULL) MPI_Comm_free(&HylcErrorComm);
     PetscFinalize();
     return (int)ierr;
   }
+  if (HylcErrorComm != MPI_COMM_NULL) MPI_Comm_free(&HylcErrorComm);
   /* misspelt options must not pass silently */
   PetscInt n     = 0;
   char   **names = NULL, **values = NULL;
@@ -422,6 +449,7 @@ PetscErrorCode HylcInitialize(int *argc, char ***argv, const char file[], const 
     exit(PETSC_ERR_USER_INPUT);
   }
   PetscCall(PetscInitialize(argc, argv, file, help));
+  PetscCallMPI(MPI_Comm_dup(PETSC_COMM_WORLD, &HylcErrorComm));
   PetscCall(HylcPushErrorHandler());
   return PETSC_SUCCESS;
 }
