@@ -9,13 +9,12 @@ static const char help[] = "hylc-calibrate: yarn parameters (E, Es, G, kc) that 
 
 #include <hylc/calibrate.h>
 
-static PetscErrorCode Run(void)
+/* the work of hylc-calibrate on C (created and destroyed by Run, also on an error) */
+static PetscErrorCode Calibrate(HylcCalibrate C)
 {
-  HylcCalibrate C;
-  PetscBool     help_only;
+  PetscBool help_only;
 
   PetscFunctionBeginUser;
-  PetscCall(HylcCalibrateCreate(PETSC_COMM_WORLD, &C));
   PetscCall(HylcCalibrateSetFromOptions(C));
   PetscCall(PetscOptionsHasHelp(NULL, &help_only));
   if (!help_only) { /* -help: every option has been listed; do no work */
@@ -23,7 +22,19 @@ static PetscErrorCode Run(void)
     PetscCall(HylcCalibrateSolve(C));
     PetscCall(HylcCalibrateView(C, PETSC_VIEWER_STDOUT_WORLD));
   }
-  PetscCall(HylcCalibrateDestroy(&C));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode Run(void)
+{
+  HylcCalibrate  C;
+  PetscErrorCode ierr;
+
+  PetscFunctionBeginUser;
+  PetscCall(HylcCalibrateCreate(PETSC_COMM_WORLD, &C));
+  ierr = Calibrate(C);
+  PetscCall(HylcCalibrateDestroy(&C)); /* also on an error: nothing leaks */
+  PetscCall(ierr);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

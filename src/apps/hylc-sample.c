@@ -6,20 +6,31 @@ static const char help[] = "hylc-sample: the sampling job of Algorithm C4 -- mic
 
 #include <hylc/sampler.h>
 
-static PetscErrorCode Run(void)
+/* the work of hylc-sample on S (created and destroyed by Run, also on an error) */
+static PetscErrorCode Sample(HylcSampler S)
 {
-  HylcSampler S;
-  PetscBool   help_only;
+  PetscBool help_only;
 
   PetscFunctionBeginUser;
-  PetscCall(HylcSamplerCreate(PETSC_COMM_WORLD, &S));
   PetscCall(HylcSamplerSetFromOptions(S));
   PetscCall(PetscOptionsHasHelp(NULL, &help_only));
   if (!help_only) { /* -help: every option has been listed; do no work */
     PetscCall(HylcSamplerSetUp(S));
     PetscCall(HylcSamplerRun(S));
   }
-  PetscCall(HylcSamplerDestroy(&S));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode Run(void)
+{
+  HylcSampler    S;
+  PetscErrorCode ierr;
+
+  PetscFunctionBeginUser;
+  PetscCall(HylcSamplerCreate(PETSC_COMM_WORLD, &S));
+  ierr = Sample(S);
+  PetscCall(HylcSamplerDestroy(&S)); /* also on an error: nothing leaks */
+  PetscCall(ierr);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -6,11 +6,10 @@ static const char help[] = "hylc-solve: the equilibrium of a periodic yarn tile 
 #include <hylc/micro.h>
 #include <hylc/sys.h>
 
-static PetscErrorCode Run(void)
+/* the work of hylc-solve on pat and micro (created and destroyed by Run, also on an error) */
+static PetscErrorCode Solve(HylcPattern pat, HylcMicro micro)
 {
-  HylcPattern     pat;
   HylcYarnModel   model;
-  HylcMicro       micro;
   HylcMicroResult res;
   PetscReal       z[6] = {0, 0, 0, 0, 0, 0};
   PetscInt        nz = 6, tiles[2] = {3, 3}, nt = 2;
@@ -18,7 +17,6 @@ static PetscErrorCode Run(void)
   PetscBool       flg;
 
   PetscFunctionBeginUser;
-  PetscCall(HylcPatternCreate(PETSC_COMM_SELF, &pat));
   PetscCall(HylcPatternSetFromOptions(pat));
   PetscCall(HylcPatternSetUp(pat));
   PetscCall(HylcYarnModelDefault(&model));
@@ -48,7 +46,6 @@ static PetscErrorCode Run(void)
     PetscCall(PetscStrcmp(out, vtk, &same));
     PetscCheck(!out[0] || !same, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-solve_output and -solve_vtk name the same file %s", out);
   }
-  PetscCall(HylcMicroCreate(PETSC_COMM_SELF, &micro));
   PetscCall(HylcMicroSetPattern(micro, pat, &model));
   PetscCall(HylcMicroSetFromOptions(micro));
   {
@@ -66,15 +63,31 @@ static PetscErrorCode Run(void)
       PetscCall(PetscPrintf(PETSC_COMM_SELF, "wrote %s\n", vtk));
     }
     if (out[0]) {
-      HylcPattern eq;
+      HylcPattern    eq;
+      PetscErrorCode ierr;
       PetscCall(HylcPeriodicCreateStatePattern(P, &eq));
-      PetscCall(HylcPatternWrite(eq, out));
+      ierr = HylcPatternWrite(eq, out);
       PetscCall(HylcPatternDestroy(&eq));
+      PetscCall(ierr);
       PetscCall(PetscPrintf(PETSC_COMM_SELF, "wrote %s\n", out));
     }
   }
-  PetscCall(HylcMicroDestroy(&micro));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode Run(void)
+{
+  HylcPattern    pat   = NULL;
+  HylcMicro      micro = NULL;
+  PetscErrorCode ierr;
+
+  PetscFunctionBeginUser;
+  PetscCall(HylcPatternCreate(PETSC_COMM_SELF, &pat));
+  PetscCall(HylcMicroCreate(PETSC_COMM_SELF, &micro));
+  ierr = Solve(pat, micro);
+  PetscCall(HylcMicroDestroy(&micro)); /* also on an error: nothing leaks */
   PetscCall(HylcPatternDestroy(&pat));
+  PetscCall(ierr);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
