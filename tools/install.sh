@@ -17,10 +17,12 @@ install)
   trap 'rm -f "$tmpman"' EXIT
   # merge with a previous manifest (a re-install over an old one keeps its directories listed)
   [ -f "$man" ] && cat "$man" >>"$tmpman"
+  case $PREFIX in /*) ;; *) echo "hylc: PREFIX must be an absolute path, got '$PREFIX'" >&2; exit 2 ;; esac
   mkd() { # creates a directory and its missing parents, listing each one created
     local d=$1 missing=() p
     p=$d
-    while [ ! -d "$DESTDIR$p" ]; do missing=("$p" "${missing[@]}"); p=$(dirname "$p"); done
+    while [ "$p" != / ] && [ "$p" != . ] && [ ! -d "$DESTDIR$p" ]; do missing=("$p" "${missing[@]}"); p=$(dirname "$p"); done
+    [ -z "$DESTDIR" ] || mkdir -p "$DESTDIR" # DESTDIR itself is the packager's
     for p in "${missing[@]}"; do mkdir "$DESTDIR$p" && echo "d $p" >>"$tmpman"; done
   }
   put() { # mode src dstdir [name]
