@@ -1,16 +1,20 @@
 static const char help[] = "hylc-eval: the homogenized material model Psi(s) and its derivatives at one strain.\n\n"
                            "  hylc-eval -material stock1.json -strain 0.1,0,0,0,0,0\n"
                            "  hylc-eval -material model.h5 -strain 0,0.2,0,50,10,-20 -derivatives\n"
-                           "  hylc-eval -material stock1.json -eval_hdf5 stock1.h5     (convert; also -eval_json)\n\n"
+                           "  hylc-eval -material stock1.json -eval_hdf5 stock1.h5     (convert; also -eval_json)\n"
+                           "  hylc-eval -material stock1.json -eval_input strains.txt -eval_output out.txt [-derivatives]\n\n"
                            "The material is an ARCSim-HYLC JSON table or a hylc HDF5 file (docs/material.md), recognized by\n"
                            "content. The strain is s = (sx, sa, sy, II00, II01, II11): stretches and shear (1), the second\n"
                            "fundamental form (1/m). Prints 'psi: <J/m^2>' and, with -derivatives, 'grad:' (dPsi/ds, 6 numbers)\n"
                            "and 'hessian:' (6 lines of 6).\n\n";
 
 #include <hylc/material.h>
+#include <hdf5.h>
 #include <errno.h>
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
 
 /* parses "a,b,c,d,e,f" into s[6]; errors name the option and the value */
 static PetscErrorCode ParseStrain(const char text[], PetscReal s[6])
@@ -59,9 +63,179 @@ static PetscErrorCode PrintNumbers(const char label[], int n, const PetscReal v[
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Batch mode: the strains of -eval_input (text: 6 numbers per line, separated by blanks or commas, '#'
+   comments and blank lines skipped; HDF5: the dataset /strain or /samples/strain of shape (N, 6)) */
+static PetscErrorCode ReadStrains(const char path[], PetscInt *n, PetscReal **z)
+{
+  FILE      *fp;
+  char       head[8] = {0};
+  size_t     got;
+  PetscInt   cap = 1024, k = 0, line = 0;
+  char       buf[4096];
+  PetscReal *v;
+
+  PetscFunctionBegin;
+  fp = fopen(path, "rb");
+  PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot open -eval_input %s: %s", path, strerror(errno));
+  got = fread(head, 1, 8, fp);
+  if (got == 8 && !memcmp(head, "\211HDF\r\n\032\n", 8)) {
+    hid_t   f, d, sp;
+    hsize_t dims[2] = {0, 0};
+    int     r;
+    fclose(fp);
+    f = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
+    PetscCheck(f >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_READ, "-eval_input %s: cannot open as HDF5", path);
+    d = H5Lexists(f, "strain", H5P_DEFAULT) > 0 ? H5Dopen2(f, "strain", H5P_DEFAULT) : (H5Lexists(f, "samples", H5P_DEFAULT) > 0 && H5Lexists(f, "samples/strain", H5P_DEFAULT) > 0 ? H5Dopen2(f, "samples/strain", H5P_DEFAULT) : -1);
+    if (d < 0) H5Fclose(f);
+    PetscCheck(d >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-eval_input %s: no dataset /strain or /samples/strain", path);
+    sp = H5Dget_space(d);
+    r  = H5Sget_simple_extent_ndims(sp);
+    if (r == 2) H5Sget_simple_extent_dims(sp, dims, NULL);
+    if (r != 2 || dims[1] != 6) {
+      H5Sclose(sp);
+      H5Dclose(d);
+      H5Fclose(f);
+      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-eval_input %s: the strain dataset must have shape (N, 6)", path);
+    }
+    PetscCall(PetscMalloc1(6 * dims[0] + 6, &v));
+    r = (int)H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v);
+    H5Sclose(sp);
+    H5Dclose(d);
+    H5Fclose(f);
+    if (r < 0) PetscCall(PetscFree(v));
+    PetscCheck(r >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_READ, "-eval_input %s: cannot read the strain dataset", path);
+    for (hsize_t i = 0; i < 6 * dims[0]; i++)
+      if (!isfinite(v[i])) {
+        PetscCall(PetscFree(v));
+        SETERRQ(PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-eval_input %s: strain %llu, component %llu is not finite", path, (unsigned long long)(i / 6), (unsigned long long)(i % 6));
+      }
+    *n = (PetscInt)dims[0];
+    *z = v;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  rewind(fp);
+  PetscCall(PetscMalloc1(6 * cap, &v));
+  while (fgets(buf, sizeof(buf), fp)) {
+    char *c = buf, *end;
+    int   m = 0;
+    line++;
+    for (char *h = buf; *h; h++)
+      if (*h == '#' || *h == '\n' || *h == '\r') *h = 0;
+    for (char *h = buf; *h; h++)
+      if (*h == ',' || *h == '\t') *h = ' ';
+    while (*c == ' ') c++;
+    if (!*c) continue;
+    if (k == cap) {
+      cap *= 2;
+      PetscCall(PetscRealloc(sizeof(PetscReal) * 6 * cap, &v));
+    }
+    for (; *c; m++) {
+      double x;
+      errno = 0;
+      x     = strtod(c, &end);
+      if (end == c || !isfinite(x) || m >= 6) {
+        fclose(fp);
+        PetscCall(PetscFree(v));
+        SETERRQ(PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-eval_input %s:%" PetscInt_FMT ": expected 6 finite numbers sx sa sy II00 II01 II11", path, line);
+      }
+      v[6 * k + m] = x;
+      c            = end;
+      while (*c == ' ') c++;
+    }
+    if (m != 6) {
+      fclose(fp);
+      PetscCall(PetscFree(v));
+      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-eval_input %s:%" PetscInt_FMT ": expected 6 numbers sx sa sy II00 II01 II11, got %d", path, line, m);
+    }
+    k++;
+  }
+  fclose(fp);
+  *n = k;
+  *z = v;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* writes psi (n), and with deriv grad (n x 6), hess (n x 36): text (one line per strain: psi, 6 grad,
+   36 Hessian numbers in %.17g) or HDF5 (datasets strain, psi, grad, hessian), chosen by the suffix .h5 */
+static PetscErrorCode WriteResults(const char path[], PetscInt n, const PetscReal *z, const PetscReal *psi, const PetscReal *grad, const PetscReal *hess)
+{
+  size_t l = strlen(path);
+
+  PetscFunctionBegin;
+  if (l > 3 && (!strcmp(path + l - 3, ".h5") || (l > 5 && !strcmp(path + l - 5, ".hdf5")))) {
+    char    tmp[PETSC_MAX_PATH_LEN + 16];
+    hid_t   f;
+    herr_t  e     = 0;
+    hsize_t d1[1] = {(hsize_t)n}, d2[2] = {(hsize_t)n, 6}, d3[3] = {(hsize_t)n, 6, 6};
+    snprintf(tmp, sizeof(tmp), "%s.tmp%d", path, (int)getpid());
+    f = H5Fcreate(tmp, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+    PetscCheck(f >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot create -eval_output %s", path);
+    {
+      const struct {
+        const char      *name;
+        int              rank;
+        hsize_t         *dims;
+        const PetscReal *v;
+      } ds[4] = {
+          {"strain", 2, d2, z},
+          {"psi", 1, d1, psi},
+          {"grad", 2, d2, grad},
+          {"hessian", 3, d3, hess}};
+      for (int i = 0; i < 4 && e >= 0; i++) {
+        hid_t sp, d;
+        if (!ds[i].v) continue;
+        sp = H5Screate_simple(ds[i].rank, ds[i].dims, NULL);
+        d  = H5Dcreate2(f, ds[i].name, H5T_IEEE_F64LE, sp, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+        e  = (sp < 0 || d < 0) ? -1 : H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, ds[i].v);
+        if (d >= 0) H5Dclose(d);
+        if (sp >= 0) H5Sclose(sp);
+      }
+    }
+    if (H5Fclose(f) < 0) e = -1;
+    if (e >= 0 && rename(tmp, path)) e = -1;
+    if (e < 0) remove(tmp);
+    PetscCheck(e >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot write -eval_output %s", path);
+  } else {
+    FILE *fp;
+    char  tmp[PETSC_MAX_PATH_LEN + 32];
+    PetscCall(HylcFileOpenTemp(path, tmp, sizeof(tmp), &fp));
+    fprintf(fp, "# psi%s (hylc-eval -eval_input; %%.17g)\n", grad ? ", grad (6), hessian (36, row-major)" : "");
+    for (PetscInt k = 0; k < n; k++) {
+      fprintf(fp, "%.17g", (double)psi[k]);
+      for (int i = 0; grad && i < 6; i++) fprintf(fp, " %.17g", (double)grad[6 * k + i]);
+      for (int i = 0; hess && i < 36; i++) fprintf(fp, " %.17g", (double)hess[36 * k + i]);
+      fputc('\n', fp);
+    }
+    PetscCall(HylcFileCommitTemp(&fp, tmp, path));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode EvalBatch(HylcMaterial mat, const char in[], const char out[], PetscBool deriv)
+{
+  PetscInt    n = 0;
+  PetscReal  *z = NULL, *psi, *grad = NULL, *hess = NULL;
+  PetscMPIInt rank;
+
+  PetscFunctionBegin;
+  PetscCall(ReadStrains(in, &n, &z));
+  PetscCall(PetscMalloc1(n + 1, &psi));
+  if (deriv) PetscCall(PetscMalloc2(6 * n + 6, &grad, 36 * n + 36, &hess));
+  for (PetscInt k = 0; k < n; k++) PetscCall(HylcMaterialEvaluate(mat, z + 6 * k, &psi[k], grad ? grad + 6 * k : NULL, hess ? hess + 36 * k : NULL));
+  PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
+  if (rank == 0) PetscCall(WriteResults(out, n, z, psi, grad, hess));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "evaluated %" PetscInt_FMT " strains from %s, wrote %s\n", n, in, out));
+  PetscCall(PetscFree(z));
+  PetscCall(PetscFree(psi));
+  if (deriv) PetscCall(PetscFree2(grad, hess));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* the work of hylc-eval on the material mat (created and destroyed by Run, also on an error) */
 static PetscErrorCode Eval(HylcMaterial mat)
 {
+  char      bin[PETSC_MAX_PATH_LEN] = "", bout[PETSC_MAX_PATH_LEN] = "";
+  PetscBool hasIn, hasOut;
   char      file[PETSC_MAX_PATH_LEN] = "", strain[512] = "", json[PETSC_MAX_PATH_LEN] = "", h5[PETSC_MAX_PATH_LEN] = "", matFile[PETSC_MAX_PATH_LEN] = "";
   PetscBool hasFile, hasStrain, deriv = PETSC_FALSE, help, hasJson, hasH5, hasMatFile;
   PetscReal s[6], psi, grad[6], hess[36];
@@ -73,6 +247,8 @@ static PetscErrorCode Eval(HylcMaterial mat)
   PetscCall(PetscOptionsBool("-derivatives", "Also print the gradient and the Hessian of Psi with respect to the six strains", "HylcMaterialEvaluate", deriv, &deriv, NULL));
   PetscCall(PetscOptionsString("-eval_json", "Write the material as ARCSim-HYLC JSON to this file (never the input)", "HylcMaterialWriteJSON", json, json, sizeof(json), &hasJson));
   PetscCall(PetscOptionsString("-eval_hdf5", "Write the material as hylc HDF5 to this file (never the input)", "HylcMaterialWriteHDF5", h5, h5, sizeof(h5), &hasH5));
+  PetscCall(PetscOptionsString("-eval_input", "Batch mode: evaluate at the strains of this file (text: 6 numbers per line; HDF5: dataset /strain or /samples/strain, N x 6)", "HylcMaterialEvaluate", bin, bin, sizeof(bin), &hasIn));
+  PetscCall(PetscOptionsString("-eval_output", "Batch mode: write psi (and with -derivatives grad, hessian) per strain here: text, or HDF5 if it ends in .h5", "HylcMaterialEvaluate", bout, bout, sizeof(bout), &hasOut));
   PetscOptionsEnd();
   PetscCall(PetscOptionsGetString(NULL, NULL, "-material_file", matFile, sizeof(matFile), &hasMatFile));
   PetscCheck(!(hasFile && hasMatFile), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "Both -material and -material_file were given; use one");
@@ -87,8 +263,11 @@ static PetscErrorCode Eval(HylcMaterial mat)
   PetscCheck(!hasStrain || strain[0], PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-strain needs 6 comma-separated values sx,sa,sy,II00,II01,II11");
   PetscCheck(!hasJson || json[0], PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-eval_json needs a file name");
   PetscCheck(!hasH5 || h5[0], PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-eval_hdf5 needs a file name");
-  PetscCheck(hasStrain || hasJson || hasH5, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "Nothing to do: give -strain sx,sa,sy,II00,II01,II11 (or -eval_json / -eval_hdf5 to convert the material)");
-  PetscCheck(!deriv || hasStrain, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-derivatives needs -strain");
+  PetscCheck(hasIn == hasOut, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "Batch mode needs both -eval_input strains.txt|.h5 and -eval_output out.txt|.h5");
+  PetscCheck(!hasIn || (bin[0] && bout[0]), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-eval_input and -eval_output need file names");
+  PetscCheck(!(hasIn && hasStrain), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-strain and -eval_input exclude each other");
+  PetscCheck(hasStrain || hasJson || hasH5 || hasIn, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "Nothing to do: give -strain sx,sa,sy,II00,II01,II11 (or -eval_json / -eval_hdf5 to convert the material)");
+  PetscCheck(!deriv || hasStrain || hasIn, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-derivatives needs -strain");
   if (hasStrain) PetscCall(ParseStrain(strain, s));
   /* every path before any work: the input a readable regular file, each output writable, no output
      the input, and the two outputs not one file */
@@ -102,6 +281,12 @@ static PetscErrorCode Eval(HylcMaterial mat)
     if (hasH5) {
       PetscCall(HylcFileCheckOutput(PETSC_COMM_WORLD, h5, "-eval_hdf5"));
       PetscCall(HylcFileCheckDistinct(PETSC_COMM_WORLD, h5, "-eval_hdf5", in, inopt));
+    }
+    if (hasIn) {
+      PetscCall(HylcFileCheckInput(PETSC_COMM_WORLD, bin, "-eval_input"));
+      PetscCall(HylcFileCheckOutput(PETSC_COMM_WORLD, bout, "-eval_output"));
+      PetscCall(HylcFileCheckDistinct(PETSC_COMM_WORLD, bout, "-eval_output", in, inopt));
+      PetscCall(HylcFileCheckDistinct(PETSC_COMM_WORLD, bout, "-eval_output", bin, "-eval_input"));
     }
     if (hasJson && hasH5) {
       PetscBool same;
@@ -128,6 +313,7 @@ static PetscErrorCode Eval(HylcMaterial mat)
     }
     if (saturated) PetscCall(PetscFPrintf(PETSC_COMM_WORLD, stderr, "hylc: warning: at this strain a value exceeds the double range and is printed as +-%.17g (saturated)\n", (double)PETSC_MAX_REAL));
   }
+  if (hasIn) PetscCall(EvalBatch(mat, bin, bout, deriv));
   if (hasJson) {
     PetscCall(HylcMaterialWriteJSON(mat, json));
     PetscCall(PetscPrintf(PETSC_COMM_WORLD, "wrote %s\n", json));

@@ -50,33 +50,90 @@ PetscErrorCode HylcMaterialCreate(MPI_Comm comm, HylcMaterial *mat)
   PetscValidPointer(mat, 2);
   PetscCall(HylcInitializePackage());
   PetscCall(PetscHeaderCreate(m, HYLC_MATERIAL_CLASSID, "HylcMaterial", "Homogenized cloth material model", "Material", comm, HylcMaterialDestroy, HylcMaterialView));
+  PetscCheck(hylcmat_create(&m->hm) == HYLCMAT_OK, comm, PETSC_ERR_MEM, "Cannot allocate a material table");
   PetscCall(HylcMaterialReset(m));
   *mat = m;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode Free1D(HylcMaterial m, PetscInt k)
+void HylcMaterialSync_Private(HylcMaterial m)
 {
-  PetscFunctionBegin;
-  if (m->has1[k]) PetscCall(PetscFree3(m->t1[k].t, m->t1[k].p, m->t1[k].m));
-  PetscCall(PetscMemzero(&m->t1[k], sizeof(m->t1[k])));
-  m->has1[k] = PETSC_FALSE;
-  m->sw1[k]  = 0;
-  PetscFunctionReturn(PETSC_SUCCESS);
+  double s5[5];
+  int    i5[5];
+
+  m->density = hylcmat_density(m->hm);
+  m->C0      = hylcmat_constant(m->hm);
+  hylcmat_strain_scale(m->hm, s5);
+  hylcmat_strain_shift(m->hm, i5);
+  for (int k = 0; k < 5; k++) {
+    m->scale[k] = s5[k];
+    m->shift[k] = i5[k];
+  }
+  for (int k = 0; k < HYLC_MATERIAL_N1D; k++) {
+    hylcmat_term1d t;
+    HylcSpline1D  *v = &m->t1[k];
+    m->has1[k]       = hylcmat_term1d_get(m->hm, k, &t) ? PETSC_TRUE : PETSC_FALSE;
+    memset(v, 0, sizeof(*v));
+    if (!m->has1[k]) continue;
+    v->k   = t.k;
+    v->n   = t.n;
+    v->ext = (HylcSplineExt)t.ext;
+    v->t   = (PetscReal *)t.t;
+    v->p   = (PetscReal *)t.p;
+    v->m   = (PetscReal *)t.m;
+  }
+  for (int q = 0; q < HYLC_MATERIAL_N2D; q++) {
+    hylcmat_term2d t;
+    HylcSpline2D  *v = &m->t2[q];
+    m->has2[q]       = hylcmat_term2d_get(m->hm, (int)HylcMaterialPairs[q][0], (int)HylcMaterialPairs[q][1], &t) ? PETSC_TRUE : PETSC_FALSE;
+    memset(v, 0, sizeof(*v));
+    if (!m->has2[q]) continue;
+    v->k0  = t.k0;
+    v->k1  = t.k1;
+    v->nu  = t.nu;
+    v->nv  = t.nv;
+    v->ext = (HylcSplineExt)t.ext;
+    v->tu  = (PetscReal *)t.tu;
+    v->tv  = (PetscReal *)t.tv;
+    v->p   = (PetscReal *)t.p;
+    v->mu  = (PetscReal *)t.mu;
+    v->mv  = (PetscReal *)t.mv;
+    v->muv = (PetscReal *)t.muv;
+  }
 }
 
-static PetscErrorCode Free2D(HylcMaterial m, PetscInt q)
+PetscErrorCode HylcMaterialErrorCode_Private(int code)
 {
-  PetscFunctionBegin;
-  if (m->has2[q]) {
-    PetscCall(PetscFree2(m->t2[q].tu, m->t2[q].tv));
-    PetscCall(PetscFree4(m->t2[q].p, m->t2[q].mu, m->t2[q].mv, m->t2[q].muv));
+  switch (code) {
+  case HYLCMAT_OK:
+    return PETSC_SUCCESS;
+  case HYLCMAT_ERR_OPEN:
+    return PETSC_ERR_FILE_OPEN;
+  case HYLCMAT_ERR_READ:
+    return PETSC_ERR_FILE_READ;
+  case HYLCMAT_ERR_FORMAT:
+    return PETSC_ERR_USER_INPUT;
+  case HYLCMAT_ERR_CONTENT:
+    return PETSC_ERR_FILE_UNEXPECTED;
+  case HYLCMAT_ERR_MEMORY:
+    return PETSC_ERR_MEM;
+  case HYLCMAT_ERR_ARG:
+    return PETSC_ERR_ARG_OUTOFRANGE;
+  case HYLCMAT_ERR_NO_HDF5:
+    return PETSC_ERR_SUP;
+  case HYLCMAT_ERR_HDF5:
+    return PETSC_ERR_LIB;
+  default:
+    return PETSC_ERR_PLIB;
   }
-  PetscCall(PetscMemzero(&m->t2[q], sizeof(m->t2[q])));
-  m->has2[q] = PETSC_FALSE;
-  m->sw2[q]  = 0;
-  PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+/* CallHM(comm, call with err, sizeof(err)): a hylcmat error becomes a PETSc error with its message */
+#define CallHM(comm, ...)                                                                                           \
+  do {                                                                                                              \
+    const int hm_r_ = (__VA_ARGS__);                                                                                \
+    if (hm_r_) SETERRQ((comm), HylcMaterialErrorCode_Private(hm_r_), "%s", err[0] ? err : hylcmat_strerror(hm_r_)); \
+  } while (0)
 
 /*@C
   HylcMaterialReset - Removes every term; density 0, strain scale 1, strain shift 1,0,1,0,0, constant 0.
@@ -86,58 +143,9 @@ PetscErrorCode HylcMaterialReset(HylcMaterial m)
 {
   PetscFunctionBegin;
   PetscValidHeaderSpecific(m, HYLC_MATERIAL_CLASSID, 1);
-  for (PetscInt k = 0; k < HYLC_MATERIAL_N1D; k++) PetscCall(Free1D(m, k));
-  for (PetscInt q = 0; q < HYLC_MATERIAL_N2D; q++) PetscCall(Free2D(m, q));
-  m->density = 0;
-  m->C0      = 0;
-  for (PetscInt k = 0; k < 5; k++) {
-    m->scale[k] = 1;
-    m->shift[k] = (k == 0 || k == 2) ? 1 : 0;
-  }
+  hylcmat_reset(m->hm);
+  HylcMaterialSync_Private(m);
   m->source[0] = 0;
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-void HylcMaterialDocInit(HylcMaterialDoc *d, HylcMaterial m, const char name[])
-{
-  memset(d, 0, sizeof(*d));
-  d->name = name;
-  d->comm = PetscObjectComm((PetscObject)m);
-  for (int k = 0; k < 5; k++) d->shift[k] = (k == 0 || k == 2) ? 1 : 0;
-}
-
-void HylcMaterialDocFree(HylcMaterialDoc *d)
-{
-  for (PetscInt i = 0; i < d->n1; i++) {
-    PetscFree(d->s1[i].t);
-    PetscFree(d->s1[i].p);
-    PetscFree(d->s1[i].m);
-  }
-  for (PetscInt i = 0; i < d->n2; i++) {
-    PetscFree(d->s2[i].tu);
-    PetscFree(d->s2[i].tv);
-    PetscFree(d->s2[i].p);
-    PetscFree(d->s2[i].mu);
-    PetscFree(d->s2[i].mv);
-    PetscFree(d->s2[i].muv);
-  }
-  d->n1 = d->n2 = 0;
-}
-
-PetscErrorCode HylcMaterialDocInstall(HylcMaterial m, HylcMaterialDoc *d)
-{
-  PetscErrorCode ierr;
-
-  PetscFunctionBegin;
-  ierr = HylcMaterialReset(m);
-  if (!ierr) ierr = HylcMaterialSetDensity(m, d->density);
-  if (!ierr) ierr = HylcMaterialSetStrainScale(m, d->scale);
-  if (!ierr) ierr = HylcMaterialSetStrainShift(m, d->shift);
-  if (!ierr) ierr = HylcMaterialSetConstant(m, d->C0);
-  for (PetscInt i = 0; i < d->n1 && !ierr; i++) ierr = HylcMaterialSet1D(m, &d->s1[i]);
-  for (PetscInt i = 0; i < d->n2 && !ierr; i++) ierr = HylcMaterialSet2D(m, &d->s2[i]);
-  HylcMaterialDocFree(d);
-  PetscCall(ierr);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -153,7 +161,8 @@ PetscErrorCode HylcMaterialDestroy(HylcMaterial *m)
     *m = NULL;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
-  PetscCall(HylcMaterialReset(*m));
+  hylcmat_free((*m)->hm);
+  (*m)->hm = NULL;
   PetscCall(PetscHeaderDestroy(m));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -249,12 +258,12 @@ PetscErrorCode HylcMaterialViewFromOptions(HylcMaterial m, PetscObject obj, cons
 
 PetscErrorCode HylcMaterialSetDensity(HylcMaterial m, PetscReal rho)
 {
-  char b[32];
+  char err[512] = "";
 
   PetscFunctionBegin;
   PetscValidHeaderSpecific(m, HYLC_MATERIAL_CLASSID, 1);
-  PetscCheck(!PetscIsInfOrNanReal(rho) && rho >= 0, PetscObjectComm((PetscObject)m), PETSC_ERR_USER_INPUT, "Material density must be finite and >= 0, got %s", G(b, rho));
-  m->density = rho;
+  CallHM(PetscObjectComm((PetscObject)m), hylcmat_set_density(m->hm, (double)rho, err, sizeof(err)));
+  HylcMaterialSync_Private(m);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -268,12 +277,14 @@ PetscErrorCode HylcMaterialGetDensity(HylcMaterial m, PetscReal *rho)
 
 PetscErrorCode HylcMaterialSetStrainScale(HylcMaterial m, const PetscReal scale[5])
 {
-  char b[32];
+  char   err[512] = "";
+  double s5[5];
 
   PetscFunctionBegin;
   PetscValidHeaderSpecific(m, HYLC_MATERIAL_CLASSID, 1);
-  for (PetscInt k = 0; k < 5; k++) PetscCheck(isfinite(scale[k]) && scale[k] > 0 && isfinite(1 / scale[k]), PetscObjectComm((PetscObject)m), PETSC_ERR_USER_INPUT, "Strain scale %" PetscInt_FMT " (%s) must be finite and positive with a finite inverse, got %s", k, HylcMaterialTermNames1D[k], G(b, scale[k]));
-  for (PetscInt k = 0; k < 5; k++) m->scale[k] = scale[k];
+  for (int k = 0; k < 5; k++) s5[k] = (double)scale[k];
+  CallHM(PetscObjectComm((PetscObject)m), hylcmat_set_strain_scale(m->hm, s5, err, sizeof(err)));
+  HylcMaterialSync_Private(m);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -287,9 +298,13 @@ PetscErrorCode HylcMaterialGetStrainScale(HylcMaterial m, PetscReal scale[5])
 
 PetscErrorCode HylcMaterialSetStrainShift(HylcMaterial m, const PetscInt shift[5])
 {
+  int i5[5];
+
   PetscFunctionBegin;
   PetscValidHeaderSpecific(m, HYLC_MATERIAL_CLASSID, 1);
-  for (PetscInt k = 0; k < 5; k++) m->shift[k] = shift[k];
+  for (int k = 0; k < 5; k++) i5[k] = (int)shift[k];
+  hylcmat_set_strain_shift(m->hm, i5);
+  HylcMaterialSync_Private(m);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -303,12 +318,12 @@ PetscErrorCode HylcMaterialGetStrainShift(HylcMaterial m, PetscInt shift[5])
 
 PetscErrorCode HylcMaterialSetConstant(HylcMaterial m, PetscReal c)
 {
-  char b[32];
+  char err[512] = "";
 
   PetscFunctionBegin;
   PetscValidHeaderSpecific(m, HYLC_MATERIAL_CLASSID, 1);
-  PetscCheck(!PetscIsInfOrNanReal(c), PetscObjectComm((PetscObject)m), PETSC_ERR_USER_INPUT, "Material constant must be finite, got %s", G(b, c));
-  m->C0 = c;
+  CallHM(PetscObjectComm((PetscObject)m), hylcmat_set_constant(m->hm, (double)c, err, sizeof(err)));
+  HylcMaterialSync_Private(m);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -320,121 +335,56 @@ PetscErrorCode HylcMaterialGetConstant(HylcMaterial m, PetscReal *c)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* knots: at least 2, finite, strictly increasing; values finite. what names the term in messages. */
-static PetscErrorCode CheckKnots(MPI_Comm comm, const char what[], const char name[], PetscInt n, const PetscReal t[])
-{
-  char b0[32], b1[32];
-
-  PetscFunctionBegin;
-  PetscCheck(n >= 2, comm, PETSC_ERR_USER_INPUT, "%s: %s needs at least 2 knots, got %" PetscInt_FMT, what, name, n);
-  for (PetscInt i = 0; i < n; i++) {
-    PetscCheck(!PetscIsInfOrNanReal(t[i]), comm, PETSC_ERR_USER_INPUT, "%s: knot %s[%" PetscInt_FMT "] = %s is not finite", what, name, i, G(b0, t[i]));
-    PetscCheck(i == 0 || t[i] > t[i - 1], comm, PETSC_ERR_USER_INPUT, "%s: knots %s must be strictly increasing, but %s[%" PetscInt_FMT "] = %s <= %s[%" PetscInt_FMT "] = %s", what, name, name, i, G(b0, t[i]), name, i - 1, G(b1, t[i - 1]));
-    if (i > 0) { /* the evaluator divides by the spacing (docs/material.md, "Range") */
-      const PetscReal h = t[i] - t[i - 1];
-      PetscCheck(isfinite(h) && isfinite(1 / h), comm, PETSC_ERR_USER_INPUT, "%s: the spacing %s[%" PetscInt_FMT "] - %s[%" PetscInt_FMT "] = %s - %s %s (knot spacings h must have h and 1/h finite)", what, name, i, name, i - 1, G(b0, t[i]), G(b1, t[i - 1]),
-                 isfinite(h) ? "is too small" : "overflows");
-    }
-  }
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-static PetscErrorCode CheckFinite(MPI_Comm comm, const char what[], const char name[], PetscInt n, const PetscReal v[])
-{
-  char b[32];
-
-  PetscFunctionBegin;
-  for (PetscInt i = 0; i < n; i++) PetscCheck(!PetscIsInfOrNanReal(v[i]), comm, PETSC_ERR_USER_INPUT, "%s: %s[%" PetscInt_FMT "] = %s is not finite", what, name, i, G(b, v[i]));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-static PetscReal HalfMinSpacing(PetscInt n, const PetscReal t[])
-{
-  PetscReal h = PETSC_MAX_REAL;
-  for (PetscInt i = 1; i < n; i++) h = PetscMin(h, t[i] - t[i - 1]);
-  return 0.45 * h;
-}
-
 /*@C
   HylcMaterialSet1D - Sets (copies) the 1D term s->k, replacing one of the same k. Checks k in 0..4,
-  n >= 2, strictly increasing finite knots, finite values and slopes, a known extrapolation mode.
-  Not collective (call it with the same data on every rank).
+  n >= 2, strictly increasing finite knots, finite values and slopes, a known extrapolation mode
+  (hylcmat_set_term1d). Not collective (call it with the same data on every rank).
 @*/
 PetscErrorCode HylcMaterialSet1D(HylcMaterial m, const HylcSpline1D *s)
 {
-  MPI_Comm comm;
-  char     what[64];
-  PetscInt k;
+  char           err[512] = "";
+  hylcmat_term1d t;
 
   PetscFunctionBegin;
   PetscValidHeaderSpecific(m, HYLC_MATERIAL_CLASSID, 1);
   PetscValidPointer(s, 2);
-  comm = PetscObjectComm((PetscObject)m);
-  k    = s->k;
-  PetscCheck(k >= 0 && k < HYLC_MATERIAL_N1D, comm, PETSC_ERR_USER_INPUT, "1D term: k = %" PetscInt_FMT " is out of range (0 sx, 1 sa, 2 sy, 3 x-bending, 4 y-bending)", k);
-  snprintf(what, sizeof(what), "1D term %s (k = %d)", HylcMaterialTermNames1D[k], (int)k);
-  PetscCheck(s->ext >= HYLC_EXT_LINEAR && s->ext <= HYLC_EXT_ZERO, comm, PETSC_ERR_USER_INPUT, "%s: extrapolation mode %d is not 0 (linear), 1 (constant) or 2 (zero)", what, (int)s->ext);
-  PetscCall(CheckKnots(comm, what, "t", s->n, s->t));
-  PetscCall(CheckFinite(comm, what, "p", s->n, s->p));
-  PetscCall(CheckFinite(comm, what, "m", s->n, s->m));
-  PetscCall(Free1D(m, k));
-  m->t1[k].k   = k;
-  m->t1[k].n   = s->n;
-  m->t1[k].ext = s->ext;
-  PetscCall(PetscMalloc3(s->n, &m->t1[k].t, s->n, &m->t1[k].p, s->n, &m->t1[k].m));
-  PetscCall(PetscArraycpy(m->t1[k].t, s->t, s->n));
-  PetscCall(PetscArraycpy(m->t1[k].p, s->p, s->n));
-  PetscCall(PetscArraycpy(m->t1[k].m, s->m, s->n));
-  m->has1[k] = PETSC_TRUE;
-  m->sw1[k]  = HalfMinSpacing(s->n, s->t);
-  m->ih1[k]  = (s->n - 1) / (s->t[s->n - 1] - s->t[0]);
+  t.k   = (int)s->k;
+  t.n   = (int)s->n;
+  t.ext = (int)s->ext;
+  t.t   = s->t;
+  t.p   = s->p;
+  t.m   = s->m;
+  CallHM(PetscObjectComm((PetscObject)m), hylcmat_set_term1d(m->hm, &t, err, sizeof(err)));
+  HylcMaterialSync_Private(m);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /*@C
   HylcMaterialSet2D - Sets (copies) the 2D term (s->k0, s->k1), replacing one of the same pair. Checks
   that the pair is one of HylcMaterialPairs, nu, nv >= 2, strictly increasing finite knots, finite node
-  data. Not collective.
+  data (hylcmat_set_term2d). Not collective.
 @*/
 PetscErrorCode HylcMaterialSet2D(HylcMaterial m, const HylcSpline2D *s)
 {
-  MPI_Comm comm;
-  char     what[64];
-  PetscInt q, N;
+  char           err[512] = "";
+  hylcmat_term2d t;
 
   PetscFunctionBegin;
   PetscValidHeaderSpecific(m, HYLC_MATERIAL_CLASSID, 1);
   PetscValidPointer(s, 2);
-  comm = PetscObjectComm((PetscObject)m);
-  q    = HylcMaterialPairIndex(s->k0, s->k1);
-  PetscCheck(q >= 0, comm, PETSC_ERR_USER_INPUT, "2D term: (k0, k1) = (%" PetscInt_FMT ", %" PetscInt_FMT ") is not a term of the model; the pairs are (0,1) (0,2) (0,3) (0,4) (1,2) (1,3) (1,4) (2,3) (2,4)", s->k0, s->k1);
-  snprintf(what, sizeof(what), "2D term %s (k0 = %d, k1 = %d)", HylcMaterialTermNames2D[q], (int)s->k0, (int)s->k1);
-  PetscCheck(s->ext >= HYLC_EXT_LINEAR && s->ext <= HYLC_EXT_ZERO, comm, PETSC_ERR_USER_INPUT, "%s: extrapolation mode %d is not 0 (linear), 1 (constant) or 2 (zero)", what, (int)s->ext);
-  PetscCall(CheckKnots(comm, what, "tu", s->nu, s->tu));
-  PetscCall(CheckKnots(comm, what, "tv", s->nv, s->tv));
-  N = s->nu * s->nv;
-  PetscCall(CheckFinite(comm, what, "p", N, s->p));
-  PetscCall(CheckFinite(comm, what, "mu", N, s->mu));
-  PetscCall(CheckFinite(comm, what, "mv", N, s->mv));
-  PetscCall(CheckFinite(comm, what, "muv", N, s->muv));
-  PetscCall(Free2D(m, q));
-  m->t2[q].k0  = s->k0;
-  m->t2[q].k1  = s->k1;
-  m->t2[q].nu  = s->nu;
-  m->t2[q].nv  = s->nv;
-  m->t2[q].ext = s->ext;
-  PetscCall(PetscMalloc2(s->nu, &m->t2[q].tu, s->nv, &m->t2[q].tv));
-  PetscCall(PetscMalloc4(N, &m->t2[q].p, N, &m->t2[q].mu, N, &m->t2[q].mv, N, &m->t2[q].muv));
-  PetscCall(PetscArraycpy(m->t2[q].tu, s->tu, s->nu));
-  PetscCall(PetscArraycpy(m->t2[q].tv, s->tv, s->nv));
-  PetscCall(PetscArraycpy(m->t2[q].p, s->p, N));
-  PetscCall(PetscArraycpy(m->t2[q].mu, s->mu, N));
-  PetscCall(PetscArraycpy(m->t2[q].mv, s->mv, N));
-  PetscCall(PetscArraycpy(m->t2[q].muv, s->muv, N));
-  m->has2[q] = PETSC_TRUE;
-  m->sw2[q]  = HalfMinSpacing(s->nv, s->tv);
-  m->ihu[q]  = (s->nu - 1) / (s->tu[s->nu - 1] - s->tu[0]);
-  m->ihv[q]  = (s->nv - 1) / (s->tv[s->nv - 1] - s->tv[0]);
+  t.k0  = (int)s->k0;
+  t.k1  = (int)s->k1;
+  t.nu  = (int)s->nu;
+  t.nv  = (int)s->nv;
+  t.ext = (int)s->ext;
+  t.tu  = s->tu;
+  t.tv  = s->tv;
+  t.p   = s->p;
+  t.mu  = s->mu;
+  t.mv  = s->mv;
+  t.muv = s->muv;
+  CallHM(PetscObjectComm((PetscObject)m), hylcmat_set_term2d(m->hm, &t, err, sizeof(err)));
+  HylcMaterialSync_Private(m);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -462,8 +412,6 @@ PetscErrorCode HylcMaterialGet2D(HylcMaterial m, PetscInt k0, PetscInt k1, const
 /* Files                                                                                              */
 /* ------------------------------------------------------------------------------------------------ */
 
-static const char HDF5Signature[8] = {'\211', 'H', 'D', 'F', '\r', '\n', '\032', '\n'};
-
 /*@C
   HylcMaterialLoadFromString - Parses a JSON material (formats.md §2) from text; name is used in
   messages. Replaces the contents. Collective: every rank passes the same text.
@@ -472,7 +420,15 @@ PetscErrorCode HylcMaterialLoadFromString(HylcMaterial m, const char name[], con
 {
   PetscFunctionBegin;
   PetscValidHeaderSpecific(m, HYLC_MATERIAL_CLASSID, 1);
-  PetscCall(HylcMaterialParseJSON_Private(m, name, text, strlen(text)));
+  {
+    hylcmat *hm        = NULL;
+    char     err[1024] = "";
+    int      r         = hylcmat_load_memory(name, text, strlen(text), &hm, err, sizeof(err));
+    if (r) SETERRQ(PetscObjectComm((PetscObject)m), HylcMaterialErrorCode_Private(r), "%s", err[0] ? err : hylcmat_strerror(r));
+    hylcmat_free(m->hm);
+    m->hm = hm;
+    HylcMaterialSync_Private(m);
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -483,13 +439,12 @@ PetscErrorCode HylcMaterialLoadFromString(HylcMaterial m, const char name[], con
 @*/
 PetscErrorCode HylcMaterialLoad(HylcMaterial m, const char path[])
 {
-  MPI_Comm       comm;
-  PetscMPIInt    rank;
-  long           len = 0;
-  int            err = 0;
-  char          *bytes;
-  PetscErrorCode ierr;
-  FILE          *fp = NULL;
+  MPI_Comm    comm;
+  PetscMPIInt rank;
+  long        len = 0;
+  int         err = 0;
+  char       *bytes;
+  FILE       *fp = NULL;
 
   PetscFunctionBegin;
   PetscValidHeaderSpecific(m, HYLC_MATERIAL_CLASSID, 1);
@@ -530,16 +485,16 @@ PetscErrorCode HylcMaterialLoad(HylcMaterial m, const char path[])
   PetscCheck(len >= 0, comm, PETSC_ERR_FILE_READ, "Cannot read material file '%s'", path);
   if (len) PetscCallMPI(MPI_Bcast(bytes, (PetscMPIInt)len, MPI_CHAR, 0, comm));
   bytes[len] = 0;
-  if (len >= 8 && !memcmp(bytes, HDF5Signature, 8))
-    ierr = HylcMaterialParseHDF5_Private(m, path, bytes, (size_t)len);
-  else if (strlen(bytes) != (size_t)len) {
-    const size_t at = strlen(bytes);
+  {
+    hylcmat *hm        = NULL;
+    char     err[1024] = "";
+    int      r         = hylcmat_load_memory(path, bytes, (size_t)len, &hm, err, sizeof(err));
     PetscCall(PetscFree(bytes));
-    SETERRQ(comm, PETSC_ERR_USER_INPUT, "%s: contains a NUL byte at offset %zu: neither a JSON nor an HDF5 material file", path, at);
-  } else
-    ierr = HylcMaterialParseJSON_Private(m, path, bytes, (size_t)len);
-  PetscCall(PetscFree(bytes));
-  PetscCall(ierr);
+    if (r) SETERRQ(comm, HylcMaterialErrorCode_Private(r), "%s", err[0] ? err : hylcmat_strerror(r));
+    hylcmat_free(m->hm);
+    m->hm = hm;
+    HylcMaterialSync_Private(m);
+  }
   PetscCall(PetscStrncpy(m->source, path, sizeof(m->source)));
   PetscCall(PetscLogEventEnd(HYLC_MaterialLoad, m, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);

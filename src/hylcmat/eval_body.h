@@ -1,7 +1,7 @@
 /* The body of the material evaluator, included twice by evaluate.c: once in double (R = double, the
    fast path) and once in long double (R = long double, the fallback for strains or tables whose
    intermediate quantities leave the double range; see evaluate.c). Every name is F(name), so the two
-   copies do not clash. Knots and node data are read as double and widened to R. No PETSc calls. */
+   copies do not clash. Knots and node data are read as double and widened to R. Plain C99. */
 
 /* divided-difference quantities of one constituent h in table units (a = A / sigma, s = S / sigma):
    P, Q and their derivatives in a; W1 = dQ/dw, W2 = d2Q/dadw, W3 = d2Q/dw2 (w = s^2). */
@@ -18,8 +18,8 @@ typedef struct {
 /* the Hermite basis with nd derivatives: the spline is sum_c a[0][c] p[i+c] + b[0][c] m[i+c]; a[d],
    b[d] are the d-th derivatives */
 typedef struct {
-  PetscInt i;
-  R        a[3][2], b[3][2];
+  int i;
+  R   a[3][2], b[3][2];
 } F(Basis);
 
 static inline void F(ShiftPoly)(const R c[4], R e, R out[4])
@@ -34,16 +34,16 @@ static inline void F(ShiftPoly)(const R c[4], R e, R out[4])
    otherwise the i with t[i] <= x < t[i+1]. The first guess from the mean knot spacing
    (ih = (n-1) / (t[n-1] - t[0])) is used only when it is a valid index and lands on or next to the
    interval; otherwise a binary search on the knots (never a cast of a non-finite number). */
-static inline PetscInt F(Loc)(PetscInt n, const PetscReal t[], PetscReal ih, R x)
+static inline int F(Loc)(int n, const double t[], double ih, R x)
 {
-  PetscInt lo = 0, hi = n - 1;
-  R        g;
+  int lo = 0, hi = n - 1;
+  R   g;
 
   if (!(x >= t[0])) return -1;
   if (x >= t[n - 1]) return n - 1;
   g = (x - t[0]) * ih;
   if (g >= 0 && g < (R)(n - 1)) {
-    const PetscInt i = (PetscInt)g; /* 0 <= i <= n - 2 */
+    const int i = (int)g; /* 0 <= i <= n - 2 */
     if (x >= t[i]) {
       if (x < t[i + 1]) return i;
       if (i + 2 <= n - 1 && x < t[i + 2]) return i + 1;
@@ -51,7 +51,7 @@ static inline PetscInt F(Loc)(PetscInt n, const PetscReal t[], PetscReal ih, R x
       return i - 1;
   }
   while (hi - lo > 1) { /* t[lo] <= x < t[hi] */
-    const PetscInt mid = lo + (hi - lo) / 2;
+    const int mid = lo + (hi - lo) / 2;
     if (x >= t[mid])
       lo = mid;
     else
@@ -62,13 +62,13 @@ static inline PetscInt F(Loc)(PetscInt n, const PetscReal t[], PetscReal ih, R x
 
 /* the piece polynomial i (HylcHermite1DPiece) about its own origin k: sum c[r] (x - k)^r; node data
    P[j - j0], M[j - j0] */
-static void F(PieceOwn)(PetscInt n, const PetscReal t[], const R P[], const R M[], PetscInt j0, HylcSplineExt ext, PetscInt i, R *k, R c[4])
+static void F(PieceOwn)(int n, const double t[], const R P[], const R M[], int j0, int ext, int i, R *k, R c[4])
 {
   if (i < 0 || i >= n - 1) {
-    const PetscInt e = i < 0 ? 0 : n - 1;
-    *k               = t[e];
-    c[0]             = ext == HYLC_EXT_ZERO ? 0 : P[e - j0];
-    c[1]             = ext == HYLC_EXT_LINEAR ? M[e - j0] : 0;
+    const int e = i < 0 ? 0 : n - 1;
+    *k          = t[e];
+    c[0]        = ext == HYLCMAT_EXT_ZERO ? 0 : P[e - j0];
+    c[1]        = ext == HYLCMAT_EXT_LINEAR ? M[e - j0] : 0;
     c[2] = c[3] = 0;
   } else {
     const R h = (R)t[i + 1] - (R)t[i], m0 = M[i - j0], m1 = M[i + 1 - j0], d = (P[i + 1 - j0] - P[i - j0]) / h;
@@ -80,7 +80,7 @@ static void F(PieceOwn)(PetscInt n, const PetscReal t[], const R P[], const R M[
   }
 }
 
-static void F(Piece)(PetscInt n, const PetscReal t[], const R P[], const R M[], PetscInt j0, HylcSplineExt ext, PetscInt i, R x0, R c[4])
+static void F(Piece)(int n, const double t[], const R P[], const R M[], int j0, int ext, int i, R x0, R c[4])
 {
   R k, own[4];
 
@@ -91,7 +91,7 @@ static void F(Piece)(PetscInt n, const PetscReal t[], const R P[], const R M[], 
 }
 
 /* HylcHermite1DKnotJump on node data P, M */
-static void F(KnotJump)(PetscInt n, const PetscReal t[], const R P[], const R M[], PetscInt j0, HylcSplineExt ext, PetscInt k, R J[4])
+static void F(KnotJump)(int n, const double t[], const R P[], const R M[], int j0, int ext, int k, R J[4])
 {
   R L[4], Rt[4];
 
@@ -103,17 +103,17 @@ static void F(KnotJump)(PetscInt n, const PetscReal t[], const R P[], const R M[
   J[3] = Rt[3] - L[3];
   J[0] = J[1] = 0;
   if (k == 0) {
-    J[0] = ext == HYLC_EXT_ZERO ? P[-j0] : 0;
-    J[1] = ext == HYLC_EXT_LINEAR ? 0 : M[-j0];
+    J[0] = ext == HYLCMAT_EXT_ZERO ? P[-j0] : 0;
+    J[1] = ext == HYLCMAT_EXT_LINEAR ? 0 : M[-j0];
   }
   if (k == n - 1) {
-    J[0] = ext == HYLC_EXT_ZERO ? -P[n - 1 - j0] : 0;
-    J[1] = ext == HYLC_EXT_LINEAR ? 0 : -M[n - 1 - j0];
+    J[0] = ext == HYLCMAT_EXT_ZERO ? -P[n - 1 - j0] : 0;
+    J[1] = ext == HYLCMAT_EXT_LINEAR ? 0 : -M[n - 1 - j0];
   }
 }
 
 /* the piece form: x- = a - s in piece L, x+ = a + s in piece Rp (Rp - L <= 1); node data P, M from j0 */
-static void F(QuotPieces)(PetscInt n, const PetscReal t[], const R P[], const R M[], PetscInt j0, HylcSplineExt ext, PetscInt L, PetscInt Rp, R a, R s, F(Quot) * q)
+static void F(QuotPieces)(int n, const double t[], const R P[], const R M[], int j0, int ext, int L, int Rp, R a, R s, F(Quot) * q)
 {
   R       l[4], d[4] = {0, 0, 0, 0};
   const R w = s * s;
@@ -130,7 +130,7 @@ static void F(QuotPieces)(PetscInt n, const PetscReal t[], const R P[], const R 
   q->W2  = 0;
   q->W3  = 0;
   if (Rp == L) return;
-  for (PetscInt k = L + 1; k <= Rp; k++) { /* h_R - h_L: the sum of the jumps at the knots between */
+  for (int k = L + 1; k <= Rp; k++) { /* h_R - h_L: the sum of the jumps at the knots between */
     R J[4], e[4];
     F(KnotJump)
     (n, t, P, M, j0, ext, k, J);
@@ -171,16 +171,16 @@ static inline void F(QuotDirect)(R s, const R hp[3], const R hm[3], int nd, F(Qu
   q->W3  = (q->Qaa - 6 * q->W1) / (4 * w);
 }
 
-static inline void F(BasisAt)(PetscInt n, const PetscReal t[], PetscReal ih, HylcSplineExt ext, R x, int nd, F(Basis) * B)
+static inline void F(BasisAt)(int n, const double t[], double ih, int ext, R x, int nd, F(Basis) * B)
 {
-  const PetscInt loc = F(Loc)(n, t, ih, x);
+  const int loc = F(Loc)(n, t, ih, x);
 
   for (int d = 0; d <= nd; d++) B->a[d][0] = B->a[d][1] = B->b[d][0] = B->b[d][1] = 0;
   if (loc < 0 || loc >= n - 1) {
     const int c = loc < 0 ? 0 : 1;
     B->i        = loc < 0 ? 0 : n - 2;
-    if (ext != HYLC_EXT_ZERO) B->a[0][c] = 1;
-    if (ext == HYLC_EXT_LINEAR) {
+    if (ext != HYLCMAT_EXT_ZERO) B->a[0][c] = 1;
+    if (ext == HYLCMAT_EXT_LINEAR) {
       B->b[0][c] = x - t[loc < 0 ? 0 : n - 1];
       if (nd > 0) B->b[1][c] = 1;
     }
@@ -207,11 +207,11 @@ static inline void F(BasisAt)(PetscInt n, const PetscReal t[], PetscReal ih, Hyl
 }
 
 /* f[d] = d-th derivative of a 1D spline at x, d <= nd */
-static inline void F(Eval1D)(const HylcSpline1D *sp, PetscReal ih, R x, int nd, R f[3])
+static inline void F(Eval1D)(const hylcmat_term1d *sp, double ih, R x, int nd, R f[3])
 {
   F(Basis)
   B;
-  const PetscReal *p, *m;
+  const double *p, *m;
 
   F(BasisAt)
   (sp->n, sp->t, ih, sp->ext, x, nd, &B);
@@ -222,11 +222,11 @@ static inline void F(Eval1D)(const HylcSpline1D *sp, PetscReal ih, R x, int nd, 
 
 /* the node values P[o][.] and v-slopes M[o][.] of the restriction v -> d^o f(u, v)/du^o (o <= nd), for
    the v-nodes j0..j1 (at most 3), from the u-basis Bu */
-static inline void F(SliceV)(const HylcSpline2D *sp, const F(Basis) * Bu, PetscInt j0, PetscInt j1, int nd, R P[3][3], R M[3][3])
+static inline void F(SliceV)(const hylcmat_term2d *sp, const F(Basis) * Bu, int j0, int j1, int nd, R P[3][3], R M[3][3])
 {
-  for (PetscInt j = j0; j <= j1; j++) {
-    const PetscInt   k = j * sp->nu + Bu->i;
-    const PetscReal *p = sp->p + k, *mu = sp->mu + k, *mv = sp->mv + k, *muv = sp->muv + k;
+  for (int j = j0; j <= j1; j++) {
+    const int     k = j * sp->nu + Bu->i;
+    const double *p = sp->p + k, *mu = sp->mu + k, *mv = sp->mv + k, *muv = sp->muv + k;
     for (int o = 0; o <= nd; o++) {
       P[o][j - j0] = Bu->a[o][0] * p[0] + Bu->a[o][1] * p[1] + Bu->b[o][0] * mu[0] + Bu->b[o][1] * mu[1];
       M[o][j - j0] = Bu->a[o][0] * mv[0] + Bu->a[o][1] * mv[1] + Bu->b[o][0] * muv[0] + Bu->b[o][1] * muv[1];
@@ -235,7 +235,7 @@ static inline void F(SliceV)(const HylcSpline2D *sp, const F(Basis) * Bu, PetscI
 }
 
 /* f[o][r] = d^(o+r) f / du^o dv^r of a 2D spline at (u, v), o + r <= nd, from the u-basis Bu (nd derivatives) */
-static inline void F(Eval2D)(const HylcSpline2D *sp, const F(Basis) * Bu, PetscReal ihv, R v, int nd, R f[3][3])
+static inline void F(Eval2D)(const hylcmat_term2d *sp, const F(Basis) * Bu, double ihv, R v, int nd, R f[3][3])
 {
   F(Basis)
   Bv;
@@ -250,17 +250,17 @@ static inline void F(Eval2D)(const HylcSpline2D *sp, const F(Basis) * Bu, PetscR
 }
 
 /* a 1D bending constituent h(x) = f_k(x) at x = a +- s */
-static void F(Quot1D)(const HylcSpline1D *sp, PetscReal sw, PetscReal ih, R a, R s, int level, F(Quot) * q)
+static void F(Quot1D)(const hylcmat_term1d *sp, double sw, double ih, R a, R s, int level, F(Quot) * q)
 {
   R hp[3] = {0, 0, 0}, hm[3] = {0, 0, 0};
 
   if (s < sw) {
-    const R        ss = s < S_TINY ? 0 : s;
-    const PetscInt L = F(Loc)(sp->n, sp->t, ih, a - ss), Rp = F(Loc)(sp->n, sp->t, ih, a + ss);
+    const R   ss = s < S_TINY ? 0 : s;
+    const int L = F(Loc)(sp->n, sp->t, ih, a - ss), Rp = F(Loc)(sp->n, sp->t, ih, a + ss);
     if (Rp - L <= 1) {
-      const PetscInt j0 = PetscMax(L, 0), j1 = PetscMin(Rp + 1, sp->n - 1);
-      R              P[3], M[3];
-      for (PetscInt j = j0; j <= j1; j++) {
+      const int j0 = HM_MAX(L, 0), j1 = HM_MIN(Rp + 1, sp->n - 1);
+      R         P[3], M[3];
+      for (int j = j0; j <= j1; j++) {
         P[j - j0] = sp->p[j];
         M[j - j0] = sp->m[j];
       }
@@ -279,16 +279,16 @@ static void F(Quot1D)(const HylcSpline1D *sp, PetscReal sw, PetscReal ih, R a, R
 
 /* a 2D bending constituent h(x) = f_ik(u, x) at x = a +- s, and (level >= 1) its u-derivatives: q[0] for
    h, q[1] for dh/du (level - 1 a-derivatives), q[2] for d2h/du2 (level 2, none); Bu: the u-basis */
-static void F(Quot2D)(const HylcSpline2D *sp, PetscReal sw, PetscReal ihv, const F(Basis) * Bu, R a, R s, int level, F(Quot) q[3])
+static void F(Quot2D)(const hylcmat_term2d *sp, double sw, double ihv, const F(Basis) * Bu, R a, R s, int level, F(Quot) q[3])
 {
   R fp[3][3], fm[3][3];
 
   if (s < sw) {
-    const R        ss = s < S_TINY ? 0 : s;
-    const PetscInt L = F(Loc)(sp->nv, sp->tv, ihv, a - ss), Rp = F(Loc)(sp->nv, sp->tv, ihv, a + ss);
+    const R   ss = s < S_TINY ? 0 : s;
+    const int L = F(Loc)(sp->nv, sp->tv, ihv, a - ss), Rp = F(Loc)(sp->nv, sp->tv, ihv, a + ss);
     if (Rp - L <= 1) {
-      const PetscInt j0 = PetscMax(L, 0), j1 = PetscMin(Rp + 1, sp->nv - 1);
-      R              P[3][3], M[3][3];
+      const int j0 = HM_MAX(L, 0), j1 = HM_MIN(Rp + 1, sp->nv - 1);
+      R         P[3][3], M[3][3];
       F(SliceV)
       (sp, Bu, j0, j1, level, P, M);
       for (int o = 0; o <= level; o++) F(QuotPieces)
@@ -345,7 +345,7 @@ static inline R F(Hypot)(R B, R C)
 }
 
 /* Psi, and (level >= 1) its gradient g, (level 2) its Hessian hess (6x6, row-major) at s, in R */
-static void F(Evaluate)(HylcMaterial m, const PetscReal s[6], int level, R *psi, R grad[6], R hess[36])
+static void F(Evaluate)(const hylcmat *m, const double s[6], int level, R *psi, R grad[6], R hess[36])
 {
   const R is[5] = {1 / (R)m->scale[0], 1 / (R)m->scale[1], 1 / (R)m->scale[2], 1 / (R)m->scale[3], 1 / (R)m->scale[4]};
   const R X[3]  = {s[0] * is[0], s[1] * is[1], s[2] * is[2]};
@@ -360,7 +360,7 @@ static void F(Evaluate)(HylcMaterial m, const PetscReal s[6], int level, R *psi,
   memset(Tu, 0, sizeof(Tu));
   memset(Tuu, 0, sizeof(Tuu));
   /* in-plane: 1D terms and the pairs (0,1) (0,2) (1,2) */
-  for (PetscInt k = 0; k < 3; k++) {
+  for (int k = 0; k < 3; k++) {
     R f[3];
     if (!m->has1[k]) continue;
     F(Eval1D)
@@ -369,9 +369,9 @@ static void F(Evaluate)(HylcMaterial m, const PetscReal s[6], int level, R *psi,
     if (level) g[k] += f[1] * is[k];
     if (level > 1) H[k][k] += f[2] * is[k] * is[k];
   }
-  for (PetscInt q = 0; q < HYLC_MATERIAL_N2D; q++) {
-    const PetscInt      i = HylcMaterialPairs[q][0], j = HylcMaterialPairs[q][1];
-    const HylcSpline2D *sp = &m->t2[q];
+  for (int q = 0; q < HYLCMAT_N2D; q++) {
+    const int             i = HylcmatPairs[q][0], j = HylcmatPairs[q][1];
+    const hylcmat_term2d *sp = &m->t2[q];
     F(Basis)
     Bu;
     R f[3][3];
@@ -392,7 +392,7 @@ static void F(Evaluate)(HylcMaterial m, const PetscReal s[6], int level, R *psi,
     }
   }
   /* bending: the 1D terms 3 (f, x) and 4 (g, y), and the pairs (i, 3), (i, 4) */
-  for (PetscInt k = 3; k < 5; k++) {
+  for (int k = 3; k < 5; k++) {
     F(Quot)
     q;
     if (!m->has1[k]) continue;
@@ -401,8 +401,8 @@ static void F(Evaluate)(HylcMaterial m, const PetscReal s[6], int level, R *psi,
     F(Add)
     (&T0, &q, k == 3 ? 1 : -1, is[k], 1);
   }
-  for (PetscInt r = 0; r < HYLC_MATERIAL_N2D; r++) {
-    const PetscInt i = HylcMaterialPairs[r][0], k = HylcMaterialPairs[r][1];
+  for (int r = 0; r < HYLCMAT_N2D; r++) {
+    const int i = HylcmatPairs[r][0], k = HylcmatPairs[r][1];
     F(Quot)
     q[3];
     F(Basis)
@@ -425,7 +425,7 @@ static void F(Evaluate)(HylcMaterial m, const PetscReal s[6], int level, R *psi,
     g[3] += 0.5 * (EA + EB);
     g[5] += 0.5 * (EA - EB);
     g[4] += EC;
-    for (PetscInt i = 0; i < 3; i++) g[i] += Tu[i].P + B * Tu[i].Q;
+    for (int i = 0; i < 3; i++) g[i] += Tu[i].P + B * Tu[i].Q;
   }
   if (level > 1) {
     const R B2 = B * B, EAA = T0.PAA + B * T0.QAA, EAB = 2 * B * T0.PAw + T0.QA + 2 * B2 * T0.QAw, EAC = 2 * C * (T0.PAw + B * T0.QAw);
@@ -438,7 +438,7 @@ static void F(Evaluate)(HylcMaterial m, const PetscReal s[6], int level, R *psi,
     H[3][4] += 0.5 * (EAC + EBC);
     H[4][5] += 0.5 * (EAC - EBC);
     H[4][4] += ECC;
-    for (PetscInt i = 0; i < 3; i++) {
+    for (int i = 0; i < 3; i++) {
       const F(Bend) *t = &Tu[i];
       const R EuA = t->PA + B * t->QA, EuB = 2 * B * t->Pw + t->Q + 2 * B2 * t->Qw, EuC = 2 * C * (t->Pw + B * t->Qw);
       H[i][3] += 0.5 * (EuA + EuB);
@@ -446,10 +446,10 @@ static void F(Evaluate)(HylcMaterial m, const PetscReal s[6], int level, R *psi,
       H[i][4] += EuC;
       H[i][i] += Tuu[i].P + B * Tuu[i].Q;
     }
-    for (PetscInt i = 0; i < 6; i++)
-      for (PetscInt j = 0; j < 6; j++) hess[6 * i + j] = i <= j ? H[i][j] : H[j][i];
+    for (int i = 0; i < 6; i++)
+      for (int j = 0; j < 6; j++) hess[6 * i + j] = i <= j ? H[i][j] : H[j][i];
   }
   *psi = E;
   if (level)
-    for (PetscInt i = 0; i < 6; i++) grad[i] = g[i];
+    for (int i = 0; i < 6; i++) grad[i] = g[i];
 }

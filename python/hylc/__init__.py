@@ -1,0 +1,259 @@
+"""hylc: Python access to the hylc cloth material model (libhylcmat, through ctypes) and readers of
+hylc's HDF5 files (through h5py).
+
+    import hylc
+    m = hylc.Material("stock1.json")            # or a hylc HDF5 material (model.h5)
+    psi, grad, hess = m.evaluate(strains)       # strains: (N, 6) -> (N,), (N, 6), (N, 6, 6)
+    psi, grad = m.evaluate(strains, hessian=False)
+
+Strains are s = (sx, sa, sy, II00, II01, II11): stretches sx, sy (0 at rest), sa the cosine of the
+angle between the deformed material axes, II the second fundamental form in 1/m. Psi is in J/m^2
+(docs/library.md). The library is found through $HYLCMAT_LIB, then next to this package (a checkout's
+build/, an installed prefix's lib/), then the system's library path.
+"""
+import ctypes
+import ctypes.util
+import os
+
+import numpy as np
+
+__all__ = ["Material", "HylcError", "read_material_h5", "read_samples", "library_path"]
+
+_HDF5_SIGNATURE = b"\x89HDF\r\n\x1a\n"
+TERMS_1D = ["sx", "sa", "sy", "II00", "II11"]
+TERMS_2D = ["sx-sa", "sx-sy", "sx-II00", "sx-II11", "sa-sy", "sa-II00", "sa-II11", "sy-II00", "sy-II11"]
+PAIRS = [(0, 1), (0, 2), (0, 3), (0, 4), (1, 2), (1, 3), (1, 4), (2, 3), (2, 4)]
+
+
+class HylcError(RuntimeError):
+    """An error reported by libhylcmat: .code is its HYLCMAT_ERR_* code, the message names the file,
+    line and key."""
+
+    def __init__(self, code, message):
+        super().__init__(message)
+        self.code = code
+
+
+def _candidates():
+    env = os.environ.get("HYLCMAT_LIB")
+    if env:
+        yield env
+    here = os.path.dirname(os.path.abspath(__file__))
+    build = os.environ.get("BUILD", "build")
+    yield os.path.join(here, "..", "..", build, "libhylcmat.so")          # a checkout: python/hylc
+    yield os.path.join(here, "..", "..", "..", "..", "lib", "libhylcmat.so")  # PREFIX/share/hylc/python/hylc
+    found = ctypes.util.find_library("hylcmat")
+    if found:
+        yield found
+
+
+def _load_library():
+    tried = []
+    for path in _candidates():
+        if os.path.sep in path and not os.path.exists(path):
+            tried.append(path)
+            continue
+        try:
+            path = os.path.normpath(path) if os.path.sep in path else path
+            return ctypes.CDLL(path), path
+        except OSError as e:
+            tried.append("%s (%s)" % (path, e))
+    raise ImportError("hylc: libhylcmat.so not found (build it with 'make hylcmat' or set HYLCMAT_LIB); tried: " + ", ".join(tried))
+
+
+_lib, library_path = _load_library()
+_dp = ctypes.POINTER(ctypes.c_double)
+_vp = ctypes.c_void_p
+_lib.hylcmat_load.argtypes = [ctypes.c_char_p, ctypes.POINTER(_vp), ctypes.c_char_p, ctypes.c_size_t]
+_lib.hylcmat_load.restype = ctypes.c_int
+_lib.hylcmat_create.argtypes = [ctypes.POINTER(_vp)]
+_lib.hylcmat_create.restype = ctypes.c_int
+_lib.hylcmat_free.argtypes = [_vp]
+_lib.hylcmat_free.restype = None
+_lib.hylcmat_has_hdf5.argtypes = []
+_lib.hylcmat_has_hdf5.restype = ctypes.c_int
+_lib.hylcmat_eval_batch.argtypes = [_vp, ctypes.c_size_t, _vp, _vp, _vp, _vp]
+_lib.hylcmat_eval_batch.restype = ctypes.c_int
+_lib.hylcmat_strerror.argtypes = [ctypes.c_int]
+_lib.hylcmat_strerror.restype = ctypes.c_char_p
+_lib.hylcmat_density.argtypes = [_vp]
+_lib.hylcmat_density.restype = ctypes.c_double
+_lib.hylcmat_constant.argtypes = [_vp]
+_lib.hylcmat_constant.restype = ctypes.c_double
+_lib.hylcmat_strain_scale.argtypes = [_vp, _dp]
+_lib.hylcmat_strain_scale.restype = None
+for _f in ("hylcmat_set_density", "hylcmat_set_constant"):
+    getattr(_lib, _f).argtypes = [_vp, ctypes.c_double, ctypes.c_char_p, ctypes.c_size_t]
+    getattr(_lib, _f).restype = ctypes.c_int
+_lib.hylcmat_set_strain_scale.argtypes = [_vp, _dp, ctypes.c_char_p, ctypes.c_size_t]
+_lib.hylcmat_set_strain_scale.restype = ctypes.c_int
+_lib.hylcmat_set_strain_shift.argtypes = [_vp, ctypes.POINTER(ctypes.c_int)]
+_lib.hylcmat_set_strain_shift.restype = None
+
+
+class _Term1D(ctypes.Structure):
+    _fields_ = [("k", ctypes.c_int), ("n", ctypes.c_int), ("ext", ctypes.c_int), ("t", _dp), ("p", _dp), ("m", _dp)]
+
+
+class _Term2D(ctypes.Structure):
+    _fields_ = [("k0", ctypes.c_int), ("k1", ctypes.c_int), ("nu", ctypes.c_int), ("nv", ctypes.c_int), ("ext", ctypes.c_int),
+                ("tu", _dp), ("tv", _dp), ("p", _dp), ("mu", _dp), ("mv", _dp), ("muv", _dp)]
+
+
+_lib.hylcmat_set_term1d.argtypes = [_vp, ctypes.POINTER(_Term1D), ctypes.c_char_p, ctypes.c_size_t]
+_lib.hylcmat_set_term1d.restype = ctypes.c_int
+_lib.hylcmat_set_term2d.argtypes = [_vp, ctypes.POINTER(_Term2D), ctypes.c_char_p, ctypes.c_size_t]
+_lib.hylcmat_set_term2d.restype = ctypes.c_int
+
+
+def _check(code, err=None):
+    if code:
+        msg = err.value.decode("utf-8", "replace") if err is not None and err.value else _lib.hylcmat_strerror(code).decode()
+        raise HylcError(code, msg)
+
+
+def _darr(a):
+    a = np.ascontiguousarray(np.asarray(a, dtype=np.float64).ravel())
+    return a, a.ctypes.data_as(_dp)
+
+
+class Material:
+    """A material table (ARCSim-HYLC JSON or hylc HDF5), evaluated by libhylcmat. Read-only after
+    loading; evaluate() may be called from several threads (it releases the GIL in the C call)."""
+
+    def __init__(self, path):
+        self.path = os.fspath(path)
+        self._h = _vp()
+        with open(self.path, "rb") as fh:
+            head = fh.read(8)
+        if head == _HDF5_SIGNATURE and not _lib.hylcmat_has_hdf5():
+            self._from_h5(self.path)
+        else:
+            err = ctypes.create_string_buffer(1024)
+            _check(_lib.hylcmat_load(self.path.encode(), ctypes.byref(self._h), err, len(err)), err)
+
+    def _from_h5(self, path):
+        """builds the table from an HDF5 material read with h5py (libhylcmat validates every value)"""
+        d = read_material_h5(path)
+        err = ctypes.create_string_buffer(1024)
+        _check(_lib.hylcmat_create(ctypes.byref(self._h)))
+        _check(_lib.hylcmat_set_density(self._h, d["density"], err, len(err)), err)
+        _check(_lib.hylcmat_set_constant(self._h, d["constant"], err, len(err)), err)
+        sc, p = _darr(d["strain_scale"])
+        _check(_lib.hylcmat_set_strain_scale(self._h, p, err, len(err)), err)
+        if "strain_shift" in d:
+            sh = (ctypes.c_int * 5)(*[int(x) for x in d["strain_shift"]])
+            _lib.hylcmat_set_strain_shift(self._h, sh)
+        for name, g in d["1D"].items():
+            arrs = [_darr(g[k]) for k in ("t", "p", "m")]
+            t = _Term1D(int(g["k"]), len(arrs[0][0]), int(g["ext"]), *[a[1] for a in arrs])
+            _check(_lib.hylcmat_set_term1d(self._h, ctypes.byref(t), err, len(err)), err)
+        for name, g in d["2D"].items():
+            arrs = [_darr(g[k]) for k in ("tu", "tv", "p", "mu", "mv", "muv")]
+            t = _Term2D(int(g["k0"]), int(g["k1"]), len(arrs[0][0]), len(arrs[1][0]), int(g["ext"]), *[a[1] for a in arrs])
+            _check(_lib.hylcmat_set_term2d(self._h, ctypes.byref(t), err, len(err)), err)
+
+    def __del__(self):
+        h = getattr(self, "_h", None)
+        if h:
+            _lib.hylcmat_free(h)
+            self._h = _vp()
+
+    @property
+    def density(self):
+        """area density rho_A (kg/m^2)"""
+        return _lib.hylcmat_density(self._h)
+
+    @property
+    def constant(self):
+        return _lib.hylcmat_constant(self._h)
+
+    @property
+    def strain_scale(self):
+        s = (ctypes.c_double * 5)()
+        _lib.hylcmat_strain_scale(self._h, s)
+        return np.array(s[:])
+
+    def evaluate(self, strains, hessian=True, gradient=True):
+        """Psi (N,), and dPsi/ds (N, 6) and d2Psi/ds2 (N, 6, 6) at strains (N, 6) (or one strain (6,):
+        the results then have no leading axis). hessian=False: (psi, grad); gradient=False too: psi."""
+        s = np.ascontiguousarray(strains, dtype=np.float64)
+        single = s.ndim == 1
+        if single:
+            s = s.reshape(1, 6)
+        if s.ndim != 2 or s.shape[1] != 6:
+            raise ValueError("strains must have shape (N, 6) (sx, sa, sy, II00, II01, II11), got %s" % (np.shape(strains),))
+        n = s.shape[0]
+        psi = np.empty(n)
+        grad = np.empty((n, 6)) if (gradient or hessian) else None
+        hess = np.empty((n, 6, 6)) if hessian else None
+        r = _lib.hylcmat_eval_batch(self._h, n, s.ctypes.data, psi.ctypes.data, grad.ctypes.data if grad is not None else None,
+                                    hess.ctypes.data if hess is not None else None)
+        _check(r)
+        if single:
+            psi = psi[0]
+            grad = grad[0] if grad is not None else None
+            hess = hess[0] if hess is not None else None
+        if hessian:
+            return psi, grad, hess
+        if gradient:
+            return psi, grad
+        return psi
+
+    def psi(self, strains):
+        """Psi only (N,)"""
+        return self.evaluate(strains, hessian=False, gradient=False)
+
+
+# ---------------------------------------------------------------- HDF5 files (h5py)
+def _attr(v):
+    if isinstance(v, bytes):
+        return v.decode("utf-8", "replace")
+    if isinstance(v, np.ndarray) and v.shape == ():
+        return v.item()
+    return v
+
+
+def read_material_h5(path):
+    """The hylc HDF5 material file (docs/material.md) as a dict: density, constant, strain_scale,
+    strain_shift, root attributes under 'attrs', and '1D' / '2D' {term name: {k or k0, k1, ext, t, p, m
+    or tu, tv, p, mu, mv, muv (node arrays flattened, iv * len(tu) + iu)}}."""
+    import h5py
+    d = {"1D": {}, "2D": {}}
+    with h5py.File(path, "r") as f:
+        fmt = _attr(f.attrs.get("format", b""))
+        if fmt != "hylc-material":
+            raise HylcError(4, "%s: an HDF5 file of format '%s', not a hylc material file ('hylc-material')" % (path, fmt))
+        d["attrs"] = {k: _attr(v) for k, v in f.attrs.items()}
+        d["density"] = float(f["density"][()])
+        d["constant"] = float(f["constant"][()])
+        d["strain_scale"] = np.asarray(f["strain_scale"][()], float).ravel()
+        if "strain_shift" in f:
+            d["strain_shift"] = np.asarray(f["strain_shift"][()]).ravel().astype(int)
+        for name, g in f.get("1D", {}).items():
+            d["1D"][name] = {"k": int(g.attrs["k"]), "ext": int(g.attrs["ext"]), **{k: np.asarray(g[k][()], float).ravel() for k in ("t", "p", "m")}}
+        for name, g in f.get("2D", {}).items():
+            d["2D"][name] = {"k0": int(g.attrs["k0"]), "k1": int(g.attrs["k1"]), "ext": int(g.attrs["ext"]),
+                             **{k: np.asarray(g[k][()], float).ravel() for k in ("tu", "tv", "p", "mu", "mv", "muv")}}
+    return d
+
+
+def read_samples(path, usable=True):
+    """The samples file of hylc-sample (docs/output-format.md) as a dict of numpy arrays: every dataset
+    of the group /samples (strain (N, 6), psi, term, status, ...) and the root attributes under 'attrs'.
+    usable=True keeps the rows with status 0 only."""
+    import h5py
+    out = {}
+    with h5py.File(path, "r") as f:
+        out["attrs"] = {k: _attr(v) for k, v in f.attrs.items()}
+        g = f["samples"]
+        for k, v in g.items():
+            if isinstance(v, h5py.Dataset):
+                out[k] = v[()]
+    if usable and "status" in out:
+        ok = out["status"] == 0
+        n = len(ok)
+        for k, v in list(out.items()):
+            if isinstance(v, np.ndarray) and v.ndim >= 1 and len(v) == n:
+                out[k] = v[ok]
+    return out

@@ -1,0 +1,587 @@
+/* hylcmat: the table (create, free, validated setters, getters), names, errors, file dispatch (JSON or
+   HDF5 by content) and Python's repr() of doubles. Plain C99 + POSIX stat; no global state. */
+#include "hylcmatimpl.h"
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+const int HylcmatPairs[HYLCMAT_N2D][2] = {
+    {0, 1},
+    {0, 2},
+    {0, 3},
+    {0, 4},
+    {1, 2},
+    {1, 3},
+    {1, 4},
+    {2, 3},
+    {2, 4}};
+const char *const HylcmatNames1D[HYLCMAT_N1D] = {"sx", "sa", "sy", "II00", "II11"};
+const char *const HylcmatNames2D[HYLCMAT_N2D] = {"sx-sa", "sx-sy", "sx-II00", "sx-II11", "sa-sy", "sa-II00", "sa-II11", "sy-II00", "sy-II11"};
+
+int hm_fail(hm_err *e, int code, const char *fmt, ...)
+{
+  if (e && e->buf && e->len) {
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(e->buf, e->len, fmt, ap);
+    va_end(ap);
+  }
+  return code;
+}
+
+void hylcmat_pair(int q, int *k0, int *k1)
+{
+  const int ok = q >= 0 && q < HYLCMAT_N2D;
+  if (k0) *k0 = ok ? HylcmatPairs[q][0] : -1;
+  if (k1) *k1 = ok ? HylcmatPairs[q][1] : -1;
+}
+
+int hylcmat_pair_index(int k0, int k1)
+{
+  for (int q = 0; q < HYLCMAT_N2D; q++)
+    if (HylcmatPairs[q][0] == k0 && HylcmatPairs[q][1] == k1) return q;
+  return -1;
+}
+
+const char *hylcmat_term1d_name(int k)
+{
+  return k >= 0 && k < HYLCMAT_N1D ? HylcmatNames1D[k] : NULL;
+}
+
+const char *hylcmat_term2d_name(int q)
+{
+  return q >= 0 && q < HYLCMAT_N2D ? HylcmatNames2D[q] : NULL;
+}
+
+const char *hylcmat_strerror(int code)
+{
+  switch (code) {
+  case HYLCMAT_OK:
+    return "no error";
+  case HYLCMAT_ERR_OPEN:
+    return "cannot open the file";
+  case HYLCMAT_ERR_READ:
+    return "cannot read the file";
+  case HYLCMAT_ERR_FORMAT:
+    return "malformed material (JSON syntax, schema or value)";
+  case HYLCMAT_ERR_CONTENT:
+    return "not a hylc material file";
+  case HYLCMAT_ERR_MEMORY:
+    return "out of memory";
+  case HYLCMAT_ERR_ARG:
+    return "bad argument";
+  case HYLCMAT_ERR_NO_HDF5:
+    return "an HDF5 file, but hylcmat was built without HDF5";
+  case HYLCMAT_ERR_HDF5:
+    return "the HDF5 library failed";
+  case HYLCMAT_ERR_NAN:
+    return "NaN result at a finite strain";
+  }
+  return "unknown error";
+}
+
+int hylcmat_has_hdf5(void)
+{
+#ifdef HYLCMAT_WITH_HDF5
+  return 1;
+#else
+  return 0;
+#endif
+}
+
+/* ------------------------------------------------------------------------------------------------ */
+/* Table                                                                                              */
+/* ------------------------------------------------------------------------------------------------ */
+
+static void Free1D(hylcmat *m, int k)
+{
+  if (m->has1[k]) {
+    free((void *)m->t1[k].t);
+    free((void *)m->t1[k].p);
+    free((void *)m->t1[k].m);
+  }
+  memset(&m->t1[k], 0, sizeof(m->t1[k]));
+  m->has1[k] = 0;
+  m->sw1[k]  = 0;
+}
+
+static void Free2D(hylcmat *m, int q)
+{
+  if (m->has2[q]) {
+    free((void *)m->t2[q].tu);
+    free((void *)m->t2[q].tv);
+    free((void *)m->t2[q].p);
+    free((void *)m->t2[q].mu);
+    free((void *)m->t2[q].mv);
+    free((void *)m->t2[q].muv);
+  }
+  memset(&m->t2[q], 0, sizeof(m->t2[q]));
+  m->has2[q] = 0;
+  m->sw2[q]  = 0;
+}
+
+void hylcmat_reset(hylcmat *m)
+{
+  if (!m) return;
+  for (int k = 0; k < HYLCMAT_N1D; k++) Free1D(m, k);
+  for (int q = 0; q < HYLCMAT_N2D; q++) Free2D(m, q);
+  m->density = 0;
+  m->C0      = 0;
+  for (int k = 0; k < 5; k++) {
+    m->scale[k] = 1;
+    m->shift[k] = (k == 0 || k == 2) ? 1 : 0;
+  }
+}
+
+int hylcmat_create(hylcmat **m)
+{
+  if (!m) return HYLCMAT_ERR_ARG;
+  *m = calloc(1, sizeof(**m));
+  if (!*m) return HYLCMAT_ERR_MEMORY;
+  hylcmat_reset(*m);
+  return HYLCMAT_OK;
+}
+
+void hylcmat_free(hylcmat *m)
+{
+  if (!m) return;
+  hylcmat_reset(m);
+  free(m);
+}
+
+/* a number for messages (%.6g) */
+static const char *G(char buf[32], double v)
+{
+  snprintf(buf, 32, "%.6g", v);
+  return buf;
+}
+
+int hylcmat_set_density(hylcmat *m, double rho, char *err, size_t errlen)
+{
+  hm_err E = {err, errlen};
+  char   b[32];
+
+  HM_CHECK(m, &E, HYLCMAT_ERR_ARG, "hylcmat_set_density: NULL table");
+  HM_CHECK(isfinite(rho) && rho >= 0, &E, HYLCMAT_ERR_FORMAT, "Material density must be finite and >= 0, got %s", G(b, rho));
+  m->density = rho;
+  return HYLCMAT_OK;
+}
+
+int hylcmat_set_strain_scale(hylcmat *m, const double scale[5], char *err, size_t errlen)
+{
+  hm_err E = {err, errlen};
+  char   b[32];
+
+  HM_CHECK(m && scale, &E, HYLCMAT_ERR_ARG, "hylcmat_set_strain_scale: NULL argument");
+  for (int k = 0; k < 5; k++) HM_CHECK(isfinite(scale[k]) && scale[k] > 0 && isfinite(1 / scale[k]), &E, HYLCMAT_ERR_FORMAT, "Strain scale %d (%s) must be finite and positive with a finite inverse, got %s", k, HylcmatNames1D[k], G(b, scale[k]));
+  for (int k = 0; k < 5; k++) m->scale[k] = scale[k];
+  return HYLCMAT_OK;
+}
+
+int hylcmat_set_constant(hylcmat *m, double c0, char *err, size_t errlen)
+{
+  hm_err E = {err, errlen};
+  char   b[32];
+
+  HM_CHECK(m, &E, HYLCMAT_ERR_ARG, "hylcmat_set_constant: NULL table");
+  HM_CHECK(isfinite(c0), &E, HYLCMAT_ERR_FORMAT, "Material constant must be finite, got %s", G(b, c0));
+  m->C0 = c0;
+  return HYLCMAT_OK;
+}
+
+void hylcmat_set_strain_shift(hylcmat *m, const int shift[5])
+{
+  if (m && shift)
+    for (int k = 0; k < 5; k++) m->shift[k] = shift[k];
+}
+
+double hylcmat_density(const hylcmat *m)
+{
+  return m ? m->density : 0;
+}
+
+double hylcmat_constant(const hylcmat *m)
+{
+  return m ? m->C0 : 0;
+}
+
+void hylcmat_strain_scale(const hylcmat *m, double scale[5])
+{
+  for (int k = 0; k < 5; k++) scale[k] = m ? m->scale[k] : 1;
+}
+
+void hylcmat_strain_shift(const hylcmat *m, int shift[5])
+{
+  for (int k = 0; k < 5; k++) shift[k] = m ? m->shift[k] : 0;
+}
+
+int hylcmat_term1d_get(const hylcmat *m, int k, hylcmat_term1d *t)
+{
+  if (!m || k < 0 || k >= HYLCMAT_N1D || !m->has1[k]) return 0;
+  if (t) *t = m->t1[k];
+  return 1;
+}
+
+int hylcmat_term2d_get(const hylcmat *m, int k0, int k1, hylcmat_term2d *t)
+{
+  const int q = hylcmat_pair_index(k0, k1);
+  if (!m || q < 0 || !m->has2[q]) return 0;
+  if (t) *t = m->t2[q];
+  return 1;
+}
+
+/* knots: at least 2, finite, strictly increasing, spacings h with h and 1/h finite. what names the term */
+static int CheckKnots(hm_err *E, const char what[], const char name[], int n, const double t[])
+{
+  char b0[32], b1[32];
+
+  HM_CHECK(n >= 2, E, HYLCMAT_ERR_FORMAT, "%s: %s needs at least 2 knots, got %d", what, name, n);
+  HM_CHECK(t, E, HYLCMAT_ERR_ARG, "%s: %s is NULL", what, name);
+  for (int i = 0; i < n; i++) {
+    HM_CHECK(isfinite(t[i]), E, HYLCMAT_ERR_FORMAT, "%s: knot %s[%d] = %s is not finite", what, name, i, G(b0, t[i]));
+    HM_CHECK(i == 0 || t[i] > t[i - 1], E, HYLCMAT_ERR_FORMAT, "%s: knots %s must be strictly increasing, but %s[%d] = %s <= %s[%d] = %s", what, name, name, i, G(b0, t[i]), name, i - 1, G(b1, t[i - 1]));
+    if (i > 0) { /* the evaluator divides by the spacing (docs/material.md, "Range") */
+      const double h = t[i] - t[i - 1];
+      HM_CHECK(isfinite(h) && isfinite(1 / h), E, HYLCMAT_ERR_FORMAT, "%s: the spacing %s[%d] - %s[%d] = %s - %s %s (knot spacings h must have h and 1/h finite)", what, name, i, name, i - 1, G(b0, t[i]), G(b1, t[i - 1]), isfinite(h) ? "is too small" : "overflows");
+    }
+  }
+  return HYLCMAT_OK;
+}
+
+static int CheckFinite(hm_err *E, const char what[], const char name[], int n, const double v[])
+{
+  char b[32];
+
+  HM_CHECK(v, E, HYLCMAT_ERR_ARG, "%s: %s is NULL", what, name);
+  for (int i = 0; i < n; i++) HM_CHECK(isfinite(v[i]), E, HYLCMAT_ERR_FORMAT, "%s: %s[%d] = %s is not finite", what, name, i, G(b, v[i]));
+  return HYLCMAT_OK;
+}
+
+static double HalfMinSpacing(int n, const double t[])
+{
+  double h = 1.7976931348623157e308;
+  for (int i = 1; i < n; i++)
+    if (t[i] - t[i - 1] < h) h = t[i] - t[i - 1];
+  return 0.45 * h;
+}
+
+static double *Copy(const double *v, size_t n)
+{
+  double *c = malloc(n * sizeof(double) + 1);
+  if (c) memcpy(c, v, n * sizeof(double));
+  return c;
+}
+
+int hylcmat_set_term1d(hylcmat *m, const hylcmat_term1d *s, char *err, size_t errlen)
+{
+  hm_err  E = {err, errlen};
+  char    what[64];
+  int     k;
+  double *t, *p, *mm;
+
+  HM_CHECK(m && s, &E, HYLCMAT_ERR_ARG, "hylcmat_set_term1d: NULL argument");
+  k = s->k;
+  HM_CHECK(k >= 0 && k < HYLCMAT_N1D, &E, HYLCMAT_ERR_FORMAT, "1D term: k = %d is out of range (0 sx, 1 sa, 2 sy, 3 x-bending, 4 y-bending)", k);
+  snprintf(what, sizeof(what), "1D term %s (k = %d)", HylcmatNames1D[k], k);
+  HM_CHECK(s->ext >= HYLCMAT_EXT_LINEAR && s->ext <= HYLCMAT_EXT_ZERO, &E, HYLCMAT_ERR_FORMAT, "%s: extrapolation mode %d is not 0 (linear), 1 (constant) or 2 (zero)", what, s->ext);
+  HM_CALL(CheckKnots(&E, what, "t", s->n, s->t));
+  HM_CALL(CheckFinite(&E, what, "p", s->n, s->p));
+  HM_CALL(CheckFinite(&E, what, "m", s->n, s->m));
+  t  = Copy(s->t, (size_t)s->n);
+  p  = Copy(s->p, (size_t)s->n);
+  mm = Copy(s->m, (size_t)s->n);
+  if (!t || !p || !mm) {
+    free(t);
+    free(p);
+    free(mm);
+    return hm_fail(&E, HYLCMAT_ERR_MEMORY, "%s: out of memory", what);
+  }
+  Free1D(m, k);
+  m->t1[k].k   = k;
+  m->t1[k].n   = s->n;
+  m->t1[k].ext = s->ext;
+  m->t1[k].t   = t;
+  m->t1[k].p   = p;
+  m->t1[k].m   = mm;
+  m->has1[k]   = 1;
+  m->sw1[k]    = HalfMinSpacing(s->n, s->t);
+  m->ih1[k]    = (s->n - 1) / (s->t[s->n - 1] - s->t[0]);
+  return HYLCMAT_OK;
+}
+
+int hylcmat_set_term2d(hylcmat *m, const hylcmat_term2d *s, char *err, size_t errlen)
+{
+  hm_err  E = {err, errlen};
+  char    what[64];
+  int     q;
+  size_t  N;
+  double *a[6];
+
+  HM_CHECK(m && s, &E, HYLCMAT_ERR_ARG, "hylcmat_set_term2d: NULL argument");
+  q = hylcmat_pair_index(s->k0, s->k1);
+  HM_CHECK(q >= 0, &E, HYLCMAT_ERR_FORMAT, "2D term: (k0, k1) = (%d, %d) is not a term of the model; the pairs are (0,1) (0,2) (0,3) (0,4) (1,2) (1,3) (1,4) (2,3) (2,4)", s->k0, s->k1);
+  snprintf(what, sizeof(what), "2D term %s (k0 = %d, k1 = %d)", HylcmatNames2D[q], s->k0, s->k1);
+  HM_CHECK(s->ext >= HYLCMAT_EXT_LINEAR && s->ext <= HYLCMAT_EXT_ZERO, &E, HYLCMAT_ERR_FORMAT, "%s: extrapolation mode %d is not 0 (linear), 1 (constant) or 2 (zero)", what, s->ext);
+  HM_CALL(CheckKnots(&E, what, "tu", s->nu, s->tu));
+  HM_CALL(CheckKnots(&E, what, "tv", s->nv, s->tv));
+  N = (size_t)s->nu * (size_t)s->nv;
+  HM_CALL(CheckFinite(&E, what, "p", (int)N, s->p));
+  HM_CALL(CheckFinite(&E, what, "mu", (int)N, s->mu));
+  HM_CALL(CheckFinite(&E, what, "mv", (int)N, s->mv));
+  HM_CALL(CheckFinite(&E, what, "muv", (int)N, s->muv));
+  a[0] = Copy(s->tu, (size_t)s->nu);
+  a[1] = Copy(s->tv, (size_t)s->nv);
+  a[2] = Copy(s->p, N);
+  a[3] = Copy(s->mu, N);
+  a[4] = Copy(s->mv, N);
+  a[5] = Copy(s->muv, N);
+  for (int i = 0; i < 6; i++)
+    if (!a[i]) {
+      for (int j = 0; j < 6; j++) free(a[j]);
+      return hm_fail(&E, HYLCMAT_ERR_MEMORY, "%s: out of memory", what);
+    }
+  Free2D(m, q);
+  m->t2[q].k0  = s->k0;
+  m->t2[q].k1  = s->k1;
+  m->t2[q].nu  = s->nu;
+  m->t2[q].nv  = s->nv;
+  m->t2[q].ext = s->ext;
+  m->t2[q].tu  = a[0];
+  m->t2[q].tv  = a[1];
+  m->t2[q].p   = a[2];
+  m->t2[q].mu  = a[3];
+  m->t2[q].mv  = a[4];
+  m->t2[q].muv = a[5];
+  m->has2[q]   = 1;
+  m->sw2[q]    = HalfMinSpacing(s->nv, s->tv);
+  m->ihu[q]    = (s->nu - 1) / (s->tu[s->nu - 1] - s->tu[0]);
+  m->ihv[q]    = (s->nv - 1) / (s->tv[s->nv - 1] - s->tv[0]);
+  return HYLCMAT_OK;
+}
+
+/* ------------------------------------------------------------------------------------------------ */
+/* Documents and files                                                                                */
+/* ------------------------------------------------------------------------------------------------ */
+
+void hm_doc_init(hm_doc *d, const char *name, hm_err *E)
+{
+  memset(d, 0, sizeof(*d));
+  d->name = name;
+  d->E    = E;
+  for (int k = 0; k < 5; k++) {
+    d->scale[k] = 1;
+    d->shift[k] = (k == 0 || k == 2) ? 1 : 0;
+  }
+}
+
+void hm_doc_free(hm_doc *d)
+{
+  for (int i = 0; i < d->n1; i++) {
+    free((void *)d->s1[i].t);
+    free((void *)d->s1[i].p);
+    free((void *)d->s1[i].m);
+  }
+  for (int i = 0; i < d->n2; i++) {
+    free((void *)d->s2[i].tu);
+    free((void *)d->s2[i].tv);
+    free((void *)d->s2[i].p);
+    free((void *)d->s2[i].mu);
+    free((void *)d->s2[i].mv);
+    free((void *)d->s2[i].muv);
+  }
+  d->n1 = d->n2 = 0;
+}
+
+int hm_doc_install(hm_doc *d, hylcmat **out)
+{
+  hm_err  *E  = d->E;
+  char    *eb = E ? E->buf : NULL;
+  size_t   el = E ? E->len : 0;
+  hylcmat *m  = NULL;
+  int      r  = hylcmat_create(&m);
+
+  if (!r) r = hylcmat_set_density(m, d->density, eb, el);
+  if (!r) r = hylcmat_set_strain_scale(m, d->scale, eb, el);
+  if (!r) hylcmat_set_strain_shift(m, d->shift);
+  if (!r) r = hylcmat_set_constant(m, d->C0, eb, el);
+  for (int i = 0; i < d->n1 && !r; i++) r = hylcmat_set_term1d(m, &d->s1[i], eb, el);
+  for (int i = 0; i < d->n2 && !r; i++) r = hylcmat_set_term2d(m, &d->s2[i], eb, el);
+  hm_doc_free(d);
+  if (r == HYLCMAT_ERR_MEMORY && m == NULL) hm_fail(E, r, "out of memory");
+  if (r) {
+    hylcmat_free(m);
+    m = NULL;
+  }
+  *out = m;
+  return r;
+}
+
+static const unsigned char HDF5Signature[8] = {0x89, 'H', 'D', 'F', '\r', '\n', 0x1a, '\n'};
+
+int hylcmat_load_memory(const char *name, const void *bytes, size_t len, hylcmat **m, char *err, size_t errlen)
+{
+  hm_err      E = {err, errlen};
+  const char *text;
+  size_t      nul;
+
+  if (err && errlen) err[0] = 0;
+  HM_CHECK(m, &E, HYLCMAT_ERR_ARG, "hylcmat_load_memory: NULL result pointer");
+  *m = NULL;
+  if (!name) name = "(memory)";
+  HM_CHECK(bytes || !len, &E, HYLCMAT_ERR_ARG, "%s: NULL bytes", name);
+  if (len >= 8 && !memcmp(bytes, HDF5Signature, 8)) {
+#ifdef HYLCMAT_WITH_HDF5
+    return hm_parse_hdf5(name, bytes, len, &E, m);
+#else
+    return hm_fail(&E, HYLCMAT_ERR_NO_HDF5, "%s: an HDF5 material file, but this hylcmat was built without HDF5 (HYLCMAT_WITH_HDF5); convert it with hylc-eval -eval_json", name);
+#endif
+  }
+  text = bytes;
+  for (nul = 0; nul < len && text[nul]; nul++) {}
+  HM_CHECK(nul == len, &E, HYLCMAT_ERR_FORMAT, "%s: contains a NUL byte at offset %zu: neither a JSON nor an HDF5 material file", name, nul);
+  return hm_parse_json(name, text, len, &E, m);
+}
+
+int hylcmat_load(const char *path, hylcmat **m, char *err, size_t errlen)
+{
+  hm_err      E = {err, errlen};
+  struct stat st;
+  FILE       *fp;
+  long        len;
+  char       *bytes;
+  int         r;
+
+  if (err && errlen) err[0] = 0;
+  HM_CHECK(m, &E, HYLCMAT_ERR_ARG, "hylcmat_load: NULL result pointer");
+  *m = NULL;
+  HM_CHECK(path && path[0], &E, HYLCMAT_ERR_ARG, "hylcmat_load: no file name");
+  if (stat(path, &st)) return hm_fail(&E, HYLCMAT_ERR_OPEN, "Cannot open material file '%s': %s", path, strerror(errno));
+  HM_CHECK(!S_ISDIR(st.st_mode), &E, HYLCMAT_ERR_OPEN, "Cannot read material file '%s': it is a directory", path);
+  HM_CHECK(S_ISREG(st.st_mode), &E, HYLCMAT_ERR_OPEN, "Cannot read material file '%s': not a regular file", path);
+  fp = fopen(path, "rb");
+  if (!fp) return hm_fail(&E, HYLCMAT_ERR_OPEN, "Cannot open material file '%s': %s", path, strerror(errno));
+  if (fseek(fp, 0, SEEK_END) || (len = ftell(fp)) < 0) {
+    fclose(fp);
+    return hm_fail(&E, HYLCMAT_ERR_READ, "Cannot read material file '%s'", path);
+  }
+  if (len >= (1L << 30)) {
+    fclose(fp);
+    return hm_fail(&E, HYLCMAT_ERR_FORMAT, "Material file '%s' is too large (%ld bytes)", path, len);
+  }
+  rewind(fp);
+  bytes = malloc((size_t)len + 1);
+  if (!bytes) {
+    fclose(fp);
+    return hm_fail(&E, HYLCMAT_ERR_MEMORY, "Cannot read material file '%s': out of memory", path);
+  }
+  if (fread(bytes, 1, (size_t)len, fp) != (size_t)len) {
+    fclose(fp);
+    free(bytes);
+    return hm_fail(&E, HYLCMAT_ERR_READ, "Cannot read material file '%s'", path);
+  }
+  fclose(fp);
+  bytes[len] = 0;
+  r          = hylcmat_load_memory(path, bytes, (size_t)len, m, err, errlen);
+  free(bytes);
+  return r;
+}
+
+/* ------------------------------------------------------------------------------------------------ */
+/* Python repr() of doubles                                                                           */
+/* ------------------------------------------------------------------------------------------------ */
+
+/* mantissa digits of "%.*e" output: the sign, the digits without the point, the exponent */
+static void SplitE(const char *e, int *neg, char digits[24], int *exp10)
+{
+  int k = 0;
+
+  *neg = (*e == '-');
+  if (*e == '-' || *e == '+') e++;
+  for (; *e && *e != 'e'; e++)
+    if (*e != '.') digits[k++] = *e;
+  digits[k] = 0;
+  *exp10    = *e ? atoi(e + 1) : 0;
+}
+
+/* adds delta (+1 or -1) to the last digit of a digit string; 0 if the number of digits would change */
+static int StepDigits(char digits[24], int delta)
+{
+  int i = (int)strlen(digits) - 1;
+
+  for (; i >= 0; i--) {
+    int d = digits[i] - '0' + delta;
+    if (d >= 0 && d <= 9) {
+      digits[i] = (char)('0' + d);
+      break;
+    }
+    digits[i] = delta > 0 ? '0' : '9';
+  }
+  return i >= 0 && digits[0] != '0';
+}
+
+static double FromDigits(int neg, const char digits[], int exp10)
+{
+  char s[48];
+  snprintf(s, sizeof(s), "%s%c.%se%d", neg ? "-" : "", digits[0], digits + 1, exp10);
+  return strtod(s, NULL);
+}
+
+const char *hylcmat_format_double(double x, char buf[32])
+{
+  char digits[24] = "", e[40];
+  int  neg = 0, exp10 = 0, nd, found = 0;
+
+  if (isnan(x)) return strcpy(buf, "NaN");
+  if (isinf(x)) return strcpy(buf, x > 0 ? "Infinity" : "-Infinity");
+  if (x == 0) return strcpy(buf, signbit(x) ? "-0.0" : "0.0");
+  /* the shortest digit string that reads back as x; among those of that length, the closest to x (the
+     correctly rounded one, or when that one does not read back, its neighbour that does) */
+  for (int p = 1; p <= 17 && !found; p++) {
+    snprintf(e, sizeof(e), "%.*e", p - 1, x);
+    SplitE(e, &neg, digits, &exp10);
+    if (strtod(e, NULL) == x) found = 1;
+    for (int delta = -1; delta <= 1 && !found && p < 17; delta += 2) {
+      char alt[24];
+      strcpy(alt, digits);
+      if (StepDigits(alt, delta) && FromDigits(neg, alt, exp10) == x) {
+        strcpy(digits, alt);
+        found = 1;
+      }
+    }
+  }
+  nd = (int)strlen(digits);
+  while (nd > 1 && digits[nd - 1] == '0') digits[--nd] = 0;
+  {
+    char *o = buf;
+    if (neg) *o++ = '-';
+    if (exp10 < -4 || exp10 >= 16) { /* d[.ddd]e-XX */
+      char ex[16];
+      *o++ = digits[0];
+      if (nd > 1) {
+        *o++ = '.';
+        for (int i = 1; i < nd; i++) *o++ = digits[i];
+      }
+      snprintf(ex, sizeof(ex), "e%c%02d", exp10 < 0 ? '-' : '+', exp10 < 0 ? -exp10 : exp10);
+      strcpy(o, ex);
+    } else if (exp10 < 0) { /* 0.000ddd */
+      *o++ = '0';
+      *o++ = '.';
+      for (int i = 0; i < -exp10 - 1; i++) *o++ = '0';
+      for (int i = 0; i < nd; i++) *o++ = digits[i];
+      *o = 0;
+    } else { /* ddd.ddd, with ".0" for integral values */
+      for (int i = 0; i <= exp10; i++) *o++ = i < nd ? digits[i] : '0';
+      *o++ = '.';
+      if (nd > exp10 + 1)
+        for (int i = exp10 + 1; i < nd; i++) *o++ = digits[i];
+      else
+        *o++ = '0';
+      *o = 0;
+    }
+  }
+  return buf;
+}

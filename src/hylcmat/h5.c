@@ -1,0 +1,310 @@
+/* The hylc HDF5 material format (docs/material.md), reading side: parses an in-memory file image
+   (HDF5's core driver). Compiled only with HYLCMAT_WITH_HDF5; the writer is in src/material/h5.c.
+   The HDF5 library itself is not thread-safe unless built so: do not load HDF5 tables from several
+   threads at once. */
+#ifdef HYLCMAT_WITH_HDF5
+#  include "hylcmatimpl.h"
+#  include <hdf5.h>
+#  include <stdio.h>
+#  include <stdlib.h>
+#  include <string.h>
+
+#  define MATERIAL_FORMAT         "hylc-material"
+#  define MATERIAL_FORMAT_VERSION 1
+/* the name of the in-memory files: HDF5's core driver refuses to open an image under a name that
+   exists on disk, so it must not */
+#  define IMAGE_NAME "/nonexistent-hylc-directory/hylc-material-image.h5"
+
+static herr_t ErrorWalk(unsigned n, const H5E_error2_t *e, void *ctx)
+{
+  (void)n;
+  if (e->desc && e->desc[0]) snprintf((char *)ctx, 256, ", HDF5: %s", e->desc);
+  return 0;
+}
+
+static void ErrorText(char buf[256])
+{
+  buf[0] = 0;
+  H5Ewalk2(H5E_DEFAULT, H5E_WALK_DOWNWARD, ErrorWalk, buf);
+}
+
+/* CallH5(call): a negative return of a raw HDF5 call becomes an error naming the call and the file (d) */
+#  define CallH5(...)                                                                                         \
+    do {                                                                                                      \
+      if ((__VA_ARGS__) < 0) {                                                                                \
+        char h5msg_[256];                                                                                     \
+        ErrorText(h5msg_);                                                                                    \
+        return hm_fail(d->E, HYLCMAT_ERR_HDF5, "HDF5 call %s failed on %s%s", #__VA_ARGS__, d->name, h5msg_); \
+      }                                                                                                       \
+    } while (0)
+#  define CallH5Id(id, ...) \
+    do {                    \
+      (id) = (__VA_ARGS__); \
+      CallH5(id);           \
+    } while (0)
+
+static int Exists(const hm_doc *d, hid_t loc, const char path[], const char name[], int required, int *has)
+{
+  htri_t e;
+
+  CallH5Id(e, H5Lexists(loc, name, H5P_DEFAULT));
+  HM_CHECK(e > 0 || !required, d->E, HYLCMAT_ERR_CONTENT, "%s: %s%s is missing", d->name, path, name);
+  if (has) *has = (int)(e > 0);
+  return HYLCMAT_OK;
+}
+
+/* a string attribute (variable or fixed length) into buf */
+static int ReadAttrString(const hm_doc *d, hid_t loc, const char path[], const char name[], char buf[], size_t size)
+{
+  hid_t  a, t, mt;
+  htri_t vlen;
+
+  buf[0] = 0;
+  CallH5Id(a, H5Aopen(loc, name, H5P_DEFAULT));
+  CallH5Id(t, H5Aget_type(a));
+  HM_CHECK(H5Tget_class(t) == H5T_STRING, d->E, HYLCMAT_ERR_CONTENT, "%s: attribute %s@%s is not a string", d->name, path, name);
+  CallH5Id(vlen, H5Tis_variable_str(t));
+  CallH5Id(mt, H5Tcopy(H5T_C_S1));
+  CallH5(H5Tset_cset(mt, H5Tget_cset(t)));
+  if (vlen) {
+    char *s = NULL;
+    CallH5(H5Tset_size(mt, H5T_VARIABLE));
+    CallH5(H5Aread(a, mt, &s));
+    if (s) {
+      snprintf(buf, size, "%s", s);
+      H5free_memory(s);
+    }
+  } else {
+    size_t n = H5Tget_size(t);
+    char  *s = calloc(n + 1, 1);
+    HM_CHECK(s, d->E, HYLCMAT_ERR_MEMORY, "%s: attribute %s@%s: out of memory", d->name, path, name);
+    CallH5(H5Tset_size(mt, n + 1));
+    CallH5(H5Aread(a, mt, s));
+    snprintf(buf, size, "%s", s);
+    free(s);
+  }
+  CallH5(H5Tclose(mt));
+  CallH5(H5Tclose(t));
+  CallH5(H5Aclose(a));
+  return HYLCMAT_OK;
+}
+
+static int ReadAttrLong(const hm_doc *d, hid_t loc, const char path[], const char name[], long long *v)
+{
+  hid_t  a, s;
+  htri_t e;
+
+  CallH5Id(e, H5Aexists(loc, name));
+  HM_CHECK(e > 0, d->E, HYLCMAT_ERR_CONTENT, "%s: attribute %s@%s is missing", d->name, path, name);
+  CallH5Id(a, H5Aopen(loc, name, H5P_DEFAULT));
+  CallH5Id(s, H5Aget_space(a));
+  HM_CHECK(H5Sget_simple_extent_npoints(s) == 1, d->E, HYLCMAT_ERR_CONTENT, "%s: attribute %s@%s must be a scalar", d->name, path, name);
+  CallH5(H5Aread(a, H5T_NATIVE_LLONG, v));
+  CallH5(H5Sclose(s));
+  CallH5(H5Aclose(a));
+  return HYLCMAT_OK;
+}
+
+/* a dataset of the given rank with its dimensions (dims[0] outermost); the data as doubles (or ints) in
+   freshly allocated *out */
+static int ReadData(const hm_doc *d, hid_t loc, const char path[], const char name[], int rank, hsize_t dims[], double **out, int *iout)
+{
+  hid_t   ds, sp;
+  int     r;
+  hsize_t dd[2] = {1, 1}, n = 1;
+
+  HM_CALL(Exists(d, loc, path, name, 1, NULL));
+  CallH5Id(ds, H5Dopen2(loc, name, H5P_DEFAULT));
+  CallH5Id(sp, H5Dget_space(ds));
+  CallH5Id(r, H5Sget_simple_extent_ndims(sp));
+  HM_CHECK(r == rank, d->E, HYLCMAT_ERR_CONTENT, "%s: dataset %s%s has rank %d, expected %d", d->name, path, name, r, rank);
+  if (r) CallH5(H5Sget_simple_extent_dims(sp, dd, NULL));
+  for (int i = 0; i < r; i++) {
+    n *= dd[i];
+    if (dims[i]) HM_CHECK(dd[i] == dims[i], d->E, HYLCMAT_ERR_CONTENT, "%s: dataset %s%s has dimension %d of size %llu, expected %llu", d->name, path, name, i, (unsigned long long)dd[i], (unsigned long long)dims[i]);
+    dims[i] = dd[i];
+  }
+  HM_CHECK(n < (1u << 28), d->E, HYLCMAT_ERR_CONTENT, "%s: dataset %s%s is too large", d->name, path, name);
+  if (out) {
+    *out = malloc(sizeof(double) * (size_t)(n + 1)); /* owned by the caller from here on, also on an error */
+    HM_CHECK(*out, d->E, HYLCMAT_ERR_MEMORY, "%s: dataset %s%s: out of memory", d->name, path, name);
+    CallH5(H5Dread(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, *out));
+  } else {
+    int buf[8];
+    HM_CHECK(n <= 8, d->E, HYLCMAT_ERR_CONTENT, "%s: dataset %s%s is too large", d->name, path, name);
+    CallH5(H5Dread(ds, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf));
+    for (hsize_t i = 0; i < n; i++) iout[i] = (int)buf[i];
+  }
+  CallH5(H5Sclose(sp));
+  CallH5(H5Dclose(ds));
+  return HYLCMAT_OK;
+}
+
+static int ReadScalar(const hm_doc *d, hid_t loc, const char name[], double *v)
+{
+  double *buf = NULL;
+  int     r   = ReadData(d, loc, "/", name, 0, NULL, &buf, NULL);
+
+  if (!r) *v = buf[0];
+  free(buf);
+  return r;
+}
+
+/* every member of group g must be one of the names[] */
+static int CheckMembers(const hm_doc *d, hid_t g, const char path[], int nnames, const char *const names[])
+{
+  H5G_info_t info;
+
+  CallH5(H5Gget_info(g, &info));
+  for (hsize_t i = 0; i < info.nlinks; i++) {
+    char name[256] = "";
+    int  ok        = 0;
+    CallH5(H5Lget_name_by_idx(g, ".", H5_INDEX_NAME, H5_ITER_INC, i, name, sizeof(name), H5P_DEFAULT));
+    for (int j = 0; j < nnames; j++) ok = (int)(ok || !strcmp(name, names[j]));
+    HM_CHECK(ok, d->E, HYLCMAT_ERR_CONTENT, "%s: unknown member %s%s", d->name, path, name);
+  }
+  return HYLCMAT_OK;
+}
+
+static int ReadExt(const hm_doc *d, hid_t g, const char path[], int *ext)
+{
+  long long e;
+
+  HM_CALL(ReadAttrLong(d, g, path, "ext", &e));
+  HM_CHECK(e >= 0 && e <= 2, d->E, HYLCMAT_ERR_CONTENT, "%s: %s@ext = %lld is not 0 (linear), 1 (constant) or 2 (zero)", d->name, path, e);
+  *ext = (int)e;
+  return HYLCMAT_OK;
+}
+
+static int ReadContents(hm_doc *d, hid_t file)
+{
+  char                     fmt[64];
+  long long                version, v;
+  hsize_t                  dim5 = 5;
+  double                  *buf;
+  int                      has;
+  hid_t                    g1, g2, g;
+  static const char *const top[] = {"density", "constant", "strain_scale", "strain_shift", "1D", "2D"};
+
+  {
+    htri_t e;
+    CallH5Id(e, H5Aexists(file, "format"));
+    HM_CHECK(e > 0, d->E, HYLCMAT_ERR_CONTENT, "%s: an HDF5 file without the root attribute 'format': not a hylc material file", d->name);
+  }
+  HM_CALL(ReadAttrString(d, file, "/", "format", fmt, sizeof(fmt)));
+  HM_CHECK(!strcmp(fmt, MATERIAL_FORMAT), d->E, HYLCMAT_ERR_CONTENT, "%s: an HDF5 file of format '%s', not a hylc material file ('%s')", d->name, fmt, MATERIAL_FORMAT);
+  HM_CALL(ReadAttrLong(d, file, "/", "format_version", &version));
+  HM_CHECK(version >= 1 && version <= MATERIAL_FORMAT_VERSION, d->E, HYLCMAT_ERR_CONTENT, "%s: material format version %lld is not supported (this hylc reads version %d)", d->name, version, MATERIAL_FORMAT_VERSION);
+  HM_CALL(CheckMembers(d, file, "/", 6, top));
+  HM_CALL(ReadScalar(d, file, "density", &d->density));
+  HM_CALL(ReadScalar(d, file, "constant", &d->C0));
+  buf = NULL;
+  {
+    const int r = ReadData(d, file, "/", "strain_scale", 1, &dim5, &buf, NULL);
+    if (!r)
+      for (int k = 0; k < 5; k++) d->scale[k] = buf[k];
+    free(buf);
+    HM_CALL(r);
+  }
+  HM_CALL(Exists(d, file, "/", "strain_shift", 0, &has));
+  if (has) HM_CALL(ReadData(d, file, "/", "strain_shift", 1, &dim5, NULL, d->shift));
+
+  HM_CALL(Exists(d, file, "/", "1D", 0, &has));
+  if (has) {
+    CallH5Id(g1, H5Gopen2(file, "1D", H5P_DEFAULT));
+    HM_CALL(CheckMembers(d, g1, "/1D/", HYLCMAT_N1D, HylcmatNames1D));
+    for (int k = 0; k < HYLCMAT_N1D; k++) {
+      hylcmat_term1d *s = &d->s1[d->n1];
+      char            path[64];
+      hsize_t         n = 0;
+      HM_CALL(Exists(d, g1, "/1D/", HylcmatNames1D[k], 0, &has));
+      if (!has) continue;
+      snprintf(path, sizeof(path), "/1D/%s/", HylcmatNames1D[k]);
+      CallH5Id(g, H5Gopen2(g1, HylcmatNames1D[k], H5P_DEFAULT));
+      HM_CALL(ReadAttrLong(d, g, path, "k", &v));
+      HM_CHECK(v == k, d->E, HYLCMAT_ERR_CONTENT, "%s: %s@k = %lld, expected %d", d->name, path, v, (int)k);
+      s->k = k;
+      HM_CALL(ReadExt(d, g, path, &s->ext));
+      d->n1++;
+      HM_CALL(ReadData(d, g, path, "t", 1, &n, (double **)&s->t, NULL));
+      s->n = (int)n;
+      HM_CALL(ReadData(d, g, path, "p", 1, &n, (double **)&s->p, NULL));
+      HM_CALL(ReadData(d, g, path, "m", 1, &n, (double **)&s->m, NULL));
+      CallH5(H5Gclose(g));
+    }
+    CallH5(H5Gclose(g1));
+  }
+  HM_CALL(Exists(d, file, "/", "2D", 0, &has));
+  if (has) {
+    CallH5Id(g2, H5Gopen2(file, "2D", H5P_DEFAULT));
+    HM_CALL(CheckMembers(d, g2, "/2D/", HYLCMAT_N2D, HylcmatNames2D));
+    for (int q = 0; q < HYLCMAT_N2D; q++) {
+      hylcmat_term2d *s = &d->s2[d->n2];
+      char            path[64];
+      hsize_t         nu = 0, nv = 0, dims[2];
+      long long       k1;
+      HM_CALL(Exists(d, g2, "/2D/", HylcmatNames2D[q], 0, &has));
+      if (!has) continue;
+      snprintf(path, sizeof(path), "/2D/%s/", HylcmatNames2D[q]);
+      CallH5Id(g, H5Gopen2(g2, HylcmatNames2D[q], H5P_DEFAULT));
+      HM_CALL(ReadAttrLong(d, g, path, "k0", &v));
+      HM_CALL(ReadAttrLong(d, g, path, "k1", &k1));
+      HM_CHECK(v == HylcmatPairs[q][0] && k1 == HylcmatPairs[q][1], d->E, HYLCMAT_ERR_CONTENT, "%s: %s has (k0, k1) = (%lld, %lld), expected (%d, %d)", d->name, path, v, k1, (int)HylcmatPairs[q][0], (int)HylcmatPairs[q][1]);
+      s->k0 = HylcmatPairs[q][0];
+      s->k1 = HylcmatPairs[q][1];
+      HM_CALL(ReadExt(d, g, path, &s->ext));
+      d->n2++;
+      HM_CALL(ReadData(d, g, path, "tu", 1, &nu, (double **)&s->tu, NULL));
+      HM_CALL(ReadData(d, g, path, "tv", 1, &nv, (double **)&s->tv, NULL));
+      s->nu   = (int)nu;
+      s->nv   = (int)nv;
+      dims[0] = nv;
+      dims[1] = nu;
+      HM_CALL(ReadData(d, g, path, "p", 2, dims, (double **)&s->p, NULL));
+      HM_CALL(ReadData(d, g, path, "mu", 2, dims, (double **)&s->mu, NULL));
+      HM_CALL(ReadData(d, g, path, "mv", 2, dims, (double **)&s->mv, NULL));
+      HM_CALL(ReadData(d, g, path, "muv", 2, dims, (double **)&s->muv, NULL));
+      CallH5(H5Gclose(g));
+    }
+    CallH5(H5Gclose(g2));
+  }
+  return HYLCMAT_OK;
+}
+
+int hm_parse_hdf5(const char *name, const void *image, size_t len, hm_err *E, hylcmat **m)
+{
+  hid_t       fapl, file;
+  H5E_auto2_t efunc;
+  void       *edata;
+  hm_doc      d;
+  int         ierr;
+
+  hm_doc_init(&d, name, E);
+  H5Eget_auto2(H5E_DEFAULT, &efunc, &edata);
+  H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
+  fapl = H5Pcreate(H5P_FILE_ACCESS);
+  if (fapl >= 0 && (H5Pset_fapl_core(fapl, 1 << 16, 0) < 0 || H5Pset_file_image(fapl, (void *)image, len) < 0 || H5Pset_fclose_degree(fapl, H5F_CLOSE_STRONG) < 0)) {
+    H5Pclose(fapl);
+    fapl = -1;
+  }
+  file = fapl >= 0 ? H5Fopen(IMAGE_NAME, H5F_ACC_RDONLY, fapl) : -1;
+  if (file < 0) {
+    char msg[256];
+    ErrorText(msg);
+    if (fapl >= 0) H5Pclose(fapl);
+    H5Eset_auto2(H5E_DEFAULT, efunc, edata);
+    return hm_fail(E, HYLCMAT_ERR_READ, "%s: cannot open as HDF5 (damaged or truncated file?)%s", name, msg);
+  }
+  ierr = ReadContents(&d, file);
+  H5Fclose(file);
+  H5Pclose(fapl);
+  H5Eset_auto2(H5E_DEFAULT, efunc, edata);
+  if (ierr) {
+    hm_doc_free(&d);
+    return ierr;
+  }
+  return hm_doc_install(&d, m);
+}
+#else
+typedef int hylcmat_no_hdf5; /* ISO C: a translation unit is not empty */
+#endif
