@@ -103,7 +103,7 @@ $(LIB): $(LIB_OBJ)
 
 $(SOLIB): $(LIB_OBJ)
 	@$(if $(Q),echo "  LD      $@")
-	$(Q)$(CC) -shared -Wl,-soname,libhylc.so.$(HYLC_SOVERSION) -o $@.$(HYLC_SOVERSION) $^ $(LDLIBS) && ln -sf libhylc.so.$(HYLC_SOVERSION) $@
+	$(Q)$(CC) $(LDFLAGS) -shared -Wl,-soname,libhylc.so.$(HYLC_SOVERSION) -o $@.$(HYLC_SOVERSION) $^ $(LDLIBS) && ln -sf libhylc.so.$(HYLC_SOVERSION) $@
 
 # ---- hylcmat: the material model alone, C99, libc + libm (include/hylcmat.h, src/hylcmat/) ----------
 # Built with the system C compiler and no PETSc/MPI/HDF5 flags. HYLCMAT_WITH_HDF5=1 adds the HDF5
@@ -153,7 +153,7 @@ MANIFEST   := $(DATADIR)/hylc/install-manifest.txt
 HYLC_VERSION := $(shell sed -n 's/^\#define HYLC_VERSION_STRING "\(.*\)"/\1/p' include/hylc/sys.h)
 
 install: lib hylcmat apps
-	@PREFIX='$(PREFIX)' DESTDIR='$(DESTDIR)' LIBDIR='$(LIBDIR)' INCDIR='$(INCDIR)' BINDIR='$(BINDIR)' \
+	@PREFIX='$(PREFIX)' DESTDIR='$(DESTDIR)' DATADIR='$(DATADIR)' LIBDIR='$(LIBDIR)' INCDIR='$(INCDIR)' BINDIR='$(BINDIR)' \
 	  PCDIR='$(PCDIR)' DOCDIR='$(DOCDIR)' MANIFEST='$(MANIFEST)' BUILD='$(BUILD)' VERSION='$(HYLC_VERSION)' \
 	  HYLC_SOVERSION='$(HYLC_SOVERSION)' HYLCMAT_SOVERSION='$(HYLCMAT_SOVERSION)' \
 	  PC_REQUIRES='$(PKGS)' PC_LIBS_PRIVATE='-lmetis -lm' HM_LIBS='$(HM_LIBS)' \
