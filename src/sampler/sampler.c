@@ -20,6 +20,8 @@ struct _n_HylcSampler {
   PetscBool           resume, overwrite;
   HylcJournal         journal;  /* rank 0: open and locked from HylcSamplerSetUp() to the end of the run */
   char               *identity; /* rank 0: the run's identity text (HylcSamplesIdentity) */
+  unsigned char      *done;     /* HylcSamplerRun's scratch (owned here, so an error exit frees it too): */
+  HylcSampleRecord   *recs;     /* samples done, and one batch of records */
   PetscInt            batch;
   PetscReal           progress; /* seconds between progress lines */
   long                nsamples;
@@ -54,6 +56,7 @@ PetscErrorCode HylcSamplerDestroy(HylcSampler *s)
   if (!*s) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(HylcJournalClose(&(*s)->journal));
   PetscCall(PetscFree((*s)->identity));
+  PetscCall(PetscFree2((*s)->done, (*s)->recs));
   PetscCall(HylcMicroDestroy(&(*s)->micro));
   PetscCall(HylcPatternDestroy(&(*s)->pat));
   PetscCall(PetscFree(*s));
@@ -345,7 +348,10 @@ PetscErrorCode HylcSamplerRun(HylcSampler S)
   PetscCall(PetscLogEventBegin(HYLC_SamplerRun, 0, 0, 0, 0));
   PetscCall(PetscSNPrintf(jpath, sizeof(jpath), "%s.journal", S->output));
   PetscCheck(S->rank || J, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE, "Call HylcSamplerSetUp() first");
-  PetscCall(PetscMalloc1(S->nsamples + 1, &done));
+  PetscCall(PetscFree2(S->done, S->recs));
+  PetscCall(PetscMalloc2(S->nsamples + 1, &S->done, S->batch, &S->recs));
+  done = S->done;
+  recs = S->recs;
   PetscCall(PetscArrayzero(done, S->nsamples + 1));
   PetscCall(PetscMemzero(&pg, sizeof(pg)));
   pg.total = S->nsamples;
@@ -360,7 +366,6 @@ PetscErrorCode HylcSamplerRun(HylcSampler S)
   PetscCallMPI(MPI_Bcast(done, (PetscMPIInt)S->nsamples, MPI_UNSIGNED_CHAR, 0, S->comm));
   PetscCall(PetscTime(&pg.t0));
   pg.last = pg.t0;
-  PetscCall(PetscMalloc1(S->batch, &recs));
   /* dynamic scheduling: the next batch comes from a shared counter on rank 0 (MPI one-sided atomic
      fetch-and-add, no involvement of rank 0); which rank solves a sample does not change its result */
   const long nb      = (S->nsamples + S->batch - 1) / S->batch;
@@ -402,17 +407,18 @@ PetscErrorCode HylcSamplerRun(HylcSampler S)
     const unsigned char    *jd;
     PetscInt                nd;
     char                   *opts = NULL;
+    PetscErrorCode          ierr;
     PetscCall(HylcJournalGetDone(J, &nd, &jd));
     PetscCall(HylcJournalGetRecords(J, &all));
     PetscCall(PetscOptionsGetAll(NULL, &opts));
-    PetscCall(HylcSamplesWriteHDF5WithIdentity(S->output, S->nsamples, all, jd, S->pat, &S->model, opts, S->identity));
+    ierr = HylcSamplesWriteHDF5WithIdentity(S->output, S->nsamples, all, jd, S->pat, &S->model, opts, S->identity);
     PetscCall(PetscFree(opts));
+    PetscCall(ierr);
     PetscCall(PetscPrintf(PETSC_COMM_SELF, "[sampler] wrote %s: %ld samples, %ld not converged\n", S->output, (long)nd, pg.failed));
     if (S->rawdir[0]) PetscCall(ExportRaw(S, all, jd));
     PetscCall(HylcJournalClose(&S->journal));
   }
-  PetscCall(PetscFree(recs));
-  PetscCall(PetscFree(done));
+  PetscCall(PetscFree2(S->done, S->recs));
   PetscCallMPI(MPI_Barrier(S->comm));
   PetscCallMPI(MPI_Win_free(&win));
   PetscCall(PetscLogEventEnd(HYLC_SamplerRun, 0, 0, 0, 0));
