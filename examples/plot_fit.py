@@ -16,8 +16,8 @@ OUTDIR   created if needed; receives one PNG per term:
 --dpi    resolution of the PNGs (default 110)
 
 Needs Debian's python3-numpy, python3-h5py and python3-matplotlib (use /usr/bin/python3: a pyenv
-python3 first on PATH will not see them). The spline evaluation is the cubic / bicubic Hermite form
-with linear extrapolation of include/hylc/spline.h (ARCSim-HYLC's HermiteSpline1D/2D).
+python3 first on PATH will not see them). The model is evaluated by the hylc Python module (python/hylc
+over build/libhylcmat.so, the evaluation of hylc-eval; docs/library.md).
 """
 import json
 import os
@@ -30,6 +30,10 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+# the hylc Python module of this checkout (python/hylc, over build/libhylcmat.so; docs/library.md)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
+import hylc  # noqa: E402
+
 TERMS = ["zero", "sx", "sa", "sy", "II00", "II11", "sx-sa", "sx-sy", "sx-II00", "sx-II11", "sa-sy",
          "sa-II00", "sa-II11", "sy-II00", "sy-II11"]
 PAIRS = [(0, 1), (0, 2), (0, 3), (0, 4), (1, 2), (1, 3), (1, 4), (2, 3), (2, 4)]
@@ -38,49 +42,16 @@ STRAIN_INDEX = [0, 1, 2, 3, 5]  # position of coordinate c in (sx, sa, sy, II00,
 UNITS = ["", "", "", " [1/m]", " [1/m]"]
 
 
-# ---------------------------------------------------------------- Hermite splines (linear extrapolation)
-def _basis(t, x):
-    """Weights (a0, a1) of the values and (b0, b1) of the slopes at knots i, i+1 for points x."""
-    t = np.asarray(t, float)
-    x = np.asarray(x, float)
-    n = len(t)
-    i = np.clip(np.searchsorted(t, x, side="right") - 1, 0, n - 2)
-    h = t[i + 1] - t[i]
-    s = (x - t[i]) / h
-    a0 = 2 * s**3 - 3 * s**2 + 1
-    a1 = -2 * s**3 + 3 * s**2
-    b0 = (s**3 - 2 * s**2 + s) * h
-    b1 = (s**3 - s**2) * h
-    left, right = x < t[0], x >= t[-1]
-    a0 = np.where(left, 1.0, np.where(right, 0.0, a0))
-    a1 = np.where(left, 0.0, np.where(right, 1.0, a1))
-    b0 = np.where(left, x - t[0], np.where(right, 0.0, b0))
-    b1 = np.where(left, 0.0, np.where(right, x - t[-1], b1))
-    return i, (a0, a1), (b0, b1)
-
-
-def eval1d(s, x):
-    i, a, b = _basis(s["t"], x)
-    p, m = np.asarray(s["p"], float), np.asarray(s["m"], float)
-    return a[0] * p[i] + a[1] * p[i + 1] + b[0] * m[i] + b[1] * m[i + 1]
-
-
-def eval2d(s, u, v):
-    nu = len(s["tu"])
-    iu, au, bu = _basis(s["tu"], u)
-    iv, av, bv = _basis(s["tv"], v)
-    P, MU, MV, MUV = (np.asarray(s[k], float) for k in ("p", "mu", "mv", "muv"))
-    f = 0.0
-    for cu in (0, 1):
-        for cv in (0, 1):
-            k = (iv + cv) * nu + (iu + cu)
-            f = f + au[cu] * av[cv] * P[k] + bu[cu] * av[cv] * MU[k] + au[cu] * bv[cv] * MV[k] + bu[cu] * bv[cv] * MUV[k]
-    return f
-
-
 # ---------------------------------------------------------------- inputs
 def load_model(path):
-    """dict with const, scale[5], 1D {k: spline}, 2D {(k0, k1): spline}"""
+    """dict with the material ("material": hylc.Material, evaluated by libhylcmat), const, scale[5], and the
+    knots of the terms, 1D {k: spline}, 2D {(k0, k1): spline} (for drawing them)"""
+    model = _load_tables(path)
+    model["material"] = hylc.Material(path)
+    return model
+
+
+def _load_tables(path):
     with open(path, "rb") as fh:
         head = fh.read(8)
     if head.startswith(b"\x89HDF"):
@@ -115,11 +86,8 @@ def load_samples(path):
     with open(path, "rb") as fh:
         head = fh.read(8)
     if head.startswith(b"\x89HDF"):
-        import h5py
-        with h5py.File(path, "r") as f:
-            s = f["samples"]
-            ok = s["status"][:] == 0
-            return s["strain"][:][ok], s["psi"][:][ok], s["term"][:][ok]
+        s = hylc.read_samples(path)  # the usable rows (status 0)
+        return s["strain"], s["psi"], s["term"]
     rows = np.loadtxt(path, ndmin=2)
     n = len(rows)
     n1 = 0
@@ -132,16 +100,10 @@ def load_samples(path):
     return rows[:, :6], rows[:, 6], term
 
 
-# ---------------------------------------------------------------- the model on the axes (II01 = 0)
+# ---------------------------------------------------------------- the model
 def model_psi(model, z):
-    """f0 + 1D terms + 2D terms at strains z (N x 6) with II01 = 0 (the samples of the plan)"""
-    S = [z[:, STRAIN_INDEX[c]] / model["scale"][c] for c in range(5)]
-    f = np.full(len(z), model["const"])
-    for k in sorted(model["1D"]):
-        f = f + eval1d(model["1D"][k], S[k])
-    for k0, k1 in sorted(model["2D"]):
-        f = f + eval2d(model["2D"][(k0, k1)], S[k0], S[k1])
-    return f
+    """Psi at strains z (N x 6), by the hylc module (libhylcmat: the evaluation of hylc-eval)"""
+    return model["material"].psi(np.ascontiguousarray(z, dtype=float))
 
 
 def plot_1d(model, z, psi, c, out, dpi=110):
