@@ -4,36 +4,17 @@
    threads at once. */
 #ifdef HYLCMAT_WITH_HDF5
 #  include "hylcmatimpl.h"
-#  include <hdf5.h>
+#  include <hylc/private/h5util.h>
 #  include <stdio.h>
 #  include <stdlib.h>
 #  include <string.h>
-
-#  define MATERIAL_FORMAT         "hylc-material"
-#  define MATERIAL_FORMAT_VERSION 1
-/* the name of the in-memory files: HDF5's core driver refuses to open an image under a name that
-   exists on disk, so it must not */
-#  define IMAGE_NAME "/nonexistent-hylc-directory/hylc-material-image.h5"
-
-static herr_t ErrorWalk(unsigned n, const H5E_error2_t *e, void *ctx)
-{
-  (void)n;
-  if (e->desc && e->desc[0]) snprintf((char *)ctx, 256, ", HDF5: %s", e->desc);
-  return 0;
-}
-
-static void ErrorText(char buf[256])
-{
-  buf[0] = 0;
-  H5Ewalk2(H5E_DEFAULT, H5E_WALK_DOWNWARD, ErrorWalk, buf);
-}
 
 /* CallH5(call): a negative return of a raw HDF5 call becomes an error naming the call and the file (d) */
 #  define CallH5(...)                                                                                         \
     do {                                                                                                      \
       if ((__VA_ARGS__) < 0) {                                                                                \
         char h5msg_[256];                                                                                     \
-        ErrorText(h5msg_);                                                                                    \
+        HylcH5ErrorText(h5msg_);                                                                              \
         return hm_fail(d->E, HYLCMAT_ERR_HDF5, "HDF5 call %s failed on %s%s", #__VA_ARGS__, d->name, h5msg_); \
       }                                                                                                       \
     } while (0)
@@ -192,9 +173,9 @@ static int ReadContents(hm_doc *d, hid_t file)
     HM_CHECK(e > 0, d->E, HYLCMAT_ERR_CONTENT, "%s: an HDF5 file without the root attribute 'format': not a hylc material file", d->name);
   }
   HM_CALL(ReadAttrString(d, file, "/", "format", fmt, sizeof(fmt)));
-  HM_CHECK(!strcmp(fmt, MATERIAL_FORMAT), d->E, HYLCMAT_ERR_CONTENT, "%s: an HDF5 file of format '%s', not a hylc material file ('%s')", d->name, fmt, MATERIAL_FORMAT);
+  HM_CHECK(!strcmp(fmt, HYLC_MATERIAL_FORMAT), d->E, HYLCMAT_ERR_CONTENT, "%s: an HDF5 file of format '%s', not a hylc material file ('%s')", d->name, fmt, HYLC_MATERIAL_FORMAT);
   HM_CALL(ReadAttrLong(d, file, "/", "format_version", &version));
-  HM_CHECK(version >= 1 && version <= MATERIAL_FORMAT_VERSION, d->E, HYLCMAT_ERR_CONTENT, "%s: material format version %lld is not supported (this hylc reads version %d)", d->name, version, MATERIAL_FORMAT_VERSION);
+  HM_CHECK(version >= 1 && version <= HYLC_MATERIAL_FORMAT_VERSION, d->E, HYLCMAT_ERR_CONTENT, "%s: material format version %lld is not supported (this hylc reads version %d)", d->name, version, HYLC_MATERIAL_FORMAT_VERSION);
   HM_CALL(CheckMembers(d, file, "/", 6, top));
   HM_CALL(ReadScalar(d, file, "density", &d->density));
   HM_CALL(ReadScalar(d, file, "constant", &d->C0));
@@ -287,10 +268,10 @@ int hm_parse_hdf5(const char *name, const void *image, size_t len, hm_err *E, hy
     H5Pclose(fapl);
     fapl = -1;
   }
-  file = fapl >= 0 ? H5Fopen(IMAGE_NAME, H5F_ACC_RDONLY, fapl) : -1;
+  file = fapl >= 0 ? H5Fopen(HYLC_H5_IMAGE_NAME, H5F_ACC_RDONLY, fapl) : -1;
   if (file < 0) {
     char msg[256];
-    ErrorText(msg);
+    HylcH5ErrorText(msg);
     if (fapl >= 0) H5Pclose(fapl);
     H5Eset_auto2(H5E_DEFAULT, efunc, edata);
     return hm_fail(E, HYLCMAT_ERR_READ, "%s: cannot open as HDF5 (damaged or truncated file?)%s", name, msg);

@@ -2,39 +2,20 @@
    core driver), which rank 0 writes with plain, atomic stdio. The reader is hylcmat's (src/hylcmat/h5.c,
    built with HYLCMAT_WITH_HDF5 into libhylc). */
 #include <hylc/private/materialimpl.h>
-#include <hdf5.h>
+#include <hylc/private/h5util.h>
 #include <string.h>
 #include <time.h>
 #include <unistd.h>
 
-#define MATERIAL_FORMAT         "hylc-material"
-#define MATERIAL_FORMAT_VERSION 1
-/* the name of the in-memory files: HDF5's core driver refuses to open an image under a name that
-   exists on disk, so it must not */
-#define IMAGE_NAME "/nonexistent-hylc-directory/hylc-material-image.h5"
-
 /* what the HDF5 calls work on, for messages */
 #define H5File "the in-memory HDF5 image"
-
-static herr_t ErrorWalk(unsigned n, const H5E_error2_t *e, void *ctx)
-{
-  (void)n;
-  if (e->desc && e->desc[0]) snprintf((char *)ctx, 256, ", HDF5: %s", e->desc);
-  return 0;
-}
-
-static void ErrorText(char buf[256])
-{
-  buf[0] = 0;
-  H5Ewalk2(H5E_DEFAULT, H5E_WALK_DOWNWARD, ErrorWalk, buf);
-}
 
 /* CallH5(call): a negative return of a raw HDF5 call becomes a PETSc error naming the call and the file */
 #define CallH5(...)                                                                                         \
   do {                                                                                                      \
     if ((__VA_ARGS__) < 0) {                                                                                \
       char h5msg_[256];                                                                                     \
-      ErrorText(h5msg_);                                                                                    \
+      HylcH5ErrorText(h5msg_);                                                                              \
       SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5 call %s failed on %s%s", #__VA_ARGS__, H5File, h5msg_); \
     }                                                                                                       \
   } while (0)
@@ -119,8 +100,8 @@ static PetscErrorCode WriteContents(hid_t file, HylcMaterial m, const char optio
   CallH5(H5get_libversion(&maj, &min, &rel));
   snprintf(h5v, sizeof(h5v), "%u.%u.%u", maj, min, rel);
   if (!optionsText) PetscCall(PetscOptionsGetAll(NULL, &allopts));
-  PetscCall(AttrString(file, "format", MATERIAL_FORMAT));
-  PetscCall(AttrLong(file, "format_version", MATERIAL_FORMAT_VERSION));
+  PetscCall(AttrString(file, "format", HYLC_MATERIAL_FORMAT));
+  PetscCall(AttrLong(file, "format_version", HYLC_MATERIAL_FORMAT_VERSION));
   PetscCall(AttrString(file, "description", "Homogenized yarn-level cloth material: Psi(s) = constant + 1D terms f_k(s_k / sigma_k) + 2D terms f_k0k1(s_k0 / sigma_k0, s_k1 / sigma_k1), cubic/bicubic Hermite splines in normalized strains, bending terms split over the eigenvalues of II (docs/material.md). Equivalent to the ARCSim-HYLC JSON."));
   PetscCall(AttrString(file, "hylc_version", HYLC_VERSION_STRING));
   PetscCall(AttrString(file, "petsc_version", petscv));
@@ -210,10 +191,10 @@ PetscErrorCode HylcMaterialFormatHDF5_Private(HylcMaterial m, const char options
     H5Pclose(fapl);
     fapl = -1;
   }
-  file = fapl >= 0 ? H5Fcreate(IMAGE_NAME, H5F_ACC_TRUNC, H5P_DEFAULT, fapl) : -1;
+  file = fapl >= 0 ? H5Fcreate(HYLC_H5_IMAGE_NAME, H5F_ACC_TRUNC, H5P_DEFAULT, fapl) : -1;
   if (file < 0) {
     char msg[256];
-    ErrorText(msg);
+    HylcH5ErrorText(msg);
     if (fapl >= 0) H5Pclose(fapl);
     H5Eset_auto2(H5E_DEFAULT, efunc, edata);
     SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "Cannot create an in-memory HDF5 file%s", msg);

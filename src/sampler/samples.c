@@ -5,7 +5,7 @@
 #include <hylc/samples.h>
 #include <hylc/sha256.h>
 #include <petsc/private/petscimpl.h>
-#include <hdf5.h>
+#include <hylc/private/h5util.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <math.h>
@@ -444,27 +444,13 @@ PetscErrorCode HylcJournalClose(HylcJournal *journal)
 /* The file the current HDF5 call works on, for error messages (rank-0, single-threaded code). */
 static const char *HylcH5File = "?";
 
-/* the innermost description on HDF5's error stack (", HDF5: <text>" or "") */
-static herr_t H5ErrorWalk(unsigned n, const H5E_error2_t *e, void *ctx)
-{
-  (void)n;
-  if (e->desc && e->desc[0]) snprintf((char *)ctx, 256, ", HDF5: %s", e->desc);
-  return 0;
-}
-
-static void HylcHDF5ErrorText(char buf[256])
-{
-  buf[0] = 0;
-  H5Ewalk2(H5E_DEFAULT, H5E_WALK_DOWNWARD, H5ErrorWalk, buf);
-}
-
 /* HylcCallHDF5(call): a negative return of a raw HDF5 call becomes a PETSc error naming the call, the
    file and HDF5's own description. HylcCallHDF5Id(id, call) also stores the returned hid_t. */
 #define HylcCallHDF5(...)                                                                                            \
   do {                                                                                                               \
     if ((__VA_ARGS__) < 0) {                                                                                         \
       char hylc_h5msg_[256];                                                                                         \
-      HylcHDF5ErrorText(hylc_h5msg_);                                                                                \
+      HylcH5ErrorText(hylc_h5msg_);                                                                                  \
       SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5 call %s failed on %s%s", #__VA_ARGS__, HylcH5File, hylc_h5msg_); \
     }                                                                                                                \
   } while (0)
@@ -833,7 +819,7 @@ static PetscErrorCode BuildImage(const char path[], long nsamples, const HylcSam
   *size  = 0;
   HylcCallHDF5Id(fapl, H5Pcreate(H5P_FILE_ACCESS));
   if (H5Pset_fclose_degree(fapl, H5F_CLOSE_STRONG) < 0 || H5Pset_fapl_core(fapl, 1 << 20, 0) < 0 || (file = H5Fcreate(path, H5F_ACC_TRUNC, H5P_DEFAULT, fapl)) < 0) {
-    HylcHDF5ErrorText(msg);
+    HylcH5ErrorText(msg);
     H5Pclose(fapl);
     SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "Cannot create the samples file %s in memory%s", path, msg);
   }
@@ -842,13 +828,13 @@ static PetscErrorCode BuildImage(const char path[], long nsamples, const HylcSam
   if (!ierr && identity) ierr = WriteProvenance(file, identity);
   if (!ierr) {
     if (H5Fflush(file, H5F_SCOPE_GLOBAL) < 0 || (n = H5Fget_file_image(file, NULL, 0)) <= 0) {
-      HylcHDF5ErrorText(msg);
+      HylcH5ErrorText(msg);
       H5Fclose(file);
       SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "Cannot build the samples file %s%s", path, msg);
     }
     ierr = PetscMalloc((size_t)n, image);
     if (!ierr && H5Fget_file_image(file, *image, (size_t)n) != n) {
-      HylcHDF5ErrorText(msg);
+      HylcH5ErrorText(msg);
       H5Fclose(file);
       PetscCall(PetscFree(*image));
       SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "Cannot build the samples file %s%s", path, msg);
@@ -1022,7 +1008,7 @@ PetscErrorCode HylcSamplesReadHDF5(const char path[], long *nsamples, HylcSample
   file = H5Fopen(path, H5F_ACC_RDONLY, fapl >= 0 ? fapl : H5P_DEFAULT);
   if (file < 0) {
     char msg[256];
-    HylcHDF5ErrorText(msg);
+    HylcH5ErrorText(msg);
     if (fapl >= 0) H5Pclose(fapl);
     H5Eset_auto2(H5E_DEFAULT, efunc, edata);
     SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot open the samples file %s%s", path, msg);
