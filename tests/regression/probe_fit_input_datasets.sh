@@ -50,26 +50,21 @@ open("raw/data.txt", "w").write("\n".join(" ".join(repr(v) for v in r) for r in 
 open("raw/info.txt", "w").write("density 0.2\n")
 PY
 
-expect_fail() { # message-regex args...
-  local want=$1 st; shift
-  "$tool" "$@" >err.txt 2>&1
-  st=$?
-  [ $st -eq 0 ] && { cat err.txt; die "accepted: $*"; }
-  [ $st -gt 128 ] && { cat err.txt; die "crashed (exit $st): $*"; }
-  [ "$(wc -l <err.txt)" -le 3 ] || { cat err.txt; die "more than three lines: $*"; }
-  grep -Eq -- "$want" err.txt || { cat err.txt; die "message lacks /$want/: $*"; }
-  grep -Eq 'PETSC ERROR|HDF5-DIAG' err.txt && { cat err.txt; die "traceback: $*"; }
-  [ -e out.json ] && die "out.json written by a failed run: $*"
+. "$HYLC_ROOT/tests/regression/probe_common.inc" || exit 1
+FORBID='PETSC ERROR|HDF5-DIAG'
+fit_fail() { # message-regex hylc-fit-args...: refused, and no output written
+  expect_fail "$1" "$tool" "${@:2}"
+  [ -e out.json ] && die "out.json written by a failed run: ${*:2}"
   return 0
 }
-expect_fail 'short.h5 \(-fit_input\): dataset /samples/psi has shape \(4350\), expected \(4351\)' -fit_input short.h5 -fit_json out.json
-expect_fail 'nopsi.h5 \(-fit_input\): no dataset /samples/psi$' -fit_input nopsi.h5 -fit_json out.json
-expect_fail 'cols.h5 \(-fit_input\): dataset /samples/strain has shape \(4351 x 5\), expected \(N x 6\)' -fit_input cols.h5 -fit_json out.json
-expect_fail 'ftype.h5 \(-fit_input\): dataset /samples/term holds floating-point numbers, expected integers' -fit_input ftype.h5 -fit_json out.json
-expect_fail 'nosamples.h5 \(-fit_input\): no group /samples' -fit_input nosamples.h5 -fit_json out.json
-expect_fail 'raw/data.txt: -fit_raw_n1 0 and -fit_raw_n2 2147483598 must be in 0..19' -fit_input raw -fit_raw_n2 2147483598 -fit_json out.json
-expect_fail 'raw/data.txt: -fit_raw_n1 2147483647 and -fit_raw_n2 0 must be in 0..19' -fit_input raw -fit_raw_n1 2147483647 -fit_json out.json
-expect_fail 'raw/data.txt: 19 rows do not make 5 1D blocks of n1 = 1 rows and 9 2D blocks of n2 x n2 = 1 x 1' -fit_input raw -fit_raw_n1 1 -fit_raw_n2 1 -fit_json out.json
+fit_fail 'short.h5 \(-fit_input\): dataset /samples/psi has shape \(4350\), expected \(4351\)' -fit_input short.h5 -fit_json out.json
+fit_fail 'nopsi.h5 \(-fit_input\): no dataset /samples/psi$' -fit_input nopsi.h5 -fit_json out.json
+fit_fail 'cols.h5 \(-fit_input\): dataset /samples/strain has shape \(4351 x 5\), expected \(N x 6\)' -fit_input cols.h5 -fit_json out.json
+fit_fail 'ftype.h5 \(-fit_input\): dataset /samples/term holds floating-point numbers, expected integers' -fit_input ftype.h5 -fit_json out.json
+fit_fail 'nosamples.h5 \(-fit_input\): no group /samples' -fit_input nosamples.h5 -fit_json out.json
+fit_fail 'raw/data.txt: -fit_raw_n1 0 and -fit_raw_n2 2147483598 must be in 0..19' -fit_input raw -fit_raw_n2 2147483598 -fit_json out.json
+fit_fail 'raw/data.txt: -fit_raw_n1 2147483647 and -fit_raw_n2 0 must be in 0..19' -fit_input raw -fit_raw_n1 2147483647 -fit_json out.json
+fit_fail 'raw/data.txt: 19 rows do not make 5 1D blocks of n1 = 1 rows and 9 2D blocks of n2 x n2 = 1 x 1' -fit_input raw -fit_raw_n1 1 -fit_raw_n2 1 -fit_json out.json
 # the raw data's block sizes are still found (the row check passes, the fit then runs)
 "$tool" -fit_input raw -fit_raw_n1 2 -fit_raw_n2 1 -fit_terms sx -fit_min_samples_1d 2 -fit_knots1d 2 >raw.txt 2>&1
 grep -q 'rows do not make' raw.txt && { cat raw.txt; die "raw: 5 x 2 + 9 x 1 rows refused"; }

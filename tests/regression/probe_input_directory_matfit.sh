@@ -6,17 +6,8 @@
 set -u
 cd "$HYLC_TMP"
 die() { echo "FAIL: $*"; exit 1; }
-expect_fail() { # message-regex command...
-  local want=$1 st; shift
-  "$@" >err.txt 2>&1
-  st=$?
-  [ $st -eq 0 ] && { cat err.txt; die "accepted: $*"; }
-  [ $st -gt 128 ] && { cat err.txt; die "crashed (exit $st): $*"; }
-  [ "$(wc -l <err.txt)" -le 3 ] || { cat err.txt; die "more than three lines: $*"; }
-  grep -Eq -- "$want" err.txt || { cat err.txt; die "message lacks /$want/: $*"; }
-  grep -Eq 'PETSC ERROR|too large' err.txt && { cat err.txt; die "traceback or size message: $*"; }
-  return 0
-}
+. "$HYLC_ROOT/tests/regression/probe_common.inc" || exit 1
+FORBID='PETSC ERROR|too large'
 mkdir -p adir empty raw1/data.txt raw2
 printf '0.1 0 0 0 0 0 0.01\n' >raw2/data.txt
 mkdir -p raw2/info.txt

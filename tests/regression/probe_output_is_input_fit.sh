@@ -19,30 +19,24 @@ cat >m.json <<'JSON'
 JSON
 sums() { md5sum s.h5 raw/data.txt raw/info.txt m.json; }
 sums >before.txt
-expect_fail() { # message-regex command...
-  local want=$1 st; shift
-  "$@" >err.txt 2>&1
-  st=$?
-  [ $st -eq 0 ] && { cat err.txt; die "accepted: $*"; }
-  [ $st -gt 128 ] && { cat err.txt; die "crashed (exit $st): $*"; }
-  [ "$(wc -l <err.txt)" -le 3 ] || { cat err.txt; die "more than three lines: $*"; }
-  grep -Eq -- "$want" err.txt || { cat err.txt; die "message lacks /$want/: $*"; }
-  grep -Eq 'PETSC ERROR|^samples:|^psi:' err.txt && { cat err.txt; die "traceback or work done: $*"; }
-  sums | cmp -s - before.txt || die "an input changed: $*"
-  return 0
+. "$HYLC_ROOT/tests/regression/probe_common.inc" || exit 1
+FORBID='PETSC ERROR|^samples:|^psi:'
+check_fail() { # message-regex command...: refused, and no input changed
+  expect_fail "$@"
+  sums | cmp -s - before.txt || die "an input changed: ${*:2}"
 }
-expect_fail 'Output s.h5 \(-fit_output\) is the input s.h5 \(-fit_input\)' $fit -fit_input s.h5 -fit_output s.h5
-expect_fail 'Output ./s.h5 \(-fit_json\) is the input s.h5 \(-fit_input\)' $fit -fit_input s.h5 -fit_json ./s.h5
-expect_fail 'Output hard.h5 \(-fit_output\) is the input s.h5' $fit -fit_input s.h5 -fit_output hard.h5
-expect_fail 'Output sym.h5 \(-fit_json\) is the input s.h5' $fit -fit_input s.h5 -fit_json sym.h5
-expect_fail 'Output sub/../s.h5 \(-fit_output\) is the input s.h5' $fit -fit_input s.h5 -fit_output sub/../s.h5
-expect_fail 'Output raw/data.txt \(-fit_json\) is the input raw/data.txt \(-fit_input\)' $fit -fit_input raw -fit_json raw/data.txt
-expect_fail 'Output raw/info.txt \(-fit_output\) is the input raw/info.txt \(-fit_input\)' $fit -fit_input raw -fit_output raw/info.txt
-expect_fail 'Output raw/info.txt \(-fit_json\) is the input raw/info.txt \(-fit_input\)' $fit -fit_input raw/data.txt -fit_json raw/info.txt
-expect_fail '-fit_output and -fit_json name the same file x.out' $fit -fit_input s.h5 -fit_output x.out -fit_json x.out
-expect_fail 'Output m.json \(-eval_json\) is the input m.json \(-material\)' $eval -material m.json -eval_json m.json -strain 0,0,0,0,0,0
-expect_fail 'Output ./m.json \(-eval_hdf5\) is the input m.json \(-material_file\)' $eval -material_file m.json -eval_hdf5 ./m.json -strain 0,0,0,0,0,0
-expect_fail '-eval_json and -eval_hdf5 name the same file y.out' $eval -material m.json -eval_json y.out -eval_hdf5 y.out
+check_fail 'Output s.h5 \(-fit_output\) is the input s.h5 \(-fit_input\)' $fit -fit_input s.h5 -fit_output s.h5
+check_fail 'Output ./s.h5 \(-fit_json\) is the input s.h5 \(-fit_input\)' $fit -fit_input s.h5 -fit_json ./s.h5
+check_fail 'Output hard.h5 \(-fit_output\) is the input s.h5' $fit -fit_input s.h5 -fit_output hard.h5
+check_fail 'Output sym.h5 \(-fit_json\) is the input s.h5' $fit -fit_input s.h5 -fit_json sym.h5
+check_fail 'Output sub/../s.h5 \(-fit_output\) is the input s.h5' $fit -fit_input s.h5 -fit_output sub/../s.h5
+check_fail 'Output raw/data.txt \(-fit_json\) is the input raw/data.txt \(-fit_input\)' $fit -fit_input raw -fit_json raw/data.txt
+check_fail 'Output raw/info.txt \(-fit_output\) is the input raw/info.txt \(-fit_input\)' $fit -fit_input raw -fit_output raw/info.txt
+check_fail 'Output raw/info.txt \(-fit_json\) is the input raw/info.txt \(-fit_input\)' $fit -fit_input raw/data.txt -fit_json raw/info.txt
+check_fail '-fit_output and -fit_json name the same file x.out' $fit -fit_input s.h5 -fit_output x.out -fit_json x.out
+check_fail 'Output m.json \(-eval_json\) is the input m.json \(-material\)' $eval -material m.json -eval_json m.json -strain 0,0,0,0,0,0
+check_fail 'Output ./m.json \(-eval_hdf5\) is the input m.json \(-material_file\)' $eval -material_file m.json -eval_hdf5 ./m.json -strain 0,0,0,0,0,0
+check_fail '-eval_json and -eval_hdf5 name the same file y.out' $eval -material m.json -eval_json y.out -eval_hdf5 y.out
 [ -e x.out ] || [ -e y.out ] && die "an output was written by a refused run"
 ls ./*.tmp* raw/*.tmp* >/dev/null 2>&1 && die "a temporary file was left behind"
 echo "probe 4.5 (fit, eval): 12 outputs naming an input refused, inputs unchanged"

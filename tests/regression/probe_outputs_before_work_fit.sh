@@ -12,17 +12,8 @@ cat >m.json <<'JSON'
 {"density": 0.3, "strain scale": [1, 1, 1, 100, 100], "coeffs": {"const": 0.5, "1D": [{"k": 0, "t": [0, 1], "p": [0, 1], "m": [0, 2]}], "2D": []}}
 JSON
 mkdir -p adir
-expect_fail() { # message-regex command...
-  local want=$1 st; shift
-  "$@" >err.txt 2>&1
-  st=$?
-  [ $st -eq 0 ] && { cat err.txt; die "accepted: $*"; }
-  [ $st -gt 128 ] && { cat err.txt; die "crashed (exit $st): $*"; }
-  [ "$(wc -l <err.txt)" -le 3 ] || { cat err.txt; die "more than three lines: $*"; }
-  grep -Eq -- "$want" err.txt || { cat err.txt; die "message lacks /$want/: $*"; }
-  grep -Eq 'PETSC ERROR|^samples:|RMS residual|^psi:|^wrote' err.txt && { cat err.txt; die "traceback or work done: $*"; }
-  return 0
-}
+. "$HYLC_ROOT/tests/regression/probe_common.inc" || exit 1
+FORBID='PETSC ERROR|^samples:|RMS residual|^psi:|^wrote'
 expect_fail 'Cannot write adir \(-fit_output\): it is a directory' $fit -fit_input s.h5 -fit_output adir
 expect_fail 'Cannot write adir/ \(-fit_json\): it names a directory' $fit -fit_input s.h5 -fit_json adir/
 expect_fail 'Cannot write no/such/m.json \(-fit_json\): directory no/such does not exist' $fit -fit_input s.h5 -fit_output ok.h5 -fit_json no/such/m.json
