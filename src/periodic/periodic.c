@@ -3,28 +3,101 @@
 
 const char *const HylcSlideConstraints[] = {"none", "global", "per_yarn", "per_family", "HylcSlideConstraint", "HYLC_SLIDE_", NULL};
 
-PetscErrorCode HylcPeriodicCreate(HylcPattern pat, const HylcYarnModel *model, HylcPeriodic *per)
+/*@C
+  HylcPeriodicCreate - Creates a periodic tile: slide constraint global, contact-ghost margin 0.25, pair
+  margin 1.05, constraint tolerance 1e-6, options prefix none (options -periodic_*). Give it a pattern
+  with HylcPeriodicSetPattern() before HylcPeriodicSetUp().
+
+  Collective
+
+  Input Parameter:
+. comm - the communicator (the tile lives on one rank: PETSC_COMM_SELF)
+
+  Output Parameter:
+. per - the new object
+
+  Level: beginner
+
+.seealso: HylcPeriodicSetPattern(), HylcPeriodicSetFromOptions(), HylcPeriodicSetUp(), HylcPeriodicDestroy()
+@*/
+PetscErrorCode HylcPeriodicCreate(MPI_Comm comm, HylcPeriodic *per)
 {
   HylcPeriodic P;
 
   PetscFunctionBegin;
-  PetscCall(PetscNew(&P));
-  PetscCall(PetscObjectReference((PetscObject)pat));
-  P->pat          = pat;
-  P->model        = *model;
+  PetscValidPointer(per, 2);
+  *per = NULL;
+  PetscCall(HylcInitializePackage());
+  PetscCall(PetscHeaderCreate(P, HYLC_PERIODIC_CLASSID, "HylcPeriodic", "Periodic yarn tile", "Periodic", comm, HylcPeriodicDestroy, HylcPeriodicView));
   P->slide        = HYLC_SLIDE_GLOBAL;
   P->marginFactor = 0.25;
   P->pairMargin   = 1.05;
   P->crtol        = 1e-6;
-  PetscCall(HylcPatternGetData(pat, &P->D));
+  PetscCall(HylcMidsurfaceCreate(comm, &P->ms));
+  *per = P;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPeriodicSetPattern - Sets the tile's pattern (referenced, not copied) and yarn model (copied).
+  Discards a previous set-up.
+
+  Not collective
+
+  Input Parameters:
++ P     - the periodic tile
+. pat   - the pattern (set up)
+- model - the yarn model
+
+  Level: beginner
+
+.seealso: HylcPeriodicCreate(), HylcPeriodicGetPattern()
+@*/
+PetscErrorCode HylcPeriodicSetPattern(HylcPeriodic P, HylcPattern pat, const HylcYarnModel *model)
+{
+  HylcPatternData D;
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(P, HYLC_PERIODIC_CLASSID, 1);
+  PetscValidHeaderSpecific(pat, HYLC_PATTERN_CLASSID, 2);
+  PetscValidPointer(model, 3);
+  PetscCall(HylcPatternGetData(pat, &D));
+  PetscCheck(D.nv * (2 * SMAX + 1) * (2 * SMAX + 1) < PETSC_MAX_INT / 2, PetscObjectComm((PetscObject)P), PETSC_ERR_SUP, "Pattern too large for the ghost index");
+  PetscCall(HylcPeriodicReset_Private(P));
+  PetscCall(PetscObjectReference((PetscObject)pat));
+  PetscCall(HylcPatternDestroy(&P->pat));
+  P->pat   = pat;
+  P->D     = D;
+  P->model = *model;
   PetscCall(HylcYarnModelGetConstants(model, P->D.radius, &P->c));
   P->btpar.B       = P->c.B;
   P->btpar.beta    = P->c.beta;
   P->btpar.variant = model->curvature;
   P->N             = P->D.nv;
-  PetscCheck(P->N * (2 * SMAX + 1) * (2 * SMAX + 1) < PETSC_MAX_INT / 2, PETSC_COMM_SELF, PETSC_ERR_SUP, "Pattern too large for the ghost index");
-  PetscCall(HylcMidsurfaceCreate(PETSC_COMM_SELF, &P->ms));
-  *per = P;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPeriodicGetPattern - The tile's pattern (borrowed: do not destroy it), NULL before HylcPeriodicSetPattern().
+
+  Not collective
+
+  Input Parameter:
+. P - the periodic tile
+
+  Output Parameter:
+. pat - the pattern
+
+  Level: intermediate
+
+.seealso: HylcPeriodicSetPattern()
+@*/
+PetscErrorCode HylcPeriodicGetPattern(HylcPeriodic P, HylcPattern *pat)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(P, HYLC_PERIODIC_CLASSID, 1);
+  PetscValidPointer(pat, 2);
+  *pat = P->pat;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -58,58 +131,125 @@ PetscErrorCode HylcPeriodicReset_Private(HylcPeriodic P)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPeriodicDestroy - Destroys a periodic tile (drops a reference; frees it with the last one).
+
+  Collective
+
+  Input Parameter:
+. per - the object (may be NULL); set to NULL
+
+  Level: beginner
+
+.seealso: HylcPeriodicCreate()
+@*/
 PetscErrorCode HylcPeriodicDestroy(HylcPeriodic *per)
 {
   PetscFunctionBegin;
   if (!*per) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscValidHeaderSpecific(*per, HYLC_PERIODIC_CLASSID, 1);
+  if (--((PetscObject)(*per))->refct > 0) {
+    *per = NULL;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   PetscCall(HylcPeriodicReset_Private(*per));
   PetscCall(HylcMidsurfaceDestroy(&(*per)->ms));
   PetscCall(HylcPatternDestroy(&(*per)->pat));
-  PetscCall(PetscFree(*per));
+  PetscCall(PetscHeaderDestroy(per));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPeriodicSetOptionsPrefix - Sets the prefix of the tile's options (-<prefix>periodic_*) and of its
+  midsurface's (-<prefix>macro_*).
+
+  Not collective
+
+  Input Parameters:
++ P      - the periodic tile
+- prefix - the prefix (NULL: none)
+
+  Level: intermediate
+
+.seealso: HylcPeriodicSetFromOptions()
+@*/
 PetscErrorCode HylcPeriodicSetOptionsPrefix(HylcPeriodic P, const char prefix[])
 {
   PetscFunctionBegin;
-  PetscCall(PetscStrncpy(P->prefix, prefix ? prefix : "", sizeof(P->prefix)));
+  PetscValidHeaderSpecific(P, HYLC_PERIODIC_CLASSID, 1);
+  PetscCall(PetscObjectSetOptionsPrefix((PetscObject)P, prefix));
   PetscCall(HylcMidsurfaceSetOptionsPrefix(P->ms, prefix));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /*@C
-  HylcPeriodicSetFromOptions - Options:
-+ -periodic_slide <global>       - slide constraint: none, global (one row), per_yarn (one row per loop),
-                                   per_family (one row per yarn family, invariant under mirrors and under
-                                   the direction in which a file lists each yarn; docs/method.md)
-. -periodic_margin <0.25>        - contact ghosts: copies of edges within max(3 r, margin min(px, py)) of the tile
+  HylcPeriodicSetFromOptions - Reads the tile's options (and the midsurface's). Only reads options: the
+  work is done by HylcPeriodicSetUp().
+
+  Not collective
+
+  Input Parameter:
+. P - the periodic tile
+
+  Options Database Keys:
++ -periodic_slide <global>         - slide constraint: none, global (one row), per_yarn (one row per loop),
+                                     per_family (one row per yarn family, invariant under mirrors and under
+                                     the direction in which a file lists each yarn; docs/method.md) (HylcPeriodicSetSlideConstraint())
+. -periodic_margin <0.25>          - contact ghosts: copies of edges within max(3 r, margin min(px, py)) of the tile (HylcPeriodicSetContactMargin())
+. -periodic_pair_margin <1.05>     - Hessian structure: keep pairs whose boxes inflated by this many r overlap (HylcPeriodicSetPairMargin())
 . -periodic_constraint_rtol <1e-6> - drop a constraint row within this relative distance of the span of the
-                                   rows before it (linearly dependent: straight yarns; docs/method.md)
-- -macro_*                        - the midsurface (HylcMidsurfaceSetFromOptions())
+                                     rows before it (linearly dependent: straight yarns; docs/method.md) (HylcPeriodicSetConstraintTolerance())
+. -periodic_view                   - print the tile after each set-up (HylcPeriodicView())
+- -macro_*                         - the midsurface (HylcMidsurfaceSetFromOptions())
+
+  Level: beginner
+
+.seealso: HylcPeriodicCreate(), HylcPeriodicSetUp()
 @*/
 PetscErrorCode HylcPeriodicSetFromOptions(HylcPeriodic P)
 {
   PetscEnum sl = (PetscEnum)P->slide;
+  PetscReal pairMargin, marginFactor, crtol;
 
   PetscFunctionBegin;
-  PetscOptionsBegin(PETSC_COMM_SELF, P->prefix[0] ? P->prefix : NULL, "Periodic tile options", "HylcPeriodic");
+  PetscValidHeaderSpecific(P, HYLC_PERIODIC_CLASSID, 1);
+  pairMargin   = P->pairMargin;
+  marginFactor = P->marginFactor;
+  crtol        = P->crtol;
+  PetscObjectOptionsBegin((PetscObject)P);
   PetscCall(PetscOptionsEnum("-periodic_slide", "Slide constraint: none, global (one row), per_yarn (one row per yarn loop) or per_family (one row per yarn family, each yarn in its canonical direction)", "HylcPeriodicSetSlideConstraint", HylcSlideConstraints, sl, &sl, NULL));
-  PetscCall(PetscOptionsReal("-periodic_pair_margin", "Hessian structure: keep segment pairs whose boxes inflated by this many r overlap, so that it changes rarely", "HylcPeriodicEvaluate", P->pairMargin, &P->pairMargin, NULL));
-  PetscCall(PetscOptionsReal("-periodic_margin", "Contact ghosts: copies of edges within max(3 r, margin * min(px, py)) of the tile", "HylcPeriodicSetUp", P->marginFactor, &P->marginFactor, NULL));
-  PetscCall(PetscOptionsReal("-periodic_constraint_rtol", "A constraint row whose distance to the span of the rows before it is at most this times its norm is dropped as linearly dependent (straight yarns: the slide row repeats the translation)", "HylcPeriodicSetUp", P->crtol, &P->crtol, NULL));
+  PetscCall(PetscOptionsReal("-periodic_pair_margin", "Hessian structure: keep segment pairs whose boxes inflated by this many r overlap, so that it changes rarely", "HylcPeriodicSetPairMargin", pairMargin, &pairMargin, NULL));
+  PetscCall(PetscOptionsReal("-periodic_margin", "Contact ghosts: copies of edges within max(3 r, margin * min(px, py)) of the tile", "HylcPeriodicSetContactMargin", marginFactor, &marginFactor, NULL));
+  PetscCall(PetscOptionsReal("-periodic_constraint_rtol", "A constraint row whose distance to the span of the rows before it is at most this times its norm is dropped as linearly dependent (straight yarns: the slide row repeats the translation)", "HylcPeriodicSetConstraintTolerance", crtol, &crtol, NULL));
+  PetscCall(PetscOptionsName("-periodic_view", "Print the tile after each set-up", "HylcPeriodicView", NULL));
   PetscOptionsEnd();
-  PetscCheck(P->crtol > 0 && P->crtol < 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-periodic_constraint_rtol must be in (0, 1), got %g", (double)P->crtol);
-  P->setup = PETSC_FALSE;
-  P->slide = (HylcSlideConstraint)sl;
-  PetscCheck(P->pairMargin >= 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-periodic_pair_margin must be at least 1 (boxes inflated by r find every touching pair)");
-  PetscCheck(P->marginFactor >= 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-periodic_margin must not be negative");
+  PetscCall(HylcPeriodicSetConstraintTolerance(P, crtol));
+  PetscCall(HylcPeriodicSetSlideConstraint(P, (HylcSlideConstraint)sl));
+  PetscCall(HylcPeriodicSetPairMargin(P, pairMargin));
+  PetscCall(HylcPeriodicSetContactMargin(P, marginFactor));
   PetscCall(HylcMidsurfaceSetFromOptions(P->ms));
+  P->setup = PETSC_FALSE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPeriodicSetStrain - Sets the macroscopic strain z = (sx, sa, sy, II00, II01, II11) (II in 1/m);
+  the next HylcPeriodicSetUp() builds the tile for it.
+
+  Not collective
+
+  Input Parameters:
++ P - the periodic tile
+- z - the strain
+
+  Level: beginner
+
+.seealso: HylcPeriodicCheckStrain(), HylcPeriodicSetUp()
+@*/
 PetscErrorCode HylcPeriodicSetStrain(HylcPeriodic P, const PetscReal z[6])
 {
   PetscFunctionBegin;
+  PetscValidHeaderSpecific(P, HYLC_PERIODIC_CLASSID, 1);
   const HylcMacroStrainError err = HylcMacroStrainValidate(z);
   PetscCheck(err == HYLC_MACRO_STRAIN_OK, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "Invalid strain (%g, %g, %g, %g, %g, %g): %s", (double)z[0], (double)z[1], (double)z[2], (double)z[3], (double)z[4], (double)z[5], HylcMacroStrainErrorString(err));
   for (int k = 0; k < 6; k++) P->z[k] = z[k];
@@ -160,10 +300,100 @@ PetscErrorCode HylcPeriodicCheckStrain(HylcPeriodic P, const PetscReal z[6], con
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPeriodicSetSlideConstraint - Sets the slide constraint (option -periodic_slide).
+
+  Not collective
+
+  Input Parameters:
++ P - the periodic tile
+- s - HYLC_SLIDE_NONE, HYLC_SLIDE_GLOBAL (one row), HYLC_SLIDE_PER_YARN (one row per loop) or
+      HYLC_SLIDE_PER_FAMILY (one row per yarn family)
+
+  Level: intermediate
+
+.seealso: HylcPeriodicSetFromOptions()
+@*/
 PetscErrorCode HylcPeriodicSetSlideConstraint(HylcPeriodic P, HylcSlideConstraint s)
 {
   PetscFunctionBegin;
+  PetscValidHeaderSpecific(P, HYLC_PERIODIC_CLASSID, 1);
+  PetscCheck(s >= HYLC_SLIDE_NONE && s <= HYLC_SLIDE_PER_FAMILY, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Unknown slide constraint %d", (int)s);
   P->slide = s;
+  P->setup = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPeriodicSetContactMargin - Sets the margin of the contact ghosts (option -periodic_margin): copies
+  of tile edges within max(3 r, margin min(px, py)) of the deformed tile take part in contact.
+
+  Not collective
+
+  Input Parameters:
++ P      - the periodic tile
+- margin - the factor (>= 0)
+
+  Level: advanced
+
+.seealso: HylcPeriodicSetFromOptions()
+@*/
+PetscErrorCode HylcPeriodicSetContactMargin(HylcPeriodic P, PetscReal margin)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(P, HYLC_PERIODIC_CLASSID, 1);
+  PetscCheck(margin >= 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-periodic_margin must not be negative");
+  P->marginFactor = margin;
+  P->setup        = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPeriodicSetPairMargin - Sets the margin of the Hessian's contact structure (option
+  -periodic_pair_margin): segment pairs whose boxes inflated by this many r overlap are kept in it, so that
+  it changes rarely.
+
+  Not collective
+
+  Input Parameters:
++ P      - the periodic tile
+- margin - the factor (>= 1: boxes inflated by r find every touching pair)
+
+  Level: advanced
+
+.seealso: HylcPeriodicSetFromOptions(), HylcPeriodicEvaluate()
+@*/
+PetscErrorCode HylcPeriodicSetPairMargin(HylcPeriodic P, PetscReal margin)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(P, HYLC_PERIODIC_CLASSID, 1);
+  PetscCheck(margin >= 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-periodic_pair_margin must be at least 1 (boxes inflated by r find every touching pair)");
+  P->pairMargin = margin;
+  P->setup      = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPeriodicSetConstraintTolerance - Sets the relative tolerance of the constraint rows' dependence test
+  (option -periodic_constraint_rtol): a row whose distance to the span of the rows before it is at most
+  rtol times its norm is dropped as linearly dependent.
+
+  Not collective
+
+  Input Parameters:
++ P    - the periodic tile
+- rtol - the tolerance, in (0, 1)
+
+  Level: advanced
+
+.seealso: HylcPeriodicSetFromOptions(), HylcPeriodicGetConstraints()
+@*/
+PetscErrorCode HylcPeriodicSetConstraintTolerance(HylcPeriodic P, PetscReal rtol)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(P, HYLC_PERIODIC_CLASSID, 1);
+  PetscCheck(rtol > 0 && rtol < 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-periodic_constraint_rtol must be in (0, 1), got %g", (double)rtol);
+  P->crtol = rtol;
   P->setup = PETSC_FALSE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -231,10 +461,58 @@ PetscErrorCode HylcPeriodicGetTimes(HylcPeriodic P, PetscLogDouble *eval, PetscL
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPeriodicView - Prints the tile: its options, and after HylcPeriodicSetUp() the strain, the sizes of
+  the extended pattern and the constraints. Option -periodic_view calls it after each set-up.
+
+  Not collective
+
+  Input Parameters:
++ P      - the periodic tile
+- viewer - an ASCII viewer (NULL: stdout of the object's communicator)
+
+  Level: beginner
+
+.seealso: HylcPeriodicViewFromOptions()
+@*/
 PetscErrorCode HylcPeriodicView(HylcPeriodic P, PetscViewer viewer)
 {
+  PetscBool iascii;
+
   PetscFunctionBegin;
-  PetscCheck(P->setup, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE, "Call HylcPeriodicSetUp() first");
-  PetscCall(PetscViewerASCIIPrintf(viewer, "periodic tile: strain (%g, %g, %g, %g, %g, %g); %" PetscInt_FMT " original and %" PetscInt_FMT " ghost vertices, %" PetscInt_FMT " edges, %" PetscInt_FMT " bend-twist elements, %" PetscInt_FMT " constraints (slide %s; %" PetscInt_FMT " linearly dependent rows dropped)\n", (double)P->z[0], (double)P->z[1], (double)P->z[2], (double)P->z[3], (double)P->z[4], (double)P->z[5], P->N, P->nfv - P->N, P->nfe, P->nbe, P->ncons, HylcSlideConstraints[P->slide], P->ndropped));
+  PetscValidHeaderSpecific(P, HYLC_PERIODIC_CLASSID, 1);
+  if (!viewer) PetscCall(PetscViewerASCIIGetStdout(PetscObjectComm((PetscObject)P), &viewer));
+  PetscCall(PetscObjectTypeCompare((PetscObject)viewer, PETSCVIEWERASCII, &iascii));
+  if (!iascii) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscObjectPrintClassNamePrefixType((PetscObject)P, viewer));
+  PetscCall(PetscViewerASCIIPushTab(viewer));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "slide constraint %s, contact-ghost margin %g, pair margin %g, constraint rtol %g\n", HylcSlideConstraints[P->slide], (double)P->marginFactor, (double)P->pairMargin, (double)P->crtol));
+  if (P->setup)
+    PetscCall(PetscViewerASCIIPrintf(viewer, "periodic tile: strain (%g, %g, %g, %g, %g, %g); %" PetscInt_FMT " original and %" PetscInt_FMT " ghost vertices, %" PetscInt_FMT " edges, %" PetscInt_FMT " bend-twist elements, %" PetscInt_FMT " constraints (slide %s; %" PetscInt_FMT " linearly dependent rows dropped)\n", (double)P->z[0], (double)P->z[1], (double)P->z[2], (double)P->z[3], (double)P->z[4], (double)P->z[5], P->N, P->nfv - P->N, P->nfe, P->nbe, P->ncons, HylcSlideConstraints[P->slide], P->ndropped));
+  else
+    PetscCall(PetscViewerASCIIPrintf(viewer, "%s\n", P->pat ? "not set up" : "no pattern"));
+  PetscCall(PetscViewerASCIIPopTab(viewer));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPeriodicViewFromOptions - Views the tile if the option name (e.g. -periodic_view) is set.
+
+  Collective
+
+  Input Parameters:
++ P    - the periodic tile
+. obj  - an object whose prefix is used (NULL: the tile's)
+- name - the option
+
+  Level: intermediate
+
+.seealso: HylcPeriodicView()
+@*/
+PetscErrorCode HylcPeriodicViewFromOptions(HylcPeriodic P, PetscObject obj, const char name[])
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(P, HYLC_PERIODIC_CLASSID, 1);
+  PetscCall(PetscObjectViewFromOptions((PetscObject)P, obj, name));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -12,6 +12,7 @@
 #include <hylc/rod.h>
 #include <petsc/private/hashmapi.h>
 #include <petsctime.h>
+#include <petsc/private/petscimpl.h>
 
 #define SMAX 8 /* |lattice shift| bound of ghosts */
 
@@ -21,8 +22,12 @@ typedef struct {
   PetscReal w;    /* fractional weight */
 } BendElem;
 
-struct _n_HylcPeriodic {
-  char                   prefix[64];
+struct _HylcPeriodicOps {
+  PetscErrorCode (*view)(HylcPeriodic, PetscViewer);
+};
+
+struct _p_HylcPeriodic {
+  PETSCHEADER(struct _HylcPeriodicOps);
   HylcPattern            pat;
   HylcPatternData        D;
   HylcYarnModel          model;

@@ -105,7 +105,9 @@ PetscErrorCode HylcPeriodicSetUp(HylcPeriodic P)
   PetscHMapI     bmap;
 
   PetscFunctionBegin;
+  PetscValidHeaderSpecific(P, HYLC_PERIODIC_CLASSID, 1);
   if (P->setup) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCheck(P->pat, PetscObjectComm((PetscObject)P), PETSC_ERR_ARG_WRONGSTATE, "Call HylcPeriodicSetPattern() first");
   PetscCall(HylcPeriodicReset_Private(P));
   PetscCall(PetscLogEventBegin(HYLC_PeriodicSetUp, 0, 0, 0, 0));
   /* reference coordinates, recentred so that the mean of (xi1, xi2, h) is 0 (C1 step 16) */
@@ -270,6 +272,7 @@ PetscErrorCode HylcPeriodicSetUp(HylcPeriodic P)
   P->setup = PETSC_TRUE;
   PetscCall(HylcPeriodicSetState(P, P->y));
   PetscCall(PetscLogEventEnd(HYLC_PeriodicSetUp, 0, 0, 0, 0));
+  PetscCall(HylcPeriodicViewFromOptions(P, NULL, "-periodic_view"));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
