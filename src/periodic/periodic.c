@@ -484,7 +484,10 @@ PetscErrorCode HylcPeriodicView(HylcPeriodic P, PetscViewer viewer)
   if (!viewer) PetscCall(PetscViewerASCIIGetStdout(PetscObjectComm((PetscObject)P), &viewer));
   PetscCall(PetscObjectTypeCompare((PetscObject)viewer, PETSCVIEWERASCII, &iascii));
   if (!iascii) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(PetscObjectPrintClassNamePrefixType((PetscObject)P, viewer));
+  {
+    const char *prefix = ((PetscObject)P)->prefix;
+    PetscCall(PetscViewerASCIIPrintf(viewer, "HylcPeriodic Object%s%s%s: one rank\n", prefix ? " (" : "", prefix ? prefix : "", prefix ? ")" : ""));
+  }
   PetscCall(PetscViewerASCIIPushTab(viewer));
   PetscCall(PetscViewerASCIIPrintf(viewer, "slide constraint %s, contact-ghost margin %g, pair margin %g, constraint rtol %g\n", HylcSlideConstraints[P->slide], (double)P->marginFactor, (double)P->pairMargin, (double)P->crtol));
   if (P->setup)

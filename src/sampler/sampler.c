@@ -671,7 +671,7 @@ PetscErrorCode HylcSamplerGetPlan(HylcSampler S, const HylcPlan **plan)
 PetscErrorCode HylcSamplerView(HylcSampler S, PetscViewer viewer)
 {
   PetscBool iascii;
-  char      terms[256] = "";
+  char      terms[256] = "", count[64];
 
   PetscFunctionBegin;
   PetscValidHeaderSpecific(S, HYLC_SAMPLER_CLASSID, 1);
@@ -683,14 +683,17 @@ PetscErrorCode HylcSamplerView(HylcSampler S, PetscViewer viewer)
       PetscCall(PetscStrlcat(terms, terms[0] ? "," : "", sizeof(terms)));
       PetscCall(PetscStrlcat(terms, HylcPlanTermName(t), sizeof(terms)));
     }
-  PetscCall(PetscObjectPrintClassNamePrefixType((PetscObject)S, viewer));
+  {
+    const char *prefix = ((PetscObject)S)->prefix;
+    PetscCall(PetscViewerASCIIPrintf(viewer, "HylcSampler Object%s%s%s: %d MPI process%s\n", prefix ? " (" : "", prefix ? prefix : "", prefix ? ")" : "", (int)S->size, S->size > 1 ? "es" : ""));
+  }
   PetscCall(PetscViewerASCIIPushTab(viewer));
   PetscCall(PetscViewerASCIIPrintf(viewer, "output %s (journal %s.journal, %s)\n", S->output, S->output, S->resume ? "resume" : (S->overwrite ? "overwrite" : "new run")));
-  PetscCall(PetscViewerASCIIPrintf(viewer, "plan: family %s, %" PetscInt_FMT " samples per 1D term, %" PetscInt_FMT " per 2D axis, terms %s", HylcPlanFamilies[S->ranges.family], S->n1, S->n2, terms));
   if (S->solverSetUp)
-    PetscCall(PetscViewerASCIIPrintf(viewer, ": %ld samples\n", S->nsamples));
+    PetscCall(PetscSNPrintf(count, sizeof(count), ": %ld samples", S->nsamples));
   else
-    PetscCall(PetscViewerASCIIPrintf(viewer, " (ranges not resolved: not set up)\n"));
+    PetscCall(PetscStrncpy(count, " (ranges not resolved: not set up)", sizeof(count)));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "plan: family %s, %" PetscInt_FMT " samples per 1D term, %" PetscInt_FMT " per 2D axis, terms %s%s\n", HylcPlanFamilies[S->ranges.family], S->n1, S->n2, terms, count));
   PetscCall(PetscViewerASCIIPrintf(viewer, "%d ranks, batches of %" PetscInt_FMT ", progress every %g s, reference state %s%s%s\n", (int)S->size, S->batch, (double)S->progress, HylcReferenceModes[S->refmode], S->refout[0] ? " written to " : "", S->refout));
   if (S->rawdir[0]) PetscCall(PetscViewerASCIIPrintf(viewer, "raw layout exported to %s\n", S->rawdir));
   PetscCall(PetscViewerASCIIPopTab(viewer));
