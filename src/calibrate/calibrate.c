@@ -844,6 +844,22 @@ PetscErrorCode HylcCalibrateSetUp(HylcCalibrate C)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcCalibrateGetParameters - Parameter values (E, Es, G, kc): the initial ones (the yarn model at the pattern's
+  radius, resolved by HylcCalibrateSetUp()) and the current ones (the calibrated values after
+  HylcCalibrateSolve()). Either output may be NULL.
+
+  Not collective
+
+  Input Parameter:
+. C - the calibration
+
+  Output Parameters:
++ initial - 4 values
+- current - 4 values
+
+  Level: intermediate
+@*/
 PetscErrorCode HylcCalibrateGetParameters(HylcCalibrate C, PetscReal initial[], PetscReal current[])
 {
   PetscFunctionBegin;
@@ -855,6 +871,21 @@ PetscErrorCode HylcCalibrateGetParameters(HylcCalibrate C, PetscReal initial[], 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcCalibrateGetObjective - Objective before and after HylcCalibrateSolve(), and the number of iterations (any output may be NULL).
+
+  Not collective
+
+  Input Parameter:
+. C - the calibration
+
+  Output Parameters:
++ f0  - before
+. f1  - after
+- its - Levenberg-Marquardt iterations
+
+  Level: intermediate
+@*/
 PetscErrorCode HylcCalibrateGetObjective(HylcCalibrate C, PetscReal *f0, PetscReal *f1, PetscInt *its)
 {
   PetscFunctionBegin;
@@ -865,6 +896,19 @@ PetscErrorCode HylcCalibrateGetObjective(HylcCalibrate C, PetscReal *f0, PetscRe
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcCalibrateGetSize - Number of samples (the base sample included), after HylcCalibrateSetUp().
+
+  Not collective
+
+  Input Parameter:
+. C - the calibration
+
+  Output Parameter:
+. m - the number of samples
+
+  Level: intermediate
+@*/
 PetscErrorCode HylcCalibrateGetSize(HylcCalibrate C, PetscInt *m)
 {
   PetscFunctionBegin;
@@ -895,9 +939,17 @@ static void TermStats(HylcCalibrate C, const PetscReal rec[], PetscInt t, PetscR
 }
 
 /*@C
-  HylcCalibrateView - Before HylcCalibrateSolve: the set-up (pattern, target, samples, parameters). After:
+  HylcCalibrateView - Before HylcCalibrateSolve(): the set-up (pattern, target, samples, parameters). After:
   the calibrated values, flags (bound, held) and the per-term table: normalised RMS of dPsi before -> after
-  and the least-squares scale factor target/model before -> after. Collective.
+  and the least-squares scale factor target/model before -> after.
+
+  Collective
+
+  Input Parameters:
++ C      - the calibration
+- viewer - an ASCII viewer (NULL: stdout of the communicator)
+
+  Level: beginner
 @*/
 PetscErrorCode HylcCalibrateView(HylcCalibrate C, PetscViewer viewer)
 {
@@ -949,6 +1001,18 @@ PetscErrorCode HylcCalibrateView(HylcCalibrate C, PetscViewer viewer)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcCalibrateViewFromOptions - Views the calibration if the option name (e.g. -calibrate_view) is set.
+
+  Collective
+
+  Input Parameters:
++ C    - the calibration
+. obj  - an object whose prefix is used (NULL: the calibration's)
+- name - the option
+
+  Level: intermediate
+@*/
 PetscErrorCode HylcCalibrateViewFromOptions(HylcCalibrate C, PetscObject obj, const char name[])
 {
   PetscFunctionBegin;

@@ -68,6 +68,19 @@ static PetscErrorCode FindPairs(HylcPeriodic P)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPeriodicGetNumContactPairs - The number of contact pairs that can touch in the current state (runs the broadphase).
+
+  Not collective
+
+  Input Parameter:
+. P - the periodic tile
+
+  Output Parameter:
+. n - the number of pairs
+
+  Level: intermediate
+@*/
 PetscErrorCode HylcPeriodicGetNumContactPairs(HylcPeriodic P, PetscInt *n)
 {
   PetscFunctionBegin;
@@ -161,6 +174,20 @@ static void ContactLayout(const HylcPeriodic P, PetscInt i, PetscInt j, Layout *
   L->ntw = 0;
 }
 
+/*@C
+  HylcPeriodicCreateMatrix - Creates the matrix for the reduced Hessian H_y (MATSEQAIJ, 4N x 4N; its structure is
+  set by HylcPeriodicEvaluate()).
+
+  Not collective
+
+  Input Parameter:
+. P - the periodic tile
+
+  Output Parameter:
+. H - the matrix
+
+  Level: intermediate
+@*/
 PetscErrorCode HylcPeriodicCreateMatrix(HylcPeriodic P, Mat *H)
 {
   PetscFunctionBegin;
@@ -464,8 +491,21 @@ static PetscErrorCode PeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts
 /*@C
   HylcPeriodicEvaluate - Energy of the current state (parts: stretch, bend, twist, contact, for the terms
   in mask), and optionally the reduced gradient g_y (4 per original vertex, overwritten) and reduced
-  Hessian H_y (from HylcPeriodicCreateMatrix(), overwritten). A degenerate geometry or a non-finite energy is a PETSC_ERR_FP error
-  (see HylcPeriodicEvaluateFinite()). Not collective.
+  Hessian H_y (from HylcPeriodicCreateMatrix(), overwritten). A degenerate geometry or a non-finite energy
+  is a PETSC_ERR_FP error (see HylcPeriodicEvaluateFinite()).
+
+  Not collective
+
+  Input Parameters:
++ P    - the periodic tile
+- mask - terms: HYLC_TERM_STRETCH | HYLC_TERM_BEND | HYLC_TERM_TWIST | HYLC_TERM_CONTACT (HYLC_TERM_ALL)
+
+  Output Parameters:
++ parts - energy of each term (J)
+. gy    - the reduced gradient (may be NULL)
+- H     - the reduced Hessian (may be NULL)
+
+  Level: beginner
 @*/
 PetscErrorCode HylcPeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts[4], PetscReal gy[], Mat H)
 {
@@ -484,7 +524,21 @@ PetscErrorCode HylcPeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts[4]
   HylcPeriodicEvaluateFinite - HylcPeriodicEvaluate() for a solver's trial states: a degenerate geometry
   (a zero-length edge, a degenerate bending element) or a non-finite energy is a result, not an error:
   *finite = PETSC_FALSE and the energy counts as +inf (gy and H are then undefined). Any other failure
-  is an error. Not collective.
+  is an error.
+
+  Not collective
+
+  Input Parameters:
++ P    - the periodic tile
+- mask - terms (as HylcPeriodicEvaluate())
+
+  Output Parameters:
++ parts  - energy of each term (J)
+. gy     - the reduced gradient (may be NULL)
+. H      - the reduced Hessian (may be NULL)
+- finite - whether the state is valid and its energy finite
+
+  Level: intermediate
 @*/
 PetscErrorCode HylcPeriodicEvaluateFinite(HylcPeriodic P, int mask, PetscReal parts[4], PetscReal gy[], Mat H, PetscBool *finite)
 {

@@ -159,6 +159,22 @@ PetscErrorCode HylcPeriodicSetUpConstraints_Private(HylcPeriodic P, const PetscR
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPeriodicGetConstraints - The constraints A y = dL of the set-up tile (borrowed; any output may be NULL).
+
+  Not collective
+
+  Input Parameter:
+. P - the periodic tile
+
+  Output Parameters:
++ m      - rows (independent; dependent ones dropped)
+. A      - m x 4N, row-major
+. dL     - m
+- AAtinv - (A A^T)^-1, m x m
+
+  Level: intermediate
+@*/
 PetscErrorCode HylcPeriodicGetConstraints(HylcPeriodic P, PetscInt *m, const PetscReal **A, const PetscReal **dL, const PetscReal **AAtinv)
 {
   PetscFunctionBegin;
@@ -170,7 +186,20 @@ PetscErrorCode HylcPeriodicGetConstraints(HylcPeriodic P, PetscInt *m, const Pet
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* c = A y - dL */
+/*@C
+  HylcPeriodicConstraintResidual - The constraint residual c = A y - dL.
+
+  Not collective
+
+  Input Parameters:
++ P - the periodic tile
+- y - 4 per original vertex
+
+  Output Parameter:
+. c - one per constraint row
+
+  Level: intermediate
+@*/
 PetscErrorCode HylcPeriodicConstraintResidual(HylcPeriodic P, const PetscReal y[], PetscReal c[])
 {
   PetscFunctionBegin;

@@ -5,7 +5,17 @@
   HylcPeriodicCreateStatePattern - The current state as a new pattern: positions and twists of the
   originals, the current reference directors and reference twists, the same rest data, and the periods
   of the deformed lattice ((1 + sx) px, (1 + sy) py). Only for strains whose periodic images are
-  translations along x and y (sa = 0 and II = 0). Collective on PETSC_COMM_SELF.
+  translations along x and y (sa = 0 and II = 0).
+
+  Collective on PETSC_COMM_SELF
+
+  Input Parameter:
+. P - the periodic tile
+
+  Output Parameter:
+. out - the new pattern
+
+  Level: intermediate
 @*/
 PetscErrorCode HylcPeriodicCreateStatePattern(HylcPeriodic P, HylcPattern *out)
 {
@@ -35,7 +45,17 @@ PetscErrorCode HylcPeriodicCreateStatePattern(HylcPeriodic P, HylcPattern *out)
 /*@C
   HylcPeriodicWriteVTK - Writes the current state repeated ntx x nty times (centred on the tile) as
   legacy-VTK polylines, one per yarn loop and copy; copies are placed by the co-rotated periodic map
-  x = T x_o + d (bent tiles come out bent). Not collective.
+  x = T x_o + d (bent tiles come out bent).
+
+  Not collective
+
+  Input Parameters:
++ P     - the periodic tile
+. fname - the file
+. ntx   - copies along x (>= 1)
+- nty   - copies along y (>= 1)
+
+  Level: intermediate
 @*/
 PetscErrorCode HylcPeriodicWriteVTK(HylcPeriodic P, const char fname[], PetscInt ntx, PetscInt nty)
 {

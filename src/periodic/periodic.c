@@ -260,11 +260,19 @@ PetscErrorCode HylcPeriodicSetStrain(HylcPeriodic P, const PetscReal z[6])
 /*@C
   HylcPeriodicCheckStrain - Refuses a strain z = (sx, sa, sy, II00, II01, II11) that does not give a valid,
   representable deformed tile, with a one-line PETSC_ERR_USER_INPUT error "<name>: <component> = <value>:
-  <reason>" (name: e.g. the option, "-strain"). Beyond HylcPeriodicSetStrain()'s validity (finite, |sa| < 1,
-  1 + sx > 0, 1 + sy > 0) it bounds the stretch factors 1 + sx, 1 + sy by HYLC_PERIODIC_MAX_STRETCH and the
-  angle the midsurface normal turns across one period, |N (px, 0)|, |N (0, py)|, |N (px, +-py)| with
-  N = -A^-T II, by 2 pi (a tile bent further wraps onto itself; at extreme II the midsurface collapses to
-  a point). Subnormal components are valid. Not collective. See docs/method.md.
+  <reason>". Beyond HylcPeriodicSetStrain()'s validity (finite, |sa| < 1, 1 + sx > 0, 1 + sy > 0) it bounds
+  the stretch factors 1 + sx, 1 + sy by HYLC_PERIODIC_MAX_STRETCH and the angle the midsurface normal turns
+  across one period, |N (px, 0)|, |N (0, py)|, |N (px, +-py)| with N = -A^-T II, by 2 pi (a tile bent
+  further wraps onto itself). Subnormal components are valid. See docs/method.md.
+
+  Not collective
+
+  Input Parameters:
++ P    - the periodic tile
+. z    - the strain
+- name - what the strain came from, for the message (e.g. "-strain")
+
+  Level: intermediate
 @*/
 PetscErrorCode HylcPeriodicCheckStrain(HylcPeriodic P, const PetscReal z[6], const char name[])
 {
@@ -398,6 +406,22 @@ PetscErrorCode HylcPeriodicSetConstraintTolerance(HylcPeriodic P, PetscReal rtol
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPeriodicGetSizes - Sizes of the set-up tile (any output may be NULL).
+
+  Not collective
+
+  Input Parameter:
+. P - the periodic tile
+
+  Output Parameters:
++ ny     - reduced unknowns (4 per original vertex)
+. nfull  - full vertices (originals and ghosts)
+. nedges - full edges
+- ncons  - independent constraint rows
+
+  Level: intermediate
+@*/
 PetscErrorCode HylcPeriodicGetSizes(HylcPeriodic P, PetscInt *ny, PetscInt *nfull, PetscInt *nedges, PetscInt *ncons)
 {
   PetscFunctionBegin;
@@ -409,6 +433,19 @@ PetscErrorCode HylcPeriodicGetSizes(HylcPeriodic P, PetscInt *ny, PetscInt *nful
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPeriodicGetArea - The reference area px py of the tile (m^2).
+
+  Not collective
+
+  Input Parameter:
+. P - the periodic tile
+
+  Output Parameter:
+. A - the area
+
+  Level: intermediate
+@*/
 PetscErrorCode HylcPeriodicGetArea(HylcPeriodic P, PetscReal *A)
 {
   PetscFunctionBegin;
@@ -416,6 +453,19 @@ PetscErrorCode HylcPeriodicGetArea(HylcPeriodic P, PetscReal *A)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPeriodicGetConstants - The yarn constants of the model at the pattern's radius.
+
+  Not collective
+
+  Input Parameter:
+. P - the periodic tile
+
+  Output Parameter:
+. c - the constants
+
+  Level: intermediate
+@*/
 PetscErrorCode HylcPeriodicGetConstants(HylcPeriodic P, HylcYarnConstants *c)
 {
   PetscFunctionBegin;
@@ -423,6 +473,19 @@ PetscErrorCode HylcPeriodicGetConstants(HylcPeriodic P, HylcYarnConstants *c)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPeriodicGetMacroStrain - The macroscopic strain of the midsurface (its kernels' data).
+
+  Not collective
+
+  Input Parameter:
+. P - the periodic tile
+
+  Output Parameter:
+. m - the strain (borrowed)
+
+  Level: intermediate
+@*/
 PetscErrorCode HylcPeriodicGetMacroStrain(HylcPeriodic P, const HylcMacroStrain **m)
 {
   PetscFunctionBegin;
@@ -430,6 +493,19 @@ PetscErrorCode HylcPeriodicGetMacroStrain(HylcPeriodic P, const HylcMacroStrain 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPeriodicGetInitialState - The initial guess y0 (x = phi + h n, u~ = 0) of the set-up tile.
+
+  Not collective
+
+  Input Parameter:
+. P - the periodic tile
+
+  Output Parameter:
+. y - 4 per original vertex: position and twist
+
+  Level: intermediate
+@*/
 PetscErrorCode HylcPeriodicGetInitialState(HylcPeriodic P, PetscReal y[])
 {
   PetscFunctionBegin;
@@ -438,6 +514,22 @@ PetscErrorCode HylcPeriodicGetInitialState(HylcPeriodic P, PetscReal y[])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPeriodicGetFullPositions - The positions of the full vertices of the current state (borrowed arrays; any output may be NULL).
+
+  Not collective
+
+  Input Parameter:
+. P - the periodic tile
+
+  Output Parameters:
++ n     - full vertices
+. x     - 3 per full vertex
+. orig  - original vertex of each full vertex
+- shift - lattice shift (2 per full vertex)
+
+  Level: intermediate
+@*/
 PetscErrorCode HylcPeriodicGetFullPositions(HylcPeriodic P, PetscInt *n, const PetscReal **x, const PetscInt **orig, const PetscInt **shift)
 {
   PetscFunctionBegin;
@@ -450,7 +542,19 @@ PetscErrorCode HylcPeriodicGetFullPositions(HylcPeriodic P, PetscInt *n, const P
 
 /*@C
   HylcPeriodicGetTimes - Wall time (s) accumulated since the last set-up in evaluations (all), in contact
-  (broadphase and pair kernels) and in assembling Hessians. Not collective.
+  (broadphase and pair kernels) and in assembling Hessians (any output may be NULL).
+
+  Not collective
+
+  Input Parameter:
+. P - the periodic tile
+
+  Output Parameters:
++ eval     - evaluations
+. contact  - contact
+- assemble - Hessian assembly
+
+  Level: intermediate
 @*/
 PetscErrorCode HylcPeriodicGetTimes(HylcPeriodic P, PetscLogDouble *eval, PetscLogDouble *contact, PetscLogDouble *assemble)
 {

@@ -96,7 +96,15 @@ static PetscErrorCode AddBend(HylcPeriodic P, PetscHMapI bmap, PetscInt o, Petsc
 
 /*@C
   HylcPeriodicSetUp - Builds the midsurface, the extended pattern, the elimination maps, the projected
-  reference frames, the initial state (x = phi + h n, u~ = 0) and the constraints. Not collective.
+  reference frames, the initial state (x = phi + h n, u~ = 0) and the constraints for the strain set;
+  nothing when already set up. -periodic_view prints the tile.
+
+  Not collective
+
+  Input Parameter:
+. P - the periodic tile
+
+  Level: beginner
 @*/
 PetscErrorCode HylcPeriodicSetUp(HylcPeriodic P)
 {
@@ -277,7 +285,15 @@ PetscErrorCode HylcPeriodicSetUp(HylcPeriodic P)
 }
 
 /*@C
-  HylcPeriodicSetState - Sets y and computes the full positions q = C y + d. Not collective.
+  HylcPeriodicSetState - Sets y and computes the full positions q = C y + d.
+
+  Not collective
+
+  Input Parameters:
++ P - the periodic tile
+- y - 4 per original vertex (may be the array of HylcPeriodicGetInitialState())
+
+  Level: intermediate
 @*/
 PetscErrorCode HylcPeriodicSetState(HylcPeriodic P, const PetscReal y[])
 {
@@ -299,7 +315,14 @@ PetscErrorCode HylcPeriodicSetState(HylcPeriodic P, const PetscReal y[])
 
 /*@C
   HylcPeriodicUpdateFrames - Time-parallel transport of every full edge's reference director to its
-  current tangent, and reference twists updated on the nearest branch. Not collective.
+  current tangent, and reference twists updated on the nearest branch.
+
+  Not collective
+
+  Input Parameter:
+. P - the periodic tile
+
+  Level: advanced
 @*/
 PetscErrorCode HylcPeriodicUpdateFrames(HylcPeriodic P)
 {
@@ -319,6 +342,16 @@ PetscErrorCode HylcPeriodicUpdateFrames(HylcPeriodic P)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPeriodicSaveFrames - Saves the reference frames and twists (HylcPeriodicRestoreFrames() restores them).
+
+  Not collective
+
+  Input Parameter:
+. P - the periodic tile
+
+  Level: advanced
+@*/
 PetscErrorCode HylcPeriodicSaveFrames(HylcPeriodic P)
 {
   PetscFunctionBegin;
@@ -328,6 +361,16 @@ PetscErrorCode HylcPeriodicSaveFrames(HylcPeriodic P)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPeriodicRestoreFrames - Restores the frames saved by HylcPeriodicSaveFrames().
+
+  Not collective
+
+  Input Parameter:
+. P - the periodic tile
+
+  Level: advanced
+@*/
 PetscErrorCode HylcPeriodicRestoreFrames(HylcPeriodic P)
 {
   PetscFunctionBegin;
