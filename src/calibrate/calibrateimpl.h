@@ -69,6 +69,10 @@ struct _p_HylcCalibrate {
   PetscLogDouble tsolve;
 };
 
+/* calibrate.c: frees the samples and results, marks the object not set up */
+PETSC_INTERN PetscErrorCode HylcCalibrateResetSamples_Private(HylcCalibrate);
+/* calibrate.c: the pattern set up, the initial values and bounds resolved, the plan resolved, the solver set up */
+PETSC_INTERN PetscErrorCode HylcCalibrateSetUpSolver_Private(HylcCalibrate);
 /* target.c: reads the target and fills z, target, term, nt, range (collective) */
 PETSC_INTERN PetscErrorCode HylcCalibrateReadTarget_Private(HylcCalibrate);
 /* term name (the plan's names and "other") */
