@@ -1,8 +1,8 @@
 #pragma once
 /* Private definition of HylcPeriodic (src/periodic/ only): the object, its inline index and matrix helpers
    and the functions shared between its files:
-     periodic.c     lifecycle, options, setters and getters, View
-     setup.c        ghost extension, elimination maps, reference frames, state
+     periodic.c     lifecycle, options, setters, View
+     setup.c        ghost extension, elimination maps, reference frames, state, the getters of the set-up
      constraints.c  translation and slide constraints, their reduction to independent rows
      assembly.c     contact pairs, the Hessian's structure (SetCOO), the reduced evaluation
      output.c       the state as a pattern, VTK */

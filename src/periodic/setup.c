@@ -1,4 +1,4 @@
-/* HylcPeriodic: ghost extension, elimination maps, projected reference frames and the state (include/hylc/periodic.h). */
+/* HylcPeriodic: ghost extension, elimination maps, projected reference frames, the state and its getters (include/hylc/periodic.h). */
 #include "periodicimpl.h"
 
 /* the full vertex (o, s), created as a ghost if new */
@@ -377,5 +377,139 @@ PetscErrorCode HylcPeriodicRestoreFrames(HylcPeriodic P)
   PetscCall(PetscArraycpy(P->et, P->et0, 3 * P->nfe));
   PetscCall(PetscArraycpy(P->ed1, P->ed10, 3 * P->nfe));
   PetscCall(PetscArraycpy(P->mref, P->mref0, P->nbe));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPeriodicGetSizes - Sizes of the set-up tile (any output may be NULL).
+
+  Not collective
+
+  Input Parameter:
+. P - the periodic tile
+
+  Output Parameters:
++ ny     - reduced unknowns (4 per original vertex)
+. nfull  - full vertices (originals and ghosts)
+. nedges - full edges
+- ncons  - independent constraint rows
+
+  Level: intermediate
+@*/
+PetscErrorCode HylcPeriodicGetSizes(HylcPeriodic P, PetscInt *ny, PetscInt *nfull, PetscInt *nedges, PetscInt *ncons)
+{
+  PetscFunctionBegin;
+  PetscCheck(P->setup, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE, "Call HylcPeriodicSetUp() first");
+  if (ny) *ny = 4 * P->N;
+  if (nfull) *nfull = P->nfv;
+  if (nedges) *nedges = P->nfe;
+  if (ncons) *ncons = P->ncons;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPeriodicGetArea - The reference area px py of the tile (m^2).
+
+  Not collective
+
+  Input Parameter:
+. P - the periodic tile
+
+  Output Parameter:
+. A - the area
+
+  Level: intermediate
+@*/
+PetscErrorCode HylcPeriodicGetArea(HylcPeriodic P, PetscReal *A)
+{
+  PetscFunctionBegin;
+  *A = P->D.px * P->D.py;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPeriodicGetConstants - The yarn constants of the model at the pattern's radius.
+
+  Not collective
+
+  Input Parameter:
+. P - the periodic tile
+
+  Output Parameter:
+. c - the constants
+
+  Level: intermediate
+@*/
+PetscErrorCode HylcPeriodicGetConstants(HylcPeriodic P, HylcYarnConstants *c)
+{
+  PetscFunctionBegin;
+  *c = P->c;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPeriodicGetMacroStrain - The macroscopic strain of the midsurface (its kernels' data).
+
+  Not collective
+
+  Input Parameter:
+. P - the periodic tile
+
+  Output Parameter:
+. m - the strain (borrowed)
+
+  Level: intermediate
+@*/
+PetscErrorCode HylcPeriodicGetMacroStrain(HylcPeriodic P, const HylcMacroStrain **m)
+{
+  PetscFunctionBegin;
+  PetscCall(HylcMidsurfaceGetStrain(P->ms, m));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPeriodicGetInitialState - The initial guess y0 (x = phi + h n, u~ = 0) of the set-up tile.
+
+  Not collective
+
+  Input Parameter:
+. P - the periodic tile
+
+  Output Parameter:
+. y - 4 per original vertex: position and twist
+
+  Level: intermediate
+@*/
+PetscErrorCode HylcPeriodicGetInitialState(HylcPeriodic P, PetscReal y[])
+{
+  PetscFunctionBegin;
+  PetscCheck(P->setup, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE, "Call HylcPeriodicSetUp() first");
+  PetscCall(PetscArraycpy(y, P->y0, 4 * P->N));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPeriodicGetFullPositions - The positions of the full vertices of the current state (borrowed arrays; any output may be NULL).
+
+  Not collective
+
+  Input Parameter:
+. P - the periodic tile
+
+  Output Parameters:
++ n     - full vertices
+. x     - 3 per full vertex
+. orig  - original vertex of each full vertex
+- shift - lattice shift (2 per full vertex)
+
+  Level: intermediate
+@*/
+PetscErrorCode HylcPeriodicGetFullPositions(HylcPeriodic P, PetscInt *n, const PetscReal **x, const PetscInt **orig, const PetscInt **shift)
+{
+  PetscFunctionBegin;
+  if (n) *n = P->nfv;
+  if (x) *x = P->x;
+  if (orig) *orig = P->fo;
+  if (shift) *shift = P->fs;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
