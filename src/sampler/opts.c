@@ -316,4 +316,3 @@ PetscErrorCode HylcSamplerSetFromOptions(HylcSampler S)
   if (help) PetscCall(HylcSamplerSetUpSolver_Private(S));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
-
