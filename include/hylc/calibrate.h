@@ -16,6 +16,7 @@
 #include <hylc/plan.h>
 #include <hylc/material.h>
 #include <hylc/reference.h>
+#include <hylc/sampler.h> /* HylcPlanRanges */
 
 typedef struct _p_HylcCalibrate *HylcCalibrate;
 
@@ -31,15 +32,13 @@ typedef enum {
   HYLC_CALIBRATE_FIXED = 2  /* held at its initial value */
 } HylcCalibrateRole;
 
+/* lifecycle (src/calibrate/calibrate.c; each function's manual block there). SetFromOptions only reads
+   options; SetUp loads or generates the pattern, resolves the initial values and bounds, sets up the
+   solver, checks the outputs, reads the target and computes the reference state. */
 PETSC_EXTERN PetscErrorCode HylcCalibrateCreate(MPI_Comm, HylcCalibrate *);
 PETSC_EXTERN PetscErrorCode HylcCalibrateDestroy(HylcCalibrate *);
 PETSC_EXTERN PetscErrorCode HylcCalibrateSetOptionsPrefix(HylcCalibrate, const char[]);
-/* Reads -calibrate_* and the options of the pattern (-pattern_*), yarn model (-yarn_*, the initial
-   values), reference state (-reference_*), solver (-micro_*) and plan ranges (-sampler_family,
-   -sampler_range_*). Checks parameter names and bounds. Collective. */
 PETSC_EXTERN PetscErrorCode HylcCalibrateSetFromOptions(HylcCalibrate);
-/* Checks the options and paths (before any solve), reads the target, builds the list of samples and
-   computes the reference state of a generated pattern (once, with the initial parameters). Collective. */
 PETSC_EXTERN PetscErrorCode HylcCalibrateSetUp(HylcCalibrate);
 /* Runs the calibration, prints a line per iteration and writes -calibrate_output / -calibrate_dump.
    Collective. */
@@ -47,23 +46,36 @@ PETSC_EXTERN PetscErrorCode HylcCalibrateSolve(HylcCalibrate);
 /* The final per-term table (after HylcCalibrateSolve) or the set-up (before). Collective. */
 PETSC_EXTERN PetscErrorCode HylcCalibrateView(HylcCalibrate, PetscViewer);
 PETSC_EXTERN PetscErrorCode HylcCalibrateViewFromOptions(HylcCalibrate, PetscObject, const char[]);
+/* sub-objects, created on first use (the pattern on the object's communicator, the solver on PETSC_COMM_SELF) */
+PETSC_EXTERN PetscErrorCode HylcCalibrateGetPattern(HylcCalibrate, HylcPattern *);
+PETSC_EXTERN PetscErrorCode HylcCalibrateGetMicro(HylcCalibrate, HylcMicro *);
 
 /* Setters of the options (call before HylcCalibrateSetFromOptions to set defaults that options override,
    or after it to override the options). */
+PETSC_EXTERN PetscErrorCode HylcCalibrateSetYarnModel(HylcCalibrate, const HylcYarnModel *);
 PETSC_EXTERN PetscErrorCode HylcCalibrateSetTarget(HylcCalibrate, const char path[]);
+PETSC_EXTERN PetscErrorCode HylcCalibrateSetTargetType(HylcCalibrate, const char type[]);
 PETSC_EXTERN PetscErrorCode HylcCalibrateSetOutputs(HylcCalibrate, const char yaml[], const char dump[]);
 /* roles of E, Es, G, kc (E may only be FREE or FIXED) */
 PETSC_EXTERN PetscErrorCode HylcCalibrateSetRoles(HylcCalibrate, const HylcCalibrateRole[]);
 /* bounds of parameter j (0 < lo <= hi) */
 PETSC_EXTERN PetscErrorCode HylcCalibrateSetBounds(HylcCalibrate, PetscInt j, PetscReal lo, PetscReal hi);
 PETSC_EXTERN PetscErrorCode HylcCalibrateSetMaxIterations(HylcCalibrate, PetscInt);
+PETSC_EXTERN PetscErrorCode HylcCalibrateSetLevenbergMarquardt(HylcCalibrate, PetscInt maxReject, PetscReal lambda);
+PETSC_EXTERN PetscErrorCode HylcCalibrateSetTolerances(HylcCalibrate, PetscReal xtol, PetscReal ftol, PetscReal fatol, PetscReal flatTol);
+PETSC_EXTERN PetscErrorCode HylcCalibrateSetPlanRanges(HylcCalibrate, const HylcPlanRanges *);
+PETSC_EXTERN PetscErrorCode HylcCalibrateSetTerms(HylcCalibrate, PetscInt terms);
+PETSC_EXTERN PetscErrorCode HylcCalibrateSetSampleCounts(HylcCalibrate, PetscInt n1, PetscInt n2);
+PETSC_EXTERN PetscErrorCode HylcCalibrateSetThinning(HylcCalibrate, PetscInt stride, PetscInt maxSamples);
+PETSC_EXTERN PetscErrorCode HylcCalibrateSetTermWeight(HylcCalibrate, const char term[], PetscReal w);
+PETSC_EXTERN PetscErrorCode HylcCalibrateSetReference(HylcCalibrate, HylcReferenceMode, const char output[]);
 
 /* The objective f at explicit parameter values p = (E, Es, G, kc) (no ties applied) and its gradient
    grad[j] = df / dlog p_j by the envelope theorem (may be NULL); one solve per sample. *nfailed (may be
    NULL) receives the number of samples left out because they did not converge. After
    HylcCalibrateSetUp. Collective. */
 PETSC_EXTERN PetscErrorCode HylcCalibrateEvaluate(HylcCalibrate, const PetscReal p[], PetscReal *f, PetscReal grad[], PetscInt *nfailed);
-/* Parameter values: the initial ones (resolved yarn model) and the current ones (the calibrated values
+/* Parameter values (after HylcCalibrateSetUp): the initial ones (resolved yarn model) and the current ones (the calibrated values
    after HylcCalibrateSolve). Not collective. */
 PETSC_EXTERN PetscErrorCode HylcCalibrateGetParameters(HylcCalibrate, PetscReal initial[], PetscReal current[]);
 /* Objective before and after HylcCalibrateSolve, and the number of iterations. Not collective. */

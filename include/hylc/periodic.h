@@ -21,7 +21,7 @@
 #include <hylc/tile.h>
 #include <petscmat.h>
 
-typedef struct _n_HylcPeriodic *HylcPeriodic;
+typedef struct _p_HylcPeriodic *HylcPeriodic;
 
 typedef enum {
   HYLC_SLIDE_NONE       = 0,
@@ -31,10 +31,16 @@ typedef enum {
 } HylcSlideConstraint;
 PETSC_EXTERN const char *const HylcSlideConstraints[];
 
-PETSC_EXTERN PetscErrorCode HylcPeriodicCreate(HylcPattern, const HylcYarnModel *, HylcPeriodic *);
+/* lifecycle (src/periodic/periodic.c; each function's manual block there) */
+PETSC_EXTERN PetscErrorCode HylcPeriodicCreate(MPI_Comm, HylcPeriodic *);
+PETSC_EXTERN PetscErrorCode HylcPeriodicSetPattern(HylcPeriodic, HylcPattern, const HylcYarnModel *);
+PETSC_EXTERN PetscErrorCode HylcPeriodicGetPattern(HylcPeriodic, HylcPattern *);
 PETSC_EXTERN PetscErrorCode HylcPeriodicDestroy(HylcPeriodic *);
 PETSC_EXTERN PetscErrorCode HylcPeriodicSetOptionsPrefix(HylcPeriodic, const char[]);
 PETSC_EXTERN PetscErrorCode HylcPeriodicSetFromOptions(HylcPeriodic);
+PETSC_EXTERN PetscErrorCode HylcPeriodicSetContactMargin(HylcPeriodic, PetscReal);
+PETSC_EXTERN PetscErrorCode HylcPeriodicSetPairMargin(HylcPeriodic, PetscReal);
+PETSC_EXTERN PetscErrorCode HylcPeriodicSetConstraintTolerance(HylcPeriodic, PetscReal);
 PETSC_EXTERN PetscErrorCode HylcPeriodicSetStrain(HylcPeriodic, const PetscReal[6]);
 /* the largest stretch factor 1 + sx, 1 + sy that HylcPeriodicCheckStrain() accepts */
 #define HYLC_PERIODIC_MAX_STRETCH 1e3 /* the message of HylcPeriodicCheckStrain() says 1e3 */
@@ -42,6 +48,7 @@ PETSC_EXTERN PetscErrorCode HylcPeriodicCheckStrain(HylcPeriodic, const PetscRea
 PETSC_EXTERN PetscErrorCode HylcPeriodicSetSlideConstraint(HylcPeriodic, HylcSlideConstraint);
 PETSC_EXTERN PetscErrorCode HylcPeriodicSetUp(HylcPeriodic);
 PETSC_EXTERN PetscErrorCode HylcPeriodicView(HylcPeriodic, PetscViewer);
+PETSC_EXTERN PetscErrorCode HylcPeriodicViewFromOptions(HylcPeriodic, PetscObject, const char[]);
 
 PETSC_EXTERN PetscErrorCode HylcPeriodicGetSizes(HylcPeriodic, PetscInt *, PetscInt *, PetscInt *, PetscInt *);
 PETSC_EXTERN PetscErrorCode HylcPeriodicGetArea(HylcPeriodic, PetscReal *);

@@ -16,6 +16,15 @@ typedef struct {
   PetscInt  maxEvals;  /* Nelder-Mead: at most this many solves; 80 */
 } HylcReferenceParams;
 
+/* Whether a job computes the reference state first (-sampler_reference, -calibrate_reference): auto (for a
+   generated pattern; a .pyp file is its own reference state), compute, none. */
+typedef enum {
+  HYLC_REFERENCE_AUTO    = 0,
+  HYLC_REFERENCE_COMPUTE = 1,
+  HYLC_REFERENCE_NONE    = 2
+} HylcReferenceMode;
+PETSC_EXTERN const char *const HylcReferenceModes[];
+
 PETSC_EXTERN PetscErrorCode HylcReferenceParamsDefault(HylcReferenceParams *);
 /* Options (prefix -reference_): -reference_etol, -reference_max_rounds, -reference_kind auto|knit|woven,
    -reference_tension, -reference_minimum, -reference_bounds lo,hi, -reference_xtol, -reference_max_evals. */

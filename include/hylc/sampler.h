@@ -6,19 +6,48 @@
    continues without recomputing finished samples), reports progress, and writes the HDF5 file at the end
    (docs/output-format.md). A sample that fails is recorded with its status, never dropped. */
 #include <hylc/samples.h>
+#include <hylc/reference.h>
 
-typedef struct _n_HylcSampler *HylcSampler;
+typedef struct _p_HylcSampler *HylcSampler;
 
+/* The plan's ranges as options give them (HylcPlanRangesFromOptions), before the yarn radius is known. */
+typedef struct {
+  PetscInt  family;                /* index into HylcPlanFamilies: woven, stockinette, honeycomb, rib */
+  PetscBool set[HYLC_PLAN_NCOORD]; /* 1D range of coordinate c given (else the family's default) */
+  PetscReal min[HYLC_PLAN_NCOORD], max[HYLC_PLAN_NCOORD];
+} HylcPlanRanges;
+
+/* lifecycle and work (src/sampler/sampler.c; each function's manual block there) */
 PETSC_EXTERN PetscErrorCode HylcSamplerCreate(MPI_Comm, HylcSampler *);
 PETSC_EXTERN PetscErrorCode HylcSamplerDestroy(HylcSampler *);
+PETSC_EXTERN PetscErrorCode HylcSamplerSetOptionsPrefix(HylcSampler, const char[]);
 PETSC_EXTERN PetscErrorCode HylcSamplerSetFromOptions(HylcSampler);
 PETSC_EXTERN PetscErrorCode HylcSamplerSetUp(HylcSampler);
 PETSC_EXTERN PetscErrorCode HylcSamplerRun(HylcSampler);
+PETSC_EXTERN PetscErrorCode HylcSamplerView(HylcSampler, PetscViewer);
+PETSC_EXTERN PetscErrorCode HylcSamplerViewFromOptions(HylcSampler, PetscObject, const char[]);
+/* sub-objects, created on first use (the pattern on the sampler's communicator, the solver on PETSC_COMM_SELF) */
+PETSC_EXTERN PetscErrorCode HylcSamplerGetPattern(HylcSampler, HylcPattern *);
+PETSC_EXTERN PetscErrorCode HylcSamplerGetMicro(HylcSampler, HylcMicro *);
 PETSC_EXTERN PetscErrorCode HylcSamplerGetPlan(HylcSampler, const HylcPlan **);
+/* setters of the options */
+PETSC_EXTERN PetscErrorCode HylcSamplerSetYarnModel(HylcSampler, const HylcYarnModel *);
+PETSC_EXTERN PetscErrorCode HylcSamplerSetOutput(HylcSampler, const char[]);
+PETSC_EXTERN PetscErrorCode HylcSamplerSetResume(HylcSampler, PetscBool);
+PETSC_EXTERN PetscErrorCode HylcSamplerSetOverwrite(HylcSampler, PetscBool);
+PETSC_EXTERN PetscErrorCode HylcSamplerSetPlanRanges(HylcSampler, const HylcPlanRanges *);
+PETSC_EXTERN PetscErrorCode HylcSamplerSetSampleCounts(HylcSampler, PetscInt, PetscInt);
+PETSC_EXTERN PetscErrorCode HylcSamplerSetTerms(HylcSampler, PetscInt);
+PETSC_EXTERN PetscErrorCode HylcSamplerSetBatchSize(HylcSampler, PetscInt);
+PETSC_EXTERN PetscErrorCode HylcSamplerSetProgressInterval(HylcSampler, PetscReal);
+PETSC_EXTERN PetscErrorCode HylcSamplerSetExportRaw(HylcSampler, const char[], PetscReal);
+PETSC_EXTERN PetscErrorCode HylcSamplerSetReference(HylcSampler, HylcReferenceMode, const char[]);
 
 /* The plan's options, shared by hylc-sample and hylc-calibrate (src/sampler/planopts.c): family names,
-   -sampler_family and -sampler_range_<c> inside a PetscOptionsBegin/End block (ranges checked), and a term
-   list ("all", "1d" or comma-separated names). Collective. */
+   -sampler_family and -sampler_range_<c> inside a PetscOptionsBegin/End block (only read; ranges resolved
+   and checked for a radius by HylcPlanRangesApply), and a term list ("all", "1d" or comma-separated
+   names). Collective. */
 PETSC_EXTERN const char *const HylcPlanFamilies[];
-PETSC_EXTERN PetscErrorCode    HylcPlanRangesFromOptions(PetscOptionItems *, MPI_Comm, PetscReal, const char[], HylcPlan *);
+PETSC_EXTERN PetscErrorCode    HylcPlanRangesFromOptions(PetscOptionItems *, MPI_Comm, const char[], HylcPlanRanges *);
+PETSC_EXTERN PetscErrorCode    HylcPlanRangesApply(MPI_Comm, const HylcPlanRanges *, PetscReal, HylcPlan *);
 PETSC_EXTERN PetscErrorCode    HylcPlanTermsFromString(MPI_Comm, const char[], const char[], int *);

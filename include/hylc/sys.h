@@ -14,6 +14,7 @@ PETSC_EXTERN PetscLogEvent HYLC_PatternLoad, HYLC_PatternWrite, HYLC_PatternGene
 PETSC_EXTERN PetscLogEvent HYLC_TileEvaluate, HYLC_TileBroadphase, HYLC_TileContact, HYLC_TileAssemble;
 PETSC_EXTERN PetscLogEvent HYLC_PeriodicSetUp, HYLC_PeriodicEvaluate, HYLC_MicroSolve, HYLC_SamplerRun;
 PETSC_EXTERN PetscLogEvent HYLC_CholSymbolic, HYLC_CholNumeric, HYLC_CholSolve;
+PETSC_EXTERN PetscClassId  HYLC_PERIODIC_CLASSID, HYLC_SAMPLER_CLASSID;
 
 /* The fill-reducing ordering used for the Newton factorization unless -micro_factor_pc_factor_mat_ordering_type says otherwise. */
 PETSC_EXTERN const char   *HylcDefaultOrdering(void);

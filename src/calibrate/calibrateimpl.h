@@ -1,6 +1,7 @@
 #pragma once
 /* Private definition of HylcCalibrate (src/calibrate/ only). */
 #include <hylc/calibrate.h>
+#include <hylc/sampler.h>
 #include <petsc/private/petscimpl.h>
 
 #define HYLC_CALIB_NTERM   (HYLC_PLAN_NTERM + 1) /* the plan's 15 terms and "other" (rows of a file off the plan's axes) */
@@ -28,22 +29,24 @@ struct _p_HylcCalibrate {
   HylcCalibTargetType targetType; /* as given (auto) and as resolved in SetUp */
   HylcCalibTargetType targetResolved;
   /* the tile */
-  HylcPattern         pat;
+  HylcPattern         pat; /* created by HylcCalibrateGetPattern(), set up by HylcCalibrateSetUp() */
   char                patLabel[PETSC_MAX_PATH_LEN + 64];
   HylcYarnModel       model; /* the initial model as read from -yarn_* */
-  HylcMicro           micro; /* this rank's solver (PETSC_COMM_SELF) */
+  HylcMicro           micro; /* this rank's solver (PETSC_COMM_SELF), created by HylcCalibrateGetMicro() */
   HylcReferenceParams refpar;
-  PetscInt            refmode; /* 0 auto, 1 compute, 2 none */
+  HylcReferenceMode   refmode;
   PetscBool           refComputed;
   /* parameters */
   HylcCalibrateRole role[HYLC_CALIBRATE_NPARAM];
-  PetscReal         p0[HYLC_CALIBRATE_NPARAM], p[HYLC_CALIBRATE_NPARAM]; /* initial (resolved), current */
-  PetscReal         lo[HYLC_CALIBRATE_NPARAM], hi[HYLC_CALIBRATE_NPARAM];
-  PetscBool         held[HYLC_CALIBRATE_NPARAM];  /* free but not determined by the data: held */
-  PetscBool         bound[HYLC_CALIBRATE_NPARAM]; /* free and ending at a bound */
+  PetscReal         p0[HYLC_CALIBRATE_NPARAM], p[HYLC_CALIBRATE_NPARAM];    /* initial (resolved), current */
+  PetscReal         blo[HYLC_CALIBRATE_NPARAM], bhi[HYLC_CALIBRATE_NPARAM]; /* bounds as given (-1: relative to the initial value) */
+  PetscReal         lo[HYLC_CALIBRATE_NPARAM], hi[HYLC_CALIBRATE_NPARAM];   /* bounds resolved by HylcCalibrateSetUp() */
+  PetscBool         held[HYLC_CALIBRATE_NPARAM];                            /* free but not determined by the data: held */
+  PetscBool         bound[HYLC_CALIBRATE_NPARAM];                           /* free and ending at a bound */
   /* sampling of a table target */
-  HylcPlan plan;
-  PetscInt n1, n2, terms; /* samples per 1D term, per 2D axis; bit t: term t */
+  HylcPlanRanges ranges;
+  HylcPlan       plan;          /* ranges resolved for the yarn radius by HylcCalibrateSetUp() */
+  PetscInt       n1, n2, terms; /* samples per 1D term, per 2D axis; bit t: term t */
   /* thinning of a file target */
   PetscInt stride, maxSamples;
   /* objective */
@@ -62,10 +65,14 @@ struct _p_HylcCalibrate {
   PetscReal     *rec0, *rec1; /* m x HYLC_CALIB_NRECORD: the initial and the final evaluation */
   PetscReal      f0, f1;
   PetscInt       its, nevals;
-  PetscBool      setupcalled, solved;
+  PetscBool      solverSetUp, setupcalled, solved;
   PetscLogDouble tsolve;
 };
 
+/* calibrate.c: frees the samples and results, marks the object not set up */
+PETSC_INTERN PetscErrorCode HylcCalibrateResetSamples_Private(HylcCalibrate);
+/* calibrate.c: the pattern set up, the initial values and bounds resolved, the plan resolved, the solver set up */
+PETSC_INTERN PetscErrorCode HylcCalibrateSetUpSolver_Private(HylcCalibrate);
 /* target.c: reads the target and fills z, target, term, nt, range (collective) */
 PETSC_INTERN PetscErrorCode HylcCalibrateReadTarget_Private(HylcCalibrate);
 /* term name (the plan's names and "other") */

@@ -101,6 +101,24 @@ PetscErrorCode HylcCalibrateResiduals_Private(HylcCalibrate C, const PetscReal r
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcCalibrateEvaluate - The objective f at explicit parameter values p = (E, Es, G, kc) (no ties applied)
+  and its gradient grad[j] = df / dlog p_j by the envelope theorem; one solve per sample, the samples
+  spread over the ranks. After HylcCalibrateSetUp().
+
+  Collective
+
+  Input Parameters:
++ C - the calibration
+- p - the 4 parameter values (> 0)
+
+  Output Parameters:
++ f       - the objective
+. grad    - the gradient in log parameters (may be NULL)
+- nfailed - samples left out because they did not converge (may be NULL)
+
+  Level: intermediate
+@*/
 PetscErrorCode HylcCalibrateEvaluate(HylcCalibrate C, const PetscReal p[], PetscReal *f, PetscReal grad[], PetscInt *nfailed)
 {
   PetscReal *rec, *r, *J;
@@ -291,12 +309,20 @@ static PetscErrorCode WriteDump(HylcCalibrate C)
   HylcCalibrateSolve - Levenberg-Marquardt on the normalised residuals in log parameters (docs/calibrate.md):
   one solve per sample per trial point; the Jacobian comes with it (envelope theorem). Prints a line per
   iteration, holds parameters along flat directions, flags parameters at a bound, and writes
-  -calibrate_output and -calibrate_dump. Collective.
+  -calibrate_output and -calibrate_dump. Calls HylcCalibrateSetUp() first if needed.
+
+  Collective
+
+  Input Parameter:
+. C - the calibration
+
+  Level: beginner
 @*/
 PetscErrorCode HylcCalibrateSolve(HylcCalibrate C)
 {
   MPI_Comm       comm = PetscObjectComm((PetscObject)C);
-  const PetscInt NP = HYLC_CALIBRATE_NPARAM, m = C->m;
+  const PetscInt NP   = HYLC_CALIBRATE_NPARAM;
+  PetscInt       m;
   PetscReal     *rec, *r, *J, *rect, *rt, *Jt, *Jc;
   PetscReal      x[HYLC_CALIBRATE_NPARAM], p[HYLC_CALIBRATE_NPARAM], xlo[HYLC_CALIBRATE_NPARAM], xhi[HYLC_CALIBRATE_NPARAM];
   PetscReal      f, ft, lambda         = C->lambda0;
@@ -307,6 +333,7 @@ PetscErrorCode HylcCalibrateSolve(HylcCalibrate C)
   PetscFunctionBegin;
   PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
   PetscCall(HylcCalibrateSetUp(C));
+  m = C->m; /* known after the set-up */
   PetscCall(PetscLogEventBegin(HYLC_CalibrateSolve, C, 0, 0, 0));
   PetscCall(PetscTime(&ts));
   /* separate allocations: the current and trial arrays are swapped on acceptance */

@@ -130,7 +130,8 @@ PetscErrorCode HylcMicroSetPattern(HylcMicro M, HylcPattern pat, const HylcYarnM
   PetscCall(MicroFreeSolver(M));
   M->pat   = pat;
   M->model = *model;
-  PetscCall(HylcPeriodicCreate(pat, model, &M->P));
+  PetscCall(HylcPeriodicCreate(PETSC_COMM_SELF, &M->P));
+  PetscCall(HylcPeriodicSetPattern(M->P, pat, model));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -4,53 +4,84 @@
 
 const char *const HylcPlanFamilies[] = {"woven", "stockinette", "honeycomb", "rib", "HylcPlanFamily", "", NULL};
 
-/* a 1D range option "-sampler_range_<name> min,max" */
-static PetscErrorCode RangeOption(PetscOptionItems *PetscOptionsObject, MPI_Comm comm, const char name[], const char man[], double *mn, double *mx)
+/*@C
+  HylcPlanRangesFromOptions - Reads the plan's ranges inside a PetscOptionsBegin/End block (only reads them;
+  HylcPlanRangesApply() turns them into ranges for a yarn radius): -sampler_family (the defaults of
+  method-spec §8, II scaled by 1 mm / r) and -sampler_range_<c> min,max for c = sx, sa, sy, II00, II11
+  (the 2D ranges follow the 1D ones in proportion). -help shows the family's defaults for r = 1 mm.
+
+  Collective
+
+  Input Parameters:
++ PetscOptionsObject - the options block
+. comm   - communicator for errors
+- man    - the manual page named in -help (the setter of the calling object)
+
+  Output Parameter:
+. ranges - the family and the ranges given
+
+  Level: developer
+
+.seealso: HylcPlanRangesApply(), HylcSamplerSetPlanRanges(), HylcCalibrateSetPlanRanges()
+@*/
+PetscErrorCode HylcPlanRangesFromOptions(PetscOptionItems *PetscOptionsObject, MPI_Comm comm, const char man[], HylcPlanRanges *ranges)
 {
-  PetscReal v[2] = {*mn, *mx};
-  PetscInt  n    = 2;
-  PetscBool set;
-  char      opt[64];
+  const char *cn[HYLC_PLAN_NCOORD] = {"sx", "sa", "sy", "II00", "II11"};
+  PetscEnum   fam                  = (PetscEnum)ranges->family;
+  HylcPlan    p;
 
   PetscFunctionBegin;
-  PetscCall(PetscSNPrintf(opt, sizeof(opt), "-sampler_range_%s", name));
-  PetscCall(PetscOptionsRealArray(opt, "1D sampling range min,max of this strain (II in 1/m); the 2D ranges scale with it", man, v, &n, &set));
-  if (set) {
-    PetscCheck(n == 2 && v[0] <= v[1], comm, PETSC_ERR_USER_INPUT, "%s needs two values min,max with min <= max", opt);
-    *mn = v[0];
-    *mx = v[1];
+  PetscCall(PetscOptionsEnum("-sampler_family", "Default sampling ranges of method-spec 8 (II scaled by 1 mm / r)", man, HylcPlanFamilies, fam, &fam, NULL));
+  ranges->family = (PetscInt)fam;
+  PetscCheck(!HylcPlanDefaults(HylcPlanFamilies[fam], 1, &p), comm, PETSC_ERR_USER_INPUT, "Unknown sampling family");
+  for (int c = 0; c < HYLC_PLAN_NCOORD; c++) {
+    PetscReal v[2] = {ranges->set[c] ? ranges->min[c] : p.min1[c], ranges->set[c] ? ranges->max[c] : p.max1[c]};
+    PetscInt  n    = 2;
+    PetscBool set;
+    char      opt[64];
+    PetscCall(PetscSNPrintf(opt, sizeof(opt), "-sampler_range_%s", cn[c]));
+    PetscCall(PetscOptionsRealArray(opt, "1D sampling range min,max of this strain (II in 1/m; default the family's, II for r = 1 mm scaled by 1 mm / r); the 2D ranges scale with it", man, v, &n, &set));
+    if (set) {
+      PetscCheck(n == 2 && v[0] <= v[1], comm, PETSC_ERR_USER_INPUT, "%s needs two values min,max with min <= max", opt);
+      ranges->set[c] = PETSC_TRUE;
+      ranges->min[c] = v[0];
+      ranges->max[c] = v[1];
+    }
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /*@C
-  HylcPlanRangesFromOptions - Reads the plan's ranges inside a PetscOptionsBegin/End block: -sampler_family
-  (the defaults of method-spec §8, II scaled by 1 mm / r) and -sampler_range_<c> min,max for c = sx, sa, sy,
-  II00, II11 (the 2D ranges follow the 1D ones in proportion), and checks them. Collective.
+  HylcPlanRangesApply - The plan's ranges for a yarn radius: the family's defaults (II scaled by 1 mm / r),
+  the 1D ranges given replacing them, the 2D ranges following the 1D ones in proportion; checks them.
+
+  Not collective
 
   Input Parameters:
-+ PetscOptionsObject - the options block
-. comm   - communicator for errors
-. radius - the yarn radius (m)
-- man    - the manual page named in -help
++ comm   - communicator for errors
+. ranges - from HylcPlanRangesFromOptions() (or filled by hand)
+- radius - the yarn radius (m)
 
   Output Parameter:
 . plan   - ranges set; n1, n2 and terms are left as they were
 
   Level: developer
+
+.seealso: HylcPlanRangesFromOptions()
 @*/
-PetscErrorCode HylcPlanRangesFromOptions(PetscOptionItems *PetscOptionsObject, MPI_Comm comm, PetscReal radius, const char man[], HylcPlan *plan)
+PetscErrorCode HylcPlanRangesApply(MPI_Comm comm, const HylcPlanRanges *ranges, PetscReal radius, HylcPlan *plan)
 {
-  const char *cn[5] = {"sx", "sa", "sy", "II00", "II11"};
-  PetscEnum   fam   = 0;
-  HylcPlan    p     = *plan;
+  const char *cn[HYLC_PLAN_NCOORD] = {"sx", "sa", "sy", "II00", "II11"};
+  HylcPlan    p                    = *plan;
 
   PetscFunctionBegin;
-  PetscCall(PetscOptionsEnum("-sampler_family", "Default sampling ranges of method-spec 8 (II scaled by 1 mm / r)", man, HylcPlanFamilies, fam, &fam, NULL));
-  PetscCheck(!HylcPlanDefaults(HylcPlanFamilies[fam], 1e-3 / radius, &p), comm, PETSC_ERR_USER_INPUT, "Unknown sampling family");
-  for (int c = 0; c < 5; c++) {
+  PetscCheck(ranges->family >= 0 && ranges->family < 4 && !HylcPlanDefaults(HylcPlanFamilies[ranges->family], 1e-3 / radius, &p), comm, PETSC_ERR_USER_INPUT, "Unknown sampling family");
+  for (int c = 0; c < HYLC_PLAN_NCOORD; c++) {
     const double mn0 = p.min1[c], mx0 = p.max1[c];
-    PetscCall(RangeOption(PetscOptionsObject, comm, cn[c], man, &p.min1[c], &p.max1[c]));
+    if (ranges->set[c]) {
+      p.min1[c] = ranges->min[c];
+      p.max1[c] = ranges->max[c];
+    }
     for (int t = 6; t < HYLC_PLAN_NTERM; t++) { /* 2D ranges follow the 1D ones in proportion */
       int ci, cj;
       HylcPlanPair(t, &ci, &cj);
@@ -61,7 +92,7 @@ PetscErrorCode HylcPlanRangesFromOptions(PetscOptionItems *PetscOptionsObject, M
         }
     }
   }
-  for (int c = 0; c < 5; c++) {
+  for (int c = 0; c < HYLC_PLAN_NCOORD; c++) {
     double Z[1];
     PetscCheck(!HylcSampleRange(c, p.min1[c], p.max1[c], 1, Z), comm, PETSC_ERR_USER_INPUT, "-sampler_range_%s %g,%g is not a valid range (sx, sy > -1; the others must contain 0)", cn[c], p.min1[c], p.max1[c]);
   }

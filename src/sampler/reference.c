@@ -1,7 +1,8 @@
 /* The reference state of Algorithm C1 (include/hylc/reference.h). */
 #include <hylc/reference.h>
 
-static const char *const Kinds[] = {"auto", "knit", "woven", "HylcReferenceKind", "", NULL};
+const char *const        HylcReferenceModes[] = {"auto", "compute", "none", "HylcReferenceMode", "HYLC_REFERENCE_", NULL};
+static const char *const Kinds[]              = {"auto", "knit", "woven", "HylcReferenceKind", "", NULL};
 
 PetscErrorCode HylcReferenceParamsDefault(HylcReferenceParams *p)
 {

@@ -1,426 +1,241 @@
-/* HylcSampler: the MPI sampling job (include/hylc/sampler.h). */
-#include <hylc/sampler.h>
-#include <hylc/reference.h>
-#include <petsctime.h>
-#include <unistd.h>
-#include <string.h>
-#include <sys/stat.h>
+/* HylcSampler: lifecycle, sub-objects, View (include/hylc/sampler.h). */
+#include "samplerimpl.h"
 
-#define TAG_RECORDS 7301
-#define TAG_DONE    7302
+/*@C
+  HylcSamplerCreate - Creates the sampling job: output samples.h5, the woven family's ranges, every term
+  with 150 samples per 1D term and 50 per axis of a 2D term, batches of 1, progress every 5 s, the
+  reference state computed for generated patterns (auto), the default yarn model.
 
-struct _n_HylcSampler {
-  MPI_Comm            comm;
-  PetscMPIInt         rank, size;
-  HylcPattern         pat;
-  HylcYarnModel       model;
-  HylcMicro           micro;
-  HylcPlan            plan;
-  char                output[PETSC_MAX_PATH_LEN];
-  PetscBool           resume, overwrite;
-  HylcJournal         journal;  /* rank 0: open and locked from HylcSamplerSetUp() to the end of the run */
-  char               *identity; /* rank 0: the run's identity text (HylcSamplesIdentity) */
-  unsigned char      *done;     /* HylcSamplerRun's scratch (owned here, so an error exit frees it too): */
-  HylcSampleRecord   *recs;     /* samples done, and one batch of records */
-  PetscInt            batch;
-  PetscReal           progress; /* seconds between progress lines */
-  long                nsamples;
-  PetscInt            refmode; /* 0 auto, 1 compute, 2 none */
-  HylcReferenceParams refpar;
-  char                refout[PETSC_MAX_PATH_LEN];
-  char                rawdir[PETSC_MAX_PATH_LEN]; /* export of the paper's raw layout (data.txt, info.txt) */
-  PetscReal           density;                    /* volumetric yarn density for info.txt (kg/m^3) */
-};
+  Collective
 
+  Input Parameter:
+. comm - the ranks that share the work
+
+  Output Parameter:
+. s - the new sampler
+
+  Level: beginner
+
+.seealso: HylcSamplerSetFromOptions(), HylcSamplerSetUp(), HylcSamplerRun(), HylcSamplerDestroy()
+@*/
 PetscErrorCode HylcSamplerCreate(MPI_Comm comm, HylcSampler *s)
 {
   HylcSampler S;
 
   PetscFunctionBegin;
+  PetscValidPointer(s, 2);
+  *s = NULL;
   PetscCall(HylcInitializePackage());
-  PetscCall(PetscNew(&S));
-  S->comm = comm;
+  PetscCall(PetscHeaderCreate(S, HYLC_SAMPLER_CLASSID, "HylcSampler", "Sampling job", "Sampler", comm, HylcSamplerDestroy, HylcSamplerView));
   PetscCallMPI(MPI_Comm_rank(comm, &S->rank));
   PetscCallMPI(MPI_Comm_size(comm, &S->size));
   PetscCall(PetscStrncpy(S->output, "samples.h5", sizeof(S->output)));
+  S->n1       = 150;
+  S->n2       = 50;
+  S->terms    = (1 << HYLC_PLAN_NTERM) - 1;
   S->batch    = 1;
   S->progress = 5;
   S->density  = 0;
-  *s          = S;
+  S->refmode  = HYLC_REFERENCE_AUTO;
+  PetscCall(HylcYarnModelDefault(&S->model));
+  PetscCall(HylcReferenceParamsDefault(&S->refpar));
+  *s = S;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcSamplerDestroy - Destroys the sampler (drops a reference; frees it, its pattern, solver and journal
+  with the last one).
+
+  Collective
+
+  Input Parameter:
+. s - the sampler (may be NULL); set to NULL
+
+  Level: beginner
+
+.seealso: HylcSamplerCreate()
+@*/
 PetscErrorCode HylcSamplerDestroy(HylcSampler *s)
 {
   PetscFunctionBegin;
   if (!*s) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscValidHeaderSpecific(*s, HYLC_SAMPLER_CLASSID, 1);
+  if (--((PetscObject)(*s))->refct > 0) {
+    *s = NULL;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   PetscCall(HylcJournalClose(&(*s)->journal));
   PetscCall(PetscFree((*s)->identity));
   PetscCall(PetscFree2((*s)->done, (*s)->recs));
   PetscCall(HylcMicroDestroy(&(*s)->micro));
   PetscCall(HylcPatternDestroy(&(*s)->pat));
-  PetscCall(PetscFree(*s));
+  PetscCall(PetscHeaderDestroy(s));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /*@C
-  HylcSamplerSetFromOptions - Options of the sampling job (besides -pattern_*, -yarn_*, -micro_*,
-  -periodic_*, -macro_*):
-+ -sampler_output <samples.h5>    - the HDF5 output (its journal: <output>.journal)
-. -sampler_resume                 - continue an interrupted run from its journal (refused if its settings differ)
-. -sampler_overwrite              - start over: replace an existing output and its journal (without either
-                                    option an existing output or a journal holding samples is refused)
-. -sampler_family <woven>         - default ranges of method-spec §8: woven, stockinette, honeycomb, rib
-. -sampler_range_<c> min,max      - 1D range of c = sx, sa, sy, II00, II11 (II in 1/m; 2D ranges follow)
-. -sampler_n1 <150>, -sampler_n2 <50> - samples per 1D term, per axis of a 2D term
-. -sampler_terms <all>            - comma list of terms: zero, sx, sa, sy, II00, II11, sx-sa, sx-sy,
-                                    sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11, or all
-. -sampler_batch <1>              - samples per batch (the unit of work handed to a rank)
-- -sampler_progress <5>           - seconds between progress lines
+  HylcSamplerSetOptionsPrefix - Sets the prefix of the sampler's own options (-<prefix>sampler_*,
+  -<prefix>sampler_view).
+
+  Not collective
+
+  Input Parameters:
++ S      - the sampler
+- prefix - the prefix (NULL: none)
+
+  Level: intermediate
+
+.seealso: HylcSamplerSetFromOptions()
 @*/
-PetscErrorCode HylcSamplerSetFromOptions(HylcSampler S)
+PetscErrorCode HylcSamplerSetOptionsPrefix(HylcSampler S, const char prefix[])
 {
-  char      terms[512] = "all";
-  PetscInt  n1 = 150, n2 = 50;
-  PetscReal r;
-
   PetscFunctionBegin;
-  PetscCall(HylcPatternCreate(S->comm, &S->pat));
-  PetscCall(HylcPatternSetFromOptions(S->pat));
-  PetscCall(HylcPatternSetUp(S->pat));
-  PetscCall(HylcPatternGetRadius(S->pat, &r));
-  PetscCall(HylcYarnModelDefault(&S->model));
-  PetscCall(HylcYarnModelSetFromOptions(S->comm, NULL, &S->model));
-  {
-    const char *const refmodes[] = {"auto", "compute", "none", "HylcSamplerReference", "", NULL};
-    PetscEnum         mode       = (PetscEnum)S->refmode;
-    PetscCall(HylcReferenceParamsDefault(&S->refpar));
-    PetscCall(HylcReferenceParamsSetFromOptions(S->comm, &S->refpar));
-    PetscOptionsBegin(S->comm, NULL, "Sampling job: reference state", "HylcSampler");
-    PetscCall(PetscOptionsEnum("-sampler_reference", "Reference state (Algorithm C1): auto (compute for generated patterns, not for files), compute, none", "HylcSampler", refmodes, mode, &mode, NULL));
-    PetscCall(PetscOptionsString("-reference_output", "Write the reference state as .pyp", "HylcSampler", S->refout, S->refout, sizeof(S->refout), NULL));
-    PetscOptionsEnd();
-    S->refmode = (PetscInt)mode;
-  }
-  PetscOptionsBegin(S->comm, NULL, "Sampling job (Algorithm C4)", "HylcSampler");
-  PetscCall(PetscOptionsString("-sampler_output", "HDF5 output file (the journal is <output>.journal)", "HylcSampler", S->output, S->output, sizeof(S->output), NULL));
-  PetscCall(PetscOptionsBool("-sampler_resume", "Continue an interrupted run from its journal <output>.journal (refused, naming the differences, if any setting that changes results differs)", "HylcSampler", S->resume, &S->resume, NULL));
-  PetscCall(PetscOptionsBool("-sampler_overwrite", "Start over: replace an existing output and its journal (without -sampler_resume or this, an existing output or journal with samples is refused)", "HylcSampler", S->overwrite, &S->overwrite, NULL));
-  PetscCall(HylcPlanRangesFromOptions(PetscOptionsObject, S->comm, r, "HylcSampler", &S->plan));
-  PetscCall(PetscOptionsInt("-sampler_n1", "Samples per 1D term", "HylcSampler", n1, &n1, NULL));
-  PetscCall(PetscOptionsInt("-sampler_n2", "Samples per axis of a 2D term", "HylcSampler", n2, &n2, NULL));
-  PetscCall(PetscOptionsString("-sampler_terms", "Terms to sample: all, or a comma list of zero, sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11", "HylcSampler", terms, terms, sizeof(terms), NULL));
-  PetscCall(PetscOptionsInt("-sampler_batch", "Samples per batch (unit of work of a rank)", "HylcSampler", S->batch, &S->batch, NULL));
-  PetscCall(PetscOptionsReal("-sampler_progress", "Seconds between progress lines", "HylcSampler", S->progress, &S->progress, NULL));
-  PetscCall(PetscOptionsString("-sampler_export_raw", "Also write the paper's raw layout into this directory: data.txt (rows sx sa sy II00 II01 II11 Psi in the order of C4) and info.txt (area, area density)", "HylcSampler", S->rawdir, S->rawdir, sizeof(S->rawdir), NULL));
-  PetscCall(PetscOptionsReal("-sampler_density", "Volumetric yarn density for the area density of info.txt (kg/m^3; <= 0: 0.12 kg/m^2 / r, as hylc-fit)", "HylcSampler", S->density, &S->density, NULL));
-  PetscOptionsEnd();
-  PetscCheck(n1 >= 1 && n1 <= 1024 && n2 >= 1 && n2 <= 1024, S->comm, PETSC_ERR_USER_INPUT, "-sampler_n1 and -sampler_n2 must be in 1..1024");
-  PetscCheck(S->batch >= 1, S->comm, PETSC_ERR_USER_INPUT, "-sampler_batch must be at least 1");
-  S->plan.n1    = (int)n1;
-  S->plan.n2    = (int)n2;
-  S->plan.terms = (1 << HYLC_PLAN_NTERM) - 1;
-  PetscCall(HylcPlanTermsFromString(S->comm, "-sampler_terms", terms, &S->plan.terms));
-  PetscCall(HylcMicroCreate(PETSC_COMM_SELF, &S->micro));
-  PetscCall(HylcMicroSetPattern(S->micro, S->pat, &S->model));
-  PetscCall(HylcMicroSetFromOptions(S->micro));
-  PetscCall(HylcMicroSetUp(S->micro));
-  S->nsamples = HylcPlanSize(&S->plan);
-  PetscCheck(S->nsamples > 0, S->comm, PETSC_ERR_USER_INPUT, "The sampling plan is empty (-sampler_terms)");
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* rank 0, before any solve: every output path writable and none of them an input, the existing output
-   and journal as the mode allows, then the journal locked and opened (resume: the identity checked) */
-static PetscErrorCode CheckOutputsAndLock(HylcSampler S)
-{
-  char        jpath[PETSC_MAX_PATH_LEN + 16], pfile[PETSC_MAX_PATH_LEN] = "", raw[2][PETSC_MAX_PATH_LEN + 16];
-  PetscBool   haspf = PETSC_FALSE;
-  struct stat st;
-
-  PetscFunctionBegin;
-  PetscCall(PetscSNPrintf(jpath, sizeof(jpath), "%s.journal", S->output));
-  PetscCall(PetscOptionsGetString(NULL, NULL, "-pattern_file", pfile, sizeof(pfile), &haspf));
-  PetscCall(HylcFileCheckOutput(PETSC_COMM_SELF, S->output, "-sampler_output"));
-  PetscCall(HylcFileCheckOutput(PETSC_COMM_SELF, jpath, "the journal of -sampler_output"));
-  PetscCall(HylcFileCheckDistinct(PETSC_COMM_SELF, S->output, "-sampler_output", pfile, "-pattern_file"));
-  PetscCall(HylcFileCheckDistinct(PETSC_COMM_SELF, jpath, "the journal of -sampler_output", pfile, "-pattern_file"));
-  if (S->refout[0]) {
-    PetscCall(HylcFileCheckOutput(PETSC_COMM_SELF, S->refout, "-reference_output"));
-    PetscCall(HylcFileCheckDistinct(PETSC_COMM_SELF, S->refout, "-reference_output", pfile, "-pattern_file"));
-    PetscCall(HylcFileCheckDistinct(PETSC_COMM_SELF, S->refout, "-reference_output", S->output, "-sampler_output"));
-    PetscCall(HylcFileCheckDistinct(PETSC_COMM_SELF, S->refout, "-reference_output", jpath, "the journal of -sampler_output"));
-    PetscCheck(strcmp(S->refout, S->output) && strcmp(S->refout, jpath), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-reference_output %s is the samples file or its journal", S->refout);
-  }
-  if (S->rawdir[0]) {
-    PetscCheck(stat(S->rawdir, &st) == 0 && S_ISDIR(st.st_mode), PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot write into -sampler_export_raw %s: %s", S->rawdir, stat(S->rawdir, &st) ? "no such directory (create it first)" : "not a directory");
-    PetscCall(PetscSNPrintf(raw[0], sizeof(raw[0]), "%s/data.txt", S->rawdir));
-    PetscCall(PetscSNPrintf(raw[1], sizeof(raw[1]), "%s/info.txt", S->rawdir));
-    for (int i = 0; i < 2; i++) {
-      PetscCall(HylcFileCheckOutput(PETSC_COMM_SELF, raw[i], "-sampler_export_raw"));
-      PetscCall(HylcFileCheckDistinct(PETSC_COMM_SELF, raw[i], "-sampler_export_raw", pfile, "-pattern_file"));
-    }
-  }
-  if (!S->resume && !S->overwrite) PetscCheck(access(S->output, F_OK) != 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "Output %s exists: start over with -sampler_overwrite, or continue its run with -sampler_resume", S->output);
-  if (S->resume) PetscCheck(access(S->output, F_OK) != 0 || access(jpath, F_OK) == 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-sampler_resume: output %s exists but its journal %s does not, so there is no run to continue: start over with -sampler_overwrite", S->output, jpath);
-  PetscCall(HylcSamplesIdentity(S->pat, &S->identity));
-  PetscCall(HylcJournalOpen(jpath, S->resume ? HYLC_JOURNAL_RESUME : (S->overwrite ? HYLC_JOURNAL_OVERWRITE : HYLC_JOURNAL_NEW), S->nsamples, S->identity, &S->journal));
+  PetscValidHeaderSpecific(S, HYLC_SAMPLER_CLASSID, 1);
+  PetscCall(PetscObjectSetOptionsPrefix((PetscObject)S, prefix));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /*@C
-  HylcSamplerSetUp - Before any solve: refuses unknown options, checks every output path (writable,
-  not a directory, not an input), locks and opens the journal (a resume with other settings is refused
-  here, naming them); the verdict of rank 0 is shared, so every rank raises the same error. Then
-  computes the reference state when asked for (Algorithm C1). Collective.
-@*/
-PetscErrorCode HylcSamplerSetUp(HylcSampler S)
-{
-  HylcPatternType type;
-  PetscBool       isfile;
-  int             code      = 0;
-  char            msg[2048] = "";
+  HylcSamplerGetPattern - The sampler's pattern, created (unset) on first use; HylcSamplerSetFromOptions()
+  reads its options and HylcSamplerSetUp() loads or generates it (and may replace it by its reference
+  state). Borrowed: do not destroy it.
 
+  Collective on the first call
+
+  Input Parameter:
+. S - the sampler
+
+  Output Parameter:
+. pat - the pattern
+
+  Level: intermediate
+
+.seealso: HylcSamplerGetMicro()
+@*/
+PetscErrorCode HylcSamplerGetPattern(HylcSampler S, HylcPattern *pat)
+{
   PetscFunctionBegin;
-  PetscCheck(S->micro, S->comm, PETSC_ERR_ARG_WRONGSTATE, "Call HylcSamplerSetFromOptions() first");
-  PetscCall(HylcCheckOptionsUsed(S->comm));
-  PetscCheck(!(S->resume && S->overwrite), S->comm, PETSC_ERR_USER_INPUT, "-sampler_resume (continue the run) and -sampler_overwrite (start over) exclude each other");
-  if (!S->rank) {
-    PetscErrorCode ierr;
-    PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
-    ierr = CheckOutputsAndLock(S);
-    PetscCall(PetscPopErrorHandler());
-    if (ierr) {
-      char *text = NULL;
-      code       = (int)ierr;
-      PetscCall(PetscErrorMessage(ierr, NULL, &text));
-      PetscCall(PetscStrncpy(msg, text && text[0] ? text : "checking the outputs failed", sizeof(msg)));
-    }
-  }
-  PetscCallMPI(MPI_Bcast(&code, 1, MPI_INT, 0, S->comm));
-  if (code) {
-    PetscCallMPI(MPI_Bcast(msg, (PetscMPIInt)sizeof(msg), MPI_CHAR, 0, S->comm));
-    SETERRQ(S->comm, (PetscErrorCode)code, "%s", msg);
-  }
-  PetscCall(HylcPatternGetType(S->pat, &type));
-  PetscCall(PetscStrcmp(type, HYLCPATTERNFILE, &isfile));
-  if (S->refmode == 1 || (S->refmode == 0 && !isfile)) {
-    HylcPattern ref;
-    PetscCall(HylcReferenceStateCompute(S->pat, &S->model, &S->refpar, S->rank ? NULL : PETSC_VIEWER_STDOUT_SELF, &ref));
-    PetscCall(HylcPatternDestroy(&S->pat));
-    S->pat = ref;
-    PetscCall(HylcMicroSetPattern(S->micro, S->pat, &S->model));
-    PetscCall(HylcMicroSetFromOptions(S->micro));
-  }
-  if (S->refout[0]) PetscCall(HylcPatternWrite(S->pat, S->refout));
+  PetscValidHeaderSpecific(S, HYLC_SAMPLER_CLASSID, 1);
+  PetscValidPointer(pat, 2);
+  if (!S->pat) PetscCall(HylcPatternCreate(PetscObjectComm((PetscObject)S), &S->pat));
+  *pat = S->pat;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcSamplerGetMicro - The solver of this rank's samples (on PETSC_COMM_SELF), created on first use;
+  HylcSamplerSetFromOptions() reads its options and HylcSamplerSetUp() gives it the pattern and sets it up.
+  Borrowed: do not destroy it.
+
+  Not collective
+
+  Input Parameter:
+. S - the sampler
+
+  Output Parameter:
+. micro - the solver
+
+  Level: intermediate
+
+.seealso: HylcSamplerGetPattern()
+@*/
+PetscErrorCode HylcSamplerGetMicro(HylcSampler S, HylcMicro *micro)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(S, HYLC_SAMPLER_CLASSID, 1);
+  PetscValidPointer(micro, 2);
+  if (!S->micro) PetscCall(HylcMicroCreate(PETSC_COMM_SELF, &S->micro));
+  *micro = S->micro;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcSamplerGetPlan - The sampling plan (its ranges resolved by HylcSamplerSetUp()).
+
+  Not collective
+
+  Input Parameter:
+. S - the sampler
+
+  Output Parameter:
+. plan - the plan (borrowed)
+
+  Level: intermediate
+@*/
 PetscErrorCode HylcSamplerGetPlan(HylcSampler S, const HylcPlan **plan)
 {
   PetscFunctionBegin;
+  PetscValidHeaderSpecific(S, HYLC_SAMPLER_CLASSID, 1);
+  PetscCheck(S->solverSetUp, PetscObjectComm((PetscObject)S), PETSC_ERR_ARG_WRONGSTATE, "Call HylcSamplerSetUp() first (the plan's ranges depend on the yarn radius)");
   *plan = &S->plan;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode SolveSample(HylcSampler S, long k, HylcSampleRecord *rec)
+/*@C
+  HylcSamplerView - Prints the sampling job: output and journal mode, plan (family, samples per term, terms,
+  number of samples after the set-up), batch size, reference state, ranks.
+
+  Collective
+
+  Input Parameters:
++ S      - the sampler
+- viewer - an ASCII viewer (NULL: stdout of the sampler's communicator)
+
+  Level: beginner
+
+.seealso: HylcSamplerViewFromOptions()
+@*/
+PetscErrorCode HylcSamplerView(HylcSampler S, PetscViewer viewer)
 {
-  HylcMicroResult r;
-  double          z[6];
-  int             term;
+  PetscBool iascii;
+  char      terms[256] = "", count[64];
 
   PetscFunctionBegin;
-  PetscCheck(!HylcPlanSample(&S->plan, k, z, &term), PETSC_COMM_SELF, PETSC_ERR_PLIB, "Sample %ld outside the plan", k);
-  PetscCall(HylcMicroSolve(S->micro, z, &r));
-  PetscCall(PetscMemzero(rec, sizeof(*rec)));
-  rec->index      = k;
-  rec->term       = term;
-  rec->status     = (int)r.status;
-  rec->iterations = (int)r.iterations;
-  rec->retries    = (int)r.retries;
-  for (int i = 0; i < 6; i++) rec->z[i] = z[i];
-  rec->psi = r.psi;
-  for (int i = 0; i < 4; i++) rec->parts[i] = r.parts[i];
-  rec->residual  = r.residual;
-  rec->cresidual = r.cresidual;
-  rec->time      = r.time;
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-typedef struct {
-  long           done, total, failed, converged0;
-  PetscLogDouble t0, last;
-} Progress;
-
-static PetscErrorCode Report(HylcSampler S, Progress *pg, PetscBool force)
-{
-  PetscLogDouble now;
-
-  PetscFunctionBegin;
-  PetscCall(PetscTime(&now));
-  if (!force && now - pg->last < S->progress) PetscFunctionReturn(PETSC_SUCCESS);
-  pg->last               = now;
-  const double rate      = (pg->done - pg->converged0) / PetscMax(now - pg->t0, 1e-9);
-  const double remaining = rate > 0 ? (pg->total - pg->done) / rate : 0;
-  PetscCall(PetscPrintf(PETSC_COMM_SELF, "[sampler] %ld/%ld samples (%.1f%%), %ld not converged, %.2f samples/s, ETA %.0f s\n", pg->done, pg->total, 100.0 * pg->done / PetscMax(pg->total, 1), pg->failed, rate, remaining));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* rank 0: receive whatever records have arrived, append them to the journal */
-static PetscErrorCode Drain(HylcSampler S, HylcJournal J, Progress *pg, PetscInt *finished, PetscBool wait)
-{
-  HylcSampleRecord *buf;
-
-  PetscFunctionBegin;
-  PetscCall(PetscMalloc1(S->batch, &buf));
-  for (;;) {
-    PetscMPIInt flag, count;
-    MPI_Status  st;
-    if (wait) {
-      PetscCallMPI(MPI_Probe(MPI_ANY_SOURCE, MPI_ANY_TAG, S->comm, &st));
-      flag = 1;
-    } else
-      PetscCallMPI(MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, S->comm, &flag, &st));
-    if (!flag) break;
-    if (st.MPI_TAG == TAG_DONE) {
-      int dummy;
-      PetscCallMPI(MPI_Recv(&dummy, 1, MPI_INT, st.MPI_SOURCE, TAG_DONE, S->comm, MPI_STATUS_IGNORE));
-      (*finished)++;
-    } else {
-      PetscCallMPI(MPI_Get_count(&st, MPI_BYTE, &count));
-      const PetscInt n = count / (PetscMPIInt)sizeof(HylcSampleRecord);
-      PetscCallMPI(MPI_Recv(buf, count, MPI_BYTE, st.MPI_SOURCE, TAG_RECORDS, S->comm, MPI_STATUS_IGNORE));
-      PetscCall(HylcJournalAppend(J, buf, n));
-      for (PetscInt i = 0; i < n; i++) pg->failed += buf[i].status != HYLC_MICRO_CONVERGED;
-      pg->done += n;
+  PetscValidHeaderSpecific(S, HYLC_SAMPLER_CLASSID, 1);
+  if (!viewer) PetscCall(PetscViewerASCIIGetStdout(PetscObjectComm((PetscObject)S), &viewer));
+  PetscCall(PetscObjectTypeCompare((PetscObject)viewer, PETSCVIEWERASCII, &iascii));
+  if (!iascii) PetscFunctionReturn(PETSC_SUCCESS);
+  for (int t = 0; t < HYLC_PLAN_NTERM; t++)
+    if (S->terms & (1 << t)) {
+      PetscCall(PetscStrlcat(terms, terms[0] ? "," : "", sizeof(terms)));
+      PetscCall(PetscStrlcat(terms, HylcPlanTermName(t), sizeof(terms)));
     }
-    if (wait) break;
+  {
+    const char *prefix = ((PetscObject)S)->prefix;
+    PetscCall(PetscViewerASCIIPrintf(viewer, "HylcSampler Object%s%s%s: %d MPI process%s\n", prefix ? " (" : "", prefix ? prefix : "", prefix ? ")" : "", (int)S->size, S->size > 1 ? "es" : ""));
   }
-  PetscCall(PetscFree(buf));
-  PetscCall(Report(S, pg, PETSC_FALSE));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* the raw layout of the paper's fitting scripts: data.txt rows "sx sa sy II00 II01 II11 Psi" in the order of
-   C4 (the 1D terms, then the 2D terms; the zero sample is not a row), info.txt with the tile area (m^2)
-   and the area density (kg/m^2) */
-static PetscErrorCode ExportRaw(HylcSampler S, const HylcSampleRecord *all, const unsigned char *done)
-{
-  char      path[PETSC_MAX_PATH_LEN + 16], tmp[PETSC_MAX_PATH_LEN + 32];
-  FILE     *fp;
-  PetscReal px, py, rhoA;
-  long      rows = 0, skipped = 0;
-
-  PetscFunctionBegin;
-  PetscCall(PetscSNPrintf(path, sizeof(path), "%s/data.txt", S->rawdir));
-  PetscCall(HylcFileOpenTemp(path, tmp, sizeof(tmp), &fp));
-  for (long k = 0; k < S->nsamples; k++) {
-    if (!done[k] || all[k].term == 0) continue;
-    if (all[k].status != HYLC_MICRO_CONVERGED) skipped++;
-    fprintf(fp, "%.17g %.17g %.17g %.17g %.17g %.17g %.17g\n", all[k].z[0], all[k].z[1], all[k].z[2], all[k].z[3], all[k].z[4], all[k].z[5], all[k].psi);
-    rows++;
-  }
-  PetscCall(HylcFileCommitTemp(&fp, tmp, path));
-  PetscCall(HylcPatternGetPeriods(S->pat, &px, &py));
-  PetscCall(HylcPatternGetAreaDensity(S->pat, S->density, &rhoA));
-  PetscCall(PetscSNPrintf(path, sizeof(path), "%s/info.txt", S->rawdir));
-  PetscCall(HylcFileOpenTemp(path, tmp, sizeof(tmp), &fp));
-  fprintf(fp, "area %.17g\ndensity %.17g\n", (double)(px * py), (double)rhoA);
-  PetscCall(HylcFileCommitTemp(&fp, tmp, path));
-  PetscCall(PetscPrintf(PETSC_COMM_SELF, "[sampler] wrote %s/data.txt (%ld rows%s) and info.txt\n", S->rawdir, rows, skipped ? ", some not converged: see /samples/status" : ""));
+  PetscCall(PetscViewerASCIIPushTab(viewer));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "output %s (journal %s.journal, %s)\n", S->output, S->output, S->resume ? "resume" : (S->overwrite ? "overwrite" : "new run")));
+  if (S->solverSetUp)
+    PetscCall(PetscSNPrintf(count, sizeof(count), ": %ld samples", S->nsamples));
+  else
+    PetscCall(PetscStrncpy(count, " (ranges not resolved: not set up)", sizeof(count)));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "plan: family %s, %" PetscInt_FMT " samples per 1D term, %" PetscInt_FMT " per 2D axis, terms %s%s\n", HylcPlanFamilies[S->ranges.family], S->n1, S->n2, terms, count));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "%d ranks, batches of %" PetscInt_FMT ", progress every %g s, reference state %s%s%s\n", (int)S->size, S->batch, (double)S->progress, HylcReferenceModes[S->refmode], S->refout[0] ? " written to " : "", S->refout));
+  if (S->rawdir[0]) PetscCall(PetscViewerASCIIPrintf(viewer, "raw layout exported to %s\n", S->rawdir));
+  PetscCall(PetscViewerASCIIPopTab(viewer));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /*@C
-  HylcSamplerRun - Solves every sample of the plan not yet in the journal, gathers the records on rank 0
-  and writes the HDF5 output. Collective.
-@*/
-PetscErrorCode HylcSamplerRun(HylcSampler S)
-{
-  char              jpath[PETSC_MAX_PATH_LEN + 16];
-  HylcJournal       J = S->journal;
-  unsigned char    *done;
-  HylcSampleRecord *recs;
-  Progress          pg;
-  PetscInt          finished = 0;
+  HylcSamplerViewFromOptions - Views the sampler if the option name (e.g. -sampler_view) is set.
 
+  Collective
+
+  Input Parameters:
++ S    - the sampler
+. obj  - an object whose prefix is used (NULL: the sampler's)
+- name - the option
+
+  Level: intermediate
+
+.seealso: HylcSamplerView()
+@*/
+PetscErrorCode HylcSamplerViewFromOptions(HylcSampler S, PetscObject obj, const char name[])
+{
   PetscFunctionBegin;
-  PetscCall(PetscLogEventBegin(HYLC_SamplerRun, 0, 0, 0, 0));
-  PetscCall(PetscSNPrintf(jpath, sizeof(jpath), "%s.journal", S->output));
-  PetscCheck(S->rank || J, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE, "Call HylcSamplerSetUp() first");
-  PetscCall(PetscFree2(S->done, S->recs));
-  PetscCall(PetscMalloc2(S->nsamples + 1, &S->done, S->batch, &S->recs));
-  done = S->done;
-  recs = S->recs;
-  PetscCall(PetscArrayzero(done, S->nsamples + 1));
-  PetscCall(PetscMemzero(&pg, sizeof(pg)));
-  pg.total = S->nsamples;
-  if (!S->rank) {
-    const unsigned char *jd;
-    PetscInt             nd;
-    PetscCall(HylcJournalGetDone(J, &nd, &jd));
-    PetscCall(PetscArraycpy(done, jd, S->nsamples));
-    pg.done = pg.converged0 = nd;
-    PetscCall(PetscPrintf(PETSC_COMM_SELF, "[sampler] %ld samples in %ld batches on %d ranks; %ld already done (%s)\n", S->nsamples, (S->nsamples + S->batch - 1) / S->batch, (int)S->size, (long)nd, jpath));
-  }
-  PetscCallMPI(MPI_Bcast(done, (PetscMPIInt)S->nsamples, MPI_UNSIGNED_CHAR, 0, S->comm));
-  PetscCall(PetscTime(&pg.t0));
-  pg.last = pg.t0;
-  /* dynamic scheduling: the next batch comes from a shared counter on rank 0 (MPI one-sided atomic
-     fetch-and-add, no involvement of rank 0); which rank solves a sample does not change its result */
-  const long nb      = (S->nsamples + S->batch - 1) / S->batch;
-  long      *counter = NULL, one = 1, b;
-  MPI_Win    win;
-  PetscCallMPI(MPI_Win_allocate(S->rank ? 0 : (MPI_Aint)sizeof(long), sizeof(long), MPI_INFO_NULL, S->comm, &counter, &win));
-  if (!S->rank) *counter = 0;
-  PetscCallMPI(MPI_Barrier(S->comm));
-  PetscCallMPI(MPI_Win_lock_all(0, win));
-  for (;;) {
-    PetscCallMPI(MPI_Fetch_and_op(&one, &b, MPI_LONG, 0, 0, MPI_SUM, win));
-    PetscCallMPI(MPI_Win_flush(0, win));
-    if (b >= nb) break;
-    PetscInt n = 0;
-    for (long k = b * S->batch; k < PetscMin((b + 1) * S->batch, S->nsamples); k++) {
-      if (done[k]) continue;
-      PetscCall(SolveSample(S, k, &recs[n++]));
-      if (!S->rank) PetscCall(Drain(S, J, &pg, &finished, PETSC_FALSE));
-    }
-    if (!n) continue;
-    if (S->rank)
-      PetscCallMPI(MPI_Send(recs, (PetscMPIInt)(n * sizeof(HylcSampleRecord)), MPI_BYTE, 0, TAG_RECORDS, S->comm));
-    else {
-      PetscCall(HylcJournalAppend(J, recs, n));
-      for (PetscInt i = 0; i < n; i++) pg.failed += recs[i].status != HYLC_MICRO_CONVERGED;
-      pg.done += n;
-      PetscCall(Report(S, &pg, PETSC_FALSE));
-    }
-  }
-  PetscCallMPI(MPI_Win_unlock_all(win));
-  if (S->rank) {
-    int fin = 1;
-    PetscCallMPI(MPI_Send(&fin, 1, MPI_INT, 0, TAG_DONE, S->comm));
-  } else {
-    while (finished < S->size - 1) PetscCall(Drain(S, J, &pg, &finished, PETSC_TRUE));
-    PetscCall(Report(S, &pg, PETSC_TRUE));
-    /* the HDF5 file from the journal: every sample of the plan, failures included */
-    const HylcSampleRecord *all;
-    const unsigned char    *jd;
-    PetscInt                nd;
-    char                   *opts = NULL;
-    PetscErrorCode          ierr;
-    PetscCall(HylcJournalGetDone(J, &nd, &jd));
-    PetscCall(HylcJournalGetRecords(J, &all));
-    PetscCall(PetscOptionsGetAll(NULL, &opts));
-    ierr = HylcSamplesWriteHDF5WithIdentity(S->output, S->nsamples, all, jd, S->pat, &S->model, opts, S->identity);
-    PetscCall(PetscFree(opts));
-    PetscCall(ierr);
-    PetscCall(PetscPrintf(PETSC_COMM_SELF, "[sampler] wrote %s: %ld samples, %ld not converged\n", S->output, (long)nd, pg.failed));
-    if (S->rawdir[0]) PetscCall(ExportRaw(S, all, jd));
-    PetscCall(HylcJournalClose(&S->journal));
-  }
-  PetscCall(PetscFree2(S->done, S->recs));
-  PetscCallMPI(MPI_Barrier(S->comm));
-  PetscCallMPI(MPI_Win_free(&win));
-  PetscCall(PetscLogEventEnd(HYLC_SamplerRun, 0, 0, 0, 0));
+  PetscValidHeaderSpecific(S, HYLC_SAMPLER_CLASSID, 1);
+  PetscCall(PetscObjectViewFromOptions((PetscObject)S, obj, name));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -6,6 +6,7 @@ PetscLogEvent HYLC_PatternLoad, HYLC_PatternWrite, HYLC_PatternGenerate, HYLC_Pa
 PetscLogEvent HYLC_TileEvaluate, HYLC_TileBroadphase, HYLC_TileContact, HYLC_TileAssemble;
 PetscLogEvent HYLC_PeriodicSetUp, HYLC_PeriodicEvaluate, HYLC_MicroSolve, HYLC_SamplerRun;
 PetscLogEvent HYLC_CholSymbolic, HYLC_CholNumeric, HYLC_CholSolve;
+PetscClassId  HYLC_PERIODIC_CLASSID, HYLC_SAMPLER_CLASSID;
 
 const char   *HylcDefaultOrdering(void) { return MATORDERINGMETISND; }
 PetscClassId  HYLC_MIDSURFACE_CLASSID;
@@ -40,13 +41,15 @@ PetscErrorCode HylcInitializePackage(void)
   PetscCall(PetscLogEventRegister("CONTACT_Broadphase", HYLC_PATTERN_CLASSID, &HYLC_TileBroadphase));
   PetscCall(PetscLogEventRegister("CONTACT_Energy", HYLC_PATTERN_CLASSID, &HYLC_TileContact));
   PetscCall(PetscLogEventRegister("TILE_Assemble", HYLC_PATTERN_CLASSID, &HYLC_TileAssemble));
-  PetscCall(PetscLogEventRegister("PERIODIC_SetUp", HYLC_PATTERN_CLASSID, &HYLC_PeriodicSetUp));
-  PetscCall(PetscLogEventRegister("PERIODIC_Evaluate", HYLC_PATTERN_CLASSID, &HYLC_PeriodicEvaluate));
   PetscCall(PetscLogEventRegister("MICRO_Solve", HYLC_PATTERN_CLASSID, &HYLC_MicroSolve));
-  PetscCall(PetscLogEventRegister("SAMPLER_Run", HYLC_PATTERN_CLASSID, &HYLC_SamplerRun));
   PetscCall(PetscLogEventRegister("CHOL_Symbolic", HYLC_PATTERN_CLASSID, &HYLC_CholSymbolic));
   PetscCall(PetscLogEventRegister("CHOL_Numeric", HYLC_PATTERN_CLASSID, &HYLC_CholNumeric));
   PetscCall(PetscLogEventRegister("CHOL_Solve", HYLC_PATTERN_CLASSID, &HYLC_CholSolve));
+  PetscCall(PetscClassIdRegister("HylcPeriodic", &HYLC_PERIODIC_CLASSID));
+  PetscCall(PetscLogEventRegister("PERIODIC_SetUp", HYLC_PERIODIC_CLASSID, &HYLC_PeriodicSetUp));
+  PetscCall(PetscLogEventRegister("PERIODIC_Evaluate", HYLC_PERIODIC_CLASSID, &HYLC_PeriodicEvaluate));
+  PetscCall(PetscClassIdRegister("HylcSampler", &HYLC_SAMPLER_CLASSID));
+  PetscCall(PetscLogEventRegister("SAMPLER_Run", HYLC_SAMPLER_CLASSID, &HYLC_SamplerRun));
   PetscCall(PetscClassIdRegister("HylcMidsurface", &HYLC_MIDSURFACE_CLASSID));
   PetscCall(PetscLogEventRegister("MACRO_SetUp", HYLC_MIDSURFACE_CLASSID, &HYLC_MacroSetUp));
   PetscCall(PetscLogEventRegister("MACRO_Poisson", HYLC_MIDSURFACE_CLASSID, &HYLC_MacroPoisson));

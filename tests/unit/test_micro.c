@@ -273,7 +273,8 @@ static PetscErrorCode TestMirrorTwill(void)
     PetscInt     mc;
     PetscCall(HylcPatternCreate(PETSC_COMM_SELF, &q));
     PetscCall(HylcPatternGenerate(q, k ? HYLCPATTERNSTOCKINETTE : HYLCPATTERNTWILL, &g));
-    PetscCall(HylcPeriodicCreate(q, &m, &P));
+    PetscCall(HylcPeriodicCreate(PETSC_COMM_SELF, &P));
+    PetscCall(HylcPeriodicSetPattern(P, q, &m));
     PetscCall(HylcPeriodicSetSlideConstraint(P, HYLC_SLIDE_PER_FAMILY));
     PetscCall(HylcPeriodicSetUp(P));
     PetscCall(HylcPeriodicGetSizes(P, NULL, NULL, NULL, &mc));

@@ -47,7 +47,8 @@ static PetscErrorCode TestFlat(HylcPattern p, const char *what, const PetscReal 
   PetscFunctionBegin;
   PetscCall(HylcYarnModelDefault(&m));
   PetscCall(HylcPatternGetPeriods(p, &px, &py));
-  PetscCall(HylcPeriodicCreate(p, &m, &P));
+  PetscCall(HylcPeriodicCreate(PETSC_COMM_SELF, &P));
+  PetscCall(HylcPeriodicSetPattern(P, p, &m));
   PetscCall(HylcPeriodicSetStrain(P, z));
   PetscCall(HylcPeriodicSetUp(P));
   PetscCall(HylcPeriodicGetSizes(P, &n, NULL, NULL, NULL));
@@ -75,7 +76,8 @@ static PetscErrorCode TestFlat(HylcPattern p, const char *what, const PetscReal 
   for (int dir = 0; dir < 2; dir++) {
     const PetscInt nx = dir ? 1 : 2, ny = dir ? 2 : 1;
     PetscCall(HylcPatternCreateSupercell(p, nx, ny, &sp));
-    PetscCall(HylcPeriodicCreate(sp, &m, &Q));
+    PetscCall(HylcPeriodicCreate(PETSC_COMM_SELF, &Q));
+    PetscCall(HylcPeriodicSetPattern(Q, sp, &m));
     PetscCall(HylcPeriodicSetStrain(Q, z));
     PetscCall(HylcPeriodicSetUp(Q));
     PetscCall(HylcPeriodicGetSizes(Q, &ns, NULL, NULL, NULL));
@@ -118,7 +120,8 @@ static PetscErrorCode TestDerivatives(HylcPattern p, const char *what, const Pet
   m.kc          = 30;
   m.contactType = ct;
   PetscCall(HylcPatternGetRadius(p, &r));
-  PetscCall(HylcPeriodicCreate(p, &m, &P));
+  PetscCall(HylcPeriodicCreate(PETSC_COMM_SELF, &P));
+  PetscCall(HylcPeriodicSetPattern(P, p, &m));
   PetscCall(HylcPeriodicSetStrain(P, z));
   PetscCall(HylcPeriodicSetUp(P));
   PetscCall(HylcPeriodicGetSizes(P, &n, NULL, NULL, NULL));
@@ -196,7 +199,8 @@ static PetscErrorCode BentYarnEnergy(PetscInt N, PetscReal kappa, PetscReal *Eb,
   PetscCall(HylcPatternCreate(PETSC_COMM_SELF, &p));
   PetscCall(HylcPatternSetFromCurves(p, px, py, r, 1, nv, w, pts));
   PetscCall(HylcYarnModelDefault(&m));
-  PetscCall(HylcPeriodicCreate(p, &m, &P));
+  PetscCall(HylcPeriodicCreate(PETSC_COMM_SELF, &P));
+  PetscCall(HylcPeriodicSetPattern(P, p, &m));
   PetscCall(HylcPeriodicSetStrain(P, z));
   PetscCall(HylcPeriodicSetUp(P)); /* default slide constraint: its row repeats the translation and is dropped */
   PetscCall(HylcPeriodicEvaluate(P, HYLC_TERM_ALL, e, NULL, NULL));
@@ -245,7 +249,8 @@ static PetscErrorCode TestConstraints(HylcPattern p)
     PetscInt         n, nc;
     const PetscReal *A, *dL, *Ai;
     PetscReal       *y, c[64];
-    PetscCall(HylcPeriodicCreate(p, &m, &P));
+    PetscCall(HylcPeriodicCreate(PETSC_COMM_SELF, &P));
+    PetscCall(HylcPeriodicSetPattern(P, p, &m));
     PetscCall(HylcPeriodicSetStrain(P, z));
     PetscCall(HylcPeriodicSetSlideConstraint(P, (HylcSlideConstraint)sl));
     PetscCall(HylcPeriodicSetUp(P));
@@ -318,7 +323,8 @@ static PetscErrorCode TestStraightConstraints(void)
         PetscInt         n, nc;
         const PetscReal *A, *dL, *Ai;
         PetscReal       *y, c[8];
-        PetscCall(HylcPeriodicCreate(p, &m, &P));
+        PetscCall(HylcPeriodicCreate(PETSC_COMM_SELF, &P));
+        PetscCall(HylcPeriodicSetPattern(P, p, &m));
         PetscCall(HylcPeriodicSetStrain(P, zs[iz]));
         PetscCall(HylcPeriodicSetSlideConstraint(P, (HylcSlideConstraint)sl));
         PetscCall(HylcPeriodicSetUp(P));

@@ -13,7 +13,8 @@ static inline PetscErrorCode HylcTestTileHessian(HylcPattern p, const PetscReal 
 
   PetscFunctionBegin;
   PetscCall(HylcYarnModelDefault(&m));
-  PetscCall(HylcPeriodicCreate(p, &m, &P));
+  PetscCall(HylcPeriodicCreate(PETSC_COMM_SELF, &P));
+  PetscCall(HylcPeriodicSetPattern(P, p, &m));
   PetscCall(HylcPeriodicSetStrain(P, z));
   PetscCall(HylcPeriodicSetUp(P));
   PetscCall(HylcPeriodicGetSizes(P, &n, NULL, NULL, NULL));

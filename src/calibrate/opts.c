@@ -1,0 +1,563 @@
+/* HylcCalibrate: the setters of the options and HylcCalibrateSetFromOptions (docs/calibrate.md). */
+#include "calibrateimpl.h"
+#include <stdio.h>
+#include <string.h>
+
+/*@C
+  HylcCalibrateSetYarnModel - Sets the yarn model whose E, Es, G, kc are the initial values (copied; options
+  -yarn_*, read by HylcCalibrateSetFromOptions()).
+
+  Not collective
+
+  Input Parameters:
++ C     - the calibration
+- model - the yarn model
+
+  Level: intermediate
+@*/
+PetscErrorCode HylcCalibrateSetYarnModel(HylcCalibrate C, const HylcYarnModel *model)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
+  C->model       = *model;
+  C->solverSetUp = PETSC_FALSE;
+  PetscCall(HylcCalibrateResetSamples_Private(C));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcCalibrateSetTarget - Sets the target file (option -calibrate_target): a material table (.json or
+  model .h5), a samples .h5 of hylc-sample, the paper's raw data.txt (or its directory), or a .csv.
+
+  Not collective
+
+  Input Parameters:
++ C    - the calibration
+- path - the file
+
+  Level: beginner
+
+.seealso: HylcCalibrateSetTargetType()
+@*/
+PetscErrorCode HylcCalibrateSetTarget(HylcCalibrate C, const char path[])
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
+  PetscCall(HylcCalibrateResetSamples_Private(C));
+  PetscCall(PetscStrncpy(C->target, path ? path : "", sizeof(C->target)));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcCalibrateSetTargetType - Sets the kind of target (option -calibrate_target_type).
+
+  Not collective
+
+  Input Parameters:
++ C    - the calibration
+- type - auto (by extension and content), table, samples, raw or csv
+
+  Level: intermediate
+
+.seealso: HylcCalibrateSetTarget()
+@*/
+PetscErrorCode HylcCalibrateSetTargetType(HylcCalibrate C, const char type[])
+{
+  PetscInt k = -1;
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
+  for (PetscInt i = 0; i <= HYLC_CALIB_TARGET_CSV; i++) {
+    PetscBool eq;
+    PetscCall(PetscStrcasecmp(type, HylcCalibTargetTypes[i], &eq));
+    if (eq) k = i;
+  }
+  PetscCheck(k >= 0, PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "-calibrate_target_type: unknown type '%s' (use auto, table, samples, raw, csv)", type);
+  PetscCall(HylcCalibrateResetSamples_Private(C));
+  C->targetType = (HylcCalibTargetType)k;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcCalibrateSetOutputs - Sets the outputs (options -calibrate_output, -calibrate_dump).
+
+  Not collective
+
+  Input Parameters:
++ C    - the calibration
+. yaml - the calibrated values as a YAML options file (NULL or empty: none)
+- dump - per sample the strain, term, target, initial and calibrated Psi as CSV (NULL or empty: none)
+
+  Level: beginner
+@*/
+PetscErrorCode HylcCalibrateSetOutputs(HylcCalibrate C, const char yaml[], const char dump[])
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
+  PetscCall(PetscStrncpy(C->output, yaml ? yaml : "", sizeof(C->output)));
+  PetscCall(PetscStrncpy(C->dump, dump ? dump : "", sizeof(C->dump)));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcCalibrateSetRoles - Sets the roles of E, Es, G, kc (options -calibrate_params, -calibrate_tie).
+
+  Not collective
+
+  Input Parameters:
++ C    - the calibration
+- role - HYLC_CALIBRATE_FREE, HYLC_CALIBRATE_TIED (follows E at its initial ratio; not for E) or
+         HYLC_CALIBRATE_FIXED, per parameter
+
+  Level: beginner
+@*/
+PetscErrorCode HylcCalibrateSetRoles(HylcCalibrate C, const HylcCalibrateRole role[])
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
+  PetscCheck(role[0] != HYLC_CALIBRATE_TIED, PetscObjectComm((PetscObject)C), PETSC_ERR_ARG_OUTOFRANGE, "E cannot be tied to itself");
+  for (int j = 0; j < HYLC_CALIBRATE_NPARAM; j++) C->role[j] = role[j];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcCalibrateSetBounds - Sets the bounds of parameter j (options -calibrate_bounds_<p>); the default is
+  the initial value / 1000 to the initial value x 1000.
+
+  Not collective
+
+  Input Parameters:
++ C  - the calibration
+. j  - the parameter: 0 E, 1 Es, 2 G, 3 kc
+. lo - lower bound (> 0)
+- hi - upper bound (>= lo)
+
+  Level: intermediate
+@*/
+PetscErrorCode HylcCalibrateSetBounds(HylcCalibrate C, PetscInt j, PetscReal lo, PetscReal hi)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
+  PetscCheck(j >= 0 && j < HYLC_CALIBRATE_NPARAM, PetscObjectComm((PetscObject)C), PETSC_ERR_ARG_OUTOFRANGE, "Parameter index %" PetscInt_FMT " out of range 0..3", j);
+  PetscCheck(lo > 0 && lo <= hi, PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "Bounds of %s must be 0 < lo <= hi, got %g,%g", HylcCalibrateParamNames[j], (double)lo, (double)hi);
+  C->blo[j]      = lo;
+  C->bhi[j]      = hi;
+  C->solverSetUp = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcCalibrateSetMaxIterations - Levenberg-Marquardt: at most this many accepted steps (option -calibrate_max_it).
+
+  Not collective
+
+  Input Parameters:
++ C - the calibration
+- n - the cap (>= 0)
+
+  Level: beginner
+@*/
+PetscErrorCode HylcCalibrateSetMaxIterations(HylcCalibrate C, PetscInt n)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
+  PetscCheck(n >= 0, PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "-calibrate_max_it must be >= 0 and -calibrate_max_reject >= 1");
+  C->maxIt = n;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcCalibrateSetLevenbergMarquardt - Rejected trial steps in a row before stopping, and the initial
+  damping relative to the diagonal of J^T J (options -calibrate_max_reject, -calibrate_lambda).
+
+  Not collective
+
+  Input Parameters:
++ C         - the calibration
+. maxReject - >= 1
+- lambda    - > 0
+
+  Level: advanced
+@*/
+PetscErrorCode HylcCalibrateSetLevenbergMarquardt(HylcCalibrate C, PetscInt maxReject, PetscReal lambda)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
+  PetscCheck(maxReject >= 1, PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "-calibrate_max_it must be >= 0 and -calibrate_max_reject >= 1");
+  PetscCheck(lambda > 0, PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "-calibrate_lambda must be > 0 and -calibrate_xtol, -calibrate_ftol, -calibrate_fatol, -calibrate_flat_tol >= 0");
+  C->maxReject = maxReject;
+  C->lambda0   = lambda;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcCalibrateSetTolerances - Stopping tests and the flat-direction test (options -calibrate_xtol,
+  -calibrate_ftol, -calibrate_fatol, -calibrate_flat_tol).
+
+  Not collective
+
+  Input Parameters:
++ C       - the calibration
+. xtol    - stop when an accepted step changes every log parameter by less than this
+. ftol    - stop when an accepted step decreases the objective by less than this fraction
+. fatol   - stop when the objective is below this
+- flatTol - a singular value of the Jacobian below this marks a flat direction (its parameter is held)
+
+  Level: advanced
+@*/
+PetscErrorCode HylcCalibrateSetTolerances(HylcCalibrate C, PetscReal xtol, PetscReal ftol, PetscReal fatol, PetscReal flatTol)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
+  PetscCheck(xtol >= 0 && ftol >= 0 && fatol >= 0 && flatTol >= 0, PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "-calibrate_lambda must be > 0 and -calibrate_xtol, -calibrate_ftol, -calibrate_fatol, -calibrate_flat_tol >= 0");
+  C->xtol    = xtol;
+  C->ftol    = ftol;
+  C->fatol   = fatol;
+  C->flatTol = flatTol;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcCalibrateSetPlanRanges - The plan's family and 1D ranges for a table target (options -sampler_family,
+  -sampler_range_<c>, as hylc-sample); HylcCalibrateSetUp() resolves them for the yarn radius.
+
+  Not collective
+
+  Input Parameters:
++ C      - the calibration
+- ranges - the family and the ranges
+
+  Level: intermediate
+@*/
+PetscErrorCode HylcCalibrateSetPlanRanges(HylcCalibrate C, const HylcPlanRanges *ranges)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
+  PetscCheck(ranges->family >= 0 && ranges->family < 4, PetscObjectComm((PetscObject)C), PETSC_ERR_ARG_OUTOFRANGE, "-sampler_family: unknown family %" PetscInt_FMT, ranges->family);
+  C->ranges      = *ranges;
+  C->solverSetUp = PETSC_FALSE;
+  PetscCall(HylcCalibrateResetSamples_Private(C));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcCalibrateSetTerms - The plan's terms sampled for a table target (option -calibrate_terms); the base
+  sample (term zero) is always solved.
+
+  Not collective
+
+  Input Parameters:
++ C     - the calibration
+- terms - bit t set for term t of include/hylc/plan.h
+
+  Level: intermediate
+@*/
+PetscErrorCode HylcCalibrateSetTerms(HylcCalibrate C, PetscInt terms)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
+  PetscCheck(terms >= 0 && terms < (1 << HYLC_PLAN_NTERM), PetscObjectComm((PetscObject)C), PETSC_ERR_ARG_OUTOFRANGE, "-calibrate_terms: term mask %" PetscInt_FMT " out of range", terms);
+  C->terms      = terms | 1;
+  C->plan.terms = (int)C->terms;
+  PetscCall(HylcCalibrateResetSamples_Private(C));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcCalibrateSetSampleCounts - Samples per 1D term and per axis of a 2D term for a table target (options
+  -calibrate_n, -calibrate_n2).
+
+  Not collective
+
+  Input Parameters:
++ C  - the calibration
+. n1 - 2..1024
+- n2 - 2..1024
+
+  Level: intermediate
+@*/
+PetscErrorCode HylcCalibrateSetSampleCounts(HylcCalibrate C, PetscInt n1, PetscInt n2)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
+  PetscCheck(n1 >= 2 && n1 <= 1024 && n2 >= 2 && n2 <= 1024, PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "-calibrate_n and -calibrate_n2 must be in 2..1024, got %" PetscInt_FMT " and %" PetscInt_FMT, n1, n2);
+  C->n1      = n1;
+  C->n2      = n2;
+  C->plan.n1 = (int)n1;
+  C->plan.n2 = (int)n2;
+  PetscCall(HylcCalibrateResetSamples_Private(C));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcCalibrateSetThinning - Thinning of a file target (options -calibrate_stride, -calibrate_max_samples).
+
+  Not collective
+
+  Input Parameters:
++ C          - the calibration
+. stride     - keep every stride-th row of each term (>= 1)
+- maxSamples - at most this many rows, thinned evenly within each term (0: all)
+
+  Level: intermediate
+@*/
+PetscErrorCode HylcCalibrateSetThinning(HylcCalibrate C, PetscInt stride, PetscInt maxSamples)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
+  PetscCheck(stride >= 1, PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "-calibrate_stride must be >= 1, got %" PetscInt_FMT, stride);
+  PetscCheck(maxSamples >= 0, PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "-calibrate_max_samples must be >= 0, got %" PetscInt_FMT, maxSamples);
+  C->stride     = stride;
+  C->maxSamples = maxSamples;
+  PetscCall(HylcCalibrateResetSamples_Private(C));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcCalibrateSetTermWeight - The weight of a term in the objective (options -calibrate_weights t=w,...;
+  -calibrate_weight_zero for "zero", the relative error of Psi at the base strain).
+
+  Not collective
+
+  Input Parameters:
++ C    - the calibration
+. term - zero, a term of the plan (sx, sa-sy, ...) or other (file rows off the plan's axes)
+- w    - the weight (>= 0; default 1)
+
+  Level: intermediate
+@*/
+PetscErrorCode HylcCalibrateSetTermWeight(HylcCalibrate C, const char term[], PetscReal w)
+{
+  PetscBool zero;
+  int       found = -1;
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
+  PetscCall(PetscStrcmp(term, "zero", &zero));
+  if (zero) {
+    PetscCheck(w >= 0, PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "-calibrate_weight_zero must be >= 0, got %g", (double)w);
+    C->wzero = w;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  for (int t = 1; t < HYLC_CALIB_NTERM; t++)
+    if (!strcmp(term, HylcCalibrateTermName_Private(t))) found = t;
+  PetscCheck(found >= 1, PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "-calibrate_weights: unknown term '%s' (use sx, sa, sy, II00, II11, a 2D term such as sx-sa, or other; the constant's is -calibrate_weight_zero)", term);
+  PetscCheck(w >= 0, PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "-calibrate_weights: the weight of %s must be a number >= 0, got %g", term, (double)w);
+  C->w[found] = w;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcCalibrateSetReference - Whether the reference state is computed once with the initial parameters,
+  and where it is written (options -calibrate_reference, -reference_output; its parameters -reference_*).
+
+  Not collective
+
+  Input Parameters:
++ C      - the calibration
+. mode   - HYLC_REFERENCE_AUTO (for a generated pattern), HYLC_REFERENCE_COMPUTE or HYLC_REFERENCE_NONE
+- output - .pyp file for the reference state (NULL or empty: none)
+
+  Level: intermediate
+@*/
+PetscErrorCode HylcCalibrateSetReference(HylcCalibrate C, HylcReferenceMode mode, const char output[])
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
+  PetscCheck(mode >= HYLC_REFERENCE_AUTO && mode <= HYLC_REFERENCE_NONE, PetscObjectComm((PetscObject)C), PETSC_ERR_ARG_OUTOFRANGE, "Unknown reference mode %d", (int)mode);
+  C->refmode = mode;
+  PetscCall(PetscStrncpy(C->refout, output ? output : "", sizeof(C->refout)));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* a comma list of parameter names -> flags; unknown names are an error naming the option */
+static PetscErrorCode ParseParamList(MPI_Comm comm, const char opt[], const char list[], PetscBool flag[])
+{
+  char      buf[256], *tok, *save = NULL;
+  PetscBool any = PETSC_FALSE;
+
+  PetscFunctionBegin;
+  for (int j = 0; j < HYLC_CALIBRATE_NPARAM; j++) flag[j] = PETSC_FALSE;
+  PetscCall(PetscStrncpy(buf, list, sizeof(buf)));
+  for (tok = strtok_r(buf, ", ", &save); tok; tok = strtok_r(NULL, ", ", &save)) {
+    int found = -1;
+    for (int j = 0; j < HYLC_CALIBRATE_NPARAM; j++)
+      if (!strcasecmp(tok, HylcCalibrateParamNames[j]) || (j == 1 && !strcasecmp(tok, "E_s")) || (j == 3 && !strcasecmp(tok, "k_c"))) found = j;
+    PetscCheck(found >= 0, comm, PETSC_ERR_USER_INPUT, "%s: unknown parameter '%s' (use E, Es, G, kc)", opt, tok);
+    flag[found] = PETSC_TRUE;
+    any         = PETSC_TRUE;
+  }
+  (void)any;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcCalibrateSetFromOptions - Reads the calibration's options (docs/calibrate.md has the table) and those
+  of its pattern (-pattern_*), yarn model (-yarn_*, the initial values), reference state (-reference_*),
+  solver (-micro_*) and plan ranges (-sampler_family, -sampler_range_*). It only reads options and checks
+  names and values: the pattern is loaded or generated, the initial values resolved and checked against
+  the bounds, and the solver set up by HylcCalibrateSetUp(). (With -help it also sets them up, so that
+  -help lists the solver's options, which exist only then.)
+
+  Collective
+
+  Input Parameter:
+. C - the calibration
+
+  Options Database Keys:
++ -calibrate_target <file>          - material table (.json, model .h5), samples .h5, raw data.txt (or its directory), or .csv (HylcCalibrateSetTarget())
+. -calibrate_target_type <auto>     - auto, table, samples, raw, csv (HylcCalibrateSetTargetType())
+. -calibrate_output <p.yaml>        - calibrated values as a YAML options file (HylcCalibrateSetOutputs())
+. -calibrate_dump <d.csv>           - per sample: strain, target, initial and calibrated Psi (HylcCalibrateSetOutputs())
+. -calibrate_params <E,Es,kc>       - the free parameters (E, Es, G, kc) (HylcCalibrateSetRoles())
+. -calibrate_tie <G>                - parameters that follow E at their initial ratio when not free (not E) (HylcCalibrateSetRoles())
+. -calibrate_bounds_<p> lo,hi       - bounds (default initial / 1000, initial x 1000) (HylcCalibrateSetBounds())
+. -calibrate_terms <zero,sx,sa,sy,II00,II11> - terms of the plan for a table target (2D terms allowed) (HylcCalibrateSetTerms())
+. -calibrate_n <15>, -calibrate_n2 <5> - samples per 1D term, per axis of a 2D term (table target) (HylcCalibrateSetSampleCounts())
+. -sampler_family, -sampler_range_<c> - the plan's ranges (table target), as hylc-sample (HylcCalibrateSetPlanRanges())
+. -calibrate_stride <1>, -calibrate_max_samples <0> - thinning of a file target (HylcCalibrateSetThinning())
+. -calibrate_weight_zero <1>, -calibrate_weights <t=w,...> - weights of Psi(z_b) and of the terms (HylcCalibrateSetTermWeight())
+. -calibrate_max_it <30>            - Levenberg-Marquardt iterations (HylcCalibrateSetMaxIterations())
+. -calibrate_max_reject <8>, -calibrate_lambda <1e-3> - Levenberg-Marquardt (HylcCalibrateSetLevenbergMarquardt())
+. -calibrate_xtol <1e-6>, -calibrate_ftol <1e-10>, -calibrate_fatol <1e-20>, -calibrate_flat_tol <1e-4> - stopping tests, flat directions (HylcCalibrateSetTolerances())
+. -calibrate_reference <auto>, -reference_output <f.pyp> - reference state: auto (compute for a generated pattern), compute, none (HylcCalibrateSetReference())
+- -calibrate_view                   - print the set-up at the end of HylcCalibrateSetUp() (HylcCalibrateView())
+
+  Level: beginner
+
+.seealso: HylcCalibrateSetUp(), HylcCalibrateGetPattern(), HylcCalibrateGetMicro()
+@*/
+PetscErrorCode HylcCalibrateSetFromOptions(HylcCalibrate C)
+{
+  MPI_Comm       comm        = PetscObjectComm((PetscObject)C);
+  char           params[256] = "", tie[256] = "G", terms[512] = "", weights[1024] = "", target[PETSC_MAX_PATH_LEN], output[PETSC_MAX_PATH_LEN], dump[PETSC_MAX_PATH_LEN], refout[PETSC_MAX_PATH_LEN];
+  PetscBool      set, pset, tset, ttset, help;
+  PetscEnum      tt = (PetscEnum)C->targetType, rm = (PetscEnum)C->refmode;
+  PetscInt       n1 = C->n1, n2 = C->n2, stride = C->stride, maxSamples = C->maxSamples, maxIt = C->maxIt, maxReject = C->maxReject;
+  PetscReal      wzero = C->wzero, lambda0 = C->lambda0, xtol = C->xtol, ftol = C->ftol, fatol = C->fatol, flatTol = C->flatTol;
+  HylcPlanRanges ranges = C->ranges;
+  HylcPattern    pat;
+  HylcMicro      micro;
+  HylcYarnModel  model = C->model;
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
+  C->solverSetUp = PETSC_FALSE;
+  if (C->refComputed) { /* the pattern was replaced by its reference state: read and build it anew */
+    PetscCall(HylcPatternDestroy(&C->pat));
+    C->refComputed = PETSC_FALSE;
+  }
+  PetscCall(PetscStrncpy(target, C->target, sizeof(target)));
+  PetscCall(PetscStrncpy(output, C->output, sizeof(output)));
+  PetscCall(PetscStrncpy(dump, C->dump, sizeof(dump)));
+  PetscCall(PetscStrncpy(refout, C->refout, sizeof(refout)));
+  /* the tile, the initial yarn model, the reference state's and the solver's options */
+  PetscCall(HylcCalibrateGetPattern(C, &pat));
+  PetscCall(HylcPatternSetFromOptions(pat));
+  PetscCall(HylcYarnModelSetFromOptions(comm, NULL, &model));
+  PetscCall(HylcCalibrateSetYarnModel(C, &model));
+  PetscCall(HylcReferenceParamsSetFromOptions(comm, &C->refpar));
+  PetscCall(HylcCalibrateGetMicro(C, &micro));
+  PetscCall(HylcMicroSetFromOptions(micro));
+
+  /* the plan's ranges under the sampler's names, so that -options_file config/<p>.yaml applies */
+  PetscOptionsBegin(comm, NULL, "Calibration: the plan's ranges (table target; the sampler's options)", "HylcCalibrate");
+  PetscCall(HylcPlanRangesFromOptions(PetscOptionsObject, comm, "HylcCalibrateSetPlanRanges", &ranges));
+  PetscCall(PetscOptionsString("-reference_output", "Write the reference state as .pyp", "HylcCalibrateSetReference", refout, refout, sizeof(refout), NULL));
+  PetscOptionsEnd();
+
+  PetscObjectOptionsBegin((PetscObject)C);
+  PetscCall(PetscOptionsString("-calibrate_target", "Target: a material table (.json or model .h5), a samples .h5 of hylc-sample, the paper's raw data.txt (or its directory), or a .csv with a header naming sx,sa,sy,II00,II01,II11,psi", "HylcCalibrateSetTarget", target, target, sizeof(target), NULL));
+  PetscCall(PetscOptionsEnum("-calibrate_target_type", "Kind of target: auto (by extension and content), table, samples, raw, csv", "HylcCalibrateSetTargetType", HylcCalibTargetTypes, tt, &tt, &ttset));
+  PetscCall(PetscOptionsString("-calibrate_output", "Write the calibrated values as a YAML options file (yarn_E, yarn_Es, yarn_G, yarn_kc; a drop-in for config/)", "HylcCalibrateSetOutputs", output, output, sizeof(output), NULL));
+  PetscCall(PetscOptionsString("-calibrate_dump", "Write per sample the strain, term, target, initial and calibrated Psi as CSV (examples/plot_calibrate.py)", "HylcCalibrateSetOutputs", dump, dump, sizeof(dump), NULL));
+  PetscCall(PetscOptionsString("-calibrate_params", "Free parameters, a comma list of E, Es, G, kc", "HylcCalibrateSetRoles", params, params, sizeof(params), &pset));
+  PetscCall(PetscOptionsString("-calibrate_tie", "Parameters that follow E at their initial ratio when not free (Es, G, kc; 'none' for none); the others not free are fixed", "HylcCalibrateSetRoles", tie, tie, sizeof(tie), &tset));
+  for (int j = 0; j < HYLC_CALIBRATE_NPARAM; j++) {
+    char      opt[64], help[160];
+    PetscReal v[2] = {C->blo[j], C->bhi[j]};
+    PetscInt  n    = 2;
+    PetscCall(PetscSNPrintf(opt, sizeof(opt), "-calibrate_bounds_%s", HylcCalibrateParamNames[j]));
+    PetscCall(PetscSNPrintf(help, sizeof(help), "Bounds lo,hi of %s (%s; default initial/1000, initial*1000)", HylcCalibrateParamNames[j], j == 3 ? "N/m" : "Pa"));
+    PetscCall(PetscOptionsRealArray(opt, help, "HylcCalibrateSetBounds", v, &n, &set));
+    if (set) {
+      PetscCheck(n == 2, comm, PETSC_ERR_USER_INPUT, "%s needs two values lo,hi", opt);
+      snprintf(help, sizeof(help), "%g,%g", (double)v[0], (double)v[1]); /* C formatting for the message */
+      PetscCheck(v[0] > 0 && v[1] > 0, comm, PETSC_ERR_USER_INPUT, "%s %s: bounds must be positive (the parameters are optimised in log space)", opt, help);
+      PetscCheck(v[0] <= v[1], comm, PETSC_ERR_USER_INPUT, "%s %s: inverted bounds (lo > hi)", opt, help);
+      PetscCall(HylcCalibrateSetBounds(C, j, v[0], v[1]));
+    }
+  }
+  PetscCall(PetscOptionsString("-calibrate_terms", "Terms sampled for a table target: a comma list of zero, sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11, or all, or 1d (default zero,sx,sa,sy,II00,II11)", "HylcCalibrateSetTerms", terms, terms, sizeof(terms), NULL));
+  PetscCall(PetscOptionsInt("-calibrate_n", "Samples per 1D term (table target)", "HylcCalibrateSetSampleCounts", n1, &n1, NULL));
+  PetscCall(PetscOptionsInt("-calibrate_n2", "Samples per axis of a 2D term (table target)", "HylcCalibrateSetSampleCounts", n2, &n2, NULL));
+  PetscCall(PetscOptionsInt("-calibrate_stride", "File target: keep every stride-th row of each term", "HylcCalibrateSetThinning", stride, &stride, NULL));
+  PetscCall(PetscOptionsInt("-calibrate_max_samples", "File target: at most this many rows (thinned evenly within each term; 0: all)", "HylcCalibrateSetThinning", maxSamples, &maxSamples, NULL));
+  PetscCall(PetscOptionsReal("-calibrate_weight_zero", "Weight of the relative error of Psi at the base strain (the constant)", "HylcCalibrateSetTermWeight", wzero, &wzero, NULL));
+  PetscCall(PetscOptionsString("-calibrate_weights", "Weights of terms, a comma list term=weight (e.g. sx=2,sa-sy=0.5; default 1 each; 'other' for file rows off the plan's axes)", "HylcCalibrateSetTermWeight", weights, weights, sizeof(weights), NULL));
+  PetscCall(PetscOptionsInt("-calibrate_max_it", "Levenberg-Marquardt: at most this many iterations (accepted steps)", "HylcCalibrateSetMaxIterations", maxIt, &maxIt, NULL));
+  PetscCall(PetscOptionsInt("-calibrate_max_reject", "Levenberg-Marquardt: stop after this many rejected trial steps in a row", "HylcCalibrateSetLevenbergMarquardt", maxReject, &maxReject, NULL));
+  PetscCall(PetscOptionsReal("-calibrate_lambda", "Levenberg-Marquardt: initial damping (relative to the diagonal of J^T J)", "HylcCalibrateSetLevenbergMarquardt", lambda0, &lambda0, NULL));
+  PetscCall(PetscOptionsReal("-calibrate_xtol", "Stop when an accepted step changes every log parameter by less than this", "HylcCalibrateSetTolerances", xtol, &xtol, NULL));
+  PetscCall(PetscOptionsReal("-calibrate_ftol", "Stop when an accepted step decreases the objective by less than this fraction", "HylcCalibrateSetTolerances", ftol, &ftol, NULL));
+  PetscCall(PetscOptionsReal("-calibrate_fatol", "Stop when the objective is below this", "HylcCalibrateSetTolerances", fatol, &fatol, NULL));
+  PetscCall(PetscOptionsReal("-calibrate_flat_tol", "A direction of the log parameters along which the normalised residuals change by less than this per unit (a singular value of the Jacobian) is flat: its parameter is held and reported", "HylcCalibrateSetTolerances", flatTol, &flatTol, NULL));
+  PetscCall(PetscOptionsEnum("-calibrate_reference", "Reference state: auto (compute it once with the initial parameters for a generated pattern; a .pyp file is its own), compute, none", "HylcCalibrateSetReference", HylcReferenceModes, rm, &rm, NULL));
+  PetscCall(PetscOptionsName("-calibrate_view", "Print the set-up at the end of HylcCalibrateSetUp()", "HylcCalibrateView", NULL));
+  PetscOptionsEnd();
+  PetscCall(HylcCalibrateSetPlanRanges(C, &ranges));
+  PetscCall(HylcCalibrateSetTarget(C, target));
+  if (ttset) PetscCall(HylcCalibrateSetTargetType(C, HylcCalibTargetTypes[tt]));
+  PetscCall(HylcCalibrateSetOutputs(C, output, dump));
+  PetscCall(HylcCalibrateSetReference(C, (HylcReferenceMode)rm, refout));
+
+  /* parameters: free, tied, fixed */
+  {
+    PetscBool         fr[HYLC_CALIBRATE_NPARAM], ti[HYLC_CALIBRATE_NPARAM] = {PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE};
+    HylcCalibrateRole role[HYLC_CALIBRATE_NPARAM];
+    if (pset) {
+      PetscCall(ParseParamList(comm, "-calibrate_params", params, fr));
+    } else
+      for (int j = 0; j < HYLC_CALIBRATE_NPARAM; j++) fr[j] = C->role[j] == HYLC_CALIBRATE_FREE;
+    if (tset) {
+      PetscBool none;
+      PetscCall(PetscStrcasecmp(tie, "none", &none));
+      if (!none) PetscCall(ParseParamList(comm, "-calibrate_tie", tie, ti));
+      PetscCheck(!ti[0], comm, PETSC_ERR_USER_INPUT, "-calibrate_tie: E cannot be tied to itself (tie Es, G or kc to E)");
+    } else
+      for (int j = 0; j < HYLC_CALIBRATE_NPARAM; j++) ti[j] = C->role[j] == HYLC_CALIBRATE_TIED;
+    PetscCheck(fr[0] || fr[1] || fr[2] || fr[3], comm, PETSC_ERR_USER_INPUT, "-calibrate_params: no free parameter (use a comma list of E, Es, G, kc)");
+    for (int j = 0; j < HYLC_CALIBRATE_NPARAM; j++) role[j] = fr[j] ? HYLC_CALIBRATE_FREE : (ti[j] ? HYLC_CALIBRATE_TIED : HYLC_CALIBRATE_FIXED);
+    PetscCall(HylcCalibrateSetRoles(C, role));
+  }
+  /* terms */
+  if (terms[0]) {
+    int mask;
+    PetscCall(HylcPlanTermsFromString(comm, "-calibrate_terms", terms, &mask));
+    PetscCall(HylcCalibrateSetTerms(C, (PetscInt)mask));
+  }
+  PetscCall(HylcCalibrateSetSampleCounts(C, n1, n2));
+  PetscCall(HylcCalibrateSetThinning(C, stride, maxSamples));
+  PetscCall(HylcCalibrateSetTermWeight(C, "zero", wzero));
+  if (weights[0]) {
+    char *tok, *save = NULL;
+    for (tok = strtok_r(weights, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
+      char  *eq = strchr(tok, '='), *end = NULL;
+      double v;
+      PetscCheck(eq, comm, PETSC_ERR_USER_INPUT, "-calibrate_weights: '%s' is not term=weight", tok);
+      *eq = 0;
+      v   = strtod(eq + 1, &end);
+      PetscCheck(end != eq + 1 && !*end && v >= 0, comm, PETSC_ERR_USER_INPUT, "-calibrate_weights: the weight of %s must be a number >= 0, got '%s'", tok, eq + 1);
+      PetscCheck(strcmp(tok, "zero"), comm, PETSC_ERR_USER_INPUT, "-calibrate_weights: unknown term '%s' (use sx, sa, sy, II00, II11, a 2D term such as sx-sa, or other; the constant's is -calibrate_weight_zero)", tok);
+      PetscCall(HylcCalibrateSetTermWeight(C, tok, v));
+    }
+  }
+  PetscCheck(maxIt >= 0 && maxReject >= 1, comm, PETSC_ERR_USER_INPUT, "-calibrate_max_it must be >= 0 and -calibrate_max_reject >= 1");
+  PetscCall(HylcCalibrateSetMaxIterations(C, maxIt));
+  PetscCall(HylcCalibrateSetLevenbergMarquardt(C, maxReject, lambda0));
+  PetscCall(HylcCalibrateSetTolerances(C, xtol, ftol, fatol, flatTol));
+  PetscCall(HylcCalibrateResetSamples_Private(C));
+  PetscCall(PetscOptionsHasHelp(NULL, &help));
+  if (help) PetscCall(HylcCalibrateSetUpSolver_Private(C));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

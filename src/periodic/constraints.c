@@ -1,0 +1,212 @@
+/* HylcPeriodic: translation and slide constraints, reduced to independent rows (include/hylc/periodic.h). */
+#include "periodicimpl.h"
+
+/* per_family: the family (row) and the sign of each loop. A loop's canonical direction is its winding
+   divided by the gcd of its components, made lexicographically positive (sign -1 if that reverses it);
+   loops of equal canonical direction form a family; loops that close inside the tile (zero winding) form
+   their own family with their stored direction. */
+static PetscErrorCode SlideFamilies(HylcPattern pat, PetscInt nloops, PetscInt fam[], PetscReal sgn[], PetscInt *nfam)
+{
+  PetscInt *dir;
+
+  PetscFunctionBegin;
+  PetscCall(PetscMalloc1(2 * nloops, &dir));
+  *nfam = 0;
+  for (PetscInt l = 0; l < nloops; l++) {
+    PetscInt w[2], a, b, g;
+    PetscCall(HylcPatternGetLoop(pat, l, NULL, NULL, w));
+    a = PetscAbsInt(w[0]), b = PetscAbsInt(w[1]);
+    while (b) {
+      const PetscInt t = a % b;
+      a = b, b = t;
+    }
+    g      = a ? a : 1;
+    sgn[l] = (w[0] < 0 || (w[0] == 0 && w[1] < 0)) ? -1.0 : 1.0;
+    w[0] = (PetscInt)sgn[l] * w[0] / g, w[1] = (PetscInt)sgn[l] * w[1] / g;
+    fam[l] = -1;
+    for (PetscInt f = 0; f < *nfam; f++)
+      if (dir[2 * f] == w[0] && dir[2 * f + 1] == w[1]) fam[l] = f;
+    if (fam[l] < 0) {
+      dir[2 * *nfam] = w[0], dir[2 * *nfam + 1] = w[1];
+      fam[l] = (*nfam)++;
+    }
+  }
+  PetscCall(PetscFree(dir));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Reduces the m constraint rows of A (and dL) to an independent set, in order: modified Gram-Schmidt with
+   one reorthogonalization on the rows of A (not on A A^T, which would square the condition); row i is
+   dropped when its distance to the span of the rows kept before it is at most crtol |a_i|. The translation
+   rows come first and are independent, so a slide row that repeats them (straight yarns; parallel straight
+   yarns under per_yarn) is the one dropped. Dropping a dependent row does not change the feasible set: at
+   the initial guess every row vanishes, and a dependent row is a combination of the kept ones. When no row
+   is dropped, A and dL are untouched (bitwise). */
+static PetscErrorCode ReduceConstraints(HylcPeriodic P, PetscInt *m)
+{
+  const PetscInt n = 4 * P->N, m0 = *m;
+  PetscReal     *Q, *r;
+  PetscInt       nq = 0, kept = 0;
+
+  PetscFunctionBegin;
+  PetscCall(PetscMalloc2(m0 * n, &Q, n, &r));
+  for (PetscInt i = 0; i < m0; i++) {
+    const PetscReal *a  = P->A + i * n;
+    PetscReal        a2 = 0, r2 = 0, scale = 0;
+    for (PetscInt k = 0; k < n; k++) scale = PetscMax(scale, PetscAbsReal(a[k]));
+    PetscCheck(scale > 0 && !PetscIsInfOrNanReal(scale) && !PetscIsInfOrNanReal(P->dL[i]), PETSC_COMM_SELF, PETSC_ERR_FP, "Constraint row %" PetscInt_FMT " is zero or not finite (|a| max %g, dL %g): is the strain representable?", i, (double)scale, (double)P->dL[i]);
+    for (PetscInt k = 0; k < n; k++) {
+      r[k] = a[k] / scale; /* scaled: no overflow or underflow in the squares */
+      a2 += r[k] * r[k];
+    }
+    for (int pass = 0; pass < 2; pass++)
+      for (PetscInt q = 0; q < nq; q++) {
+        PetscReal d = 0;
+        for (PetscInt k = 0; k < n; k++) d += Q[q * n + k] * r[k];
+        for (PetscInt k = 0; k < n; k++) r[k] -= d * Q[q * n + k];
+      }
+    for (PetscInt k = 0; k < n; k++) r2 += r[k] * r[k];
+    if (r2 <= P->crtol * P->crtol * a2) {
+      PetscCall(PetscInfo(NULL, "constraint row %" PetscInt_FMT " dropped: linearly dependent on the rows before it (relative distance %g <= %g)\n", i, (double)PetscSqrtReal(r2 / a2), (double)P->crtol));
+      continue;
+    }
+    const PetscReal rn = PetscSqrtReal(r2);
+    for (PetscInt k = 0; k < n; k++) Q[nq * n + k] = r[k] / rn;
+    nq++;
+    if (kept != i) {
+      PetscCall(PetscArraycpy(P->A + kept * n, a, n));
+      P->dL[kept] = P->dL[i];
+    }
+    kept++;
+  }
+  PetscCall(PetscFree2(Q, r));
+  P->ndropped = m0 - kept;
+  P->ncons = *m = kept;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcPeriodicSetUpConstraints_Private(HylcPeriodic P, const PetscReal *x0)
+{
+  const PetscInt         N = P->N;
+  PetscInt               nloops, m, nfam = 0, *fam;
+  PetscReal             *sgn;
+  const HylcMacroStrain *ms;
+
+  PetscFunctionBegin;
+  PetscCall(HylcPatternGetNumLoops(P->pat, &nloops));
+  PetscCall(PetscMalloc2(nloops, &fam, nloops, &sgn));
+  if (P->slide == HYLC_SLIDE_PER_FAMILY) PetscCall(SlideFamilies(P->pat, nloops, fam, sgn, &nfam));
+  m        = 3 + (P->slide == HYLC_SLIDE_PER_YARN ? nloops : P->slide == HYLC_SLIDE_PER_FAMILY ? nfam
+                                                         : P->slide == HYLC_SLIDE_GLOBAL       ? 1
+                                                                                               : 0);
+  P->ncons = m;
+  PetscCall(PetscCalloc3(m * 4 * N, &P->A, m, &P->dL, m * m, &P->AAtinv));
+  PetscCall(HylcMidsurfaceGetStrain(P->ms, &ms));
+  for (PetscInt o = 0; o < N; o++) {
+    const PetscInt  u = P->D.prev[o], w = P->D.next[o];
+    const PetscReal wo = 0.5 * (P->D.restLength[u] + P->D.restLength[o]); /* rest Voronoi length */
+    PetscReal       R[9], Rtx[3], tau[3], te[3], tf[3], Rtau[3];
+    PetscCall(HylcMidsurfaceGetRotation(P->ms, P->xi + 3 * o, R));
+    MatT3(R, x0 + 3 * o, Rtx);
+    for (int i = 0; i < 3; i++) {
+      for (int j = 0; j < 3; j++) P->A[i * 4 * N + 4 * o + j] = wo * R[3 * j + i]; /* rows of R^T */
+      P->dL[i] += wo * Rtx[i];
+    }
+    if (P->slide == HYLC_SLIDE_NONE) continue;
+    /* reference unit tangent at o in (xi1, xi2, h), deformed in-plane by S3 = [[A, 0], [0, 1]] */
+    for (int i = 0; i < 3; i++) {
+      te[i] = P->xi[3 * o + i] - P->xi[3 * u + i];
+      tf[i] = P->xi[3 * w + i] - P->xi[3 * o + i];
+    }
+    te[0] += P->D.shift[2 * u] * P->D.px;
+    te[1] += P->D.shift[2 * u + 1] * P->D.py;
+    tf[0] += P->D.shift[2 * o] * P->D.px;
+    tf[1] += P->D.shift[2 * o + 1] * P->D.py;
+    HylcNormalize3(te);
+    HylcNormalize3(tf);
+    const PetscReal t0 = te[0] + tf[0], t1 = te[1] + tf[1];
+    tau[0] = ms->A[0] * t0 + ms->A[1] * t1;
+    tau[1] = ms->A[2] * t0 + ms->A[3] * t1;
+    tau[2] = te[2] + tf[2];
+    PetscCheck(HylcNormalize3(tau) > 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "Yarn folds back at vertex %" PetscInt_FMT ": no tangent for the slide constraint", o);
+    Mat3(R, tau, Rtau);
+    PetscInt  row = 3, l;
+    PetscReal s   = 1;
+    PetscCall(HylcPatternGetVertexLoop(P->pat, o, &l, NULL));
+    if (P->slide == HYLC_SLIDE_PER_YARN) row += l;
+    if (P->slide == HYLC_SLIDE_PER_FAMILY) row += fam[l], s = sgn[l];
+    for (int j = 0; j < 3; j++) P->A[row * 4 * N + 4 * o + j] = s * wo * Rtau[j];
+    P->dL[row] += s * wo * HylcDot3(tau, Rtx);
+  }
+  PetscCall(PetscFree2(fam, sgn));
+  PetscCall(ReduceConstraints(P, &m));
+  /* (A A^T)^-1 of the small SPD matrix */
+  {
+    PetscReal *M, *I1;
+    PetscCall(PetscCalloc2(m * m, &M, m * m, &I1));
+    for (PetscInt i = 0; i < m; i++) {
+      I1[i * m + i] = 1;
+      for (PetscInt j = 0; j < m; j++)
+        for (PetscInt k = 0; k < 4 * N; k++) M[i * m + j] += P->A[i * 4 * N + k] * P->A[j * 4 * N + k];
+    }
+    /* the kept rows are independent to crtol (sin of the angle to the span of the others): the pivots of
+       A A^T are at least about crtol^2 times its diagonal */
+    const int err = HylcDenseInverse((int)m, M, I1, 1e-2 * P->crtol * P->crtol);
+    PetscCheck(!err, PETSC_COMM_SELF, PETSC_ERR_PLIB, "The reduced constraint rows are numerically dependent (row %d) although they passed the dependence test with -periodic_constraint_rtol %g", -1 - err, (double)P->crtol);
+    PetscCall(PetscArraycpy(P->AAtinv, I1, m * m));
+    PetscCall(PetscFree2(M, I1));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPeriodicGetConstraints - The constraints A y = dL of the set-up tile (borrowed; any output may be NULL).
+
+  Not collective
+
+  Input Parameter:
+. P - the periodic tile
+
+  Output Parameters:
++ m      - rows (independent; dependent ones dropped)
+. A      - m x 4N, row-major
+. dL     - m
+- AAtinv - (A A^T)^-1, m x m
+
+  Level: intermediate
+@*/
+PetscErrorCode HylcPeriodicGetConstraints(HylcPeriodic P, PetscInt *m, const PetscReal **A, const PetscReal **dL, const PetscReal **AAtinv)
+{
+  PetscFunctionBegin;
+  PetscCheck(P->setup, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE, "Call HylcPeriodicSetUp() first");
+  if (m) *m = P->ncons;
+  if (A) *A = P->A;
+  if (dL) *dL = P->dL;
+  if (AAtinv) *AAtinv = P->AAtinv;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPeriodicConstraintResidual - The constraint residual c = A y - dL.
+
+  Not collective
+
+  Input Parameters:
++ P - the periodic tile
+- y - 4 per original vertex
+
+  Output Parameter:
+. c - one per constraint row
+
+  Level: intermediate
+@*/
+PetscErrorCode HylcPeriodicConstraintResidual(HylcPeriodic P, const PetscReal y[], PetscReal c[])
+{
+  PetscFunctionBegin;
+  for (PetscInt i = 0; i < P->ncons; i++) {
+    PetscReal s = -P->dL[i];
+    for (PetscInt k = 0; k < 4 * P->N; k++) s += P->A[i * 4 * P->N + k] * y[k];
+    c[i] = s;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -1,0 +1,106 @@
+#pragma once
+/* Private definition of HylcPeriodic (src/periodic/ only): the object, its inline index and matrix helpers
+   and the functions shared between its files:
+     periodic.c     lifecycle, options, setters, View
+     setup.c        ghost extension, elimination maps, reference frames, state, the getters of the set-up
+     constraints.c  translation and slide constraints, their reduction to independent rows
+     assembly.c     contact pairs, the Hessian's structure (SetCOO), the reduced evaluation
+     output.c       the state as a pattern, VTK */
+#include <hylc/periodic.h>
+#include <hylc/contact.h>
+#include <hylc/geom.h>
+#include <hylc/rod.h>
+#include <petsc/private/hashmapi.h>
+#include <petsctime.h>
+#include <petsc/private/petscimpl.h>
+
+#define SMAX 8 /* |lattice shift| bound of ghosts */
+
+typedef struct {
+  PetscInt  e, f; /* incoming and outgoing full edges */
+  PetscInt  v[3]; /* full vertices prev, centre, next */
+  PetscReal w;    /* fractional weight */
+} BendElem;
+
+struct _HylcPeriodicOps {
+  PetscErrorCode (*view)(HylcPeriodic, PetscViewer);
+};
+
+struct _p_HylcPeriodic {
+  PETSCHEADER(struct _HylcPeriodicOps);
+  HylcPattern            pat;
+  HylcPatternData        D;
+  HylcYarnModel          model;
+  HylcYarnConstants      c;
+  HylcRodBendTwistParams btpar;
+  HylcMidsurface         ms;
+  PetscReal              z[6];
+  HylcSlideConstraint    slide;
+  PetscReal              marginFactor; /* contact-ghost margin: max(3 r, factor min(px, py)) */
+  PetscBool              setup;
+  PetscInt               N;  /* original vertices */
+  PetscReal             *xi; /* reference (xi1, xi2, h) of the originals, recentred */
+  /* full vertices: original o, shift s; the first N are the originals */
+  PetscInt   nfv, capfv, *fo, *fs;
+  PetscReal *T, *d;      /* per full vertex: T (9), d (3) */
+  PetscBool *rigidId;    /* T == I exactly */
+  PetscHMapI vmap, emap; /* (o, s) -> full vertex / full edge */
+  /* full edges: source full vertex (edge leaving o(src) in copy s(src)) and head */
+  PetscInt       nfe, capfe, *esrc, *ehead;
+  PetscReal     *et, *ed1, *et0, *ed10; /* frames per full edge (and saved copy) */
+  PetscReal     *sw;                    /* stretch weight per full edge (0: contact-only edge) */
+  unsigned char *eghost;                /* edge has no original vertex */
+  /* bend/twist elements */
+  PetscInt   nbe, capbe;
+  BendElem  *be;
+  PetscReal *mref, *mref0;
+  /* state */
+  PetscReal *y, *y0, *x; /* y and the initial guess y0: 4 N; x: 3 per full vertex */
+  /* constraints */
+  PetscInt   ncons, ndropped; /* independent constraint rows kept, linearly dependent rows dropped */
+  PetscReal  crtol;           /* relative tolerance of the dependence test (-periodic_constraint_rtol) */
+  PetscReal *A, *dL, *AAtinv;
+  /* contact */
+  HylcBVH      bvh;
+  double      *segx;
+  HylcPairList cand;
+  PetscInt     npairs, cappairs, *pairs; /* pairs that can touch (boxes inflated by r overlap): full edges i, j */
+  PetscInt     ncand, capcand, *cpairs;  /* candidates for the Hessian's structure (boxes inflated by pairMargin r) */
+  PetscReal   *cw;
+  PetscReal    pairMargin;
+  PetscReal   *pw; /* pair weights */
+  /* COO */
+  PetscInt     ncoo, capcoo, *coopos; /* element-entry values coov and where each goes in the CSR values */
+  PetscScalar *coov;
+  PetscInt    *rowptr, *colind, nnz; /* the CSR structure of H_y: 4x4 blocks of coupled vertices */
+  PetscInt     coonpairs, *coopairs; /* the pairs of the current COO structure, a superset of the touching ones */
+  PetscReal   *coopw;
+  Mat          cooMat;
+  /* accumulated wall times (s): evaluations with a Hessian, contact (broadphase + pairs), assembly */
+  PetscLogDouble tEval, tContact, tAssemble;
+};
+
+static inline PetscInt Key(PetscInt N, PetscInt o, PetscInt s1, PetscInt s2) { return o + N * ((s1 + SMAX) + (2 * SMAX + 1) * (s2 + SMAX)); }
+
+/* reference position (xi1, xi2, h) of full vertex k */
+static inline void RefPos(const HylcPeriodic P, PetscInt k, PetscReal xih[3])
+{
+  const PetscInt o = P->fo[k];
+  xih[0]           = P->xi[3 * o] + P->fs[2 * k] * P->D.px;
+  xih[1]           = P->xi[3 * o + 1] + P->fs[2 * k + 1] * P->D.py;
+  xih[2]           = P->xi[3 * o + 2];
+}
+
+static inline void MatT3(const PetscReal M[9], const PetscReal v[3], PetscReal out[3])
+{
+  for (int i = 0; i < 3; i++) out[i] = M[i] * v[0] + M[3 + i] * v[1] + M[6 + i] * v[2];
+}
+static inline void Mat3(const PetscReal M[9], const PetscReal v[3], PetscReal out[3])
+{
+  for (int i = 0; i < 3; i++) out[i] = M[3 * i] * v[0] + M[3 * i + 1] * v[1] + M[3 * i + 2] * v[2];
+}
+
+/* frees everything SetUp built (periodic.c) */
+PETSC_INTERN PetscErrorCode HylcPeriodicReset_Private(HylcPeriodic);
+/* the constraint rows A, dL and (A A^T)^-1 at the initial guess x0 (3 per full vertex) (constraints.c) */
+PETSC_INTERN PetscErrorCode HylcPeriodicSetUpConstraints_Private(HylcPeriodic, const PetscReal *);

@@ -1,0 +1,318 @@
+/* HylcSampler: the setters of the options and HylcSamplerSetFromOptions. */
+#include "samplerimpl.h"
+
+#define SAMPLER_SETTER_BEGIN                            \
+  PetscFunctionBegin;                                   \
+  PetscValidHeaderSpecific(S, HYLC_SAMPLER_CLASSID, 1); \
+  PetscCheck(!S->setupcalled, PetscObjectComm((PetscObject)S), PETSC_ERR_ARG_WRONGSTATE, "Set the sampler's options before HylcSamplerSetUp()")
+
+/*@C
+  HylcSamplerSetYarnModel - Sets the yarn model (copied; options -yarn_*, read by HylcSamplerSetFromOptions()).
+
+  Not collective
+
+  Input Parameters:
++ S     - the sampler
+- model - the yarn model
+
+  Level: intermediate
+@*/
+PetscErrorCode HylcSamplerSetYarnModel(HylcSampler S, const HylcYarnModel *model)
+{
+  SAMPLER_SETTER_BEGIN;
+  S->model = *model;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcSamplerSetOutput - Sets the HDF5 output (option -sampler_output; its journal is <output>.journal).
+
+  Not collective
+
+  Input Parameters:
++ S      - the sampler
+- output - the path
+
+  Level: beginner
+@*/
+PetscErrorCode HylcSamplerSetOutput(HylcSampler S, const char output[])
+{
+  SAMPLER_SETTER_BEGIN;
+  PetscCheck(output && output[0], PetscObjectComm((PetscObject)S), PETSC_ERR_USER_INPUT, "-sampler_output: empty path");
+  PetscCall(PetscStrncpy(S->output, output, sizeof(S->output)));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcSamplerSetResume - Continue an interrupted run from its journal (option -sampler_resume).
+
+  Not collective
+
+  Input Parameters:
++ S   - the sampler
+- flg - resume or not
+
+  Level: intermediate
+
+.seealso: HylcSamplerSetOverwrite()
+@*/
+PetscErrorCode HylcSamplerSetResume(HylcSampler S, PetscBool flg)
+{
+  SAMPLER_SETTER_BEGIN;
+  S->resume = flg;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcSamplerSetOverwrite - Start over, replacing an existing output and its journal (option -sampler_overwrite).
+
+  Not collective
+
+  Input Parameters:
++ S   - the sampler
+- flg - overwrite or not
+
+  Level: intermediate
+
+.seealso: HylcSamplerSetResume()
+@*/
+PetscErrorCode HylcSamplerSetOverwrite(HylcSampler S, PetscBool flg)
+{
+  SAMPLER_SETTER_BEGIN;
+  S->overwrite = flg;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcSamplerSetPlanRanges - Sets the family and 1D ranges of the plan (options -sampler_family,
+  -sampler_range_<c>); HylcSamplerSetUp() resolves them for the yarn radius (HylcPlanRangesApply()).
+
+  Not collective
+
+  Input Parameters:
++ S      - the sampler
+- ranges - the family and the ranges
+
+  Level: intermediate
+@*/
+PetscErrorCode HylcSamplerSetPlanRanges(HylcSampler S, const HylcPlanRanges *ranges)
+{
+  SAMPLER_SETTER_BEGIN;
+  PetscCheck(ranges->family >= 0 && ranges->family < 4, PetscObjectComm((PetscObject)S), PETSC_ERR_ARG_OUTOFRANGE, "-sampler_family: unknown family %" PetscInt_FMT, ranges->family);
+  S->ranges = *ranges;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcSamplerSetSampleCounts - Samples per 1D term and per axis of a 2D term (options -sampler_n1, -sampler_n2).
+
+  Not collective
+
+  Input Parameters:
++ S  - the sampler
+. n1 - samples per 1D term (1..1024)
+- n2 - samples per axis of a 2D term (1..1024)
+
+  Level: beginner
+@*/
+PetscErrorCode HylcSamplerSetSampleCounts(HylcSampler S, PetscInt n1, PetscInt n2)
+{
+  SAMPLER_SETTER_BEGIN;
+  PetscCheck(n1 >= 1 && n1 <= 1024 && n2 >= 1 && n2 <= 1024, PetscObjectComm((PetscObject)S), PETSC_ERR_USER_INPUT, "-sampler_n1 and -sampler_n2 must be in 1..1024");
+  S->n1 = n1;
+  S->n2 = n2;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcSamplerSetTerms - The terms to sample (option -sampler_terms, a list parsed by HylcPlanTermsFromString()).
+
+  Not collective
+
+  Input Parameters:
++ S     - the sampler
+- terms - bit t set for term t of include/hylc/plan.h (0 zero, 1..5 the 1D terms, 6..14 the 2D terms)
+
+  Level: beginner
+@*/
+PetscErrorCode HylcSamplerSetTerms(HylcSampler S, PetscInt terms)
+{
+  SAMPLER_SETTER_BEGIN;
+  PetscCheck(terms > 0 && terms < (1 << HYLC_PLAN_NTERM), PetscObjectComm((PetscObject)S), PETSC_ERR_USER_INPUT, "The sampling plan is empty (-sampler_terms)");
+  S->terms = terms;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcSamplerSetBatchSize - Samples per batch, the unit of work handed to a rank (option -sampler_batch).
+
+  Not collective
+
+  Input Parameters:
++ S     - the sampler
+- batch - at least 1
+
+  Level: intermediate
+@*/
+PetscErrorCode HylcSamplerSetBatchSize(HylcSampler S, PetscInt batch)
+{
+  SAMPLER_SETTER_BEGIN;
+  PetscCheck(batch >= 1, PetscObjectComm((PetscObject)S), PETSC_ERR_USER_INPUT, "-sampler_batch must be at least 1");
+  S->batch = batch;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcSamplerSetProgressInterval - Seconds between progress lines (option -sampler_progress).
+
+  Not collective
+
+  Input Parameters:
++ S       - the sampler
+- seconds - the interval
+
+  Level: intermediate
+@*/
+PetscErrorCode HylcSamplerSetProgressInterval(HylcSampler S, PetscReal seconds)
+{
+  SAMPLER_SETTER_BEGIN;
+  S->progress = seconds;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcSamplerSetExportRaw - Also write the paper's raw layout (data.txt, info.txt) into a directory
+  (options -sampler_export_raw, -sampler_density).
+
+  Not collective
+
+  Input Parameters:
++ S       - the sampler
+. dir     - the directory (NULL or empty: no export)
+- density - volumetric yarn density for the area density of info.txt (kg/m^3; <= 0: 0.12 kg/m^2 / r)
+
+  Level: intermediate
+@*/
+PetscErrorCode HylcSamplerSetExportRaw(HylcSampler S, const char dir[], PetscReal density)
+{
+  SAMPLER_SETTER_BEGIN;
+  PetscCall(PetscStrncpy(S->rawdir, dir ? dir : "", sizeof(S->rawdir)));
+  S->density = density;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcSamplerSetReference - Whether the reference state (Algorithm C1) is computed first, and where it is
+  written (options -sampler_reference, -reference_output; its parameters are -reference_*).
+
+  Not collective
+
+  Input Parameters:
++ S      - the sampler
+. mode   - HYLC_REFERENCE_AUTO (for generated patterns), HYLC_REFERENCE_COMPUTE or HYLC_REFERENCE_NONE
+- output - .pyp file for the reference state (NULL or empty: none)
+
+  Level: intermediate
+@*/
+PetscErrorCode HylcSamplerSetReference(HylcSampler S, HylcReferenceMode mode, const char output[])
+{
+  SAMPLER_SETTER_BEGIN;
+  PetscCheck(mode >= HYLC_REFERENCE_AUTO && mode <= HYLC_REFERENCE_NONE, PetscObjectComm((PetscObject)S), PETSC_ERR_ARG_OUTOFRANGE, "Unknown reference mode %d", (int)mode);
+  S->refmode = mode;
+  PetscCall(PetscStrncpy(S->refout, output ? output : "", sizeof(S->refout)));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcSamplerSetFromOptions - Reads the options of the sampling job and of its pattern (-pattern_*), yarn
+  model (-yarn_*), reference state (-reference_*) and solver (-micro_*). It only reads options: the pattern
+  is loaded or generated and the solver set up by HylcSamplerSetUp(). (With -help it also sets them up,
+  so that -help lists the solver's options, which exist only then: -periodic_*, -macro_*, -micro_snes_*.)
+
+  Collective
+
+  Input Parameter:
+. S - the sampler
+
+  Options Database Keys:
++ -sampler_output <samples.h5>    - the HDF5 output (its journal: <output>.journal) (HylcSamplerSetOutput())
+. -sampler_resume                 - continue an interrupted run from its journal (refused if its settings differ) (HylcSamplerSetResume())
+. -sampler_overwrite              - start over: replace an existing output and its journal (without either
+                                    option an existing output or a journal holding samples is refused) (HylcSamplerSetOverwrite())
+. -sampler_family <woven>         - default ranges of method-spec §8: woven, stockinette, honeycomb, rib (HylcSamplerSetPlanRanges())
+. -sampler_range_<c> min,max      - 1D range of c = sx, sa, sy, II00, II11 (II in 1/m; 2D ranges follow) (HylcSamplerSetPlanRanges())
+. -sampler_n1 <150>, -sampler_n2 <50> - samples per 1D term, per axis of a 2D term (HylcSamplerSetSampleCounts())
+. -sampler_terms <all>            - comma list of terms: zero, sx, sa, sy, II00, II11, sx-sa, sx-sy,
+                                    sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11, or all (HylcSamplerSetTerms())
+. -sampler_batch <1>              - samples per batch (the unit of work handed to a rank) (HylcSamplerSetBatchSize())
+. -sampler_progress <5>           - seconds between progress lines (HylcSamplerSetProgressInterval())
+. -sampler_export_raw <dir>, -sampler_density <0> - the paper's raw layout (HylcSamplerSetExportRaw())
+. -sampler_reference <auto>, -reference_output <f.pyp> - reference state (HylcSamplerSetReference())
+- -sampler_view                   - print the job after its set-up (HylcSamplerView())
+
+  Level: beginner
+
+.seealso: HylcSamplerSetUp(), HylcSamplerGetPattern(), HylcSamplerGetMicro()
+@*/
+PetscErrorCode HylcSamplerSetFromOptions(HylcSampler S)
+{
+  MPI_Comm       comm       = PetscObjectComm((PetscObject)S);
+  char           terms[512] = "all", output[PETSC_MAX_PATH_LEN], refout[PETSC_MAX_PATH_LEN], rawdir[PETSC_MAX_PATH_LEN];
+  PetscInt       n1 = S->n1, n2 = S->n2, batch = S->batch;
+  PetscReal      progress = S->progress, density = S->density;
+  PetscBool      resume = S->resume, overwrite = S->overwrite, tset, help;
+  PetscEnum      mode   = (PetscEnum)S->refmode;
+  HylcPlanRanges ranges = S->ranges;
+  HylcPattern    pat;
+  HylcMicro      micro;
+  HylcYarnModel  model;
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(S, HYLC_SAMPLER_CLASSID, 1);
+  PetscCheck(!S->setupcalled, comm, PETSC_ERR_ARG_WRONGSTATE, "HylcSamplerSetFromOptions() after HylcSamplerSetUp()");
+  S->solverSetUp = PETSC_FALSE;
+  PetscCall(PetscStrncpy(output, S->output, sizeof(output)));
+  PetscCall(PetscStrncpy(refout, S->refout, sizeof(refout)));
+  PetscCall(PetscStrncpy(rawdir, S->rawdir, sizeof(rawdir)));
+  PetscCall(HylcSamplerGetPattern(S, &pat));
+  PetscCall(HylcPatternSetFromOptions(pat));
+  model = S->model;
+  PetscCall(HylcYarnModelSetFromOptions(comm, NULL, &model));
+  PetscCall(HylcSamplerSetYarnModel(S, &model));
+  PetscCall(HylcReferenceParamsSetFromOptions(comm, &S->refpar));
+  PetscObjectOptionsBegin((PetscObject)S);
+  PetscCall(PetscOptionsEnum("-sampler_reference", "Reference state (Algorithm C1): auto (compute for generated patterns, not for files), compute, none", "HylcSamplerSetReference", HylcReferenceModes, mode, &mode, NULL));
+  PetscCall(PetscOptionsString("-reference_output", "Write the reference state as .pyp", "HylcSamplerSetReference", refout, refout, sizeof(refout), NULL));
+  PetscCall(PetscOptionsString("-sampler_output", "HDF5 output file (the journal is <output>.journal)", "HylcSamplerSetOutput", output, output, sizeof(output), NULL));
+  PetscCall(PetscOptionsBool("-sampler_resume", "Continue an interrupted run from its journal <output>.journal (refused, naming the differences, if any setting that changes results differs)", "HylcSamplerSetResume", resume, &resume, NULL));
+  PetscCall(PetscOptionsBool("-sampler_overwrite", "Start over: replace an existing output and its journal (without -sampler_resume or this, an existing output or journal with samples is refused)", "HylcSamplerSetOverwrite", overwrite, &overwrite, NULL));
+  PetscCall(HylcPlanRangesFromOptions(PetscOptionsObject, comm, "HylcSamplerSetPlanRanges", &ranges));
+  PetscCall(PetscOptionsInt("-sampler_n1", "Samples per 1D term", "HylcSamplerSetSampleCounts", n1, &n1, NULL));
+  PetscCall(PetscOptionsInt("-sampler_n2", "Samples per axis of a 2D term", "HylcSamplerSetSampleCounts", n2, &n2, NULL));
+  PetscCall(PetscOptionsString("-sampler_terms", "Terms to sample: all, or a comma list of zero, sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11", "HylcSamplerSetTerms", terms, terms, sizeof(terms), &tset));
+  PetscCall(PetscOptionsInt("-sampler_batch", "Samples per batch (unit of work of a rank)", "HylcSamplerSetBatchSize", batch, &batch, NULL));
+  PetscCall(PetscOptionsReal("-sampler_progress", "Seconds between progress lines", "HylcSamplerSetProgressInterval", progress, &progress, NULL));
+  PetscCall(PetscOptionsString("-sampler_export_raw", "Also write the paper's raw layout into this directory: data.txt (rows sx sa sy II00 II01 II11 Psi in the order of C4) and info.txt (area, area density)", "HylcSamplerSetExportRaw", rawdir, rawdir, sizeof(rawdir), NULL));
+  PetscCall(PetscOptionsReal("-sampler_density", "Volumetric yarn density for the area density of info.txt (kg/m^3; <= 0: 0.12 kg/m^2 / r, as hylc-fit)", "HylcSamplerSetExportRaw", density, &density, NULL));
+  PetscCall(PetscOptionsName("-sampler_view", "Print the sampling job after its set-up", "HylcSamplerView", NULL));
+  PetscOptionsEnd();
+  PetscCall(HylcSamplerSetReference(S, (HylcReferenceMode)mode, refout));
+  PetscCall(HylcSamplerSetOutput(S, output));
+  PetscCall(HylcSamplerSetResume(S, resume));
+  PetscCall(HylcSamplerSetOverwrite(S, overwrite));
+  PetscCall(HylcSamplerSetPlanRanges(S, &ranges));
+  PetscCall(HylcSamplerSetSampleCounts(S, n1, n2));
+  PetscCall(HylcSamplerSetBatchSize(S, batch));
+  PetscCall(HylcSamplerSetProgressInterval(S, progress));
+  PetscCall(HylcSamplerSetExportRaw(S, rawdir, density));
+  if (tset) {
+    int mask;
+    PetscCall(HylcPlanTermsFromString(comm, "-sampler_terms", terms, &mask));
+    PetscCall(HylcSamplerSetTerms(S, (PetscInt)mask));
+  }
+  PetscCall(HylcSamplerGetMicro(S, &micro));
+  PetscCall(HylcMicroSetFromOptions(micro));
+  PetscCall(PetscOptionsHasHelp(NULL, &help));
+  if (help) PetscCall(HylcSamplerSetUpSolver_Private(S));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
