@@ -54,6 +54,7 @@ PetscErrorCode HylcMicroCreate(MPI_Comm comm, HylcMicro *micro)
   PetscCall(HylcInitializePackage());
   PetscCall(PetscHeaderCreate(M, HYLC_MICRO_CLASSID, "HylcMicro", "Microscale Newton solver", "Micro", comm, HylcMicroDestroy, HylcMicroView));
   ParamsDefault(&M->par);
+  PetscCall(PetscObjectChangeTypeName((PetscObject)M, "regularized_newton"));
   PetscCall(PetscObjectSetOptionsPrefix((PetscObject)M, "micro_"));
   *micro = M;
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -214,8 +215,22 @@ PetscErrorCode HylcMicroSetUp(HylcMicro M)
 
 /*@C
   HylcMicroSolve - Solves for the equilibrium of the tile under the strain z (Algorithms C2, C3) from the
-  initial guess u~ = 0. Not collective (PETSC_COMM_SELF). The result's status says whether it converged;
-  a non-converged sample is not an error.
+  initial guess u~ = 0, setting the solver up first if needed. Not collective (PETSC_COMM_SELF).
+
+  Input Parameters:
++ M - the solver, with a pattern
+- z - the strain (sx, sa, sy, II00, II01, II11; II in 1/m)
+
+  Output Parameter:
+. res - the result: psi, energies, status, iterations, residuals and times
+
+  Notes:
+  The result's status says whether it converged; a non-converged sample is not an error. An error inside
+  the solve (a bug, no memory, a bad option) is an error of this function.
+
+  Level: beginner
+
+.seealso: HylcMicroSetUp(), HylcMicroGetState(), HylcMicroResultView()
 @*/
 PetscErrorCode HylcMicroSolve(HylcMicro M, const PetscReal z[6], HylcMicroResult *res)
 {
@@ -228,6 +243,7 @@ PetscErrorCode HylcMicroSolve(HylcMicro M, const PetscReal z[6], HylcMicroResult
   PetscInt            m;
 
   PetscFunctionBegin;
+  PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
   PetscCheck(M->P, PetscObjectComm((PetscObject)M), PETSC_ERR_ARG_WRONGSTATE, "Call HylcMicroSetPattern() first");
   if (injectAt < 0) { /* read once per process */
     const char *env = getenv("HYLC_INJECT_ERROR");
@@ -305,30 +321,84 @@ PetscErrorCode HylcMicroSolve(HylcMicro M, const PetscReal z[6], HylcMicroResult
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMicroGetPeriodic - Gets the periodic tile of the solver. Not collective.
+
+  Input Parameter:
+. M - the solver, with a pattern
+
+  Output Parameter:
+. P - the tile (owned by M; NULL before HylcMicroSetPattern())
+
+  Level: intermediate
+
+.seealso: HylcMicroSetPattern()
+@*/
 PetscErrorCode HylcMicroGetPeriodic(HylcMicro M, HylcPeriodic *P)
 {
   PetscFunctionBegin;
+  PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
   *P = M->P;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* the unscaled unknowns y of the last solve */
+/*@C
+  HylcMicroGetState - Gets the unscaled unknowns y of the last solve. Not collective.
+
+  Input Parameter:
+. M - the solver, after HylcMicroSolve()
+
+  Output Parameter:
+. y - the unknowns (an array of the tile's size, HylcPeriodicGetSizes())
+
+  Level: intermediate
+
+.seealso: HylcMicroSolve()
+@*/
 PetscErrorCode HylcMicroGetState(HylcMicro M, PetscReal y[])
 {
   PetscFunctionBegin;
+  PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
+  PetscCheck(M->X, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE, "HylcMicroGetState: no solve yet");
   PetscCall(HylcMicroToY_Private(M, M->X, y));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* energies of the accepted iterates of the last solve */
+/*@C
+  HylcMicroGetEnergyHistory - Gets the energies of the accepted iterates of the last solve. Not collective.
+
+  Input Parameter:
+. M - the solver
+
+  Output Parameters:
++ n - the number of accepted iterates
+- E - their energies (J; owned by M, valid until the next solve)
+
+  Level: developer
+
+.seealso: HylcMicroSolve()
+@*/
 PetscErrorCode HylcMicroGetEnergyHistory(HylcMicro M, PetscInt *n, const PetscReal **E)
 {
   PetscFunctionBegin;
+  PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
   *n = M->nhist;
   *E = M->hist;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMicroResultView - Prints a result: strain, psi, energy parts, status, iterations, residuals, times.
+  Not collective.
+
+  Input Parameters:
++ r      - the result of HylcMicroSolve()
+- viewer - an ASCII viewer
+
+  Level: beginner
+
+.seealso: HylcMicroSolve(), HylcMicroView()
+@*/
 PetscErrorCode HylcMicroResultView(const HylcMicroResult *r, PetscViewer viewer)
 {
   char buf[512];
