@@ -1,6 +1,6 @@
 #pragma once
 /* HylcChol: a supernodal sparse Cholesky factorization A = P^T L L^T P for the Newton matrices of the
-   microscale solve (src/micro/chol.c).
+   microscale solve (src/linalg/chol.c).
 
    The matrices are symmetric positive definite (after the regularization alpha I), of order 4 N for N
    yarn vertices, with a structure of 4 x 4 vertex blocks that changes rarely. HylcChol works on that
@@ -31,6 +31,7 @@ typedef struct {
   PetscInt       n, bs;               /* order and block size */
   PetscInt       nsuper;              /* supernodes */
   PetscCount     nnzL;                /* stored entries of L (dense supernode panels, diagonal blocks in full) */
+  PetscCount     nnzA;                /* entries of A (both triangles) at the symbolic phase */
   PetscLogDouble flops;               /* floating-point operations of one numeric factorization */
   PetscInt       nsymbolic, nnumeric; /* phases run since creation */
 } HylcCholInfo;
@@ -46,6 +47,9 @@ PETSC_EXTERN PetscErrorCode HylcCholSetRelaxed(HylcChol, PetscBool);
    unusable, when a pivot is zero or tiny (|d| <= 1e-14 |A_kk|), not finite, or negative while indefinite
    matrices are refused (the default: then *ok says whether A is positive definite). */
 PETSC_EXTERN PetscErrorCode HylcCholFactor(HylcChol, Mat A, PetscInt bs, PetscBool *ok);
+/* The symbolic phase alone (ordering, elimination tree, supernodes); HylcCholFactor() then runs only the
+   numeric phase while A's nonzero pattern stays the same. */
+PETSC_EXTERN PetscErrorCode HylcCholFactorSymbolic(HylcChol, Mat A, PetscInt bs);
 /* Accept indefinite matrices (negative pivots; no pivoting, so only for matrices whose leading principal
    minors do not vanish, as regularized Hessians). Default PETSC_FALSE. */
 PETSC_EXTERN PetscErrorCode HylcCholSetIndefinite(HylcChol, PetscBool);
@@ -57,3 +61,15 @@ PETSC_EXTERN PetscErrorCode HylcCholSolve(HylcChol, const PetscScalar b[], Petsc
 PETSC_EXTERN PetscErrorCode HylcCholSolveMany(HylcChol, PetscInt nrhs, const PetscScalar b[], PetscScalar x[]);
 PETSC_EXTERN PetscErrorCode HylcCholGetInfo(HylcChol, HylcCholInfo *);
 PETSC_EXTERN PetscErrorCode HylcCholView(HylcChol, PetscViewer);
+
+/* HylcChol as a PETSc solver type (src/linalg/matsolver.c), registered by HylcInitializePackage() for
+   MATSEQAIJ and MAT_FACTOR_CHOLESKY: PCFactorSetMatSolverType(pc, MATSOLVERHYLC) or
+   -pc_factor_mat_solver_type hylc (in hylc: -micro_factor_pc_factor_mat_solver_type hylc, the default).
+   The factor implements MatCholeskyFactorSymbolic/Numeric, MatSolve, MatMatSolve (all columns of a dense
+   right-hand side in one pass over L), MatGetInertia, MatGetInfo and MatView. It orders on its own (METIS
+   nested dissection of the block graph; MatFactorGetCanUseOrdering() is false, so the PC's ordering is
+   not used), takes the block size from A (MatGetBlockSize; 1 if unset) and accepts indefinite matrices
+   (signed factorization, MatGetInertia() counts the negative pivots). A zero, tiny or non-finite pivot is
+   a failed factorization (MAT_FACTOR_NUMERIC_ZEROPIVOT, or an error when A's error-if-failure is set). */
+#define MATSOLVERHYLC "hylc"
+PETSC_EXTERN PetscErrorCode MatGetFactor_SeqAIJ_Hylc(Mat, MatFactorType, Mat *);

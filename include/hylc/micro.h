@@ -5,7 +5,8 @@
    - objective: the total energy E; residual: M g_y;
    - Jacobian: K = M H_y M + alpha I with alpha = alpha^_i ||M g_y||_inf (S22);
    - linear solve: the constrained KKT system (S22) by a Schur complement around a sparse Cholesky
-     factorization of K (a PCSHELL around an inner PC, options -micro_factor_pc_*); if the direction is
+     factorization of K (a PCSHELL around a PCCHOLESKY, options -micro_factor_pc_*, solver type hylc by
+     default: -micro_factor_pc_factor_mat_solver_type hylc|petsc|cholmod|mumps); if the direction is
      not a descent direction of positive curvature (K indefinite), alpha is multiplied by 10 and K
      refactored;
    - line search: the step limit of S2.2, then backtracking by 0.1 until the energy strictly decreases;
@@ -18,7 +19,7 @@
 #include <hylc/periodic.h>
 #include <petscsnes.h>
 
-typedef struct _n_HylcMicro *HylcMicro;
+typedef struct _p_HylcMicro *HylcMicro;
 
 typedef enum {
   HYLC_MICRO_CONVERGED = 0,
@@ -50,7 +51,17 @@ typedef struct {
 PETSC_EXTERN PetscErrorCode HylcMicroCreate(MPI_Comm, HylcMicro *);
 PETSC_EXTERN PetscErrorCode HylcMicroDestroy(HylcMicro *);
 PETSC_EXTERN PetscErrorCode HylcMicroSetPattern(HylcMicro, HylcPattern, const HylcYarnModel *);
+PETSC_EXTERN PetscErrorCode HylcMicroSetOptionsPrefix(HylcMicro, const char[]);
+PETSC_EXTERN PetscErrorCode HylcMicroSetRegularization(HylcMicro, PetscReal start, PetscReal end, PetscInt its, PetscInt retries);
+PETSC_EXTERN PetscErrorCode HylcMicroSetTwistScale(HylcMicro, PetscReal);
+PETSC_EXTERN PetscErrorCode HylcMicroSetStepLimit(HylcMicro, PetscReal p0, PetscReal p1);
+PETSC_EXTERN PetscErrorCode HylcMicroSetLineSearch(HylcMicro, PetscReal factor, PetscInt trials, PetscInt maxStalls);
+PETSC_EXTERN PetscErrorCode HylcMicroSetTolerances(HylcMicro, PetscReal rtol, PetscReal atol, PetscReal ctol, PetscReal maxTime);
+PETSC_EXTERN PetscErrorCode HylcMicroSetIndefinite(HylcMicro, PetscBool);
 PETSC_EXTERN PetscErrorCode HylcMicroSetFromOptions(HylcMicro);
+PETSC_EXTERN PetscErrorCode HylcMicroGetFactorPC(HylcMicro, PC *);
+PETSC_EXTERN PetscErrorCode HylcMicroView(HylcMicro, PetscViewer);
+PETSC_EXTERN PetscErrorCode HylcMicroViewFromOptions(HylcMicro, PetscObject, const char[]);
 PETSC_EXTERN PetscErrorCode HylcMicroSetUp(HylcMicro);
 PETSC_EXTERN PetscErrorCode HylcMicroSolve(HylcMicro, const PetscReal[6], HylcMicroResult *);
 PETSC_EXTERN PetscErrorCode HylcMicroGetPeriodic(HylcMicro, HylcPeriodic *);

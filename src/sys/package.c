@@ -1,10 +1,12 @@
 #include <hylc/sys.h>
-#include <petscmat.h>
+#include <hylc/chol.h>
 
 PetscClassId  HYLC_PATTERN_CLASSID;
 PetscLogEvent HYLC_PatternLoad, HYLC_PatternWrite, HYLC_PatternGenerate, HYLC_PatternDistance;
 PetscLogEvent HYLC_TileEvaluate, HYLC_TileBroadphase, HYLC_TileContact, HYLC_TileAssemble;
-PetscLogEvent HYLC_PeriodicSetUp, HYLC_PeriodicEvaluate, HYLC_MicroSolve, HYLC_SamplerRun;
+PetscLogEvent HYLC_PeriodicSetUp, HYLC_PeriodicEvaluate, HYLC_SamplerRun;
+PetscClassId  HYLC_MICRO_CLASSID, HYLC_CHOL_CLASSID;
+PetscLogEvent HYLC_MicroSolve, HYLC_MicroSetUp, HYLC_MicroFactor, HYLC_MicroLineSearch;
 PetscLogEvent HYLC_CholSymbolic, HYLC_CholNumeric, HYLC_CholSolve;
 PetscClassId  HYLC_PERIODIC_CLASSID, HYLC_SAMPLER_CLASSID;
 
@@ -41,15 +43,23 @@ PetscErrorCode HylcInitializePackage(void)
   PetscCall(PetscLogEventRegister("CONTACT_Broadphase", HYLC_PATTERN_CLASSID, &HYLC_TileBroadphase));
   PetscCall(PetscLogEventRegister("CONTACT_Energy", HYLC_PATTERN_CLASSID, &HYLC_TileContact));
   PetscCall(PetscLogEventRegister("TILE_Assemble", HYLC_PATTERN_CLASSID, &HYLC_TileAssemble));
-  PetscCall(PetscLogEventRegister("MICRO_Solve", HYLC_PATTERN_CLASSID, &HYLC_MicroSolve));
-  PetscCall(PetscLogEventRegister("CHOL_Symbolic", HYLC_PATTERN_CLASSID, &HYLC_CholSymbolic));
-  PetscCall(PetscLogEventRegister("CHOL_Numeric", HYLC_PATTERN_CLASSID, &HYLC_CholNumeric));
-  PetscCall(PetscLogEventRegister("CHOL_Solve", HYLC_PATTERN_CLASSID, &HYLC_CholSolve));
   PetscCall(PetscClassIdRegister("HylcPeriodic", &HYLC_PERIODIC_CLASSID));
   PetscCall(PetscLogEventRegister("PERIODIC_SetUp", HYLC_PERIODIC_CLASSID, &HYLC_PeriodicSetUp));
   PetscCall(PetscLogEventRegister("PERIODIC_Evaluate", HYLC_PERIODIC_CLASSID, &HYLC_PeriodicEvaluate));
   PetscCall(PetscClassIdRegister("HylcSampler", &HYLC_SAMPLER_CLASSID));
   PetscCall(PetscLogEventRegister("SAMPLER_Run", HYLC_SAMPLER_CLASSID, &HYLC_SamplerRun));
+  PetscCall(PetscClassIdRegister("HylcMicro", &HYLC_MICRO_CLASSID));
+  PetscCall(PetscLogEventRegister("MICRO_SetUp", HYLC_MICRO_CLASSID, &HYLC_MicroSetUp));
+  PetscCall(PetscLogEventRegister("MICRO_Solve", HYLC_MICRO_CLASSID, &HYLC_MicroSolve));
+  PetscCall(PetscLogEventRegister("MICRO_Factor", HYLC_MICRO_CLASSID, &HYLC_MicroFactor));
+  PetscCall(PetscLogEventRegister("MICRO_LineSearch", HYLC_MICRO_CLASSID, &HYLC_MicroLineSearch));
+  PetscCall(PetscClassIdRegister("HylcChol", &HYLC_CHOL_CLASSID));
+  PetscCall(PetscLogEventRegister("CHOL_Symbolic", HYLC_CHOL_CLASSID, &HYLC_CholSymbolic));
+  PetscCall(PetscLogEventRegister("CHOL_Numeric", HYLC_CHOL_CLASSID, &HYLC_CholNumeric));
+  PetscCall(PetscLogEventRegister("CHOL_Solve", HYLC_CHOL_CLASSID, &HYLC_CholSolve));
+  /* HylcChol as a PETSc solver type: -pc_factor_mat_solver_type hylc (include/hylc/chol.h) */
+  PetscCall(MatInitializePackage()); /* PETSc's own solver types first: they stay the defaults */
+  PetscCall(MatSolverTypeRegister(MATSOLVERHYLC, MATSEQAIJ, MAT_FACTOR_CHOLESKY, MatGetFactor_SeqAIJ_Hylc));
   PetscCall(PetscClassIdRegister("HylcMidsurface", &HYLC_MIDSURFACE_CLASSID));
   PetscCall(PetscLogEventRegister("MACRO_SetUp", HYLC_MIDSURFACE_CLASSID, &HYLC_MacroSetUp));
   PetscCall(PetscLogEventRegister("MACRO_Poisson", HYLC_MIDSURFACE_CLASSID, &HYLC_MacroPoisson));

@@ -32,10 +32,12 @@ $MPIEXEC -n 2 $tool -pattern_type plain -yarn_kc 50 -strain 0.1,0,0,0,0,0 >out3.
 [ "$(grep -c '^psi: ' out3.txt)" = 2 ] || { cat out3.txt; die "expected one psi line per rank"; }
 [ "$(grep '^psi: ' out3.txt | sort -u)" = "$(grep '^psi: ' out1.txt)" ] || die "ranks disagree with the 1-rank result"
 
-# PETSc's Cholesky (-micro_factor_type petsc) instead of HylcChol: the same equilibrium to rounding
-$tool -pattern_type plain -yarn_kc 50 -strain 0.1,0,0,0,0,0 -micro_factor_type petsc >out4.txt 2>&1 || { cat out4.txt; die "solve with -micro_factor_type petsc failed"; }
+# PETSc's Cholesky instead of HylcChol (-micro_factor_pc_factor_mat_solver_type petsc): the same equilibrium to rounding
+$tool -pattern_type plain -yarn_kc 50 -strain 0.1,0,0,0,0,0 -micro_factor_pc_factor_mat_solver_type petsc >out4.txt 2>&1 || { cat out4.txt; die "solve with the petsc solver type failed"; }
 a=$(sed -n 's/^psi: //p' out1.txt); b=$(sed -n 's/^psi: //p' out4.txt)
 awk -v a="$a" -v b="$b" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d <= 1e-9 * a) }' || die "psi with HylcChol $a, with PETSc's Cholesky $b"
-$tool -pattern_type plain -strain 0.1,0,0,0,0,0 -micro_factor_type lu >bad.txt 2>&1 && die "-micro_factor_type lu accepted"
-grep -q "Unknown option lu for -micro_factor_type" bad.txt || { cat bad.txt; die "unclear message for -micro_factor_type lu"; }
+# the removed -micro_factor_type is an error that names its replacement
+$tool -pattern_type plain -strain 0.1,0,0,0,0,0 -micro_factor_type petsc >bad.txt 2>&1 && die "-micro_factor_type accepted"
+grep -q -- "-micro_factor_type was removed: choose the factorization with -micro_factor_pc_factor_mat_solver_type" bad.txt || { cat bad.txt; die "unclear message for -micro_factor_type"; }
+[ "$(wc -l <bad.txt)" -le 2 ] || { cat bad.txt; die "-micro_factor_type: more than two lines of output"; }
 exit 0

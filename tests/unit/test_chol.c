@@ -1,4 +1,4 @@
-/* HylcChol, the supernodal block Cholesky (src/micro/chol.c):
+/* HylcChol, the supernodal block Cholesky (src/linalg/chol.c), and the solver type hylc (matsolver.c):
    - random sparse SPD matrices with block sizes 1, 3 and 4, METIS and natural orderings: the solution of
      A x = b has a relative residual <= 1e-12 and agrees with PETSc's own Cholesky;
    - the factor of a matrix with a known dense factor (block tridiagonal) is exact to rounding;
@@ -6,10 +6,13 @@
      inertia equals MUMPS's and the solve has a small residual;
    - the symbolic phase reruns only when the nonzero pattern changes;
    - HylcCholSolveMany gives bitwise the results of HylcCholSolve, also in place;
-   - the Newton matrices H_y + alpha BI of the paper's tiles ($HYLC_REFDATA, skipped when absent).
+   - the Newton matrices H_y + alpha BI of the paper's tiles ($HYLC_REFDATA, skipped when absent);
+   - through PCCHOLESKY with the solver type hylc: PCApply and MatMatSolve bitwise equal to HylcChol,
+     MatGetInertia, and a zero pivot as a failed factorization.
    hylc-test: nprocs=1 */
 #include <hylc/chol.h>
 #include <hylc/periodic.h>
+#include <petscpc.h>
 #include "hylctest.h"
 #include "tilehessian.h"
 
@@ -328,6 +331,92 @@ static PetscErrorCode TestPaperTiles(void)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* HylcChol as the PETSc solver type "hylc": PCCHOLESKY with -pc_factor_mat_solver_type hylc gives bitwise
+   the results of HylcChol (PCApply, MatMatSolve against HylcCholSolveMany), MatGetInertia equals
+   HylcCholGetInertia, and a zero pivot is a failed factorization (PC_FACTOR_NUMERIC_ZEROPIVOT), not an error */
+static PetscErrorCode TestSolverType(void)
+{
+  unsigned long long seed = 11;
+  const PetscInt     nb = 40, bs = 4, n = nb * bs, m = 5;
+  Mat                A, F, B, X;
+  PC                 pc;
+  HylcChol           C;
+  Vec                b, x;
+  PetscScalar       *ba, *xa, *bm, *x1;
+  const PetscScalar *xr;
+  PetscBool          ok, same = PETSC_TRUE;
+  MatSolverType      type;
+  PCFailedReason     reason;
+  PetscInt           nneg, nzero, npos, cneg, cpos;
+
+  PetscFunctionBegin;
+  PetscCall(RandomSPD(nb, bs, 0.05, 0.5, &seed, &A));
+  PetscCall(MatSetBlockSize(A, bs));
+  PetscCall(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE));
+  PetscCall(PCCreate(PETSC_COMM_SELF, &pc));
+  PetscCall(PCSetType(pc, PCCHOLESKY));
+  PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERHYLC));
+  PetscCall(PCSetOperators(pc, A, A));
+  PetscCall(PCSetUp(pc));
+  PetscCall(PCFactorGetMatrix(pc, &F));
+  PetscCall(MatFactorGetSolverType(F, &type));
+  PetscCall(PetscStrcmp(type, MATSOLVERHYLC, &ok));
+  HYLC_CHECK(ok, "MatFactorGetSolverType: %s, expected hylc", type);
+  PetscCall(HylcCholCreate(&C));
+  PetscCall(HylcCholFactor(C, A, bs, &ok));
+  HYLC_CHECK(ok, "HylcChol failed on an SPD matrix");
+  /* one right-hand side */
+  PetscCall(MatCreateVecs(A, &x, &b));
+  PetscCall(VecGetArray(b, &ba));
+  for (PetscInt i = 0; i < n; i++) ba[i] = 2 * HylcTestRand(&seed) - 1;
+  PetscCall(PetscMalloc2(n * m, &bm, n * m, &x1));
+  PetscCall(HylcCholSolve(C, ba, x1));
+  PetscCall(VecRestoreArray(b, &ba));
+  PetscCall(PCApply(pc, b, x));
+  PetscCall(VecGetArrayRead(x, &xr));
+  for (PetscInt i = 0; i < n; i++) same = (PetscBool)(same && xr[i] == x1[i]);
+  PetscCall(VecRestoreArrayRead(x, &xr));
+  HYLC_CHECK(same, "PCApply with the solver type hylc differs from HylcCholSolve");
+  /* m right-hand sides in one MatMatSolve */
+  for (PetscInt i = 0; i < n * m; i++) bm[i] = 2 * HylcTestRand(&seed) - 1;
+  PetscCall(MatCreateSeqDense(PETSC_COMM_SELF, n, m, bm, &B));
+  PetscCall(MatCreateSeqDense(PETSC_COMM_SELF, n, m, NULL, &X));
+  PetscCall(MatMatSolve(F, B, X));
+  PetscCall(HylcCholSolveMany(C, m, bm, x1));
+  PetscCall(MatDenseGetArray(X, &xa));
+  same = PETSC_TRUE;
+  for (PetscInt i = 0; i < n * m; i++) same = (PetscBool)(same && xa[i] == x1[i]);
+  PetscCall(MatDenseRestoreArray(X, &xa));
+  HYLC_CHECK(same, "MatMatSolve with the solver type hylc differs from HylcCholSolveMany");
+  /* inertia of an indefinite matrix: A - 3 I */
+  PetscCall(MatShift(A, -3.0));
+  PetscCall(PCSetUp(pc));
+  PetscCall(PCGetFailedReason(pc, &reason));
+  HYLC_CHECK(reason == PC_NOERROR, "indefinite matrix: factorization failed (%s)", PCFailedReasons[reason]);
+  PetscCall(MatGetInertia(F, &nneg, &nzero, &npos));
+  PetscCall(HylcCholSetIndefinite(C, PETSC_TRUE));
+  PetscCall(HylcCholFactor(C, A, bs, &ok));
+  PetscCall(HylcCholGetInertia(C, &cneg, &cpos));
+  HYLC_CHECK(ok && nneg == cneg && npos == cpos && nzero == 0 && nneg > 0, "inertia: MatGetInertia (%d, %d, %d), HylcChol (%d, %d)", (int)nneg, (int)nzero, (int)npos, (int)cneg, (int)cpos);
+  /* a zero pivot: a failed factorization, not an error */
+  {
+    const PetscInt row = 7;
+    PetscCall(MatZeroRowsColumns(A, 1, &row, 0.0, NULL, NULL));
+    PetscCall(PCSetUp(pc));
+    PetscCall(PCGetFailedReason(pc, &reason));
+    HYLC_CHECK(reason == PC_FACTOR_NUMERIC_ZEROPIVOT, "zero pivot: failed reason %s, expected FACTOR_NUMERIC_ZEROPIVOT", PCFailedReasons[reason]);
+  }
+  PetscCall(PetscFree2(bm, x1));
+  PetscCall(MatDestroy(&B));
+  PetscCall(MatDestroy(&X));
+  PetscCall(VecDestroy(&x));
+  PetscCall(VecDestroy(&b));
+  PetscCall(HylcCholDestroy(&C));
+  PetscCall(PCDestroy(&pc));
+  PetscCall(MatDestroy(&A));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 int main(int argc, char **argv)
 {
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
@@ -337,6 +426,7 @@ int main(int argc, char **argv)
   PetscCall(TestIndefiniteAndReuse());
   PetscCall(TestInertia());
   PetscCall(TestPaperTiles());
+  PetscCall(TestSolverType());
   PetscCall(PetscFinalize());
   return HYLC_TEST_RESULT();
 }

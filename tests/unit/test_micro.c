@@ -9,8 +9,10 @@
      pattern sheared by -sa (the paper's basket and satin, a generated twill), to 1e-9; so Psi(sa) = Psi(-sa)
      holds exactly as far as a pattern is mirror symmetric (the stored basket and satin are not, by 3-8 %:
      docs/method.md);
-   - representation: storing vertices one or two periods away (the same periodic object) changes nothing. */
+   - representation: storing vertices one or two periods away (the same periodic object) changes nothing;
+   - the object: prefix, setters, view, the removed -micro_factor_type, the factorization PC's solver type. */
 #include <hylc/micro.h>
+#include <unistd.h>
 #include "hylctest.h"
 
 static PetscErrorCode StraightYarn(PetscInt N, HylcPattern *p)
@@ -338,6 +340,89 @@ static PetscErrorCode TestPaperPatterns(const char *root, const char *dir)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* is text in the file? */
+static PetscBool FileHas(const char *path, const char *text)
+{
+  char      line[1024];
+  PetscBool has = PETSC_FALSE;
+  FILE     *f   = fopen(path, "r");
+  if (!f) return PETSC_FALSE;
+  while (!has && fgets(line, sizeof(line), f)) has = (PetscBool)(strstr(line, text) != NULL);
+  fclose(f);
+  return has;
+}
+
+/* the object: default prefix micro_, setters (and their refusal of bad values), a changed prefix reaches
+   the options, HylcMicroView prints what was set, the removed -<prefix>factor_type is an error naming its
+   replacement, and the factorization PC chosen through HylcMicroGetFactorPC gives the same psi (1e-9) */
+static PetscErrorCode TestObject(void)
+{
+  HylcMicro       M;
+  HylcPattern     p;
+  HylcYarnModel   m;
+  HylcMicroResult r1, r2;
+  PC              pc;
+  const char     *prefix;
+  PetscBool       eq;
+  PetscErrorCode  ierr;
+  PetscViewer     v;
+  char            path[] = "/tmp/hylc_test_micro_viewXXXXXX";
+  const PetscReal z[6]   = {0.1, 0, 0, 0, 0, 0};
+  int             fd;
+
+  PetscFunctionBegin;
+  PetscCall(StraightYarn(16, &p));
+  PetscCall(HylcYarnModelDefault(&m));
+  PetscCall(HylcMicroCreate(PETSC_COMM_SELF, &M));
+  PetscCall(PetscObjectGetOptionsPrefix((PetscObject)M, &prefix));
+  PetscCall(PetscStrcmp(prefix, "micro_", &eq));
+  HYLC_CHECK(eq, "default prefix %s, expected micro_", prefix);
+  /* bad values are refused with PETSC_ERR_USER_INPUT */
+  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+  ierr = HylcMicroSetTolerances(M, -1, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT);
+  PetscCall(PetscPopErrorHandler());
+  HYLC_CHECK(ierr == PETSC_ERR_USER_INPUT, "HylcMicroSetTolerances(rtol = -1): error %d, expected PETSC_ERR_USER_INPUT", (int)ierr);
+  PetscCall(HylcMicroSetTolerances(M, 1e-5, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT)); /* restore */
+  /* a changed prefix: its options are read, the setters' values are viewed */
+  PetscCall(HylcMicroSetOptionsPrefix(M, "other_"));
+  PetscCall(PetscOptionsSetValue(NULL, "-other_ls_max", "17"));
+  PetscCall(HylcMicroSetStepLimit(M, 0.07, PETSC_DEFAULT));
+  PetscCall(HylcMicroSetPattern(M, p, &m));
+  PetscCall(HylcMicroSetFromOptions(M));
+  PetscCall(HylcMicroSetUp(M));
+  fd = mkstemp(path);
+  HYLC_CHECK(fd >= 0, "mkstemp failed");
+  if (fd >= 0) close(fd);
+  PetscCall(PetscViewerASCIIOpen(PETSC_COMM_SELF, path, &v));
+  PetscCall(HylcMicroView(M, v));
+  PetscCall(PetscViewerDestroy(&v));
+  HYLC_CHECK(FileHas(path, "17 trials") && FileHas(path, "step limit (0.07 +") && FileHas(path, "(other_)") && FileHas(path, "solver type hylc (-other_factor_pc_factor_mat_solver_type)") && FileHas(path, "(other_factor_)"), "HylcMicroView (%s) lacks the prefix, a setter's or an option's value", path);
+  remove(path);
+  PetscCall(PetscOptionsClearValue(NULL, "-other_ls_max"));
+  PetscCall(HylcMicroSolve(M, z, &r1));
+  /* the removed -factor_type */
+  PetscCall(PetscOptionsSetValue(NULL, "-other_factor_type", "petsc"));
+  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+  ierr = HylcMicroSetFromOptions(M);
+  PetscCall(PetscPopErrorHandler());
+  PetscCall(PetscOptionsClearValue(NULL, "-other_factor_type"));
+  HYLC_CHECK(ierr == PETSC_ERR_USER_INPUT, "-other_factor_type: error %d, expected PETSC_ERR_USER_INPUT", (int)ierr);
+  PetscCall(HylcMicroDestroy(&M));
+  /* PETSc's Cholesky chosen through the getter */
+  PetscCall(HylcMicroCreate(PETSC_COMM_SELF, &M));
+  PetscCall(HylcMicroGetFactorPC(M, &pc));
+  PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERPETSC));
+  PetscCall(HylcMicroSetPattern(M, p, &m));
+  PetscCall(HylcMicroSetStepLimit(M, 0.07, PETSC_DEFAULT));
+  PetscCall(HylcMicroSetLineSearch(M, PETSC_DEFAULT, 17, PETSC_DEFAULT));
+  PetscCall(HylcMicroSolve(M, z, &r2));
+  HYLC_CHECK(r1.status == HYLC_MICRO_CONVERGED && r2.status == HYLC_MICRO_CONVERGED, "straight yarn: not converged");
+  HYLC_CHECK_REL(r1.psi, r2.psi, 1e-9);
+  PetscCall(HylcMicroDestroy(&M));
+  PetscCall(HylcPatternDestroy(&p));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 int main(int argc, char **argv)
 {
   char        dir[PETSC_MAX_PATH_LEN];
@@ -345,6 +430,7 @@ int main(int argc, char **argv)
   const char *env = getenv("HYLC_REFDATA"), *root = getenv("HYLC_ROOT");
 
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
+  PetscCall(TestObject());
   PetscCall(TestAnalytic());
   PetscCall(TestReproducible());
   PetscCall(TestShearSymmetry());

@@ -1,4 +1,5 @@
-/* HylcChol: supernodal sparse Cholesky on a block structure (see include/hylc/chol.h).
+/* HylcChol: supernodal sparse Cholesky on a block structure (see include/hylc/chol.h; src/linalg/matsolver.c wires it
+   into PETSc as the solver type "hylc").
 
    Symbolic phase, on the graph of the nb = n / bs blocks ("vertices"):
      1. the block graph of A and its METIS nested-dissection ordering perm (new -> old);
@@ -259,6 +260,7 @@ static PetscErrorCode CholSymbolic(HylcChol C, Mat A, PetscInt bs)
   C->info.bs     = bs;
   C->info.nsuper = C->nsup;
   C->info.nnzL   = C->voff[C->nsup];
+  C->info.nnzA   = C->nnzA;
   C->info.nsymbolic++;
   PetscCall(PetscFree(cs));
   PetscCall(PetscFree6(parent, anc, head, next, cstart, ccnt));
@@ -393,16 +395,30 @@ HYLC_TARGET_CLONES static PetscErrorCode CholNumeric(HylcChol C, Mat A, PetscBoo
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+static PetscErrorCode CheckSeqAIJ(Mat A)
+{
+  PetscBool aij;
+
+  PetscFunctionBegin;
+  PetscCall(PetscObjectTypeCompare((PetscObject)A, MATSEQAIJ, &aij));
+  PetscCheck(aij, PETSC_COMM_SELF, PETSC_ERR_SUP, "HylcChol: the matrix must be MATSEQAIJ");
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcCholFactorSymbolic(HylcChol C, Mat A, PetscInt bs)
+{
+  PetscFunctionBegin;
+  PetscCall(CheckSeqAIJ(A));
+  PetscCall(CholSymbolic(C, A, bs));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode HylcCholFactor(HylcChol C, Mat A, PetscInt bs, PetscBool *ok)
 {
   PetscObjectState st;
 
   PetscFunctionBegin;
-  {
-    PetscBool aij;
-    PetscCall(PetscObjectTypeCompare((PetscObject)A, MATSEQAIJ, &aij));
-    PetscCheck(aij, PETSC_COMM_SELF, PETSC_ERR_SUP, "HylcCholFactor: the matrix must be MATSEQAIJ");
-  }
+  PetscCall(CheckSeqAIJ(A));
   PetscCall(MatGetNonzeroState(A, &st));
   if (A != C->A || st != C->nzstate || bs != C->bs) PetscCall(CholSymbolic(C, A, bs));
   PetscCall(CholNumeric(C, A, ok));

@@ -1,0 +1,75 @@
+#pragma once
+/* Private definition of HylcMicro: only src/micro may include this. The object is split by job:
+     src/micro/micro.c  the object: create/destroy, prefix, pattern, set-up, solve, results;
+     src/micro/opts.c   the parameters: setters, SetFromOptions, View;
+     src/micro/kkt.c    the KKT preconditioner (S22): a PCSHELL around PCCHOLESKY and its Schur complement;
+     src/micro/snes.c   the SNES callbacks: objective, residual, Jacobian, line search, convergence test. */
+#include <hylc/micro.h>
+#include <petsc/private/petscimpl.h>
+
+typedef struct {
+  PetscReal alphaStart, alphaEnd; /* alpha^ schedule: alphaStart (alphaEnd/alphaStart)^(min(i, alphaIts)/alphaIts) */
+  PetscInt  alphaIts, maxRetries;
+  PetscReal twistScale;     /* mu; <= 0: 1/r */
+  PetscReal stepP0, stepP1; /* d_max = (p0 + p1 clamp(lambda_min(I), 0, 1)) r */
+  PetscReal lsFactor;
+  PetscInt  lsMax, maxStalls;
+  PetscReal rtol, atol, ctol, maxTime;
+  PetscBool indefinite; /* accept a factorization of an indefinite K (the descent test still applies) */
+} HylcMicroParams;
+
+struct _HylcMicroOps {
+  PetscErrorCode (*view)(HylcMicro, PetscViewer);
+};
+
+struct _p_HylcMicro {
+  PETSCHEADER(struct _HylcMicroOps);
+  HylcMicroParams par;
+  HylcPattern     pat;
+  HylcYarnModel   model;
+  HylcPeriodic    P;
+  PetscInt        ny, m;     /* unknowns, constraint rows */
+  PetscReal       mu, r, ks; /* twist scale, yarn radius, stretching stiffness k_s */
+  SNES            snes;
+  Mat             K;
+  Vec             X, mvec;
+  PetscReal      *yw, *gw; /* work: unscaled unknowns and gradient */
+  PC              inner;   /* PCCHOLESKY of K (prefix <micro_>factor_; solver type hylc by default) */
+  PetscBool       cholmod; /* the solver type is CHOLMOD (its not-positive-definite error is a failed factorization) */
+  Mat             Bd, Zd;  /* dense n x m: the Schur right-hand sides M A^T and Z = K^-1 M A^T (on Bw, Z) */
+  PetscReal      *Bw;
+  /* KKT data */
+  const PetscReal *A, *dL, *AAtinv;
+  PetscReal       *c, *Z, *S, *Sinv, *wl, *tmp;
+  PetscReal        alpha;
+  /* state of a solve */
+  PetscBool       haveH; /* K holds the unscaled H_y of the state in X */
+  PetscReal       E0;    /* energy of the current iterate */
+  PetscReal       parts[4];
+  PetscReal       z0; /* |z| at the first iteration */
+  PetscReal       lastz, lastc;
+  PetscInt        stalls, stallsTotal, retries;
+  PetscLogDouble  tStart, tFactor, tLineSearch;
+  HylcMicroStatus status;
+  PetscBool       statusSet;
+  PetscBool       factorFailed; /* the Newton matrix could not be factored after every alpha increase */
+  PetscBool       inject;       /* this solve raises the injected error (HYLC_INJECT_ERROR) */
+  PetscInt        injectAt;     /* the value of HYLC_INJECT_ERROR of this solve (for the message) */
+  PetscInt        nhist, caphist;
+  PetscReal      *hist;
+};
+
+/* the prefix of the options, for messages */
+static inline const char *HylcMicroPrefix_Private(HylcMicro M)
+{
+  return ((PetscObject)M)->prefix ? ((PetscObject)M)->prefix : "";
+}
+
+/* kkt.c */
+PETSC_INTERN PetscErrorCode HylcMicroSetUpKKT_Private(HylcMicro, PC);
+PETSC_INTERN PetscErrorCode HylcMicroResizeKKT_Private(HylcMicro, PetscInt);
+PETSC_INTERN PetscErrorCode HylcMicroDestroyKKT_Private(HylcMicro);
+/* snes.c */
+PETSC_INTERN PetscErrorCode HylcMicroSetUpSNES_Private(HylcMicro);
+PETSC_INTERN PetscErrorCode HylcMicroToY_Private(HylcMicro, Vec, PetscReal[]);
+PETSC_INTERN PetscErrorCode HylcMicroSafeEnergy_Private(HylcMicro, Vec, PetscReal *, PetscReal[4]);

@@ -1,0 +1,313 @@
+/* HylcMicro: the parameters, their setters and options (HylcMicroSetFromOptions reads options and builds
+   nothing), and the viewer. */
+#include <hylc/private/microimpl.h>
+
+/*@C
+  HylcMicroSetRegularization - Sets the regularization alpha = alpha^_i ||M g||_inf of the Newton matrix
+  K = M H M + alpha I: the schedule alpha^_i = start (end/start)^(min(i, its)/its) and the number of
+  alpha x 10 retries when K is indefinite. Not collective.
+
+  Input Parameters:
++ M       - the solver
+. start   - alpha^ at iteration 0 (default 5000; PETSC_DEFAULT keeps the value)
+. end     - alpha^ from iteration its on (default 5)
+. its     - iterations of the geometric decay (default 400)
+- retries - alpha x 10 retries for an indefinite K (default 12)
+
+  Options Database Keys:
++ -micro_alpha_start <5000> - start
+. -micro_alpha_end <5> - end
+. -micro_alpha_its <400> - its
+- -micro_alpha_retries <12> - retries
+
+  Level: intermediate
+
+.seealso: HylcMicroSetFromOptions(), HylcMicroSetIndefinite()
+@*/
+PetscErrorCode HylcMicroSetRegularization(HylcMicro M, PetscReal start, PetscReal end, PetscInt its, PetscInt retries)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
+  if (start != (PetscReal)PETSC_DEFAULT) M->par.alphaStart = start;
+  if (end != (PetscReal)PETSC_DEFAULT) M->par.alphaEnd = end;
+  if (its != PETSC_DEFAULT) M->par.alphaIts = its;
+  if (retries != PETSC_DEFAULT) M->par.maxRetries = retries;
+  PetscCheck(M->par.alphaStart > 0 && M->par.alphaEnd > 0 && M->par.alphaIts >= 1 && M->par.maxRetries >= 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%salpha_start %g, -%salpha_end %g must be positive, -%salpha_its %" PetscInt_FMT " at least 1 and -%salpha_retries %" PetscInt_FMT " non-negative", HylcMicroPrefix_Private(M), (double)M->par.alphaStart, HylcMicroPrefix_Private(M), (double)M->par.alphaEnd, HylcMicroPrefix_Private(M), M->par.alphaIts, HylcMicroPrefix_Private(M), M->par.maxRetries);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcMicroSetTwistScale - Sets mu, the scale of the twist unknowns (y = M y^, M = 1 per position, mu per
+  twist). Not collective.
+
+  Input Parameters:
++ M  - the solver
+- mu - the scale; 0 (default) means 1/r for the yarn radius r
+
+  Options Database Key:
+. -micro_twist_scale <0> - mu
+
+  Level: advanced
+
+.seealso: HylcMicroSetFromOptions()
+@*/
+PetscErrorCode HylcMicroSetTwistScale(HylcMicro M, PetscReal mu)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
+  PetscCheck(mu >= 0 && PetscIsNormalReal(mu + 1), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%stwist_scale %g: must be finite and non-negative (0: 1/r)", HylcMicroPrefix_Private(M), (double)mu);
+  M->par.twistScale = mu;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcMicroSetStepLimit - Sets the step limit d_max = (p0 + p1 clamp(lambda_min(I), 0, 1)) r of the largest
+  vertex displacement of a Newton step (S2.2). Not collective.
+
+  Input Parameters:
++ M  - the solver
+. p0 - default 0.05 (PETSC_DEFAULT keeps the value)
+- p1 - default 0.15
+
+  Options Database Keys:
++ -micro_step_p0 <0.05> - p0
+- -micro_step_p1 <0.15> - p1
+
+  Level: advanced
+
+.seealso: HylcMicroSetLineSearch()
+@*/
+PetscErrorCode HylcMicroSetStepLimit(HylcMicro M, PetscReal p0, PetscReal p1)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
+  if (p0 != (PetscReal)PETSC_DEFAULT) M->par.stepP0 = p0;
+  if (p1 != (PetscReal)PETSC_DEFAULT) M->par.stepP1 = p1;
+  PetscCheck(M->par.stepP0 > 0 && M->par.stepP1 >= 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%sstep_p0 %g must be positive, -%sstep_p1 %g non-negative", HylcMicroPrefix_Private(M), (double)M->par.stepP0, HylcMicroPrefix_Private(M), (double)M->par.stepP1);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcMicroSetLineSearch - Sets the backtracking line search: the step is multiplied by factor until the
+  energy strictly decreases, at most trials times; after maxStalls consecutive line searches without
+  decrease the solve stops (status stalled). Not collective.
+
+  Input Parameters:
++ M         - the solver
+. factor    - backtracking factor in (0, 1) (default 0.1; PETSC_DEFAULT keeps the value)
+. trials    - trials per iteration (default 11)
+- maxStalls - consecutive failed line searches before giving up (default 5)
+
+  Options Database Keys:
++ -micro_ls_factor <0.1> - factor
+. -micro_ls_max <11> - trials
+- -micro_max_stalls <5> - maxStalls
+
+  Level: advanced
+
+.seealso: HylcMicroSetStepLimit()
+@*/
+PetscErrorCode HylcMicroSetLineSearch(HylcMicro M, PetscReal factor, PetscInt trials, PetscInt maxStalls)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
+  if (factor != (PetscReal)PETSC_DEFAULT) M->par.lsFactor = factor;
+  if (trials != PETSC_DEFAULT) M->par.lsMax = trials;
+  if (maxStalls != PETSC_DEFAULT) M->par.maxStalls = maxStalls;
+  PetscCheck(M->par.lsFactor > 0 && M->par.lsFactor < 1 && M->par.lsMax >= 1 && M->par.maxStalls >= 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%sls_factor %g must be in (0, 1), -%sls_max %" PetscInt_FMT " and -%smax_stalls %" PetscInt_FMT " at least 1", HylcMicroPrefix_Private(M), (double)M->par.lsFactor, HylcMicroPrefix_Private(M), M->par.lsMax, HylcMicroPrefix_Private(M), M->par.maxStalls);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcMicroSetTolerances - Sets the convergence test and the wall-time cap: converged when the projected
+  gradient |z| < rtol |z0| or |z| < atol k_s, and the constraint residual |A y - dL| < ctol r. Not collective.
+
+  Input Parameters:
++ M       - the solver
+. rtol    - default 1e-5 (PETSC_DEFAULT keeps the value)
+. atol    - default 1e-10 (k_s = Es pi r^2, a force: for tiles already at rest)
+. ctol    - default 1e-4
+- maxTime - wall-time cap per solve in seconds (default 60; status time_cap)
+
+  Options Database Keys:
++ -micro_rtol <1e-5> - rtol
+. -micro_atol <1e-10> - atol
+. -micro_ctol <1e-4> - ctol
+- -micro_max_time <60> - maxTime
+
+  Level: beginner
+
+.seealso: HylcMicroSetFromOptions()
+@*/
+PetscErrorCode HylcMicroSetTolerances(HylcMicro M, PetscReal rtol, PetscReal atol, PetscReal ctol, PetscReal maxTime)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
+  if (rtol != (PetscReal)PETSC_DEFAULT) M->par.rtol = rtol;
+  if (atol != (PetscReal)PETSC_DEFAULT) M->par.atol = atol;
+  if (ctol != (PetscReal)PETSC_DEFAULT) M->par.ctol = ctol;
+  if (maxTime != (PetscReal)PETSC_DEFAULT) M->par.maxTime = maxTime;
+  PetscCheck(M->par.rtol > 0 && M->par.ctol > 0 && M->par.maxTime > 0 && M->par.atol >= 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%srtol %g, -%sctol %g, -%smax_time %g must be positive, -%satol %g non-negative", HylcMicroPrefix_Private(M), (double)M->par.rtol, HylcMicroPrefix_Private(M), (double)M->par.ctol, HylcMicroPrefix_Private(M), (double)M->par.maxTime, HylcMicroPrefix_Private(M), (double)M->par.atol);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcMicroSetIndefinite - Accept the factorization of an indefinite Newton matrix when the step is a
+  descent direction of positive curvature (true, default; the factorizations are signed, as LDL^T), or
+  increase alpha x 10 whenever K has a negative eigenvalue (false; counted with MatGetInertia() for the
+  solver types hylc, petsc and mumps; cholmod fails on any indefinite K). Not collective.
+
+  Input Parameters:
++ M   - the solver
+- flg - PETSC_TRUE to accept indefinite factorizations
+
+  Options Database Key:
+. -micro_factor_indefinite <true> - flg
+
+  Level: advanced
+
+.seealso: HylcMicroSetRegularization(), HylcMicroGetFactorPC()
+@*/
+PetscErrorCode HylcMicroSetIndefinite(HylcMicro M, PetscBool flg)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
+  M->par.indefinite = flg;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcMicroSetFromOptions - Reads the options of the Newton solver (prefix -micro_ by default) and of the
+  periodic tile (-periodic_*, -macro_*); it builds nothing. The SNES and the factorization PC read theirs
+  at HylcMicroSetUp() (prefixes micro_ and micro_factor_: -micro_snes_max_it (iteration cap, default
+  2000), -micro_snes_monitor, -micro_factor_pc_factor_mat_solver_type hylc|petsc|cholmod|mumps,
+  -micro_factor_pc_factor_mat_ordering_type, ...). Not collective.
+
+  Input Parameter:
+. M - the solver
+
+  Options Database Keys:
++ -micro_alpha_start, -micro_alpha_end, -micro_alpha_its, -micro_alpha_retries - HylcMicroSetRegularization()
+. -micro_twist_scale - HylcMicroSetTwistScale()
+. -micro_step_p0, -micro_step_p1 - HylcMicroSetStepLimit()
+. -micro_ls_factor, -micro_ls_max, -micro_max_stalls - HylcMicroSetLineSearch()
+. -micro_rtol, -micro_atol, -micro_ctol, -micro_max_time - HylcMicroSetTolerances()
+. -micro_factor_indefinite - HylcMicroSetIndefinite()
+- -micro_view - HylcMicroView() at set-up
+
+  Notes:
+  -micro_factor_type (hylc|petsc) was removed: it is an error naming its replacement,
+  -micro_factor_pc_factor_mat_solver_type (hylc, the default, or petsc, cholmod, mumps).
+
+  Level: beginner
+
+.seealso: HylcMicroSetUp(), HylcMicroView()
+@*/
+PetscErrorCode HylcMicroSetFromOptions(HylcMicro M)
+{
+  HylcMicroParams p = M->par;
+  PetscBool       flg;
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
+  PetscCall(PetscOptionsHasName(((PetscObject)M)->options, ((PetscObject)M)->prefix, "-factor_type", &flg));
+  PetscCheck(!flg, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%sfactor_type was removed: choose the factorization with -%sfactor_pc_factor_mat_solver_type hylc|petsc|cholmod|mumps (hylc is the default; petsc is the former -%sfactor_type petsc)", HylcMicroPrefix_Private(M), HylcMicroPrefix_Private(M), HylcMicroPrefix_Private(M));
+  PetscObjectOptionsBegin((PetscObject)M);
+  PetscCall(PetscOptionsReal("-alpha_start", "Regularization schedule: alpha^ at iteration 0", "HylcMicroSetRegularization", p.alphaStart, &p.alphaStart, NULL));
+  PetscCall(PetscOptionsReal("-alpha_end", "Regularization schedule: alpha^ from iteration alpha_its on", "HylcMicroSetRegularization", p.alphaEnd, &p.alphaEnd, NULL));
+  PetscCall(PetscOptionsInt("-alpha_its", "Regularization schedule: iterations of the geometric decay", "HylcMicroSetRegularization", p.alphaIts, &p.alphaIts, NULL));
+  PetscCall(PetscOptionsInt("-alpha_retries", "Retries with alpha x 10 when the Newton matrix is indefinite", "HylcMicroSetRegularization", p.maxRetries, &p.maxRetries, NULL));
+  PetscCall(PetscOptionsReal("-twist_scale", "Scale mu of the twist unknowns, 0 = 1/r", "HylcMicroSetTwistScale", p.twistScale, &p.twistScale, NULL));
+  PetscCall(PetscOptionsReal("-step_p0", "Step limit d_max = (p0 + p1 clamp(lambda_min(I),0,1)) r: p0", "HylcMicroSetStepLimit", p.stepP0, &p.stepP0, NULL));
+  PetscCall(PetscOptionsReal("-step_p1", "Step limit: p1", "HylcMicroSetStepLimit", p.stepP1, &p.stepP1, NULL));
+  PetscCall(PetscOptionsReal("-ls_factor", "Backtracking factor of the line search", "HylcMicroSetLineSearch", p.lsFactor, &p.lsFactor, NULL));
+  PetscCall(PetscOptionsInt("-ls_max", "Line-search trials per iteration", "HylcMicroSetLineSearch", p.lsMax, &p.lsMax, NULL));
+  PetscCall(PetscOptionsInt("-max_stalls", "Consecutive line searches without decrease before the solve stops, status stalled", "HylcMicroSetLineSearch", p.maxStalls, &p.maxStalls, NULL));
+  PetscCall(PetscOptionsReal("-rtol", "Convergence: projected gradient |z| < rtol |z0|", "HylcMicroSetTolerances", p.rtol, &p.rtol, NULL));
+  PetscCall(PetscOptionsReal("-atol", "Convergence also when |z| < atol k_s (k_s = Es pi r^2, a force): for tiles already at rest", "HylcMicroSetTolerances", p.atol, &p.atol, NULL));
+  PetscCall(PetscOptionsReal("-ctol", "Convergence: constraint residual |A y - dL| < ctol r", "HylcMicroSetTolerances", p.ctol, &p.ctol, NULL));
+  PetscCall(PetscOptionsReal("-max_time", "Wall-time cap per solve (s); status time_cap", "HylcMicroSetTolerances", p.maxTime, &p.maxTime, NULL));
+  PetscCall(PetscOptionsBool("-factor_indefinite", "Accept the factorization of an indefinite Newton matrix if the step descends with positive curvature; false: alpha x 10 at any negative eigenvalue", "HylcMicroSetIndefinite", p.indefinite, &p.indefinite, NULL));
+  PetscCall(PetscOptionsName("-view", "Print the solver at set-up", "HylcMicroView", &flg));
+  PetscOptionsEnd();
+  PetscCall(HylcMicroSetRegularization(M, p.alphaStart, p.alphaEnd, p.alphaIts, p.maxRetries));
+  PetscCall(HylcMicroSetTwistScale(M, p.twistScale));
+  PetscCall(HylcMicroSetStepLimit(M, p.stepP0, p.stepP1));
+  PetscCall(HylcMicroSetLineSearch(M, p.lsFactor, p.lsMax, p.maxStalls));
+  PetscCall(HylcMicroSetTolerances(M, p.rtol, p.atol, p.ctol, p.maxTime));
+  PetscCall(HylcMicroSetIndefinite(M, p.indefinite));
+  if (M->P) PetscCall(HylcPeriodicSetFromOptions(M->P));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcMicroView - Prints the solver: its parameters, the sizes of the tile's system and, once set up, the
+  factorization of the Newton matrix. Not collective.
+
+  Input Parameters:
++ M      - the solver
+- viewer - an ASCII viewer (NULL: stdout of PETSC_COMM_SELF)
+
+  Options Database Key:
+. -micro_view - view at set-up (HylcMicroSetUp(), or the first HylcMicroSolve())
+
+  Level: beginner
+
+.seealso: HylcMicroViewFromOptions(), HylcMicroResultView()
+@*/
+PetscErrorCode HylcMicroView(HylcMicro M, PetscViewer viewer)
+{
+  const HylcMicroParams *p = &M->par;
+  PetscBool              ascii;
+  char                   buf[512];
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
+  if (!viewer) PetscCall(PetscViewerASCIIGetStdout(PETSC_COMM_SELF, &viewer));
+  PetscCall(PetscObjectTypeCompare((PetscObject)viewer, PETSCVIEWERASCII, &ascii));
+  if (!ascii) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscObjectPrintClassNamePrefixType((PetscObject)M, viewer));
+  PetscCall(PetscViewerASCIIPushTab(viewer));
+  /* C formatting: PETSc's printf appends '.' to integral %g values */
+  snprintf(buf, sizeof(buf), "regularization: alpha^ %g -> %g over %d iterations, up to %d retries x 10; factorization of an indefinite K %s\n", (double)p->alphaStart, (double)p->alphaEnd, (int)p->alphaIts, (int)p->maxRetries, p->indefinite ? "accepted" : "refused");
+  PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
+  snprintf(buf, sizeof(buf), "twist scale mu: %s; step limit (%g + %g clamp(lambda_min, 0, 1)) r; line search x %g, %d trials, stop after %d stalls\n", p->twistScale > 0 ? "set" : "1/r", (double)p->stepP0, (double)p->stepP1, (double)p->lsFactor, (int)p->lsMax, (int)p->maxStalls);
+  PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
+  snprintf(buf, sizeof(buf), "convergence: |z| < %g |z0| or |z| < %g k_s, |A y - dL| < %g r; wall-time cap %g s\n", (double)p->rtol, (double)p->atol, (double)p->ctol, (double)p->maxTime);
+  PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
+  if (!M->P)
+    PetscCall(PetscViewerASCIIPrintf(viewer, "no pattern set\n"));
+  else if (!M->snes)
+    PetscCall(PetscViewerASCIIPrintf(viewer, "pattern set, not set up\n"));
+  else
+    PetscCall(PetscViewerASCIIPrintf(viewer, "unknowns: %" PetscInt_FMT " (%" PetscInt_FMT " vertices), constraint rows: %" PetscInt_FMT "\n", M->ny, M->ny / 4, M->m));
+  if (M->inner) {
+    MatSolverType type;
+    PetscCall(PCFactorGetMatSolverType(M->inner, &type));
+    PetscCall(PetscViewerASCIIPrintf(viewer, "factorization of K: PCCHOLESKY, solver type %s (-%sfactor_pc_factor_mat_solver_type)\n", type ? type : "(default)", HylcMicroPrefix_Private(M)));
+    if (M->snes) PetscCall(PCView(M->inner, viewer));
+  }
+  PetscCall(PetscViewerASCIIPopTab(viewer));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcMicroViewFromOptions - Views the solver if the option name (e.g. "-view", read with the solver's
+  prefix: -micro_view) is set. Not collective.
+
+  Input Parameters:
++ M    - the solver
+. obj  - an optional object whose prefix is used instead
+- name - the option name
+
+  Level: intermediate
+
+.seealso: HylcMicroView()
+@*/
+PetscErrorCode HylcMicroViewFromOptions(HylcMicro M, PetscObject obj, const char name[])
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
+  PetscCall(PetscObjectViewFromOptions((PetscObject)M, obj, name));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

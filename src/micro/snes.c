@@ -1,0 +1,280 @@
+/* HylcMicro: the SNES callbacks of the constrained, regularized Newton method (include/hylc/micro.h):
+   the objective (energy), the residual M g_y, the regularized Jacobian K = M H M + alpha I, the line search
+   (step limit, then backtracking to a strict decrease) and the convergence test on the projected gradient
+   and the constraint residual; and the set-up of the SNES with its KSP and the KKT preconditioner. */
+#include <hylc/private/microimpl.h>
+#include <petsctime.h>
+
+/* y = M y^ */
+PetscErrorCode HylcMicroToY_Private(HylcMicro M, Vec X, PetscReal y[])
+{
+  const PetscScalar *x;
+
+  PetscFunctionBegin;
+  PetscCall(VecGetArrayRead(X, &x));
+  for (PetscInt i = 0; i < M->ny; i++) y[i] = (i % 4 == 3) ? M->mu * PetscRealPart(x[i]) : PetscRealPart(x[i]);
+  PetscCall(VecRestoreArrayRead(X, &x));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* energy at X: a degenerate state (zero-length or folded edge) or a non-finite energy gives +inf (a result
+   of the trial step, not an error; every other failure is an error) */
+PetscErrorCode HylcMicroSafeEnergy_Private(HylcMicro M, Vec X, PetscReal *E, PetscReal parts[4])
+{
+  PetscReal e[4] = {0, 0, 0, 0};
+  PetscBool finite;
+
+  PetscFunctionBegin;
+  PetscCall(HylcMicroToY_Private(M, X, M->yw));
+  PetscCall(HylcPeriodicSetState(M->P, M->yw));
+  PetscCall(HylcPeriodicEvaluateFinite(M->P, HYLC_TERM_ALL, e, NULL, NULL, &finite));
+  *E = finite ? e[0] + e[1] + e[2] + e[3] : PETSC_INFINITY;
+  if (!PetscIsNormalReal(*E) && *E != 0) *E = PETSC_INFINITY;
+  if (parts)
+    for (int k = 0; k < 4; k++) parts[k] = e[k];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode FormObjective(SNES snes, Vec X, PetscReal *E, void *ctx)
+{
+  PetscFunctionBegin;
+  (void)snes;
+  PetscCall(HylcMicroSafeEnergy_Private((HylcMicro)ctx, X, E, NULL));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* F = M g_y at X; also the energy and the unscaled Hessian (into K) for the Jacobian that follows */
+static PetscErrorCode FormFunction(SNES snes, Vec X, Vec F, void *ctx)
+{
+  HylcMicro    M = (HylcMicro)ctx;
+  PetscScalar *f;
+  PetscBool    finite;
+
+  PetscFunctionBegin;
+  (void)snes;
+  PetscCheck(!M->inject, PETSC_COMM_SELF, PETSC_ERR_LIB, "injected error (HYLC_INJECT_ERROR=%" PetscInt_FMT ")", M->injectAt);
+  PetscCall(HylcMicroToY_Private(M, X, M->yw));
+  PetscCall(HylcPeriodicSetState(M->P, M->yw));
+  PetscCall(HylcPeriodicEvaluateFinite(M->P, HYLC_TERM_ALL, M->parts, M->gw, M->K, &finite));
+  M->haveH = finite;
+  PetscCall(VecGetArray(F, &f));
+  for (PetscInt i = 0; i < M->ny; i++) f[i] = !finite ? PETSC_INFINITY : ((i % 4 == 3) ? M->mu * M->gw[i] : M->gw[i]);
+  PetscCall(VecRestoreArray(F, &f));
+  M->E0 = !finite ? PETSC_INFINITY : M->parts[0] + M->parts[1] + M->parts[2] + M->parts[3];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* K = M H M + alpha I with alpha = alpha^_i ||M g||_inf; the constraint residual c = A y - dL */
+static PetscErrorCode FormJacobian(SNES snes, Vec X, Mat J, Mat Jpre, void *ctx)
+{
+  HylcMicro M = (HylcMicro)ctx;
+  PetscInt  it;
+  PetscReal gmax = 0;
+
+  PetscFunctionBegin;
+  (void)J;
+  (void)Jpre;
+  PetscCall(SNESGetIterationNumber(snes, &it));
+  PetscCall(HylcMicroToY_Private(M, X, M->yw));
+  if (!M->haveH) {
+    PetscCall(HylcPeriodicSetState(M->P, M->yw));
+    PetscCall(HylcPeriodicEvaluate(M->P, HYLC_TERM_ALL, M->parts, M->gw, M->K));
+  }
+  M->haveH = PETSC_FALSE;
+  for (PetscInt i = 0; i < M->ny; i++) gmax = PetscMax(gmax, PetscAbsReal((i % 4 == 3) ? M->mu * M->gw[i] : M->gw[i]));
+  const PetscReal t = (PetscReal)PetscMin(it, M->par.alphaIts) / M->par.alphaIts;
+  M->alpha          = M->par.alphaStart * PetscPowReal(M->par.alphaEnd / M->par.alphaStart, t) * gmax;
+  if (!(M->alpha > 0)) M->alpha = PETSC_SMALL;
+  PetscCall(MatDiagonalScale(M->K, M->mvec, M->mvec));
+  PetscCall(MatShift(M->K, M->alpha));
+  PetscCall(MatSetOption(M->K, MAT_SYMMETRIC, PETSC_TRUE));
+  PetscCall(HylcPeriodicConstraintResidual(M->P, M->yw, M->c));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* the step limit, then backtracking until the energy strictly decreases; frames transported on acceptance */
+static PetscErrorCode LineSearch(SNESLineSearch ls, void *ctx)
+{
+  HylcMicro              M = (HylcMicro)ctx;
+  Vec                    X, F, Y, W, G;
+  PetscReal              dmax, d = 0, E, lambda = 1, ynorm, xnorm, fnorm;
+  const PetscScalar     *y;
+  SNES                   snes;
+  PetscLogDouble         t0, t1;
+  const HylcMacroStrain *ms;
+  PetscBool              accepted = PETSC_FALSE;
+
+  PetscFunctionBegin;
+  PetscCall(PetscTime(&t0));
+  PetscCall(PetscLogEventBegin(HYLC_MicroLineSearch, M, 0, 0, 0));
+  PetscCall(SNESLineSearchGetSNES(ls, &snes));
+  PetscCall(SNESLineSearchGetVecs(ls, &X, &F, &Y, &W, &G));
+  if (M->factorFailed) { /* no Newton step: the iterate stays and the solve ends */
+    PetscReal knorm;
+    PetscCall(MatNorm(M->K, NORM_FROBENIUS, &knorm));
+    M->status    = PetscIsInfOrNanReal(knorm) ? HYLC_MICRO_NONFINITE : HYLC_MICRO_STALLED;
+    M->statusSet = PETSC_TRUE;
+    PetscCall(VecNorm(X, NORM_2, &xnorm));
+    PetscCall(VecNorm(F, NORM_2, &fnorm));
+    PetscCall(SNESLineSearchSetNorms(ls, xnorm, fnorm, 0));
+    PetscCall(SNESLineSearchSetLambda(ls, 0));
+    PetscCall(PetscLogEventEnd(HYLC_MicroLineSearch, M, 0, 0, 0));
+    PetscCall(PetscTime(&t1));
+    M->tLineSearch += t1 - t0;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCall(HylcPeriodicGetMacroStrain(M->P, &ms));
+  dmax = (M->par.stepP0 + M->par.stepP1 * PetscClipInterval(ms->lambdaMin, 0, 1)) * M->r;
+  /* the largest vertex displacement of the linear step (ghosts are rotated copies: the same lengths) */
+  PetscCall(VecGetArrayRead(Y, &y));
+  for (PetscInt o = 0; o < M->ny / 4; o++) d = PetscMax(d, PetscSqrtReal(PetscSqr(PetscRealPart(y[4 * o])) + PetscSqr(PetscRealPart(y[4 * o + 1])) + PetscSqr(PetscRealPart(y[4 * o + 2]))));
+  PetscCall(VecRestoreArrayRead(Y, &y));
+  if (d > dmax) PetscCall(VecScale(Y, dmax / d));
+  for (PetscInt i = 0; i < M->par.lsMax; i++, lambda *= M->par.lsFactor) {
+    PetscCall(VecWAXPY(W, -lambda, Y, X));
+    PetscCall(HylcMicroSafeEnergy_Private(M, W, &E, NULL));
+    if (E < M->E0) {
+      accepted = PETSC_TRUE;
+      break;
+    }
+  }
+  if (accepted) {
+    PetscCall(VecCopy(W, X));
+    PetscCall(SNESComputeFunction(snes, X, F)); /* the state, E0, the gradient and the Hessian */
+    PetscCall(HylcPeriodicUpdateFrames(M->P));
+    M->stalls = 0;
+    if (M->nhist == M->caphist) {
+      PetscReal *h;
+      M->caphist = M->caphist ? 2 * M->caphist : 256;
+      PetscCall(PetscMalloc1(M->caphist, &h));
+      PetscCall(PetscArraycpy(h, M->hist, M->nhist));
+      PetscCall(PetscFree(M->hist));
+      M->hist = h;
+    }
+    M->hist[M->nhist++] = M->E0;
+  } else {
+    /* keep the iterate (alpha decays with the iteration count); the cached Hessian stays valid */
+    M->stalls++;
+    M->stallsTotal++;
+    PetscCall(HylcMicroToY_Private(M, X, M->yw));
+    PetscCall(HylcPeriodicSetState(M->P, M->yw));
+    PetscCall(HylcPeriodicEvaluate(M->P, HYLC_TERM_ALL, M->parts, M->gw, M->K));
+    M->haveH = PETSC_TRUE;
+    if (M->stalls >= M->par.maxStalls) {
+      M->status    = HYLC_MICRO_STALLED;
+      M->statusSet = PETSC_TRUE;
+    }
+  }
+  PetscCall(VecNorm(X, NORM_2, &xnorm));
+  PetscCall(VecNorm(F, NORM_2, &fnorm));
+  PetscCall(VecNorm(Y, NORM_2, &ynorm));
+  PetscCall(SNESLineSearchSetNorms(ls, xnorm, fnorm, accepted ? lambda * ynorm : 0));
+  PetscCall(SNESLineSearchSetLambda(ls, accepted ? lambda : 0));
+  PetscCall(PetscLogEventEnd(HYLC_MicroLineSearch, M, 0, 0, 0));
+  PetscCall(PetscTime(&t1));
+  M->tLineSearch += t1 - t0;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* S23-S25: the projected gradient z = g - A^T (A A^T)^-1 A g (unscaled) and the constraint residual */
+static PetscErrorCode Converged(SNES snes, PetscInt it, PetscReal xnorm, PetscReal gnorm, PetscReal f, SNESConvergedReason *reason, void *ctx)
+{
+  HylcMicro      M = (HylcMicro)ctx;
+  const PetscInt n = M->ny, m = M->m;
+  PetscReal      z2 = 0, c2 = 0;
+  PetscLogDouble now;
+  PetscInt       maxit;
+  Vec            X;
+
+  PetscFunctionBegin;
+  (void)xnorm;
+  (void)gnorm;
+  (void)f;
+  *reason = SNES_CONVERGED_ITERATING;
+  if (M->statusSet) { /* stalled line search */
+    *reason = SNES_DIVERGED_LINE_SEARCH;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  if (!PetscIsNormalReal(M->E0) && M->E0 != 0) {
+    M->status    = HYLC_MICRO_NONFINITE;
+    M->statusSet = PETSC_TRUE;
+    *reason      = SNES_DIVERGED_FNORM_NAN;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  for (PetscInt i = 0; i < m; i++) {
+    PetscReal s = 0;
+    for (PetscInt k = 0; k < n; k++) s += M->A[i * n + k] * M->gw[k];
+    M->tmp[i] = s;
+  }
+  for (PetscInt i = 0; i < m; i++) {
+    M->wl[i] = 0;
+    for (PetscInt j = 0; j < m; j++) M->wl[i] += M->AAtinv[i * m + j] * M->tmp[j];
+  }
+  for (PetscInt k = 0; k < n; k++) {
+    PetscReal zk = M->gw[k];
+    for (PetscInt i = 0; i < m; i++) zk -= M->A[i * n + k] * M->wl[i];
+    z2 += zk * zk;
+  }
+  PetscCall(SNESGetSolution(snes, &X));
+  PetscCall(HylcMicroToY_Private(M, X, M->yw));
+  PetscCall(HylcPeriodicConstraintResidual(M->P, M->yw, M->c));
+  for (PetscInt i = 0; i < m; i++) c2 += M->c[i] * M->c[i];
+  const PetscReal zn = PetscSqrtReal(z2), cn = PetscSqrtReal(c2);
+  if (it == 0) M->z0 = zn;
+  M->lastz = M->z0 > 0 ? zn / M->z0 : 0;
+  M->lastc = cn / M->r;
+  if ((zn <= M->par.rtol * M->z0 || zn <= M->par.atol * M->ks) && cn < M->par.ctol * M->r) {
+    *reason = SNES_CONVERGED_FNORM_RELATIVE;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCall(PetscTime(&now));
+  if (now - M->tStart > M->par.maxTime) {
+    M->status    = HYLC_MICRO_MAX_TIME;
+    M->statusSet = PETSC_TRUE;
+    *reason      = SNES_DIVERGED_FUNCTION_COUNT; /* the wall-time budget */
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCall(SNESGetTolerances(snes, NULL, NULL, NULL, &maxit, NULL));
+  if (it >= maxit) *reason = SNES_DIVERGED_MAX_IT;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* the SNES, its KSP (preonly + the KKT PCSHELL of kkt.c) and the matrices and work arrays; once per pattern */
+PetscErrorCode HylcMicroSetUpSNES_Private(HylcMicro M)
+{
+  KSP            ksp;
+  PC             pc;
+  SNESLineSearch ls;
+  const char    *prefix;
+
+  PetscFunctionBegin;
+  if (M->snes) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscLogEventBegin(HYLC_MicroSetUp, M, 0, 0, 0));
+  PetscCall(HylcPeriodicGetSizes(M->P, &M->ny, NULL, NULL, &M->m));
+  PetscCall(HylcPeriodicCreateMatrix(M->P, &M->K));
+  PetscCall(MatSetBlockSize(M->K, 4)); /* 4 x 4 vertex blocks: the block size of the hylc factorization */
+  PetscCall(MatCreateVecs(M->K, &M->X, NULL));
+  PetscCall(VecDuplicate(M->X, &M->mvec));
+  PetscCall(PetscMalloc2(M->ny, &M->yw, M->ny, &M->gw));
+  PetscCall(HylcMicroResizeKKT_Private(M, M->m));
+  PetscCall(PetscObjectGetOptionsPrefix((PetscObject)M, &prefix));
+  PetscCall(SNESCreate(PETSC_COMM_SELF, &M->snes));
+  PetscCall(SNESSetOptionsPrefix(M->snes, prefix));
+  PetscCall(SNESSetType(M->snes, SNESNEWTONLS));
+  PetscCall(SNESSetObjective(M->snes, FormObjective, M));
+  PetscCall(SNESSetFunction(M->snes, NULL, FormFunction, M));
+  PetscCall(SNESSetJacobian(M->snes, M->K, M->K, FormJacobian, M));
+  PetscCall(SNESSetConvergenceTest(M->snes, Converged, M, NULL));
+  PetscCall(SNESSetTolerances(M->snes, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, 2000, -1));
+  PetscCall(SNESGetLineSearch(M->snes, &ls));
+  PetscCall(SNESLineSearchSetType(ls, SNESLINESEARCHSHELL));
+  PetscCall(SNESLineSearchShellSetUserFunc(ls, LineSearch, M));
+  PetscCall(SNESGetKSP(M->snes, &ksp));
+  PetscCall(KSPSetType(ksp, KSPPREONLY));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(HylcMicroSetUpKKT_Private(M, pc));
+  PetscCall(SNESSetFromOptions(M->snes));
+  PetscCall(PetscLogEventEnd(HYLC_MicroSetUp, M, 0, 0, 0));
+  PetscCall(HylcMicroViewFromOptions(M, NULL, "-view"));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
