@@ -59,6 +59,7 @@ PETSC_EXTERN PetscErrorCode HylcMicroSetLineSearch(HylcMicro, PetscReal factor, 
 PETSC_EXTERN PetscErrorCode HylcMicroSetTolerances(HylcMicro, PetscReal rtol, PetscReal atol, PetscReal ctol, PetscReal maxTime);
 PETSC_EXTERN PetscErrorCode HylcMicroSetIndefinite(HylcMicro, PetscBool);
 PETSC_EXTERN PetscErrorCode HylcMicroSetFromOptions(HylcMicro);
+PETSC_EXTERN PetscErrorCode HylcMicroGetSNES(HylcMicro, SNES *);
 PETSC_EXTERN PetscErrorCode HylcMicroGetFactorPC(HylcMicro, PC *);
 PETSC_EXTERN PetscErrorCode HylcMicroView(HylcMicro, PetscViewer);
 PETSC_EXTERN PetscErrorCode HylcMicroViewFromOptions(HylcMicro, PetscObject, const char[]);

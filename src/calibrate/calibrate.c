@@ -223,8 +223,7 @@ PetscErrorCode HylcCalibrateSetUpSolver_Private(HylcCalibrate C)
   C->plan.n1    = (int)C->n1;
   C->plan.n2    = (int)C->n2;
   C->plan.terms = (int)C->terms;
-  PetscCall(HylcMicroSetPattern(micro, pat, &C->model));
-  PetscCall(HylcMicroSetFromOptions(micro));
+  PetscCall(HylcMicroSetPattern(micro, pat, &C->model)); /* the tile keeps the options read by HylcCalibrateSetFromOptions() */
   PetscCall(HylcMicroSetUp(micro));
   C->solverSetUp = PETSC_TRUE;
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -394,10 +394,11 @@ static PetscErrorCode ParseParamList(MPI_Comm comm, const char opt[], const char
 /*@C
   HylcCalibrateSetFromOptions - Reads the calibration's options (docs/calibrate.md has the table) and those
   of its pattern (-pattern_*), yarn model (-yarn_*, the initial values), reference state (-reference_*),
-  solver (-micro_*) and plan ranges (-sampler_family, -sampler_range_*). It only reads options and checks
-  names and values: the pattern is loaded or generated, the initial values resolved and checked against
-  the bounds, and the solver set up by HylcCalibrateSetUp(). (With -help it also sets them up, so that
-  -help lists the solver's options, which exist only then.)
+  solver (HylcMicroSetFromOptions() of HylcCalibrateGetMicro(): -micro_*, with its tile's -periodic_*,
+  -macro_* and its SNES's and factorization's -micro_snes_*, -micro_factor_*) and plan ranges
+  (-sampler_family, -sampler_range_*). It only reads options and checks names and values, also with
+  -help: the pattern is loaded or generated, the initial values resolved and checked against the bounds,
+  and the solver set up by HylcCalibrateSetUp().
 
   Collective
 
@@ -431,7 +432,7 @@ PetscErrorCode HylcCalibrateSetFromOptions(HylcCalibrate C)
 {
   MPI_Comm       comm        = PetscObjectComm((PetscObject)C);
   char           params[256] = "", tie[256] = "G", terms[512] = "", weights[1024] = "", target[PETSC_MAX_PATH_LEN], output[PETSC_MAX_PATH_LEN], dump[PETSC_MAX_PATH_LEN], refout[PETSC_MAX_PATH_LEN];
-  PetscBool      set, pset, tset, ttset, help;
+  PetscBool      set, pset, tset, ttset;
   PetscEnum      tt = (PetscEnum)C->targetType, rm = (PetscEnum)C->refmode;
   PetscInt       n1 = C->n1, n2 = C->n2, stride = C->stride, maxSamples = C->maxSamples, maxIt = C->maxIt, maxReject = C->maxReject;
   PetscReal      wzero = C->wzero, lambda0 = C->lambda0, xtol = C->xtol, ftol = C->ftol, fatol = C->fatol, flatTol = C->flatTol;
@@ -557,7 +558,5 @@ PetscErrorCode HylcCalibrateSetFromOptions(HylcCalibrate C)
   PetscCall(HylcCalibrateSetLevenbergMarquardt(C, maxReject, lambda0));
   PetscCall(HylcCalibrateSetTolerances(C, xtol, ftol, fatol, flatTol));
   PetscCall(HylcCalibrateResetSamples_Private(C));
-  PetscCall(PetscOptionsHasHelp(NULL, &help));
-  if (help) PetscCall(HylcCalibrateSetUpSolver_Private(C));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -202,19 +202,29 @@ static PetscErrorCode KKTApply(PC pc, Vec b, Vec x)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* the inner PCCHOLESKY (created by HylcMicroGetFactorPC) and the KKT PCSHELL pc of the SNES's KSP */
+/* the KKT PCSHELL pc of the SNES's KSP around the inner PCCHOLESKY (HylcMicroGetFactorPC()): set when the
+   SNES is created, before any option is read */
+PetscErrorCode HylcMicroSetKKT_Private(HylcMicro M, PC pc)
+{
+  PC inner;
+
+  PetscFunctionBegin;
+  PetscCall(HylcMicroGetFactorPC(M, &inner));
+  PetscCall(PCSetType(pc, PCSHELL));
+  PetscCall(PCShellSetContext(pc, M));
+  PetscCall(PCShellSetSetUp(pc, KKTSetUp));
+  PetscCall(PCShellSetApply(pc, KKTApply));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* at set-up, once the options are read: the factorization's solver type (CHOLMOD's errors are handled
+   apart) and the name of the KKT shell, which shows it */
 PetscErrorCode HylcMicroSetUpKKT_Private(HylcMicro M, PC pc)
 {
   MatSolverType type;
   char          name[256];
 
   PetscFunctionBegin;
-  PetscCall(HylcMicroGetFactorPC(M, &M->inner));
-  PetscCall(PCSetFromOptions(M->inner));
-  PetscCall(PCSetType(pc, PCSHELL));
-  PetscCall(PCShellSetContext(pc, M));
-  PetscCall(PCShellSetSetUp(pc, KKTSetUp));
-  PetscCall(PCShellSetApply(pc, KKTApply));
   PetscCall(PCFactorGetMatSolverType(M->inner, &type));
   PetscCall(PetscStrcmp(type, MATSOLVERCHOLMOD, &M->cholmod));
   PetscCall(PetscSNPrintf(name, sizeof(name), "hylc KKT (S22): Schur complement around PCCHOLESKY, solver type %s (-%sfactor_pc_factor_mat_solver_type)", type ? type : "default", ((PetscObject)M)->prefix ? ((PetscObject)M)->prefix : ""));

@@ -33,7 +33,9 @@ static void ParamsDefault(HylcMicroParams *p)
 
 /*@C
   HylcMicroCreate - Creates a microscale solver with the default parameters and the options prefix
-  "micro_". Not collective (each rank solves its samples alone; use PETSC_COMM_SELF).
+  "micro_". Its sub-objects, the periodic tile (HylcMicroGetPeriodic()), the SNES (HylcMicroGetSNES())
+  and the factorization PC (HylcMicroGetFactorPC()), are created on first use. Not collective (each rank
+  solves its samples alone; use PETSC_COMM_SELF).
 
   Input Parameter:
 . comm - the communicator (PETSC_COMM_SELF)
@@ -60,11 +62,12 @@ PetscErrorCode HylcMicroCreate(MPI_Comm comm, HylcMicro *micro)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* the solver built for one pattern (the inner factorization PC stays, reset) */
+/* the solver built for one pattern (the SNES and the inner factorization PC stay, reset) */
 static PetscErrorCode FreeSolver(HylcMicro M)
 {
   PetscFunctionBegin;
-  PetscCall(SNESDestroy(&M->snes));
+  if (M->setupcalled) PetscCall(SNESReset(M->snes));
+  M->setupcalled = PETSC_FALSE;
   PetscCall(MatDestroy(&M->K));
   PetscCall(VecDestroy(&M->X));
   PetscCall(VecDestroy(&M->mvec));
@@ -94,6 +97,7 @@ PetscErrorCode HylcMicroDestroy(HylcMicro *micro)
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscCall(FreeSolver(*micro));
+  PetscCall(SNESDestroy(&(*micro)->snes));
   PetscCall(PCDestroy(&(*micro)->inner));
   PetscCall(HylcPeriodicDestroy(&(*micro)->P));
   PetscCall(HylcPatternDestroy(&(*micro)->pat));
@@ -104,7 +108,8 @@ PetscErrorCode HylcMicroDestroy(HylcMicro *micro)
 
 /*@C
   HylcMicroSetOptionsPrefix - Sets the prefix of the solver's options (default "micro_"); its SNES has
-  the same prefix and the factorization PC the prefix followed by "factor_". Not collective.
+  the same prefix and the factorization PC the prefix followed by "factor_" (the periodic tile keeps its
+  own: -periodic_*, -macro_*). Not collective.
 
   Input Parameters:
 + M      - the solver
@@ -161,8 +166,42 @@ PetscErrorCode HylcMicroGetFactorPC(HylcMicro M, PC *pc)
 }
 
 /*@C
-  HylcMicroSetPattern - Sets the tile to solve: a pattern and the yarn model. Builds the periodic tile
-  (HylcPeriodicCreate); the Newton solver is rebuilt at the next set-up. Not collective.
+  HylcMicroGetSNES - Gets the SNES of the Newton method, creating it on first use with the method's
+  defaults: type newtonls, the energy as objective, the residual M g_y, the projected-gradient convergence
+  test, at most 2000 iterations, the shell line search (step limit and backtracking), a KSPPREONLY whose PC
+  is the KKT PCSHELL around the factorization PC (HylcMicroGetFactorPC()). Its options prefix is the
+  solver's (-micro_snes_*, -micro_ksp_*); HylcMicroSetFromOptions() calls SNESSetFromOptions() on it, so
+  options override these defaults. The Jacobian and the vectors are given at HylcMicroSetUp(); a new
+  pattern resets it (SNESReset()). Not collective.
+
+  Input Parameter:
+. M - the solver
+
+  Output Parameter:
+. snes - the SNES (owned by M)
+
+  Notes:
+  Replacing the objective, function, convergence test, line search or preconditioner breaks the method;
+  tolerances, monitors and viewers are the SNES's to change.
+
+  Level: advanced
+
+.seealso: HylcMicroSetFromOptions(), HylcMicroGetFactorPC(), HylcMicroSetUp()
+@*/
+PetscErrorCode HylcMicroGetSNES(HylcMicro M, SNES *snes)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
+  PetscValidPointer(snes, 2);
+  if (!M->snes) PetscCall(HylcMicroCreateSNES_Private(M));
+  *snes = M->snes;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcMicroSetPattern - Sets the tile to solve: a pattern and the yarn model, given to the solver's
+  periodic tile (HylcMicroGetPeriodic(), created on first use and kept with its options); the Newton
+  solver's matrices are rebuilt at the next set-up. Not collective.
 
   Input Parameters:
 + M     - the solver
@@ -175,23 +214,26 @@ PetscErrorCode HylcMicroGetFactorPC(HylcMicro M, PC *pc)
 @*/
 PetscErrorCode HylcMicroSetPattern(HylcMicro M, HylcPattern pat, const HylcYarnModel *model)
 {
+  HylcPeriodic P;
+
   PetscFunctionBegin;
   PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
+  PetscValidHeaderSpecific(pat, HYLC_PATTERN_CLASSID, 2);
+  PetscValidPointer(model, 3);
   PetscCall(PetscObjectReference((PetscObject)pat));
   PetscCall(HylcPatternDestroy(&M->pat));
-  PetscCall(HylcPeriodicDestroy(&M->P));
   PetscCall(FreeSolver(M));
   M->pat   = pat;
   M->model = *model;
-  PetscCall(HylcPeriodicCreate(PETSC_COMM_SELF, &M->P));
-  PetscCall(HylcPeriodicSetPattern(M->P, pat, model));
+  PetscCall(HylcMicroGetPeriodic(M, &P));
+  PetscCall(HylcPeriodicSetPattern(P, pat, model));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /*@C
-  HylcMicroSetUp - Builds the SNES, its KSP, the KKT preconditioner and the factorization (reading their
-  options) ahead of the first solve, so that every option has been read once this returns; the tile is
-  set up at zero strain. Views the solver with -micro_view. Not collective.
+  HylcMicroSetUp - Builds the Newton matrix, the vectors and the KKT buffers of the pattern and gives them
+  to the SNES (HylcMicroGetSNES()) ahead of the first solve; the tile is set up at zero strain. Reads no
+  options (HylcMicroSetFromOptions() does). Views the solver with -micro_view. Not collective.
 
   Input Parameter:
 . M - the solver, with a pattern (HylcMicroSetPattern())
@@ -206,8 +248,8 @@ PetscErrorCode HylcMicroSetUp(HylcMicro M)
 
   PetscFunctionBegin;
   PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
-  PetscCheck(M->P, PetscObjectComm((PetscObject)M), PETSC_ERR_ARG_WRONGSTATE, "Call HylcMicroSetPattern() first");
-  if (M->snes) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCheck(M->pat, PetscObjectComm((PetscObject)M), PETSC_ERR_ARG_WRONGSTATE, "Call HylcMicroSetPattern() first");
+  if (M->setupcalled) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(HylcPeriodicSetStrain(M->P, z));
   PetscCall(HylcPeriodicSetUp(M->P));
   PetscCall(HylcMicroSetUpSNES_Private(M));
@@ -245,7 +287,7 @@ PetscErrorCode HylcMicroSolve(HylcMicro M, const PetscReal z[6], HylcMicroResult
 
   PetscFunctionBegin;
   PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
-  PetscCheck(M->P, PetscObjectComm((PetscObject)M), PETSC_ERR_ARG_WRONGSTATE, "Call HylcMicroSetPattern() first");
+  PetscCheck(M->pat, PetscObjectComm((PetscObject)M), PETSC_ERR_ARG_WRONGSTATE, "Call HylcMicroSetPattern() first");
   if (injectAt < 0) { /* read once per process */
     const char *env = getenv("HYLC_INJECT_ERROR");
     char       *end = NULL;
@@ -263,7 +305,7 @@ PetscErrorCode HylcMicroSolve(HylcMicro M, const PetscReal z[6], HylcMicroResult
   PetscCall(HylcPeriodicSetUp(M->P));
   PetscCall(HylcPeriodicGetConstants(M->P, &c));
   PetscCall(HylcPeriodicGetConstraints(M->P, &m, &M->A, &M->dL, &M->AAtinv));
-  if (M->snes && m != M->m) PetscCall(HylcMicroResizeKKT_Private(M, m)); /* the number of independent constraint rows may depend on the strain */
+  if (M->setupcalled && m != M->m) PetscCall(HylcMicroResizeKKT_Private(M, m)); /* the number of independent constraint rows may depend on the strain */
   M->r  = c.r;
   M->ks = c.ks;
   M->mu = M->par.twistScale > 0 ? M->par.twistScale : 1.0 / c.r;
@@ -323,22 +365,26 @@ PetscErrorCode HylcMicroSolve(HylcMicro M, const PetscReal z[6], HylcMicroResult
 }
 
 /*@C
-  HylcMicroGetPeriodic - Gets the periodic tile of the solver. Not collective.
+  HylcMicroGetPeriodic - Gets the periodic tile of the solver, creating it on first use (options
+  -periodic_*, -macro_*, read by HylcMicroSetFromOptions()); HylcMicroSetPattern() gives it the pattern.
+  Not collective.
 
   Input Parameter:
-. M - the solver, with a pattern
+. M - the solver
 
   Output Parameter:
-. P - the tile (owned by M; NULL before HylcMicroSetPattern())
+. P - the tile (owned by M)
 
   Level: intermediate
 
-.seealso: HylcMicroSetPattern()
+.seealso: HylcMicroSetPattern(), HylcMicroGetSNES()
 @*/
 PetscErrorCode HylcMicroGetPeriodic(HylcMicro M, HylcPeriodic *P)
 {
   PetscFunctionBegin;
   PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
+  PetscValidPointer(P, 2);
+  if (!M->P) PetscCall(HylcPeriodicCreate(PETSC_COMM_SELF, &M->P));
   *P = M->P;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

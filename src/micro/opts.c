@@ -177,11 +177,13 @@ PetscErrorCode HylcMicroSetIndefinite(HylcMicro M, PetscBool flg)
 }
 
 /*@C
-  HylcMicroSetFromOptions - Reads the options of the Newton solver (prefix -micro_ by default) and of the
-  periodic tile (-periodic_*, -macro_*); it builds nothing. The SNES and the factorization PC read theirs
-  at HylcMicroSetUp() (prefixes micro_ and micro_factor_: -micro_snes_max_it (iteration cap, default
-  2000), -micro_snes_monitor, -micro_factor_pc_factor_mat_solver_type hylc|petsc|cholmod|mumps,
-  -micro_factor_pc_factor_mat_ordering_type, ...). Not collective.
+  HylcMicroSetFromOptions - Reads the options of the Newton solver (prefix -micro_ by default) and, as
+  SLEPc's EPSSetFromOptions() calls STSetFromOptions(), those of its sub-objects, created on first use
+  with their defaults: the periodic tile (HylcMicroGetPeriodic(): -periodic_*, -macro_*), the
+  factorization PC (HylcMicroGetFactorPC(), prefix micro_factor_: -micro_factor_pc_factor_mat_solver_type
+  hylc|petsc|cholmod|mumps, -micro_factor_pc_factor_mat_ordering_type, ...) and the SNES with its KSP
+  (HylcMicroGetSNES(), prefix micro_: -micro_snes_max_it (iteration cap, default 2000),
+  -micro_snes_monitor, ...). It needs no pattern and builds nothing. Not collective.
 
   Input Parameter:
 . M - the solver
@@ -193,7 +195,10 @@ PetscErrorCode HylcMicroSetIndefinite(HylcMicro M, PetscBool flg)
 . -micro_ls_factor, -micro_ls_max, -micro_max_stalls - HylcMicroSetLineSearch()
 . -micro_rtol, -micro_atol, -micro_ctol, -micro_max_time - HylcMicroSetTolerances()
 . -micro_factor_indefinite - HylcMicroSetIndefinite()
-- -micro_view - HylcMicroView() at set-up
+. -micro_view - HylcMicroView() at set-up
+. -periodic_*, -macro_* - HylcPeriodicSetFromOptions() of HylcMicroGetPeriodic()
+. -micro_factor_pc_* - PCSetFromOptions() of HylcMicroGetFactorPC()
+- -micro_snes_*, -micro_ksp_* - SNESSetFromOptions() of HylcMicroGetSNES()
 
   Notes:
   -micro_factor_type (hylc|petsc) was removed: it is an error naming its replacement,
@@ -201,12 +206,15 @@ PetscErrorCode HylcMicroSetIndefinite(HylcMicro M, PetscBool flg)
 
   Level: beginner
 
-.seealso: HylcMicroSetUp(), HylcMicroView()
+.seealso: HylcMicroSetUp(), HylcMicroView(), HylcMicroGetSNES(), HylcMicroGetPeriodic(), HylcMicroGetFactorPC()
 @*/
 PetscErrorCode HylcMicroSetFromOptions(HylcMicro M)
 {
   HylcMicroParams p = M->par;
   PetscBool       flg;
+  HylcPeriodic    P;
+  PC              inner;
+  SNES            snes;
 
   PetscFunctionBegin;
   PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
@@ -236,7 +244,13 @@ PetscErrorCode HylcMicroSetFromOptions(HylcMicro M)
   PetscCall(HylcMicroSetLineSearch(M, p.lsFactor, p.lsMax, p.maxStalls));
   PetscCall(HylcMicroSetTolerances(M, p.rtol, p.atol, p.ctol, p.maxTime));
   PetscCall(HylcMicroSetIndefinite(M, p.indefinite));
-  if (M->P) PetscCall(HylcPeriodicSetFromOptions(M->P));
+  /* the sub-objects, created with their defaults first so that the options override them */
+  PetscCall(HylcMicroGetPeriodic(M, &P));
+  PetscCall(HylcPeriodicSetFromOptions(P));
+  PetscCall(HylcMicroGetFactorPC(M, &inner));
+  PetscCall(PCSetFromOptions(inner));
+  PetscCall(HylcMicroGetSNES(M, &snes));
+  PetscCall(SNESSetFromOptions(snes));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -275,9 +289,9 @@ PetscErrorCode HylcMicroView(HylcMicro M, PetscViewer viewer)
   PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
   snprintf(buf, sizeof(buf), "convergence: |z| < %g |z0| or |z| < %g k_s, |A y - dL| < %g r; wall-time cap %g s\n", (double)p->rtol, (double)p->atol, (double)p->ctol, (double)p->maxTime);
   PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
-  if (!M->P)
+  if (!M->pat)
     PetscCall(PetscViewerASCIIPrintf(viewer, "no pattern set\n"));
-  else if (!M->snes)
+  else if (!M->setupcalled)
     PetscCall(PetscViewerASCIIPrintf(viewer, "pattern set, not set up\n"));
   else
     PetscCall(PetscViewerASCIIPrintf(viewer, "unknowns: %" PetscInt_FMT " (%" PetscInt_FMT " vertices), constraint rows: %" PetscInt_FMT "\n", M->ny, M->ny / 4, M->m));
@@ -285,7 +299,7 @@ PetscErrorCode HylcMicroView(HylcMicro M, PetscViewer viewer)
     MatSolverType type;
     PetscCall(PCFactorGetMatSolverType(M->inner, &type));
     PetscCall(PetscViewerASCIIPrintf(viewer, "factorization of K: PCCHOLESKY, solver type %s (-%sfactor_pc_factor_mat_solver_type)\n", type ? type : "(default)", HylcMicroPrefix_Private(M)));
-    if (M->snes) PetscCall(PCView(M->inner, viewer));
+    if (M->setupcalled) PetscCall(PCView(M->inner, viewer));
   }
   PetscCall(PetscViewerASCIIPopTab(viewer));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -239,8 +239,11 @@ static PetscErrorCode Converged(SNES snes, PetscInt it, PetscReal xnorm, PetscRe
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* the SNES, its KSP (preonly + the KKT PCSHELL of kkt.c) and the matrices and work arrays; once per pattern */
-PetscErrorCode HylcMicroSetUpSNES_Private(HylcMicro M)
+/* the SNES with every default of the method, before any of its options are read (HylcMicroGetSNES()):
+   Newton with the objective, residual and convergence test above, the iteration cap 2000, the shell line
+   search, a KSPPREONLY whose PC is the KKT PCSHELL of kkt.c around the factorization PC; the options
+   (-<prefix>snes_*, -<prefix>ksp_*, ...) are read by HylcMicroSetFromOptions() and override these */
+PetscErrorCode HylcMicroCreateSNES_Private(HylcMicro M)
 {
   KSP            ksp;
   PC             pc;
@@ -248,22 +251,12 @@ PetscErrorCode HylcMicroSetUpSNES_Private(HylcMicro M)
   const char    *prefix;
 
   PetscFunctionBegin;
-  if (M->snes) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(PetscLogEventBegin(HYLC_MicroSetUp, M, 0, 0, 0));
-  PetscCall(HylcPeriodicGetSizes(M->P, &M->ny, NULL, NULL, &M->m));
-  PetscCall(HylcPeriodicCreateMatrix(M->P, &M->K));
-  PetscCall(MatSetBlockSize(M->K, 4)); /* 4 x 4 vertex blocks: the block size of the hylc factorization */
-  PetscCall(MatCreateVecs(M->K, &M->X, NULL));
-  PetscCall(VecDuplicate(M->X, &M->mvec));
-  PetscCall(PetscMalloc2(M->ny, &M->yw, M->ny, &M->gw));
-  PetscCall(HylcMicroResizeKKT_Private(M, M->m));
   PetscCall(PetscObjectGetOptionsPrefix((PetscObject)M, &prefix));
   PetscCall(SNESCreate(PETSC_COMM_SELF, &M->snes));
   PetscCall(SNESSetOptionsPrefix(M->snes, prefix));
   PetscCall(SNESSetType(M->snes, SNESNEWTONLS));
   PetscCall(SNESSetObjective(M->snes, FormObjective, M));
   PetscCall(SNESSetFunction(M->snes, NULL, FormFunction, M));
-  PetscCall(SNESSetJacobian(M->snes, M->K, M->K, FormJacobian, M));
   PetscCall(SNESSetConvergenceTest(M->snes, Converged, M, NULL));
   PetscCall(SNESSetTolerances(M->snes, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, 2000, -1));
   PetscCall(SNESGetLineSearch(M->snes, &ls));
@@ -272,8 +265,33 @@ PetscErrorCode HylcMicroSetUpSNES_Private(HylcMicro M)
   PetscCall(SNESGetKSP(M->snes, &ksp));
   PetscCall(KSPSetType(ksp, KSPPREONLY));
   PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(HylcMicroSetKKT_Private(M, pc));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* the matrices, vectors and work arrays of the pattern, the Jacobian given to the SNES; once per pattern */
+PetscErrorCode HylcMicroSetUpSNES_Private(HylcMicro M)
+{
+  SNES snes;
+  KSP  ksp;
+  PC   pc;
+
+  PetscFunctionBegin;
+  if (M->setupcalled) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscLogEventBegin(HYLC_MicroSetUp, M, 0, 0, 0));
+  PetscCall(HylcPeriodicGetSizes(M->P, &M->ny, NULL, NULL, &M->m));
+  PetscCall(HylcPeriodicCreateMatrix(M->P, &M->K));
+  PetscCall(MatSetBlockSize(M->K, 4)); /* 4 x 4 vertex blocks: the block size of the hylc factorization */
+  PetscCall(MatCreateVecs(M->K, &M->X, NULL));
+  PetscCall(VecDuplicate(M->X, &M->mvec));
+  PetscCall(PetscMalloc2(M->ny, &M->yw, M->ny, &M->gw));
+  PetscCall(HylcMicroResizeKKT_Private(M, M->m));
+  PetscCall(HylcMicroGetSNES(M, &snes));
+  PetscCall(SNESSetJacobian(snes, M->K, M->K, FormJacobian, M));
+  PetscCall(SNESGetKSP(snes, &ksp));
+  PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(HylcMicroSetUpKKT_Private(M, pc));
-  PetscCall(SNESSetFromOptions(M->snes));
+  M->setupcalled = PETSC_TRUE;
   PetscCall(PetscLogEventEnd(HYLC_MicroSetUp, M, 0, 0, 0));
   PetscCall(HylcMicroViewFromOptions(M, NULL, "-view"));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -225,9 +225,10 @@ PetscErrorCode HylcSamplerSetReference(HylcSampler S, HylcReferenceMode mode, co
 
 /*@C
   HylcSamplerSetFromOptions - Reads the options of the sampling job and of its pattern (-pattern_*), yarn
-  model (-yarn_*), reference state (-reference_*) and solver (-micro_*). It only reads options: the pattern
-  is loaded or generated and the solver set up by HylcSamplerSetUp(). (With -help it also sets them up,
-  so that -help lists the solver's options, which exist only then: -periodic_*, -macro_*, -micro_snes_*.)
+  model (-yarn_*), reference state (-reference_*) and solver (HylcMicroSetFromOptions() of
+  HylcSamplerGetMicro(): -micro_*, with its tile's -periodic_*, -macro_* and its SNES's and
+  factorization's -micro_snes_*, -micro_factor_*). It only reads options, also with -help: the pattern is
+  loaded or generated and the solver set up by HylcSamplerSetUp().
 
   Collective
 
@@ -260,7 +261,7 @@ PetscErrorCode HylcSamplerSetFromOptions(HylcSampler S)
   char           terms[512] = "all", output[PETSC_MAX_PATH_LEN], refout[PETSC_MAX_PATH_LEN], rawdir[PETSC_MAX_PATH_LEN];
   PetscInt       n1 = S->n1, n2 = S->n2, batch = S->batch;
   PetscReal      progress = S->progress, density = S->density;
-  PetscBool      resume = S->resume, overwrite = S->overwrite, tset, help;
+  PetscBool      resume = S->resume, overwrite = S->overwrite, tset;
   PetscEnum      mode   = (PetscEnum)S->refmode;
   HylcPlanRanges ranges = S->ranges;
   HylcPattern    pat;
@@ -312,7 +313,5 @@ PetscErrorCode HylcSamplerSetFromOptions(HylcSampler S)
   }
   PetscCall(HylcSamplerGetMicro(S, &micro));
   PetscCall(HylcMicroSetFromOptions(micro));
-  PetscCall(PetscOptionsHasHelp(NULL, &help));
-  if (help) PetscCall(HylcSamplerSetUpSolver_Private(S));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -8,7 +8,8 @@
 #define TAG_RECORDS 7301
 #define TAG_DONE    7302
 
-/* the pattern set up, the plan resolved for its radius, the solver given the pattern and set up */
+/* the pattern set up, the plan resolved for its radius, the solver given the pattern and set up (its
+   options, and its tile's, were read by HylcSamplerSetFromOptions(): the tile keeps them) */
 PetscErrorCode HylcSamplerSetUpSolver_Private(HylcSampler S)
 {
   MPI_Comm    comm = PetscObjectComm((PetscObject)S);
@@ -26,7 +27,6 @@ PetscErrorCode HylcSamplerSetUpSolver_Private(HylcSampler S)
   S->plan.n2    = (int)S->n2;
   S->plan.terms = (int)S->terms;
   PetscCall(HylcMicroSetPattern(micro, pat, &S->model));
-  PetscCall(HylcMicroSetFromOptions(micro));
   PetscCall(HylcMicroSetUp(micro));
   S->nsamples = HylcPlanSize(&S->plan);
   PetscCheck(S->nsamples > 0, comm, PETSC_ERR_USER_INPUT, "The sampling plan is empty (-sampler_terms)");
@@ -127,7 +127,6 @@ PetscErrorCode HylcSamplerSetUp(HylcSampler S)
     PetscCall(HylcPatternDestroy(&S->pat));
     S->pat = ref;
     PetscCall(HylcMicroSetPattern(S->micro, S->pat, &S->model));
-    PetscCall(HylcMicroSetFromOptions(S->micro));
   }
   if (S->refout[0]) PetscCall(HylcPatternWrite(S->pat, S->refout));
   S->setupcalled = PETSC_TRUE;

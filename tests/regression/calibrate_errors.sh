@@ -39,4 +39,9 @@ for o in target target_type output dump params tie bounds_E bounds_Es bounds_G b
   grep -q -- "-calibrate_$o " help.txt || grep -q -- "-calibrate_$o <" help.txt || die "-help does not list -calibrate_$o"
 done
 grep -q -- '-sampler_family' help.txt && grep -q -- '-yarn_E' help.txt && grep -q -- '-micro_rtol' help.txt || die "-help lacks the pattern/yarn/solver options"
+# the solver's sub-objects' options, listed by -help without setting up a pattern (a missing file is not opened)
+$tool -pattern_type file -pattern_file missing.pyp -help >help2.txt 2>&1 || { tail -3 help2.txt; die "-help opened the pattern (set up the solver)"; }
+for opt in -periodic_slide -macro_phi -micro_snes_max_it -micro_factor_pc_factor_mat_solver_type -calibrate_target; do
+  grep -q -- "^ *$opt[ :]" help2.txt || die "-help without a pattern does not list $opt"
+done
 exit 0

@@ -94,4 +94,14 @@ for opt in -sampler_output -sampler_resume -sampler_overwrite -sampler_terms -sa
   grep -q -- "$opt" help.txt || die "-help does not document $opt"
 done
 [ ! -e samples.h5.journal ] || die "-help started the job"
+# -help only reads options: the solver's own (tile, midsurface, SNES, factorization) without a pattern
+# (a missing -pattern_file is not opened), each hylc option listed once and naming its setter
+$tool -pattern_type file -pattern_file missing.pyp -help >help2.txt 2>&1 || { tail -3 help2.txt; die "-help opened the pattern (set up the solver)"; }
+for opt in -periodic_slide -periodic_margin -macro_phi -micro_snes_max_it -micro_ksp_type -micro_factor_pc_factor_mat_solver_type -micro_factor_pc_factor_mat_ordering_type -micro_alpha_start; do
+  grep -q -- "^ *$opt[ :]" help2.txt || die "-help without a pattern does not document $opt"
+done
+dups=$(grep -oE '^ +-(sampler|reference|pattern|yarn|micro|periodic|macro)_[a-zA-Z0-9_]+' help2.txt | grep -vE -- '-micro_(snes|ksp|pc|factor_pc)_' | sort | uniq -d)
+[ -z "$dups" ] || die "-help lists these options more than once: $dups"
+nosetter=$(grep -E '^ +-(sampler|reference|pattern|yarn|micro|periodic|macro)_' help2.txt | grep -vE -- '^ +-micro_(snes|ksp|pc|factor_pc)_' | grep -vE '\(Hylc[A-Za-z]+\) *$' || true)
+[ -z "$nosetter" ] || die "-help lines without a Hylc setter: $nosetter"
 exit 0

@@ -13,6 +13,7 @@
    - the object: prefix, setters, view, the removed -micro_factor_type, the factorization PC's solver type. */
 #include <hylc/micro.h>
 #include <unistd.h>
+#include <hylc/chol.h>
 #include "hylctest.h"
 
 static PetscErrorCode StraightYarn(PetscInt N, HylcPattern *p)
@@ -423,6 +424,97 @@ static PetscErrorCode TestObject(void)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* the lazy sub-objects: created on first use with the method's defaults (iteration cap 2000, solver type
+   hylc); HylcMicroSetFromOptions needs no pattern and its options override the defaults (-micro_snes_max_it,
+   -micro_factor_pc_factor_mat_solver_type, -periodic_margin); a new pattern keeps the tile, its options
+   and the SNES (SNESReset), and a solver given a second pattern of another size solves it bitwise as a
+   fresh solver does */
+static PetscErrorCode TestLazy(void)
+{
+  HylcMicro       M, F;
+  HylcPeriodic    P0, P1, P2;
+  SNES            s0, s1;
+  PC              pc;
+  PetscInt        maxit;
+  MatSolverType   type;
+  PetscBool       eq;
+  PetscViewer     v;
+  HylcPattern     a, b;
+  HylcYarnModel   m;
+  HylcMicroResult ra, rb, rf;
+  char            path[] = "/tmp/hylc_test_micro_lazyXXXXXX";
+  const PetscReal z[6]   = {0.05, 0.1, 0, 0, 0, 0};
+  int             fd;
+
+  PetscFunctionBegin;
+  PetscCall(HylcMicroCreate(PETSC_COMM_SELF, &M));
+  PetscCall(HylcMicroGetSNES(M, &s0));
+  PetscCall(SNESGetTolerances(s0, NULL, NULL, NULL, &maxit, NULL));
+  HYLC_CHECK(maxit == 2000, "default iteration cap %d, expected 2000", (int)maxit);
+  PetscCall(HylcMicroGetFactorPC(M, &pc));
+  PetscCall(PCFactorGetMatSolverType(pc, &type));
+  PetscCall(PetscStrcmp(type, MATSOLVERHYLC, &eq));
+  HYLC_CHECK(eq, "default solver type %s, expected hylc", type ? type : "(null)");
+  PetscCall(PetscOptionsSetValue(NULL, "-micro_snes_max_it", "2"));
+  PetscCall(PetscOptionsSetValue(NULL, "-micro_factor_pc_factor_mat_solver_type", "petsc"));
+  PetscCall(PetscOptionsSetValue(NULL, "-periodic_margin", "0.375"));
+  PetscCall(HylcMicroSetFromOptions(M)); /* no pattern yet */
+  PetscCall(PetscOptionsClearValue(NULL, "-micro_snes_max_it"));
+  PetscCall(PetscOptionsClearValue(NULL, "-micro_factor_pc_factor_mat_solver_type"));
+  PetscCall(PetscOptionsClearValue(NULL, "-periodic_margin"));
+  PetscCall(HylcMicroGetSNES(M, &s1));
+  PetscCall(SNESGetTolerances(s1, NULL, NULL, NULL, &maxit, NULL));
+  HYLC_CHECK(s1 == s0 && maxit == 2, "-micro_snes_max_it 2: iteration cap %d (same SNES: %d)", (int)maxit, (int)(s1 == s0));
+  PetscCall(PCFactorGetMatSolverType(pc, &type));
+  PetscCall(PetscStrcmp(type, MATSOLVERPETSC, &eq));
+  HYLC_CHECK(eq, "-micro_factor_pc_factor_mat_solver_type petsc: solver type %s", type ? type : "(null)");
+  PetscCall(HylcMicroGetPeriodic(M, &P0));
+  /* two patterns of different sizes: the tile and the SNES stay, with their options */
+  PetscCall(StraightYarn(16, &a));
+  PetscCall(HylcPatternCreate(PETSC_COMM_SELF, &b));
+  {
+    HylcPatternGenParams g;
+    PetscCall(HylcPatternGenParamsDefault(&g));
+    PetscCall(HylcPatternGenerate(b, HYLCPATTERNPLAIN, &g));
+  }
+  PetscCall(HylcYarnModelDefault(&m));
+  m.kc = 50;
+  PetscCall(HylcMicroSetPattern(M, a, &m));
+  PetscCall(HylcMicroSolve(M, z, &ra));
+  PetscCall(HylcMicroSetPattern(M, b, &m));
+  PetscCall(HylcMicroGetPeriodic(M, &P1));
+  PetscCall(HylcMicroSetUp(M));
+  PetscCall(HylcMicroSolve(M, z, &rb));
+  PetscCall(HylcMicroGetPeriodic(M, &P2));
+  PetscCall(HylcMicroGetSNES(M, &s1));
+  HYLC_CHECK(P0 == P1 && P1 == P2 && s1 == s0, "a new pattern replaced the tile or the SNES");
+  fd = mkstemp(path);
+  HYLC_CHECK(fd >= 0, "mkstemp failed");
+  if (fd >= 0) close(fd);
+  PetscCall(PetscViewerASCIIOpen(PETSC_COMM_SELF, path, &v));
+  PetscCall(HylcPeriodicView(P2, v));
+  PetscCall(PetscViewerDestroy(&v));
+  HYLC_CHECK(FileHas(path, "contact-ghost margin 0.375"), "-periodic_margin 0.375 read before the patterns was lost (%s)", path);
+  remove(path);
+  /* a fresh solver with the same settings, given only the second pattern */
+  PetscCall(HylcMicroCreate(PETSC_COMM_SELF, &F));
+  PetscCall(HylcMicroGetSNES(F, &s1));
+  PetscCall(SNESSetTolerances(s1, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, 2, PETSC_DEFAULT));
+  PetscCall(HylcMicroGetFactorPC(F, &pc));
+  PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERPETSC));
+  PetscCall(HylcMicroGetPeriodic(F, &P1));
+  PetscCall(HylcPeriodicSetContactMargin(P1, 0.375));
+  PetscCall(HylcMicroSetPattern(F, b, &m));
+  PetscCall(HylcMicroSolve(F, z, &rf));
+  HYLC_CHECK(ra.status == HYLC_MICRO_CONVERGED && rb.iterations == 2 && rb.status == HYLC_MICRO_MAX_IT, "with -micro_snes_max_it 2: straight yarn %d iterations (%s), plain weave %d iterations (%s)", (int)ra.iterations, HylcMicroStatuses[ra.status], (int)rb.iterations, HylcMicroStatuses[rb.status]);
+  HYLC_CHECK(rb.psi == rf.psi && rb.iterations == rf.iterations && rb.retries == rf.retries, "second pattern: psi %.17g (%d its) vs a fresh solver %.17g (%d its)", (double)rb.psi, (int)rb.iterations, (double)rf.psi, (int)rf.iterations);
+  PetscCall(HylcMicroDestroy(&F));
+  PetscCall(HylcMicroDestroy(&M));
+  PetscCall(HylcPatternDestroy(&a));
+  PetscCall(HylcPatternDestroy(&b));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 int main(int argc, char **argv)
 {
   char        dir[PETSC_MAX_PATH_LEN];
@@ -431,6 +523,7 @@ int main(int argc, char **argv)
 
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
   PetscCall(TestObject());
+  PetscCall(TestLazy());
   PetscCall(TestAnalytic());
   PetscCall(TestReproducible());
   PetscCall(TestShearSymmetry());

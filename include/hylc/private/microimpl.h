@@ -27,10 +27,11 @@ struct _p_HylcMicro {
   HylcMicroParams par;
   HylcPattern     pat;
   HylcYarnModel   model;
-  HylcPeriodic    P;
-  PetscInt        ny, m;     /* unknowns, constraint rows */
-  PetscReal       mu, r, ks; /* twist scale, yarn radius, stretching stiffness k_s */
-  SNES            snes;
+  HylcPeriodic    P;           /* created by HylcMicroGetPeriodic(); given the pattern by HylcMicroSetPattern() */
+  PetscBool       setupcalled; /* the matrices, vectors and KKT buffers of the current pattern are built */
+  PetscInt        ny, m;       /* unknowns, constraint rows */
+  PetscReal       mu, r, ks;   /* twist scale, yarn radius, stretching stiffness k_s */
+  SNES            snes;        /* created and configured by HylcMicroGetSNES(); reset (SNESReset) for a new pattern */
   Mat             K;
   Vec             X, mvec;
   PetscReal      *yw, *gw; /* work: unscaled unknowns and gradient */
@@ -66,10 +67,12 @@ static inline const char *HylcMicroPrefix_Private(HylcMicro M)
 }
 
 /* kkt.c */
+PETSC_INTERN PetscErrorCode HylcMicroSetKKT_Private(HylcMicro, PC);
 PETSC_INTERN PetscErrorCode HylcMicroSetUpKKT_Private(HylcMicro, PC);
 PETSC_INTERN PetscErrorCode HylcMicroResizeKKT_Private(HylcMicro, PetscInt);
 PETSC_INTERN PetscErrorCode HylcMicroDestroyKKT_Private(HylcMicro);
 /* snes.c */
+PETSC_INTERN PetscErrorCode HylcMicroCreateSNES_Private(HylcMicro);
 PETSC_INTERN PetscErrorCode HylcMicroSetUpSNES_Private(HylcMicro);
 PETSC_INTERN PetscErrorCode HylcMicroToY_Private(HylcMicro, Vec, PetscReal[]);
 PETSC_INTERN PetscErrorCode HylcMicroSafeEnergy_Private(HylcMicro, Vec, PetscReal *, PetscReal[4]);
