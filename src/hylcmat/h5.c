@@ -10,18 +10,12 @@
 #  include <string.h>
 
 /* CallH5(call): a negative return of a raw HDF5 call becomes an error naming the call and the file (d) */
-#  define CallH5(...)                                                                                         \
-    do {                                                                                                      \
-      if ((__VA_ARGS__) < 0) {                                                                                \
-        char h5msg_[256];                                                                                     \
-        HylcH5ErrorText(h5msg_);                                                                              \
-        return hm_fail(d->E, HYLCMAT_ERR_HDF5, "HDF5 call %s failed on %s%s", #__VA_ARGS__, d->name, h5msg_); \
-      }                                                                                                       \
-    } while (0)
-#  define CallH5Id(id, ...) \
-    do {                    \
-      (id) = (__VA_ARGS__); \
-      CallH5(id);           \
+#  define H5Fail_(call) return hm_fail(d->E, HYLCMAT_ERR_HDF5, "HDF5 call %s failed on %s%s", call, d->name, hylc_h5msg_)
+#  define CallH5(...)   HYLC_H5_CHECK_(H5Fail_(#  __VA_ARGS__), __VA_ARGS__)
+#  define CallH5Id(id, ...)                      \
+    do {                                         \
+      (id) = (__VA_ARGS__);                      \
+      HYLC_H5_CHECK_(H5Fail_(#__VA_ARGS__), id); \
     } while (0)
 
 static int Exists(const hm_doc *d, hid_t loc, const char path[], const char name[], int required, int *has)
@@ -254,32 +248,23 @@ static int ReadContents(hm_doc *d, hid_t file)
 
 int hm_parse_hdf5(const char *name, const void *image, size_t len, hm_err *E, hylcmat **m)
 {
-  hid_t       fapl, file;
-  H5E_auto2_t efunc;
-  void       *edata;
+  hid_t       file;
+  HylcH5Quiet quiet;
   hm_doc      d;
   int         ierr;
 
   hm_doc_init(&d, name, E);
-  H5Eget_auto2(H5E_DEFAULT, &efunc, &edata);
-  H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
-  fapl = H5Pcreate(H5P_FILE_ACCESS);
-  if (fapl >= 0 && (H5Pset_fapl_core(fapl, 1 << 16, 0) < 0 || H5Pset_file_image(fapl, (void *)image, len) < 0 || H5Pset_fclose_degree(fapl, H5F_CLOSE_STRONG) < 0)) {
-    H5Pclose(fapl);
-    fapl = -1;
-  }
-  file = fapl >= 0 ? H5Fopen(HYLC_H5_IMAGE_NAME, H5F_ACC_RDONLY, fapl) : -1;
+  HylcH5QuietBegin(&quiet);
+  file = HylcH5ImageOpen(HYLC_H5_IMAGE_NAME, image, len);
   if (file < 0) {
     char msg[256];
     HylcH5ErrorText(msg);
-    if (fapl >= 0) H5Pclose(fapl);
-    H5Eset_auto2(H5E_DEFAULT, efunc, edata);
+    HylcH5QuietEnd(&quiet);
     return hm_fail(E, HYLCMAT_ERR_READ, "%s: cannot open as HDF5 (damaged or truncated file?)%s", name, msg);
   }
   ierr = ReadContents(&d, file);
   H5Fclose(file);
-  H5Pclose(fapl);
-  H5Eset_auto2(H5E_DEFAULT, efunc, edata);
+  HylcH5QuietEnd(&quiet);
   if (ierr) {
     hm_doc_free(&d);
     return ierr;
