@@ -44,7 +44,7 @@ OPT      ?= -O2 -g
 CFLAGS   ?= $(OPT)
 CFLAGS   += -Wall -Wextra -std=c11 -D_DEFAULT_SOURCE -fPIC -Iinclude $(PKG_CFLAGS) -MMD -MP $(SAN_FLAGS)
 LDFLAGS  += $(SAN_FLAGS)
-LDLIBS   := $(PKG_LIBS) -lmetis -lm
+LDLIBS   := $(PKG_LIBS) -lmetis -llapack -lm
 
 ifeq ($(V),1)
   Q :=
@@ -157,7 +157,7 @@ install: lib hylcmat apps
 	@PREFIX='$(PREFIX)' DESTDIR='$(DESTDIR)' DATADIR='$(DATADIR)' LIBDIR='$(LIBDIR)' INCDIR='$(INCDIR)' BINDIR='$(BINDIR)' \
 	  PCDIR='$(PCDIR)' DOCDIR='$(DOCDIR)' MANIFEST='$(MANIFEST)' BUILD='$(BUILD)' VERSION='$(HYLC_VERSION)' \
 	  HYLC_SOVERSION='$(HYLC_SOVERSION)' HYLCMAT_SOVERSION='$(HYLCMAT_SOVERSION)' \
-	  PC_REQUIRES='$(PKGS)' PC_LIBS_PRIVATE='-lmetis -lm' HM_LIBS='$(HM_LIBS)' \
+	  PC_REQUIRES='$(PKGS)' PC_LIBS_PRIVATE='-lmetis -llapack -lm' HM_LIBS='$(HM_LIBS)' \
 	  bash tools/install.sh install
 
 uninstall:
