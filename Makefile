@@ -67,7 +67,9 @@ REPLAY_SRC := $(sort $(wildcard tests/fuzz/fuzz_*.c))
 REPLAYS   := $(REPLAY_SRC:tests/fuzz/%.c=$(BUILD)/fuzz/%)
 EX_SRC    := $(sort $(wildcard examples/*.c))
 EXAMPLES  := $(EX_SRC:examples/%.c=$(BUILD)/ex/%)
-ALL_OBJ   := $(LIB_OBJ) $(patsubst src/%.c,$(BUILD)/hylcmat/%.o,$(wildcard src/hylcmat/*.c) src/sys/json.c src/sys/h5util.c) $(APP_SRC:%.c=$(OBJ)/%.o) $(TEST_SRC:%.c=$(OBJ)/%.o) $(REPLAY_SRC:%.c=$(OBJ)/%.o) $(OBJ)/tests/fuzz/replay.o $(BENCH_SRC:%.c=$(OBJ)/%.o) $(EX_SRC:%.c=$(OBJ)/%.o)
+SUPPORT_SRC := $(sort $(wildcard tests/support/*.c))
+SUPPORT_LIB := $(BUILD)/libhylc-testsupport.a
+ALL_OBJ   := $(LIB_OBJ) $(SUPPORT_SRC:%.c=$(OBJ)/%.o) $(patsubst src/%.c,$(BUILD)/hylcmat/%.o,$(wildcard src/hylcmat/*.c) src/sys/json.c src/sys/h5util.c) $(APP_SRC:%.c=$(OBJ)/%.o) $(TEST_SRC:%.c=$(OBJ)/%.o) $(REPLAY_SRC:%.c=$(OBJ)/%.o) $(OBJ)/tests/fuzz/replay.o $(BENCH_SRC:%.c=$(OBJ)/%.o) $(EX_SRC:%.c=$(OBJ)/%.o)
 
 .PHONY: all lib apps tests benches examples test test-asan demo bench deps format clean help fuzz fuzz-build fuzz-deps hylcmat install uninstall
 all: lib hylcmat apps tests benches examples
@@ -163,15 +165,22 @@ install: lib hylcmat apps
 uninstall:
 	@PREFIX='$(PREFIX)' DESTDIR='$(DESTDIR)' MANIFEST='$(MANIFEST)' bash tools/install.sh uninstall
 
+# tests/support: reference code for the tests and benchmarks only (HylcTile), not in libhylc
+$(SUPPORT_LIB): $(SUPPORT_SRC:%.c=$(OBJ)/%.o)
+	@$(if $(Q),echo "  AR      $@")
+	$(Q)rm -f $@ && ar rcs $@ $^
+$(OBJ)/tests/%.o: CFLAGS += -Itests/support
+
+# link_rule,dir,srcdir[,extra archives]
 define link_rule
-$(BUILD)/$(1)/%: $(OBJ)/$(2)/%.o $(LIB)
+$(BUILD)/$(1)/%: $(OBJ)/$(2)/%.o $(3) $(LIB)
 	@mkdir -p $$(@D)
 	@$$(if $$(Q),echo "  LD      $$@")
-	$$(Q)$$(CC) $$(LDFLAGS) -o $$@ $$< $$(LIB) $$(LDLIBS)
+	$$(Q)$$(CC) $$(LDFLAGS) -o $$@ $$< $(3) $$(LIB) $$(LDLIBS)
 endef
 $(eval $(call link_rule,bin,src/apps))
-$(eval $(call link_rule,tests,tests/unit))
-$(eval $(call link_rule,bench,tests/bench))
+$(eval $(call link_rule,tests,tests/unit,$(SUPPORT_LIB)))
+$(eval $(call link_rule,bench,tests/bench,$(SUPPORT_LIB)))
 $(eval $(call link_rule,ex,examples))
 # the fuzz harnesses with a plain main (tests/fuzz/replay.c) for tests/regression/fuzz_regressions.sh
 $(BUILD)/fuzz/%: $(OBJ)/tests/fuzz/%.o $(OBJ)/tests/fuzz/replay.o $(LIB)
