@@ -60,7 +60,8 @@ HYLC_H5_INTERN hid_t HylcH5FileOpen(const char path[]);
 HYLC_H5_INTERN ssize_t HylcH5ImageSize(hid_t file);
 
 /* HYLC_H5_CHECK_(onfail, call): if the raw HDF5 call returns a negative value, runs the statement onfail
-   with HDF5's description in the string hylc_h5msg_ */
+   with HDF5's description in the string hylc_h5msg_; HYLC_H5_CHECK_ID_(onfail, id, call) also stores the
+   returned hid_t in id. The wrappers stringify the call themselves (#__VA_ARGS__, unexpanded). */
 #define HYLC_H5_CHECK_(onfail, ...) \
   do {                              \
     if ((__VA_ARGS__) < 0) {        \
@@ -69,14 +70,15 @@ HYLC_H5_INTERN ssize_t HylcH5ImageSize(hid_t file);
       onfail;                       \
     }                               \
   } while (0)
+#define HYLC_H5_CHECK_ID_(onfail, id, ...) \
+  do {                                     \
+    (id) = (__VA_ARGS__);                  \
+    HYLC_H5_CHECK_(onfail, id);            \
+  } while (0)
 
 /* PETSc: HylcCallHDF5(call) makes a failing HDF5 call a PETSc error naming the call, the file (the
    expression HylcH5Where, a string the including file defines) and HDF5's description; HylcCallHDF5Id(id,
    call) also stores the returned hid_t. Expanded only in PETSc code (hylcmat does not use them). */
-#define HylcH5PetscFail_(call) SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5 call %s failed on %s%s", call, HylcH5Where, hylc_h5msg_)
-#define HylcCallHDF5(...)      HYLC_H5_CHECK_(HylcH5PetscFail_(#__VA_ARGS__), __VA_ARGS__)
-#define HylcCallHDF5Id(id, ...)                         \
-  do {                                                  \
-    (id) = (__VA_ARGS__);                               \
-    HYLC_H5_CHECK_(HylcH5PetscFail_(#__VA_ARGS__), id); \
-  } while (0)
+#define HylcH5PetscFail_(call)  SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5 call %s failed on %s%s", call, HylcH5Where, hylc_h5msg_)
+#define HylcCallHDF5(...)       HYLC_H5_CHECK_(HylcH5PetscFail_(#__VA_ARGS__), __VA_ARGS__)
+#define HylcCallHDF5Id(id, ...) HYLC_H5_CHECK_ID_(HylcH5PetscFail_(#__VA_ARGS__), id, __VA_ARGS__)
