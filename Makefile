@@ -6,10 +6,12 @@
 #   make install    PREFIX=/usr/local DESTDIR=: headers, libraries, programs, pkg-config files, docs
 #   make uninstall  remove every installed file (from the manifest written by install)
 #   make deps       install missing system packages (apt; as root or with sudo)
-#   make format     clang-format the sources
+#   make format     clang-format the sources; `make check-format` fails on any unformatted source
 #   make fuzz       build the libFuzzer harnesses (clang) and run each FUZZ_SECONDS (default 60) s
 #   ASAN=1          build into build-asan with -fsanitize=address,undefined; `make test ASAN=1` runs the
 #                   tests there (docs/testing.md); `make test-asan` runs the unit tests only
+#   COVERAGE=1      build into build-cov with gcov instrumentation; `make coverage` runs the tests there
+#                   (COVERAGE_TESTS: arguments of tests/run.sh, e.g. --unit) and prints line coverage per stage
 #   V=1             show full command lines
 
 .SUFFIXES:
@@ -20,13 +22,17 @@ SHELL := /bin/bash
 ifeq ($(ASAN),1)
   BUILD ?= build-asan
   SAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer
+else ifeq ($(COVERAGE),1)
+  BUILD ?= build-cov
+  SAN_FLAGS := --coverage
+  OPT ?= -O0 -g
 else
   BUILD ?= build
   SAN_FLAGS :=
 endif
 OBJ     := $(BUILD)/obj
 PKGS    := petsc hdf5-openmpi
-NOCHECK_GOALS := deps test test-asan demo clean format help distclean bench-run fuzz fuzz-build fuzz-deps hylcmat uninstall
+NOCHECK_GOALS := deps test test-asan coverage check-format demo clean format help distclean bench-run fuzz fuzz-build fuzz-deps hylcmat uninstall
 PETSC_OK := $(shell pkg-config --exists $(PKGS) 2>/dev/null && echo yes)
 
 ifeq ($(filter $(NOCHECK_GOALS),$(MAKECMDGOALS)),)
@@ -71,7 +77,7 @@ SUPPORT_SRC := $(sort $(wildcard tests/support/*.c))
 SUPPORT_LIB := $(BUILD)/libhylc-testsupport.a
 ALL_OBJ   := $(LIB_OBJ) $(SUPPORT_SRC:%.c=$(OBJ)/%.o) $(patsubst src/%.c,$(BUILD)/hylcmat/%.o,$(wildcard src/hylcmat/*.c) src/sys/json.c src/sys/h5util.c) $(APP_SRC:%.c=$(OBJ)/%.o) $(TEST_SRC:%.c=$(OBJ)/%.o) $(REPLAY_SRC:%.c=$(OBJ)/%.o) $(OBJ)/tests/fuzz/replay.o $(BENCH_SRC:%.c=$(OBJ)/%.o) $(EX_SRC:%.c=$(OBJ)/%.o)
 
-.PHONY: all lib apps tests benches examples test test-asan demo bench deps format clean help fuzz fuzz-build fuzz-deps hylcmat install uninstall
+.PHONY: all lib apps tests benches examples test test-asan coverage check-format demo bench deps format clean help fuzz fuzz-build fuzz-deps hylcmat install uninstall
 all: lib hylcmat apps tests benches examples
 lib: $(LIB) $(SOLIB)
 apps: $(APPS)
@@ -210,8 +216,20 @@ demo:
 bench: all
 	@bash tests/bench/run.sh
 
+# the tests in the COVERAGE=1 build (build-cov), then line coverage per stage (tools/coverage.sh)
+coverage:
+	@bash config/install-deps.sh
+	@$(MAKE) --no-print-directory COVERAGE=1 BUILD=build-cov all
+	@find build-cov -name '*.gcda' -delete
+	@st=0; BUILD=build-cov bash tests/run.sh $(COVERAGE_TESTS) || st=$$?; BUILD=build-cov bash tools/coverage.sh; exit $$st
+
+FORMAT_SRC := $(wildcard include/*.h include/hylc/*.h include/hylc/private/*.h src/*/*.c src/hylcmat/*.h tests/*/*.c tests/*/*.h examples/*.c)
 format:
-	clang-format -i $(wildcard include/*.h include/hylc/*.h include/hylc/private/*.h src/*/*.c src/hylcmat/*.h tests/*/*.c tests/*/*.h examples/*.c)
+	clang-format -i $(FORMAT_SRC)
+
+check-format:
+	@command -v clang-format >/dev/null || { echo "check-format: clang-format is not installed (apt-get install clang-format)"; exit 1; }
+	@clang-format --dry-run -Werror $(FORMAT_SRC) && echo "check-format: $(words $(FORMAT_SRC)) files formatted"
 
 clean:
 	rm -rf $(BUILD)
@@ -251,7 +269,7 @@ fuzz: fuzz-build
 	@FUZZ_BUILD=$(FUZZ_BUILD) FUZZ_SECONDS=$(FUZZ_SECONDS) bash tests/fuzz/run.sh $(FUZZ_NAMES)
 
 help:
-	@sed -n '2,11p' Makefile
+	@sed -n '2,15p' Makefile
 
 -include $(ALL_OBJ:.o=.d)
 -include $(wildcard $(FUZZ_BUILD)/obj/*/*/*.d $(FUZZ_BUILD)/obj/tests/fuzz/*.d)
