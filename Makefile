@@ -25,6 +25,7 @@ ifeq ($(ASAN),1)
 else ifeq ($(COVERAGE),1)
   BUILD ?= build-cov
   SAN_FLAGS := --coverage
+  SAN_LIBS  := -lgcov
   OPT ?= -O0 -g
 else
   BUILD ?= build
@@ -50,7 +51,7 @@ OPT      ?= -O2 -g
 CFLAGS   ?= $(OPT)
 CFLAGS   += -Wall -Wextra -std=c11 -D_DEFAULT_SOURCE -fPIC -Iinclude $(PKG_CFLAGS) -MMD -MP $(SAN_FLAGS)
 LDFLAGS  += $(SAN_FLAGS)
-LDLIBS   := $(PKG_LIBS) -lmetis -llapack -lm
+LDLIBS   := $(PKG_LIBS) -lmetis -llapack -lm $(SAN_LIBS)
 
 ifeq ($(V),1)
   Q :=
@@ -221,7 +222,7 @@ coverage:
 	@bash config/install-deps.sh
 	@$(MAKE) --no-print-directory COVERAGE=1 BUILD=build-cov all
 	@find build-cov -name '*.gcda' -delete
-	@st=0; BUILD=build-cov bash tests/run.sh $(COVERAGE_TESTS) || st=$$?; BUILD=build-cov bash tools/coverage.sh; exit $$st
+	@st=0; BUILD=build-cov COVERAGE=1 bash tests/run.sh $(COVERAGE_TESTS) || st=$$?; BUILD=build-cov bash tools/coverage.sh; exit $$st
 
 FORMAT_SRC := $(wildcard include/*.h include/hylc/*.h include/hylc/private/*.h src/*/*.c src/hylcmat/*.h tests/*/*.c tests/*/*.h examples/*.c)
 format:

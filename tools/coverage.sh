@@ -17,7 +17,7 @@ for dir in src/*/; do
     [ -f "$obj/${c%.c}.gcno" ] || continue
     gcov -n -o "$obj/$dir" "$c" 2>/dev/null | awk -v stage="$stage" -v want="$c" '
       /^File / { f = $2; gsub("\047", "", f); next }
-      /^Lines executed:/ && f == want { split($0, a, /[:% ]+/); printf "%s %d %d\n", stage, a[5], int(a[3] * a[5] / 100 + 0.5) }'
+      /^Lines executed:/ && f == want { split($0, a, /[:% ]+/); printf "%s %d %d\n", stage, a[5], int(a[3] * a[5] / 100 + 0.5); f = "" }'
   done
 done | awk '
   { n[$1] += $2; c[$1] += $3; N += $2; C += $3 }
