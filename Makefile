@@ -6,10 +6,12 @@
 #   make install    PREFIX=/usr/local DESTDIR=: headers, libraries, programs, pkg-config files, docs
 #   make uninstall  remove every installed file (from the manifest written by install)
 #   make deps       install missing system packages (apt; as root or with sudo)
-#   make format     clang-format the sources
+#   make format     clang-format the sources; `make check-format` fails on any unformatted source
 #   make fuzz       build the libFuzzer harnesses (clang) and run each FUZZ_SECONDS (default 60) s
 #   ASAN=1          build into build-asan with -fsanitize=address,undefined; `make test ASAN=1` runs the
 #                   tests there (docs/testing.md); `make test-asan` runs the unit tests only
+#   COVERAGE=1      build into build-cov with gcov instrumentation; `make coverage` runs the tests there
+#                   (COVERAGE_TESTS: arguments of tests/run.sh, e.g. --unit) and prints line coverage per stage
 #   V=1             show full command lines
 
 .SUFFIXES:
@@ -20,13 +22,18 @@ SHELL := /bin/bash
 ifeq ($(ASAN),1)
   BUILD ?= build-asan
   SAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer
+else ifeq ($(COVERAGE),1)
+  BUILD ?= build-cov
+  SAN_FLAGS := --coverage
+  SAN_LIBS  := -lgcov
+  OPT ?= -O0 -g
 else
   BUILD ?= build
   SAN_FLAGS :=
 endif
 OBJ     := $(BUILD)/obj
 PKGS    := petsc hdf5-openmpi
-NOCHECK_GOALS := deps test test-asan demo clean format help distclean bench-run fuzz fuzz-build fuzz-deps hylcmat uninstall
+NOCHECK_GOALS := deps test test-asan coverage check-format demo clean format help distclean bench-run fuzz fuzz-build fuzz-deps hylcmat uninstall
 PETSC_OK := $(shell pkg-config --exists $(PKGS) 2>/dev/null && echo yes)
 
 ifeq ($(filter $(NOCHECK_GOALS),$(MAKECMDGOALS)),)
@@ -44,7 +51,7 @@ OPT      ?= -O2 -g
 CFLAGS   ?= $(OPT)
 CFLAGS   += -Wall -Wextra -std=c11 -D_DEFAULT_SOURCE -fPIC -Iinclude $(PKG_CFLAGS) -MMD -MP $(SAN_FLAGS)
 LDFLAGS  += $(SAN_FLAGS)
-LDLIBS   := $(PKG_LIBS) -lmetis -lm
+LDLIBS   := $(PKG_LIBS) -lmetis -llapack -lm $(SAN_LIBS)
 
 ifeq ($(V),1)
   Q :=
@@ -67,9 +74,11 @@ REPLAY_SRC := $(sort $(wildcard tests/fuzz/fuzz_*.c))
 REPLAYS   := $(REPLAY_SRC:tests/fuzz/%.c=$(BUILD)/fuzz/%)
 EX_SRC    := $(sort $(wildcard examples/*.c))
 EXAMPLES  := $(EX_SRC:examples/%.c=$(BUILD)/ex/%)
-ALL_OBJ   := $(LIB_OBJ) $(patsubst src/hylcmat/%.c,$(BUILD)/hylcmat/%.o,$(wildcard src/hylcmat/*.c)) $(APP_SRC:%.c=$(OBJ)/%.o) $(TEST_SRC:%.c=$(OBJ)/%.o) $(REPLAY_SRC:%.c=$(OBJ)/%.o) $(OBJ)/tests/fuzz/replay.o $(BENCH_SRC:%.c=$(OBJ)/%.o) $(EX_SRC:%.c=$(OBJ)/%.o)
+SUPPORT_SRC := $(sort $(wildcard tests/support/*.c))
+SUPPORT_LIB := $(BUILD)/libhylc-testsupport.a
+ALL_OBJ   := $(LIB_OBJ) $(SUPPORT_SRC:%.c=$(OBJ)/%.o) $(patsubst src/%.c,$(BUILD)/hylcmat/%.o,$(wildcard src/hylcmat/*.c) src/sys/json.c src/sys/h5util.c) $(APP_SRC:%.c=$(OBJ)/%.o) $(TEST_SRC:%.c=$(OBJ)/%.o) $(REPLAY_SRC:%.c=$(OBJ)/%.o) $(OBJ)/tests/fuzz/replay.o $(BENCH_SRC:%.c=$(OBJ)/%.o) $(EX_SRC:%.c=$(OBJ)/%.o)
 
-.PHONY: all lib apps tests benches examples test test-asan demo bench deps format clean help fuzz fuzz-build fuzz-deps hylcmat install uninstall
+.PHONY: all lib apps tests benches examples test test-asan coverage check-format demo bench deps format clean help fuzz fuzz-build fuzz-deps hylcmat install uninstall
 all: lib hylcmat apps tests benches examples
 lib: $(LIB) $(SOLIB)
 apps: $(APPS)
@@ -113,8 +122,9 @@ HYLC_SOVERSION    := 1
 HYLCMAT_SOVERSION := 1
 HM_CC      ?= cc
 HM_CFLAGS  ?= -O2 -g
-HM_SRC     := $(sort $(wildcard src/hylcmat/*.c))
-HM_OBJ     := $(HM_SRC:src/hylcmat/%.c=$(BUILD)/hylcmat/%.o)
+# PETSc-free sources of src/sys shared with libhylc: the JSON reader, and the HDF5 helpers with HDF5
+HM_SRC     := $(sort $(wildcard src/hylcmat/*.c)) src/sys/json.c $(if $(filter 1,$(HYLCMAT_WITH_HDF5)),src/sys/h5util.c)
+HM_OBJ     := $(HM_SRC:src/%.c=$(BUILD)/hylcmat/%.o)
 HM_LIBS    := -lm
 HYLCMAT_HDF5_PKG ?= hdf5-openmpi
 ifeq ($(HYLCMAT_WITH_HDF5),1)
@@ -125,7 +135,7 @@ HM_LIB     := $(BUILD)/libhylcmat.a
 HM_SOLIB   := $(BUILD)/libhylcmat.so
 hylcmat: $(HM_LIB) $(HM_SOLIB)
 
-$(BUILD)/hylcmat/%.o: src/hylcmat/%.c
+$(BUILD)/hylcmat/%.o: src/%.c
 	@mkdir -p $(@D)
 	@$(if $(Q),echo "  CC      $< (hylcmat)")
 	$(Q)$(HM_CC) $(HM_CFLAGS) -std=c99 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -pedantic -fPIC -fvisibility=default -Iinclude -MMD -MP -c $< -o $@
@@ -156,21 +166,28 @@ install: lib hylcmat apps
 	@PREFIX='$(PREFIX)' DESTDIR='$(DESTDIR)' DATADIR='$(DATADIR)' LIBDIR='$(LIBDIR)' INCDIR='$(INCDIR)' BINDIR='$(BINDIR)' \
 	  PCDIR='$(PCDIR)' DOCDIR='$(DOCDIR)' MANIFEST='$(MANIFEST)' BUILD='$(BUILD)' VERSION='$(HYLC_VERSION)' \
 	  HYLC_SOVERSION='$(HYLC_SOVERSION)' HYLCMAT_SOVERSION='$(HYLCMAT_SOVERSION)' \
-	  PC_REQUIRES='$(PKGS)' PC_LIBS_PRIVATE='-lmetis -lm' HM_LIBS='$(HM_LIBS)' \
+	  PC_REQUIRES='$(PKGS)' PC_LIBS_PRIVATE='-lmetis -llapack -lm' HM_LIBS='$(HM_LIBS)' \
 	  bash tools/install.sh install
 
 uninstall:
 	@PREFIX='$(PREFIX)' DESTDIR='$(DESTDIR)' MANIFEST='$(MANIFEST)' bash tools/install.sh uninstall
 
+# tests/support: reference code for the tests and benchmarks only (HylcTile), not in libhylc
+$(SUPPORT_LIB): $(SUPPORT_SRC:%.c=$(OBJ)/%.o)
+	@$(if $(Q),echo "  AR      $@")
+	$(Q)rm -f $@ && ar rcs $@ $^
+$(OBJ)/tests/%.o: CFLAGS += -Itests/support
+
+# link_rule,dir,srcdir[,extra archives]
 define link_rule
-$(BUILD)/$(1)/%: $(OBJ)/$(2)/%.o $(LIB)
+$(BUILD)/$(1)/%: $(OBJ)/$(2)/%.o $(3) $(LIB)
 	@mkdir -p $$(@D)
 	@$$(if $$(Q),echo "  LD      $$@")
-	$$(Q)$$(CC) $$(LDFLAGS) -o $$@ $$< $$(LIB) $$(LDLIBS)
+	$$(Q)$$(CC) $$(LDFLAGS) -o $$@ $$< $(3) $$(LIB) $$(LDLIBS)
 endef
 $(eval $(call link_rule,bin,src/apps))
-$(eval $(call link_rule,tests,tests/unit))
-$(eval $(call link_rule,bench,tests/bench))
+$(eval $(call link_rule,tests,tests/unit,$(SUPPORT_LIB)))
+$(eval $(call link_rule,bench,tests/bench,$(SUPPORT_LIB)))
 $(eval $(call link_rule,ex,examples))
 # the fuzz harnesses with a plain main (tests/fuzz/replay.c) for tests/regression/fuzz_regressions.sh
 $(BUILD)/fuzz/%: $(OBJ)/tests/fuzz/%.o $(OBJ)/tests/fuzz/replay.o $(LIB)
@@ -200,8 +217,20 @@ demo:
 bench: all
 	@bash tests/bench/run.sh
 
+# the tests in the COVERAGE=1 build (build-cov), then line coverage per stage (tools/coverage.sh)
+coverage:
+	@bash config/install-deps.sh
+	@$(MAKE) --no-print-directory COVERAGE=1 BUILD=build-cov all
+	@find build-cov -name '*.gcda' -delete
+	@st=0; BUILD=build-cov COVERAGE=1 bash tests/run.sh $(COVERAGE_TESTS) || st=$$?; BUILD=build-cov bash tools/coverage.sh; exit $$st
+
+FORMAT_SRC := $(wildcard include/*.h include/hylc/*.h include/hylc/private/*.h src/*/*.c src/hylcmat/*.h tests/*/*.c tests/*/*.h examples/*.c)
 format:
-	clang-format -i $(wildcard include/*.h include/hylc/*.h include/hylc/private/*.h src/*/*.c src/hylcmat/*.h tests/*/*.c tests/*/*.h examples/*.c)
+	clang-format -i $(FORMAT_SRC)
+
+check-format:
+	@command -v clang-format >/dev/null || { echo "check-format: clang-format is not installed (apt-get install clang-format)"; exit 1; }
+	@clang-format --dry-run -Werror $(FORMAT_SRC) && echo "check-format: $(words $(FORMAT_SRC)) files formatted"
 
 clean:
 	rm -rf $(BUILD)
@@ -241,7 +270,7 @@ fuzz: fuzz-build
 	@FUZZ_BUILD=$(FUZZ_BUILD) FUZZ_SECONDS=$(FUZZ_SECONDS) bash tests/fuzz/run.sh $(FUZZ_NAMES)
 
 help:
-	@sed -n '2,11p' Makefile
+	@sed -n '2,15p' Makefile
 
 -include $(ALL_OBJ:.o=.d)
 -include $(wildcard $(FUZZ_BUILD)/obj/*/*/*.d $(FUZZ_BUILD)/obj/tests/fuzz/*.d)

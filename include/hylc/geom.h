@@ -80,7 +80,8 @@ double HylcReferenceTwist(const double te[3], const double d1e[3], const double 
    parallel segments a valid minimizer is returned) and the distance. Robust for degenerate segments. */
 double HylcSegmentSegmentDistance(const double p0[3], const double p1[3], const double q0[3], const double q1[3], double *s, double *t);
 
-/* Inverse of a small dense m x m matrix A (row-major, overwritten) into Ainv by Gauss-Jordan elimination
-   with partial pivoting. Returns -1 - c if the pivot of column c falls below tol times the largest
-   |diagonal entry| of the input (numerically singular), else 0. */
+/* Inverse of a small dense m x m matrix A (row-major, overwritten: LAPACK's work array) into Ainv by
+   LAPACK's LU with partial pivoting (getrf, getri through petscblaslapack.h; general, not only SPD: the
+   micro solver's Schur matrix is not symmetric). Returns -1 - c if the pivot of column c falls below tol
+   times the largest |diagonal entry| of the input (numerically singular), -1 - m if out of memory, else 0. */
 int HylcDenseInverse(int m, double *A, double *Ainv, double tol);

@@ -18,7 +18,6 @@
 #include <hylc/pattern.h>
 #include <hylc/yarn.h>
 #include <hylc/macro.h>
-#include <hylc/tile.h>
 #include <petscmat.h>
 
 typedef struct _p_HylcPeriodic *HylcPeriodic;

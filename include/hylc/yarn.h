@@ -34,3 +34,13 @@ PETSC_EXTERN PetscErrorCode HylcYarnModelSetFromOptions(MPI_Comm, const char[], 
 /* Constants for a pattern radius r (the override applies when set). Not collective. */
 PETSC_EXTERN PetscErrorCode HylcYarnModelGetConstants(const HylcYarnModel *, PetscReal, HylcYarnConstants *);
 PETSC_EXTERN PetscErrorCode HylcYarnModelView(const HylcYarnModel *, PetscReal, PetscViewer);
+
+/* the energy parts of a yarn tile (stretch, bend, twist, contact), also a mask of the terms to evaluate
+   (HylcPeriodicEvaluate; the reference HylcTile of tests/support) */
+enum {
+  HYLC_TERM_STRETCH = 1,
+  HYLC_TERM_BEND    = 2,
+  HYLC_TERM_TWIST   = 4,
+  HYLC_TERM_CONTACT = 8,
+  HYLC_TERM_ALL     = 15
+};

@@ -1,4 +1,7 @@
 #include <hylc/geom.h>
+#include <petscsys.h>
+#include <petscblaslapack.h>
+#include <stdlib.h>
 
 int HylcParallelTransport(const double a[3], const double b[3], const double v[3], double out[3])
 {
@@ -144,35 +147,33 @@ double HylcSegmentSegmentDistance(const double p0[3], const double p1[3], const 
 
 int HylcDenseInverse(int m, double *A, double *Ainv, double tol)
 {
-  double dmax = 0;
-  for (int i = 0; i < m; i++) dmax = fmax(dmax, fabs(A[i * m + i]));
-  for (int i = 0; i < m * m; i++) Ainv[i] = (i % (m + 1) == 0);
-  for (int c = 0; c < m; c++) {
-    int piv = c;
-    for (int r = c + 1; r < m; r++)
-      if (fabs(A[r * m + c]) > fabs(A[piv * m + c])) piv = r;
-    if (!(fabs(A[piv * m + c]) > tol * dmax)) return -1 - c;
-    for (int k = 0; k < m; k++) {
-      double t          = A[c * m + k];
-      A[c * m + k]      = A[piv * m + k];
-      A[piv * m + k]    = t;
-      t                 = Ainv[c * m + k];
-      Ainv[c * m + k]   = Ainv[piv * m + k];
-      Ainv[piv * m + k] = t;
-    }
-    const double d = 1 / A[c * m + c];
-    for (int k = 0; k < m; k++) {
-      A[c * m + k] *= d;
-      Ainv[c * m + k] *= d;
-    }
-    for (int r = 0; r < m; r++) {
-      if (r == c) continue;
-      const double f = A[r * m + c];
-      for (int k = 0; k < m; k++) {
-        A[r * m + k] -= f * A[c * m + k];
-        Ainv[r * m + k] -= f * Ainv[c * m + k];
-      }
-    }
+  const PetscBLASInt n = (PetscBLASInt)m, lwork = (PetscBLASInt)(m * m);
+  PetscBLASInt       info = 0, *ipiv;
+  double             dmax = 0;
+  int                r;
+
+  if (m <= 0) return 0;
+  if (!(ipiv = malloc(sizeof(PetscBLASInt) * (size_t)m))) return -1 - m;
+  /* Ainv = A in LAPACK's column-major order, so that the row pivots are those of A */
+  for (int i = 0; i < m; i++) {
+    dmax = fmax(dmax, fabs(A[i * m + i]));
+    for (int j = 0; j < m; j++) Ainv[j * m + i] = A[i * m + j];
   }
+  LAPACKgetrf_(&n, &n, Ainv, &n, ipiv, &info);
+  r = info < 0 ? -1 : 0;
+  for (int c = 0; c < m && !r; c++) /* the first pivot below tol (also NaN) */
+    if (!(fabs(Ainv[c * m + c]) > tol * dmax)) r = -1 - c;
+  if (!r) {
+    LAPACKgetri_(&n, Ainv, &n, ipiv, A, &lwork, &info); /* A is the work array */
+    if (info) r = info > 0 ? -(int)info : -1;           /* info > 0: pivot info - 1 is zero */
+  }
+  free(ipiv);
+  if (r) return r;
+  for (int i = 0; i < m; i++) /* back to row-major */
+    for (int j = i + 1; j < m; j++) {
+      const double t  = Ainv[i * m + j];
+      Ainv[i * m + j] = Ainv[j * m + i];
+      Ainv[j * m + i] = t;
+    }
   return 0;
 }

@@ -1,6 +1,7 @@
 /* hylcmat: the table (create, free, validated setters, getters), names, errors, file dispatch (JSON or
    HDF5 by content) and Python's repr() of doubles. Plain C99 + POSIX stat; no global state. */
 #include "hylcmatimpl.h"
+#include <hylc/private/json.h>
 #include <errno.h>
 #include <math.h>
 #include <stdarg.h>
@@ -490,98 +491,7 @@ int hylcmat_load(const char *path, hylcmat **m, char *err, size_t errlen)
   return r;
 }
 
-/* ------------------------------------------------------------------------------------------------ */
-/* Python repr() of doubles                                                                           */
-/* ------------------------------------------------------------------------------------------------ */
-
-/* mantissa digits of "%.*e" output: the sign, the digits without the point, the exponent */
-static void SplitE(const char *e, int *neg, char digits[24], int *exp10)
-{
-  int k = 0;
-
-  *neg = (*e == '-');
-  if (*e == '-' || *e == '+') e++;
-  for (; *e && *e != 'e'; e++)
-    if (*e != '.') digits[k++] = *e;
-  digits[k] = 0;
-  *exp10    = *e ? atoi(e + 1) : 0;
-}
-
-/* adds delta (+1 or -1) to the last digit of a digit string; 0 if the number of digits would change */
-static int StepDigits(char digits[24], int delta)
-{
-  int i = (int)strlen(digits) - 1;
-
-  for (; i >= 0; i--) {
-    int d = digits[i] - '0' + delta;
-    if (d >= 0 && d <= 9) {
-      digits[i] = (char)('0' + d);
-      break;
-    }
-    digits[i] = delta > 0 ? '0' : '9';
-  }
-  return i >= 0 && digits[0] != '0';
-}
-
-static double FromDigits(int neg, const char digits[], int exp10)
-{
-  char s[48];
-  snprintf(s, sizeof(s), "%s%c.%se%d", neg ? "-" : "", digits[0], digits + 1, exp10);
-  return strtod(s, NULL);
-}
-
 const char *hylcmat_format_double(double x, char buf[32])
 {
-  char digits[24] = "", e[40];
-  int  neg = 0, exp10 = 0, nd, found = 0;
-
-  if (isnan(x)) return strcpy(buf, "NaN");
-  if (isinf(x)) return strcpy(buf, x > 0 ? "Infinity" : "-Infinity");
-  if (x == 0) return strcpy(buf, signbit(x) ? "-0.0" : "0.0");
-  /* the shortest digit string that reads back as x; among those of that length, the closest to x (the
-     correctly rounded one, or when that one does not read back, its neighbour that does) */
-  for (int p = 1; p <= 17 && !found; p++) {
-    snprintf(e, sizeof(e), "%.*e", p - 1, x);
-    SplitE(e, &neg, digits, &exp10);
-    if (strtod(e, NULL) == x) found = 1;
-    for (int delta = -1; delta <= 1 && !found && p < 17; delta += 2) {
-      char alt[24];
-      strcpy(alt, digits);
-      if (StepDigits(alt, delta) && FromDigits(neg, alt, exp10) == x) {
-        strcpy(digits, alt);
-        found = 1;
-      }
-    }
-  }
-  nd = (int)strlen(digits);
-  while (nd > 1 && digits[nd - 1] == '0') digits[--nd] = 0;
-  {
-    char *o = buf;
-    if (neg) *o++ = '-';
-    if (exp10 < -4 || exp10 >= 16) { /* d[.ddd]e-XX */
-      char ex[16];
-      *o++ = digits[0];
-      if (nd > 1) {
-        *o++ = '.';
-        for (int i = 1; i < nd; i++) *o++ = digits[i];
-      }
-      snprintf(ex, sizeof(ex), "e%c%02d", exp10 < 0 ? '-' : '+', exp10 < 0 ? -exp10 : exp10);
-      strcpy(o, ex);
-    } else if (exp10 < 0) { /* 0.000ddd */
-      *o++ = '0';
-      *o++ = '.';
-      for (int i = 0; i < -exp10 - 1; i++) *o++ = '0';
-      for (int i = 0; i < nd; i++) *o++ = digits[i];
-      *o = 0;
-    } else { /* ddd.ddd, with ".0" for integral values */
-      for (int i = 0; i <= exp10; i++) *o++ = i < nd ? digits[i] : '0';
-      *o++ = '.';
-      if (nd > exp10 + 1)
-        for (int i = exp10 + 1; i < nd; i++) *o++ = digits[i];
-      else
-        *o++ = '0';
-      *o = 0;
-    }
-  }
-  return buf;
+  return HylcJsonFormatDouble(x, buf);
 }

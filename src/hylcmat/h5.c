@@ -10,19 +10,9 @@
 #  include <string.h>
 
 /* CallH5(call): a negative return of a raw HDF5 call becomes an error naming the call and the file (d) */
-#  define CallH5(...)                                                                                         \
-    do {                                                                                                      \
-      if ((__VA_ARGS__) < 0) {                                                                                \
-        char h5msg_[256];                                                                                     \
-        HylcH5ErrorText(h5msg_);                                                                              \
-        return hm_fail(d->E, HYLCMAT_ERR_HDF5, "HDF5 call %s failed on %s%s", #__VA_ARGS__, d->name, h5msg_); \
-      }                                                                                                       \
-    } while (0)
-#  define CallH5Id(id, ...) \
-    do {                    \
-      (id) = (__VA_ARGS__); \
-      CallH5(id);           \
-    } while (0)
+#  define H5Fail_(call)     return hm_fail(d->E, HYLCMAT_ERR_HDF5, "HDF5 call %s failed on %s%s", call, d->name, hylc_h5msg_)
+#  define CallH5(...)       HYLC_H5_CHECK_(H5Fail_(#  __VA_ARGS__), __VA_ARGS__)
+#  define CallH5Id(id, ...) HYLC_H5_CHECK_ID_(H5Fail_(#  __VA_ARGS__), id, __VA_ARGS__)
 
 static int Exists(const hm_doc *d, hid_t loc, const char path[], const char name[], int required, int *has)
 {
@@ -147,6 +137,18 @@ static int CheckMembers(const hm_doc *d, hid_t g, const char path[], int nnames,
   return HYLCMAT_OK;
 }
 
+/* the group name of parent (at path dir) if present (*has): opened in *g, its path in path[64]; with
+   nnames > 0, every member must be one of names[] */
+static int OpenGroup(const hm_doc *d, hid_t parent, const char dir[], const char name[], int nnames, const char *const names[], char path[64], hid_t *g, int *has)
+{
+  HM_CALL(Exists(d, parent, dir, name, 0, has));
+  if (!*has) return HYLCMAT_OK;
+  snprintf(path, 64, "%s%s/", dir, name);
+  CallH5Id(*g, H5Gopen2(parent, name, H5P_DEFAULT));
+  if (nnames) HM_CALL(CheckMembers(d, *g, path, nnames, names));
+  return HYLCMAT_OK;
+}
+
 static int ReadExt(const hm_doc *d, hid_t g, const char path[], int *ext)
 {
   long long e;
@@ -159,7 +161,7 @@ static int ReadExt(const hm_doc *d, hid_t g, const char path[], int *ext)
 
 static int ReadContents(hm_doc *d, hid_t file)
 {
-  char                     fmt[64];
+  char                     fmt[64], gpath[64];
   long long                version, v;
   hsize_t                  dim5 = 5;
   double                  *buf;
@@ -190,18 +192,14 @@ static int ReadContents(hm_doc *d, hid_t file)
   HM_CALL(Exists(d, file, "/", "strain_shift", 0, &has));
   if (has) HM_CALL(ReadData(d, file, "/", "strain_shift", 1, &dim5, NULL, d->shift));
 
-  HM_CALL(Exists(d, file, "/", "1D", 0, &has));
+  HM_CALL(OpenGroup(d, file, "/", "1D", HYLCMAT_N1D, HylcmatNames1D, gpath, &g1, &has));
   if (has) {
-    CallH5Id(g1, H5Gopen2(file, "1D", H5P_DEFAULT));
-    HM_CALL(CheckMembers(d, g1, "/1D/", HYLCMAT_N1D, HylcmatNames1D));
     for (int k = 0; k < HYLCMAT_N1D; k++) {
       hylcmat_term1d *s = &d->s1[d->n1];
       char            path[64];
       hsize_t         n = 0;
-      HM_CALL(Exists(d, g1, "/1D/", HylcmatNames1D[k], 0, &has));
+      HM_CALL(OpenGroup(d, g1, gpath, HylcmatNames1D[k], 0, NULL, path, &g, &has));
       if (!has) continue;
-      snprintf(path, sizeof(path), "/1D/%s/", HylcmatNames1D[k]);
-      CallH5Id(g, H5Gopen2(g1, HylcmatNames1D[k], H5P_DEFAULT));
       HM_CALL(ReadAttrLong(d, g, path, "k", &v));
       HM_CHECK(v == k, d->E, HYLCMAT_ERR_CONTENT, "%s: %s@k = %lld, expected %d", d->name, path, v, (int)k);
       s->k = k;
@@ -215,19 +213,15 @@ static int ReadContents(hm_doc *d, hid_t file)
     }
     CallH5(H5Gclose(g1));
   }
-  HM_CALL(Exists(d, file, "/", "2D", 0, &has));
+  HM_CALL(OpenGroup(d, file, "/", "2D", HYLCMAT_N2D, HylcmatNames2D, gpath, &g2, &has));
   if (has) {
-    CallH5Id(g2, H5Gopen2(file, "2D", H5P_DEFAULT));
-    HM_CALL(CheckMembers(d, g2, "/2D/", HYLCMAT_N2D, HylcmatNames2D));
     for (int q = 0; q < HYLCMAT_N2D; q++) {
       hylcmat_term2d *s = &d->s2[d->n2];
       char            path[64];
       hsize_t         nu = 0, nv = 0, dims[2];
       long long       k1;
-      HM_CALL(Exists(d, g2, "/2D/", HylcmatNames2D[q], 0, &has));
+      HM_CALL(OpenGroup(d, g2, gpath, HylcmatNames2D[q], 0, NULL, path, &g, &has));
       if (!has) continue;
-      snprintf(path, sizeof(path), "/2D/%s/", HylcmatNames2D[q]);
-      CallH5Id(g, H5Gopen2(g2, HylcmatNames2D[q], H5P_DEFAULT));
       HM_CALL(ReadAttrLong(d, g, path, "k0", &v));
       HM_CALL(ReadAttrLong(d, g, path, "k1", &k1));
       HM_CHECK(v == HylcmatPairs[q][0] && k1 == HylcmatPairs[q][1], d->E, HYLCMAT_ERR_CONTENT, "%s: %s has (k0, k1) = (%lld, %lld), expected (%d, %d)", d->name, path, v, k1, (int)HylcmatPairs[q][0], (int)HylcmatPairs[q][1]);
@@ -254,32 +248,23 @@ static int ReadContents(hm_doc *d, hid_t file)
 
 int hm_parse_hdf5(const char *name, const void *image, size_t len, hm_err *E, hylcmat **m)
 {
-  hid_t       fapl, file;
-  H5E_auto2_t efunc;
-  void       *edata;
+  hid_t       file;
+  HylcH5Quiet quiet;
   hm_doc      d;
   int         ierr;
 
   hm_doc_init(&d, name, E);
-  H5Eget_auto2(H5E_DEFAULT, &efunc, &edata);
-  H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
-  fapl = H5Pcreate(H5P_FILE_ACCESS);
-  if (fapl >= 0 && (H5Pset_fapl_core(fapl, 1 << 16, 0) < 0 || H5Pset_file_image(fapl, (void *)image, len) < 0 || H5Pset_fclose_degree(fapl, H5F_CLOSE_STRONG) < 0)) {
-    H5Pclose(fapl);
-    fapl = -1;
-  }
-  file = fapl >= 0 ? H5Fopen(HYLC_H5_IMAGE_NAME, H5F_ACC_RDONLY, fapl) : -1;
+  HylcH5QuietBegin(&quiet);
+  file = HylcH5ImageOpen(HYLC_H5_IMAGE_NAME, image, len);
   if (file < 0) {
     char msg[256];
     HylcH5ErrorText(msg);
-    if (fapl >= 0) H5Pclose(fapl);
-    H5Eset_auto2(H5E_DEFAULT, efunc, edata);
+    HylcH5QuietEnd(&quiet);
     return hm_fail(E, HYLCMAT_ERR_READ, "%s: cannot open as HDF5 (damaged or truncated file?)%s", name, msg);
   }
   ierr = ReadContents(&d, file);
   H5Fclose(file);
-  H5Pclose(fapl);
-  H5Eset_auto2(H5E_DEFAULT, efunc, edata);
+  HylcH5QuietEnd(&quiet);
   if (ierr) {
     hm_doc_free(&d);
     return ierr;

@@ -7,74 +7,14 @@
 #include <time.h>
 #include <unistd.h>
 
-/* what the HDF5 calls work on, for messages */
-#define H5File "the in-memory HDF5 image"
+/* what the HDF5 calls work on, for HylcCallHDF5's messages */
+#define HylcH5Where "the in-memory HDF5 image"
 
-/* CallH5(call): a negative return of a raw HDF5 call becomes a PETSc error naming the call and the file */
-#define CallH5(...)                                                                                         \
-  do {                                                                                                      \
-    if ((__VA_ARGS__) < 0) {                                                                                \
-      char h5msg_[256];                                                                                     \
-      HylcH5ErrorText(h5msg_);                                                                              \
-      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5 call %s failed on %s%s", #__VA_ARGS__, H5File, h5msg_); \
-    }                                                                                                       \
-  } while (0)
-#define CallH5Id(id, ...) \
-  do {                    \
-    (id) = (__VA_ARGS__); \
-    CallH5(id);           \
-  } while (0)
-
-/* ------------------------------------------------------------------------------------------------ */
-/* Writing                                                                                            */
-/* ------------------------------------------------------------------------------------------------ */
-
-static PetscErrorCode AttrString(hid_t loc, const char name[], const char value[])
-{
-  hid_t t, s, a;
-
-  PetscFunctionBegin;
-  CallH5Id(t, H5Tcopy(H5T_C_S1));
-  CallH5(H5Tset_size(t, H5T_VARIABLE));
-  CallH5(H5Tset_cset(t, H5T_CSET_UTF8));
-  CallH5Id(s, H5Screate(H5S_SCALAR));
-  CallH5Id(a, H5Acreate2(loc, name, t, s, H5P_DEFAULT, H5P_DEFAULT));
-  CallH5(H5Awrite(a, t, &value));
-  CallH5(H5Aclose(a));
-  CallH5(H5Sclose(s));
-  CallH5(H5Tclose(t));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-static PetscErrorCode AttrLong(hid_t loc, const char name[], long long v)
-{
-  hid_t s, a;
-
-  PetscFunctionBegin;
-  CallH5Id(s, H5Screate(H5S_SCALAR));
-  CallH5Id(a, H5Acreate2(loc, name, H5T_STD_I64LE, s, H5P_DEFAULT, H5P_DEFAULT));
-  CallH5(H5Awrite(a, H5T_NATIVE_LLONG, &v));
-  CallH5(H5Aclose(a));
-  CallH5(H5Sclose(s));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* a dataset of doubles (or int32 if ints) of rank 0 (dims NULL), 1 or 2, with units and description */
+/* a dataset of doubles (dv) or int32 (iv) of rank 0 (dims NULL), 1 or 2, with units and description */
 static PetscErrorCode Dataset(hid_t loc, const char name[], int rank, const hsize_t dims[], const double *dv, const int *iv, const char units[], const char description[])
 {
-  hid_t s, d;
-
   PetscFunctionBegin;
-  if (rank)
-    CallH5Id(s, H5Screate_simple(rank, dims, NULL));
-  else
-    CallH5Id(s, H5Screate(H5S_SCALAR));
-  CallH5Id(d, H5Dcreate2(loc, name, iv ? H5T_STD_I32LE : H5T_IEEE_F64LE, s, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
-  CallH5(H5Dwrite(d, iv ? H5T_NATIVE_INT : H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, iv ? (const void *)iv : (const void *)dv));
-  PetscCall(AttrString(d, "units", units));
-  PetscCall(AttrString(d, "description", description));
-  CallH5(H5Dclose(d));
-  CallH5(H5Sclose(s));
+  HylcCallHDF5(HylcH5WriteDataset(loc, name, rank, dims, iv ? H5T_NATIVE_INT : H5T_NATIVE_DOUBLE, iv ? (const void *)iv : (const void *)dv, units, description));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -97,18 +37,18 @@ static PetscErrorCode WriteContents(hid_t file, HylcMaterial m, const char optio
   gmtime_r(&now, &tm);
   strftime(date, sizeof(date), "%Y-%m-%dT%H:%M:%SZ", &tm);
   PetscCall(PetscGetVersion(petscv, sizeof(petscv)));
-  CallH5(H5get_libversion(&maj, &min, &rel));
+  HylcCallHDF5(H5get_libversion(&maj, &min, &rel));
   snprintf(h5v, sizeof(h5v), "%u.%u.%u", maj, min, rel);
   if (!optionsText) PetscCall(PetscOptionsGetAll(NULL, &allopts));
-  PetscCall(AttrString(file, "format", HYLC_MATERIAL_FORMAT));
-  PetscCall(AttrLong(file, "format_version", HYLC_MATERIAL_FORMAT_VERSION));
-  PetscCall(AttrString(file, "description", "Homogenized yarn-level cloth material: Psi(s) = constant + 1D terms f_k(s_k / sigma_k) + 2D terms f_k0k1(s_k0 / sigma_k0, s_k1 / sigma_k1), cubic/bicubic Hermite splines in normalized strains, bending terms split over the eigenvalues of II (docs/material.md). Equivalent to the ARCSim-HYLC JSON."));
-  PetscCall(AttrString(file, "hylc_version", HYLC_VERSION_STRING));
-  PetscCall(AttrString(file, "petsc_version", petscv));
-  PetscCall(AttrString(file, "hdf5_version", h5v));
-  PetscCall(AttrString(file, "creation_date", date));
-  PetscCall(AttrString(file, "source", m->source));
-  PetscCall(AttrString(file, "options", optionsText ? optionsText : (allopts ? allopts : "")));
+  HylcCallHDF5(HylcH5WriteAttrString(file, "format", HYLC_MATERIAL_FORMAT));
+  HylcCallHDF5(HylcH5WriteAttrLong(file, "format_version", HYLC_MATERIAL_FORMAT_VERSION));
+  HylcCallHDF5(HylcH5WriteAttrString(file, "description", "Homogenized yarn-level cloth material: Psi(s) = constant + 1D terms f_k(s_k / sigma_k) + 2D terms f_k0k1(s_k0 / sigma_k0, s_k1 / sigma_k1), cubic/bicubic Hermite splines in normalized strains, bending terms split over the eigenvalues of II (docs/material.md). Equivalent to the ARCSim-HYLC JSON."));
+  HylcCallHDF5(HylcH5WriteAttrString(file, "hylc_version", HYLC_VERSION_STRING));
+  HylcCallHDF5(HylcH5WriteAttrString(file, "petsc_version", petscv));
+  HylcCallHDF5(HylcH5WriteAttrString(file, "hdf5_version", h5v));
+  HylcCallHDF5(HylcH5WriteAttrString(file, "creation_date", date));
+  HylcCallHDF5(HylcH5WriteAttrString(file, "source", m->source));
+  HylcCallHDF5(HylcH5WriteAttrString(file, "options", optionsText ? optionsText : (allopts ? allopts : "")));
   PetscCall(PetscFree(allopts));
 
   for (int k = 0; k < 5; k++) {
@@ -124,28 +64,28 @@ static PetscErrorCode WriteContents(hid_t file, HylcMaterial m, const char optio
   PetscCall(Dataset(file, "strain_scale", 1, &dim5, scale, NULL, "1, 1, 1, 1/m, 1/m", "normalization sigma_k of the coordinates sx, sa, sy, x-bending, y-bending: the spline abscissae are s_k / sigma_k"));
   PetscCall(Dataset(file, "strain_shift", 1, &dim5, NULL, shift, "1", "the JSON's informational 'strain shift' (1,0,1,0,0: sx and sy are 0-centred stretches); not used by the evaluator"));
 
-  CallH5Id(g1, H5Gcreate2(file, "1D", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
-  PetscCall(AttrString(g1, "description", "one-dimensional terms f_k(x), x = s_k / sigma_k, one group per term present: cubic Hermite spline with knots t, values p, slopes m = df/dx"));
+  HylcCallHDF5Id(g1, H5Gcreate2(file, "1D", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+  HylcCallHDF5(HylcH5WriteAttrString(g1, "description", "one-dimensional terms f_k(x), x = s_k / sigma_k, one group per term present: cubic Hermite spline with knots t, values p, slopes m = df/dx"));
   for (PetscInt k = 0; k < HYLC_MATERIAL_N1D; k++) {
     const HylcSpline1D *s = &m->t1[k];
     hsize_t             n;
     if (!m->has1[k]) continue;
     n = (hsize_t)s->n;
-    CallH5Id(g, H5Gcreate2(g1, HylcMaterialTermNames1D[k], H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+    HylcCallHDF5Id(g, H5Gcreate2(g1, HylcMaterialTermNames1D[k], H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
     snprintf(desc, sizeof(desc), "f_%d(x) of the coordinate %s, x = s / %.17g", (int)k, coordinate[k], scale[k]);
-    PetscCall(AttrString(g, "description", desc));
-    PetscCall(AttrLong(g, "k", (long long)k));
-    PetscCall(AttrLong(g, "ext", (long long)s->ext));
-    PetscCall(AttrString(g, "extrapolation", ExtNames[s->ext]));
+    HylcCallHDF5(HylcH5WriteAttrString(g, "description", desc));
+    HylcCallHDF5(HylcH5WriteAttrLong(g, "k", (long long)k));
+    HylcCallHDF5(HylcH5WriteAttrLong(g, "ext", (long long)s->ext));
+    HylcCallHDF5(HylcH5WriteAttrString(g, "extrapolation", ExtNames[s->ext]));
     PetscCall(Dataset(g, "t", 1, &n, s->t, NULL, "1", "knots (normalized strain), strictly increasing"));
     PetscCall(Dataset(g, "p", 1, &n, s->p, NULL, "J/m^2", "values at the knots"));
     PetscCall(Dataset(g, "m", 1, &n, s->m, NULL, "J/m^2", "slopes df/dx at the knots (per unit normalized strain)"));
-    CallH5(H5Gclose(g));
+    HylcCallHDF5(H5Gclose(g));
   }
-  CallH5(H5Gclose(g1));
+  HylcCallHDF5(H5Gclose(g1));
 
-  CallH5Id(g2, H5Gcreate2(file, "2D", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
-  PetscCall(AttrString(g2, "description", "two-dimensional terms f_k0k1(u, v), u = s_k0 / sigma_k0, v = s_k1 / sigma_k1, one group per term present: bicubic Hermite spline with knots tu, tv and node arrays of shape (len(tv), len(tu)): p[iv, iu] is the value at (tu[iu], tv[iv])"));
+  HylcCallHDF5Id(g2, H5Gcreate2(file, "2D", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+  HylcCallHDF5(HylcH5WriteAttrString(g2, "description", "two-dimensional terms f_k0k1(u, v), u = s_k0 / sigma_k0, v = s_k1 / sigma_k1, one group per term present: bicubic Hermite spline with knots tu, tv and node arrays of shape (len(tv), len(tu)): p[iv, iu] is the value at (tu[iu], tv[iv])"));
   for (PetscInt q = 0; q < HYLC_MATERIAL_N2D; q++) {
     const HylcSpline2D *s = &m->t2[q];
     hsize_t             nu, nv, dims[2];
@@ -154,60 +94,51 @@ static PetscErrorCode WriteContents(hid_t file, HylcMaterial m, const char optio
     nv      = (hsize_t)s->nv;
     dims[0] = nv;
     dims[1] = nu;
-    CallH5Id(g, H5Gcreate2(g2, HylcMaterialTermNames2D[q], H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+    HylcCallHDF5Id(g, H5Gcreate2(g2, HylcMaterialTermNames2D[q], H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
     snprintf(desc, sizeof(desc), "f_%d%d(u, v) of the coordinates u = %s / %.17g and v = %s / %.17g", (int)s->k0, (int)s->k1, coordinate[s->k0], scale[s->k0], coordinate[s->k1], scale[s->k1]);
-    PetscCall(AttrString(g, "description", desc));
-    PetscCall(AttrLong(g, "k0", (long long)s->k0));
-    PetscCall(AttrLong(g, "k1", (long long)s->k1));
-    PetscCall(AttrLong(g, "ext", (long long)s->ext));
-    PetscCall(AttrString(g, "extrapolation", ExtNames[s->ext]));
+    HylcCallHDF5(HylcH5WriteAttrString(g, "description", desc));
+    HylcCallHDF5(HylcH5WriteAttrLong(g, "k0", (long long)s->k0));
+    HylcCallHDF5(HylcH5WriteAttrLong(g, "k1", (long long)s->k1));
+    HylcCallHDF5(HylcH5WriteAttrLong(g, "ext", (long long)s->ext));
+    HylcCallHDF5(HylcH5WriteAttrString(g, "extrapolation", ExtNames[s->ext]));
     PetscCall(Dataset(g, "tu", 1, &nu, s->tu, NULL, "1", "knots of u (normalized strain k0), strictly increasing"));
     PetscCall(Dataset(g, "tv", 1, &nv, s->tv, NULL, "1", "knots of v (normalized strain k1), strictly increasing"));
     PetscCall(Dataset(g, "p", 2, dims, s->p, NULL, "J/m^2", "values at the nodes, p[iv, iu] at (tu[iu], tv[iv])"));
     PetscCall(Dataset(g, "mu", 2, dims, s->mu, NULL, "J/m^2", "df/du at the nodes"));
     PetscCall(Dataset(g, "mv", 2, dims, s->mv, NULL, "J/m^2", "df/dv at the nodes"));
     PetscCall(Dataset(g, "muv", 2, dims, s->muv, NULL, "J/m^2", "d2f/dudv at the nodes"));
-    CallH5(H5Gclose(g));
+    HylcCallHDF5(H5Gclose(g));
   }
-  CallH5(H5Gclose(g2));
+  HylcCallHDF5(H5Gclose(g2));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode HylcMaterialFormatHDF5_Private(HylcMaterial m, const char optionsText[], void **image, size_t *len)
 {
-  hid_t          fapl, file;
+  hid_t          file;
   ssize_t        size = -1;
-  H5E_auto2_t    efunc;
-  void          *edata;
+  HylcH5Quiet    quiet;
   PetscErrorCode ierr;
 
   PetscFunctionBegin;
   *image = NULL;
   *len   = 0;
-  H5Eget_auto2(H5E_DEFAULT, &efunc, &edata);
-  H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
-  fapl = H5Pcreate(H5P_FILE_ACCESS);
-  if (fapl >= 0 && (H5Pset_fapl_core(fapl, 1 << 16, 0) < 0 || H5Pset_fclose_degree(fapl, H5F_CLOSE_STRONG) < 0)) {
-    H5Pclose(fapl);
-    fapl = -1;
-  }
-  file = fapl >= 0 ? H5Fcreate(HYLC_H5_IMAGE_NAME, H5F_ACC_TRUNC, H5P_DEFAULT, fapl) : -1;
+  HylcH5QuietBegin(&quiet);
+  file = HylcH5ImageCreate(HYLC_H5_IMAGE_NAME, 1 << 16);
   if (file < 0) {
     char msg[256];
     HylcH5ErrorText(msg);
-    if (fapl >= 0) H5Pclose(fapl);
-    H5Eset_auto2(H5E_DEFAULT, efunc, edata);
+    HylcH5QuietEnd(&quiet);
     SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "Cannot create an in-memory HDF5 file%s", msg);
   }
   ierr = WriteContents(file, m, optionsText);
-  if (!ierr && H5Fflush(file, H5F_SCOPE_GLOBAL) >= 0) size = H5Fget_file_image(file, NULL, 0);
+  if (!ierr) size = HylcH5ImageSize(file);
   if (!ierr && size > 0) {
     ierr = PetscMalloc(size, image);
     if (!ierr && H5Fget_file_image(file, *image, (size_t)size) != size) size = -1;
   }
   H5Fclose(file);
-  H5Pclose(fapl);
-  H5Eset_auto2(H5E_DEFAULT, efunc, edata);
+  HylcH5QuietEnd(&quiet);
   if (!ierr && size <= 0) {
     PetscCall(PetscFree(*image));
     SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "Cannot get the image of the in-memory HDF5 file");

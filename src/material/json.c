@@ -2,6 +2,7 @@
    byte-identical to python's json.dumps(d, indent=2), doubles as Python's repr() (hylcmat_format_double).
    The reader (strict parser and schema) is hylcmat's: src/hylcmat/json.c. */
 #include <hylc/private/materialimpl.h>
+#include <hylc/private/json.h>
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
@@ -10,7 +11,7 @@
 
 const char *HylcFormatDoubleRepr(double x, char buf[32])
 {
-  return hylcmat_format_double(x, buf);
+  return HylcJsonFormatDouble(x, buf);
 }
 
 /* ------------------------------------------------------------------------------------------------ */

@@ -1,7 +1,7 @@
 /* Benchmark: one full energy + gradient + Hessian evaluation of the paper's stockinette and rib tiles
    (HylcTile: stretch, bend, twist, quadrature contact with 4x4 points, broadphase, COO assembly), and
    the broadphase's speed-up over brute force on the tile with its periodic copies. Prints its figures. */
-#include <hylc/tile.h>
+#include "tile.h"
 #include <hylc/contact.h>
 #include <petsctime.h>
 

@@ -11,6 +11,7 @@ command -v pkg-config >/dev/null || { echo "SKIP: no pkg-config"; exit 77; }
 prefix=$HYLC_TMP/prefix
 build=${BUILD:-build}
 asanflag=(); [ "${HYLC_ASAN:-0}" = 1 ] && asanflag=(ASAN=1)
+[ "${COVERAGE:-0}" = 1 ] && asanflag=(COVERAGE=1) # make coverage: the build-cov objects are instrumented
 mk() { make -C "$top" --no-print-directory BUILD="$build" "${asanflag[@]}" "$@"; }
 
 mk install PREFIX="$prefix" >install.log 2>&1 || { cat install.log; die "make install failed"; }
@@ -56,6 +57,7 @@ echo "eval_material: same output as hylc-eval (${#mats[@]} tables)"
 # under make test ASAN=1 the installed libhylc is sanitized: its programs link the sanitizer runtime too
 san=()
 [ "${HYLC_ASAN:-0}" = 1 ] && san=(-fsanitize=address,undefined)
+[ "${COVERAGE:-0}" = 1 ] && san=(--coverage)
 cc -O2 "${san[@]}" "$top/examples/solve_sample.c" $(pkg-config --cflags --libs hylc) -o solve_sample 2>cc2.log || { cat cc2.log; die "solve_sample does not build with pkg-config hylc"; }
 LD_LIBRARY_PATH=$prefix/lib ldd ./solve_sample | grep -q "libhylc.so.1 => $prefix/lib/" || die "solve_sample does not use the installed libhylc"
 LD_LIBRARY_PATH=$prefix/lib ./solve_sample -pattern_type stockinette -strain 0.05,0,0,0,0,0 >solve.txt 2>&1 || { cat solve.txt; die "solve_sample failed"; }

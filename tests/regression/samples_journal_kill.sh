@@ -9,7 +9,7 @@ die() { echo "FAIL: $*"; exit 1; }
 [ -x "$exe" ] || die "missing $exe (run make)"
 
 for round in 1 2 3 4; do
-  rm -f kill.journal
+  rm -f kill.journal writer.txt # a stale "started" of the last round would race the new redirection
   "$exe" -test_journal_writer kill.journal >writer.txt 2>&1 &
   pid=$!
   for _ in $(seq 400); do grep -q started writer.txt && break; sleep 0.05; done

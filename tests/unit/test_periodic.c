@@ -9,6 +9,7 @@
    - straight yarns (one, two parallel, two crossing families, diagonal): with every slide variant the rows
      that repeat the translation (or each other) are dropped, flat, sheared and bent. */
 #include <hylc/periodic.h>
+#include "tile.h"
 #include "hylctest.h"
 
 static PetscErrorCode Perturb(PetscInt n, PetscReal q[], PetscReal amp, PetscReal tamp, unsigned long long *st)

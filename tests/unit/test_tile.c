@@ -1,7 +1,7 @@
 /* HylcTile: finite-difference checks of the tile gradient and Hessian (including contact across periodic
    boundaries), translation invariance, the tile versus its 2x1 and 1x2 supercells, and a straight
    periodic yarn stretched by eps (E = 1/2 ks eps^2 L). */
-#include <hylc/tile.h>
+#include "tile.h"
 #include "hylctest.h"
 
 /* a compressed plain weave: spacing 4r compressed to 3.6r so that yarns touch */

@@ -1,5 +1,5 @@
-/* HylcTile: energy, gradient and Hessian of a translation-periodic yarn tile (see include/hylc/tile.h). */
-#include <hylc/tile.h>
+/* HylcTile: energy, gradient and Hessian of a translation-periodic yarn tile (see tests/support/tile.h). */
+#include "tile.h"
 #include <hylc/contact.h>
 #include <hylc/geom.h>
 #include <hylc/rod.h>

@@ -1,0 +1,437 @@
+/* The HDF5 samples file (include/hylc/samples.h; schema in docs/output-format.md): built in memory
+   through the private HDF5 helper layer (include/hylc/private/h5util.h) and written atomically; and its
+   reader. The journal is src/sampler/journal.c. */
+#include <hylc/samples.h>
+#include <hylc/private/samplesimpl.h>
+#include <hylc/private/h5util.h>
+#include <petsc/private/petscimpl.h>
+#include <math.h>
+#include <stdlib.h>
+#include <stdio.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+/* The file the current HDF5 call works on, for HylcCallHDF5's messages (rank-0, single-threaded code). */
+static const char *HylcH5Where = "?";
+
+/* an int32 copy of a PetscInt array for HylcH5WriteDataset */
+static PetscErrorCode DatasetInt(hid_t loc, const char name[], PetscInt n, PetscInt cols, const PetscInt *v, const char units[], const char description[])
+{
+  int          *buf;
+  PetscInt      m       = n * (cols ? cols : 1);
+  const hsize_t dims[2] = {(hsize_t)n, (hsize_t)cols};
+
+  PetscFunctionBegin;
+  PetscCall(PetscMalloc1(m + 1, &buf));
+  for (PetscInt i = 0; i < m; i++) buf[i] = (int)v[i];
+  HylcCallHDF5(HylcH5WriteDataset(loc, name, cols ? 2 : 1, dims, H5T_NATIVE_INT, buf, units, description));
+  PetscCall(PetscFree(buf));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode WriteSamplesGroup(hid_t file, long N, const HylcSampleRecord recs[], const unsigned char done[])
+{
+  double *strain, *psi, *parts, *res, *cres, *t;
+  int    *term, *status, *its, *retries;
+  hid_t   g;
+  int     nstat = HylcSamplesNumStatuses_();
+
+  PetscFunctionBegin;
+  PetscCall(PetscMalloc6(6 * N + 1, &strain, N + 1, &psi, 4 * N + 1, &parts, N + 1, &res, N + 1, &cres, N + 1, &t));
+  PetscCall(PetscMalloc4(N + 1, &term, N + 1, &status, N + 1, &its, N + 1, &retries));
+  for (long k = 0; k < N; k++) {
+    if (done && done[k]) {
+      const HylcSampleRecord *r = &recs[k];
+      for (int i = 0; i < 6; i++) strain[6 * k + i] = r->z[i];
+      for (int i = 0; i < 4; i++) parts[4 * k + i] = r->parts[i];
+      psi[k]     = r->psi;
+      res[k]     = r->residual;
+      cres[k]    = r->cresidual;
+      t[k]       = r->time;
+      term[k]    = r->term;
+      status[k]  = r->status;
+      its[k]     = r->iterations;
+      retries[k] = r->retries;
+    } else {
+      for (int i = 0; i < 6; i++) strain[6 * k + i] = NAN;
+      for (int i = 0; i < 4; i++) parts[4 * k + i] = NAN;
+      psi[k] = res[k] = cres[k] = t[k] = NAN;
+      term[k] = status[k] = its[k] = retries[k] = -1;
+    }
+  }
+  HylcCallHDF5Id(g, H5Gcreate2(file, "samples", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+  HylcCallHDF5(HylcH5WriteAttrStrings(g, "status_names", nstat, (const char *const *)HylcMicroStatuses));
+  {
+    const char *names[HYLC_PLAN_NTERM];
+    for (int t = 0; t < HYLC_PLAN_NTERM; t++) names[t] = HylcPlanTermName(t);
+    HylcCallHDF5(HylcH5WriteAttrStrings(g, "term_names", HYLC_PLAN_NTERM, names));
+  }
+  HylcCallHDF5(HylcH5WriteAttrString(g, "description", "One row per sample of the plan, in plan order (row k = sample k). Samples not computed (interrupted run) have status -1, term/iterations/retries -1 and NaN values."));
+  HylcCallHDF5(HylcH5WriteDataset(g, "strain", 2, (hsize_t[]){(hsize_t)N, 6}, H5T_NATIVE_DOUBLE, strain, "1 for sx, sa, sy; 1/m for II00, II01, II11", "macroscopic strain z = (sx, sa, sy, II00, II01, II11): in-plane stretch/shear and the second fundamental form"));
+  HylcCallHDF5(HylcH5WriteDataset(g, "psi", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_DOUBLE, psi, "J/m^2", "area energy density psi = E / A of the equilibrium (A: reference tile area)"));
+  HylcCallHDF5(HylcH5WriteDataset(g, "term", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, term, "1", "term of the sampling plan: 0 zero sample, 1..5 one-dimensional, 6..14 two-dimensional; index into /samples@term_names; -1 not computed"));
+  HylcCallHDF5(HylcH5WriteDataset(g, "status", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, status, "1", "HylcMicroStatus of the Newton solve, index into /samples@status_names (0 converged, 1 iteration_cap, 2 time_cap, 3 stalled, 4 nonfinite; 5 failed is reserved, no longer produced); -1: not computed (the run ended before this sample, all its values are NaN or -1)"));
+  HylcCallHDF5(HylcH5WriteDataset(g, "iterations", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, its, "1", "Newton iterations; -1 not computed"));
+  HylcCallHDF5(HylcH5WriteDataset(g, "retries", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, retries, "1", "regularization increases (alpha x 10 for an indefinite K); -1 not computed"));
+  HylcCallHDF5(HylcH5WriteDataset(g, "energy_parts", 2, (hsize_t[]){(hsize_t)N, 4}, H5T_NATIVE_DOUBLE, parts, "J", "energy of the tile by kind: columns stretch, bend, twist, contact"));
+  HylcCallHDF5(HylcH5WriteDataset(g, "residual", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_DOUBLE, res, "1", "final projected-gradient norm relative to the initial one, |z| / |z0|"));
+  HylcCallHDF5(HylcH5WriteDataset(g, "constraint_residual", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_DOUBLE, cres, "1 (units of the yarn radius)", "final periodicity-constraint residual |A y - dL| / r"));
+  HylcCallHDF5(HylcH5WriteDataset(g, "time", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_DOUBLE, t, "s", "wall time of the sample's solve"));
+  HylcCallHDF5(H5Gclose(g));
+  PetscCall(PetscFree6(strain, psi, parts, res, cres, t));
+  PetscCall(PetscFree4(term, status, its, retries));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode WriteReferenceGroup(hid_t file, HylcPattern p)
+{
+  HylcPatternData d;
+  HylcPatternType type;
+  hid_t           g;
+
+  PetscFunctionBegin;
+  PetscCall(HylcPatternGetData(p, &d));
+  PetscCall(HylcPatternGetType(p, &type));
+  HylcCallHDF5Id(g, H5Gcreate2(file, "reference", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+  HylcCallHDF5(HylcH5WriteAttrString(g, "description", "the reference (rest) state of the periodic yarn tile the samples were computed on (layout: include/hylc/pattern.h, docs/patterns.md)"));
+  HylcCallHDF5(HylcH5WriteAttrString(g, "type", type ? type : ""));
+  HylcCallHDF5(HylcH5WriteAttrLong(g, "nv", (long long)d.nv));
+  HylcCallHDF5(HylcH5WriteAttrDouble(g, "px", (double)d.px));
+  HylcCallHDF5(HylcH5WriteAttrDouble(g, "py", (double)d.py));
+  HylcCallHDF5(HylcH5WriteAttrDouble(g, "radius", (double)d.radius));
+  HylcCallHDF5(HylcH5WriteAttrString(g, "units", "px, py, radius: m"));
+  HylcCallHDF5(HylcH5WriteDataset(g, "X", 2, (hsize_t[]){(hsize_t)d.nv, 3}, H5T_NATIVE_DOUBLE, d.X, "m", "reference position of each vertex"));
+  HylcCallHDF5(HylcH5WriteDataset(g, "theta", 1, (hsize_t[]){(hsize_t)d.nv}, H5T_NATIVE_DOUBLE, d.theta, "rad", "twist of the edge leaving each vertex"));
+  PetscCall(DatasetInt(g, "next", d.nv, 0, d.next, "1", "head vertex of the edge leaving each vertex (0-based)"));
+  PetscCall(DatasetInt(g, "prev", d.nv, 0, d.prev, "1", "tail vertex of the edge entering each vertex (0-based)"));
+  PetscCall(DatasetInt(g, "shift", d.nv, 2, d.shift, "periods", "lattice offset (dx, dy) of the head of the edge leaving each vertex: it runs from X[v] to X[next[v]] + (dx px, dy py, 0)"));
+  HylcCallHDF5(HylcH5WriteDataset(g, "rest_length", 1, (hsize_t[]){(hsize_t)d.nv}, H5T_NATIVE_DOUBLE, d.restLength, "m", "rest length of the edge leaving each vertex"));
+  HylcCallHDF5(HylcH5WriteDataset(g, "rest_kappa", 2, (hsize_t[]){(hsize_t)d.nv, 2}, H5T_NATIVE_DOUBLE, d.restKappa, "1", "rest material curvature (kappa1, kappa2) at each vertex (integrated, dimensionless)"));
+  HylcCallHDF5(HylcH5WriteDataset(g, "rest_twist", 1, (hsize_t[]){(hsize_t)d.nv}, H5T_NATIVE_DOUBLE, d.restTwist, "rad", "rest twist at each vertex"));
+  HylcCallHDF5(HylcH5WriteDataset(g, "ref_d1", 2, (hsize_t[]){(hsize_t)d.nv, 3}, H5T_NATIVE_DOUBLE, d.refD1, "1", "reference director d1 of the edge leaving each vertex (unit, perpendicular to the edge)"));
+  HylcCallHDF5(HylcH5WriteDataset(g, "ref_twist", 1, (hsize_t[]){(hsize_t)d.nv}, H5T_NATIVE_DOUBLE, d.refTwist, "rad", "reference twist at each vertex"));
+  HylcCallHDF5(H5Gclose(g));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode WriteMaterialGroup(hid_t file, const HylcYarnModel *m, PetscReal patternRadius)
+{
+  static const char *const ContactNames[]   = {"quadrature", "closest"};
+  static const char *const CurvatureNames[] = {"averaged", "per_edge"};
+  HylcYarnConstants        c;
+  hid_t                    g;
+
+  PetscFunctionBegin;
+  PetscCall(HylcYarnModelGetConstants(m, patternRadius, &c));
+  HylcCallHDF5Id(g, H5Gcreate2(file, "material", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+  HylcCallHDF5(HylcH5WriteAttrString(g, "description", "yarn material and contact model (include/hylc/yarn.h): resolved values used by the solver, and the option values they came from (*_option; <= 0 means the default rule)"));
+  HylcCallHDF5(HylcH5WriteAttrString(g, "units", "E, Es, G: Pa; kc: N/m; radius: m; ks: N; B, beta: N m^2; exclude_arc: yarn radii"));
+  HylcCallHDF5(HylcH5WriteAttrDouble(g, "E", (double)c.E));
+  HylcCallHDF5(HylcH5WriteAttrDouble(g, "Es", (double)c.Es));
+  HylcCallHDF5(HylcH5WriteAttrDouble(g, "G", (double)c.G));
+  HylcCallHDF5(HylcH5WriteAttrDouble(g, "kc", (double)c.kc));
+  HylcCallHDF5(HylcH5WriteAttrDouble(g, "radius", (double)c.r));
+  HylcCallHDF5(HylcH5WriteAttrDouble(g, "ks", (double)c.ks));
+  HylcCallHDF5(HylcH5WriteAttrDouble(g, "B", (double)c.B));
+  HylcCallHDF5(HylcH5WriteAttrDouble(g, "beta", (double)c.beta));
+  HylcCallHDF5(HylcH5WriteAttrDouble(g, "Es_option", (double)m->Es));
+  HylcCallHDF5(HylcH5WriteAttrDouble(g, "G_option", (double)m->G));
+  HylcCallHDF5(HylcH5WriteAttrDouble(g, "kc_option", (double)m->kc));
+  HylcCallHDF5(HylcH5WriteAttrDouble(g, "radius_option", (double)m->radius));
+  HylcCallHDF5(HylcH5WriteAttrLong(g, "contact_points", (long long)m->contactPoints));
+  HylcCallHDF5(HylcH5WriteAttrString(g, "contact_type", (int)m->contactType >= 0 && (int)m->contactType < 2 ? ContactNames[m->contactType] : "unknown"));
+  HylcCallHDF5(HylcH5WriteAttrDouble(g, "exclude_arc", (double)m->excludeArc));
+  HylcCallHDF5(HylcH5WriteAttrString(g, "curvature", (int)m->curvature >= 0 && (int)m->curvature < 2 ? CurvatureNames[m->curvature] : "unknown"));
+  HylcCallHDF5(H5Gclose(g));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode WriteOptions(hid_t file, const char text[])
+{
+  PetscFunctionBegin;
+  HylcCallHDF5(HylcH5WriteStrings(file, "options", 0, 1, &text, "the complete PETSc options of the run (PetscOptionsGetAll: command line, options files, environment), one string"));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode WriteFile(hid_t file, long N, const HylcSampleRecord recs[], const unsigned char done[], HylcPattern reference, const HylcYarnModel *model, const char optionsText[])
+{
+  char      date[64], host[256], petscv[128];
+  time_t    now = time(NULL);
+  struct tm tm;
+  long long ndone = 0, nconv = 0;
+  unsigned  maj, min, rel;
+  char      h5v[64];
+  char     *allopts = NULL;
+  PetscReal radius  = 0;
+
+  PetscFunctionBegin;
+  for (long k = 0; k < N; k++) {
+    if (done && done[k]) {
+      ndone++;
+      if (recs[k].status == HYLC_MICRO_CONVERGED) nconv++;
+    }
+  }
+  gmtime_r(&now, &tm);
+  strftime(date, sizeof(date), "%Y-%m-%dT%H:%M:%SZ", &tm);
+  if (gethostname(host, sizeof(host))) snprintf(host, sizeof(host), "unknown");
+  host[sizeof(host) - 1] = 0;
+  PetscCall(PetscGetVersion(petscv, sizeof(petscv)));
+  HylcCallHDF5(H5get_libversion(&maj, &min, &rel));
+  snprintf(h5v, sizeof(h5v), "%u.%u.%u", maj, min, rel);
+  HylcCallHDF5(HylcH5WriteAttrString(file, "format", "hylc-samples"));
+  HylcCallHDF5(HylcH5WriteAttrLong(file, "format_version", 1));
+  HylcCallHDF5(HylcH5WriteAttrString(file, "hylc_version", HYLC_VERSION_STRING));
+  HylcCallHDF5(HylcH5WriteAttrString(file, "petsc_version", petscv));
+  HylcCallHDF5(HylcH5WriteAttrString(file, "hdf5_version", h5v));
+  HylcCallHDF5(HylcH5WriteAttrString(file, "creation_date", date));
+  HylcCallHDF5(HylcH5WriteAttrString(file, "hostname", host));
+  HylcCallHDF5(HylcH5WriteAttrLong(file, "nsamples", (long long)N));
+  HylcCallHDF5(HylcH5WriteAttrLong(file, "ndone", ndone));
+  HylcCallHDF5(HylcH5WriteAttrLong(file, "nconverged", nconv));
+  PetscCall(WriteSamplesGroup(file, N, recs, done));
+  if (reference) {
+    PetscCall(WriteReferenceGroup(file, reference));
+    PetscCall(HylcPatternGetRadius(reference, &radius));
+  }
+  if (model) PetscCall(WriteMaterialGroup(file, model, model->radius > 0 ? model->radius : radius));
+  if (!optionsText) PetscCall(PetscOptionsGetAll(NULL, &allopts));
+  PetscCall(WriteOptions(file, optionsText ? optionsText : allopts));
+  PetscCall(PetscFree(allopts));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* /provenance: the run's identity text, its SHA-256, and its lines by kind */
+static PetscErrorCode WriteProvenance(hid_t file, const char identity[])
+{
+  char         hex[65], *copy, *line, *save = NULL;
+  const char  *version[3] = {"", "", ""};
+  const char **opts, **pat;
+  int          nopt = 0, npat = 0, nlines = 1;
+  hid_t        g;
+
+  PetscFunctionBegin;
+  HylcSamplesIdentityDigest(identity, hex);
+  for (const char *c = identity; *c; c++) nlines += *c == '\n';
+  PetscCall(PetscStrallocpy(identity, &copy));
+  PetscCall(PetscMalloc2(nlines, &opts, nlines, &pat));
+  for (line = strtok_r(copy, "\n", &save); line; line = strtok_r(NULL, "\n", &save)) {
+    if (!strncmp(line, "option ", 7))
+      opts[nopt++] = line + 7;
+    else if (!strncmp(line, "pattern ", 8))
+      pat[npat++] = line + 8;
+    else if (!strncmp(line, "version hylc ", 13))
+      version[0] = line + 13;
+    else if (!strncmp(line, "version build ", 14))
+      version[1] = line + 14;
+    else if (!strncmp(line, "version petsc ", 14))
+      version[2] = line + 14;
+  }
+  HylcCallHDF5Id(g, H5Gcreate2(file, "provenance", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+  HylcCallHDF5(HylcH5WriteAttrString(g, "description", "the identity of the run: everything that can change a sample's result (versions, the pattern bit for bit, every option but the neutral ones of docs/output-format.md); digest = SHA-256 of the identity text, as in the journal"));
+  HylcCallHDF5(HylcH5WriteAttrString(g, "digest", hex));
+  HylcCallHDF5(HylcH5WriteAttrString(g, "digest_algorithm", "sha256"));
+  HylcCallHDF5(HylcH5WriteAttrString(g, "hylc_version", version[0]));
+  HylcCallHDF5(HylcH5WriteAttrString(g, "hylc_build", version[1]));
+  HylcCallHDF5(HylcH5WriteAttrString(g, "petsc_version", version[2]));
+  HylcCallHDF5(HylcH5WriteStrings(g, "options", 1, (hsize_t)nopt, opts, "the options of the identity, \"-name value\", sorted by name (neutral options left out)"));
+  HylcCallHDF5(HylcH5WriteStrings(g, "pattern", 1, (hsize_t)npat, pat, "the pattern of the identity, \"field value\" (scalars) or \"field sha256:<digest of the array's bytes>\" (arrays, native layout)"));
+  HylcCallHDF5(HylcH5WriteStrings(g, "identity", 0, 1, &identity, "the canonical identity text (its SHA-256 is /provenance@digest)"));
+  HylcCallHDF5(H5Gclose(g));
+  PetscCall(PetscFree2(opts, pat));
+  PetscCall(PetscFree(copy));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* builds the whole file in memory (HDF5's core driver, no backing store) and returns its image */
+static PetscErrorCode BuildImage(const char path[], long nsamples, const HylcSampleRecord recs[], const unsigned char done[], HylcPattern reference, const HylcYarnModel *model, const char optionsText[], const char identity[], void **image, size_t *size)
+{
+  hid_t          file;
+  ssize_t        n = 0;
+  PetscErrorCode ierr;
+  char           msg[256];
+
+  PetscFunctionBegin;
+  *image = NULL;
+  *size  = 0;
+  if ((file = HylcH5ImageCreate(path, 1 << 20)) < 0) {
+    HylcH5ErrorText(msg);
+    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "Cannot create the samples file %s in memory%s", path, msg);
+  }
+  ierr = WriteFile(file, nsamples, recs, done, reference, model, optionsText);
+  if (!ierr && identity) ierr = WriteProvenance(file, identity);
+  if (!ierr) {
+    n = HylcH5ImageSize(file);
+    if (n > 0) {
+      ierr = PetscMalloc((size_t)n, image);
+      if (!ierr && H5Fget_file_image(file, *image, (size_t)n) != n) n = -1;
+    }
+    if (!ierr && n <= 0) {
+      HylcH5ErrorText(msg);
+      H5Fclose(file);
+      PetscCall(PetscFree(*image));
+      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "Cannot build the samples file %s%s", path, msg);
+    }
+    *size = (size_t)n;
+  }
+  H5Fclose(file); /* strong close: also every object an error left open */
+  if (ierr) PetscCall(PetscFree(*image));
+  PetscCall(ierr);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcSamplesWriteHDF5WithIdentity - Writes the samples file (docs/output-format.md) atomically: the
+  HDF5 image is built in memory, written to a unique temporary beside path, fsynced and renamed; on any
+  failure (a full disk, say) the temporary is removed, path is left as it was and the error names it.
+  Not collective (rank 0).
+@*/
+PetscErrorCode HylcSamplesWriteHDF5WithIdentity(const char path[], long nsamples, const HylcSampleRecord recs[], const unsigned char done[], HylcPattern reference, const HylcYarnModel *model, const char optionsText[], const char identity[])
+{
+  char           tmp[PETSC_MAX_PATH_LEN];
+  HylcH5Quiet    quiet;
+  void          *image = NULL;
+  size_t         size  = 0;
+  FILE          *fp    = NULL;
+  PetscErrorCode ierr;
+
+  PetscFunctionBegin;
+  PetscValidCharPointer(path, 1);
+  PetscCheck(nsamples >= 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%s: negative number of samples %ld", path, nsamples);
+  HylcH5Where = path;
+  /* HDF5 prints nothing itself: its innermost message goes into the PETSc error */
+  HylcH5QuietBegin(&quiet);
+  ierr = BuildImage(path, nsamples, recs, done, reference, model, optionsText, identity, &image, &size);
+  HylcH5QuietEnd(&quiet);
+  HylcH5Where = "?";
+  PetscCall(ierr);
+  ierr = HylcFileOpenTemp(path, tmp, sizeof(tmp), &fp);
+  if (!ierr) {
+    if (fwrite(image, 1, size, fp) != size) { /* the error (ENOSPC, EFBIG) stays on the stream: CommitTemp reports it */
+    }
+    ierr = HylcFileCommitTemp(&fp, tmp, path);
+  }
+  PetscCall(PetscFree(image));
+  PetscCall(ierr);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcSamplesWriteHDF5 - HylcSamplesWriteHDF5WithIdentity() without /provenance. Not collective.
+@*/
+PetscErrorCode HylcSamplesWriteHDF5(const char path[], long nsamples, const HylcSampleRecord recs[], const unsigned char done[], HylcPattern reference, const HylcYarnModel *model, const char optionsText[])
+{
+  PetscFunctionBegin;
+  PetscCall(HylcSamplesWriteHDF5WithIdentity(path, nsamples, recs, done, reference, model, optionsText, NULL));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode H5ReadDataset(hid_t file, const char name[], hid_t memtype, hsize_t n, hsize_t cols, void *buf)
+{
+  hid_t   d, s;
+  int     rank;
+  hsize_t dims[2] = {0, 0};
+
+  PetscFunctionBegin;
+  HylcCallHDF5Id(d, H5Dopen2(file, name, H5P_DEFAULT));
+  HylcCallHDF5Id(s, H5Dget_space(d));
+  HylcCallHDF5Id(rank, H5Sget_simple_extent_ndims(s));
+  HylcCallHDF5(H5Sget_simple_extent_dims(s, dims, NULL));
+  PetscCheck(rank == (cols ? 2 : 1) && dims[0] == n && (!cols || dims[1] == cols), PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s: dataset %s has an unexpected shape", HylcH5Where, name);
+  if (n) HylcCallHDF5(H5Dread(d, memtype, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf));
+  HylcCallHDF5(H5Sclose(s));
+  HylcCallHDF5(H5Dclose(d));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode ReadFile(hid_t file, long *nsamples, HylcSampleRecord **recs_, unsigned char **done_, char **optionsText)
+{
+  hid_t             d, s;
+  hsize_t           dims[2];
+  long              N;
+  double           *strain, *psi, *parts, *res, *cres, *tm;
+  int              *term, *status, *its, *retries;
+  HylcSampleRecord *recs;
+  unsigned char    *done;
+
+  PetscFunctionBegin;
+  HylcCallHDF5Id(d, H5Dopen2(file, "samples/psi", H5P_DEFAULT));
+  HylcCallHDF5Id(s, H5Dget_space(d));
+  HylcCallHDF5(H5Sget_simple_extent_dims(s, dims, NULL));
+  HylcCallHDF5(H5Sclose(s));
+  HylcCallHDF5(H5Dclose(d));
+  N = (long)dims[0];
+  PetscCall(PetscMalloc6(6 * N + 1, &strain, N + 1, &psi, 4 * N + 1, &parts, N + 1, &res, N + 1, &cres, N + 1, &tm));
+  PetscCall(PetscMalloc4(N + 1, &term, N + 1, &status, N + 1, &its, N + 1, &retries));
+  PetscCall(H5ReadDataset(file, "samples/strain", H5T_NATIVE_DOUBLE, N, 6, strain));
+  PetscCall(H5ReadDataset(file, "samples/psi", H5T_NATIVE_DOUBLE, N, 0, psi));
+  PetscCall(H5ReadDataset(file, "samples/energy_parts", H5T_NATIVE_DOUBLE, N, 4, parts));
+  PetscCall(H5ReadDataset(file, "samples/residual", H5T_NATIVE_DOUBLE, N, 0, res));
+  PetscCall(H5ReadDataset(file, "samples/constraint_residual", H5T_NATIVE_DOUBLE, N, 0, cres));
+  PetscCall(H5ReadDataset(file, "samples/time", H5T_NATIVE_DOUBLE, N, 0, tm));
+  PetscCall(H5ReadDataset(file, "samples/term", H5T_NATIVE_INT, N, 0, term));
+  PetscCall(H5ReadDataset(file, "samples/status", H5T_NATIVE_INT, N, 0, status));
+  PetscCall(H5ReadDataset(file, "samples/iterations", H5T_NATIVE_INT, N, 0, its));
+  PetscCall(H5ReadDataset(file, "samples/retries", H5T_NATIVE_INT, N, 0, retries));
+  PetscCall(PetscCalloc1(N + 1, &recs));
+  PetscCall(PetscCalloc1(N + 1, &done));
+  for (long k = 0; k < N; k++) {
+    HylcSampleRecord *r = &recs[k];
+    r->index            = k;
+    for (int i = 0; i < 6; i++) r->z[i] = strain[6 * k + i];
+    for (int i = 0; i < 4; i++) r->parts[i] = parts[4 * k + i];
+    r->psi        = psi[k];
+    r->residual   = res[k];
+    r->cresidual  = cres[k];
+    r->time       = tm[k];
+    r->term       = term[k];
+    r->status     = status[k];
+    r->iterations = its[k];
+    r->retries    = retries[k];
+    done[k]       = status[k] >= 0;
+  }
+  PetscCall(PetscFree6(strain, psi, parts, res, cres, tm));
+  PetscCall(PetscFree4(term, status, its, retries));
+  *nsamples = N;
+  *recs_    = recs;
+  *done_    = done;
+  if (optionsText) {
+    char *text = NULL;
+
+    HylcCallHDF5(HylcH5ReadString(file, "options", &text));
+    PetscCall(PetscStrallocpy(text, optionsText));
+    free(text);
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcSamplesReadHDF5 - Reads /samples (and /options) of a samples file. Not collective.
+@*/
+PetscErrorCode HylcSamplesReadHDF5(const char path[], long *nsamples, HylcSampleRecord **recs, unsigned char **done, char **optionsText)
+{
+  hid_t          file;
+  HylcH5Quiet    quiet;
+  PetscErrorCode ierr;
+
+  PetscFunctionBegin;
+  PetscValidCharPointer(path, 1);
+  PetscValidPointer(nsamples, 2);
+  PetscValidPointer(recs, 3);
+  PetscValidPointer(done, 4);
+  HylcH5Where = path;
+  HylcH5QuietBegin(&quiet);
+  file = HylcH5FileOpen(path);
+  if (file < 0) {
+    char msg[256];
+    HylcH5ErrorText(msg);
+    HylcH5QuietEnd(&quiet);
+    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot open the samples file %s%s", path, msg);
+  }
+  ierr = ReadFile(file, nsamples, recs, done, optionsText);
+  H5Fclose(file);
+  HylcH5QuietEnd(&quiet);
+  HylcH5Where = "?";
+  PetscCall(ierr);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
