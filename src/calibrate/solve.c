@@ -24,6 +24,8 @@ PetscErrorCode HylcCalibrateSolveSamples_Private(HylcCalibrate C, const PetscRea
   model.kc = p[3];
   PetscCall(PetscLogEventBegin(HYLC_CalibrateEvaluate, C, 0, 0, 0));
   PetscCall(HylcMicroSetPattern(C->micro, C->pat, &model));
+  /* SetPattern builds a new periodic tile: read its options (-periodic_*, -macro_*) again, as the sampler does */
+  PetscCall(HylcMicroSetFromOptions(C->micro));
   PetscCall(HylcMicroSetUp(C->micro));
   for (PetscInt k = C->rank; k < C->m; k += C->size) nloc++;
   PetscCall(PetscMalloc1(nloc * HYLC_CALIB_NRECORD + 1, &buf));
