@@ -4,7 +4,8 @@
 # options -yarn_E, -yarn_Es, -yarn_G, -yarn_kc (which hylc-pattern does not read, so they, and only
 # they, are reported unused: a misspelt key would appear as another unused option; solver options
 # -micro_<name> and the slide variant -periodic_slide that a calibrated config sets are unused too and
-# allowed). The values must be numbers with G = E/2.5. Run from the repository root, where the files' relative pattern paths resolve.
+# allowed). The values must be numbers with G = E/2.5. Run from the repository root, where the files'
+# relative pattern paths resolve.
 set -u
 cd "$(dirname "$0")/../.."
 tool=$HYLC_BIN/hylc-pattern
