@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # hylc-calibrate refuses bad input with a one-line error before any solve: an unknown parameter name,
 # inverted or non-positive bounds, a missing target, a directory target without data.txt, an unknown
-# term, a CSV without the needed columns, an unwritable output; -help lists the options.
+# term, a CSV without the needed columns, an unwritable output; -help lists the options;
+# the tile options reach the solves.
 set -u
 cd "$HYLC_TMP"
 die() { echo "FAIL: $*"; exit 1; }
@@ -32,6 +33,12 @@ expect "nocol.csv:1: the header has no column 'II01'" -calibrate_target nocol.cs
 expect "badnum.csv:3: column sy: 'x' is not a finite number" -calibrate_target badnum.csv
 expect "-calibrate_output" -calibrate_target ok.csv -calibrate_output nodir/p.yaml
 expect "Unknown option.*-calibrate_paramz" -calibrate_target ok.csv -calibrate_paramz E
+# the tile options (-periodic_*, -macro_*) reach every evaluation's solves (each rebuilds the tile): the
+# closed-form midsurface refuses a doubly curved row in the solve (they were once silently dropped)
+printf 'sx,sa,sy,II00,II01,II11,psi\n0,0,0,0,0,0,1\n0,0,0,50,0,50,2\n' >curved.csv
+$MPIEXEC -n 2 $tool "${base[@]}" -calibrate_target curved.csv -calibrate_max_it 0 >out.txt 2>&1 || { cat out.txt; die "a doubly curved row failed with the default -macro_phi"; }
+$MPIEXEC -n 2 $tool "${base[@]}" -calibrate_target curved.csv -calibrate_max_it 0 -macro_phi closed >out.txt 2>&1 && { cat out.txt; die "-macro_phi closed was not applied to the solves"; }
+grep -q "^hylc: error.*-macro_phi closed needs a flat or singly curved II" out.txt || { cat out.txt; die "-macro_phi closed: wrong message"; }
 # -help documents every option of the tool
 $tool -help >help.txt 2>&1 || { cat help.txt; die "-help failed"; }
 for o in target target_type output dump params tie bounds_E bounds_Es bounds_G bounds_kc terms n n2 stride max_samples \

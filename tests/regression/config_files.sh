@@ -3,8 +3,9 @@
 # parses *.yaml option files as YAML), names its own paper pattern, and sets exactly the four material
 # options -yarn_E, -yarn_Es, -yarn_G, -yarn_kc (which hylc-pattern does not read, so they, and only
 # they, are reported unused: a misspelt key would appear as another unused option; solver options
-# -micro_<name> that a calibrated config sets are unused too and allowed). The values must be
-# numbers with G = E/2.5. Run from the repository root, where the files' relative pattern paths resolve.
+# -micro_<name> and the slide variant -periodic_slide that a calibrated config sets are unused too and
+# allowed). The values must be numbers with G = E/2.5. Run from the repository root, where the files'
+# relative pattern paths resolve.
 set -u
 cd "$(dirname "$0")/../.."
 tool=$HYLC_BIN/hylc-pattern
@@ -24,7 +25,8 @@ check() { # name file
   grep -Eq "^ *file: \.\./shared/refdata/patterns/hylc2020/$name\.pyp$" "$out" || { cat "$out"; echo "$f: does not load $name.pyp"; return 1; }
   local other
   other=$(grep -v -e '^hylc: warning: option -yarn_[A-Za-z]* [^ ]* was not used' -e '^hylc: warning: option -sampler_family \(woven\|stockinette\|honeycomb\|rib\) was not used' \
-    -e '^hylc: warning: option -micro_\(alpha_start\|alpha_end\|alpha_its\|step_p0\|step_p1\) [0-9.eE+-]* was not used' "$err")
+    -e '^hylc: warning: option -micro_\(alpha_start\|alpha_end\|alpha_its\|step_p0\|step_p1\) [0-9.eE+-]* was not used' \
+    -e '^hylc: warning: option -periodic_slide \(none\|global\|per_yarn\|per_family\) was not used' "$err")
   [ -z "$other" ] || { echo "$f: unexpected output on stderr:"; echo "$other"; return 1; }
   local names
   names=$(sed -n 's/^hylc: warning: option -\(yarn_[A-Za-z]*\) .*/\1/p' "$err" | sort)
