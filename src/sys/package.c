@@ -39,13 +39,14 @@ PetscErrorCode HylcInitializePackage(void)
   PetscCall(PetscLogEventRegister("PATTERN_Write", HYLC_PATTERN_CLASSID, &HYLC_PatternWrite));
   PetscCall(PetscLogEventRegister("PATTERN_Generate", HYLC_PATTERN_CLASSID, &HYLC_PatternGenerate));
   PetscCall(PetscLogEventRegister("PATTERN_Distance", HYLC_PATTERN_CLASSID, &HYLC_PatternDistance));
-  PetscCall(PetscLogEventRegister("TILE_Evaluate", HYLC_PATTERN_CLASSID, &HYLC_TileEvaluate));
-  PetscCall(PetscLogEventRegister("CONTACT_Broadphase", HYLC_PATTERN_CLASSID, &HYLC_TileBroadphase));
-  PetscCall(PetscLogEventRegister("CONTACT_Energy", HYLC_PATTERN_CLASSID, &HYLC_TileContact));
-  PetscCall(PetscLogEventRegister("TILE_Assemble", HYLC_PATTERN_CLASSID, &HYLC_TileAssemble));
   PetscCall(PetscClassIdRegister("HylcPeriodic", &HYLC_PERIODIC_CLASSID));
   PetscCall(PetscLogEventRegister("PERIODIC_SetUp", HYLC_PERIODIC_CLASSID, &HYLC_PeriodicSetUp));
   PetscCall(PetscLogEventRegister("PERIODIC_Evaluate", HYLC_PERIODIC_CLASSID, &HYLC_PeriodicEvaluate));
+  /* the contact pairs and the assembly inside PERIODIC_Evaluate; TILE_Evaluate is the test-support tile (tests/support/tile.c) */
+  PetscCall(PetscLogEventRegister("CONTACT_Broadphase", HYLC_PERIODIC_CLASSID, &HYLC_TileBroadphase));
+  PetscCall(PetscLogEventRegister("CONTACT_Energy", HYLC_PERIODIC_CLASSID, &HYLC_TileContact));
+  PetscCall(PetscLogEventRegister("PERIODIC_Assemble", HYLC_PERIODIC_CLASSID, &HYLC_TileAssemble));
+  PetscCall(PetscLogEventRegister("TILE_Evaluate", HYLC_PERIODIC_CLASSID, &HYLC_TileEvaluate));
   PetscCall(PetscClassIdRegister("HylcSampler", &HYLC_SAMPLER_CLASSID));
   PetscCall(PetscLogEventRegister("SAMPLER_Run", HYLC_SAMPLER_CLASSID, &HYLC_SamplerRun));
   PetscCall(PetscClassIdRegister("HylcMicro", &HYLC_MICRO_CLASSID));
