@@ -74,6 +74,7 @@ PetscErrorCode HylcPeriodicSetPattern(HylcPeriodic P, HylcPattern pat, const Hyl
   P->btpar.beta    = P->c.beta;
   P->btpar.variant = model->curvature;
   P->N             = P->D.nv;
+  P->viewed        = PETSC_FALSE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -38,8 +38,9 @@ struct _p_HylcPeriodic {
   HylcSlideConstraint    slide;
   PetscReal              marginFactor; /* contact-ghost margin: max(3 r, factor min(px, py)) */
   PetscBool              setup;
-  PetscInt               N;  /* original vertices */
-  PetscReal             *xi; /* reference (xi1, xi2, h) of the originals, recentred */
+  PetscBool              viewed; /* -periodic_view printed for this pattern */
+  PetscInt               N;      /* original vertices */
+  PetscReal             *xi;     /* reference (xi1, xi2, h) of the originals, recentred */
   /* full vertices: original o, shift s; the first N are the originals */
   PetscInt   nfv, capfv, *fo, *fs;
   PetscReal *T, *d;      /* per full vertex: T (9), d (3) */

@@ -280,7 +280,10 @@ PetscErrorCode HylcPeriodicSetUp(HylcPeriodic P)
   P->setup = PETSC_TRUE;
   PetscCall(HylcPeriodicSetState(P, P->y));
   PetscCall(PetscLogEventEnd(HYLC_PeriodicSetUp, 0, 0, 0, 0));
-  PetscCall(HylcPeriodicViewFromOptions(P, NULL, "-periodic_view"));
+  if (!P->viewed) { /* once per pattern, not at every strain of a sampling job */
+    PetscCall(HylcPeriodicViewFromOptions(P, NULL, "-periodic_view"));
+    P->viewed = PETSC_TRUE;
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
