@@ -13,7 +13,7 @@
 #include <unistd.h>
 #include "hylctest.h"
 
-#define RECSIZE 144 /* bytes per journal record (docs/output-format.md) */
+#define RECSIZE 148 /* bytes per journal record (docs/output-format.md) */
 
 static void MakeRecord(long k, HylcSampleRecord *r)
 {
