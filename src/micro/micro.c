@@ -326,7 +326,7 @@ PetscErrorCode HylcMicroSolve(HylcMicro M, const PetscReal z[6], HylcMicroResult
   if (M->haveInit) {
     M->haveInit = PETSC_FALSE;
     PetscCheck(M->nuinit == M->ny, PETSC_COMM_SELF, PETSC_ERR_ARG_SIZ, "HylcMicroSetInitialState: the state has %" PetscInt_FMT " unknowns, the tile %" PetscInt_FMT, M->nuinit, M->ny);
-    for (PetscInt i = 0; i < M->ny; i++) M->yw[i] += M->uinit[i];
+    PetscCall(HylcPeriodicFluctuationFromLocal(M->P, M->uinit, M->yw));
     PetscCall(HylcPeriodicSetState(M->P, M->yw));
     PetscCall(HylcPeriodicUpdateFrames(M->P));
     M->continued = PETSC_TRUE;
@@ -434,9 +434,12 @@ PetscErrorCode HylcMicroGetState(HylcMicro M, PetscReal y[])
 
   Notes:
   What is carried over is the fluctuation u~ = y - y0(z_last), positions and twists (y0: the initial guess
-  of HylcPeriodicGetInitialState() at the last solve's strain, taken now): the next solve, at strain z,
-  starts from y0(z) + u~. The fluctuation is added in world coordinates (not rotated with the midsurface
-  of a bending strain), which is first-order consistent for a nearby z. The reference frames are not
+  of HylcPeriodicGetInitialState() at the last solve's strain, taken now), in the local coordinates of the
+  macroscopic deformation (HylcPeriodicFluctuationToLocal(): per vertex, R(xi)^T u~ with its in-plane part
+  mapped by A^-1): the next solve, at strain z, starts from y0(z) + R_z(xi) [A_z (A^-1 w_xy); w_z]. In the
+  plane this deforms the whole last state by A_z A^-1, so yarn pieces in contact stay in contact; adding
+  u~ as it is would move them apart or through each other by (A_z - A) times their rest distance. The
+  reference frames are not
   carried: the tile's frames are rebuilt at z from the rest frames by one parallel transport to the
   starting state (HylcPeriodicUpdateFrames()). The frames of the last solve cannot be reused as they are,
   because the set of full edges (ghosts, contact copies) is rebuilt for each strain. The reference frame is
@@ -462,11 +465,8 @@ PetscErrorCode HylcMicroSetInitialState(HylcMicro M, const PetscReal y[])
     PetscCall(PetscMalloc1(M->ny, &M->uinit));
     M->nuinit = M->ny;
   }
-  PetscCall(HylcPeriodicGetInitialState(M->P, M->uinit));
-  for (PetscInt i = 0; i < M->ny; i++) {
-    PetscCheck(!PetscIsInfOrNanReal(y[i]), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "HylcMicroSetInitialState: unknown %" PetscInt_FMT " of the state is not finite (%g)", i, (double)y[i]);
-    M->uinit[i] = y[i] - M->uinit[i];
-  }
+  for (PetscInt i = 0; i < M->ny; i++) PetscCheck(!PetscIsInfOrNanReal(y[i]), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "HylcMicroSetInitialState: unknown %" PetscInt_FMT " of the state is not finite (%g)", i, (double)y[i]);
+  PetscCall(HylcPeriodicFluctuationToLocal(M->P, y, M->uinit));
   M->haveInit = PETSC_TRUE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
