@@ -167,7 +167,7 @@ const char *const HylcSamplerStarts[] = {"cold", "continue", "HylcSamplerStart",
 /*@C
   HylcSamplerSetStart - How each sample's solve starts (option -sampler_start): cold (from u~ = 0, the
   default) or continue. With continue, the unit of work handed to a rank is a half-line of the plan
-  (HylcPlanUnits(): each 1D term and each line of a 2D grid split at the sample nearest zero, going outward);
+  (HylcPlanUnits(): each 1D term and each line of a 2D grid split at zero, going outward);
   a unit's first sample starts cold, each other one from its predecessor's equilibrium if that converged
   (else cold); a continued solve that does not converge is retried cold. -sampler_batch is not used then.
 

@@ -139,23 +139,24 @@ int HylcPlanDefaults(const char *family, double scale, HylcPlan *p)
   return 0;
 }
 
-/* the index nearest zero of a sampled axis (the first of equals) */
-static int NearestZero(const double Z[], int n)
+/* the first non-negative sample of an ascending axis (n if none): where it is split at the zero strain */
+static int FirstNonNegative(const double Z[], int n)
 {
   int i0 = 0;
-  for (int i = 1; i < n; i++)
-    if (fabs(Z[i]) < fabs(Z[i0])) i0 = i;
+  while (i0 < n && Z[i0] < 0) i0++;
   return i0;
 }
 
-/* appends the half-lines of one line (samples base + stride * i, i = 0..n-1, values Z) split at the sample nearest zero */
+/* appends the half-lines of one line (samples base + stride * i, i = 0..n-1, ascending values Z) split at zero */
 static void HalfLines(const double Z[], int n, long base, long stride, long *nu, long *pos, long start[], long order[])
 {
-  const int i0 = NearestZero(Z, n);
-  if (start) start[*nu] = *pos;
-  (*nu)++;
-  for (int i = i0; i < n; i++, (*pos)++)
-    if (order) order[*pos] = base + stride * i;
+  const int i0 = FirstNonNegative(Z, n);
+  if (i0 < n) {
+    if (start) start[*nu] = *pos;
+    (*nu)++;
+    for (int i = i0; i < n; i++, (*pos)++)
+      if (order) order[*pos] = base + stride * i;
+  }
   if (i0 > 0) {
     if (start) start[*nu] = *pos;
     (*nu)++;
