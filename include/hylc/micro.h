@@ -67,5 +67,7 @@ PETSC_EXTERN PetscErrorCode HylcMicroSetUp(HylcMicro);
 PETSC_EXTERN PetscErrorCode HylcMicroSolve(HylcMicro, const PetscReal[6], HylcMicroResult *);
 PETSC_EXTERN PetscErrorCode HylcMicroGetPeriodic(HylcMicro, HylcPeriodic *);
 PETSC_EXTERN PetscErrorCode HylcMicroGetState(HylcMicro, PetscReal[]);
+PETSC_EXTERN PetscErrorCode HylcMicroSetInitialState(HylcMicro, const PetscReal[]);
+PETSC_EXTERN PetscErrorCode HylcMicroGetContinued(HylcMicro, PetscBool *);
 PETSC_EXTERN PetscErrorCode HylcMicroGetEnergyHistory(HylcMicro, PetscInt *, const PetscReal **);
 PETSC_EXTERN PetscErrorCode HylcMicroResultView(const HylcMicroResult *, PetscViewer);

@@ -55,6 +55,8 @@ PETSC_EXTERN PetscErrorCode HylcPeriodicGetConstants(HylcPeriodic, HylcYarnConst
 PETSC_EXTERN PetscErrorCode HylcPeriodicGetMacroStrain(HylcPeriodic, const HylcMacroStrain **);
 PETSC_EXTERN PetscErrorCode HylcPeriodicGetInitialState(HylcPeriodic, PetscReal[]);
 PETSC_EXTERN PetscErrorCode HylcPeriodicSetState(HylcPeriodic, const PetscReal[]);
+PETSC_EXTERN PetscErrorCode HylcPeriodicFluctuationToLocal(HylcPeriodic, const PetscReal[], PetscReal[]);
+PETSC_EXTERN PetscErrorCode HylcPeriodicFluctuationFromLocal(HylcPeriodic, const PetscReal[], PetscReal[]);
 PETSC_EXTERN PetscErrorCode HylcPeriodicGetFullPositions(HylcPeriodic, PetscInt *, const PetscReal **, const PetscInt **, const PetscInt **);
 PETSC_EXTERN PetscErrorCode HylcPeriodicCreateMatrix(HylcPeriodic, Mat *);
 PETSC_EXTERN PetscErrorCode HylcPeriodicEvaluate(HylcPeriodic, int, PetscReal[4], PetscReal[], Mat);

@@ -35,6 +35,15 @@ long HylcPlanTermSize(const HylcPlan *, int t);
 long HylcPlanSize(const HylcPlan *);
 /* strain z[6] and term of sample k (0 <= k < HylcPlanSize); returns -1 if k is out of range */
 int HylcPlanSample(const HylcPlan *, long k, double z[6], int *term);
+/* The units of work of continuation (-sampler_start continue): half-lines ordered from the zero strain
+   outward. The zero sample is a unit; each 1D term is split at zero into the half-line of its non-negative
+   samples (ascending) and that of its negative ones (descending); each 2D grid is cut into its lines along
+   the second (inner) coordinate, one per value of the first, each split the same way in the inner
+   coordinate. Within a unit one coordinate varies, and each sample is strictly farther from zero in it than
+   its predecessor. Fills start[0..nunits] (offsets into order; start[nunits] = the plan's size) and order
+   (the plan's sample indices, unit after unit); either may be NULL (to count). Returns the number of units
+   (at most 1 + 10 + 18 n2), or -1 for an invalid plan. Depends only on the plan. */
+long HylcPlanUnits(const HylcPlan *, long start[], long order[]);
 /* the default ranges of method-spec §8 for a named pattern family: "woven" (basket, satin), "stockinette",
    "honeycomb", "rib"; II ranges scale with 1/r relative to r = 1 mm (scale = 1e-3 / r). Returns -1 for an
    unknown family. 2D ranges: stretch axes paired with sa or a bending [-0.1, 0.84 max], (sx, sy) both

@@ -16,8 +16,16 @@ typedef struct {
   double parts[4];  /* stretch, bend, twist, contact energy (J) */
   double residual;  /* |z| / |z0| */
   double cresidual; /* |A y - dL| / r */
-  double time;      /* wall seconds */
+  double time;      /* wall seconds (both solves of a sample retried cold) */
+  int    start;     /* HylcSampleStart: 0 cold, 1 continued, 2 continued, did not converge, retried cold */
 } HylcSampleRecord;
+
+/* how a sample's solve started (/samples/start) */
+typedef enum {
+  HYLC_SAMPLE_START_COLD      = 0,
+  HYLC_SAMPLE_START_CONTINUED = 1,
+  HYLC_SAMPLE_START_RETRIED   = 2
+} HylcSampleStart;
 
 typedef struct _n_HylcJournal *HylcJournal;
 

@@ -72,6 +72,9 @@ static PetscErrorCode FreeSolver(HylcMicro M)
   PetscCall(VecDestroy(&M->X));
   PetscCall(VecDestroy(&M->mvec));
   PetscCall(PetscFree2(M->yw, M->gw));
+  PetscCall(PetscFree(M->uinit));
+  M->nuinit   = 0;
+  M->haveInit = PETSC_FALSE;
   if (M->inner) PetscCall(PCReset(M->inner));
   PetscCall(HylcMicroDestroyKKT_Private(M));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -258,7 +261,7 @@ PetscErrorCode HylcMicroSetUp(HylcMicro M)
 
 /*@C
   HylcMicroSolve - Solves for the equilibrium of the tile under the strain z (Algorithms C2, C3) from the
-  initial guess u~ = 0, setting the solver up first if needed. Not collective (PETSC_COMM_SELF).
+  initial guess u~ = 0 (or from the state of HylcMicroSetInitialState(), once), setting the solver up first if needed. Not collective (PETSC_COMM_SELF).
 
   Input Parameters:
 + M - the solver, with a pattern
@@ -316,8 +319,18 @@ PetscErrorCode HylcMicroSolve(HylcMicro M, const PetscReal z[6], HylcMicroResult
     for (PetscInt i = 0; i < M->ny; i++) mv[i] = (i % 4 == 3) ? M->mu : 1.0;
     PetscCall(VecRestoreArray(M->mvec, &mv));
   }
-  /* initial guess: y^ = M^-1 y0 */
+  /* initial guess: y^ = M^-1 y0, or, continued, y0 + u~ of the state given by HylcMicroSetInitialState() with
+     the reference frames transported from the rest frames of this strain to it */
   PetscCall(HylcPeriodicGetInitialState(M->P, M->yw));
+  M->continued = PETSC_FALSE;
+  if (M->haveInit) {
+    M->haveInit = PETSC_FALSE;
+    PetscCheck(M->nuinit == M->ny, PETSC_COMM_SELF, PETSC_ERR_ARG_SIZ, "HylcMicroSetInitialState: the state has %" PetscInt_FMT " unknowns, the tile %" PetscInt_FMT, M->nuinit, M->ny);
+    PetscCall(HylcPeriodicFluctuationFromLocal(M->P, M->uinit, M->yw));
+    PetscCall(HylcPeriodicSetState(M->P, M->yw));
+    PetscCall(HylcPeriodicUpdateFrames(M->P));
+    M->continued = PETSC_TRUE;
+  }
   PetscCall(VecGetArray(M->X, &x));
   for (PetscInt i = 0; i < M->ny; i++) x[i] = (i % 4 == 3) ? M->yw[i] / M->mu : M->yw[i];
   PetscCall(VecRestoreArray(M->X, &x));
@@ -408,6 +421,76 @@ PetscErrorCode HylcMicroGetState(HylcMicro M, PetscReal y[])
   PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
   PetscCheck(M->X, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE, "HylcMicroGetState: no solve yet");
   PetscCall(HylcMicroToY_Private(M, M->X, y));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcMicroSetInitialState - Makes the next HylcMicroSolve() (only the next one) start from a given state
+  instead of u~ = 0 (continuation along a path of strains). Not collective.
+
+  Input Parameters:
++ M - the solver, after a HylcMicroSolve() (its tile is set up at the strain of that solve)
+- y - a state of the tile at the strain of the last solve, e.g. from HylcMicroGetState(); NULL cancels
+
+  Notes:
+  What is carried over is the fluctuation u~ = y - y0(z_last), positions and twists (y0: the initial guess
+  of HylcPeriodicGetInitialState() at the last solve's strain, taken now), in the local coordinates of the
+  macroscopic deformation (HylcPeriodicFluctuationToLocal(): per vertex, R(xi)^T u~ with its in-plane part
+  mapped by A^-1): the next solve, at strain z, starts from y0(z) + R_z(xi) [A_z (A^-1 w_xy); w_z]. In the
+  plane this deforms the whole last state by A_z A^-1, so yarn pieces in contact stay in contact; adding
+  u~ as it is would move them apart or through each other by (A_z - A) times their rest distance. The
+  reference frames are not
+  carried: the tile's frames are rebuilt at z from the rest frames by one parallel transport to the
+  starting state (HylcPeriodicUpdateFrames()). The frames of the last solve cannot be reused as they are,
+  because the set of full edges (ghosts, contact copies) is rebuilt for each strain. The reference frame is
+  a gauge: the twists are kept, so the starting material frames differ from the predecessor's by the
+  holonomy between the two transport paths (small for nearby states); the Newton method corrects that like
+  any other part of the initial guess, and the equilibrium reached does not depend on the gauge.
+
+  Level: intermediate
+
+.seealso: HylcMicroSolve(), HylcMicroGetState(), HylcMicroGetContinued()
+@*/
+PetscErrorCode HylcMicroSetInitialState(HylcMicro M, const PetscReal y[])
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
+  if (!y) {
+    M->haveInit = PETSC_FALSE;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCheck(M->X && M->P && M->setupcalled, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE, "HylcMicroSetInitialState: no solve yet (the state must be one of the tile at the strain of the last solve)");
+  if (M->nuinit != M->ny) {
+    PetscCall(PetscFree(M->uinit));
+    PetscCall(PetscMalloc1(M->ny, &M->uinit));
+    M->nuinit = M->ny;
+  }
+  for (PetscInt i = 0; i < M->ny; i++) PetscCheck(!PetscIsInfOrNanReal(y[i]), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "HylcMicroSetInitialState: unknown %" PetscInt_FMT " of the state is not finite (%g)", i, (double)y[i]);
+  PetscCall(HylcPeriodicFluctuationToLocal(M->P, y, M->uinit));
+  M->haveInit = PETSC_TRUE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcMicroGetContinued - Whether the last solve started from a state given by HylcMicroSetInitialState().
+  Not collective.
+
+  Input Parameter:
+. M - the solver
+
+  Output Parameter:
+. continued - PETSC_TRUE if it did, PETSC_FALSE if it started from u~ = 0
+
+  Level: intermediate
+
+.seealso: HylcMicroSetInitialState()
+@*/
+PetscErrorCode HylcMicroGetContinued(HylcMicro M, PetscBool *continued)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
+  PetscValidBoolPointer(continued, 2);
+  *continued = M->continued;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -471,6 +471,83 @@ PetscErrorCode HylcPeriodicGetMacroStrain(HylcPeriodic P, const HylcMacroStrain 
 }
 
 /*@C
+  HylcPeriodicFluctuationToLocal - The fluctuation u~ = y - y0 of a state y of the set-up tile in the local
+  coordinates of its macroscopic deformation: per original vertex o, the position part as
+  (A^-1 w_xy, w_z) with w = R(xi_o)^T u~_o (A = sqrt(I), R the rotation field: grad phi = R [A; 0]), the
+  twist part as it is. HylcPeriodicFluctuationFromLocal() maps it back at another strain: a state carried
+  this way is the old one deformed by the change of the macroscopic deformation (in the plane,
+  x -> A_new A_old^-1 x relative to the rest map), so pieces of yarn close to each other stay close.
+
+  Not collective
+
+  Input Parameters:
++ P - the periodic tile, set up
+- y - a state (4 per original vertex)
+
+  Output Parameter:
+. u - the local fluctuation (4 per original vertex; may not be y)
+
+  Level: advanced
+
+.seealso: HylcPeriodicFluctuationFromLocal(), HylcMicroSetInitialState()
+@*/
+PetscErrorCode HylcPeriodicFluctuationToLocal(HylcPeriodic P, const PetscReal y[], PetscReal u[])
+{
+  const HylcMacroStrain *m;
+
+  PetscFunctionBegin;
+  PetscCheck(P->setup, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE, "Call HylcPeriodicSetUp() first");
+  PetscCall(HylcMidsurfaceGetStrain(P->ms, &m));
+  for (PetscInt o = 0; o < P->N; o++) {
+    PetscReal R[9], d[3], w[3];
+    PetscCall(HylcMidsurfaceGetRotation(P->ms, P->xi + 3 * o, R));
+    for (int i = 0; i < 3; i++) d[i] = y[4 * o + i] - P->y0[4 * o + i];
+    for (int j = 0; j < 3; j++) w[j] = R[j] * d[0] + R[3 + j] * d[1] + R[6 + j] * d[2]; /* R^T d */
+    u[4 * o + 0] = m->Ainv[0] * w[0] + m->Ainv[1] * w[1];
+    u[4 * o + 1] = m->Ainv[2] * w[0] + m->Ainv[3] * w[1];
+    u[4 * o + 2] = w[2];
+    u[4 * o + 3] = y[4 * o + 3] - P->y0[4 * o + 3];
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPeriodicFluctuationFromLocal - The state y = y0 + u~ of the set-up tile whose fluctuation has the
+  local coordinates u (HylcPeriodicFluctuationToLocal(), possibly at another strain).
+
+  Not collective
+
+  Input Parameters:
++ P - the periodic tile, set up
+- u - the local fluctuation (4 per original vertex)
+
+  Output Parameter:
+. y - the state (may not be u)
+
+  Level: advanced
+
+.seealso: HylcPeriodicFluctuationToLocal()
+@*/
+PetscErrorCode HylcPeriodicFluctuationFromLocal(HylcPeriodic P, const PetscReal u[], PetscReal y[])
+{
+  const HylcMacroStrain *m;
+
+  PetscFunctionBegin;
+  PetscCheck(P->setup, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE, "Call HylcPeriodicSetUp() first");
+  PetscCall(HylcMidsurfaceGetStrain(P->ms, &m));
+  for (PetscInt o = 0; o < P->N; o++) {
+    PetscReal R[9], w[3];
+    PetscCall(HylcMidsurfaceGetRotation(P->ms, P->xi + 3 * o, R));
+    w[0] = m->A[0] * u[4 * o + 0] + m->A[1] * u[4 * o + 1];
+    w[1] = m->A[2] * u[4 * o + 0] + m->A[3] * u[4 * o + 1];
+    w[2] = u[4 * o + 2];
+    for (int i = 0; i < 3; i++) y[4 * o + i] = P->y0[4 * o + i] + R[3 * i] * w[0] + R[3 * i + 1] * w[1] + R[3 * i + 2] * w[2];
+    y[4 * o + 3] = P->y0[4 * o + 3] + u[4 * o + 3];
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
   HylcPeriodicGetInitialState - The initial guess y0 (x = phi + h n, u~ = 0) of the set-up tile.
 
   Not collective

@@ -33,14 +33,15 @@ static PetscErrorCode DatasetInt(hid_t loc, const char name[], PetscInt n, Petsc
 static PetscErrorCode WriteSamplesGroup(hid_t file, long N, const HylcSampleRecord recs[], const unsigned char done[])
 {
   double *strain, *psi, *parts, *res, *cres, *t;
-  int    *term, *status, *its, *retries;
+  int    *term, *status, *its, *retries, *start;
   hid_t   g;
   int     nstat = HylcSamplesNumStatuses_();
 
   PetscFunctionBegin;
   PetscCall(PetscMalloc6(6 * N + 1, &strain, N + 1, &psi, 4 * N + 1, &parts, N + 1, &res, N + 1, &cres, N + 1, &t));
-  PetscCall(PetscMalloc4(N + 1, &term, N + 1, &status, N + 1, &its, N + 1, &retries));
+  PetscCall(PetscMalloc5(N + 1, &term, N + 1, &status, N + 1, &its, N + 1, &retries, N + 1, &start));
   for (long k = 0; k < N; k++) {
+    start[k] = done && done[k] ? recs[k].start : -1;
     if (done && done[k]) {
       const HylcSampleRecord *r = &recs[k];
       for (int i = 0; i < 6; i++) strain[6 * k + i] = r->z[i];
@@ -74,13 +75,14 @@ static PetscErrorCode WriteSamplesGroup(hid_t file, long N, const HylcSampleReco
   HylcCallHDF5(HylcH5WriteDataset(g, "status", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, status, "1", "HylcMicroStatus of the Newton solve, index into /samples@status_names (0 converged, 1 iteration_cap, 2 time_cap, 3 stalled, 4 nonfinite; 5 failed is reserved, no longer produced); -1: not computed (the run ended before this sample, all its values are NaN or -1)"));
   HylcCallHDF5(HylcH5WriteDataset(g, "iterations", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, its, "1", "Newton iterations; -1 not computed"));
   HylcCallHDF5(HylcH5WriteDataset(g, "retries", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, retries, "1", "regularization increases (alpha x 10 for an indefinite K); -1 not computed"));
+  HylcCallHDF5(HylcH5WriteDataset(g, "start", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, start, "1", "how the solve started (-sampler_start): 0 cold (u~ = 0), 1 continued from the equilibrium of the sample before it on its half-line, 2 continued, did not converge, retried cold (the better of the two kept; iterations and time are the sums of both); -1 not computed"));
   HylcCallHDF5(HylcH5WriteDataset(g, "energy_parts", 2, (hsize_t[]){(hsize_t)N, 4}, H5T_NATIVE_DOUBLE, parts, "J", "energy of the tile by kind: columns stretch, bend, twist, contact"));
   HylcCallHDF5(HylcH5WriteDataset(g, "residual", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_DOUBLE, res, "1", "final projected-gradient norm relative to the initial one, |z| / |z0|"));
   HylcCallHDF5(HylcH5WriteDataset(g, "constraint_residual", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_DOUBLE, cres, "1 (units of the yarn radius)", "final periodicity-constraint residual |A y - dL| / r"));
   HylcCallHDF5(HylcH5WriteDataset(g, "time", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_DOUBLE, t, "s", "wall time of the sample's solve"));
   HylcCallHDF5(H5Gclose(g));
   PetscCall(PetscFree6(strain, psi, parts, res, cres, t));
-  PetscCall(PetscFree4(term, status, its, retries));
+  PetscCall(PetscFree5(term, status, its, retries, start));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -350,7 +352,7 @@ static PetscErrorCode ReadFile(hid_t file, long *nsamples, HylcSampleRecord **re
   hsize_t           dims[2];
   long              N;
   double           *strain, *psi, *parts, *res, *cres, *tm;
-  int              *term, *status, *its, *retries;
+  int              *term, *status, *its, *retries, *start;
   HylcSampleRecord *recs;
   unsigned char    *done;
 
@@ -373,6 +375,12 @@ static PetscErrorCode ReadFile(hid_t file, long *nsamples, HylcSampleRecord **re
   PetscCall(H5ReadDataset(file, "samples/status", H5T_NATIVE_INT, N, 0, status));
   PetscCall(H5ReadDataset(file, "samples/iterations", H5T_NATIVE_INT, N, 0, its));
   PetscCall(H5ReadDataset(file, "samples/retries", H5T_NATIVE_INT, N, 0, retries));
+  PetscCall(PetscCalloc1(N + 1, &start)); /* files before /samples/start: every sample was cold (0) */
+  {
+    htri_t has = H5Lexists(file, "samples/start", H5P_DEFAULT);
+    HylcCallHDF5((herr_t)(has < 0 ? -1 : 0));
+    if (has > 0) PetscCall(H5ReadDataset(file, "samples/start", H5T_NATIVE_INT, N, 0, start));
+  }
   PetscCall(PetscCalloc1(N + 1, &recs));
   PetscCall(PetscCalloc1(N + 1, &done));
   for (long k = 0; k < N; k++) {
@@ -388,10 +396,12 @@ static PetscErrorCode ReadFile(hid_t file, long *nsamples, HylcSampleRecord **re
     r->status     = status[k];
     r->iterations = its[k];
     r->retries    = retries[k];
+    r->start      = start[k] >= 0 ? start[k] : 0;
     done[k]       = status[k] >= 0;
   }
   PetscCall(PetscFree6(strain, psi, parts, res, cres, tm));
   PetscCall(PetscFree4(term, status, its, retries));
+  PetscCall(PetscFree(start));
   *nsamples = N;
   *recs_    = recs;
   *done_    = done;

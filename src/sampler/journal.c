@@ -22,8 +22,8 @@
 
 #define JOURNAL_MAGIC     "HYLCJNL1"
 #define JOURNAL_BOM       0x01020304u
-#define JOURNAL_VERSION   2u  /* 1: a short fingerprint (hylc before the complete identity) */
-#define JOURNAL_PAYLOAD   136 /* packed record without checksum */
+#define JOURNAL_VERSION   3u  /* 1: a short fingerprint (hylc before the complete identity); 2: records without the start */
+#define JOURNAL_PAYLOAD   140 /* packed record without checksum */
 #define JOURNAL_RECSIZE   (JOURNAL_PAYLOAD + 8)
 #define JOURNAL_FIXEDHEAD 64 /* header bytes before the identity text: 32 fixed + the SHA-256 of the identity */
 #define JOURNAL_MAXID     (1 << 24)
@@ -67,6 +67,10 @@ static void PackRecord(const HylcSampleRecord *r, unsigned char b[JOURNAL_RECSIZ
   memcpy(b, &idx, 8);
   memcpy(b + 8, iv, 16);
   memcpy(b + 24, dv, 112);
+  {
+    int32_t st = r->start;
+    memcpy(b + 136, &st, 4);
+  }
   h = Fnv1a64(b, JOURNAL_PAYLOAD);
   memcpy(b + JOURNAL_PAYLOAD, &h, 8);
 }
@@ -96,6 +100,12 @@ static int UnpackRecord(const unsigned char b[JOURNAL_RECSIZE], long nsamples, H
   r->residual  = dv[11];
   r->cresidual = dv[12];
   r->time      = dv[13];
+  {
+    int32_t st;
+    memcpy(&st, b + 136, 4);
+    if (st < 0 || st > 2) return -1;
+    r->start = st;
+  }
   return 0;
 }
 
@@ -203,7 +213,8 @@ static PetscErrorCode JournalReadHeader(HylcJournal j, long *hsize, PetscBool *s
   PetscCheck(got >= 16 && !memcmp(fixed, JOURNAL_MAGIC, 8), PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s is not a hylc journal (bad magic): remove it or choose another -sampler_output", j->path);
   memcpy(u, fixed + 8, 8);
   PetscCheck(u[0] == JOURNAL_BOM, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "Journal %s was written on a machine of another byte order", j->path);
-  PetscCheck(u[1] >= JOURNAL_VERSION, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "Journal %s was written by an earlier hylc (journal format %u, without the complete run identity) and cannot be resumed safely: start over with -sampler_overwrite", j->path, (unsigned)u[1]);
+  PetscCheck(u[1] >= 2, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "Journal %s was written by an earlier hylc (journal format %u, without the complete run identity) and cannot be resumed safely: start over with -sampler_overwrite", j->path, (unsigned)u[1]);
+  PetscCheck(u[1] != 2, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "Journal %s was written by an earlier hylc (journal format 2, records without the start of each solve, /samples/start) and cannot be resumed: start over with -sampler_overwrite", j->path);
   PetscCheck(got == JOURNAL_FIXEDHEAD, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "Journal %s: corrupt header (too short): start over with -sampler_overwrite", j->path);
   memcpy(u, fixed + 8, 16);
   memcpy(&ns, fixed + 24, 8);

@@ -162,6 +162,33 @@ PetscErrorCode HylcSamplerSetBatchSize(HylcSampler S, PetscInt batch)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+const char *const HylcSamplerStarts[] = {"cold", "continue", "HylcSamplerStart", "HYLC_SAMPLER_START_", NULL};
+
+/*@C
+  HylcSamplerSetStart - How each sample's solve starts (option -sampler_start): cold (from u~ = 0, the
+  default) or continue. With continue, the unit of work handed to a rank is a half-line of the plan
+  (HylcPlanUnits(): each 1D term and each line of a 2D grid split at zero, going outward);
+  a unit's first sample starts cold, each other one from its predecessor's equilibrium if that converged
+  (else cold); a continued solve that does not converge is retried cold. -sampler_batch is not used then.
+
+  Not collective
+
+  Input Parameters:
++ S     - the sampler
+- start - HYLC_SAMPLER_START_COLD or HYLC_SAMPLER_START_CONTINUE
+
+  Level: intermediate
+
+.seealso: HylcMicroSetInitialState(), HylcPlanUnits()
+@*/
+PetscErrorCode HylcSamplerSetStart(HylcSampler S, HylcSamplerStart start)
+{
+  SAMPLER_SETTER_BEGIN;
+  PetscCheck(start == HYLC_SAMPLER_START_COLD || start == HYLC_SAMPLER_START_CONTINUE, PetscObjectComm((PetscObject)S), PETSC_ERR_ARG_OUTOFRANGE, "-sampler_start: unknown start %d (cold or continue)", (int)start);
+  S->start = start;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /*@C
   HylcSamplerSetProgressInterval - Seconds between progress lines (option -sampler_progress).
 
@@ -246,6 +273,7 @@ PetscErrorCode HylcSamplerSetReference(HylcSampler S, HylcReferenceMode mode, co
 . -sampler_terms <all>            - comma list of terms: zero, sx, sa, sy, II00, II11, sx-sa, sx-sy,
                                     sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11, or all (HylcSamplerSetTerms())
 . -sampler_batch <1>              - samples per batch (the unit of work handed to a rank) (HylcSamplerSetBatchSize())
+. -sampler_start <cold>           - cold or continue (half-lines from the zero strain outward) (HylcSamplerSetStart())
 . -sampler_progress <5>           - seconds between progress lines (HylcSamplerSetProgressInterval())
 . -sampler_export_raw <dir>, -sampler_density <0> - the paper's raw layout (HylcSamplerSetExportRaw())
 . -sampler_reference <auto>, -reference_output <f.pyp> - reference state (HylcSamplerSetReference())
@@ -262,7 +290,7 @@ PetscErrorCode HylcSamplerSetFromOptions(HylcSampler S)
   PetscInt       n1 = S->n1, n2 = S->n2, batch = S->batch;
   PetscReal      progress = S->progress, density = S->density;
   PetscBool      resume = S->resume, overwrite = S->overwrite, tset;
-  PetscEnum      mode   = (PetscEnum)S->refmode;
+  PetscEnum      mode = (PetscEnum)S->refmode, start = (PetscEnum)S->start;
   HylcPlanRanges ranges = S->ranges;
   HylcPattern    pat;
   HylcMicro      micro;
@@ -292,6 +320,7 @@ PetscErrorCode HylcSamplerSetFromOptions(HylcSampler S)
   PetscCall(PetscOptionsInt("-sampler_n2", "Samples per axis of a 2D term", "HylcSamplerSetSampleCounts", n2, &n2, NULL));
   PetscCall(PetscOptionsString("-sampler_terms", "Terms to sample: all, or a comma list of zero, sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11", "HylcSamplerSetTerms", terms, terms, sizeof(terms), &tset));
   PetscCall(PetscOptionsInt("-sampler_batch", "Samples per batch (unit of work of a rank)", "HylcSamplerSetBatchSize", batch, &batch, NULL));
+  PetscCall(PetscOptionsEnum("-sampler_start", "How each sample's solve starts: cold (from u~ = 0) or continue (half-lines of the plan from the zero strain outward, each sample from its predecessor's equilibrium, retried cold if it does not converge; the unit of work is a half-line)", "HylcSamplerSetStart", HylcSamplerStarts, start, &start, NULL));
   PetscCall(PetscOptionsReal("-sampler_progress", "Seconds between progress lines", "HylcSamplerSetProgressInterval", progress, &progress, NULL));
   PetscCall(PetscOptionsString("-sampler_export_raw", "Also write the paper's raw layout into this directory: data.txt (rows sx sa sy II00 II01 II11 Psi in the order of C4) and info.txt (area, area density)", "HylcSamplerSetExportRaw", rawdir, rawdir, sizeof(rawdir), NULL));
   PetscCall(PetscOptionsReal("-sampler_density", "Volumetric yarn density for the area density of info.txt (kg/m^3; <= 0: 0.12 kg/m^2 / r, as hylc-fit)", "HylcSamplerSetExportRaw", density, &density, NULL));
@@ -304,6 +333,7 @@ PetscErrorCode HylcSamplerSetFromOptions(HylcSampler S)
   PetscCall(HylcSamplerSetPlanRanges(S, &ranges));
   PetscCall(HylcSamplerSetSampleCounts(S, n1, n2));
   PetscCall(HylcSamplerSetBatchSize(S, batch));
+  PetscCall(HylcSamplerSetStart(S, (HylcSamplerStart)start));
   PetscCall(HylcSamplerSetProgressInterval(S, progress));
   PetscCall(HylcSamplerSetExportRaw(S, rawdir, density));
   if (tset) {

@@ -138,3 +138,56 @@ int HylcPlanDefaults(const char *family, double scale, HylcPlan *p)
   }
   return 0;
 }
+
+/* the first non-negative sample of an ascending axis (n if none): where it is split at the zero strain */
+static int FirstNonNegative(const double Z[], int n)
+{
+  int i0 = 0;
+  while (i0 < n && Z[i0] < 0) i0++;
+  return i0;
+}
+
+/* appends the half-lines of one line (samples base + stride * i, i = 0..n-1, ascending values Z) split at zero */
+static void HalfLines(const double Z[], int n, long base, long stride, long *nu, long *pos, long start[], long order[])
+{
+  const int i0 = FirstNonNegative(Z, n);
+  if (i0 < n) {
+    if (start) start[*nu] = *pos;
+    (*nu)++;
+    for (int i = i0; i < n; i++, (*pos)++)
+      if (order) order[*pos] = base + stride * i;
+  }
+  if (i0 > 0) {
+    if (start) start[*nu] = *pos;
+    (*nu)++;
+    for (int i = i0 - 1; i >= 0; i--, (*pos)++)
+      if (order) order[*pos] = base + stride * i;
+  }
+}
+
+long HylcPlanUnits(const HylcPlan *p, long start[], long order[])
+{
+  double Z[1024];
+  long   nu = 0, pos = 0, off = 0;
+  for (int t = 0; t < HYLC_PLAN_NTERM; t++) {
+    const long n = HylcPlanTermSize(p, t);
+    if (!n) continue;
+    if (t == 0) {
+      if (start) start[nu] = pos;
+      if (order) order[pos] = off;
+      nu++, pos++;
+    } else if (t <= 5) {
+      const int c = t - 1;
+      if (p->n1 > 1024 || HylcSampleRange(c, p->min1[c], p->max1[c], p->n1, Z)) return -1;
+      HalfLines(Z, p->n1, off, 1, &nu, &pos, start, order);
+    } else {
+      int ci, cj;
+      HylcPlanPair(t, &ci, &cj);
+      if (p->n2 > 1024 || HylcSampleRange(cj, p->min2[t - 6][1], p->max2[t - 6][1], p->n2, Z)) return -1;
+      for (int a = 0; a < p->n2; a++) HalfLines(Z, p->n2, off + (long)a * p->n2, 1, &nu, &pos, start, order);
+    }
+    off += n;
+  }
+  if (start) start[nu] = pos;
+  return nu;
+}

@@ -134,7 +134,26 @@ PetscErrorCode HylcSamplerSetUp(HylcSampler S)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode SolveSample(HylcSampler S, long k, HylcSampleRecord *rec)
+static void FillRecord(long k, int term, const double z[6], const HylcMicroResult *r, HylcSampleRecord *rec)
+{
+  memset(rec, 0, sizeof(*rec));
+  rec->index      = k;
+  rec->term       = term;
+  rec->status     = (int)r->status;
+  rec->iterations = (int)r->iterations;
+  rec->retries    = (int)r->retries;
+  for (int i = 0; i < 6; i++) rec->z[i] = z[i];
+  rec->psi = r->psi;
+  for (int i = 0; i < 4; i++) rec->parts[i] = r->parts[i];
+  rec->residual  = r->residual;
+  rec->cresidual = r->cresidual;
+  rec->time      = r->time;
+  rec->start     = HYLC_SAMPLE_START_COLD;
+}
+
+/* sample k; from the state prev (a state of the tile at the strain of the last solve) if not NULL, retried
+   cold if that does not converge. On return the state of the kept result is in 'state' (if not NULL). */
+static PetscErrorCode SolveSample(HylcSampler S, long k, const PetscReal *prev, PetscReal *state, HylcSampleRecord *rec)
 {
   HylcMicroResult r;
   double          z[6];
@@ -142,19 +161,32 @@ static PetscErrorCode SolveSample(HylcSampler S, long k, HylcSampleRecord *rec)
 
   PetscFunctionBegin;
   PetscCheck(!HylcPlanSample(&S->plan, k, z, &term), PETSC_COMM_SELF, PETSC_ERR_PLIB, "Sample %ld outside the plan", k);
+  if (prev) PetscCall(HylcMicroSetInitialState(S->micro, prev));
   PetscCall(HylcMicroSolve(S->micro, z, &r));
-  PetscCall(PetscMemzero(rec, sizeof(*rec)));
-  rec->index      = k;
-  rec->term       = term;
-  rec->status     = (int)r.status;
-  rec->iterations = (int)r.iterations;
-  rec->retries    = (int)r.retries;
-  for (int i = 0; i < 6; i++) rec->z[i] = z[i];
-  rec->psi = r.psi;
-  for (int i = 0; i < 4; i++) rec->parts[i] = r.parts[i];
-  rec->residual  = r.residual;
-  rec->cresidual = r.cresidual;
-  rec->time      = r.time;
+  FillRecord(k, term, z, &r, rec);
+  if (state) PetscCall(HylcMicroGetState(S->micro, state));
+  if (prev) {
+    rec->start = HYLC_SAMPLE_START_CONTINUED;
+    if (r.status != HYLC_MICRO_CONVERGED) {
+      /* retried cold; the better of the two is kept: converged, then not converged, then non-finite
+         (the cold one on a tie); iterations and time are the sums of both solves */
+      HylcSampleRecord cont = *rec;
+      HylcMicroResult  rc;
+      PetscCall(HylcMicroSolve(S->micro, z, &rc));
+      const int rankC = r.status == HYLC_MICRO_CONVERGED ? 0 : r.status == HYLC_MICRO_NONFINITE ? 2
+                                                                                                : 1;
+      const int rankR = rc.status == HYLC_MICRO_CONVERGED ? 0 : rc.status == HYLC_MICRO_NONFINITE ? 2
+                                                                                                  : 1;
+      if (rankR <= rankC) {
+        FillRecord(k, term, z, &rc, rec);
+        if (state) PetscCall(HylcMicroGetState(S->micro, state));
+      } else
+        *rec = cont; /* its state is still in 'state' */
+      rec->start      = HYLC_SAMPLE_START_RETRIED;
+      rec->iterations = (int)(r.iterations + rc.iterations);
+      rec->time       = r.time + rc.time;
+    }
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -180,10 +212,9 @@ static PetscErrorCode Report(HylcSampler S, Progress *pg, PetscBool force)
 /* rank 0: receive whatever records have arrived, append them to the journal */
 static PetscErrorCode Drain(HylcSampler S, HylcJournal J, Progress *pg, PetscInt *finished, PetscBool wait)
 {
-  HylcSampleRecord *buf;
+  HylcSampleRecord *buf = NULL;
 
   PetscFunctionBegin;
-  PetscCall(PetscMalloc1(S->batch, &buf));
   for (;;) {
     PetscMPIInt flag, count;
     MPI_Status  st;
@@ -200,6 +231,8 @@ static PetscErrorCode Drain(HylcSampler S, HylcJournal J, Progress *pg, PetscInt
     } else {
       PetscCallMPI(MPI_Get_count(&st, MPI_BYTE, &count));
       const PetscInt n = count / (PetscMPIInt)sizeof(HylcSampleRecord);
+      PetscCall(PetscFree(buf)); /* a batch or a whole unit of continuation */
+      PetscCall(PetscMalloc1(n + 1, &buf));
       PetscCallMPI(MPI_Recv(buf, count, MPI_BYTE, st.MPI_SOURCE, TAG_RECORDS, PetscObjectComm((PetscObject)S), MPI_STATUS_IGNORE));
       PetscCall(HylcJournalAppend(J, buf, n));
       for (PetscInt i = 0; i < n; i++) pg->failed += buf[i].status != HYLC_MICRO_CONVERGED;
@@ -270,8 +303,10 @@ PetscErrorCode HylcSamplerRun(HylcSampler S)
   PetscCall(PetscLogEventBegin(HYLC_SamplerRun, S, 0, 0, 0));
   PetscCall(PetscSNPrintf(jpath, sizeof(jpath), "%s.journal", S->output));
   PetscCheck(S->rank || J, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE, "Call HylcSamplerSetUp() first");
-  PetscCall(PetscFree2(S->done, S->recs));
-  PetscCall(PetscMalloc2(S->nsamples + 1, &S->done, S->batch, &S->recs));
+  PetscCall(PetscFree(S->done));
+  PetscCall(PetscFree(S->recs));
+  PetscCall(PetscMalloc1(S->nsamples + 1, &S->done));
+  PetscCall(PetscMalloc1(S->batch, &S->recs));
   done = S->done;
   recs = S->recs;
   PetscCall(PetscArrayzero(done, S->nsamples + 1));
@@ -283,16 +318,37 @@ PetscErrorCode HylcSamplerRun(HylcSampler S)
     PetscCall(HylcJournalGetDone(J, &nd, &jd));
     PetscCall(PetscArraycpy(done, jd, S->nsamples));
     pg.done = pg.converged0 = nd;
-    PetscCall(PetscPrintf(PETSC_COMM_SELF, "[sampler] %ld samples in %ld batches on %d ranks; %ld already done (%s)\n", S->nsamples, (S->nsamples + S->batch - 1) / S->batch, (int)S->size, (long)nd, jpath));
+    if (S->start == HYLC_SAMPLER_START_CONTINUE)
+      PetscCall(PetscPrintf(PETSC_COMM_SELF, "[sampler] %ld samples in %ld half-lines (continuation) on %d ranks; %ld already done (%s)\n", S->nsamples, HylcPlanUnits(&S->plan, NULL, NULL), (int)S->size, (long)nd, jpath));
+    else
+      PetscCall(PetscPrintf(PETSC_COMM_SELF, "[sampler] %ld samples in %ld batches on %d ranks; %ld already done (%s)\n", S->nsamples, (S->nsamples + S->batch - 1) / S->batch, (int)S->size, (long)nd, jpath));
   }
   PetscCallMPI(MPI_Bcast(done, (PetscMPIInt)S->nsamples, MPI_UNSIGNED_CHAR, 0, PetscObjectComm((PetscObject)S)));
   PetscCall(PetscTime(&pg.t0));
   pg.last = pg.t0;
-  /* dynamic scheduling: the next batch comes from a shared counter on rank 0 (MPI one-sided atomic
-     fetch-and-add, no involvement of rank 0); which rank solves a sample does not change its result */
-  const long nb      = (S->nsamples + S->batch - 1) / S->batch;
-  long      *counter = NULL, one = 1, b;
-  MPI_Win    win;
+  /* dynamic scheduling: the next batch (cold) or unit (continue: a half-line, HylcPlanUnits) comes from a
+     shared counter on rank 0 (MPI one-sided atomic fetch-and-add, no involvement of rank 0); which rank
+     solves a sample (cold) or a unit (continue) does not change its result */
+  const PetscBool cont   = (PetscBool)(S->start == HYLC_SAMPLER_START_CONTINUE);
+  long           *ustart = NULL, *uorder = NULL, nb;
+  PetscReal      *yprev = NULL, *ycur = NULL;
+  PetscInt        ny = 0, cap = S->batch;
+  if (cont) {
+    const long nu = HylcPlanUnits(&S->plan, NULL, NULL);
+    PetscCheck(nu > 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "Invalid plan for the units of continuation");
+    PetscCall(PetscMalloc2(nu + 1, &ustart, S->nsamples, &uorder));
+    PetscCheck(HylcPlanUnits(&S->plan, ustart, uorder) == nu && ustart[nu] == S->nsamples, PETSC_COMM_SELF, PETSC_ERR_PLIB, "The units of continuation do not cover the plan");
+    for (long u = 0; u < nu; u++) cap = PetscMax(cap, (PetscInt)(ustart[u + 1] - ustart[u]));
+    nb = nu;
+    if (cap > S->batch) {
+      PetscCall(PetscFree(S->recs));
+      PetscCall(PetscMalloc1(cap, &S->recs));
+      recs = S->recs;
+    }
+  } else
+    nb = (S->nsamples + S->batch - 1) / S->batch;
+  long   *counter = NULL, one = 1, b;
+  MPI_Win win;
   PetscCallMPI(MPI_Win_allocate(S->rank ? 0 : (MPI_Aint)sizeof(long), sizeof(long), MPI_INFO_NULL, PetscObjectComm((PetscObject)S), &counter, &win));
   if (!S->rank) *counter = 0;
   PetscCallMPI(MPI_Barrier(PetscObjectComm((PetscObject)S)));
@@ -302,10 +358,34 @@ PetscErrorCode HylcSamplerRun(HylcSampler S)
     PetscCallMPI(MPI_Win_flush(0, win));
     if (b >= nb) break;
     PetscInt n = 0;
-    for (long k = b * S->batch; k < PetscMin((b + 1) * S->batch, S->nsamples); k++) {
-      if (done[k]) continue;
-      PetscCall(SolveSample(S, k, &recs[n++]));
-      if (!S->rank) PetscCall(Drain(S, J, &pg, &finished, PETSC_FALSE));
+    if (cont) {
+      /* a unit is solved whole, from its first sample, if any of its samples is not in the journal (a unit
+         cut by a kill is recomputed from its start, so a resumed run is bitwise an uninterrupted one), and
+         its records are sent and journalled together */
+      PetscBool todo = PETSC_FALSE, prevOk = PETSC_FALSE;
+      for (long i = ustart[b]; i < ustart[b + 1]; i++)
+        if (!done[uorder[i]]) todo = PETSC_TRUE;
+      if (!todo) continue;
+      for (long i = ustart[b]; i < ustart[b + 1]; i++) {
+        PetscCall(SolveSample(S, uorder[i], prevOk ? yprev : NULL, ycur, &recs[n]));
+        if (!ycur) { /* the tile's size is known after its first set-up (a cold solve: its state is the kept one) */
+          HylcPeriodic P;
+          PetscCall(HylcMicroGetPeriodic(S->micro, &P));
+          PetscCall(HylcPeriodicGetSizes(P, &ny, NULL, NULL, NULL));
+          PetscCall(PetscMalloc2(ny, &yprev, ny, &ycur));
+          PetscCall(HylcMicroGetState(S->micro, ycur));
+        }
+        prevOk = (PetscBool)(recs[n].status == HYLC_MICRO_CONVERGED);
+        if (prevOk) PetscCall(PetscArraycpy(yprev, ycur, ny));
+        n++;
+        if (!S->rank) PetscCall(Drain(S, J, &pg, &finished, PETSC_FALSE));
+      }
+    } else {
+      for (long k = b * S->batch; k < PetscMin((b + 1) * S->batch, S->nsamples); k++) {
+        if (done[k]) continue;
+        PetscCall(SolveSample(S, k, NULL, NULL, &recs[n++]));
+        if (!S->rank) PetscCall(Drain(S, J, &pg, &finished, PETSC_FALSE));
+      }
     }
     if (!n) continue;
     if (S->rank)
@@ -340,7 +420,10 @@ PetscErrorCode HylcSamplerRun(HylcSampler S)
     if (S->rawdir[0]) PetscCall(ExportRaw(S, all, jd));
     PetscCall(HylcJournalClose(&S->journal));
   }
-  PetscCall(PetscFree2(S->done, S->recs));
+  PetscCall(PetscFree2(ustart, uorder));
+  PetscCall(PetscFree2(yprev, ycur));
+  PetscCall(PetscFree(S->done));
+  PetscCall(PetscFree(S->recs));
   PetscCallMPI(MPI_Barrier(PetscObjectComm((PetscObject)S)));
   PetscCallMPI(MPI_Win_free(&win));
   PetscCall(PetscLogEventEnd(HYLC_SamplerRun, S, 0, 0, 0));

@@ -67,7 +67,8 @@ PetscErrorCode HylcSamplerDestroy(HylcSampler *s)
   }
   PetscCall(HylcJournalClose(&(*s)->journal));
   PetscCall(PetscFree((*s)->identity));
-  PetscCall(PetscFree2((*s)->done, (*s)->recs));
+  PetscCall(PetscFree((*s)->done));
+  PetscCall(PetscFree((*s)->recs));
   PetscCall(HylcMicroDestroy(&(*s)->micro));
   PetscCall(HylcPatternDestroy(&(*s)->pat));
   PetscCall(PetscHeaderDestroy(s));
@@ -212,6 +213,7 @@ PetscErrorCode HylcSamplerView(HylcSampler S, PetscViewer viewer)
   else
     PetscCall(PetscStrncpy(count, " (ranges not resolved: not set up)", sizeof(count)));
   PetscCall(PetscViewerASCIIPrintf(viewer, "plan: family %s, %" PetscInt_FMT " samples per 1D term, %" PetscInt_FMT " per 2D axis, terms %s%s\n", HylcPlanFamilies[S->ranges.family], S->n1, S->n2, terms, count));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "start: %s%s\n", HylcSamplerStarts[S->start], S->start == HYLC_SAMPLER_START_CONTINUE ? " (units: half-lines from the zero strain outward)" : " (every sample from u~ = 0)"));
   PetscCall(PetscViewerASCIIPrintf(viewer, "%d ranks, batches of %" PetscInt_FMT ", progress every %g s, reference state %s%s%s\n", (int)S->size, S->batch, (double)S->progress, HylcReferenceModes[S->refmode], S->refout[0] ? " written to " : "", S->refout));
   if (S->rawdir[0]) PetscCall(PetscViewerASCIIPrintf(viewer, "raw layout exported to %s\n", S->rawdir));
   PetscCall(PetscViewerASCIIPopTab(viewer));

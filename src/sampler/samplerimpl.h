@@ -27,6 +27,7 @@ struct _p_HylcSampler {
   unsigned char      *done;     /* HylcSamplerRun's scratch (owned here, so an error exit frees it too): */
   HylcSampleRecord   *recs;     /* samples done, and one batch of records */
   PetscInt            batch;
+  HylcSamplerStart    start;    /* -sampler_start */
   PetscReal           progress; /* seconds between progress lines */
   long                nsamples;
   HylcReferenceMode   refmode;

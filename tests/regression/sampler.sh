@@ -38,7 +38,7 @@ for np in 1 2; do
     if [ -f $k.journal ]; then
       s=$(stat -c %s $k.journal)
       [ -z "$s0" ] && [ "$s" -gt 0 ] && s0=$s
-      [ -n "$s0" ] && [ "$s" -ge $((s0 + 3 * 144)) ] && break
+      [ -n "$s0" ] && [ "$s" -ge $((s0 + 3 * 148)) ] && break
     fi
     sleep 0.005
   done
@@ -90,7 +90,7 @@ refuse "sampler_batch must be at least 1" -sampler_batch 0
 # -help documents every option of the job and does no work
 rm -f samples.h5 samples.h5.journal
 $tool -pattern_type plain -help >help.txt 2>&1 || { tail help.txt; die "-help failed"; }
-for opt in -sampler_output -sampler_resume -sampler_overwrite -sampler_terms -sampler_n1 -sampler_n2 -sampler_family -sampler_range_sx -sampler_batch -sampler_progress -sampler_export_raw -sampler_reference -reference_output -reference_etol -micro_rtol -micro_snes_max_it -periodic_slide -yarn_kc -pattern_file; do
+for opt in -sampler_output -sampler_resume -sampler_overwrite -sampler_start -sampler_terms -sampler_n1 -sampler_n2 -sampler_family -sampler_range_sx -sampler_batch -sampler_progress -sampler_export_raw -sampler_reference -reference_output -reference_etol -micro_rtol -micro_snes_max_it -periodic_slide -yarn_kc -pattern_file; do
   grep -q -- "$opt" help.txt || die "-help does not document $opt"
 done
 [ ! -e samples.h5.journal ] || die "-help started the job"

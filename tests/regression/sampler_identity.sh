@@ -49,6 +49,9 @@ assert "-micro_rtol 1e-8" in opts and opts == sorted(opts), opts
 assert p.attrs["hylc_version"] and p.attrs["petsc_version"].count(".") == 2
 PY
 fi
+# a journal of the previous format (version 2, records without the start) is refused, saying how to start over
+printf '\002' | dd of=s.h5.journal bs=1 seek=12 conv=notrunc status=none
+refused "written by an earlier hylc \(journal format 2, records without the start.*start over with -sampler_overwrite" "${args[@]}"
 # a journal of the earlier format (version 1) is refused, saying how to start over
 printf '\001' | dd of=s.h5.journal bs=1 seek=12 conv=notrunc status=none
 refused "written by an earlier hylc \(journal format 1.*start over with -sampler_overwrite" "${args[@]}"

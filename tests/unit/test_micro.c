@@ -4,6 +4,8 @@
    - bent by II00 = kappa it converges to 1/2 B kappa^2 L / A within the discretization error;
    - the energy never increases between accepted iterates;
    - a solve gives bitwise the same result alone and after other solves with the same solver;
+   - continuation (HylcMicroSetInitialState): z2 from the equilibrium of a nearby z1 reaches the cold Psi to
+     1e-9 relative in fewer iterations, and the state is used once;
    - on the paper's patterns (when present): z = 0 converges on all seven;
    - mirror equivariance: the mirror image (x -> -x) of a pattern sheared by sa has the energy of the
      pattern sheared by -sa (the paper's basket and satin, a generated twill), to 1e-9; so Psi(sa) = Psi(-sa)
@@ -131,6 +133,56 @@ static PetscErrorCode TestReproducible(void)
   for (int k = 0; k < 4; k++) HYLC_CHECK(ra.parts[k] == rb.parts[k], "energy part %d differs: %.17g vs %.17g", k, (double)ra.parts[k], (double)rb.parts[k]);
   PetscCall(HylcMicroDestroy(&A));
   PetscCall(HylcMicroDestroy(&B));
+  PetscCall(HylcPatternDestroy(&p));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* continuation: z2 solved from the equilibrium of a nearby z1 (HylcMicroSetInitialState) reaches the Psi of
+   a cold solve of z2 to 1e-9 relative, in fewer iterations; the initial state is used once */
+static PetscErrorCode TestContinuation(void)
+{
+  HylcPattern          p;
+  HylcPatternGenParams g;
+  HylcYarnModel        m;
+  HylcMicro            M;
+  HylcMicroResult      r1, rc, rw, r3;
+  PetscInt             ny;
+  PetscReal           *y;
+  PetscBool            cont;
+  const PetscReal      z1[6] = {0.1, 0.05, 0, 0, 0, 0}, z2[6] = {0.12, 0.06, 0, 0, 0, 0};
+
+  PetscFunctionBegin;
+  PetscCall(HylcPatternGenParamsDefault(&g));
+  PetscCall(HylcPatternCreate(PETSC_COMM_SELF, &p));
+  PetscCall(HylcPatternGenerate(p, HYLCPATTERNTWILL, &g));
+  PetscCall(HylcYarnModelDefault(&m));
+  PetscCall(HylcMicroCreate(PETSC_COMM_SELF, &M));
+  PetscCall(HylcMicroSetPattern(M, p, &m));
+  PetscCall(HylcMicroSolve(M, z2, &rc)); /* cold */
+  PetscCall(HylcMicroGetContinued(M, &cont));
+  HYLC_CHECK(!cont, "a solve without an initial state says it was continued");
+  PetscCall(HylcMicroSolve(M, z1, &r1));
+  {
+    HylcPeriodic P;
+    PetscCall(HylcMicroGetPeriodic(M, &P));
+    PetscCall(HylcPeriodicGetSizes(P, &ny, NULL, NULL, NULL));
+  }
+  PetscCall(PetscMalloc1(ny, &y));
+  PetscCall(HylcMicroGetState(M, y));
+  PetscCall(HylcMicroSetInitialState(M, y));
+  PetscCall(HylcMicroSolve(M, z2, &rw)); /* continued from z1 */
+  PetscCall(HylcMicroGetContinued(M, &cont));
+  HYLC_CHECK(cont, "the solve after HylcMicroSetInitialState says it was not continued");
+  HYLC_CHECK(rc.status == HYLC_MICRO_CONVERGED && r1.status == HYLC_MICRO_CONVERGED && rw.status == HYLC_MICRO_CONVERGED, "continuation: statuses cold %s, z1 %s, continued %s", HylcMicroStatuses[rc.status], HylcMicroStatuses[r1.status], HylcMicroStatuses[rw.status]);
+  HYLC_CHECK(PetscAbsReal(rw.psi - rc.psi) <= 1e-9 * PetscAbsReal(rc.psi), "continued Psi %.12e vs cold %.12e (relative %.2e > 1e-9)", (double)rw.psi, (double)rc.psi, (double)(PetscAbsReal(rw.psi - rc.psi) / PetscAbsReal(rc.psi)));
+  HYLC_CHECK(rw.iterations < rc.iterations, "continued solve: %d iterations, cold %d (expected fewer)", (int)rw.iterations, (int)rc.iterations);
+  PetscCall(PetscPrintf(PETSC_COMM_SELF, "continuation: cold %d iterations, continued %d; Psi %.12e vs %.12e\n", (int)rc.iterations, (int)rw.iterations, (double)rc.psi, (double)rw.psi));
+  /* used once: the next solve is cold again and bitwise the cold one */
+  PetscCall(HylcMicroSolve(M, z2, &r3));
+  PetscCall(HylcMicroGetContinued(M, &cont));
+  HYLC_CHECK(!cont && r3.psi == rc.psi && r3.iterations == rc.iterations, "the initial state was used twice: %.17g (%d its) vs cold %.17g (%d its)", (double)r3.psi, (int)r3.iterations, (double)rc.psi, (int)rc.iterations);
+  PetscCall(PetscFree(y));
+  PetscCall(HylcMicroDestroy(&M));
   PetscCall(HylcPatternDestroy(&p));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -526,6 +578,7 @@ int main(int argc, char **argv)
   PetscCall(TestLazy());
   PetscCall(TestAnalytic());
   PetscCall(TestReproducible());
+  PetscCall(TestContinuation());
   PetscCall(TestShearSymmetry());
   PetscCall(TestMirrorTwill());
   PetscCall(PetscSNPrintf(dir, sizeof(dir), "%s/patterns/hylc2020", env ? env : "../shared/refdata"));

@@ -49,6 +49,38 @@ int main(void)
   HYLC_CHECK(HylcPlanSize(&p) == 750, "1D-only plan size %ld", HylcPlanSize(&p));
   HylcPlanSample(&p, 0, z, &term);
   HYLC_CHECK(term == 1, "first sample of a 1D-only plan: term %d", term);
+  /* the units of continuation (HylcPlanUnits): every sample exactly once; within a unit one term, one
+     varying coordinate, and |z| of it growing outward from the first sample; 1 + 2 per 1D term + 2 n2 per
+     2D term units for the stockinette ranges (every axis has samples on both sides of zero) */
+  HylcPlanDefaults("stockinette", 1.0, &p);
+  p.n1 = 30;
+  p.n2 = 10;
+  {
+    const long N = HylcPlanSize(&p), nu = HylcPlanUnits(&p, NULL, NULL);
+    long       start[256], order[1200];
+    int        seen[1200] = {0};
+    HYLC_CHECK(N == 1051 && nu == 1 + 5 * 2 + 9 * 2 * 10, "thinned plan: %ld samples, %ld units", N, nu);
+    HYLC_CHECK(HylcPlanUnits(&p, start, order) == nu && start[0] == 0 && start[nu] == N, "unit offsets");
+    for (long i = 0; i < N; i++) seen[order[i]]++;
+    for (long k = 0; k < N; k++) HYLC_CHECK(seen[k] == 1, "sample %ld is in %d units", k, seen[k]);
+    for (long u = 0; u < nu; u++) {
+      double z0[6], z1[6];
+      int    t0, t1;
+      HylcPlanSample(&p, order[start[u]], z0, &t0);
+      for (long i = start[u] + 1; i < start[u + 1]; i++) {
+        HylcPlanSample(&p, order[i - 1], z0, &t0);
+        HylcPlanSample(&p, order[i], z1, &t1);
+        HYLC_CHECK(t0 == t1, "unit %ld mixes terms %d and %d", u, t0, t1);
+        int nvary = 0;
+        for (int c = 0; c < 6; c++)
+          if (z0[c] != z1[c]) {
+            nvary++;
+            HYLC_CHECK(fabs(z1[c]) > fabs(z0[c]), "unit %ld: sample %ld is not farther from zero than its predecessor (%g after %g)", u, order[i], z1[c], z0[c]);
+          }
+        HYLC_CHECK(nvary == 1, "unit %ld: %d coordinates vary between consecutive samples", u, nvary);
+      }
+    }
+  }
   /* II ranges scale with 1/r */
   HylcPlanDefaults("woven", 10.0, &p);
   HYLC_CHECK(p.max1[3] == 1700 && p.min1[4] == -1700, "II range for r = 0.1 mm: %g %g", p.max1[3], p.min1[4]);

@@ -13,7 +13,7 @@
 #include <unistd.h>
 #include "hylctest.h"
 
-#define RECSIZE 144 /* bytes per journal record (docs/output-format.md) */
+#define RECSIZE 148 /* bytes per journal record (docs/output-format.md) */
 
 static void MakeRecord(long k, HylcSampleRecord *r)
 {
@@ -29,6 +29,7 @@ static void MakeRecord(long k, HylcSampleRecord *r)
   r->residual  = 1e-9 * (double)(k + 1);
   r->cresidual = 1e-13 / (double)(k + 1);
   r->time      = 0.01 * (double)k + 1e-6;
+  r->start     = (int)((k / 2) % 3); /* 0 cold, 1 continued, 2 retried cold */
 }
 
 static int SameRecord(const HylcSampleRecord *a, const HylcSampleRecord *b)
@@ -36,7 +37,7 @@ static int SameRecord(const HylcSampleRecord *a, const HylcSampleRecord *b)
   int same = a->index == b->index && a->term == b->term && a->status == b->status && a->iterations == b->iterations && a->retries == b->retries;
   for (int i = 0; i < 6; i++) same = same && a->z[i] == b->z[i];
   for (int i = 0; i < 4; i++) same = same && a->parts[i] == b->parts[i];
-  return same && a->psi == b->psi && a->residual == b->residual && a->cresidual == b->cresidual && a->time == b->time;
+  return same && a->psi == b->psi && a->residual == b->residual && a->cresidual == b->cresidual && a->time == b->time && a->start == b->start;
 }
 
 static long FileSize(const char *path)

@@ -58,6 +58,10 @@ struct _p_HylcMicro {
   PetscInt        injectAt;     /* the value of HYLC_INJECT_ERROR of this solve (for the message) */
   PetscInt        nhist, caphist;
   PetscReal      *hist;
+  PetscReal      *uinit;     /* HylcMicroSetInitialState(): the fluctuation u~ = y - y0 (twists included) of a state */
+  PetscInt        nuinit;    /* its length (the tile's ny when it was set) */
+  PetscBool       haveInit;  /* the next solve starts from y0 + uinit (used once) */
+  PetscBool       continued; /* the last solve started from a state given by HylcMicroSetInitialState() */
 };
 
 /* the prefix of the options, for messages */
