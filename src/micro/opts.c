@@ -255,7 +255,8 @@ PetscErrorCode HylcMicroSetIndefinite(HylcMicro M, PetscBool flg)
 PetscErrorCode HylcMicroSetFromOptions(HylcMicro M)
 {
   HylcMicroParams p = M->par;
-  PetscBool       flg;
+  PetscBool       flg, schedSet;
+  char            sched[64];
   HylcPeriodic    P;
   PC              inner;
   SNES            snes;
@@ -269,19 +270,8 @@ PetscErrorCode HylcMicroSetFromOptions(HylcMicro M)
   PetscCall(PetscOptionsReal("-alpha_end", "Regularization schedule: alpha^ from iteration alpha_its on", "HylcMicroSetRegularization", p.alphaEnd, &p.alphaEnd, NULL));
   PetscCall(PetscOptionsInt("-alpha_its", "Regularization schedule: iterations of the geometric decay", "HylcMicroSetRegularization", p.alphaIts, &p.alphaIts, NULL));
   PetscCall(PetscOptionsInt("-alpha_retries", "Retries with alpha x 10 when the Newton matrix is indefinite", "HylcMicroSetRegularization", p.maxRetries, &p.maxRetries, NULL));
-  {
-    char      sched[64];
-    PetscBool set;
-    PetscCall(PetscStrncpy(sched, HylcMicroAlphaSchedules[p.alphaSched ? 1 : 0], sizeof(sched)));
-    PetscCall(PetscOptionsString("-alpha_schedule", "Regularization schedule of alpha^: paper (decay over alpha_its iterations) or adaptive (trust-region-like: down after good steps, up after poor or rejected ones)", "HylcMicroSetRegularizationSchedule", sched, sched, sizeof(sched), &set));
-    if (set) {
-      PetscBool paper, adaptive;
-      PetscCall(PetscStrcmp(sched, "paper", &paper));
-      PetscCall(PetscStrcmp(sched, "adaptive", &adaptive));
-      PetscCheck(paper || adaptive, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%salpha_schedule %s: must be paper or adaptive", HylcMicroPrefix_Private(M), sched);
-      p.alphaSched = adaptive ? HYLC_MICRO_ALPHA_ADAPTIVE : HYLC_MICRO_ALPHA_PAPER;
-    }
-  }
+  PetscCall(PetscStrncpy(sched, HylcMicroAlphaSchedules[p.alphaSched ? 1 : 0], sizeof(sched)));
+  PetscCall(PetscOptionsString("-alpha_schedule", "Regularization schedule of alpha^: paper (decay over alpha_its iterations) or adaptive (trust-region-like: down after good steps, up after poor or rejected ones)", "HylcMicroSetRegularizationSchedule", sched, sched, sizeof(sched), &schedSet));
   PetscCall(PetscOptionsReal("-alpha_factor", "Adaptive regularization: alpha^ / factor after a good step, x factor after a poor one", "HylcMicroSetRegularizationSchedule", p.alphaFact, &p.alphaFact, NULL));
   PetscCall(PetscOptionsReal("-alpha_min", "Adaptive regularization: smallest alpha^", "HylcMicroSetRegularizationSchedule", p.alphaMin, &p.alphaMin, NULL));
   PetscCall(PetscOptionsReal("-alpha_max", "Adaptive regularization: largest alpha^", "HylcMicroSetRegularizationSchedule", p.alphaMax, &p.alphaMax, NULL));
@@ -298,6 +288,13 @@ PetscErrorCode HylcMicroSetFromOptions(HylcMicro M)
   PetscCall(PetscOptionsBool("-factor_indefinite", "Accept the factorization of an indefinite Newton matrix if the step descends with positive curvature; false: alpha x 10 at any negative eigenvalue", "HylcMicroSetIndefinite", p.indefinite, &p.indefinite, NULL));
   PetscCall(PetscOptionsName("-view", "Print the solver at set-up", "HylcMicroView", &flg));
   PetscOptionsEnd();
+  if (schedSet) { /* checked after PetscOptionsEnd(), which must run */
+    PetscBool paper, adaptive;
+    PetscCall(PetscStrcmp(sched, "paper", &paper));
+    PetscCall(PetscStrcmp(sched, "adaptive", &adaptive));
+    PetscCheck(paper || adaptive, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%salpha_schedule %s: must be paper or adaptive", HylcMicroPrefix_Private(M), sched);
+    p.alphaSched = adaptive ? HYLC_MICRO_ALPHA_ADAPTIVE : HYLC_MICRO_ALPHA_PAPER;
+  }
   PetscCall(HylcMicroSetRegularization(M, p.alphaStart, p.alphaEnd, p.alphaIts, p.maxRetries));
   PetscCall(HylcMicroSetRegularizationSchedule(M, (HylcMicroAlphaSchedule)p.alphaSched, p.alphaFact, p.alphaMin, p.alphaMax));
   PetscCall(HylcMicroSetTwistScale(M, p.twistScale));
