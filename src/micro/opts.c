@@ -45,8 +45,10 @@ const char *const HylcMicroAlphaSchedules[] = {"paper", "adaptive", "HylcMicroAl
   alpha^ the step was computed with (after any x 10 retries) divided by factor if the full step was accepted
   and the actual energy decrease is more than 3/4 of the decrease predicted by the quadratic model of the
   unregularized Hessian, multiplied by factor if it is less than 1/4 or the step was backtracked, by
-  factor^2 if the line search found no decrease; always clamped to [min, max]. The convergence test is the
-  same. Not collective.
+  factor^2 if the line search found no decrease; a step cut by the step limit lets alpha^ decay at least as
+  the paper's schedule; always clamped to [min, max]. The adaptive schedule refuses an indefinite K (as
+  -micro_factor_indefinite false: the x 10 retries raise alpha^), since with a small alpha^ the steps
+  would otherwise converge to saddle points. The convergence test is the same. Not collective.
 
   Input Parameters:
 + M        - the solver
@@ -342,7 +344,7 @@ PetscErrorCode HylcMicroView(HylcMicro M, PetscViewer viewer)
   PetscCall(PetscViewerASCIIPushTab(viewer));
   /* C formatting: PETSc's printf appends '.' to integral %g values */
   if (p->alphaSched == HYLC_MICRO_ALPHA_ADAPTIVE)
-    snprintf(buf, sizeof(buf), "regularization: adaptive, alpha^ from %g, / %g after good steps, x %g after poor ones, within [%g, %g], up to %d retries x 10; factorization of an indefinite K %s\n", (double)p->alphaStart, (double)p->alphaFact, (double)p->alphaFact, (double)p->alphaMin, (double)p->alphaMax, (int)p->maxRetries, p->indefinite ? "accepted" : "refused");
+    snprintf(buf, sizeof(buf), "regularization: adaptive, alpha^ from %g, / %g after good steps, x %g after poor ones, within [%g, %g], up to %d retries x 10; factorization of an indefinite K %s\n", (double)p->alphaStart, (double)p->alphaFact, (double)p->alphaFact, (double)p->alphaMin, (double)p->alphaMax, (int)p->maxRetries, "refused");
   else
     snprintf(buf, sizeof(buf), "regularization: paper schedule, alpha^ %g -> %g over %d iterations, up to %d retries x 10; factorization of an indefinite K %s\n", (double)p->alphaStart, (double)p->alphaEnd, (int)p->alphaIts, (int)p->maxRetries, p->indefinite ? "accepted" : "refused");
   PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
