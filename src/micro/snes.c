@@ -221,7 +221,7 @@ static PetscErrorCode LineSearch(SNESLineSearch ls, void *ctx)
       M->statusSet = PETSC_TRUE;
     }
   }
-  if (adaptive) PetscCall(AdaptAlpha(M, accepted, (PetscBool)(d > dmax), lambda, Eold - Etrial, lambda * lin - 0.5 * lambda * lambda * quad));
+  if (adaptive) PetscCall(AdaptAlpha(M, accepted, (PetscBool)(d > dmax), lambda, accepted ? Eold - Etrial : 0, lambda * lin - 0.5 * lambda * lambda * quad));
   PetscCall(VecNorm(X, NORM_2, &xnorm));
   PetscCall(VecNorm(F, NORM_2, &fnorm));
   PetscCall(VecNorm(Y, NORM_2, &ynorm));
