@@ -33,6 +33,14 @@ typedef enum {
 } HylcMicroStatus;
 PETSC_EXTERN const char *const HylcMicroStatuses[];
 
+/* the regularization schedule of alpha^ (docs/method.md, "Newton solver"): the paper's geometric decay over
+   the iteration count, or a trust-region-like adaptation to the agreement of each step with its model */
+typedef enum {
+  HYLC_MICRO_ALPHA_PAPER    = 0,
+  HYLC_MICRO_ALPHA_ADAPTIVE = 1
+} HylcMicroAlphaSchedule;
+PETSC_EXTERN const char *const HylcMicroAlphaSchedules[];
+
 typedef struct {
   PetscReal       z[6];     /* the strain */
   PetscReal       psi;      /* E / A (J/m^2) */
@@ -53,6 +61,7 @@ PETSC_EXTERN PetscErrorCode HylcMicroDestroy(HylcMicro *);
 PETSC_EXTERN PetscErrorCode HylcMicroSetPattern(HylcMicro, HylcPattern, const HylcYarnModel *);
 PETSC_EXTERN PetscErrorCode HylcMicroSetOptionsPrefix(HylcMicro, const char[]);
 PETSC_EXTERN PetscErrorCode HylcMicroSetRegularization(HylcMicro, PetscReal start, PetscReal end, PetscInt its, PetscInt retries);
+PETSC_EXTERN PetscErrorCode HylcMicroSetRegularizationSchedule(HylcMicro, HylcMicroAlphaSchedule, PetscReal factor, PetscReal min, PetscReal max);
 PETSC_EXTERN PetscErrorCode HylcMicroSetTwistScale(HylcMicro, PetscReal);
 PETSC_EXTERN PetscErrorCode HylcMicroSetStepLimit(HylcMicro, PetscReal p0, PetscReal p1);
 PETSC_EXTERN PetscErrorCode HylcMicroSetLineSearch(HylcMicro, PetscReal factor, PetscInt trials, PetscInt maxStalls);

@@ -60,7 +60,7 @@ static PetscErrorCode FactorPositive(HylcMicro M, PetscBool *pos)
   } else
     PetscCall(MatGetInertia(F, &nneg, &nzero, NULL));
   *pos = (PetscBool)(nneg == 0 && nzero == 0);
-  if (!*pos) PetscCall(PetscInfo(M, "Newton matrix indefinite (%" PetscInt_FMT " negative, %" PetscInt_FMT " zero pivots) and -micro_factor_indefinite false\n", nneg, nzero));
+  if (!*pos) PetscCall(PetscInfo(M, "Newton matrix indefinite (%" PetscInt_FMT " negative, %" PetscInt_FMT " zero pivots) and -micro_factor_indefinite false or -micro_alpha_schedule adaptive\n", nneg, nzero));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -96,7 +96,9 @@ static PetscErrorCode KKTFactor(HylcMicro M, PetscBool *ok)
   }
   *ok = (PetscBool)(reason == PC_NOERROR);
   if (!*ok) PetscCall(PetscInfo(M, "factorization of the Newton matrix failed: %s\n", PCFailedReasons[reason]));
-  if (*ok && !M->par.indefinite) PetscCall(FactorPositive(M, ok));
+  /* the adaptive schedule refuses an indefinite K whatever -micro_factor_indefinite says: its alpha^ is
+     lowered until the quadratic model has negative curvature, and such steps end in saddle points */
+  if (*ok && (!M->par.indefinite || M->par.alphaSched == HYLC_MICRO_ALPHA_ADAPTIVE)) PetscCall(FactorPositive(M, ok));
   if (*ok) { /* Z = K^-1 M A^T: all m right-hand sides in one MatMatSolve */
     Mat F;
     for (PetscInt i = 0; i < m; i++)

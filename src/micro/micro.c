@@ -18,6 +18,10 @@ static void ParamsDefault(HylcMicroParams *p)
   p->alphaEnd   = 5;
   p->alphaIts   = 400;
   p->maxRetries = 12;
+  p->alphaSched = HYLC_MICRO_ALPHA_PAPER;
+  p->alphaFact  = 4;
+  p->alphaMin   = 1e-2;
+  p->alphaMax   = 1e10;
   p->twistScale = 0;
   p->stepP0     = 0.05;
   p->stepP1     = 0.15;

@@ -36,6 +36,51 @@ PetscErrorCode HylcMicroSetRegularization(HylcMicro M, PetscReal start, PetscRea
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+const char *const HylcMicroAlphaSchedules[] = {"paper", "adaptive", "HylcMicroAlphaSchedule", "HYLC_MICRO_ALPHA_", NULL};
+
+/*@C
+  HylcMicroSetRegularizationSchedule - Sets how alpha^ of alpha = alpha^ ||M g||_inf evolves: paper (default), the
+  geometric decay of HylcMicroSetRegularization() over the iteration count; or adaptive, a trust-region-like
+  rule: alpha^ starts at the start value of HylcMicroSetRegularization() and, after each line search, is the
+  alpha^ the step was computed with (after any x 10 retries) divided by factor if the full step was accepted
+  and the actual energy decrease is more than 3/4 of the decrease predicted by the quadratic model of the
+  unregularized Hessian, multiplied by factor if it is less than 1/4 or the step was backtracked, by
+  factor^2 if the line search found no decrease; a step cut by the step limit lets alpha^ decay at least as
+  the paper's schedule; always clamped to [min, max]. The adaptive schedule refuses an indefinite K (as
+  -micro_factor_indefinite false: the x 10 retries raise alpha^), since with a small alpha^ the steps
+  would otherwise converge to saddle points. The convergence test is the same. Not collective.
+
+  Input Parameters:
++ M        - the solver
+. schedule - HYLC_MICRO_ALPHA_PAPER or HYLC_MICRO_ALPHA_ADAPTIVE
+. factor   - adaptive: the factor, > 1 (default 4; PETSC_DEFAULT keeps the value)
+. min      - adaptive: the smallest alpha^, > 0 (default 1e-2)
+- max      - adaptive: the largest alpha^, >= min (default 1e10)
+
+  Options Database Keys:
++ -micro_alpha_schedule <paper> - paper or adaptive
+. -micro_alpha_factor <4> - factor
+. -micro_alpha_min <1e-2> - min
+- -micro_alpha_max <1e10> - max
+
+  Level: intermediate
+
+.seealso: HylcMicroSetRegularization(), HylcMicroSetFromOptions()
+@*/
+PetscErrorCode HylcMicroSetRegularizationSchedule(HylcMicro M, HylcMicroAlphaSchedule schedule, PetscReal factor, PetscReal min, PetscReal max)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
+  PetscCheck(schedule == HYLC_MICRO_ALPHA_PAPER || schedule == HYLC_MICRO_ALPHA_ADAPTIVE, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%salpha_schedule %d: must be paper or adaptive", HylcMicroPrefix_Private(M), (int)schedule);
+  M->par.alphaSched = schedule;
+  if (factor != (PetscReal)PETSC_DEFAULT) M->par.alphaFact = factor;
+  if (min != (PetscReal)PETSC_DEFAULT) M->par.alphaMin = min;
+  if (max != (PetscReal)PETSC_DEFAULT) M->par.alphaMax = max;
+  PetscCheck(M->par.alphaFact > 1 && PetscIsNormalReal(M->par.alphaFact), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%salpha_factor %g: must be finite and greater than 1", HylcMicroPrefix_Private(M), (double)M->par.alphaFact);
+  PetscCheck(M->par.alphaMin > 0 && M->par.alphaMax >= M->par.alphaMin && PetscIsNormalReal(M->par.alphaMax), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%salpha_min %g must be positive and -%salpha_max %g finite and at least -%salpha_min", HylcMicroPrefix_Private(M), (double)M->par.alphaMin, HylcMicroPrefix_Private(M), (double)M->par.alphaMax, HylcMicroPrefix_Private(M));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /*@C
   HylcMicroSetTwistScale - Sets mu, the scale of the twist unknowns (y = M y^, M = 1 per position, mu per
   twist). Not collective.
@@ -190,6 +235,7 @@ PetscErrorCode HylcMicroSetIndefinite(HylcMicro M, PetscBool flg)
 
   Options Database Keys:
 + -micro_alpha_start, -micro_alpha_end, -micro_alpha_its, -micro_alpha_retries - HylcMicroSetRegularization()
+. -micro_alpha_schedule paper|adaptive, -micro_alpha_factor, -micro_alpha_min, -micro_alpha_max - HylcMicroSetRegularizationSchedule()
 . -micro_twist_scale - HylcMicroSetTwistScale()
 . -micro_step_p0, -micro_step_p1 - HylcMicroSetStepLimit()
 . -micro_ls_factor, -micro_ls_max, -micro_max_stalls - HylcMicroSetLineSearch()
@@ -211,7 +257,8 @@ PetscErrorCode HylcMicroSetIndefinite(HylcMicro M, PetscBool flg)
 PetscErrorCode HylcMicroSetFromOptions(HylcMicro M)
 {
   HylcMicroParams p = M->par;
-  PetscBool       flg;
+  PetscBool       flg, schedSet;
+  char            sched[64];
   HylcPeriodic    P;
   PC              inner;
   SNES            snes;
@@ -225,6 +272,11 @@ PetscErrorCode HylcMicroSetFromOptions(HylcMicro M)
   PetscCall(PetscOptionsReal("-alpha_end", "Regularization schedule: alpha^ from iteration alpha_its on", "HylcMicroSetRegularization", p.alphaEnd, &p.alphaEnd, NULL));
   PetscCall(PetscOptionsInt("-alpha_its", "Regularization schedule: iterations of the geometric decay", "HylcMicroSetRegularization", p.alphaIts, &p.alphaIts, NULL));
   PetscCall(PetscOptionsInt("-alpha_retries", "Retries with alpha x 10 when the Newton matrix is indefinite", "HylcMicroSetRegularization", p.maxRetries, &p.maxRetries, NULL));
+  PetscCall(PetscStrncpy(sched, HylcMicroAlphaSchedules[p.alphaSched ? 1 : 0], sizeof(sched)));
+  PetscCall(PetscOptionsString("-alpha_schedule", "Regularization schedule of alpha^: paper (decay over alpha_its iterations) or adaptive (trust-region-like: down after good steps, up after poor or rejected ones)", "HylcMicroSetRegularizationSchedule", sched, sched, sizeof(sched), &schedSet));
+  PetscCall(PetscOptionsReal("-alpha_factor", "Adaptive regularization: alpha^ / factor after a good step, x factor after a poor one", "HylcMicroSetRegularizationSchedule", p.alphaFact, &p.alphaFact, NULL));
+  PetscCall(PetscOptionsReal("-alpha_min", "Adaptive regularization: smallest alpha^", "HylcMicroSetRegularizationSchedule", p.alphaMin, &p.alphaMin, NULL));
+  PetscCall(PetscOptionsReal("-alpha_max", "Adaptive regularization: largest alpha^", "HylcMicroSetRegularizationSchedule", p.alphaMax, &p.alphaMax, NULL));
   PetscCall(PetscOptionsReal("-twist_scale", "Scale mu of the twist unknowns, 0 = 1/r", "HylcMicroSetTwistScale", p.twistScale, &p.twistScale, NULL));
   PetscCall(PetscOptionsReal("-step_p0", "Step limit d_max = (p0 + p1 clamp(lambda_min(I),0,1)) r: p0", "HylcMicroSetStepLimit", p.stepP0, &p.stepP0, NULL));
   PetscCall(PetscOptionsReal("-step_p1", "Step limit: p1", "HylcMicroSetStepLimit", p.stepP1, &p.stepP1, NULL));
@@ -238,7 +290,15 @@ PetscErrorCode HylcMicroSetFromOptions(HylcMicro M)
   PetscCall(PetscOptionsBool("-factor_indefinite", "Accept the factorization of an indefinite Newton matrix if the step descends with positive curvature; false: alpha x 10 at any negative eigenvalue", "HylcMicroSetIndefinite", p.indefinite, &p.indefinite, NULL));
   PetscCall(PetscOptionsName("-view", "Print the solver at set-up", "HylcMicroView", &flg));
   PetscOptionsEnd();
+  if (schedSet) { /* checked after PetscOptionsEnd(), which must run */
+    PetscBool paper, adaptive;
+    PetscCall(PetscStrcmp(sched, "paper", &paper));
+    PetscCall(PetscStrcmp(sched, "adaptive", &adaptive));
+    PetscCheck(paper || adaptive, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%salpha_schedule %s: must be paper or adaptive", HylcMicroPrefix_Private(M), sched);
+    p.alphaSched = adaptive ? HYLC_MICRO_ALPHA_ADAPTIVE : HYLC_MICRO_ALPHA_PAPER;
+  }
   PetscCall(HylcMicroSetRegularization(M, p.alphaStart, p.alphaEnd, p.alphaIts, p.maxRetries));
+  PetscCall(HylcMicroSetRegularizationSchedule(M, (HylcMicroAlphaSchedule)p.alphaSched, p.alphaFact, p.alphaMin, p.alphaMax));
   PetscCall(HylcMicroSetTwistScale(M, p.twistScale));
   PetscCall(HylcMicroSetStepLimit(M, p.stepP0, p.stepP1));
   PetscCall(HylcMicroSetLineSearch(M, p.lsFactor, p.lsMax, p.maxStalls));
@@ -283,7 +343,10 @@ PetscErrorCode HylcMicroView(HylcMicro M, PetscViewer viewer)
   PetscCall(PetscObjectPrintClassNamePrefixType((PetscObject)M, viewer));
   PetscCall(PetscViewerASCIIPushTab(viewer));
   /* C formatting: PETSc's printf appends '.' to integral %g values */
-  snprintf(buf, sizeof(buf), "regularization: alpha^ %g -> %g over %d iterations, up to %d retries x 10; factorization of an indefinite K %s\n", (double)p->alphaStart, (double)p->alphaEnd, (int)p->alphaIts, (int)p->maxRetries, p->indefinite ? "accepted" : "refused");
+  if (p->alphaSched == HYLC_MICRO_ALPHA_ADAPTIVE)
+    snprintf(buf, sizeof(buf), "regularization: adaptive, alpha^ from %g, / %g after good steps, x %g after poor ones, within [%g, %g], up to %d retries x 10; factorization of an indefinite K %s\n", (double)p->alphaStart, (double)p->alphaFact, (double)p->alphaFact, (double)p->alphaMin, (double)p->alphaMax, (int)p->maxRetries, "refused");
+  else
+    snprintf(buf, sizeof(buf), "regularization: paper schedule, alpha^ %g -> %g over %d iterations, up to %d retries x 10; factorization of an indefinite K %s\n", (double)p->alphaStart, (double)p->alphaEnd, (int)p->alphaIts, (int)p->maxRetries, p->indefinite ? "accepted" : "refused");
   PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
   snprintf(buf, sizeof(buf), "twist scale mu: %s; step limit (%g + %g clamp(lambda_min, 0, 1)) r; line search x %g, %d trials, stop after %d stalls\n", p->twistScale > 0 ? "set" : "1/r", (double)p->stepP0, (double)p->stepP1, (double)p->lsFactor, (int)p->lsMax, (int)p->maxStalls);
   PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));

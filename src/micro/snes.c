@@ -82,13 +82,57 @@ static PetscErrorCode FormJacobian(SNES snes, Vec X, Mat J, Mat Jpre, void *ctx)
   }
   M->haveH = PETSC_FALSE;
   for (PetscInt i = 0; i < M->ny; i++) gmax = PetscMax(gmax, PetscAbsReal((i % 4 == 3) ? M->mu * M->gw[i] : M->gw[i]));
-  const PetscReal t = (PetscReal)PetscMin(it, M->par.alphaIts) / M->par.alphaIts;
-  M->alpha          = M->par.alphaStart * PetscPowReal(M->par.alphaEnd / M->par.alphaStart, t) * gmax;
+  M->gmax       = gmax;
+  M->retriesJac = M->retries;
+  if (M->par.alphaSched == HYLC_MICRO_ALPHA_ADAPTIVE) { /* alpha^ of the previous line search (AdaptAlpha) */
+    if (it == 0) M->ahat = M->par.alphaStart;
+    M->alpha = M->ahat * gmax;
+  } else {
+    const PetscReal t = (PetscReal)PetscMin(it, M->par.alphaIts) / M->par.alphaIts;
+    M->alpha          = M->par.alphaStart * PetscPowReal(M->par.alphaEnd / M->par.alphaStart, t) * gmax;
+  }
   if (!(M->alpha > 0)) M->alpha = PETSC_SMALL;
   PetscCall(MatDiagonalScale(M->K, M->mvec, M->mvec));
   PetscCall(MatShift(M->K, M->alpha));
   PetscCall(MatSetOption(M->K, MAT_SYMMETRIC, PETSC_TRUE));
   PetscCall(HylcPeriodicConstraintResidual(M->P, M->yw, M->c));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* the adaptive schedule (trust-region logic on alpha^), after each line search, from the alpha^ the step
+   was computed with (after any x 10 retries of the KKT solve, which are kept): a full step that was not cut
+   by the step limit, needed no retry and whose energy decrease agrees with the quadratic model of the
+   unregularized Hessian (ratio > 3/4) divides alpha^ by the factor; a step cut by the step limit (then the
+   step limit is the trust region) lets alpha^ decay at least as the paper's schedule does; a poor agreement
+   (ratio < 1/4) or a backtracked step multiplies it by the factor, a rejected line search by its square;
+   always within [alphaMin, alphaMax] */
+static PetscErrorCode AdaptAlpha(HylcMicro M, PetscBool accepted, PetscBool clipped, PetscReal lambda, PetscReal actual, PetscReal pred)
+{
+  const PetscReal f = M->par.alphaFact;
+  PetscReal       a;
+  PetscInt        it;
+
+  PetscFunctionBegin;
+  if (!(M->gmax > 0)) PetscFunctionReturn(PETSC_SUCCESS); /* alpha was not scaled by ||M g||: keep alpha^ */
+  a = M->alpha / M->gmax;
+  if (!accepted)
+    a *= f * f;
+  else if (lambda < 1)
+    a *= f;
+  else {
+    const PetscReal rho = pred > 0 ? actual / pred : 1; /* a decrease where the model predicts none is good */
+    if (rho < 0.25)
+      a *= f;
+    else if (rho > 0.75 && !clipped && M->retries == M->retriesJac)
+      a /= f;
+  }
+  if (accepted && clipped) { /* the paper's alpha^ of the next iteration as a ceiling */
+    PetscCall(SNESGetIterationNumber(M->snes, &it));
+    const PetscReal t = (PetscReal)PetscMin(it + 1, M->par.alphaIts) / M->par.alphaIts;
+    a                 = PetscMin(a, M->par.alphaStart * PetscPowReal(M->par.alphaEnd / M->par.alphaStart, t));
+  }
+  M->ahat = PetscClipInterval(a, M->par.alphaMin, M->par.alphaMax);
+  PetscCall(PetscInfo(M, "adaptive alpha^ %g -> %g (accepted %d, step limit %s, lambda %g, energy decrease %g, predicted %g)\n", (double)(M->alpha / M->gmax), (double)M->ahat, (int)accepted, clipped ? "active" : "inactive", (double)lambda, (double)actual, (double)pred));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -102,7 +146,8 @@ static PetscErrorCode LineSearch(SNESLineSearch ls, void *ctx)
   SNES                   snes;
   PetscLogDouble         t0, t1;
   const HylcMacroStrain *ms;
-  PetscBool              accepted = PETSC_FALSE;
+  PetscBool              accepted = PETSC_FALSE, adaptive = (PetscBool)(M->par.alphaSched == HYLC_MICRO_ALPHA_ADAPTIVE);
+  PetscReal              lin = 0, quad = 0, Eold, Etrial = PETSC_INFINITY;
 
   PetscFunctionBegin;
   PetscCall(PetscTime(&t0));
@@ -130,11 +175,22 @@ static PetscErrorCode LineSearch(SNESLineSearch ls, void *ctx)
   for (PetscInt o = 0; o < M->ny / 4; o++) d = PetscMax(d, PetscSqrtReal(PetscSqr(PetscRealPart(y[4 * o])) + PetscSqr(PetscRealPart(y[4 * o + 1])) + PetscSqr(PetscRealPart(y[4 * o + 2]))));
   PetscCall(VecRestoreArrayRead(Y, &y));
   if (d > dmax) PetscCall(VecScale(Y, dmax / d));
+  if (adaptive) { /* the model of the step -lambda Y: E0 - lambda (F.Y) + lambda^2/2 Y.(K - alpha I)Y */
+    PetscScalar fy, yky, yy;
+    PetscCall(VecDot(F, Y, &fy));
+    PetscCall(MatMult(M->K, Y, G));
+    PetscCall(VecDot(Y, G, &yky));
+    PetscCall(VecDot(Y, Y, &yy));
+    lin  = PetscRealPart(fy);
+    quad = PetscRealPart(yky) - M->alpha * PetscRealPart(yy);
+  }
+  Eold = M->E0;
   for (PetscInt i = 0; i < M->par.lsMax; i++, lambda *= M->par.lsFactor) {
     PetscCall(VecWAXPY(W, -lambda, Y, X));
     PetscCall(HylcMicroSafeEnergy_Private(M, W, &E, NULL));
     if (E < M->E0) {
       accepted = PETSC_TRUE;
+      Etrial   = E;
       break;
     }
   }
@@ -165,6 +221,7 @@ static PetscErrorCode LineSearch(SNESLineSearch ls, void *ctx)
       M->statusSet = PETSC_TRUE;
     }
   }
+  if (adaptive) PetscCall(AdaptAlpha(M, accepted, (PetscBool)(d > dmax), lambda, accepted ? Eold - Etrial : 0, lambda * lin - 0.5 * lambda * lambda * quad));
   PetscCall(VecNorm(X, NORM_2, &xnorm));
   PetscCall(VecNorm(F, NORM_2, &fnorm));
   PetscCall(VecNorm(Y, NORM_2, &ynorm));

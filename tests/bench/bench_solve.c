@@ -73,7 +73,7 @@ static PetscErrorCode Run(const char *root, const char *dir, const Case *c)
     total += cpu;
     worst = PetscMax(worst, cpu);
     nconv += r.status == HYLC_MICRO_CONVERGED;
-    PetscCall(PetscPrintf(PETSC_COMM_SELF, "  %-14s %5d %-13s %9.3f %7.0f%% %7.0f%% %7.0f%% %7.0f%%  %.6e\n", label[k], (int)r.iterations, HylcMicroStatuses[r.status], cpu, 100 * r.tAssembly / w, 100 * r.tContact / w, 100 * r.tFactor / w, 100 * r.tLineSearch / w, (double)r.psi));
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, "  %-14s %5d %-13s %9.3f %7.0f%% %7.0f%% %7.0f%% %7.0f%%  %.10e\n", label[k], (int)r.iterations, HylcMicroStatuses[r.status], cpu, 100 * r.tAssembly / w, 100 * r.tContact / w, 100 * r.tFactor / w, 100 * r.tLineSearch / w, (double)r.psi));
   }
   PetscCall(PetscPrintf(PETSC_COMM_SELF, "  %s: %d/9 converged, mean %.3f CPU-s, worst %.3f CPU-s per sample; speed-up over the paper's %.1f CPU-s (best case of Table S1): %.1fx on average, %.1fx worst\n", c->name, (int)nconv, total / 9, worst, (double)PetscMin(c->paper1D, c->paper2D), PetscMin(c->paper1D, c->paper2D) / (total / 9), PetscMin(c->paper1D, c->paper2D) / worst));
   PetscCall(HylcMicroDestroy(&M));

@@ -12,7 +12,9 @@
      holds exactly as far as a pattern is mirror symmetric (the stored basket and satin are not, by 3-8 %:
      docs/method.md);
    - representation: storing vertices one or two periods away (the same periodic object) changes nothing;
-   - the object: prefix, setters, view, the removed -micro_factor_type, the factorization PC's solver type. */
+   - the object: prefix, setters, view, the removed -micro_factor_type, the factorization PC's solver type;
+   - -micro_alpha_schedule adaptive: the paper schedule's psi (1e-8) where the equilibrium is unique, with no
+     more iterations; its bad values refused. */
 #include <hylc/micro.h>
 #include <unistd.h>
 #include <hylc/chol.h>
@@ -476,6 +478,79 @@ static PetscErrorCode TestObject(void)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* -micro_alpha_schedule adaptive against the paper's schedule on a generated plain weave (kc = 50) at strains
+   with one equilibrium: the same psi to 1e-8 relative (both solved to rtol 1e-10, so that the comparison is
+   of equilibria, not of where each schedule stops) and, with the default tolerances, no more iterations;
+   and the option's bad values are refused with PETSC_ERR_USER_INPUT; HylcMicroView names the schedule */
+static PetscErrorCode TestAdaptive(void)
+{
+  HylcPattern          p;
+  HylcPatternGenParams g;
+  HylcYarnModel        m;
+  HylcMicro            M;
+  HylcMicroResult      r[2];
+  PetscErrorCode       ierr;
+  PetscViewer          v;
+  char                 path[] = "/tmp/hylc_test_micro_adaptXXXXXX";
+  int                  fd;
+  const PetscReal      zs[4][6] = {{0.1, 0, 0, 0, 0, 0}, {0, 0, 0.15, 0, 0, 0}, {0.05, 0.2, 0, 0, 0, 0}, {0, 0, 0, 60, 0, 0}};
+  const char *const    bad[][2] = {{"-micro_alpha_schedule", "fast"}, {"-micro_alpha_factor", "1"}, {"-micro_alpha_min", "0"}, {"-micro_alpha_max", "1e-3"}};
+
+  PetscFunctionBegin;
+  PetscCall(HylcPatternGenParamsDefault(&g));
+  PetscCall(HylcPatternCreate(PETSC_COMM_SELF, &p));
+  PetscCall(HylcPatternGenerate(p, HYLCPATTERNPLAIN, &g));
+  PetscCall(HylcYarnModelDefault(&m));
+  m.kc = 50;
+  PetscCall(HylcMicroCreate(PETSC_COMM_SELF, &M));
+  PetscCall(HylcMicroSetPattern(M, p, &m));
+  for (int k = 0; k < 4; k++) {
+    PetscInt its[2];
+    for (int a = 0; a < 2; a++) { /* the default tolerances: iterations */
+      PetscCall(HylcMicroSetRegularizationSchedule(M, a ? HYLC_MICRO_ALPHA_ADAPTIVE : HYLC_MICRO_ALPHA_PAPER, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
+      PetscCall(HylcMicroSetTolerances(M, 1e-5, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
+      PetscCall(HylcMicroSolve(M, zs[k], &r[a]));
+      its[a] = r[a].iterations;
+      HYLC_CHECK(r[a].status == HYLC_MICRO_CONVERGED, "plain weave, strain %d, %s: status %s", k, a ? "adaptive" : "paper", HylcMicroStatuses[r[a].status]);
+    }
+    HYLC_CHECK(its[1] <= its[0], "plain weave, strain %d: adaptive %d iterations, paper %d", k, (int)its[1], (int)its[0]);
+    for (int a = 0; a < 2; a++) { /* tight: the equilibrium */
+      PetscCall(HylcMicroSetRegularizationSchedule(M, a ? HYLC_MICRO_ALPHA_ADAPTIVE : HYLC_MICRO_ALPHA_PAPER, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
+      PetscCall(HylcMicroSetTolerances(M, 1e-10, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
+      PetscCall(HylcMicroSolve(M, zs[k], &r[a]));
+      HYLC_CHECK(r[a].status == HYLC_MICRO_CONVERGED, "plain weave, strain %d, %s, rtol 1e-10: status %s", k, a ? "adaptive" : "paper", HylcMicroStatuses[r[a].status]);
+    }
+    HYLC_CHECK(PetscAbsReal(r[1].psi - r[0].psi) <= 1e-8 * PetscAbsReal(r[0].psi), "plain weave, strain %d: psi adaptive %.12g, paper %.12g (%d, %d iterations, rtol 1e-10; default rtol: %d, %d)", k, (double)r[1].psi, (double)r[0].psi, (int)r[1].iterations, (int)r[0].iterations, (int)its[1], (int)its[0]);
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, "adaptive: strain %d: iterations %d (paper %d), rtol 1e-10: %d (%d), psi rel. diff %.1e\n", k, (int)its[1], (int)its[0], (int)r[1].iterations, (int)r[0].iterations, (double)(PetscAbsReal(r[1].psi - r[0].psi) / r[0].psi)));
+  }
+  /* the view names the schedule */
+  fd = mkstemp(path);
+  HYLC_CHECK(fd >= 0, "mkstemp failed");
+  if (fd >= 0) close(fd);
+  PetscCall(PetscViewerASCIIOpen(PETSC_COMM_SELF, path, &v));
+  PetscCall(HylcMicroView(M, v));
+  PetscCall(PetscViewerDestroy(&v));
+  HYLC_CHECK(FileHas(path, "regularization: adaptive, alpha^ from 5000, / 4 after good steps"), "HylcMicroView (%s) does not show the adaptive schedule", path);
+  remove(path);
+  /* bad values */
+  for (size_t b = 0; b < sizeof(bad) / sizeof(bad[0]); b++) {
+    PetscCall(PetscOptionsSetValue(NULL, bad[b][0], bad[b][1]));
+    PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+    ierr = HylcMicroSetFromOptions(M);
+    PetscCall(PetscPopErrorHandler());
+    PetscCall(PetscOptionsClearValue(NULL, bad[b][0]));
+    HYLC_CHECK(ierr == PETSC_ERR_USER_INPUT, "%s %s: error %d, expected PETSC_ERR_USER_INPUT", bad[b][0], bad[b][1], (int)ierr);
+    PetscCall(HylcMicroSetRegularizationSchedule(M, HYLC_MICRO_ALPHA_PAPER, 4, 1e-2, 1e10)); /* restore */
+  }
+  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+  ierr = HylcMicroSetRegularizationSchedule(M, (HylcMicroAlphaSchedule)7, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT);
+  PetscCall(PetscPopErrorHandler());
+  HYLC_CHECK(ierr == PETSC_ERR_USER_INPUT, "HylcMicroSetRegularizationSchedule(7): error %d, expected PETSC_ERR_USER_INPUT", (int)ierr);
+  PetscCall(HylcMicroDestroy(&M));
+  PetscCall(HylcPatternDestroy(&p));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* the lazy sub-objects: created on first use with the method's defaults (iteration cap 2000, solver type
    hylc); HylcMicroSetFromOptions needs no pattern and its options override the defaults (-micro_snes_max_it,
    -micro_factor_pc_factor_mat_solver_type, -periodic_margin); a new pattern keeps the tile, its options
@@ -581,6 +656,7 @@ int main(int argc, char **argv)
   PetscCall(TestContinuation());
   PetscCall(TestShearSymmetry());
   PetscCall(TestMirrorTwill());
+  PetscCall(TestAdaptive());
   PetscCall(PetscSNPrintf(dir, sizeof(dir), "%s/patterns/hylc2020", env ? env : "../shared/refdata"));
   PetscCall(PetscTestDirectory(dir, 'r', &have));
   if (have)

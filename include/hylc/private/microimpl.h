@@ -15,7 +15,10 @@ typedef struct {
   PetscReal lsFactor;
   PetscInt  lsMax, maxStalls;
   PetscReal rtol, atol, ctol, maxTime;
-  PetscBool indefinite; /* accept a factorization of an indefinite K (the descent test still applies) */
+  PetscBool indefinite;         /* accept a factorization of an indefinite K (the descent test still applies) */
+  PetscInt  alphaSched;         /* HylcMicroAlphaSchedule: paper (the decay above) or adaptive */
+  PetscReal alphaFact;          /* adaptive: alpha^ / factor after a good step, x factor after a poor one */
+  PetscReal alphaMin, alphaMax; /* adaptive: the bounds of alpha^ */
 } HylcMicroParams;
 
 struct _HylcMicroOps {
@@ -43,6 +46,9 @@ struct _p_HylcMicro {
   const PetscReal *A, *dL, *AAtinv;
   PetscReal       *c, *Z, *S, *Sinv, *wl, *tmp;
   PetscReal        alpha;
+  PetscReal        gmax;       /* ||M g||_inf of the iterate the Newton matrix was formed at */
+  PetscReal        ahat;       /* adaptive schedule: alpha^ of the next Newton matrix */
+  PetscInt         retriesJac; /* retries before this Newton matrix was formed */
   /* state of a solve */
   PetscBool       haveH; /* K holds the unscaled H_y of the state in X */
   PetscReal       E0;    /* energy of the current iterate */
