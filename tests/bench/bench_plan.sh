@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Benchmark of whole sampling plans (issue 15), run by `make bench`: for each paper pattern, the thinned
+# full plan (-sampler_n1 30 -sampler_n2 10: 1,051 samples, 2D terms included) with its config on 2 ranks,
+# cold start; prints the mean CPU-s per sample (2 x wall / samples) next to Table S1's figure (the better of
+# its 1D and 2D per-sample costs, 128 threads) and the ratio, the Newton iterations, and the full plan's
+# wall time on 2 ranks projected by tools/loadbalance.py from the measured per-sample costs.
+# Target (issue 15): >= 50x fewer CPU-s than Table S1 on every pattern.
+# HYLC_BENCH_PLAN="satin stockinette" picks patterns (default: all seven; the rib alone is projected at about
+# 20 min from a coarser run, docs/performance.md). HYLC_BENCH_PLAN_START=continue measures continuation.
+# Skipped when the paper's reference data or h5py is absent.
+set -u
+cd "$(dirname "$0")/../.."
+root=$PWD
+ref=${HYLC_REFDATA:-$root/../shared/refdata}
+[ -d "$ref/patterns/hylc2020" ] || { echo "bench_plan: $ref/patterns/hylc2020 not found; skipped"; exit 0; }
+/usr/bin/python3 -c 'import h5py' 2>/dev/null || { echo "bench_plan: python3-h5py not installed; skipped"; exit 0; }
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_pml=ob1
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+start=${HYLC_BENCH_PLAN_START:-cold}
+# pattern, Table S1 best CPU-s per sample (min of its 1D and 2D figures, as bench_solve)
+declare -A paper=([basket]=6.3 [satin]=8.5 [stockinette]=2.2 [cartridge_belt_rib]=25 [slip_stitch_honeycomb]=13 [satin_small]=7.9 [stockinette_small]=4.8)
+list=${HYLC_BENCH_PLAN:-basket satin stockinette satin_small stockinette_small slip_stitch_honeycomb cartridge_belt_rib}
+echo "== thinned full plan (-sampler_n1 30 -sampler_n2 10, 1,051 samples), 2 ranks, -sampler_start $start"
+st=0
+for p in $list; do
+  [ -n "${paper[$p]:-}" ] || { echo "  $p: unknown pattern"; st=1; continue; }
+  load=$(cut -d' ' -f1 /proc/loadavg)
+  t0=$(date +%s.%N)
+  if ! mpiexec --oversubscribe -n 2 "$root/build/bin/hylc-sample" -options_file "$root/config/$p.yaml" -pattern_file "$ref/patterns/hylc2020/$p.pyp" \
+      -sampler_n1 30 -sampler_n2 10 -sampler_start "$start" -sampler_output "$tmp/$p.h5" >"$tmp/$p.log" 2>&1; then
+    echo "  $p: run failed:"; tail -3 "$tmp/$p.log"; st=1; continue
+  fi
+  t1=$(date +%s.%N)
+  wall=$(awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.2f", b - a }')
+  stats=$(/usr/bin/python3 - "$tmp/$p.h5" <<'PY'
+import sys, h5py, numpy as np
+s = h5py.File(sys.argv[1], 'r')['samples']
+it, stt = s['iterations'][:], s['status'][:]
+print(len(it), int((stt == 0).sum()), '%.1f' % it.mean(), int(np.median(it)), int(it.max()))
+PY
+)
+  set -- $stats
+  n=$1 conv=$2 itmean=$3 itmed=$4 itmax=$5
+  proj=$(/usr/bin/python3 "$root/tools/loadbalance.py" "$tmp/$p.h5" --cpu-total "$(awk -v w="$wall" 'BEGIN { print 2 * w }')" --ranks 2 | awk '$1 == 2 && $2 == "|" { print $3 }')
+  awk -v p="$p" -v w="$wall" -v n="$n" -v c="$conv" -v s1="${paper[$p]}" -v im="$itmean" -v id="$itmed" -v ix="$itmax" -v pr="$proj" -v l="$load" \
+    'BEGIN { cpu = 2 * w / n; printf "  %-22s %7.1f s wall, %d/%d converged, %.3f CPU-s per sample, Table S1 %.1f: %.1fx (target 50x); Newton its mean/median/max %s/%s/%s; full plan on 2 ranks projected %.2f h; load %s at start\n", p, w, c, n, cpu, s1, s1 / cpu, im, id, ix, pr, l }'
+done
+exit $st
