@@ -37,7 +37,8 @@ PETSC_EXTERN const char *const HylcMicroStatuses[];
    the iteration count, or a trust-region-like adaptation to the agreement of each step with its model */
 typedef enum {
   HYLC_MICRO_ALPHA_PAPER    = 0,
-  HYLC_MICRO_ALPHA_ADAPTIVE = 1
+  HYLC_MICRO_ALPHA_ADAPTIVE = 1,
+  HYLC_MICRO_ALPHA_HYBRID   = 2 /* the paper's decay until ||M g||_inf falls below switch x its initial value, then adaptive */
 } HylcMicroAlphaSchedule;
 PETSC_EXTERN const char *const HylcMicroAlphaSchedules[];
 
@@ -62,6 +63,8 @@ PETSC_EXTERN PetscErrorCode HylcMicroSetPattern(HylcMicro, HylcPattern, const Hy
 PETSC_EXTERN PetscErrorCode HylcMicroSetOptionsPrefix(HylcMicro, const char[]);
 PETSC_EXTERN PetscErrorCode HylcMicroSetRegularization(HylcMicro, PetscReal start, PetscReal end, PetscInt its, PetscInt retries);
 PETSC_EXTERN PetscErrorCode HylcMicroSetRegularizationSchedule(HylcMicro, HylcMicroAlphaSchedule, PetscReal factor, PetscReal min, PetscReal max);
+PETSC_EXTERN PetscErrorCode HylcMicroSetRegularizationSwitch(HylcMicro, PetscReal);
+PETSC_EXTERN PetscErrorCode HylcMicroSetStepClearance(HylcMicro, PetscReal);
 PETSC_EXTERN PetscErrorCode HylcMicroSetTwistScale(HylcMicro, PetscReal);
 PETSC_EXTERN PetscErrorCode HylcMicroSetStepLimit(HylcMicro, PetscReal p0, PetscReal p1);
 PETSC_EXTERN PetscErrorCode HylcMicroSetLineSearch(HylcMicro, PetscReal factor, PetscInt trials, PetscInt maxStalls);

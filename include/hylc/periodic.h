@@ -67,6 +67,7 @@ PETSC_EXTERN PetscErrorCode HylcPeriodicRestoreFrames(HylcPeriodic);
 PETSC_EXTERN PetscErrorCode HylcPeriodicGetConstraints(HylcPeriodic, PetscInt *, const PetscReal **, const PetscReal **, const PetscReal **);
 PETSC_EXTERN PetscErrorCode HylcPeriodicConstraintResidual(HylcPeriodic, const PetscReal[], PetscReal[]);
 PETSC_EXTERN PetscErrorCode HylcPeriodicGetNumContactPairs(HylcPeriodic, PetscInt *);
+PETSC_EXTERN PetscErrorCode HylcPeriodicGetClearance(HylcPeriodic, PetscReal *);
 PETSC_EXTERN PetscErrorCode HylcPeriodicCreateStatePattern(HylcPeriodic, HylcPattern *);
 PETSC_EXTERN PetscErrorCode HylcPeriodicWriteVTK(HylcPeriodic, const char[], PetscInt, PetscInt);
 PETSC_EXTERN PetscErrorCode HylcPeriodicGetTimes(HylcPeriodic, PetscLogDouble *, PetscLogDouble *, PetscLogDouble *);

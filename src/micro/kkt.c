@@ -9,6 +9,7 @@
 #include <hylc/chol.h>
 #include <hylc/geom.h>
 #include <petsctime.h>
+#include <petscblaslapack.h>
 
 /* the constraint-row buffers and the dense n x m right-hand sides of the Schur complement */
 PetscErrorCode HylcMicroResizeKKT_Private(HylcMicro M, PetscInt m)
@@ -33,16 +34,16 @@ PetscErrorCode HylcMicroDestroyKKT_Private(HylcMicro M)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* is the factor positive definite? (only asked when indefinite matrices are refused) */
-static PetscErrorCode FactorPositive(HylcMicro M, PetscBool *pos)
+/* the inertia of the factor: *have false for a solver type without MatGetInertia (CHOLMOD, which fails on
+   an indefinite K instead) */
+static PetscErrorCode FactorInertia(HylcMicro M, PetscBool *have, PetscInt *nneg, PetscInt *nzero)
 {
   Mat           F;
   MatSolverType type;
   PetscBool     inertia, mumps;
-  PetscInt      nneg = 0, nzero = 0;
 
   PetscFunctionBegin;
-  *pos = PETSC_TRUE;
+  *nneg = *nzero = 0;
   PetscCall(PCFactorGetMatrix(M->inner, &F));
   PetscCall(MatFactorGetSolverType(F, &type));
   /* the solver types with MatGetInertia for a Cholesky factor of SeqAIJ; CHOLMOD fails on an indefinite K */
@@ -51,16 +52,35 @@ static PetscErrorCode FactorPositive(HylcMicro M, PetscBool *pos)
     inertia                         = PETSC_FALSE;
     for (int k = 0; k < 3 && !inertia; k++) PetscCall(PetscStrcmp(type, withInertia[k], &inertia));
   }
+  *have = inertia;
   if (!inertia) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PetscStrcmp(type, MATSOLVERMUMPS, &mumps));
   if (mumps) { /* MatGetInertia needs ICNTL(24) = 1 with MUMPS; INFOG(12), the negative pivots, does not */
 #if defined(PETSC_HAVE_MUMPS)
-    PetscCall(MatMumpsGetInfog(F, 12, &nneg));
+    PetscCall(MatMumpsGetInfog(F, 12, nneg));
 #endif
   } else
-    PetscCall(MatGetInertia(F, &nneg, &nzero, NULL));
-  *pos = (PetscBool)(nneg == 0 && nzero == 0);
-  if (!*pos) PetscCall(PetscInfo(M, "Newton matrix indefinite (%" PetscInt_FMT " negative, %" PetscInt_FMT " zero pivots) and -micro_factor_indefinite false or -micro_alpha_schedule adaptive\n", nneg, nzero));
+    PetscCall(MatGetInertia(F, nneg, nzero, NULL));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* the number of positive eigenvalues of the m x m Schur complement S = B^T K^-1 B (B = M A^T) */
+static PetscErrorCode SchurPositive(HylcMicro M, PetscInt *npos)
+{
+  PetscBLASInt n, lwork, info;
+  PetscReal   *a, *w, *work;
+
+  PetscFunctionBegin;
+  *npos = 0;
+  if (M->m == 0) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscBLASIntCast(M->m, &n));
+  lwork = 8 * n;
+  PetscCall(PetscMalloc3(M->m * M->m, &a, M->m, &w, lwork, &work));
+  for (PetscInt i = 0; i < M->m * M->m; i++) a[i] = 0.5 * (M->S[i] + M->S[(i % M->m) * M->m + i / M->m]);
+  PetscCallBLAS("LAPACKsyev", LAPACKsyev_("N", "U", &n, a, &n, w, work, &lwork, &info));
+  PetscCheck(info == 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "LAPACK syev of the %" PetscInt_FMT " x %" PetscInt_FMT " Schur complement failed: info %d", M->m, M->m, (int)info);
+  for (PetscInt i = 0; i < M->m; i++) *npos += w[i] > 0;
+  PetscCall(PetscFree3(a, w, work));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -96,9 +116,22 @@ static PetscErrorCode KKTFactor(HylcMicro M, PetscBool *ok)
   }
   *ok = (PetscBool)(reason == PC_NOERROR);
   if (!*ok) PetscCall(PetscInfo(M, "factorization of the Newton matrix failed: %s\n", PCFailedReasons[reason]));
-  /* the adaptive schedule refuses an indefinite K whatever -micro_factor_indefinite says: its alpha^ is
-     lowered until the quadratic model has negative curvature, and such steps end in saddle points */
-  if (*ok && (!M->par.indefinite || M->par.alphaSched == HYLC_MICRO_ALPHA_ADAPTIVE)) PetscCall(FactorPositive(M, ok));
+  /* -micro_factor_indefinite false refuses any negative or zero pivot of K; the adaptive schedule (and the
+     hybrid one after its switch) refuses a K that is indefinite on the tangent space of the constraints,
+     whatever -micro_factor_indefinite says: its alpha^ is lowered until the quadratic model has negative
+     curvature, and such steps end in saddle points. By Haynsworth's inertia additivity, with B = M A^T of
+     full column rank m and S = B^T K^-1 B, the projected matrix Z^T K Z has #neg(K) + #pos(S) - m
+     negative eigenvalues. */
+  M->projNeg     = 0;
+  PetscInt  nneg = 0, nzero = 0;
+  PetscBool have = PETSC_FALSE;
+  if (*ok && (!M->par.indefinite || M->adapting)) {
+    PetscCall(FactorInertia(M, &have, &nneg, &nzero));
+    if (have && (nzero > 0 || (nneg > 0 && !M->adapting))) {
+      *ok = PETSC_FALSE;
+      PetscCall(PetscInfo(M, "Newton matrix indefinite (%" PetscInt_FMT " negative, %" PetscInt_FMT " zero pivots) and -micro_factor_indefinite false\n", nneg, nzero));
+    }
+  }
   if (*ok) { /* Z = K^-1 M A^T: all m right-hand sides in one MatMatSolve */
     Mat F;
     for (PetscInt i = 0; i < m; i++)
@@ -112,6 +145,15 @@ static PetscErrorCode KKTFactor(HylcMicro M, PetscBool *ok)
         M->S[i * m + j] = s;
       }
     *ok = (PetscBool)(HylcDenseInverse((int)m, M->S, M->Sinv, 0.0) == 0);
+    if (*ok && have && nneg > 0) { /* adapting: the inertia on the tangent space of the constraints */
+      PetscInt npos;
+      PetscCall(SchurPositive(M, &npos));
+      M->projNeg = nneg + npos - m;
+      if (M->projNeg > 0) {
+        *ok = PETSC_FALSE;
+        PetscCall(PetscInfo(M, "Newton matrix indefinite on the constraints' tangent space (%" PetscInt_FMT " negative eigenvalues; %" PetscInt_FMT " negative pivots of K)\n", M->projNeg, nneg));
+      }
+    }
   }
   PetscCall(PetscLogEventEnd(HYLC_MicroFactor, M, 0, 0, 0));
   PetscCall(PetscTime(&t1));
@@ -139,6 +181,22 @@ static PetscErrorCode KKTSetUp(PC pc)
   PetscFunctionBegin;
   PetscCall(PCShellGetContext(pc, &M));
   PetscCall(KKTFactor(M, &ok));
+  if (!ok && M->adapting && M->projNeg > 0 && M->par.alphaSched == HYLC_MICRO_ALPHA_HYBRID) {
+    /* hybrid: negative curvature after the switch, a saddle near: the paper's schedule, whose steps leave
+       saddles along their negative curvature, for the rest of the solve */
+    PetscInt  it;
+    PetscReal apap;
+    PetscCall(SNESGetIterationNumber(M->snes, &it));
+    apap        = M->par.alphaStart * PetscPowReal(M->par.alphaEnd / M->par.alphaStart, (PetscReal)PetscMin(it, M->par.alphaIts) / M->par.alphaIts) * M->gmax;
+    M->adapting = PETSC_FALSE;
+    M->reverted = PETSC_TRUE;
+    PetscCall(PetscInfo(M, "hybrid schedule: negative curvature at iteration %" PetscInt_FMT ", the paper's schedule from here (alpha %g -> %g)\n", it, (double)M->alpha, (double)PetscMax(M->alpha, apap)));
+    if (apap > M->alpha) {
+      PetscCall(MatShift(M->K, apap - M->alpha));
+      M->alpha = apap;
+    }
+    PetscCall(KKTFactor(M, &ok));
+  }
   for (PetscInt k = 0; !ok && k < M->par.maxRetries; k++) PetscCall(KKTIncreaseAlpha(M, &ok));
   /* no step: the line search ends the solve (status stalled, or nonfinite for a non-finite matrix) */
   if (!ok) M->factorFailed = PETSC_TRUE;

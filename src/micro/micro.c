@@ -14,25 +14,26 @@ static PetscInt injectAt = -1, solveCount = 0; /* injectAt: -1 unread, 0 off */
 
 static void ParamsDefault(HylcMicroParams *p)
 {
-  p->alphaStart = 5000;
-  p->alphaEnd   = 5;
-  p->alphaIts   = 400;
-  p->maxRetries = 12;
-  p->alphaSched = HYLC_MICRO_ALPHA_PAPER;
-  p->alphaFact  = 4;
-  p->alphaMin   = 1e-2;
-  p->alphaMax   = 1e10;
-  p->twistScale = 0;
-  p->stepP0     = 0.05;
-  p->stepP1     = 0.15;
-  p->lsFactor   = 0.1;
-  p->lsMax      = 11;
-  p->maxStalls  = 5;
-  p->rtol       = 1e-5;
-  p->atol       = 1e-10;
-  p->ctol       = 1e-4;
-  p->maxTime    = 60;
-  p->indefinite = PETSC_TRUE;
+  p->alphaStart  = 5000;
+  p->alphaEnd    = 5;
+  p->alphaIts    = 400;
+  p->maxRetries  = 12;
+  p->alphaSched  = HYLC_MICRO_ALPHA_PAPER;
+  p->alphaFact   = 4;
+  p->alphaMin    = 1e-2;
+  p->alphaMax    = 1e10;
+  p->alphaSwitch = 1e-2;
+  p->twistScale  = 0;
+  p->stepP0      = 0.05;
+  p->stepP1      = 0.15;
+  p->lsFactor    = 0.1;
+  p->lsMax       = 11;
+  p->maxStalls   = 5;
+  p->rtol        = 1e-5;
+  p->atol        = 1e-10;
+  p->ctol        = 1e-4;
+  p->maxTime     = 60;
+  p->indefinite  = PETSC_TRUE;
 }
 
 /*@C

@@ -36,7 +36,7 @@ PetscErrorCode HylcMicroSetRegularization(HylcMicro M, PetscReal start, PetscRea
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-const char *const HylcMicroAlphaSchedules[] = {"paper", "adaptive", "HylcMicroAlphaSchedule", "HYLC_MICRO_ALPHA_", NULL};
+const char *const HylcMicroAlphaSchedules[] = {"paper", "adaptive", "hybrid", "HylcMicroAlphaSchedule", "HYLC_MICRO_ALPHA_", NULL};
 
 /*@C
   HylcMicroSetRegularizationSchedule - Sets how alpha^ of alpha = alpha^ ||M g||_inf evolves: paper (default), the
@@ -71,13 +71,40 @@ PetscErrorCode HylcMicroSetRegularizationSchedule(HylcMicro M, HylcMicroAlphaSch
 {
   PetscFunctionBegin;
   PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
-  PetscCheck(schedule == HYLC_MICRO_ALPHA_PAPER || schedule == HYLC_MICRO_ALPHA_ADAPTIVE, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%salpha_schedule %d: must be paper or adaptive", HylcMicroPrefix_Private(M), (int)schedule);
+  PetscCheck(schedule == HYLC_MICRO_ALPHA_PAPER || schedule == HYLC_MICRO_ALPHA_ADAPTIVE || schedule == HYLC_MICRO_ALPHA_HYBRID, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%salpha_schedule %d: must be paper, adaptive or hybrid", HylcMicroPrefix_Private(M), (int)schedule);
   M->par.alphaSched = schedule;
   if (factor != (PetscReal)PETSC_DEFAULT) M->par.alphaFact = factor;
   if (min != (PetscReal)PETSC_DEFAULT) M->par.alphaMin = min;
   if (max != (PetscReal)PETSC_DEFAULT) M->par.alphaMax = max;
   PetscCheck(M->par.alphaFact > 1 && PetscIsNormalReal(M->par.alphaFact), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%salpha_factor %g: must be finite and greater than 1", HylcMicroPrefix_Private(M), (double)M->par.alphaFact);
   PetscCheck(M->par.alphaMin > 0 && M->par.alphaMax >= M->par.alphaMin && PetscIsNormalReal(M->par.alphaMax), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%salpha_min %g must be positive and -%salpha_max %g finite and at least -%salpha_min", HylcMicroPrefix_Private(M), (double)M->par.alphaMin, HylcMicroPrefix_Private(M), (double)M->par.alphaMax, HylcMicroPrefix_Private(M));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@
+  HylcMicroSetRegularizationSwitch - The switch of the hybrid regularization schedule
+  (HYLC_MICRO_ALPHA_HYBRID): alpha^ follows the paper's decay while the scaled gradient is large, which
+  keeps the early steps short and the solve on the branch the paper's schedule reaches, and follows the
+  adaptive logic of HylcMicroSetRegularizationSchedule() from the first iteration whose ||M g||_inf is at
+  most sw times its value at iteration 0, starting from the paper's alpha^ of that iteration. Not collective.
+
+  Input Parameters:
++ M  - the solver
+- sw - the switch, in (0, 1] (default 1e-2; PETSC_DEFAULT keeps the value)
+
+  Options Database Key:
+. -micro_alpha_switch <1e-2> - sw
+
+  Level: intermediate
+
+.seealso: HylcMicroSetRegularizationSchedule(), HylcMicroSetRegularization()
+@*/
+PetscErrorCode HylcMicroSetRegularizationSwitch(HylcMicro M, PetscReal sw)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
+  if (sw != (PetscReal)PETSC_DEFAULT) M->par.alphaSwitch = sw;
+  PetscCheck(M->par.alphaSwitch > 0 && M->par.alphaSwitch <= 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%salpha_switch %g: must be in (0, 1]", HylcMicroPrefix_Private(M), (double)M->par.alphaSwitch);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -129,6 +156,33 @@ PetscErrorCode HylcMicroSetStepLimit(HylcMicro M, PetscReal p0, PetscReal p1)
   if (p0 != (PetscReal)PETSC_DEFAULT) M->par.stepP0 = p0;
   if (p1 != (PetscReal)PETSC_DEFAULT) M->par.stepP1 = p1;
   PetscCheck(M->par.stepP0 > 0 && M->par.stepP1 >= 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%sstep_p0 %g must be positive, -%sstep_p1 %g non-negative", HylcMicroPrefix_Private(M), (double)M->par.stepP0, HylcMicroPrefix_Private(M), (double)M->par.stepP1);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@
+  HylcMicroSetStepClearance - Ties the step limit to the contact geometry: with rho > 0 the largest vertex
+  displacement of a Newton step is also at most rho times the clearance of the current iterate, the
+  smallest distance between two yarn centerlines that may touch (HylcPeriodicGetClearance()). With
+  rho < 1/2 no two centerlines cross along the step, so a step cannot pull one yarn through another
+  across the contact barrier, whatever the regularization (docs/method.md, "Newton solver"). Not collective.
+
+  Input Parameters:
++ M   - the solver
+- rho - the fraction, in [0, 1/2) (default 0: no clearance limit; PETSC_DEFAULT keeps the value)
+
+  Options Database Key:
+. -micro_step_clearance <0> - rho
+
+  Level: intermediate
+
+.seealso: HylcMicroSetStepLimit(), HylcPeriodicGetClearance()
+@*/
+PetscErrorCode HylcMicroSetStepClearance(HylcMicro M, PetscReal rho)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
+  if (rho != (PetscReal)PETSC_DEFAULT) M->par.stepClear = rho;
+  PetscCheck(M->par.stepClear >= 0 && M->par.stepClear < 0.5, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%sstep_clearance %g: must be in [0, 0.5)", HylcMicroPrefix_Private(M), (double)M->par.stepClear);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -272,14 +326,16 @@ PetscErrorCode HylcMicroSetFromOptions(HylcMicro M)
   PetscCall(PetscOptionsReal("-alpha_end", "Regularization schedule: alpha^ from iteration alpha_its on", "HylcMicroSetRegularization", p.alphaEnd, &p.alphaEnd, NULL));
   PetscCall(PetscOptionsInt("-alpha_its", "Regularization schedule: iterations of the geometric decay", "HylcMicroSetRegularization", p.alphaIts, &p.alphaIts, NULL));
   PetscCall(PetscOptionsInt("-alpha_retries", "Retries with alpha x 10 when the Newton matrix is indefinite", "HylcMicroSetRegularization", p.maxRetries, &p.maxRetries, NULL));
-  PetscCall(PetscStrncpy(sched, HylcMicroAlphaSchedules[p.alphaSched ? 1 : 0], sizeof(sched)));
-  PetscCall(PetscOptionsString("-alpha_schedule", "Regularization schedule of alpha^: paper (decay over alpha_its iterations) or adaptive (trust-region-like: down after good steps, up after poor or rejected ones)", "HylcMicroSetRegularizationSchedule", sched, sched, sizeof(sched), &schedSet));
+  PetscCall(PetscStrncpy(sched, HylcMicroAlphaSchedules[p.alphaSched], sizeof(sched)));
+  PetscCall(PetscOptionsString("-alpha_schedule", "Regularization schedule of alpha^: paper (decay over alpha_its iterations), adaptive (trust-region-like: down after good steps, up after poor or rejected ones) or hybrid (paper until ||M g||_inf <= alpha_switch x its initial value, then adaptive)", "HylcMicroSetRegularizationSchedule", sched, sched, sizeof(sched), &schedSet));
   PetscCall(PetscOptionsReal("-alpha_factor", "Adaptive regularization: alpha^ / factor after a good step, x factor after a poor one", "HylcMicroSetRegularizationSchedule", p.alphaFact, &p.alphaFact, NULL));
   PetscCall(PetscOptionsReal("-alpha_min", "Adaptive regularization: smallest alpha^", "HylcMicroSetRegularizationSchedule", p.alphaMin, &p.alphaMin, NULL));
   PetscCall(PetscOptionsReal("-alpha_max", "Adaptive regularization: largest alpha^", "HylcMicroSetRegularizationSchedule", p.alphaMax, &p.alphaMax, NULL));
+  PetscCall(PetscOptionsReal("-alpha_switch", "Hybrid regularization: adaptive once ||M g||_inf <= alpha_switch x its value at the first iteration", "HylcMicroSetRegularizationSwitch", p.alphaSwitch, &p.alphaSwitch, NULL));
   PetscCall(PetscOptionsReal("-twist_scale", "Scale mu of the twist unknowns, 0 = 1/r", "HylcMicroSetTwistScale", p.twistScale, &p.twistScale, NULL));
   PetscCall(PetscOptionsReal("-step_p0", "Step limit d_max = (p0 + p1 clamp(lambda_min(I),0,1)) r: p0", "HylcMicroSetStepLimit", p.stepP0, &p.stepP0, NULL));
   PetscCall(PetscOptionsReal("-step_p1", "Step limit: p1", "HylcMicroSetStepLimit", p.stepP1, &p.stepP1, NULL));
+  PetscCall(PetscOptionsReal("-step_clearance", "Step limit also at most this fraction (< 1/2) of the smallest distance between yarn centerlines that may touch, so that no step crosses two yarns; 0 = off", "HylcMicroSetStepClearance", p.stepClear, &p.stepClear, NULL));
   PetscCall(PetscOptionsReal("-ls_factor", "Backtracking factor of the line search", "HylcMicroSetLineSearch", p.lsFactor, &p.lsFactor, NULL));
   PetscCall(PetscOptionsInt("-ls_max", "Line-search trials per iteration", "HylcMicroSetLineSearch", p.lsMax, &p.lsMax, NULL));
   PetscCall(PetscOptionsInt("-max_stalls", "Consecutive line searches without decrease before the solve stops, status stalled", "HylcMicroSetLineSearch", p.maxStalls, &p.maxStalls, NULL));
@@ -291,16 +347,20 @@ PetscErrorCode HylcMicroSetFromOptions(HylcMicro M)
   PetscCall(PetscOptionsName("-view", "Print the solver at set-up", "HylcMicroView", &flg));
   PetscOptionsEnd();
   if (schedSet) { /* checked after PetscOptionsEnd(), which must run */
-    PetscBool paper, adaptive;
+    PetscBool paper, adaptive, hybrid;
     PetscCall(PetscStrcmp(sched, "paper", &paper));
     PetscCall(PetscStrcmp(sched, "adaptive", &adaptive));
-    PetscCheck(paper || adaptive, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%salpha_schedule %s: must be paper or adaptive", HylcMicroPrefix_Private(M), sched);
-    p.alphaSched = adaptive ? HYLC_MICRO_ALPHA_ADAPTIVE : HYLC_MICRO_ALPHA_PAPER;
+    PetscCall(PetscStrcmp(sched, "hybrid", &hybrid));
+    PetscCheck(paper || adaptive || hybrid, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%salpha_schedule %s: must be paper, adaptive or hybrid", HylcMicroPrefix_Private(M), sched);
+    p.alphaSched = adaptive ? HYLC_MICRO_ALPHA_ADAPTIVE : hybrid ? HYLC_MICRO_ALPHA_HYBRID
+                                                                 : HYLC_MICRO_ALPHA_PAPER;
   }
   PetscCall(HylcMicroSetRegularization(M, p.alphaStart, p.alphaEnd, p.alphaIts, p.maxRetries));
   PetscCall(HylcMicroSetRegularizationSchedule(M, (HylcMicroAlphaSchedule)p.alphaSched, p.alphaFact, p.alphaMin, p.alphaMax));
+  PetscCall(HylcMicroSetRegularizationSwitch(M, p.alphaSwitch));
   PetscCall(HylcMicroSetTwistScale(M, p.twistScale));
   PetscCall(HylcMicroSetStepLimit(M, p.stepP0, p.stepP1));
+  PetscCall(HylcMicroSetStepClearance(M, p.stepClear));
   PetscCall(HylcMicroSetLineSearch(M, p.lsFactor, p.lsMax, p.maxStalls));
   PetscCall(HylcMicroSetTolerances(M, p.rtol, p.atol, p.ctol, p.maxTime));
   PetscCall(HylcMicroSetIndefinite(M, p.indefinite));
@@ -345,10 +405,15 @@ PetscErrorCode HylcMicroView(HylcMicro M, PetscViewer viewer)
   /* C formatting: PETSc's printf appends '.' to integral %g values */
   if (p->alphaSched == HYLC_MICRO_ALPHA_ADAPTIVE)
     snprintf(buf, sizeof(buf), "regularization: adaptive, alpha^ from %g, / %g after good steps, x %g after poor ones, within [%g, %g], up to %d retries x 10; factorization of an indefinite K %s\n", (double)p->alphaStart, (double)p->alphaFact, (double)p->alphaFact, (double)p->alphaMin, (double)p->alphaMax, (int)p->maxRetries, "refused");
+  else if (p->alphaSched == HYLC_MICRO_ALPHA_HYBRID)
+    snprintf(buf, sizeof(buf), "regularization: hybrid, the paper schedule alpha^ %g -> %g over %d iterations (factorization of an indefinite K %s) until ||M g||_inf <= %g x its initial value, then adaptive (/ %g after good steps, x %g after poor ones, within [%g, %g], indefinite K refused); up to %d retries x 10\n", (double)p->alphaStart, (double)p->alphaEnd, (int)p->alphaIts, p->indefinite ? "accepted" : "refused", (double)p->alphaSwitch, (double)p->alphaFact, (double)p->alphaFact, (double)p->alphaMin, (double)p->alphaMax, (int)p->maxRetries);
   else
     snprintf(buf, sizeof(buf), "regularization: paper schedule, alpha^ %g -> %g over %d iterations, up to %d retries x 10; factorization of an indefinite K %s\n", (double)p->alphaStart, (double)p->alphaEnd, (int)p->alphaIts, (int)p->maxRetries, p->indefinite ? "accepted" : "refused");
   PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
-  snprintf(buf, sizeof(buf), "twist scale mu: %s; step limit (%g + %g clamp(lambda_min, 0, 1)) r; line search x %g, %d trials, stop after %d stalls\n", p->twistScale > 0 ? "set" : "1/r", (double)p->stepP0, (double)p->stepP1, (double)p->lsFactor, (int)p->lsMax, (int)p->maxStalls);
+  if (p->stepClear > 0)
+    snprintf(buf, sizeof(buf), "twist scale mu: %s; step limit min((%g + %g clamp(lambda_min, 0, 1)) r, %g x clearance); line search x %g, %d trials, stop after %d stalls\n", p->twistScale > 0 ? "set" : "1/r", (double)p->stepP0, (double)p->stepP1, (double)p->stepClear, (double)p->lsFactor, (int)p->lsMax, (int)p->maxStalls);
+  else
+    snprintf(buf, sizeof(buf), "twist scale mu: %s; step limit (%g + %g clamp(lambda_min, 0, 1)) r; line search x %g, %d trials, stop after %d stalls\n", p->twistScale > 0 ? "set" : "1/r", (double)p->stepP0, (double)p->stepP1, (double)p->lsFactor, (int)p->lsMax, (int)p->maxStalls);
   PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
   snprintf(buf, sizeof(buf), "convergence: |z| < %g |z0| or |z| < %g k_s, |A y - dL| < %g r; wall-time cap %g s\n", (double)p->rtol, (double)p->atol, (double)p->ctol, (double)p->maxTime);
   PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));

@@ -84,12 +84,22 @@ static PetscErrorCode FormJacobian(SNES snes, Vec X, Mat J, Mat Jpre, void *ctx)
   for (PetscInt i = 0; i < M->ny; i++) gmax = PetscMax(gmax, PetscAbsReal((i % 4 == 3) ? M->mu * M->gw[i] : M->gw[i]));
   M->gmax       = gmax;
   M->retriesJac = M->retries;
-  if (M->par.alphaSched == HYLC_MICRO_ALPHA_ADAPTIVE) { /* alpha^ of the previous line search (AdaptAlpha) */
-    if (it == 0) M->ahat = M->par.alphaStart;
-    M->alpha = M->ahat * gmax;
-  } else {
-    const PetscReal t = (PetscReal)PetscMin(it, M->par.alphaIts) / M->par.alphaIts;
-    M->alpha          = M->par.alphaStart * PetscPowReal(M->par.alphaEnd / M->par.alphaStart, t) * gmax;
+  {
+    const PetscReal t     = (PetscReal)PetscMin(it, M->par.alphaIts) / M->par.alphaIts;
+    const PetscReal apap  = M->par.alphaStart * PetscPowReal(M->par.alphaEnd / M->par.alphaStart, t); /* the paper's alpha^ */
+    const PetscInt  sched = M->par.alphaSched;
+    if (it == 0) {
+      M->reverted = PETSC_FALSE;
+      M->gmax0    = gmax;
+      M->ahat     = M->par.alphaStart;
+      M->adapting = (PetscBool)(sched == HYLC_MICRO_ALPHA_ADAPTIVE);
+    }
+    if (sched == HYLC_MICRO_ALPHA_HYBRID && !M->adapting && !M->reverted && gmax <= M->par.alphaSwitch * M->gmax0) { /* the switch: adaptive from the paper's alpha^ */
+      M->adapting = PETSC_TRUE;
+      M->ahat     = apap;
+      PetscCall(PetscInfo(M, "hybrid schedule: adaptive from iteration %" PetscInt_FMT " (||M g||_inf %g of its initial value), alpha^ %g\n", it, (double)(gmax / M->gmax0), (double)apap));
+    }
+    M->alpha = (M->adapting ? M->ahat : apap) * gmax; /* adaptive: alpha^ of the previous line search (AdaptAlpha) */
   }
   if (!(M->alpha > 0)) M->alpha = PETSC_SMALL;
   PetscCall(MatDiagonalScale(M->K, M->mvec, M->mvec));
@@ -146,7 +156,7 @@ static PetscErrorCode LineSearch(SNESLineSearch ls, void *ctx)
   SNES                   snes;
   PetscLogDouble         t0, t1;
   const HylcMacroStrain *ms;
-  PetscBool              accepted = PETSC_FALSE, adaptive = (PetscBool)(M->par.alphaSched == HYLC_MICRO_ALPHA_ADAPTIVE);
+  PetscBool              accepted = PETSC_FALSE, adaptive = M->adapting;
   PetscReal              lin = 0, quad = 0, Eold, Etrial = PETSC_INFINITY;
 
   PetscFunctionBegin;
@@ -170,6 +180,14 @@ static PetscErrorCode LineSearch(SNESLineSearch ls, void *ctx)
   }
   PetscCall(HylcPeriodicGetMacroStrain(M->P, &ms));
   dmax = (M->par.stepP0 + M->par.stepP1 * PetscClipInterval(ms->lambdaMin, 0, 1)) * M->r;
+  if (M->par.stepClear > 0) { /* the clearance of the iterate: no two centerlines cross along the step */
+    PetscReal clear;
+    PetscCall(HylcMicroToY_Private(M, X, M->yw));
+    PetscCall(HylcPeriodicSetState(M->P, M->yw));
+    PetscCall(HylcPeriodicGetClearance(M->P, &clear));
+    PetscCall(PetscInfo(M, "clearance %g r: step limit %g r%s\n", (double)(clear / M->r), (double)(PetscMin(dmax, M->par.stepClear * clear) / M->r), M->par.stepClear * clear < dmax ? " (clearance)" : ""));
+    dmax = PetscMin(dmax, M->par.stepClear * clear);
+  }
   /* the largest vertex displacement of the linear step (ghosts are rotated copies: the same lengths) */
   PetscCall(VecGetArrayRead(Y, &y));
   for (PetscInt o = 0; o < M->ny / 4; o++) d = PetscMax(d, PetscSqrtReal(PetscSqr(PetscRealPart(y[4 * o])) + PetscSqr(PetscRealPart(y[4 * o + 1])) + PetscSqr(PetscRealPart(y[4 * o + 2]))));

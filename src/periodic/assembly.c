@@ -1,5 +1,6 @@
 /* HylcPeriodic: contact pairs, the structure of the reduced Hessian (SetCOO) and the reduced evaluation (include/hylc/periodic.h). */
 #include "periodicimpl.h"
+#include <hylc/geom.h>
 
 /* contact pairs among the full edges: broadphase with boxes inflated by pairMargin r (candidates for
    the Hessian's structure), zero-weight pairs pruned, same-yarn pairs excluded; the pairs that can touch
@@ -86,6 +87,43 @@ PetscErrorCode HylcPeriodicGetNumContactPairs(HylcPeriodic P, PetscInt *n)
   PetscFunctionBegin;
   PetscCall(FindPairs(P));
   *n = P->npairs;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPeriodicGetClearance - The smallest distance between the centerlines of two yarn segments that may
+  come into contact, in the current state (runs the broadphase): the minimum over the broadphase's
+  candidate pairs (same-yarn neighbours excluded as for contact), or 2 m r (m the pair margin, no pair of
+  boxes inflated by m r overlaps) if that is smaller. If every vertex moves by less than half of it along a
+  straight step, no two centerlines cross during the step (the distance of two segments is 2-Lipschitz in
+  the largest vertex displacement), the basis of the clearance step limit (HylcMicroSetStepLimit()).
+
+  Not collective
+
+  Input Parameter:
+. P - the periodic tile (its state set by HylcPeriodicSetState())
+
+  Output Parameter:
+. d - the clearance (m)
+
+  Level: developer
+
+.seealso: HylcPeriodicSetState(), HylcPeriodicGetNumContactPairs()
+@*/
+PetscErrorCode HylcPeriodicGetClearance(HylcPeriodic P, PetscReal *d)
+{
+  double dmin;
+
+  PetscFunctionBegin;
+  PetscCheck(P->setup, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE, "Call HylcPeriodicSetUp() first");
+  PetscCall(FindPairs(P));
+  dmin = 2 * P->pairMargin * P->c.r;
+  for (PetscInt p = 0; p < P->ncand; p++) {
+    const PetscInt i = P->cpairs[2 * p], j = P->cpairs[2 * p + 1];
+    double         s, t;
+    dmin = PetscMin(dmin, HylcSegmentSegmentDistance(P->segx + 6 * i, P->segx + 6 * i + 3, P->segx + 6 * j, P->segx + 6 * j + 3, &s, &t));
+  }
+  *d = dmin;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -484,17 +484,19 @@ static PetscErrorCode TestObject(void)
    and the option's bad values are refused with PETSC_ERR_USER_INPUT; HylcMicroView names the schedule */
 static PetscErrorCode TestAdaptive(void)
 {
-  HylcPattern          p;
-  HylcPatternGenParams g;
-  HylcYarnModel        m;
-  HylcMicro            M;
-  HylcMicroResult      r[2];
-  PetscErrorCode       ierr;
-  PetscViewer          v;
-  char                 path[] = "/tmp/hylc_test_micro_adaptXXXXXX";
-  int                  fd;
-  const PetscReal      zs[4][6] = {{0.1, 0, 0, 0, 0, 0}, {0, 0, 0.15, 0, 0, 0}, {0.05, 0.2, 0, 0, 0, 0}, {0, 0, 0, 60, 0, 0}};
-  const char *const    bad[][2] = {{"-micro_alpha_schedule", "fast"}, {"-micro_alpha_factor", "1"}, {"-micro_alpha_min", "0"}, {"-micro_alpha_max", "1e-3"}};
+  HylcPattern                  p;
+  HylcPatternGenParams         g;
+  HylcYarnModel                m;
+  HylcMicro                    M;
+  HylcMicroResult              r[3];
+  PetscErrorCode               ierr;
+  PetscViewer                  v;
+  char                         path[] = "/tmp/hylc_test_micro_adaptXXXXXX";
+  int                          fd;
+  const PetscReal              zs[4][6] = {{0.1, 0, 0, 0, 0, 0}, {0, 0, 0.15, 0, 0, 0}, {0.05, 0.2, 0, 0, 0, 0}, {0, 0, 0, 60, 0, 0}};
+  const char *const            bad[][2] = {{"-micro_alpha_schedule", "fast"}, {"-micro_alpha_factor", "1"}, {"-micro_alpha_min", "0"}, {"-micro_alpha_max", "1e-3"}, {"-micro_alpha_switch", "0"}, {"-micro_step_clearance", "0.5"}};
+  const char *const            sname[3] = {"paper", "adaptive", "hybrid"};
+  const HylcMicroAlphaSchedule sched[3] = {HYLC_MICRO_ALPHA_PAPER, HYLC_MICRO_ALPHA_ADAPTIVE, HYLC_MICRO_ALPHA_HYBRID};
 
   PetscFunctionBegin;
   PetscCall(HylcPatternGenParamsDefault(&g));
@@ -504,25 +506,39 @@ static PetscErrorCode TestAdaptive(void)
   m.kc = 50;
   PetscCall(HylcMicroCreate(PETSC_COMM_SELF, &M));
   PetscCall(HylcMicroSetPattern(M, p, &m));
+  PetscReal psi1 = 0; /* the paper's Psi at strain 1, rtol 1e-10 */
+  PetscCall(HylcMicroSetRegularizationSwitch(M, 0.1));
   for (int k = 0; k < 4; k++) {
-    PetscInt its[2];
-    for (int a = 0; a < 2; a++) { /* the default tolerances: iterations */
-      PetscCall(HylcMicroSetRegularizationSchedule(M, a ? HYLC_MICRO_ALPHA_ADAPTIVE : HYLC_MICRO_ALPHA_PAPER, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
+    PetscInt its[3];
+    for (int a = 0; a < 3; a++) { /* the default tolerances: iterations */
+      PetscCall(HylcMicroSetRegularizationSchedule(M, sched[a], PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
       PetscCall(HylcMicroSetTolerances(M, 1e-5, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
       PetscCall(HylcMicroSolve(M, zs[k], &r[a]));
       its[a] = r[a].iterations;
-      HYLC_CHECK(r[a].status == HYLC_MICRO_CONVERGED, "plain weave, strain %d, %s: status %s", k, a ? "adaptive" : "paper", HylcMicroStatuses[r[a].status]);
+      HYLC_CHECK(r[a].status == HYLC_MICRO_CONVERGED, "plain weave, strain %d, %s: status %s", k, sname[a], HylcMicroStatuses[r[a].status]);
     }
-    HYLC_CHECK(its[1] <= its[0], "plain weave, strain %d: adaptive %d iterations, paper %d", k, (int)its[1], (int)its[0]);
-    for (int a = 0; a < 2; a++) { /* tight: the equilibrium */
-      PetscCall(HylcMicroSetRegularizationSchedule(M, a ? HYLC_MICRO_ALPHA_ADAPTIVE : HYLC_MICRO_ALPHA_PAPER, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
+    HYLC_CHECK(its[1] <= its[0] && its[2] <= its[0], "plain weave, strain %d: adaptive %d, hybrid %d iterations, paper %d", k, (int)its[1], (int)its[2], (int)its[0]);
+    for (int a = 0; a < 3; a++) { /* tight: the equilibrium */
+      PetscCall(HylcMicroSetRegularizationSchedule(M, sched[a], PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
       PetscCall(HylcMicroSetTolerances(M, 1e-10, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
       PetscCall(HylcMicroSolve(M, zs[k], &r[a]));
-      HYLC_CHECK(r[a].status == HYLC_MICRO_CONVERGED, "plain weave, strain %d, %s, rtol 1e-10: status %s", k, a ? "adaptive" : "paper", HylcMicroStatuses[r[a].status]);
+      HYLC_CHECK(r[a].status == HYLC_MICRO_CONVERGED, "plain weave, strain %d, %s, rtol 1e-10: status %s", k, sname[a], HylcMicroStatuses[r[a].status]);
     }
-    HYLC_CHECK(PetscAbsReal(r[1].psi - r[0].psi) <= 1e-8 * PetscAbsReal(r[0].psi), "plain weave, strain %d: psi adaptive %.12g, paper %.12g (%d, %d iterations, rtol 1e-10; default rtol: %d, %d)", k, (double)r[1].psi, (double)r[0].psi, (int)r[1].iterations, (int)r[0].iterations, (int)its[1], (int)its[0]);
-    PetscCall(PetscPrintf(PETSC_COMM_SELF, "adaptive: strain %d: iterations %d (paper %d), rtol 1e-10: %d (%d), psi rel. diff %.1e\n", k, (int)its[1], (int)its[0], (int)r[1].iterations, (int)r[0].iterations, (double)(PetscAbsReal(r[1].psi - r[0].psi) / r[0].psi)));
+    if (k == 1) psi1 = r[0].psi;
+    for (int a = 1; a < 3; a++) HYLC_CHECK(PetscAbsReal(r[a].psi - r[0].psi) <= 1e-8 * PetscAbsReal(r[0].psi), "plain weave, strain %d: psi %s %.12g, paper %.12g (%d, %d iterations, rtol 1e-10; default rtol: %d, %d)", k, sname[a], (double)r[a].psi, (double)r[0].psi, (int)r[a].iterations, (int)r[0].iterations, (int)its[a], (int)its[0]);
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, "adaptive, hybrid: strain %d: iterations %d, %d (paper %d), rtol 1e-10: %d, %d (%d), psi rel. diff %.1e, %.1e\n", k, (int)its[1], (int)its[2], (int)its[0], (int)r[1].iterations, (int)r[2].iterations, (int)r[0].iterations, (double)(PetscAbsReal(r[1].psi - r[0].psi) / r[0].psi), (double)(PetscAbsReal(r[2].psi - r[0].psi) / r[0].psi)));
   }
+  { /* the clearance step limit: the same equilibrium (rtol 1e-10) */
+    HylcMicroResult rc;
+    PetscCall(HylcMicroSetRegularizationSchedule(M, HYLC_MICRO_ALPHA_PAPER, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
+    PetscCall(HylcMicroSetStepLimit(M, 0.5, 0));
+    PetscCall(HylcMicroSetStepClearance(M, 0.1));
+    PetscCall(HylcMicroSolve(M, zs[1], &rc));
+    HYLC_CHECK(rc.status == HYLC_MICRO_CONVERGED && PetscAbsReal(rc.psi - psi1) <= 1e-8 * PetscAbsReal(psi1), "plain weave, clearance step limit 0.1: status %s, psi %.12g, paper %.12g", HylcMicroStatuses[rc.status], (double)rc.psi, (double)psi1);
+    PetscCall(HylcMicroSetStepClearance(M, 0));
+    PetscCall(HylcMicroSetStepLimit(M, 0.05, 0.15));
+  }
+  PetscCall(HylcMicroSetRegularizationSchedule(M, HYLC_MICRO_ALPHA_HYBRID, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
   /* the view names the schedule */
   fd = mkstemp(path);
   HYLC_CHECK(fd >= 0, "mkstemp failed");
@@ -530,7 +546,7 @@ static PetscErrorCode TestAdaptive(void)
   PetscCall(PetscViewerASCIIOpen(PETSC_COMM_SELF, path, &v));
   PetscCall(HylcMicroView(M, v));
   PetscCall(PetscViewerDestroy(&v));
-  HYLC_CHECK(FileHas(path, "regularization: adaptive, alpha^ from 5000, / 4 after good steps"), "HylcMicroView (%s) does not show the adaptive schedule", path);
+  HYLC_CHECK(FileHas(path, "regularization: hybrid, the paper schedule alpha^ 5000 -> 5 over 400 iterations"), "HylcMicroView (%s) does not show the hybrid schedule", path);
   remove(path);
   /* bad values */
   for (size_t b = 0; b < sizeof(bad) / sizeof(bad[0]); b++) {
@@ -541,6 +557,8 @@ static PetscErrorCode TestAdaptive(void)
     PetscCall(PetscOptionsClearValue(NULL, bad[b][0]));
     HYLC_CHECK(ierr == PETSC_ERR_USER_INPUT, "%s %s: error %d, expected PETSC_ERR_USER_INPUT", bad[b][0], bad[b][1], (int)ierr);
     PetscCall(HylcMicroSetRegularizationSchedule(M, HYLC_MICRO_ALPHA_PAPER, 4, 1e-2, 1e10)); /* restore */
+    PetscCall(HylcMicroSetRegularizationSwitch(M, 1e-2));
+    PetscCall(HylcMicroSetStepClearance(M, 0));
   }
   PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
   ierr = HylcMicroSetRegularizationSchedule(M, (HylcMicroAlphaSchedule)7, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT);

@@ -19,6 +19,8 @@ typedef struct {
   PetscInt  alphaSched;         /* HylcMicroAlphaSchedule: paper (the decay above) or adaptive */
   PetscReal alphaFact;          /* adaptive: alpha^ / factor after a good step, x factor after a poor one */
   PetscReal alphaMin, alphaMax; /* adaptive: the bounds of alpha^ */
+  PetscReal stepClear;          /* step limit also <= stepClear x the clearance (0: off) */
+  PetscReal alphaSwitch;        /* hybrid: adaptive once ||M g||_inf <= alphaSwitch ||M g_0||_inf */
 } HylcMicroParams;
 
 struct _HylcMicroOps {
@@ -48,6 +50,10 @@ struct _p_HylcMicro {
   PetscReal        alpha;
   PetscReal        gmax;       /* ||M g||_inf of the iterate the Newton matrix was formed at */
   PetscReal        ahat;       /* adaptive schedule: alpha^ of the next Newton matrix */
+  PetscReal        gmax0;      /* ||M g||_inf at the first iteration of the solve */
+  PetscBool        adapting;   /* alpha^ follows the adaptive logic in this iteration (adaptive, or hybrid after its switch) */
+  PetscBool        reverted;   /* hybrid: negative curvature after the switch sent this solve back to the paper's schedule */
+  PetscInt         projNeg;    /* negative eigenvalues of K on the constraints' tangent space (when counted) */
   PetscInt         retriesJac; /* retries before this Newton matrix was formed */
   /* state of a solve */
   PetscBool       haveH; /* K holds the unscaled H_y of the state in X */
