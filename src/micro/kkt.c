@@ -187,7 +187,7 @@ static PetscErrorCode KKTSetUp(PC pc)
     PetscInt  it;
     PetscReal apap;
     PetscCall(SNESGetIterationNumber(M->snes, &it));
-    apap        = M->par.alphaStart * PetscPowReal(M->par.alphaEnd / M->par.alphaStart, (PetscReal)PetscMin(it, M->par.alphaIts) / M->par.alphaIts) * M->gmax;
+    apap        = HylcMicroPaperAlphaHat_Private(M, it) * M->gmax;
     M->adapting = PETSC_FALSE;
     M->reverted = PETSC_TRUE;
     PetscCall(PetscInfo(M, "hybrid schedule: negative curvature at iteration %" PetscInt_FMT ", the paper's schedule from here (alpha %g -> %g)\n", it, (double)M->alpha, (double)PetscMax(M->alpha, apap)));

@@ -46,19 +46,21 @@ const char *const HylcMicroAlphaSchedules[] = {"paper", "adaptive", "hybrid", "H
   and the actual energy decrease is more than 3/4 of the decrease predicted by the quadratic model of the
   unregularized Hessian, multiplied by factor if it is less than 1/4 or the step was backtracked, by
   factor^2 if the line search found no decrease; a step cut by the step limit lets alpha^ decay at least as
-  the paper's schedule; always clamped to [min, max]. The adaptive schedule refuses an indefinite K (as
-  -micro_factor_indefinite false: the x 10 retries raise alpha^), since with a small alpha^ the steps
-  would otherwise converge to saddle points. The convergence test is the same. Not collective.
+  the paper's schedule; always clamped to [min, max]. The adaptive schedule refuses a K that is indefinite on
+  the tangent space of the constraints (the x 10 retries raise alpha^), since with a small alpha^ the steps
+  would otherwise converge to saddle points; or hybrid, the paper's schedule until ||M g||_inf falls below
+  the switch of HylcMicroSetRegularizationSwitch() times its initial value, then adaptive, back to the
+  paper's for good at negative curvature. The convergence test is the same. Not collective.
 
   Input Parameters:
 + M        - the solver
-. schedule - HYLC_MICRO_ALPHA_PAPER or HYLC_MICRO_ALPHA_ADAPTIVE
+. schedule - HYLC_MICRO_ALPHA_PAPER, HYLC_MICRO_ALPHA_ADAPTIVE or HYLC_MICRO_ALPHA_HYBRID
 . factor   - adaptive: the factor, > 1 (default 4; PETSC_DEFAULT keeps the value)
 . min      - adaptive: the smallest alpha^, > 0 (default 1e-2)
 - max      - adaptive: the largest alpha^, >= min (default 1e10)
 
   Options Database Keys:
-+ -micro_alpha_schedule <paper> - paper or adaptive
++ -micro_alpha_schedule <paper> - paper, adaptive or hybrid
 . -micro_alpha_factor <4> - factor
 . -micro_alpha_min <1e-2> - min
 - -micro_alpha_max <1e10> - max

@@ -17,6 +17,12 @@ PetscErrorCode HylcMicroToY_Private(HylcMicro M, Vec X, PetscReal y[])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* the paper's alpha^ at iteration it: alphaStart (alphaEnd/alphaStart)^(min(it, alphaIts)/alphaIts) */
+PetscReal HylcMicroPaperAlphaHat_Private(HylcMicro M, PetscInt it)
+{
+  return M->par.alphaStart * PetscPowReal(M->par.alphaEnd / M->par.alphaStart, (PetscReal)PetscMin(it, M->par.alphaIts) / M->par.alphaIts);
+}
+
 /* energy at X: a degenerate state (zero-length or folded edge) or a non-finite energy gives +inf (a result
    of the trial step, not an error; every other failure is an error) */
 PetscErrorCode HylcMicroSafeEnergy_Private(HylcMicro M, Vec X, PetscReal *E, PetscReal parts[4])
@@ -85,8 +91,7 @@ static PetscErrorCode FormJacobian(SNES snes, Vec X, Mat J, Mat Jpre, void *ctx)
   M->gmax       = gmax;
   M->retriesJac = M->retries;
   {
-    const PetscReal t     = (PetscReal)PetscMin(it, M->par.alphaIts) / M->par.alphaIts;
-    const PetscReal apap  = M->par.alphaStart * PetscPowReal(M->par.alphaEnd / M->par.alphaStart, t); /* the paper's alpha^ */
+    const PetscReal apap  = HylcMicroPaperAlphaHat_Private(M, it);
     const PetscInt  sched = M->par.alphaSched;
     if (it == 0) {
       M->reverted = PETSC_FALSE;
@@ -138,8 +143,7 @@ static PetscErrorCode AdaptAlpha(HylcMicro M, PetscBool accepted, PetscBool clip
   }
   if (accepted && clipped) { /* the paper's alpha^ of the next iteration as a ceiling */
     PetscCall(SNESGetIterationNumber(M->snes, &it));
-    const PetscReal t = (PetscReal)PetscMin(it + 1, M->par.alphaIts) / M->par.alphaIts;
-    a                 = PetscMin(a, M->par.alphaStart * PetscPowReal(M->par.alphaEnd / M->par.alphaStart, t));
+    a = PetscMin(a, HylcMicroPaperAlphaHat_Private(M, it + 1));
   }
   M->ahat = PetscClipInterval(a, M->par.alphaMin, M->par.alphaMax);
   PetscCall(PetscInfo(M, "adaptive alpha^ %g -> %g (accepted %d, step limit %s, lambda %g, energy decrease %g, predicted %g)\n", (double)(M->alpha / M->gmax), (double)M->ahat, (int)accepted, clipped ? "active" : "inactive", (double)lambda, (double)actual, (double)pred));

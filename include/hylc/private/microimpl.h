@@ -91,4 +91,5 @@ PETSC_INTERN PetscErrorCode HylcMicroDestroyKKT_Private(HylcMicro);
 PETSC_INTERN PetscErrorCode HylcMicroCreateSNES_Private(HylcMicro);
 PETSC_INTERN PetscErrorCode HylcMicroSetUpSNES_Private(HylcMicro);
 PETSC_INTERN PetscErrorCode HylcMicroToY_Private(HylcMicro, Vec, PetscReal[]);
+PETSC_INTERN PetscReal      HylcMicroPaperAlphaHat_Private(HylcMicro, PetscInt);
 PETSC_INTERN PetscErrorCode HylcMicroSafeEnergy_Private(HylcMicro, Vec, PetscReal *, PetscReal[4]);
