@@ -36,7 +36,7 @@ struct _p_HylcPeriodic {
   HylcMidsurface         ms;
   PetscReal              z[6];
   HylcSlideConstraint    slide;
-  PetscReal              marginFactor; /* contact-ghost margin: max(3 r, factor min(px, py)) */
+  PetscReal              marginFactor; /* contact ghosts: every copy in the neighbouring tiles (0) or those within max(3 r, factor min(px, py)) */
   PetscBool              setup;
   PetscBool              viewed; /* -periodic_view printed for this pattern */
   PetscInt               N;      /* original vertices */
@@ -48,7 +48,8 @@ struct _p_HylcPeriodic {
   PetscHMapI vmap, emap; /* (o, s) -> full vertex / full edge */
   /* full edges: source full vertex (edge leaving o(src) in copy s(src)) and head */
   PetscInt       nfe, capfe, *esrc, *ehead;
-  PetscReal     *et, *ed1, *et0, *ed10; /* frames per full edge (and saved copy) */
+  PetscInt       nchain;                /* the chain edges (stretch and bend-twist elements) come first, the contact ghosts after them */
+  PetscReal     *et, *ed1, *et0, *ed10; /* frames per chain edge (and saved copy) */
   PetscReal     *sw;                    /* stretch weight per full edge (0: contact-only edge) */
   unsigned char *eghost;                /* edge has no original vertex */
   /* bend/twist elements */

@@ -145,7 +145,8 @@ PetscErrorCode HylcPeriodicSetUp(HylcPeriodic P)
     PetscCall(AddBend(P, bmap, w, P->D.shift[2 * o], P->D.shift[2 * o + 1]));
   }
   PetscCall(PetscHMapIDestroy(&bmap));
-  /* stretch weights of the chain edges */
+  /* stretch weights of the chain edges; the contact ghosts come after them and carry no frame */
+  P->nchain = P->nfe;
   for (PetscInt e = 0; e < P->nfe; e++) P->sw[e] = ((P->esrc[e] < N) + (P->ehead[e] < N)) / 2.0;
 
   /* midsurface over the reference box of the extended pattern (contact ghosts stay within one period) */
@@ -164,11 +165,12 @@ PetscErrorCode HylcPeriodicSetUp(HylcPeriodic P)
   PetscCall(HylcMidsurfaceSetBox(P->ms, lo, hi));
   PetscCall(HylcMidsurfaceSetUp(P->ms));
 
-  /* contact ghosts: copies of tile edges in the neighbouring tiles within the margin, measured on the
-     deformed initial guess. Usually the 8 neighbours; more rings when the stored vertices spread over more
-     than a period (a file may store any periodic copy of a vertex) */
+  /* contact ghosts: every copy of a tile edge in the neighbouring tiles, or with a positive margin factor
+     those within the margin on the deformed initial guess (HylcPeriodicSetContactMargin()). Usually the 8
+     neighbours; more rings when the stored vertices spread over more than a period (a file may store any
+     periodic copy of a vertex) */
   {
-    const PetscReal margin = PetscMax(3 * P->c.r, P->marginFactor * PetscMin(P->D.px, P->D.py));
+    const PetscReal margin = P->marginFactor > 0 ? PetscMax(3 * P->c.r, P->marginFactor * PetscMin(P->D.px, P->D.py)) : PETSC_MAX_REAL;
     PetscReal       blo[3] = {PETSC_MAX_REAL, PETSC_MAX_REAL, PETSC_MAX_REAL}, bhi[3] = {PETSC_MIN_REAL, PETSC_MIN_REAL, PETSC_MIN_REAL};
     PetscReal      *xih, *xo, xmin[2] = {PETSC_MAX_REAL, PETSC_MAX_REAL}, xmax[2] = {PETSC_MIN_REAL, PETSC_MIN_REAL};
     PetscInt        k1, k2;
@@ -210,7 +212,7 @@ PetscErrorCode HylcPeriodicSetUp(HylcPeriodic P)
         if (!s1 && !s2) continue;
         for (PetscInt o = 0; o < N; o++, q++) {
           PetscBool near = PETSC_TRUE;
-          for (int i = 0; i < 3; i++) {
+          for (int i = 0; i < 3 && margin < PETSC_MAX_REAL; i++) {
             const PetscReal a = PetscMin(xo[6 * q + i], xo[6 * q + 3 + i]), b = PetscMax(xo[6 * q + i], xo[6 * q + 3 + i]);
             if (a > bhi[i] + margin || b < blo[i] - margin) near = PETSC_FALSE;
           }
@@ -251,9 +253,9 @@ PetscErrorCode HylcPeriodicSetUp(HylcPeriodic P)
       Mat3(T, x0 + 3 * o, Tx);
       for (int i = 0; i < 3; i++) P->d[3 * k + i] = x0[3 * k + i] - Tx[i];
     }
-    /* projected reference frames (24): d1 <- normalize((I - t t^T) R(xi_v) d1_pattern) */
-    PetscCall(PetscMalloc4(3 * P->nfe, &P->et, 3 * P->nfe, &P->ed1, 3 * P->nfe, &P->et0, 3 * P->nfe, &P->ed10));
-    for (PetscInt e = 0; e < P->nfe; e++) {
+    /* projected reference frames (24) of the chain edges: d1 <- normalize((I - t t^T) R(xi_v) d1_pattern) */
+    PetscCall(PetscMalloc4(3 * P->nchain, &P->et, 3 * P->nchain, &P->ed1, 3 * P->nchain, &P->et0, 3 * P->nchain, &P->ed10));
+    for (PetscInt e = 0; e < P->nchain; e++) {
       const PetscInt k0 = P->esrc[e], k1 = P->ehead[e];
       PetscReal      R[9];
       HylcSub3(x0 + 3 * k1, x0 + 3 * k0, P->et + 3 * e);
@@ -317,8 +319,8 @@ PetscErrorCode HylcPeriodicSetState(HylcPeriodic P, const PetscReal y[])
 }
 
 /*@C
-  HylcPeriodicUpdateFrames - Time-parallel transport of every full edge's reference director to its
-  current tangent, and reference twists updated on the nearest branch.
+  HylcPeriodicUpdateFrames - Time-parallel transport of every chain edge's reference director to its
+  current tangent (the contact ghosts carry no frame), and reference twists updated on the nearest branch.
 
   Not collective
 
@@ -330,7 +332,7 @@ PetscErrorCode HylcPeriodicSetState(HylcPeriodic P, const PetscReal y[])
 PetscErrorCode HylcPeriodicUpdateFrames(HylcPeriodic P)
 {
   PetscFunctionBegin;
-  for (PetscInt e = 0; e < P->nfe; e++) {
+  for (PetscInt e = 0; e < P->nchain; e++) {
     PetscReal tn[3];
     HylcSub3(P->x + 3 * P->ehead[e], P->x + 3 * P->esrc[e], tn);
     PetscCheck(HylcNormalize3(tn) > 0, PETSC_COMM_SELF, PETSC_ERR_FP, "Zero-length edge");
@@ -358,8 +360,8 @@ PetscErrorCode HylcPeriodicUpdateFrames(HylcPeriodic P)
 PetscErrorCode HylcPeriodicSaveFrames(HylcPeriodic P)
 {
   PetscFunctionBegin;
-  PetscCall(PetscArraycpy(P->et0, P->et, 3 * P->nfe));
-  PetscCall(PetscArraycpy(P->ed10, P->ed1, 3 * P->nfe));
+  PetscCall(PetscArraycpy(P->et0, P->et, 3 * P->nchain));
+  PetscCall(PetscArraycpy(P->ed10, P->ed1, 3 * P->nchain));
   PetscCall(PetscArraycpy(P->mref0, P->mref, P->nbe));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -377,8 +379,8 @@ PetscErrorCode HylcPeriodicSaveFrames(HylcPeriodic P)
 PetscErrorCode HylcPeriodicRestoreFrames(HylcPeriodic P)
 {
   PetscFunctionBegin;
-  PetscCall(PetscArraycpy(P->et, P->et0, 3 * P->nfe));
-  PetscCall(PetscArraycpy(P->ed1, P->ed10, 3 * P->nfe));
+  PetscCall(PetscArraycpy(P->et, P->et0, 3 * P->nchain));
+  PetscCall(PetscArraycpy(P->ed1, P->ed10, 3 * P->nchain));
   PetscCall(PetscArraycpy(P->mref, P->mref0, P->nbe));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -639,7 +639,7 @@ static PetscErrorCode TestLazy(void)
   PetscCall(PetscViewerASCIIOpen(PETSC_COMM_SELF, path, &v));
   PetscCall(HylcPeriodicView(P2, v));
   PetscCall(PetscViewerDestroy(&v));
-  HYLC_CHECK(FileHas(path, "contact-ghost margin 0.375"), "-periodic_margin 0.375 read before the patterns was lost (%s)", path);
+  HYLC_CHECK(FileHas(path, "contact ghosts within margin 0.375"), "-periodic_margin 0.375 read before the patterns was lost (%s)", path);
   remove(path);
   /* a fresh solver with the same settings, given only the second pattern */
   PetscCall(HylcMicroCreate(PETSC_COMM_SELF, &F));
