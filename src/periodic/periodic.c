@@ -126,8 +126,8 @@ PetscErrorCode HylcPeriodicReset_Private(HylcPeriodic P)
   PetscCall(PetscFree2(P->rowptr, P->colind));
   PetscCall(PetscFree2(P->coopairs, P->coopw));
   P->nfv = P->capfv = P->nfe = P->nchain = P->capfe = P->nbe = P->capbe = P->npairs = P->cappairs = P->ncoo = P->capcoo = P->coonpairs = 0;
-  P->cooMat                                                                                                                = NULL;
-  P->setup                                                                                                                 = PETSC_FALSE;
+  P->cooMat                                                                                                                            = NULL;
+  P->setup                                                                                                                             = PETSC_FALSE;
   P->tEval = P->tContact = P->tAssemble = 0;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -472,8 +472,10 @@ PetscErrorCode HylcPeriodicView(HylcPeriodic P, PetscViewer viewer)
     PetscCall(PetscViewerASCIIPrintf(viewer, "HylcPeriodic Object%s%s%s: one rank\n", prefix ? " (" : "", prefix ? prefix : "", prefix ? ")" : ""));
   }
   PetscCall(PetscViewerASCIIPushTab(viewer));
-  if (P->marginFactor > 0) PetscCall(PetscViewerASCIIPrintf(viewer, "slide constraint %s, contact ghosts within margin %g of the initial guess, pair margin %g, constraint rtol %g\n", HylcSlideConstraints[P->slide], (double)P->marginFactor, (double)P->pairMargin, (double)P->crtol));
-  else PetscCall(PetscViewerASCIIPrintf(viewer, "slide constraint %s, contact ghosts: every copy in the neighbouring tiles, pair margin %g, constraint rtol %g\n", HylcSlideConstraints[P->slide], (double)P->pairMargin, (double)P->crtol));
+  if (P->marginFactor > 0)
+    PetscCall(PetscViewerASCIIPrintf(viewer, "slide constraint %s, contact ghosts within margin %g of the initial guess, pair margin %g, constraint rtol %g\n", HylcSlideConstraints[P->slide], (double)P->marginFactor, (double)P->pairMargin, (double)P->crtol));
+  else
+    PetscCall(PetscViewerASCIIPrintf(viewer, "slide constraint %s, contact ghosts: every copy in the neighbouring tiles, pair margin %g, constraint rtol %g\n", HylcSlideConstraints[P->slide], (double)P->pairMargin, (double)P->crtol));
   if (P->setup)
     PetscCall(PetscViewerASCIIPrintf(viewer, "periodic tile: strain (%g, %g, %g, %g, %g, %g); %" PetscInt_FMT " original and %" PetscInt_FMT " ghost vertices, %" PetscInt_FMT " edges, %" PetscInt_FMT " bend-twist elements, %" PetscInt_FMT " constraints (slide %s; %" PetscInt_FMT " linearly dependent rows dropped)\n", (double)P->z[0], (double)P->z[1], (double)P->z[2], (double)P->z[3], (double)P->z[4], (double)P->z[5], P->N, P->nfv - P->N, P->nfe, P->nbe, P->ncons, HylcSlideConstraints[P->slide], P->ndropped));
   else
