@@ -151,13 +151,13 @@ static void FillRecord(long k, int term, const double z[6], const HylcMicroResul
   rec->start     = HYLC_SAMPLE_START_COLD;
 }
 
-/* sample k; from the state prev (a state of the tile at the strain of the last solve, whose energy density
-   was prevPsi) if not NULL, retried cold if that does not converge, or if it converges below prevPsi: a unit
-   goes outward from the reference state, whose Psi is the minimum, so a continued state with less energy
-   than its predecessor nearer zero is suspect (measured on stockinette: continued solves that pulled the
-   loops through each other, Psi 0.026 against 11.1 cold at sy = 0.66; docs/performance.md). On return the
-   state of the kept result is in 'state' (if not NULL). */
-static PetscErrorCode SolveSample(HylcSampler S, long k, const PetscReal *prev, PetscReal prevPsi, PetscReal *state, HylcSampleRecord *rec)
+/* sample k; from the state prev (a state of the tile at the strain of the last solve) if not NULL, retried
+   cold if that does not converge. A continued solve that converges is kept even below its predecessor's Psi:
+   different equilibria of cold and continued starts are path dependence (buckled compressions), and the
+   lower energy is the better estimate (docs/performance.md, "Continuation"). (Until 2026-11-24 such a drop
+   was retried cold: the drops then were states whose loops had come apart through contacts missing from
+   the pruned contact ghosts.) On return the state of the kept result is in 'state' (if not NULL). */
+static PetscErrorCode SolveSample(HylcSampler S, long k, const PetscReal *prev, PetscReal *state, HylcSampleRecord *rec)
 {
   HylcMicroResult r;
   double          z[6];
@@ -170,13 +170,10 @@ static PetscErrorCode SolveSample(HylcSampler S, long k, const PetscReal *prev, 
   FillRecord(k, term, z, &r, rec);
   if (state) PetscCall(HylcMicroGetState(S->micro, state));
   if (prev) {
-    const PetscBool dropped = (PetscBool)(r.status == HYLC_MICRO_CONVERGED && r.psi < prevPsi - 1e-6 * PetscAbsReal(prevPsi));
-
     rec->start = HYLC_SAMPLE_START_CONTINUED;
-    if (r.status != HYLC_MICRO_CONVERGED || dropped) {
-      /* retried cold; the better of the two is kept: converged, then not converged, then non-finite
-         (the cold one on a tie, so always the cold one after a drop below prevPsi); iterations and time are
-         the sums of both solves */
+    if (r.status != HYLC_MICRO_CONVERGED) {
+      /* retried cold; the better of the two is kept: converged, then not converged, then non-finite (the
+         cold one on a tie); iterations and time are the sums of both solves */
       HylcSampleRecord cont = *rec;
       HylcMicroResult  rc;
       PetscCall(HylcMicroSolve(S->micro, z, &rc));
@@ -374,7 +371,7 @@ PetscErrorCode HylcSamplerRun(HylcSampler S)
         if (!done[uorder[i]]) todo = PETSC_TRUE;
       if (!todo) continue;
       for (long i = ustart[b]; i < ustart[b + 1]; i++) {
-        PetscCall(SolveSample(S, uorder[i], prevOk ? yprev : NULL, prevOk ? recs[n - 1].psi : 0, ycur, &recs[n]));
+        PetscCall(SolveSample(S, uorder[i], prevOk ? yprev : NULL, ycur, &recs[n]));
         if (!ycur) { /* the tile's size is known after its first set-up (a cold solve: its state is the kept one) */
           HylcPeriodic P;
           PetscCall(HylcMicroGetPeriodic(S->micro, &P));
@@ -390,7 +387,7 @@ PetscErrorCode HylcSamplerRun(HylcSampler S)
     } else {
       for (long k = b * S->batch; k < PetscMin((b + 1) * S->batch, S->nsamples); k++) {
         if (done[k]) continue;
-        PetscCall(SolveSample(S, k, NULL, 0, NULL, &recs[n++]));
+        PetscCall(SolveSample(S, k, NULL, NULL, &recs[n++]));
         if (!S->rank) PetscCall(Drain(S, J, &pg, &finished, PETSC_FALSE));
       }
     }
