@@ -331,6 +331,7 @@ PetscErrorCode HylcMicroSolve(HylcMicro M, const PetscReal z[6], HylcMicroResult
   if (M->haveInit) {
     M->haveInit = PETSC_FALSE;
     PetscCheck(M->nuinit == M->ny, PETSC_COMM_SELF, PETSC_ERR_ARG_SIZ, "HylcMicroSetInitialState: the state has %" PetscInt_FMT " unknowns, the tile %" PetscInt_FMT, M->nuinit, M->ny);
+    PetscCall(HylcMicroProjectedGradientNorm_Private(M, M->yw, &M->z0cold)); /* the cold start's |z0| */
     PetscCall(HylcPeriodicFluctuationFromLocal(M->P, M->uinit, M->yw));
     PetscCall(HylcPeriodicSetState(M->P, M->yw));
     PetscCall(HylcPeriodicUpdateFrames(M->P));

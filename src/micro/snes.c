@@ -255,11 +255,49 @@ static PetscErrorCode LineSearch(SNESLineSearch ls, void *ctx)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* S23-S25: the projected gradient z = g - A^T (A A^T)^-1 A g (unscaled) and the constraint residual */
+/* |z|^2 of the projected gradient z = g - A^T (A A^T)^-1 A g (unscaled) of the gradient g (S23-S25) */
+static PetscReal ProjectedNorm2(HylcMicro M, const PetscReal g[])
+{
+  const PetscInt n = M->ny, m = M->m;
+  PetscReal      z2 = 0;
+
+  for (PetscInt i = 0; i < m; i++) {
+    PetscReal s = 0;
+    for (PetscInt k = 0; k < n; k++) s += M->A[i * n + k] * g[k];
+    M->tmp[i] = s;
+  }
+  for (PetscInt i = 0; i < m; i++) {
+    M->wl[i] = 0;
+    for (PetscInt j = 0; j < m; j++) M->wl[i] += M->AAtinv[i * m + j] * M->tmp[j];
+  }
+  for (PetscInt k = 0; k < n; k++) {
+    PetscReal zk = g[k];
+    for (PetscInt i = 0; i < m; i++) zk -= M->A[i * n + k] * M->wl[i];
+    z2 += zk * zk;
+  }
+  return z2;
+}
+
+/* |z| at the state y (the tile's state is left at y; frames untouched): the scale of the relative
+   convergence test of a continued solve, taken at the cold initial guess, so that cold and continued
+   solves stop at the same |z| */
+PetscErrorCode HylcMicroProjectedGradientNorm_Private(HylcMicro M, const PetscReal y[], PetscReal *zn)
+{
+  PetscBool finite;
+
+  PetscFunctionBegin;
+  PetscCall(HylcPeriodicSetState(M->P, y));
+  PetscCall(HylcPeriodicEvaluateFinite(M->P, HYLC_TERM_ALL, M->parts, M->gw, NULL, &finite));
+  *zn = finite ? PetscSqrtReal(ProjectedNorm2(M, M->gw)) : 0;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* S23-S25: the projected gradient z = g - A^T (A A^T)^-1 A g (unscaled) and the constraint residual. The
+   relative test is against |z| at the cold initial guess, also for a continued solve (z0cold). */
 static PetscErrorCode Converged(SNES snes, PetscInt it, PetscReal xnorm, PetscReal gnorm, PetscReal f, SNESConvergedReason *reason, void *ctx)
 {
   HylcMicro      M = (HylcMicro)ctx;
-  const PetscInt n = M->ny, m = M->m;
+  const PetscInt m = M->m;
   PetscReal      z2 = 0, c2 = 0;
   PetscLogDouble now;
   PetscInt       maxit;
@@ -280,26 +318,13 @@ static PetscErrorCode Converged(SNES snes, PetscInt it, PetscReal xnorm, PetscRe
     *reason      = SNES_DIVERGED_FNORM_NAN;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
-  for (PetscInt i = 0; i < m; i++) {
-    PetscReal s = 0;
-    for (PetscInt k = 0; k < n; k++) s += M->A[i * n + k] * M->gw[k];
-    M->tmp[i] = s;
-  }
-  for (PetscInt i = 0; i < m; i++) {
-    M->wl[i] = 0;
-    for (PetscInt j = 0; j < m; j++) M->wl[i] += M->AAtinv[i * m + j] * M->tmp[j];
-  }
-  for (PetscInt k = 0; k < n; k++) {
-    PetscReal zk = M->gw[k];
-    for (PetscInt i = 0; i < m; i++) zk -= M->A[i * n + k] * M->wl[i];
-    z2 += zk * zk;
-  }
+  z2 = ProjectedNorm2(M, M->gw);
   PetscCall(SNESGetSolution(snes, &X));
   PetscCall(HylcMicroToY_Private(M, X, M->yw));
   PetscCall(HylcPeriodicConstraintResidual(M->P, M->yw, M->c));
   for (PetscInt i = 0; i < m; i++) c2 += M->c[i] * M->c[i];
   const PetscReal zn = PetscSqrtReal(z2), cn = PetscSqrtReal(c2);
-  if (it == 0) M->z0 = zn;
+  if (it == 0) M->z0 = M->continued ? M->z0cold : zn;
   M->lastz = M->z0 > 0 ? zn / M->z0 : 0;
   M->lastc = cn / M->r;
   if ((zn <= M->par.rtol * M->z0 || zn <= M->par.atol * M->ks) && cn < M->par.ctol * M->r) {

@@ -59,7 +59,8 @@ struct _p_HylcMicro {
   PetscBool       haveH; /* K holds the unscaled H_y of the state in X */
   PetscReal       E0;    /* energy of the current iterate */
   PetscReal       parts[4];
-  PetscReal       z0; /* |z| at the first iteration */
+  PetscReal       z0;     /* |z| at the first iteration, or at the cold initial guess for a continued solve */
+  PetscReal       z0cold; /* |z| at the cold initial guess y0 (continued solves: the scale of the relative test) */
   PetscReal       lastz, lastc;
   PetscInt        stalls, stallsTotal, retries;
   PetscLogDouble  tStart, tFactor, tLineSearch;
@@ -93,3 +94,4 @@ PETSC_INTERN PetscErrorCode HylcMicroSetUpSNES_Private(HylcMicro);
 PETSC_INTERN PetscErrorCode HylcMicroToY_Private(HylcMicro, Vec, PetscReal[]);
 PETSC_INTERN PetscReal      HylcMicroPaperAlphaHat_Private(HylcMicro, PetscInt);
 PETSC_INTERN PetscErrorCode HylcMicroSafeEnergy_Private(HylcMicro, Vec, PetscReal *, PetscReal[4]);
+PETSC_INTERN PetscErrorCode HylcMicroProjectedGradientNorm_Private(HylcMicro, const PetscReal[], PetscReal *);
