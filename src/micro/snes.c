@@ -296,8 +296,8 @@ PetscErrorCode HylcMicroProjectedGradientNorm_Private(HylcMicro M, const PetscRe
    relative test is against |z| at the cold initial guess, also for a continued solve (z0cold). */
 static PetscErrorCode Converged(SNES snes, PetscInt it, PetscReal xnorm, PetscReal gnorm, PetscReal f, SNESConvergedReason *reason, void *ctx)
 {
-  HylcMicro      M = (HylcMicro)ctx;
-  const PetscInt m = M->m;
+  HylcMicro      M  = (HylcMicro)ctx;
+  const PetscInt m  = M->m;
   PetscReal      z2 = 0, c2 = 0;
   PetscLogDouble now;
   PetscInt       maxit;
