@@ -349,8 +349,6 @@ PetscErrorCode HylcPeriodicSetSlideConstraint(HylcPeriodic P, HylcSlideConstrain
   0.25 this happened on 52 of the 1,051 samples of the stockinette's thinned plan (docs/performance.md);
   every copy costs 2-11 % more time per Newton iteration on the paper's patterns.
 
-  Not collective
-
   Input Parameters:
 + P      - the periodic tile
 - margin - the factor (>= 0; 0 for every copy)
