@@ -407,6 +407,22 @@ static PetscBool FileHas(const char *path, const char *text)
   return has;
 }
 
+/* views obj (PetscObjectView) into a new temporary file made from the template path (...XXXXXX), whose
+   name is left in path; the caller removes it */
+static PetscErrorCode ViewToTempFile(PetscObject obj, char path[])
+{
+  PetscViewer v;
+  int         fd = mkstemp(path);
+
+  PetscFunctionBegin;
+  PetscCheck(fd >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "mkstemp(%s) failed", path);
+  close(fd);
+  PetscCall(PetscViewerASCIIOpen(PETSC_COMM_SELF, path, &v));
+  PetscCall(PetscObjectView(obj, v));
+  PetscCall(PetscViewerDestroy(&v));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* the object: default prefix micro_, setters (and their refusal of bad values), a changed prefix reaches
    the options, HylcMicroView prints what was set, the removed -<prefix>factor_type is an error naming its
    replacement, and the factorization PC chosen through HylcMicroGetFactorPC gives the same psi (1e-9) */
@@ -420,10 +436,8 @@ static PetscErrorCode TestObject(void)
   const char     *prefix;
   PetscBool       eq;
   PetscErrorCode  ierr;
-  PetscViewer     v;
   char            path[] = "/tmp/hylc_test_micro_viewXXXXXX";
   const PetscReal z[6]   = {0.1, 0, 0, 0, 0, 0};
-  int             fd;
 
   PetscFunctionBegin;
   PetscCall(StraightYarn(16, &p));
@@ -445,12 +459,7 @@ static PetscErrorCode TestObject(void)
   PetscCall(HylcMicroSetPattern(M, p, &m));
   PetscCall(HylcMicroSetFromOptions(M));
   PetscCall(HylcMicroSetUp(M));
-  fd = mkstemp(path);
-  HYLC_CHECK(fd >= 0, "mkstemp failed");
-  if (fd >= 0) close(fd);
-  PetscCall(PetscViewerASCIIOpen(PETSC_COMM_SELF, path, &v));
-  PetscCall(HylcMicroView(M, v));
-  PetscCall(PetscViewerDestroy(&v));
+  PetscCall(ViewToTempFile((PetscObject)M, path));
   HYLC_CHECK(FileHas(path, "17 trials") && FileHas(path, "step limit (0.07 +") && FileHas(path, "(other_)") && FileHas(path, "solver type hylc (-other_factor_pc_factor_mat_solver_type)") && FileHas(path, "(other_factor_)"), "HylcMicroView (%s) lacks the prefix, a setter's or an option's value", path);
   remove(path);
   PetscCall(PetscOptionsClearValue(NULL, "-other_ls_max"));
@@ -490,9 +499,7 @@ static PetscErrorCode TestAdaptive(void)
   HylcMicro                    M;
   HylcMicroResult              r[3];
   PetscErrorCode               ierr;
-  PetscViewer                  v;
-  char                         path[] = "/tmp/hylc_test_micro_adaptXXXXXX";
-  int                          fd;
+  char                         path[]   = "/tmp/hylc_test_micro_adaptXXXXXX";
   const PetscReal              zs[4][6] = {{0.1, 0, 0, 0, 0, 0}, {0, 0, 0.15, 0, 0, 0}, {0.05, 0.2, 0, 0, 0, 0}, {0, 0, 0, 60, 0, 0}};
   const char *const            bad[][2] = {{"-micro_alpha_schedule", "fast"}, {"-micro_alpha_factor", "1"}, {"-micro_alpha_min", "0"}, {"-micro_alpha_max", "1e-3"}, {"-micro_alpha_switch", "0"}, {"-micro_step_clearance", "0.5"}};
   const char *const            sname[3] = {"paper", "adaptive", "hybrid"};
@@ -540,12 +547,7 @@ static PetscErrorCode TestAdaptive(void)
   }
   PetscCall(HylcMicroSetRegularizationSchedule(M, HYLC_MICRO_ALPHA_HYBRID, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
   /* the view names the schedule */
-  fd = mkstemp(path);
-  HYLC_CHECK(fd >= 0, "mkstemp failed");
-  if (fd >= 0) close(fd);
-  PetscCall(PetscViewerASCIIOpen(PETSC_COMM_SELF, path, &v));
-  PetscCall(HylcMicroView(M, v));
-  PetscCall(PetscViewerDestroy(&v));
+  PetscCall(ViewToTempFile((PetscObject)M, path));
   HYLC_CHECK(FileHas(path, "regularization: hybrid, the paper schedule alpha^ 5000 -> 5 over 400 iterations"), "HylcMicroView (%s) does not show the hybrid schedule", path);
   remove(path);
   /* bad values */
@@ -583,13 +585,11 @@ static PetscErrorCode TestLazy(void)
   PetscInt        maxit;
   MatSolverType   type;
   PetscBool       eq;
-  PetscViewer     v;
   HylcPattern     a, b;
   HylcYarnModel   m;
   HylcMicroResult ra, rb, rf;
   char            path[] = "/tmp/hylc_test_micro_lazyXXXXXX";
   const PetscReal z[6]   = {0.05, 0.1, 0, 0, 0, 0};
-  int             fd;
 
   PetscFunctionBegin;
   PetscCall(HylcMicroCreate(PETSC_COMM_SELF, &M));
@@ -633,12 +633,7 @@ static PetscErrorCode TestLazy(void)
   PetscCall(HylcMicroGetPeriodic(M, &P2));
   PetscCall(HylcMicroGetSNES(M, &s1));
   HYLC_CHECK(P0 == P1 && P1 == P2 && s1 == s0, "a new pattern replaced the tile or the SNES");
-  fd = mkstemp(path);
-  HYLC_CHECK(fd >= 0, "mkstemp failed");
-  if (fd >= 0) close(fd);
-  PetscCall(PetscViewerASCIIOpen(PETSC_COMM_SELF, path, &v));
-  PetscCall(HylcPeriodicView(P2, v));
-  PetscCall(PetscViewerDestroy(&v));
+  PetscCall(ViewToTempFile((PetscObject)P2, path));
   HYLC_CHECK(FileHas(path, "contact ghosts within margin 0.375"), "-periodic_margin 0.375 read before the patterns was lost (%s)", path);
   remove(path);
   /* a fresh solver with the same settings, given only the second pattern */
