@@ -57,9 +57,44 @@ static int PairCompare(const void *a, const void *b)
   return 0;
 }
 
+/* Lexicographic order: a two-pass counting sort (by the second index, then stably by the first), linear in
+   the pairs and the largest index; qsort if the indices are negative or the work arrays cannot be had. The
+   order is a total one, so both give the same list. */
 void HylcPairListSort(HylcPairList *list)
 {
-  if (list && list->n > 1) qsort(list->idx, list->n, 2 * sizeof(int), PairCompare);
+  size_t *cnt = NULL;
+  int    *tmp = NULL, vmax = 0, vmin = 0;
+
+  if (!list || list->n < 2) return;
+  const size_t n = list->n;
+  for (size_t p = 0; p < 2 * n; p++) {
+    if (list->idx[p] > vmax) vmax = list->idx[p];
+    if (list->idx[p] < vmin) vmin = list->idx[p];
+  }
+  if (vmin >= 0) {
+    cnt = (size_t *)malloc(((size_t)vmax + 2) * sizeof(*cnt));
+    tmp = (int *)malloc(2 * n * sizeof(*tmp));
+  }
+  if (!cnt || !tmp) {
+    free(cnt);
+    free(tmp);
+    qsort(list->idx, n, 2 * sizeof(int), PairCompare);
+    return;
+  }
+  for (int pass = 1; pass >= 0; pass--) { /* pass 1: key idx[2p + 1] into tmp; pass 0: key idx[2p] back */
+    const int *src = pass ? list->idx : tmp;
+    int       *dst = pass ? tmp : list->idx;
+    memset(cnt, 0, ((size_t)vmax + 2) * sizeof(*cnt));
+    for (size_t p = 0; p < n; p++) cnt[src[2 * p + pass] + 1]++;
+    for (int v = 0; v <= vmax; v++) cnt[v + 1] += cnt[v];
+    for (size_t p = 0; p < n; p++) {
+      const size_t q = cnt[src[2 * p + pass]]++;
+      dst[2 * q]     = src[2 * p];
+      dst[2 * q + 1] = src[2 * p + 1];
+    }
+  }
+  free(cnt);
+  free(tmp);
 }
 
 /* ---------------------------------------------------------------- boxes */

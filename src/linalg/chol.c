@@ -449,6 +449,78 @@ PetscErrorCode HylcCholSetIndefinite(HylcChol C, PetscBool allow)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The triangular solves on the permuted right-hand sides, interleaved: y[m g + j]. Columns are taken
+   SOLVE_CHUNK at a time with their values in local arrays, and the function is inlined with a constant m
+   (1, 4) in HylcCholSolveMany, so that the loops over the right-hand sides vectorize. */
+#define SOLVE_CHUNK 8
+static inline __attribute__((always_inline)) void SolveInterleaved(HylcChol C, const PetscInt m, PetscReal *y)
+{
+  const PetscInt bs = C->bs, n = C->n;
+  PetscReal     *t = C->tw; /* nb (ld - W) entries, nb <= m */
+
+  for (PetscInt j0 = 0; j0 < m; j0 += SOLVE_CHUNK) {
+    const PetscInt nb = m - j0 < SOLVE_CHUNK ? m - j0 : SOLVE_CHUNK;
+    /* L z = y, a supernode at a time: the triangular solve with the diagonal block, then the rows below as
+       one dense product t = L_below z_s, subtracted from y at the rows R_s */
+    for (PetscInt s = 0; s < C->nsup; s++) {
+      const PetscInt   f = C->sfirst[s], w = C->sfirst[s + 1] - f, nr = C->rptr[s + 1] - C->rptr[s], ld = bs * nr, W = bs * w;
+      const PetscInt  *R = C->rows + C->rptr[s];
+      const PetscReal *P = C->L + C->voff[s];
+      PetscReal       *X = y + m * bs * f + j0;
+      for (PetscInt k = 0; k < W; k++) {
+        const PetscReal *ck = P + k * ld;
+        PetscReal        xv[SOLVE_CHUNK];
+        for (PetscInt j = 0; j < nb; j++) X[m * k + j] = xv[j] = X[m * k + j] / ck[k];
+        for (PetscInt i = k + 1; i < W; i++)
+          for (PetscInt j = 0; j < nb; j++) X[m * i + j] -= ck[i] * xv[j];
+      }
+      if (ld == W) continue;
+      for (PetscInt i = 0; i < nb * (ld - W); i++) t[i] = 0;
+      for (PetscInt k = 0; k < W; k++) {
+        const PetscReal *ck = P + k * ld + W;
+        PetscReal        xv[SOLVE_CHUNK];
+        for (PetscInt j = 0; j < nb; j++) xv[j] = X[m * k + j];
+        for (PetscInt i = 0; i < ld - W; i++)
+          for (PetscInt j = 0; j < nb; j++) t[nb * i + j] += ck[i] * xv[j];
+      }
+      for (PetscInt r = w; r < nr; r++)
+        for (PetscInt i = 0; i < bs; i++) {
+          PetscReal       *yr = y + m * (bs * R[r] + i) + j0;
+          const PetscReal *tr = t + nb * (bs * (r - w) + i);
+          for (PetscInt j = 0; j < nb; j++) yr[j] -= tr[j];
+        }
+    }
+    /* S z */
+    if (C->nneg)
+      for (PetscInt g = 0; g < n; g++)
+        if (C->sg[g] < 0)
+          for (PetscInt j = 0; j < nb; j++) y[m * g + j0 + j] = -y[m * g + j0 + j];
+    /* L^T x = S z: gather the solution at the rows below, then dot products and the diagonal block */
+    for (PetscInt s = C->nsup - 1; s >= 0; s--) {
+      const PetscInt   f = C->sfirst[s], w = C->sfirst[s + 1] - f, nr = C->rptr[s + 1] - C->rptr[s], ld = bs * nr, W = bs * w;
+      const PetscInt  *R = C->rows + C->rptr[s];
+      const PetscReal *P = C->L + C->voff[s];
+      PetscReal       *X = y + m * bs * f + j0;
+      for (PetscInt r = w; r < nr; r++)
+        for (PetscInt i = 0; i < bs; i++) {
+          const PetscReal *yr = y + m * (bs * R[r] + i) + j0;
+          PetscReal       *tr = t + nb * (bs * (r - w) + i);
+          for (PetscInt j = 0; j < nb; j++) tr[j] = yr[j];
+        }
+      for (PetscInt k = W - 1; k >= 0; k--) {
+        const PetscReal *ck = P + k * ld;
+        PetscReal        acc[SOLVE_CHUNK];
+        for (PetscInt j = 0; j < nb; j++) acc[j] = X[m * k + j];
+        for (PetscInt i = 0; i < ld - W; i++)
+          for (PetscInt j = 0; j < nb; j++) acc[j] -= ck[W + i] * t[nb * i + j];
+        for (PetscInt i = k + 1; i < W; i++)
+          for (PetscInt j = 0; j < nb; j++) acc[j] -= ck[i] * X[m * i + j];
+        for (PetscInt j = 0; j < nb; j++) X[m * k + j] = acc[j] / ck[k];
+      }
+    }
+  }
+}
+
 HYLC_TARGET_CLONES PetscErrorCode HylcCholSolveMany(HylcChol C, PetscInt nrhs, const PetscScalar b[], PetscScalar x[])
 {
   const PetscInt bs = C->bs, n = C->n, m = nrhs;
@@ -467,71 +539,12 @@ HYLC_TARGET_CLONES PetscErrorCode HylcCholSolveMany(HylcChol C, PetscInt nrhs, c
   for (PetscInt BI = 0; BI < C->nb; BI++)
     for (PetscInt i = 0; i < bs; i++)
       for (PetscInt j = 0; j < m; j++) y[m * (bs * C->iperm[BI] + i) + j] = PetscRealPart(b[j * n + bs * BI + i]);
-  /* L z = y, a supernode at a time: the triangular solve with the diagonal block, then the rows below as
-     one dense product t = L_below z_s, subtracted from y at the rows R_s */
-  for (PetscInt s = 0; s < C->nsup; s++) {
-    const PetscInt   f = C->sfirst[s], w = C->sfirst[s + 1] - f, nr = C->rptr[s + 1] - C->rptr[s], ld = bs * nr, W = bs * w;
-    const PetscInt  *R = C->rows + C->rptr[s];
-    const PetscReal *P = C->L + C->voff[s];
-    PetscReal       *X = y + m * bs * f, *t = C->tw;
-    for (PetscInt k = 0; k < W; k++) {
-      const PetscReal *ck = P + k * ld;
-      PetscReal       *xk = X + m * k;
-      for (PetscInt j = 0; j < m; j++) xk[j] /= ck[k];
-      for (PetscInt i = k + 1; i < W; i++)
-        for (PetscInt j = 0; j < m; j++) X[m * i + j] -= ck[i] * xk[j];
-    }
-    if (ld == W) continue;
-    PetscCall(PetscArrayzero(t, m * (ld - W)));
-    for (PetscInt k = 0; k < W; k++) {
-      const PetscReal *ck = P + k * ld + W, *xk = X + m * k;
-      if (m == 1)
-        for (PetscInt i = 0; i < ld - W; i++) t[i] += ck[i] * xk[0];
-      else
-        for (PetscInt i = 0; i < ld - W; i++)
-          for (PetscInt j = 0; j < m; j++) t[m * i + j] += ck[i] * xk[j];
-    }
-    for (PetscInt r = w; r < nr; r++)
-      for (PetscInt i = 0; i < bs; i++) {
-        PetscReal       *yr = y + m * (bs * R[r] + i);
-        const PetscReal *tr = t + m * (bs * (r - w) + i);
-        for (PetscInt j = 0; j < m; j++) yr[j] -= tr[j];
-      }
-  }
-  /* S z */
-  if (C->nneg)
-    for (PetscInt g = 0; g < n; g++)
-      if (C->sg[g] < 0)
-        for (PetscInt j = 0; j < m; j++) y[m * g + j] = -y[m * g + j];
-  /* L^T x = S z: gather the solution at the rows below, then dot products and the diagonal block */
-  for (PetscInt s = C->nsup - 1; s >= 0; s--) {
-    const PetscInt   f = C->sfirst[s], w = C->sfirst[s + 1] - f, nr = C->rptr[s + 1] - C->rptr[s], ld = bs * nr, W = bs * w;
-    const PetscInt  *R = C->rows + C->rptr[s];
-    const PetscReal *P = C->L + C->voff[s];
-    PetscReal       *X = y + m * bs * f, *t = C->tw;
-    for (PetscInt r = w; r < nr; r++)
-      for (PetscInt i = 0; i < bs; i++) {
-        const PetscReal *yr = y + m * (bs * R[r] + i);
-        PetscReal       *tr = t + m * (bs * (r - w) + i);
-        for (PetscInt j = 0; j < m; j++) tr[j] = yr[j];
-      }
-    for (PetscInt k = W - 1; k >= 0; k--) {
-      const PetscReal *ck = P + k * ld;
-      PetscReal       *xk = X + m * k;
-      if (m == 1) {
-        PetscReal v = xk[0];
-        for (PetscInt i = 0; i < ld - W; i++) v -= ck[W + i] * t[i];
-        for (PetscInt i = k + 1; i < W; i++) v -= ck[i] * X[i];
-        xk[0] = v / ck[k];
-      } else {
-        for (PetscInt i = 0; i < ld - W; i++)
-          for (PetscInt j = 0; j < m; j++) xk[j] -= ck[W + i] * t[m * i + j];
-        for (PetscInt i = k + 1; i < W; i++)
-          for (PetscInt j = 0; j < m; j++) xk[j] -= ck[i] * X[m * i + j];
-        for (PetscInt j = 0; j < m; j++) xk[j] /= ck[k];
-      }
-    }
-  }
+  if (m == 1)
+    SolveInterleaved(C, 1, y);
+  else if (m == 4)
+    SolveInterleaved(C, 4, y); /* the Schur complement's right-hand sides of the Newton solver */
+  else
+    SolveInterleaved(C, m, y);
   for (PetscInt BI = 0; BI < C->nb; BI++)
     for (PetscInt i = 0; i < bs; i++)
       for (PetscInt j = 0; j < m; j++) x[j * n + bs * BI + i] = y[m * (bs * C->iperm[BI] + i) + j];

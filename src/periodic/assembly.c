@@ -38,6 +38,7 @@ static inline PetscBool BoxesOverlap(const double *a, const double *b, PetscReal
 static PetscErrorCode FindPairs(HylcPeriodic P)
 {
   PetscFunctionBegin;
+  if (P->pairsValid) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PetscLogEventBegin(HYLC_TileBroadphase, 0, 0, 0, 0));
   for (PetscInt e = 0; e < P->nfe; e++)
     for (int i = 0; i < 3; i++) {
@@ -65,6 +66,7 @@ static PetscErrorCode FindPairs(HylcPeriodic P)
     PetscCall(PushPair(&P->ncand, &P->capcand, &P->cpairs, &P->cw, i, j, nor / 4.0));
     if (BoxesOverlap(P->segx + 6 * i, P->segx + 6 * j, P->c.r)) PetscCall(PushPair(&P->npairs, &P->cappairs, &P->pairs, &P->pw, i, j, nor / 4.0));
   }
+  P->pairsValid = PETSC_TRUE;
   PetscCall(PetscLogEventEnd(HYLC_TileBroadphase, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -421,8 +423,10 @@ static PetscErrorCode PeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts
   if (gy) PetscCall(PetscArrayzero(gy, 4 * P->N));
   if (mask & HYLC_TERM_CONTACT)
     PetscCall(FindPairs(P));
-  else
-    P->npairs = 0;
+  else {
+    P->npairs     = 0;
+    P->pairsValid = PETSC_FALSE;
+  }
   if (H) PetscCall(SetCOO(P, H));
   hv = H ? P->coov : NULL;
   for (PetscInt e = 0; e < P->nfe; e++) {

@@ -122,6 +122,7 @@ PetscErrorCode HylcPeriodicReset_Private(HylcPeriodic P)
   PetscCall(PetscFree2(P->pairs, P->pw));
   PetscCall(PetscFree2(P->cpairs, P->cw));
   P->ncand = P->capcand = 0;
+  P->pairsValid         = PETSC_FALSE;
   PetscCall(PetscFree2(P->coopos, P->coov));
   PetscCall(PetscFree2(P->rowptr, P->colind));
   PetscCall(PetscFree2(P->coopairs, P->coopw));

@@ -70,7 +70,8 @@ struct _p_HylcPeriodic {
   PetscInt     ncand, capcand, *cpairs;  /* candidates for the Hessian's structure (boxes inflated by pairMargin r) */
   PetscReal   *cw;
   PetscReal    pairMargin;
-  PetscReal   *pw; /* pair weights */
+  PetscReal   *pw;         /* pair weights */
+  PetscBool    pairsValid; /* the pair lists are those of the current x (FindPairs is skipped) */
   /* COO */
   PetscInt     ncoo, capcoo, *coopos; /* element-entry values coov and where each goes in the CSR values */
   PetscScalar *coov;

@@ -304,7 +304,17 @@ PetscErrorCode HylcPeriodicSetState(HylcPeriodic P, const PetscReal y[])
 {
   PetscFunctionBegin;
   PetscCheck(P->setup, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE, "Call HylcPeriodicSetUp() first");
-  if (y != P->y) PetscCall(PetscArraycpy(P->y, y, 4 * P->N));
+  if (y != P->y) {
+    /* the same state again (the line search's accepted trial, evaluated next with its Hessian): x and the
+       contact pairs found for it stay */
+    if (P->pairsValid) {
+      PetscBool same;
+      PetscCall(PetscMemcmp(P->y, y, 4 * (size_t)P->N * sizeof(PetscReal), &same));
+      if (same) PetscFunctionReturn(PETSC_SUCCESS);
+    }
+    PetscCall(PetscArraycpy(P->y, y, 4 * P->N));
+  }
+  P->pairsValid = PETSC_FALSE;
   for (PetscInt k = 0; k < P->nfv; k++) {
     const PetscInt   o  = P->fo[k];
     const PetscReal *xo = P->y + 4 * o;

@@ -75,10 +75,43 @@ static void CompareAll(HylcBVH bvh, int nseg, const double *x, const int *edges,
   HylcPairListFree(&b);
 }
 
+static int PairLess(const void *a, const void *b)
+{
+  const int *p = (const int *)a, *q = (const int *)b;
+  return p[0] != q[0] ? (p[0] < q[0] ? -1 : 1) : p[1] != q[1] ? (p[1] < q[1] ? -1 : 1)
+                                                              : 0;
+}
+
+/* HylcPairListSort (a counting sort, qsort for negative indices) against qsort: random pairs with
+   repeats, both index orders, and lists of 0, 1 and 2 pairs */
+static void TestSort(unsigned long long *st)
+{
+  const size_t sizes[]  = {0, 1, 2, 7, 1000, 20000};
+  const int    ranges[] = {1, 3, 50, 9000};
+  for (size_t a = 0; a < sizeof(sizes) / sizeof(sizes[0]); a++)
+    for (size_t b = 0; b < sizeof(ranges) / sizeof(ranges[0]); b++)
+      for (int neg = 0; neg < 2; neg++) {
+        const size_t n    = sizes[a];
+        HylcPairList list = {0};
+        int         *ref  = (int *)malloc((2 * n + 1) * sizeof(int));
+        list.idx          = (int *)malloc((2 * n + 1) * sizeof(int));
+        list.n = list.cap = n;
+        for (size_t p = 0; p < 2 * n; p++) list.idx[p] = (int)(HylcTestRand(st) * ranges[b]) - (neg && p == n ? 1 : 0);
+        memcpy(ref, list.idx, 2 * n * sizeof(int));
+        qsort(ref, n, 2 * sizeof(int), PairLess);
+        HylcPairListSort(&list);
+        HYLC_CHECK(n == 0 || !memcmp(ref, list.idx, 2 * n * sizeof(int)), "sort of %zu pairs in [0, %d)%s differs from qsort", n, ranges[b], neg ? " with a negative index" : "");
+        free(ref);
+        HylcPairListFree(&list);
+      }
+}
+
 int main(void)
 {
   unsigned long long st = 77;
   const double       r  = 0.5e-3;
+
+  TestSort(&st);
 
   /* random segments, several sizes; ghost flags random and spatially clustered; refit and rebuild */
   const int sizes[] = {0, 1, 2, 5, 17, 300, 3000};
