@@ -282,16 +282,15 @@ static PetscErrorCode SetCOO(HylcPeriodic P, Mat H)
 
   PetscFunctionBegin;
   if (H == P->cooMat && PairsCovered(P)) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(PetscFree2(P->coopairs, P->coopw));
-  PetscCall(PetscMalloc2(2 * P->ncand + 1, &P->coopairs, P->ncand + 1, &P->coopw));
+  PetscCall(PetscFree(P->coopairs));
+  PetscCall(PetscMalloc1(2 * P->ncand + 1, &P->coopairs));
   PetscCall(PetscArraycpy(P->coopairs, P->cpairs, 2 * P->ncand));
-  PetscCall(PetscArraycpy(P->coopw, P->cw, P->ncand));
   P->coonpairs        = P->ncand;
   const PetscInt nent = P->nfe * 36 + P->nbe * 121 + P->coonpairs * 144, nel = NumStructElements(P);
   if (nent > P->capcoo) {
-    PetscCall(PetscFree2(P->coopos, P->coov));
+    PetscCall(PetscFree(P->coopos));
     P->capcoo = nent + nent / 4;
-    PetscCall(PetscMalloc2(P->capcoo, &P->coopos, P->capcoo, &P->coov));
+    PetscCall(PetscMalloc1(P->capcoo, &P->coopos));
   }
   /* the dofs of every element (dof[doff[e] + p], p < n), and the offset koff[e] of its first entry in the
      element order of coopos: entry (p, q) of element e is coopos[koff[e] + p n + q] */
@@ -390,17 +389,18 @@ static PetscErrorCode SetCOO(HylcPeriodic P, Mat H)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* accumulate a reduced element gradient and Hessian */
-static inline void Scatter(const HylcPeriodic P, const Layout *L, double ge[], double He[], PetscReal gy[], PetscScalar *hv)
+/* accumulate a reduced element gradient and Hessian: the Hessian's entries straight into the CSR values v
+   of H_y at their positions pos (P->coopos of the element) */
+static inline void Scatter(const HylcPeriodic P, const Layout *L, double ge[], double He[], PetscReal gy[], PetscScalar *v, const PetscInt *pos)
 {
   PetscInt idx[12];
-  Reduce(P, L, gy ? ge : NULL, hv ? He : NULL);
+  Reduce(P, L, gy ? ge : NULL, v ? He : NULL);
   if (gy) {
     LayoutDofs(P, L, idx);
     for (PetscInt i = 0; i < L->n; i++) gy[idx[i]] += ge[i];
   }
-  if (hv)
-    for (PetscInt i = 0; i < L->n * L->n; i++) hv[i] = He[i];
+  if (v)
+    for (PetscInt i = 0; i < L->n * L->n; i++) v[pos[i]] += He[i];
 }
 
 /* the evaluation; a degenerate element or a non-finite energy is no error: *bad = 1 (zero-length edge at
@@ -410,8 +410,8 @@ static PetscErrorCode PeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts
   PetscReal    E[4] = {0, 0, 0, 0};
   double       x[12], ge[12], He[144];
   Layout       L;
-  PetscScalar *hv;
-  PetscInt     k = 0;
+  PetscScalar *hv = NULL; /* the CSR values of H */
+  PetscInt     k  = 0;    /* the element's first entry in P->coopos */
 
   PetscFunctionBegin;
   *bad  = 0;
@@ -427,8 +427,11 @@ static PetscErrorCode PeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts
     P->npairs     = 0;
     P->pairsValid = PETSC_FALSE;
   }
-  if (H) PetscCall(SetCOO(P, H));
-  hv = H ? P->coov : NULL;
+  if (H) {
+    PetscCall(SetCOO(P, H));
+    PetscCall(MatSeqAIJGetArray(H, &hv));
+    PetscCall(PetscArrayzero(hv, P->nnz));
+  }
   for (PetscInt e = 0; e < P->nfe; e++) {
     if (P->sw[e] == 0) continue;
     StretchLayout(P, e, &L);
@@ -444,9 +447,8 @@ static PetscErrorCode PeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts
         break;
       }
       E[0] += en;
-      Scatter(P, &L, ge, He, gy, hv ? hv + k : NULL);
-    } else if (hv)
-      for (int i = 0; i < 36; i++) hv[k + i] = 0;
+      Scatter(P, &L, ge, He, gy, hv, P->coopos + k);
+    }
     k += 36;
   }
   const int bt = ((mask & HYLC_TERM_BEND) ? HYLC_ROD_BEND : 0) | ((mask & HYLC_TERM_TWIST) ? HYLC_ROD_TWIST : 0);
@@ -481,20 +483,27 @@ static PetscErrorCode PeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts
       }
       if (mask & HYLC_TERM_BEND) E[1] += en[0];
       if (mask & HYLC_TERM_TWIST) E[2] += en[1];
-      Scatter(P, &L, ge, He, gy, hv ? hv + k : NULL);
-    } else if (hv)
-      for (int i = 0; i < 121; i++) hv[k + i] = 0;
+      Scatter(P, &L, ge, He, gy, hv, P->coopos + k);
+    }
     k += 121;
   }
   PetscCall(PetscLogEventBegin(HYLC_TileContact, 0, 0, 0, 0));
   PetscCall(PetscTime(&tc0));
-  const PetscInt   np = *bad ? 0 : H ? P->coonpairs
-                                     : P->npairs; /* with a Hessian: every pair of its structure (the others give 0) */
-  const PetscInt  *pl = H ? P->coopairs : P->pairs;
-  const PetscReal *pw = H ? P->coopw : P->pw;
+  /* the pairs that can touch (the others give 0); with a Hessian, each one's place a in the pairs of the
+     structure (both lists sorted, every touching pair in the structure: SetCOO) */
+  const PetscInt   np = *bad ? 0 : P->npairs;
+  const PetscInt  *pl = P->pairs;
+  const PetscReal *pw = P->pw;
+  const PetscInt   k0 = k;
+  PetscInt         a  = 0;
   for (PetscInt p = 0; p < np; p++) {
     const PetscInt i = pl[2 * p], j = pl[2 * p + 1];
     double         en;
+    if (H) {
+      while (a < P->coonpairs && (P->coopairs[2 * a] < i || (P->coopairs[2 * a] == i && P->coopairs[2 * a + 1] < j))) a++;
+      PetscCheck(a < P->coonpairs && P->coopairs[2 * a] == i && P->coopairs[2 * a + 1] == j, PETSC_COMM_SELF, PETSC_ERR_PLIB, "Touching contact pair (%" PetscInt_FMT ", %" PetscInt_FMT ") is not in the Hessian's structure", i, j);
+      k = k0 + 144 * a;
+    }
     ContactLayout(P, i, j, &L);
     for (int a = 0; a < 4; a++)
       for (int c = 0; c < 3; c++) x[3 * a + c] = P->x[3 * L.vert[a] + c];
@@ -504,20 +513,15 @@ static PetscErrorCode PeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts
     else
       en = HylcContactClosestPoint(x, x + 3, x + 6, x + 9, la, lb, P->c.kc, P->c.r, pw[p], gy ? ge : NULL, H ? He : NULL, NULL, NULL, NULL);
     E[3] += en;
-    Scatter(P, &L, ge, He, gy, hv ? hv + k : NULL);
-    k += 144;
+    Scatter(P, &L, ge, He, gy, hv, P->coopos + k);
   }
   PetscCall(PetscTime(&tc1));
   P->tContact += tc1 - tc0;
   PetscCall(PetscLogEventEnd(HYLC_TileContact, 0, 0, 0, 0));
-  if (H && !*bad) {
+  if (H) {
     PetscCall(PetscLogEventBegin(HYLC_TileAssemble, 0, 0, 0, 0));
     PetscCall(PetscTime(&tc0));
-    PetscScalar *v;
-    PetscCall(MatSeqAIJGetArray(H, &v));
-    PetscCall(PetscArrayzero(v, P->nnz));
-    for (PetscInt q = 0; q < P->ncoo; q++) v[P->coopos[q]] += P->coov[q];
-    PetscCall(MatSeqAIJRestoreArray(H, &v));
+    PetscCall(MatSeqAIJRestoreArray(H, &hv));
     PetscCall(PetscTime(&tc1));
     P->tAssemble += tc1 - tc0;
     PetscCall(PetscLogEventEnd(HYLC_TileAssemble, 0, 0, 0, 0));

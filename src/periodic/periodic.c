@@ -123,9 +123,9 @@ PetscErrorCode HylcPeriodicReset_Private(HylcPeriodic P)
   PetscCall(PetscFree2(P->cpairs, P->cw));
   P->ncand = P->capcand = 0;
   P->pairsValid         = PETSC_FALSE;
-  PetscCall(PetscFree2(P->coopos, P->coov));
+  PetscCall(PetscFree(P->coopos));
   PetscCall(PetscFree2(P->rowptr, P->colind));
-  PetscCall(PetscFree2(P->coopairs, P->coopw));
+  PetscCall(PetscFree(P->coopairs));
   P->nfv = P->capfv = P->nfe = P->nchain = P->capfe = P->nbe = P->capbe = P->npairs = P->cappairs = P->ncoo = P->capcoo = P->coonpairs = 0;
   P->cooMat                                                                                                                            = NULL;
   P->setup                                                                                                                             = PETSC_FALSE;

@@ -73,11 +73,9 @@ struct _p_HylcPeriodic {
   PetscReal   *pw;         /* pair weights */
   PetscBool    pairsValid; /* the pair lists are those of the current x (FindPairs is skipped) */
   /* COO */
-  PetscInt     ncoo, capcoo, *coopos; /* element-entry values coov and where each goes in the CSR values */
-  PetscScalar *coov;
+  PetscInt     ncoo, capcoo, *coopos; /* where each element entry goes in the CSR values of H_y */
   PetscInt    *rowptr, *colind, nnz; /* the CSR structure of H_y: 4x4 blocks of coupled vertices */
   PetscInt     coonpairs, *coopairs; /* the pairs of the current COO structure, a superset of the touching ones */
-  PetscReal   *coopw;
   Mat          cooMat;
   /* accumulated wall times (s): evaluations with a Hessian, contact (broadphase + pairs), assembly */
   PetscLogDouble tEval, tContact, tAssemble;
