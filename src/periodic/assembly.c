@@ -282,9 +282,10 @@ static PetscErrorCode SetCOO(HylcPeriodic P, Mat H)
 
   PetscFunctionBegin;
   if (H == P->cooMat && PairsCovered(P)) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(PetscFree(P->coopairs));
-  PetscCall(PetscMalloc1(2 * P->ncand + 1, &P->coopairs));
+  PetscCall(PetscFree2(P->coopairs, P->coopw));
+  PetscCall(PetscMalloc2(2 * P->ncand + 1, &P->coopairs, P->ncand + 1, &P->coopw));
   PetscCall(PetscArraycpy(P->coopairs, P->cpairs, 2 * P->ncand));
+  PetscCall(PetscArraycpy(P->coopw, P->cw, P->ncand));
   P->coonpairs        = P->ncand;
   const PetscInt nent = P->nfe * 36 + P->nbe * 121 + P->coonpairs * 144, nel = NumStructElements(P);
   if (nent > P->capcoo) {
@@ -489,21 +490,13 @@ static PetscErrorCode PeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts
   }
   PetscCall(PetscLogEventBegin(HYLC_TileContact, 0, 0, 0, 0));
   PetscCall(PetscTime(&tc0));
-  /* the pairs that can touch (the others give 0); with a Hessian, each one's place a in the pairs of the
-     structure (both lists sorted, every touching pair in the structure: SetCOO) */
-  const PetscInt   np = *bad ? 0 : P->npairs;
-  const PetscInt  *pl = P->pairs;
-  const PetscReal *pw = P->pw;
-  const PetscInt   k0 = k;
-  PetscInt         a  = 0;
+  const PetscInt   np = *bad ? 0 : H ? P->coonpairs
+                                     : P->npairs; /* with a Hessian: every pair of its structure (the others give 0) */
+  const PetscInt  *pl = H ? P->coopairs : P->pairs;
+  const PetscReal *pw = H ? P->coopw : P->pw;
   for (PetscInt p = 0; p < np; p++) {
     const PetscInt i = pl[2 * p], j = pl[2 * p + 1];
     double         en;
-    if (H) {
-      while (a < P->coonpairs && (P->coopairs[2 * a] < i || (P->coopairs[2 * a] == i && P->coopairs[2 * a + 1] < j))) a++;
-      PetscCheck(a < P->coonpairs && P->coopairs[2 * a] == i && P->coopairs[2 * a + 1] == j, PETSC_COMM_SELF, PETSC_ERR_PLIB, "Touching contact pair (%" PetscInt_FMT ", %" PetscInt_FMT ") is not in the Hessian's structure", i, j);
-      k = k0 + 144 * a;
-    }
     ContactLayout(P, i, j, &L);
     for (int a = 0; a < 4; a++)
       for (int c = 0; c < 3; c++) x[3 * a + c] = P->x[3 * L.vert[a] + c];
@@ -514,6 +507,7 @@ static PetscErrorCode PeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts
       en = HylcContactClosestPoint(x, x + 3, x + 6, x + 9, la, lb, P->c.kc, P->c.r, pw[p], gy ? ge : NULL, H ? He : NULL, NULL, NULL, NULL);
     E[3] += en;
     Scatter(P, &L, ge, He, gy, hv, P->coopos + k);
+    k += 144;
   }
   PetscCall(PetscTime(&tc1));
   P->tContact += tc1 - tc0;

@@ -125,7 +125,7 @@ PetscErrorCode HylcPeriodicReset_Private(HylcPeriodic P)
   P->pairsValid         = PETSC_FALSE;
   PetscCall(PetscFree(P->coopos));
   PetscCall(PetscFree2(P->rowptr, P->colind));
-  PetscCall(PetscFree(P->coopairs));
+  PetscCall(PetscFree2(P->coopairs, P->coopw));
   P->nfv = P->capfv = P->nfe = P->nchain = P->capfe = P->nbe = P->capbe = P->npairs = P->cappairs = P->ncoo = P->capcoo = P->coonpairs = 0;
   P->cooMat                                                                                                                            = NULL;
   P->setup                                                                                                                             = PETSC_FALSE;

@@ -76,6 +76,7 @@ struct _p_HylcPeriodic {
   PetscInt     ncoo, capcoo, *coopos; /* where each element entry goes in the CSR values of H_y */
   PetscInt    *rowptr, *colind, nnz; /* the CSR structure of H_y: 4x4 blocks of coupled vertices */
   PetscInt     coonpairs, *coopairs; /* the pairs of the current COO structure, a superset of the touching ones */
+  PetscReal   *coopw;                /* their weights */
   Mat          cooMat;
   /* accumulated wall times (s): evaluations with a Hessian, contact (broadphase + pairs), assembly */
   PetscLogDouble tEval, tContact, tAssemble;
