@@ -5,8 +5,8 @@
 # its 1D and 2D per-sample costs, 128 threads) and the ratio, the Newton iterations, and the full plan's
 # wall time on 2 ranks projected by tools/loadbalance.py from the measured per-sample costs.
 # Target (issue 15): >= 50x fewer CPU-s than Table S1 on every pattern.
-# HYLC_BENCH_PLAN="satin stockinette" picks patterns (default: all seven; the rib alone is projected at about
-# 20 min from a coarser run, docs/performance.md). HYLC_BENCH_PLAN_START=continue measures continuation;
+# HYLC_BENCH_PLAN="satin stockinette" picks patterns (default: all seven; the rib alone takes about 5 min
+# continued with the adaptive schedule, docs/performance.md). HYLC_BENCH_PLAN_START=continue measures continuation;
 # HYLC_BENCH_PLAN_START=both runs cold and then continue, and compares them (issue 15): the share of the
 # samples converged in both whose Psi agree within 1e-3 relative (target >= 98 %), every differing sample
 # with both energies, and the share of those where the continued one is lower or equal (target >= 90 %).
