@@ -144,10 +144,12 @@ static PetscErrorCode KKTFactor(HylcMicro M, PetscBool *ok)
         for (PetscInt k = 0; k < n; k++) s += M->A[i * n + k] * ((k % 4 == 3) ? M->mu : 1.0) * M->Z[j * n + k];
         M->S[i * m + j] = s;
       }
+    /* adapting: the inertia on the tangent space of the constraints, from S before HylcDenseInverse()
+       overwrites it (its work array) */
+    PetscInt npos = 0;
+    if (have && nneg > 0) PetscCall(SchurPositive(M, &npos));
     *ok = (PetscBool)(HylcDenseInverse((int)m, M->S, M->Sinv, 0.0) == 0);
-    if (*ok && have && nneg > 0) { /* adapting: the inertia on the tangent space of the constraints */
-      PetscInt npos;
-      PetscCall(SchurPositive(M, &npos));
+    if (*ok && have && nneg > 0) {
       M->projNeg = nneg + npos - m;
       if (M->projNeg > 0) {
         *ok = PETSC_FALSE;
