@@ -51,6 +51,8 @@ typedef struct {
   PetscInt        iterations;                                /* Newton iterations */
   PetscInt        retries;                                   /* alpha increases for indefinite K */
   PetscInt        stalls;                                    /* line searches without decrease */
+  PetscInt        escapes;                                   /* saddle escapes (HylcMicroSetSaddleEscape()) */
+  PetscInt        negcurv;                                   /* negative eigenvalues of the projected Hessian at the end; -1 not tested */
   PetscReal       residual;                                  /* |z| / |z0| at the end */
   PetscReal       cresidual;                                 /* |A y - dL| / r at the end */
   PetscLogDouble  time;                                      /* wall time of the solve (s) */
@@ -70,6 +72,7 @@ PETSC_EXTERN PetscErrorCode HylcMicroSetStepLimit(HylcMicro, PetscReal p0, Petsc
 PETSC_EXTERN PetscErrorCode HylcMicroSetLineSearch(HylcMicro, PetscReal factor, PetscInt trials, PetscInt maxStalls);
 PETSC_EXTERN PetscErrorCode HylcMicroSetTolerances(HylcMicro, PetscReal rtol, PetscReal atol, PetscReal ctol, PetscReal maxTime);
 PETSC_EXTERN PetscErrorCode HylcMicroSetIndefinite(HylcMicro, PetscBool);
+PETSC_EXTERN PetscErrorCode HylcMicroSetSaddleEscape(HylcMicro, PetscBool, PetscInt, PetscReal);
 PETSC_EXTERN PetscErrorCode HylcMicroSetFromOptions(HylcMicro);
 PETSC_EXTERN PetscErrorCode HylcMicroGetSNES(HylcMicro, SNES *);
 PETSC_EXTERN PetscErrorCode HylcMicroGetFactorPC(HylcMicro, PC *);

@@ -14,7 +14,7 @@ PETSC_EXTERN PetscLogEvent HYLC_PatternLoad, HYLC_PatternWrite, HYLC_PatternGene
 PETSC_EXTERN PetscLogEvent HYLC_TileEvaluate, HYLC_TileBroadphase, HYLC_TileContact, HYLC_TileAssemble;
 PETSC_EXTERN PetscLogEvent HYLC_PeriodicSetUp, HYLC_PeriodicEvaluate, HYLC_SamplerRun;
 PETSC_EXTERN PetscClassId  HYLC_MICRO_CLASSID, HYLC_CHOL_CLASSID;
-PETSC_EXTERN PetscLogEvent HYLC_MicroSolve, HYLC_MicroSetUp, HYLC_MicroFactor, HYLC_MicroLineSearch;
+PETSC_EXTERN PetscLogEvent HYLC_MicroSolve, HYLC_MicroSetUp, HYLC_MicroFactor, HYLC_MicroLineSearch, HYLC_MicroSaddle;
 PETSC_EXTERN PetscLogEvent HYLC_CholSymbolic, HYLC_CholNumeric, HYLC_CholSolve;
 PETSC_EXTERN PetscClassId  HYLC_PERIODIC_CLASSID, HYLC_SAMPLER_CLASSID;
 

@@ -85,7 +85,7 @@ static PetscErrorCode SchurPositive(HylcMicro M, PetscInt *npos)
 }
 
 /* factor K and form the Schur complement data Z = K^-1 M A^T and S^-1 = (A M Z)^-1 */
-static PetscErrorCode KKTFactor(HylcMicro M, PetscBool *ok)
+PetscErrorCode HylcMicroKKTFactor_Private(HylcMicro M, PetscBool *ok)
 {
   const PetscInt n = M->ny, m = M->m;
   PCFailedReason reason;
@@ -171,7 +171,7 @@ static PetscErrorCode KKTIncreaseAlpha(HylcMicro M, PetscBool *ok)
   M->alpha *= 10;
   M->retries++;
   PetscCall(PetscInfo(M, "indefinite Newton matrix: alpha x 10 -> %g\n", (double)M->alpha));
-  PetscCall(KKTFactor(M, ok));
+  PetscCall(HylcMicroKKTFactor_Private(M, ok));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -182,13 +182,14 @@ static PetscErrorCode KKTSetUp(PC pc)
 
   PetscFunctionBegin;
   PetscCall(PCShellGetContext(pc, &M));
-  PetscCall(KKTFactor(M, &ok));
+  PetscCall(HylcMicroKKTFactor_Private(M, &ok));
   if (!ok && M->adapting && M->projNeg > 0 && M->par.alphaSched == HYLC_MICRO_ALPHA_HYBRID) {
     /* hybrid: negative curvature after the switch, a saddle near: the paper's schedule, whose steps leave
        saddles along their negative curvature, for the rest of the solve */
     PetscInt  it;
     PetscReal apap;
     PetscCall(SNESGetIterationNumber(M->snes, &it));
+    it += M->itBase;
     apap        = HylcMicroPaperAlphaHat_Private(M, it) * M->gmax;
     M->adapting = PETSC_FALSE;
     M->reverted = PETSC_TRUE;
@@ -197,7 +198,7 @@ static PetscErrorCode KKTSetUp(PC pc)
       PetscCall(MatShift(M->K, apap - M->alpha));
       M->alpha = apap;
     }
-    PetscCall(KKTFactor(M, &ok));
+    PetscCall(HylcMicroKKTFactor_Private(M, &ok));
   }
   for (PetscInt k = 0; !ok && k < M->par.maxRetries; k++) PetscCall(KKTIncreaseAlpha(M, &ok));
   /* no step: the line search ends the solve (status stalled, or nonfinite for a non-finite matrix) */
@@ -206,7 +207,7 @@ static PetscErrorCode KKTSetUp(PC pc)
 }
 
 /* x = -w_y, the KKT solution (S22) for b = M g: x = K^-1 b + Z S^-1 (c - A M K^-1 b) (SNES steps X - x) */
-static PetscErrorCode KKTSolve(HylcMicro M, Vec b, Vec x)
+PetscErrorCode HylcMicroKKTSolve_Private(HylcMicro M, Vec b, Vec x)
 {
   const PetscInt n = M->ny, m = M->m;
   PetscScalar   *xa;
@@ -247,7 +248,7 @@ static PetscErrorCode KKTApply(PC pc, Vec b, Vec x)
   PetscCall(VecDuplicate(x, &Kx));
   for (PetscInt k = 0;; k++) {
     PetscBool ok;
-    PetscCall(KKTSolve(M, b, x));
+    PetscCall(HylcMicroKKTSolve_Private(M, b, x));
     /* a descent direction of positive curvature; otherwise K is too indefinite: regularize more */
     PetscCall(VecDot(b, x, &descent));
     PetscCall(MatMult(M->K, x, Kx));
@@ -289,6 +290,11 @@ PetscErrorCode HylcMicroSetUpKKT_Private(HylcMicro M, PC pc)
   PetscFunctionBegin;
   PetscCall(PCFactorGetMatSolverType(M->inner, &type));
   PetscCall(PetscStrcmp(type, MATSOLVERCHOLMOD, &M->cholmod));
+  {
+    const char *const withInertia[] = {MATSOLVERHYLC, MATSOLVERPETSC, MATSOLVERMUMPS};
+    M->inertia                      = PETSC_FALSE;
+    for (int k = 0; k < 3 && !M->inertia && type; k++) PetscCall(PetscStrcmp(type, withInertia[k], &M->inertia));
+  }
   PetscCall(PetscSNPrintf(name, sizeof(name), "hylc KKT (S22): Schur complement around PCCHOLESKY, solver type %s (-%sfactor_pc_factor_mat_solver_type)", type ? type : "default", ((PetscObject)M)->prefix ? ((PetscObject)M)->prefix : ""));
   PetscCall(PCShellSetName(pc, name));
   PetscFunctionReturn(PETSC_SUCCESS);

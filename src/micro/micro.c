@@ -34,6 +34,9 @@ static void ParamsDefault(HylcMicroParams *p)
   p->ctol        = 1e-4;
   p->maxTime     = 60;
   p->indefinite  = PETSC_TRUE;
+  p->saddleTest  = PETSC_TRUE;
+  p->saddleMax   = 5;
+  p->saddleTol   = 1e-6;
 }
 
 /*@C
@@ -349,9 +352,33 @@ PetscErrorCode HylcMicroSolve(HylcMicro M, const PetscReal z[6], HylcMicroResult
   M->E0                       = PETSC_INFINITY;
   /* an error inside the solve (a bug, no memory, a bad option) is an error: only the outcomes of the
      method are statuses (a failed factorization and a degenerate trial state are outcomes, handled above) */
+  M->itBase  = 0;
+  M->restart = PETSC_FALSE;
+  M->escapes = 0;
   PetscCall(SNESSolve(M->snes, NULL, M->X));
   PetscCall(SNESGetConvergedReason(M->snes, &reason));
   PetscCall(SNESGetIterationNumber(M->snes, &its));
+  /* the second-order test of a converged state; a saddle point is left along negative curvature and the
+     Newton iteration resumes, up to saddleMax times (saddle.c) */
+  res->negcurv = -1;
+  while (reason > 0 && M->par.saddleTest) {
+    PetscInt  neg;
+    PetscBool escaped;
+    PetscCall(HylcMicroSaddle_Private(M, (PetscBool)(M->escapes < M->par.saddleMax), &neg, &escaped));
+    res->negcurv = neg;
+    if (!escaped) break;
+    M->escapes++;
+    M->itBase += its;
+    M->restart = PETSC_TRUE;
+    M->stalls  = 0;
+    PetscCall(SNESSolve(M->snes, NULL, M->X));
+    PetscCall(SNESGetConvergedReason(M->snes, &reason));
+    PetscCall(SNESGetIterationNumber(M->snes, &its));
+  }
+  if (reason <= 0) res->negcurv = -1; /* not converged after an escape: not tested */
+  its += M->itBase;
+  M->restart   = PETSC_FALSE;
+  res->escapes = M->escapes;
   if (reason > 0)
     res->status = HYLC_MICRO_CONVERGED;
   else if (M->statusSet)
@@ -545,6 +572,7 @@ PetscErrorCode HylcMicroResultView(const HylcMicroResult *r, PetscViewer viewer)
   PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
   PetscCall(PetscViewerASCIIPrintf(viewer, "status: %s\n", HylcMicroStatuses[r->status]));
   PetscCall(PetscViewerASCIIPrintf(viewer, "iterations: %" PetscInt_FMT "\n", r->iterations));
+  if (r->negcurv >= 0) PetscCall(PetscViewerASCIIPrintf(viewer, "second-order test: %" PetscInt_FMT " negative eigenvalues on the tangent space at the end (%s), %" PetscInt_FMT " saddle escapes\n", r->negcurv, r->negcurv ? "a saddle point" : "a minimum", r->escapes));
   snprintf(buf, sizeof(buf), "residual: %.3e (projected gradient, relative), constraints %.3e r\nregularization retries: %d, stalled line searches: %d\ntime: %.4f s (assembly %.4f, contact %.4f, factorization %.4f, line search %.4f)\n", (double)r->residual, (double)r->cresidual, (int)r->retries, (int)r->stalls, r->time, r->tAssembly, r->tContact, r->tFactor, r->tLineSearch);
   PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
   PetscFunctionReturn(PETSC_SUCCESS);

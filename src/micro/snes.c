@@ -81,6 +81,7 @@ static PetscErrorCode FormJacobian(SNES snes, Vec X, Mat J, Mat Jpre, void *ctx)
   (void)J;
   (void)Jpre;
   PetscCall(SNESGetIterationNumber(snes, &it));
+  it += M->itBase; /* the iteration of the whole solve (restarts after saddle escapes continue the schedule) */
   PetscCall(HylcMicroToY_Private(M, X, M->yw));
   if (!M->haveH) {
     PetscCall(HylcPeriodicSetState(M->P, M->yw));
@@ -93,7 +94,7 @@ static PetscErrorCode FormJacobian(SNES snes, Vec X, Mat J, Mat Jpre, void *ctx)
   {
     const PetscReal apap  = HylcMicroPaperAlphaHat_Private(M, it);
     const PetscInt  sched = M->par.alphaSched;
-    if (it == 0) {
+    if (it == 0) { /* the start of the solve (a restart after a saddle escape keeps the schedule's state) */
       M->reverted = PETSC_FALSE;
       M->gmax0    = gmax;
       M->ahat     = M->par.alphaStart;
@@ -143,25 +144,60 @@ static PetscErrorCode AdaptAlpha(HylcMicro M, PetscBool accepted, PetscBool clip
   }
   if (accepted && clipped) { /* the paper's alpha^ of the next iteration as a ceiling */
     PetscCall(SNESGetIterationNumber(M->snes, &it));
-    a = PetscMin(a, HylcMicroPaperAlphaHat_Private(M, it + 1));
+    a = PetscMin(a, HylcMicroPaperAlphaHat_Private(M, M->itBase + it + 1));
   }
   M->ahat = PetscClipInterval(a, M->par.alphaMin, M->par.alphaMax);
   PetscCall(PetscInfo(M, "adaptive alpha^ %g -> %g (accepted %d, step limit %s, lambda %g, energy decrease %g, predicted %g)\n", (double)(M->alpha / M->gmax), (double)M->ahat, (int)accepted, clipped ? "active" : "inactive", (double)lambda, (double)actual, (double)pred));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* the energy of an accepted iterate, appended to the history (HylcMicroGetEnergyHistory()) */
+PetscErrorCode HylcMicroPushEnergy_Private(HylcMicro M, PetscReal E)
+{
+  PetscFunctionBegin;
+  if (M->nhist == M->caphist) {
+    PetscReal *h;
+    M->caphist = M->caphist ? 2 * M->caphist : 256;
+    PetscCall(PetscMalloc1(M->caphist, &h));
+    PetscCall(PetscArraycpy(h, M->hist, M->nhist));
+    PetscCall(PetscFree(M->hist));
+    M->hist = h;
+  }
+  M->hist[M->nhist++] = E;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* the step limit at the iterate X: the largest vertex displacement of a step, (p0 + p1 clamp(lambda_min, 0, 1)) r
+   and, with -micro_step_clearance, at most that fraction of the clearance of X */
+PetscErrorCode HylcMicroStepLimit_Private(HylcMicro M, Vec X, PetscReal *dmax)
+{
+  const HylcMacroStrain *ms;
+
+  PetscFunctionBegin;
+  PetscCall(HylcPeriodicGetMacroStrain(M->P, &ms));
+  *dmax = (M->par.stepP0 + M->par.stepP1 * PetscClipInterval(ms->lambdaMin, 0, 1)) * M->r;
+  if (M->par.stepClear > 0) { /* the clearance of the iterate: no two centerlines cross along the step */
+    PetscReal clear;
+    PetscCall(HylcMicroToY_Private(M, X, M->yw));
+    PetscCall(HylcPeriodicSetState(M->P, M->yw));
+    PetscCall(HylcPeriodicGetClearance(M->P, &clear));
+    PetscCall(PetscInfo(M, "clearance %g r: step limit %g r%s\n", (double)(clear / M->r), (double)(PetscMin(*dmax, M->par.stepClear * clear) / M->r), M->par.stepClear * clear < *dmax ? " (clearance)" : ""));
+    *dmax = PetscMin(*dmax, M->par.stepClear * clear);
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* the step limit, then backtracking until the energy strictly decreases; frames transported on acceptance */
 static PetscErrorCode LineSearch(SNESLineSearch ls, void *ctx)
 {
-  HylcMicro              M = (HylcMicro)ctx;
-  Vec                    X, F, Y, W, G;
-  PetscReal              dmax, d = 0, E, lambda = 1, ynorm, xnorm, fnorm;
-  const PetscScalar     *y;
-  SNES                   snes;
-  PetscLogDouble         t0, t1;
-  const HylcMacroStrain *ms;
-  PetscBool              accepted = PETSC_FALSE, adaptive = M->adapting;
-  PetscReal              lin = 0, quad = 0, Eold, Etrial = PETSC_INFINITY;
+  HylcMicro          M = (HylcMicro)ctx;
+  Vec                X, F, Y, W, G;
+  PetscReal          dmax, d = 0, E, lambda = 1, ynorm, xnorm, fnorm;
+  const PetscScalar *y;
+  SNES               snes;
+  PetscLogDouble     t0, t1;
+  PetscBool          accepted = PETSC_FALSE, adaptive = M->adapting;
+  PetscReal          lin = 0, quad = 0, Eold, Etrial = PETSC_INFINITY;
 
   PetscFunctionBegin;
   PetscCall(PetscTime(&t0));
@@ -182,16 +218,7 @@ static PetscErrorCode LineSearch(SNESLineSearch ls, void *ctx)
     M->tLineSearch += t1 - t0;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
-  PetscCall(HylcPeriodicGetMacroStrain(M->P, &ms));
-  dmax = (M->par.stepP0 + M->par.stepP1 * PetscClipInterval(ms->lambdaMin, 0, 1)) * M->r;
-  if (M->par.stepClear > 0) { /* the clearance of the iterate: no two centerlines cross along the step */
-    PetscReal clear;
-    PetscCall(HylcMicroToY_Private(M, X, M->yw));
-    PetscCall(HylcPeriodicSetState(M->P, M->yw));
-    PetscCall(HylcPeriodicGetClearance(M->P, &clear));
-    PetscCall(PetscInfo(M, "clearance %g r: step limit %g r%s\n", (double)(clear / M->r), (double)(PetscMin(dmax, M->par.stepClear * clear) / M->r), M->par.stepClear * clear < dmax ? " (clearance)" : ""));
-    dmax = PetscMin(dmax, M->par.stepClear * clear);
-  }
+  PetscCall(HylcMicroStepLimit_Private(M, X, &dmax));
   /* the largest vertex displacement of the linear step (ghosts are rotated copies: the same lengths) */
   PetscCall(VecGetArrayRead(Y, &y));
   for (PetscInt o = 0; o < M->ny / 4; o++) d = PetscMax(d, PetscSqrtReal(PetscSqr(PetscRealPart(y[4 * o])) + PetscSqr(PetscRealPart(y[4 * o + 1])) + PetscSqr(PetscRealPart(y[4 * o + 2]))));
@@ -221,15 +248,7 @@ static PetscErrorCode LineSearch(SNESLineSearch ls, void *ctx)
     PetscCall(SNESComputeFunction(snes, X, F)); /* the state, E0, the gradient and the Hessian */
     PetscCall(HylcPeriodicUpdateFrames(M->P));
     M->stalls = 0;
-    if (M->nhist == M->caphist) {
-      PetscReal *h;
-      M->caphist = M->caphist ? 2 * M->caphist : 256;
-      PetscCall(PetscMalloc1(M->caphist, &h));
-      PetscCall(PetscArraycpy(h, M->hist, M->nhist));
-      PetscCall(PetscFree(M->hist));
-      M->hist = h;
-    }
-    M->hist[M->nhist++] = M->E0;
+    PetscCall(HylcMicroPushEnergy_Private(M, M->E0));
   } else {
     /* keep the iterate (alpha decays with the iteration count); the cached Hessian stays valid */
     M->stalls++;
@@ -324,7 +343,7 @@ static PetscErrorCode Converged(SNES snes, PetscInt it, PetscReal xnorm, PetscRe
   PetscCall(HylcPeriodicConstraintResidual(M->P, M->yw, M->c));
   for (PetscInt i = 0; i < m; i++) c2 += M->c[i] * M->c[i];
   const PetscReal zn = PetscSqrtReal(z2), cn = PetscSqrtReal(c2);
-  if (it == 0) M->z0 = M->continued ? M->z0cold : zn;
+  if (it == 0) M->z0 = !M->restart ? (M->continued ? M->z0cold : zn) : PetscMax(M->z0, zn); /* a restart: at least |z| after the escape (a saddle at the start has |z0| = 0) */
   M->lastz = M->z0 > 0 ? zn / M->z0 : 0;
   M->lastc = cn / M->r;
   if ((zn <= M->par.rtol * M->z0 || zn <= M->par.atol * M->ks) && cn < M->par.ctol * M->r) {

@@ -6,7 +6,7 @@ PetscLogEvent HYLC_PatternLoad, HYLC_PatternWrite, HYLC_PatternGenerate, HYLC_Pa
 PetscLogEvent HYLC_TileEvaluate, HYLC_TileBroadphase, HYLC_TileContact, HYLC_TileAssemble;
 PetscLogEvent HYLC_PeriodicSetUp, HYLC_PeriodicEvaluate, HYLC_SamplerRun;
 PetscClassId  HYLC_MICRO_CLASSID, HYLC_CHOL_CLASSID;
-PetscLogEvent HYLC_MicroSolve, HYLC_MicroSetUp, HYLC_MicroFactor, HYLC_MicroLineSearch;
+PetscLogEvent HYLC_MicroSolve, HYLC_MicroSetUp, HYLC_MicroFactor, HYLC_MicroLineSearch, HYLC_MicroSaddle;
 PetscLogEvent HYLC_CholSymbolic, HYLC_CholNumeric, HYLC_CholSolve;
 PetscClassId  HYLC_PERIODIC_CLASSID, HYLC_SAMPLER_CLASSID;
 
@@ -53,6 +53,7 @@ PetscErrorCode HylcInitializePackage(void)
   PetscCall(PetscLogEventRegister("MICRO_SetUp", HYLC_MICRO_CLASSID, &HYLC_MicroSetUp));
   PetscCall(PetscLogEventRegister("MICRO_Solve", HYLC_MICRO_CLASSID, &HYLC_MicroSolve));
   PetscCall(PetscLogEventRegister("MICRO_Factor", HYLC_MICRO_CLASSID, &HYLC_MicroFactor));
+  PetscCall(PetscLogEventRegister("MICRO_Saddle", HYLC_MICRO_CLASSID, &HYLC_MicroSaddle));
   PetscCall(PetscLogEventRegister("MICRO_LineSearch", HYLC_MICRO_CLASSID, &HYLC_MicroLineSearch));
   PetscCall(PetscClassIdRegister("HylcChol", &HYLC_CHOL_CLASSID));
   PetscCall(PetscLogEventRegister("CHOL_Symbolic", HYLC_CHOL_CLASSID, &HYLC_CholSymbolic));

@@ -14,10 +14,13 @@
    - representation: storing vertices one or two periods away (the same periodic object) changes nothing;
    - the object: prefix, setters, view, the removed -micro_factor_type, the factorization PC's solver type;
    - -micro_alpha_schedule adaptive: the paper schedule's psi (1e-8) where the equilibrium is unique, with no
-     more iterations; its bad values refused. */
+     more iterations; its bad values refused;
+   - the second-order test: a straight yarn compressed past the Euler load is a saddle, left by the escape
+     for a buckled state of lower energy; below the load a minimum, unchanged. */
 #include <hylc/micro.h>
 #include <unistd.h>
 #include <hylc/chol.h>
+#include <petscblaslapack.h>
 #include "hylctest.h"
 
 static PetscErrorCode StraightYarn(PetscInt N, HylcPattern *p)
@@ -571,6 +574,188 @@ static PetscErrorCode TestAdaptive(void)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* the eigenvalues below -tol max|diag(M H M)| of M H M restricted to the tangent space of the constraints
+   (B^T v = 0, B = M A^T), at the state of M's last solve: dense, from an orthonormal basis of the tangent
+   space (QR of B) and LAPACK syev; M = 1 per position, 1/r per twist (the default twist scale) */
+static PetscErrorCode DenseProjectedNegative(HylcMicro M, PetscReal tol, PetscInt *neg)
+{
+  HylcPeriodic       P;
+  HylcYarnConstants  c;
+  PetscInt           n, m;
+  const PetscReal   *A;
+  PetscReal         *y, *g, *Q, *T, *W, *work, *tau, parts[4], dmax = 0;
+  const PetscScalar *h;
+  Mat                H, D;
+  PetscBLASInt       bn, bm, bk, lwork, info;
+
+  PetscFunctionBegin;
+  PetscCall(HylcMicroGetPeriodic(M, &P));
+  PetscCall(HylcPeriodicGetSizes(P, &n, NULL, NULL, NULL));
+  PetscCall(HylcPeriodicGetConstraints(P, &m, &A, NULL, NULL));
+  PetscCall(HylcPeriodicGetConstants(P, &c));
+  PetscCall(PetscMalloc7(n, &y, n, &g, n * n, &Q, n * n, &T, n, &W, 64 * n, &work, n, &tau));
+  PetscCall(HylcMicroGetState(M, y));
+  PetscCall(HylcPeriodicSetState(P, y));
+  PetscCall(HylcPeriodicCreateMatrix(P, &H));
+  PetscCall(HylcPeriodicEvaluate(P, HYLC_TERM_ALL, parts, g, H));
+  PetscCall(MatConvert(H, MATSEQDENSE, MAT_INITIAL_MATRIX, &D));
+  PetscCall(MatDenseGetArrayRead(D, &h));
+  /* Q: the columns of B, then the full orthogonal factor of its QR; its last n - m columns span the tangent space */
+  PetscCall(PetscArrayzero(Q, n * n));
+  for (PetscInt i = 0; i < m; i++)
+    for (PetscInt k = 0; k < n; k++) Q[i * n + k] = A[i * n + k] * ((k % 4 == 3) ? 1.0 / c.r : 1.0);
+  PetscCall(PetscBLASIntCast(n, &bn));
+  PetscCall(PetscBLASIntCast(m, &bm));
+  lwork = 64 * bn;
+  PetscCallBLAS("LAPACKgeqrf", LAPACKgeqrf_(&bn, &bm, Q, &bn, tau, work, &lwork, &info));
+  HYLC_CHECK(info == 0, "geqrf: info %d", (int)info);
+  PetscCallBLAS("LAPACKorgqr", LAPACKorgqr_(&bn, &bn, &bm, Q, &bn, tau, work, &lwork, &info));
+  HYLC_CHECK(info == 0, "orgqr: info %d", (int)info);
+  /* T = (M H M) Z, then W = Z^T T (k x k, in Q's storage no longer needed... kept apart in T's tail) */
+  const PetscInt k = n - m;
+  PetscReal     *R;
+  PetscCall(PetscMalloc1(k * k, &R));
+  for (PetscInt j = 0; j < k; j++)
+    for (PetscInt a = 0; a < n; a++) {
+      PetscReal s = 0;
+      for (PetscInt b = 0; b < n; b++) s += h[b * n + a] * ((a % 4 == 3) ? 1.0 / c.r : 1.0) * ((b % 4 == 3) ? 1.0 / c.r : 1.0) * Q[(m + j) * n + b];
+      T[j * n + a] = s;
+    }
+  for (PetscInt a = 0; a < n; a++) dmax = PetscMax(dmax, PetscAbsReal(h[a * n + a] * ((a % 4 == 3) ? 1.0 / (c.r * c.r) : 1.0)));
+  for (PetscInt i = 0; i < k; i++)
+    for (PetscInt j = 0; j < k; j++) {
+      PetscReal s = 0;
+      for (PetscInt a = 0; a < n; a++) s += Q[(m + i) * n + a] * T[j * n + a];
+      R[j * k + i] = s;
+    }
+  PetscCall(PetscBLASIntCast(k, &bk));
+  PetscCallBLAS("LAPACKsyev", LAPACKsyev_("N", "U", &bk, R, &bk, W, work, &lwork, &info));
+  HYLC_CHECK(info == 0, "syev: info %d", (int)info);
+  *neg = 0;
+  for (PetscInt i = 0; i < k; i++) *neg += W[i] < -tol * dmax;
+  PetscCall(MatDenseRestoreArrayRead(D, &h));
+  PetscCall(MatDestroy(&D));
+  PetscCall(MatDestroy(&H));
+  PetscCall(PetscFree(R));
+  PetscCall(PetscFree7(y, g, Q, T, W, work, tau));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* the second-order test and the escape from saddle points (HylcMicroSetSaddleEscape): a straight periodic
+   yarn compressed by eps is an equilibrium, and the cold start (the affine, straight state) is it; past the
+   Euler load it is a saddle point. For the discrete rod, whose curvature is measured per rest length, the
+   load is at eps_c = (2 pi / L)^2 B / (k_s (1 + eps)) (L the rest period): the test finds negative curvature
+   there and, with escapes, the solve ends in a buckled state of lower energy (post-buckling theory: about
+   (2 q - q^2) of the straight state's, q = eps_c / |eps|) whose Hessian has none; below the load the
+   straight state is a minimum (no escape, the same Psi) */
+static PetscErrorCode TestSaddle(void)
+{
+  HylcPattern       p;
+  HylcYarnModel     m;
+  HylcMicro         M;
+  HylcPeriodic      P;
+  HylcYarnConstants c;
+  HylcMicroResult   r;
+  PetscReal         area, epsc, L = 8e-3;
+  PetscErrorCode    ierr;
+
+  PetscFunctionBegin;
+  PetscCall(StraightYarn(16, &p));
+  PetscCall(HylcYarnModelDefault(&m));
+  PetscCall(HylcMicroCreate(PETSC_COMM_SELF, &M));
+  PetscCall(HylcMicroSetPattern(M, p, &m));
+  PetscCall(HylcMicroGetPeriodic(M, &P));
+  {
+    const PetscReal z0[6] = {0, 0, 0, 0, 0, 0};
+    PetscCall(HylcMicroSolve(M, z0, &r)); /* the default: tested, a minimum */
+    HYLC_CHECK(r.negcurv == 0 && r.escapes == 0, "straight yarn at rest, default second-order test: negcurv %d, escapes %d", (int)r.negcurv, (int)r.escapes);
+    PetscCall(HylcMicroSetSaddleEscape(M, PETSC_FALSE, 0, PETSC_DEFAULT));
+    PetscCall(HylcMicroSolve(M, z0, &r));
+    HYLC_CHECK(r.negcurv == -1 && r.escapes == 0, "straight yarn, no second-order test: negcurv %d, escapes %d", (int)r.negcurv, (int)r.escapes);
+  }
+  PetscCall(HylcPeriodicGetConstants(P, &c));
+  PetscCall(HylcPeriodicGetArea(P, &area));
+  for (int k = 0; k < 2; k++) {
+    const PetscReal eps = k ? -0.3 : -0.05, z[6] = {eps, 0, 0, 0, 0, 0};
+    const PetscReal straight = 0.5 * c.ks * eps * eps * L / area;
+    epsc                     = PetscSqr(2 * PETSC_PI / L) * c.B / (c.ks * (1 + eps));
+    HYLC_CHECK(k ? -eps > 1.25 * epsc : -eps < 0.5 * epsc, "straight yarn: eps %g against the Euler strain %g: the test needs another eps", (double)eps, (double)epsc);
+    /* the test alone: the straight state, and its negative curvature past the Euler load */
+    PetscCall(HylcMicroSetSaddleEscape(M, PETSC_TRUE, 0, PETSC_DEFAULT));
+    PetscCall(HylcMicroSolve(M, z, &r));
+    HYLC_CHECK(r.status == HYLC_MICRO_CONVERGED && PetscAbsReal(r.psi - straight) <= 1e-8 * straight, "compressed yarn eps %g, test only: status %s, psi %.12g, straight %.12g", (double)eps, HylcMicroStatuses[r.status], (double)r.psi, (double)straight);
+    HYLC_CHECK(k ? r.negcurv > 0 : r.negcurv == 0, "compressed yarn eps %g (Euler strain %g), test only: %d negative eigenvalues", (double)eps, (double)epsc, (int)r.negcurv);
+    HYLC_CHECK(r.escapes == 0, "compressed yarn eps %g, test only: %d escapes", (double)eps, (int)r.escapes);
+    {
+      PetscInt nd;
+      PetscCall(DenseProjectedNegative(M, 1e-6, &nd));
+      HYLC_CHECK(nd == r.negcurv, "compressed yarn eps %g: the test counts %d negative eigenvalues, a dense eigensolver %d", (double)eps, (int)r.negcurv, (int)nd);
+    }
+    /* with escapes: a minimum, below the straight state past the load */
+    PetscCall(HylcMicroSetSaddleEscape(M, PETSC_TRUE, 5, PETSC_DEFAULT));
+    PetscCall(HylcMicroSolve(M, z, &r));
+    HYLC_CHECK(r.status == HYLC_MICRO_CONVERGED && r.negcurv == 0, "compressed yarn eps %g, escapes: status %s, %d negative eigenvalues at the end", (double)eps, HylcMicroStatuses[r.status], (int)r.negcurv);
+    if (k)
+      HYLC_CHECK(r.escapes >= 1 && r.psi < 0.95 * straight, "compressed yarn eps %g past the Euler load: %d escapes, psi %g, straight %g", (double)eps, (int)r.escapes, (double)r.psi, (double)straight);
+    else
+      HYLC_CHECK(r.escapes == 0 && PetscAbsReal(r.psi - straight) <= 1e-8 * straight, "compressed yarn eps %g below the Euler load: %d escapes, psi %.12g, straight %.12g", (double)eps, (int)r.escapes, (double)r.psi, (double)straight);
+    {
+      PetscInt         n;
+      const PetscReal *E;
+      PetscCall(HylcMicroGetEnergyHistory(M, &n, &E));
+      for (PetscInt i = 1; i < n; i++) HYLC_CHECK(E[i] < E[i - 1], "compressed yarn eps %g, escapes: energy increased at accepted iterate %d: %g -> %g", (double)eps, (int)i, (double)E[i - 1], (double)E[i]);
+    }
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, "saddle: eps %g (Euler %g): psi %g, straight %g (post-buckling estimate %g), %d escapes, %d iterations\n", (double)eps, (double)epsc, (double)r.psi, (double)straight, (double)(k ? straight * (2 * epsc / -eps - PetscSqr(epsc / eps)) : straight), (int)r.escapes, (int)r.iterations));
+  }
+  PetscCall(HylcMicroDestroy(&M));
+  PetscCall(HylcPatternDestroy(&p));
+  /* the count against a dense eigensolver on generated knits, cold, adaptive, test only: it is the inertia of
+     the factor of K plus the positive eigenvalues of the Schur complement S = B^T K^-1 B, minus m */
+  {
+    const char *const    types[2] = {HYLCPATTERNSTOCKINETTE, HYLCPATTERNRIB};
+    const PetscReal      zs[][6]  = {{0, 0, 0.1, 0, 0, 0}, {0, 0, 0.25, 0, 0, 0}, {0.2, 0, 0, 0, 0, 0}, {-0.3, 0, 0, 0, 0, 0}, {0, 0, -0.3, 0, 0, 0}, {0, 0.2, 0, 0, 0, 0}};
+    HylcPatternGenParams g;
+    PetscInt             saddles = 0;
+    for (int t = 0; t < 2; t++) {
+      PetscCall(HylcPatternGenParamsDefault(&g));
+      PetscCall(HylcPatternCreate(PETSC_COMM_SELF, &p));
+      PetscCall(HylcPatternGenerate(p, types[t], &g));
+      PetscCall(HylcMicroCreate(PETSC_COMM_SELF, &M));
+      PetscCall(HylcMicroSetPattern(M, p, &m));
+      PetscCall(HylcMicroSetRegularizationSchedule(M, HYLC_MICRO_ALPHA_ADAPTIVE, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
+      PetscCall(HylcMicroSetSaddleEscape(M, PETSC_TRUE, 0, PETSC_DEFAULT));
+      for (size_t k = 0; k < sizeof(zs) / sizeof(zs[0]); k++) {
+        PetscInt nd;
+        PetscCall(HylcMicroSolve(M, zs[k], &r));
+        if (r.status != HYLC_MICRO_CONVERGED) continue;
+        PetscCall(DenseProjectedNegative(M, 1e-6, &nd));
+        HYLC_CHECK(nd == r.negcurv, "%s, strain %d: the test counts %d negative eigenvalues, a dense eigensolver %d", types[t], (int)k, (int)r.negcurv, (int)nd);
+        saddles += nd > 0;
+      }
+      PetscCall(HylcMicroDestroy(&M));
+      PetscCall(HylcPatternDestroy(&p));
+    }
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, "saddle: the second-order test agrees with a dense eigensolver on 12 generated-knit samples, %d of them saddles\n", (int)saddles));
+  }
+  PetscCall(StraightYarn(16, &p));
+  PetscCall(HylcMicroCreate(PETSC_COMM_SELF, &M));
+  PetscCall(HylcMicroSetPattern(M, p, &m));
+  /* bad values */
+  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+  ierr = HylcMicroSetSaddleEscape(M, PETSC_TRUE, -1, PETSC_DEFAULT);
+  PetscCall(PetscPopErrorHandler());
+  HYLC_CHECK(ierr == PETSC_ERR_USER_INPUT, "HylcMicroSetSaddleEscape(-1 escapes): error %d, expected PETSC_ERR_USER_INPUT", (int)ierr);
+  PetscCall(PetscOptionsSetValue(NULL, "-micro_saddle_tol", "0"));
+  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+  ierr = HylcMicroSetFromOptions(M);
+  PetscCall(PetscPopErrorHandler());
+  PetscCall(PetscOptionsClearValue(NULL, "-micro_saddle_tol"));
+  HYLC_CHECK(ierr == PETSC_ERR_USER_INPUT, "-micro_saddle_tol 0: error %d, expected PETSC_ERR_USER_INPUT", (int)ierr);
+  PetscCall(HylcMicroDestroy(&M));
+  PetscCall(HylcPatternDestroy(&p));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* the lazy sub-objects: created on first use with the method's defaults (iteration cap 2000, solver type
    hylc); HylcMicroSetFromOptions needs no pattern and its options override the defaults (-micro_snes_max_it,
    -micro_factor_pc_factor_mat_solver_type, -periodic_margin); a new pattern keeps the tile, its options
@@ -670,6 +855,7 @@ int main(int argc, char **argv)
   PetscCall(TestShearSymmetry());
   PetscCall(TestMirrorTwill());
   PetscCall(TestAdaptive());
+  PetscCall(TestSaddle());
   PetscCall(PetscSNPrintf(dir, sizeof(dir), "%s/patterns/hylc2020", env ? env : "../shared/refdata"));
   PetscCall(PetscTestDirectory(dir, 'r', &have));
   if (have)

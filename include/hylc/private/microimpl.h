@@ -3,7 +3,8 @@
      src/micro/micro.c  the object: create/destroy, prefix, pattern, set-up, solve, results;
      src/micro/opts.c   the parameters: setters, SetFromOptions, View;
      src/micro/kkt.c    the KKT preconditioner (S22): a PCSHELL around PCCHOLESKY and its Schur complement;
-     src/micro/snes.c   the SNES callbacks: objective, residual, Jacobian, line search, convergence test. */
+     src/micro/snes.c   the SNES callbacks: objective, residual, Jacobian, line search, convergence test;
+     src/micro/saddle.c the second-order test of a converged state and the escape from saddle points. */
 #include <hylc/micro.h>
 #include <petsc/private/petscimpl.h>
 
@@ -21,6 +22,9 @@ typedef struct {
   PetscReal alphaMin, alphaMax; /* adaptive: the bounds of alpha^ */
   PetscReal stepClear;          /* step limit also <= stepClear x the clearance (0: off) */
   PetscReal alphaSwitch;        /* hybrid: adaptive once ||M g||_inf <= alphaSwitch ||M g_0||_inf */
+  PetscBool saddleTest;         /* second-order test of a converged state */
+  PetscInt  saddleMax;          /* escapes from saddle points per solve */
+  PetscReal saddleTol;          /* negative curvature below -saddleTol max|diag(M H M)| makes a saddle */
 } HylcMicroParams;
 
 struct _HylcMicroOps {
@@ -42,6 +46,7 @@ struct _p_HylcMicro {
   PetscReal      *yw, *gw; /* work: unscaled unknowns and gradient */
   PC              inner;   /* PCCHOLESKY of K (prefix <micro_>factor_; solver type hylc by default) */
   PetscBool       cholmod; /* the solver type is CHOLMOD (its not-positive-definite error is a failed factorization) */
+  PetscBool       inertia; /* the solver type counts negative pivots (MatGetInertia; hylc, petsc, mumps) */
   Mat             Bd, Zd;  /* dense n x m: the Schur right-hand sides M A^T and Z = K^-1 M A^T (on Bw, Z) */
   PetscReal      *Bw;
   /* KKT data */
@@ -69,6 +74,9 @@ struct _p_HylcMicro {
   PetscBool       factorFailed; /* the Newton matrix could not be factored after every alpha increase */
   PetscBool       inject;       /* this solve raises the injected error (HYLC_INJECT_ERROR) */
   PetscInt        injectAt;     /* the value of HYLC_INJECT_ERROR of this solve (for the message) */
+  PetscInt        itBase;       /* Newton iterations of this solve before the current SNESSolve (restarts after saddle escapes) */
+  PetscBool       restart;      /* the current SNESSolve continues the solve after a saddle escape */
+  PetscInt        escapes;      /* saddle escapes of this solve */
   PetscInt        nhist, caphist;
   PetscReal      *hist;
   PetscReal      *uinit;     /* HylcMicroSetInitialState(): the fluctuation u~ = y - y0 (twists included) of a state */
@@ -84,6 +92,8 @@ static inline const char *HylcMicroPrefix_Private(HylcMicro M)
 }
 
 /* kkt.c */
+PETSC_INTERN PetscErrorCode HylcMicroKKTFactor_Private(HylcMicro, PetscBool *);
+PETSC_INTERN PetscErrorCode HylcMicroKKTSolve_Private(HylcMicro, Vec, Vec);
 PETSC_INTERN PetscErrorCode HylcMicroSetKKT_Private(HylcMicro, PC);
 PETSC_INTERN PetscErrorCode HylcMicroSetUpKKT_Private(HylcMicro, PC);
 PETSC_INTERN PetscErrorCode HylcMicroResizeKKT_Private(HylcMicro, PetscInt);
@@ -95,3 +105,7 @@ PETSC_INTERN PetscErrorCode HylcMicroToY_Private(HylcMicro, Vec, PetscReal[]);
 PETSC_INTERN PetscReal      HylcMicroPaperAlphaHat_Private(HylcMicro, PetscInt);
 PETSC_INTERN PetscErrorCode HylcMicroSafeEnergy_Private(HylcMicro, Vec, PetscReal *, PetscReal[4]);
 PETSC_INTERN PetscErrorCode HylcMicroProjectedGradientNorm_Private(HylcMicro, const PetscReal[], PetscReal *);
+PETSC_INTERN PetscErrorCode HylcMicroStepLimit_Private(HylcMicro, Vec, PetscReal *);
+PETSC_INTERN PetscErrorCode HylcMicroPushEnergy_Private(HylcMicro, PetscReal);
+/* saddle.c */
+PETSC_INTERN PetscErrorCode HylcMicroSaddle_Private(HylcMicro, PetscBool, PetscInt *, PetscBool *);
