@@ -387,7 +387,7 @@ PetscErrorCode HylcMicroSetFromOptions(HylcMicro M)
   PetscCall(PetscOptionsReal("-ctol", "Convergence: constraint residual |A y - dL| < ctol r", "HylcMicroSetTolerances", p.ctol, &p.ctol, NULL));
   PetscCall(PetscOptionsReal("-max_time", "Wall-time cap per solve (s); status time_cap", "HylcMicroSetTolerances", p.maxTime, &p.maxTime, NULL));
   PetscCall(PetscOptionsBool("-factor_indefinite", "Accept the factorization of an indefinite Newton matrix if the step descends with positive curvature; false: alpha x 10 at any negative eigenvalue", "HylcMicroSetIndefinite", p.indefinite, &p.indefinite, NULL));
-  PetscCall(PetscOptionsBool("-saddle_test", "Second-order test of converged states: count the negative eigenvalues of the Hessian on the constraints' tangent space (implied by -saddle_escapes > 0)", "HylcMicroSetSaddleEscape", p.saddleTest, &p.saddleTest, NULL));
+  PetscCall(PetscOptionsBool("-saddle_test", "Second-order test of converged states: count the negative eigenvalues of the Hessian on the constraints' tangent space (implied by -micro_saddle_escapes > 0)", "HylcMicroSetSaddleEscape", p.saddleTest, &p.saddleTest, NULL));
   PetscCall(PetscOptionsInt("-saddle_escapes", "Second-order test: escapes from saddle points (negative curvature on the constraints' tangent space) along negative curvature, per solve", "HylcMicroSetSaddleEscape", p.saddleMax, &p.saddleMax, NULL));
   PetscCall(PetscOptionsReal("-saddle_tol", "Second-order test: curvature below -saddle_tol x max|diag(M H M)| is negative", "HylcMicroSetSaddleEscape", p.saddleTol, &p.saddleTol, NULL));
   PetscCall(PetscOptionsName("-view", "Print the solver at set-up", "HylcMicroView", &flg));
