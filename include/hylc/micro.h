@@ -12,7 +12,9 @@
    - line search: the step limit of S2.2, then backtracking by 0.1 until the energy strictly decreases;
      reference frames are transported after each accepted step (trial states are evaluated against the
      stored frames, which the kernels transport internally, so nothing has to be restored);
-   - convergence: |z| < rtol |z0| for the projected gradient z (S23-S25) and |A y - dL| < ctol r.
+   - convergence: |z| < rtol |z0| for the projected gradient z (S23-S25) and |A y - dL| < ctol r; then the
+     second-order test (HylcMicroSetSaddleEscape(), on by default): a saddle point is left along its
+     direction of most negative curvature and the iteration resumes.
    A sample that does not converge is data, not an error: see HylcMicroResult.status. An error inside the
    solve is an error (the sample has no result): only a failed factorization (the regularization's job)
    and a degenerate or non-finite trial state (energy +inf) are outcomes of the method. */

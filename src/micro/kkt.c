@@ -290,11 +290,6 @@ PetscErrorCode HylcMicroSetUpKKT_Private(HylcMicro M, PC pc)
   PetscFunctionBegin;
   PetscCall(PCFactorGetMatSolverType(M->inner, &type));
   PetscCall(PetscStrcmp(type, MATSOLVERCHOLMOD, &M->cholmod));
-  {
-    const char *const withInertia[] = {MATSOLVERHYLC, MATSOLVERPETSC, MATSOLVERMUMPS};
-    M->inertia                      = PETSC_FALSE;
-    for (int k = 0; k < 3 && !M->inertia && type; k++) PetscCall(PetscStrcmp(type, withInertia[k], &M->inertia));
-  }
   PetscCall(PetscSNPrintf(name, sizeof(name), "hylc KKT (S22): Schur complement around PCCHOLESKY, solver type %s (-%sfactor_pc_factor_mat_solver_type)", type ? type : "default", ((PetscObject)M)->prefix ? ((PetscObject)M)->prefix : ""));
   PetscCall(PCShellSetName(pc, name));
   PetscFunctionReturn(PETSC_SUCCESS);

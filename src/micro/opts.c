@@ -296,8 +296,9 @@ PetscErrorCode HylcMicroSetIndefinite(HylcMicro M, PetscBool flg)
 - -micro_saddle_tol <1e-6> - tol
 
   Notes:
-  The test needs a solver type that counts negative pivots (hylc, petsc, mumps); with cholmod it is skipped
-  (negcurv -1). The test costs one factorization per solve; the Newton iterations after the escapes cost
+  The count needs a solver type that counts negative pivots (hylc, petsc, mumps); cholmod, which fails on an
+  indefinite K, proves a minimum (negcurv 0) when K is positive definite and otherwise leaves the count
+  unknown (negcurv -1, no escape). The test costs one factorization per solve; the Newton iterations after the escapes cost
   more (about +38 % on the stockinette's thinned plan with the paper's schedule, where 31 % of the cold
   solves ended at saddle points). Turn both off with -micro_saddle_escapes 0 -micro_saddle_test false.
   docs/method.md, "Saddle points".

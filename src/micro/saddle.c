@@ -79,8 +79,9 @@ static PetscErrorCode NegativeCurvature(HylcMicro M, PetscReal sigma, Vec v, Pet
 }
 
 /* the second-order test at the converged iterate M->X: *neg negative eigenvalues of M H M below
-   -tol max|diag| on the tangent space (-1: not known, for a solver type without inertia or a failed
-   factorization); with escape, a saddle is left by a step along negative curvature (*escaped) */
+   -tol max|diag| on the tangent space (-1: not known: a failed factorization, which is how a solver type
+   without inertia (cholmod) reports an indefinite K); with escape, a saddle is left by a step along
+   negative curvature (*escaped) */
 PetscErrorCode HylcMicroSaddle_Private(HylcMicro M, PetscBool escape, PetscInt *neg, PetscBool *escaped)
 {
   const PetscBool adapting = M->adapting;
@@ -92,7 +93,6 @@ PetscErrorCode HylcMicroSaddle_Private(HylcMicro M, PetscBool escape, PetscInt *
   PetscFunctionBegin;
   *neg     = -1;
   *escaped = PETSC_FALSE;
-  if (!M->inertia) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PetscLogEventBegin(HYLC_MicroSaddle, M, 0, 0, 0));
   PetscCall(VecDuplicate(M->X, &v));
   /* H and g at X (the converged iterate's are in K and gw unless the Jacobian was formed since) */

@@ -94,7 +94,8 @@ static PetscErrorCode FormJacobian(SNES snes, Vec X, Mat J, Mat Jpre, void *ctx)
   {
     const PetscReal apap  = HylcMicroPaperAlphaHat_Private(M, it);
     const PetscInt  sched = M->par.alphaSched;
-    if (it == 0) { /* the start of the solve (a restart after a saddle escape keeps the schedule's state) */
+    if (it == 0) { /* the start of the solve; a restart after a saddle escape continues the count (itBase), so
+                      it keeps the schedule's state unless the saddle was the initial guess itself */
       M->reverted = PETSC_FALSE;
       M->gmax0    = gmax;
       M->ahat     = M->par.alphaStart;

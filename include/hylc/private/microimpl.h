@@ -46,7 +46,6 @@ struct _p_HylcMicro {
   PetscReal      *yw, *gw; /* work: unscaled unknowns and gradient */
   PC              inner;   /* PCCHOLESKY of K (prefix <micro_>factor_; solver type hylc by default) */
   PetscBool       cholmod; /* the solver type is CHOLMOD (its not-positive-definite error is a failed factorization) */
-  PetscBool       inertia; /* the solver type counts negative pivots (MatGetInertia; hylc, petsc, mumps) */
   Mat             Bd, Zd;  /* dense n x m: the Schur right-hand sides M A^T and Z = K^-1 M A^T (on Bw, Z) */
   PetscReal      *Bw;
   /* KKT data */
