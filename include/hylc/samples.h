@@ -18,6 +18,8 @@ typedef struct {
   double cresidual; /* |A y - dL| / r */
   double time;      /* wall seconds (both solves of a sample retried cold) */
   int    start;     /* HylcSampleStart: 0 cold, 1 continued, 2 continued, did not converge, retried cold */
+  int    negcurv;   /* negative eigenvalues of the projected Hessian at the final state (HylcMicroResult); -1 not tested */
+  int    escapes;   /* saddle escapes of the kept solve (HylcMicroResult) */
 } HylcSampleRecord;
 
 /* how a sample's solve started (/samples/start) */

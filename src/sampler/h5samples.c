@@ -33,15 +33,17 @@ static PetscErrorCode DatasetInt(hid_t loc, const char name[], PetscInt n, Petsc
 static PetscErrorCode WriteSamplesGroup(hid_t file, long N, const HylcSampleRecord recs[], const unsigned char done[])
 {
   double *strain, *psi, *parts, *res, *cres, *t;
-  int    *term, *status, *its, *retries, *start;
+  int    *term, *status, *its, *retries, *start, *negcurv, *escapes;
   hid_t   g;
   int     nstat = HylcSamplesNumStatuses_();
 
   PetscFunctionBegin;
   PetscCall(PetscMalloc6(6 * N + 1, &strain, N + 1, &psi, 4 * N + 1, &parts, N + 1, &res, N + 1, &cres, N + 1, &t));
-  PetscCall(PetscMalloc5(N + 1, &term, N + 1, &status, N + 1, &its, N + 1, &retries, N + 1, &start));
+  PetscCall(PetscMalloc7(N + 1, &term, N + 1, &status, N + 1, &its, N + 1, &retries, N + 1, &start, N + 1, &negcurv, N + 1, &escapes));
   for (long k = 0; k < N; k++) {
-    start[k] = done && done[k] ? recs[k].start : -1;
+    start[k]   = done && done[k] ? recs[k].start : -1;
+    negcurv[k] = done && done[k] ? recs[k].negcurv : -1;
+    escapes[k] = done && done[k] ? recs[k].escapes : -1;
     if (done && done[k]) {
       const HylcSampleRecord *r = &recs[k];
       for (int i = 0; i < 6; i++) strain[6 * k + i] = r->z[i];
@@ -76,13 +78,15 @@ static PetscErrorCode WriteSamplesGroup(hid_t file, long N, const HylcSampleReco
   HylcCallHDF5(HylcH5WriteDataset(g, "iterations", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, its, "1", "Newton iterations; -1 not computed"));
   HylcCallHDF5(HylcH5WriteDataset(g, "retries", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, retries, "1", "regularization increases (alpha x 10 for an indefinite K); -1 not computed"));
   HylcCallHDF5(HylcH5WriteDataset(g, "start", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, start, "1", "how the solve started (-sampler_start): 0 cold (u~ = 0), 1 continued from the equilibrium of the sample before it on its half-line, 2 continued, did not converge, retried cold (the better of the two kept; iterations and time are the sums of both); -1 not computed"));
+  HylcCallHDF5(HylcH5WriteDataset(g, "negcurv", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, negcurv, "1", "second-order test of the final state (-micro_saddle_test): the number of negative eigenvalues of the Hessian on the tangent space of the constraints, 0 a local minimum, > 0 a saddle point (its escapes did not reach a minimum); -1 not tested (test off, solve not converged, or no inertia from the factorization) or not computed"));
+  HylcCallHDF5(HylcH5WriteDataset(g, "escapes", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, escapes, "1", "steps along negative curvature that left a saddle point during the kept solve (-micro_saddle_escapes); -1 not computed"));
   HylcCallHDF5(HylcH5WriteDataset(g, "energy_parts", 2, (hsize_t[]){(hsize_t)N, 4}, H5T_NATIVE_DOUBLE, parts, "J", "energy of the tile by kind: columns stretch, bend, twist, contact"));
   HylcCallHDF5(HylcH5WriteDataset(g, "residual", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_DOUBLE, res, "1", "final projected-gradient norm relative to the initial one, |z| / |z0|"));
   HylcCallHDF5(HylcH5WriteDataset(g, "constraint_residual", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_DOUBLE, cres, "1 (units of the yarn radius)", "final periodicity-constraint residual |A y - dL| / r"));
   HylcCallHDF5(HylcH5WriteDataset(g, "time", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_DOUBLE, t, "s", "wall time of the sample's solve"));
   HylcCallHDF5(H5Gclose(g));
   PetscCall(PetscFree6(strain, psi, parts, res, cres, t));
-  PetscCall(PetscFree5(term, status, its, retries, start));
+  PetscCall(PetscFree7(term, status, its, retries, start, negcurv, escapes));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -352,7 +356,7 @@ static PetscErrorCode ReadFile(hid_t file, long *nsamples, HylcSampleRecord **re
   hsize_t           dims[2];
   long              N;
   double           *strain, *psi, *parts, *res, *cres, *tm;
-  int              *term, *status, *its, *retries, *start;
+  int              *term, *status, *its, *retries, *start, *negcurv, *escapes;
   HylcSampleRecord *recs;
   unsigned char    *done;
 
@@ -381,6 +385,17 @@ static PetscErrorCode ReadFile(hid_t file, long *nsamples, HylcSampleRecord **re
     HylcCallHDF5((herr_t)(has < 0 ? -1 : 0));
     if (has > 0) PetscCall(H5ReadDataset(file, "samples/start", H5T_NATIVE_INT, N, 0, start));
   }
+  /* files before /samples/negcurv and /samples/escapes: not tested (-1), no escape (0) */
+  PetscCall(PetscCalloc2(N + 1, &negcurv, N + 1, &escapes));
+  for (long k = 0; k < N; k++) negcurv[k] = -1;
+  {
+    htri_t has = H5Lexists(file, "samples/negcurv", H5P_DEFAULT), hase;
+    HylcCallHDF5((herr_t)(has < 0 ? -1 : 0));
+    if (has > 0) PetscCall(H5ReadDataset(file, "samples/negcurv", H5T_NATIVE_INT, N, 0, negcurv));
+    hase = H5Lexists(file, "samples/escapes", H5P_DEFAULT);
+    HylcCallHDF5((herr_t)(hase < 0 ? -1 : 0));
+    if (hase > 0) PetscCall(H5ReadDataset(file, "samples/escapes", H5T_NATIVE_INT, N, 0, escapes));
+  }
   PetscCall(PetscCalloc1(N + 1, &recs));
   PetscCall(PetscCalloc1(N + 1, &done));
   for (long k = 0; k < N; k++) {
@@ -397,11 +412,14 @@ static PetscErrorCode ReadFile(hid_t file, long *nsamples, HylcSampleRecord **re
     r->iterations = its[k];
     r->retries    = retries[k];
     r->start      = start[k] >= 0 ? start[k] : 0;
+    r->negcurv    = negcurv[k] >= 0 ? negcurv[k] : -1;
+    r->escapes    = escapes[k] >= 0 ? escapes[k] : 0;
     done[k]       = status[k] >= 0;
   }
   PetscCall(PetscFree6(strain, psi, parts, res, cres, tm));
   PetscCall(PetscFree4(term, status, its, retries));
   PetscCall(PetscFree(start));
+  PetscCall(PetscFree2(negcurv, escapes));
   *nsamples = N;
   *recs_    = recs;
   *done_    = done;

@@ -22,8 +22,8 @@
 
 #define JOURNAL_MAGIC     "HYLCJNL1"
 #define JOURNAL_BOM       0x01020304u
-#define JOURNAL_VERSION   3u  /* 1: a short fingerprint (hylc before the complete identity); 2: records without the start */
-#define JOURNAL_PAYLOAD   140 /* packed record without checksum */
+#define JOURNAL_VERSION   4u  /* 1: a short fingerprint (hylc before the complete identity); 2: records without the start; 3: without negcurv and escapes */
+#define JOURNAL_PAYLOAD   148 /* packed record without checksum */
 #define JOURNAL_RECSIZE   (JOURNAL_PAYLOAD + 8)
 #define JOURNAL_FIXEDHEAD 64 /* header bytes before the identity text: 32 fixed + the SHA-256 of the identity */
 #define JOURNAL_MAXID     (1 << 24)
@@ -50,7 +50,8 @@ static uint64_t Fnv1a64(const unsigned char *p, size_t n)
   return h;
 }
 
-/* the record layout: int64 index, int32 term, status, iterations, retries, 14 doubles, uint64 checksum */
+/* the record layout: int64 index, int32 term, status, iterations, retries, 14 doubles, int32 start, negcurv,
+   escapes, uint64 checksum */
 static void PackRecord(const HylcSampleRecord *r, unsigned char b[JOURNAL_RECSIZE])
 {
   int64_t  idx   = r->index;
@@ -68,8 +69,8 @@ static void PackRecord(const HylcSampleRecord *r, unsigned char b[JOURNAL_RECSIZ
   memcpy(b + 8, iv, 16);
   memcpy(b + 24, dv, 112);
   {
-    int32_t st = r->start;
-    memcpy(b + 136, &st, 4);
+    int32_t tail[3] = {r->start, r->negcurv, r->escapes};
+    memcpy(b + 136, tail, 12);
   }
   h = Fnv1a64(b, JOURNAL_PAYLOAD);
   memcpy(b + JOURNAL_PAYLOAD, &h, 8);
@@ -101,10 +102,12 @@ static int UnpackRecord(const unsigned char b[JOURNAL_RECSIZE], long nsamples, H
   r->cresidual = dv[12];
   r->time      = dv[13];
   {
-    int32_t st;
-    memcpy(&st, b + 136, 4);
-    if (st < 0 || st > 2) return -1;
-    r->start = st;
+    int32_t tail[3];
+    memcpy(tail, b + 136, 12);
+    if (tail[0] < 0 || tail[0] > 2 || tail[1] < -1 || tail[2] < 0) return -1;
+    r->start   = tail[0];
+    r->negcurv = tail[1];
+    r->escapes = tail[2];
   }
   return 0;
 }

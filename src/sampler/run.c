@@ -149,6 +149,8 @@ static void FillRecord(long k, int term, const double z[6], const HylcMicroResul
   rec->cresidual = r->cresidual;
   rec->time      = r->time;
   rec->start     = HYLC_SAMPLE_START_COLD;
+  rec->negcurv   = (int)r->negcurv;
+  rec->escapes   = (int)r->escapes;
 }
 
 /* sample k; from the state prev (a state of the tile at the strain of the last solve) if not NULL, retried
@@ -421,6 +423,17 @@ PetscErrorCode HylcSamplerRun(HylcSampler S)
     PetscCall(PetscFree(opts));
     PetscCall(ierr);
     PetscCall(PetscPrintf(PETSC_COMM_SELF, "[sampler] wrote %s: %ld samples, %ld not converged\n", S->output, (long)nd, pg.failed));
+    { /* the second-order test over every sample of the file (docs/method.md, "Saddle points") */
+      long nesc = 0, nsad = 0, nunk = 0, nconv = 0;
+      for (long k = 0; k < S->nsamples; k++) {
+        if (!jd[k] || all[k].status != HYLC_MICRO_CONVERGED) continue;
+        nconv++;
+        nesc += all[k].escapes > 0;
+        nsad += all[k].negcurv > 0;
+        nunk += all[k].negcurv < 0;
+      }
+      PetscCall(PetscPrintf(PETSC_COMM_SELF, "[sampler] of %ld converged samples: %ld left a saddle point (/samples/escapes), %ld ended at one (/samples/negcurv > 0), %ld not tested\n", nconv, nesc, nsad, nunk));
+    }
     if (S->rawdir[0]) PetscCall(ExportRaw(S, all, jd));
     PetscCall(HylcJournalClose(&S->journal));
   }

@@ -7,8 +7,9 @@ cd "$HYLC_TMP"
 tool=$HYLC_BIN/hylc-sample
 die() { echo "FAIL: $*"; exit 1; }
 command -v h5dump >/dev/null || { echo "h5dump (hdf5-tools) not installed"; exit 77; }
-data() { h5dump -d /samples/psi -d /samples/strain -d /samples/status -d /samples/iterations -d /samples/start "$1" | grep -v -e HDF5 -e '^}' ; }
-starts() { h5dump -y -w 0 -d /samples/start "$1" | sed -n '/^   DATA {/{n;p;q}' | tr -d ' ' | tr ',' '\n' ; }
+dset() { h5dump -y -w 0 -d /samples/$1 "$2" | sed -n '/^   DATA {/{n;p;q}' | tr -d ' ' | tr ',' '\n' ; }
+data() { h5dump -d /samples/psi -d /samples/strain -d /samples/status -d /samples/iterations -d /samples/start -d /samples/negcurv -d /samples/escapes "$1" | grep -v -e HDF5 -e '^}' ; }
+starts() { dset start "$1"; }
 common=(-pattern_type plain -yarn_kc 50 -sampler_terms zero,sx,sa,sx-sa -sampler_n1 7 -sampler_n2 4 -sampler_progress 0.5 -sampler_start continue)
 # 1 + 7 + 7 + 16 = 31 samples; units: 1 + 2 + 2 + 8 half-lines = 13 cold starts
 $tool "${common[@]}" -sampler_output one.h5 -sampler_view >one.txt 2>&1 || { cat one.txt; die "1-rank run failed"; }
@@ -23,6 +24,11 @@ n0=$(starts one.h5 | grep -c '^0$'); n1=$(starts one.h5 | grep -c '^1$'); n2=$(s
 [ "$n0" = 13 ] || die "expected 13 cold starts (one per unit), got $n0 ($s)"
 [ $((n1 + n2)) = 18 ] || die "expected 18 continued samples, got $n1 + $n2 retried ($s)"
 echo "starts: $n0 cold, $n1 continued, $n2 retried cold"
+# the second-order test (on by default) is recorded: every converged sample has a known count (>= 0), and
+# the summary counts the saddles
+paste <(dset status one.h5) <(dset negcurv one.h5) <(dset escapes one.h5) | awk '$1 == 0 && ($2 < 0 || $3 < 0) { bad++ } END { exit bad > 0 }' ||
+  die "a converged sample without a second-order test or an escape count in /samples/negcurv, /samples/escapes"
+grep -q 'converged samples: .* left a saddle point' one.txt || { cat one.txt; die "the summary does not count saddles"; }
 # cold runs write start 0 everywhere; the start is part of the identity (a different digest)
 $tool "${common[@]}" -sampler_start cold -sampler_output cold.h5 >cold.txt 2>&1 || { cat cold.txt; die "cold run failed"; }
 [ "$(starts cold.h5 | sort -u)" = 0 ] || die "a cold run has a start other than 0"
@@ -49,7 +55,7 @@ for np in 1 2; do
       if [ -f $k.journal ]; then
         s=$(stat -c %s $k.journal)
         [ -z "$s0" ] && [ "$s" -gt 0 ] && s0=$s
-        [ -n "$s0" ] && [ "$s" -ge $((s0 + 148)) ] && break
+        [ -n "$s0" ] && [ "$s" -ge $((s0 + 156)) ] && break
       fi
       sleep 0.005
     done
