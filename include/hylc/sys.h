@@ -37,6 +37,8 @@ PETSC_EXTERN PetscLogEvent HYLC_CalibrateSetUp, HYLC_CalibrateSolve, HYLC_Calibr
 PETSC_EXTERN PetscLogEvent HYLC_MetisND;
 /* METIS_NodeND of a CSR graph (symmetric, no self loops): perm[new] = old (src/sys/metis.c). */
 PETSC_EXTERN PetscErrorCode HylcMetisNodeND(PetscInt n, const PetscInt xadj[], const PetscInt adj[], PetscInt perm[]);
+/* Reads and checks the -hylc_metis_* options (for -help and the check of unused options; collective). */
+PETSC_EXTERN PetscErrorCode HylcMetisSetFromOptions(MPI_Comm);
 
 /* Registers hylc's classes and log events (idempotent; called by every XCreate). Not collective. */
 PETSC_EXTERN PetscErrorCode HylcInitializePackage(void);

@@ -417,6 +417,7 @@ PetscErrorCode HylcMicroSetFromOptions(HylcMicro M)
   PetscCall(HylcPeriodicSetFromOptions(P));
   PetscCall(HylcMicroGetFactorPC(M, &inner));
   PetscCall(PCSetFromOptions(inner));
+  PetscCall(HylcMetisSetFromOptions(PetscObjectComm((PetscObject)M))); /* the ordering of its factorizations */
   PetscCall(HylcMicroGetSNES(M, &snes));
   PetscCall(SNESSetFromOptions(snes));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -3,7 +3,7 @@
    HylcInitializePackage() because Debian's PETSc is built without METIS. Usable wherever PETSc takes an
    ordering: MatGetOrdering(), -pc_factor_mat_ordering_type metisnd, PCFactorSetMatOrderingType().
 
-   Options (global, no prefix; read at each call):
+   Options (global, no prefix; read at each call, and checked and listed by -help in HylcMetisSetFromOptions()):
      -hylc_metis_seed <int>     METIS random seed (default: METIS's own, deterministic)
      -hylc_metis_nseps <int>    separators computed at each bisection, the smallest is kept (default 1)
      -hylc_metis_ufactor <int>  allowed imbalance of the bisections, in 1/1000 (default: METIS's, 200)
@@ -49,6 +49,32 @@ static PetscErrorCode MetisOptions(idx_t opt[METIS_NOPTIONS])
   }
   PetscCall(PetscOptionsGetBool(NULL, NULL, "-hylc_metis_compress", &b, &set));
   if (set) opt[METIS_OPTION_COMPRESS] = b ? 1 : 0;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcMetisSetFromOptions - Reads and checks the options of the "metisnd" ordering (-hylc_metis_seed,
+  -hylc_metis_nseps, -hylc_metis_ufactor, -hylc_metis_compress; no prefix), so that -help lists them and a
+  program that refuses unused options before its work (HylcCheckOptionsUsed()) accepts them: they are
+  otherwise read only at the first ordering. Called by HylcMicroSetFromOptions(). Collective.
+
+  Input Parameter:
+. comm - the communicator of the options' help
+@*/
+PetscErrorCode HylcMetisSetFromOptions(MPI_Comm comm)
+{
+  PetscInt  seed = -1, nseps = 1, ufactor = 200;
+  PetscBool b = PETSC_TRUE, set;
+
+  PetscFunctionBegin;
+  PetscOptionsBegin(comm, NULL, "METIS nested-dissection ordering (metisnd; the factorization of the Newton matrix)", "Mat");
+  PetscCall(PetscOptionsInt("-hylc_metis_seed", "METIS random seed (-1: METIS's own, deterministic)", "HylcMetisNodeND", seed, &seed, NULL));
+  PetscCall(PetscOptionsInt("-hylc_metis_nseps", "Separators computed at each bisection, the smallest kept", "HylcMetisNodeND", nseps, &nseps, &set));
+  PetscCheck(!set || nseps >= 1, comm, PETSC_ERR_USER_INPUT, "option -hylc_metis_nseps: %" PetscInt_FMT " is not >= 1", nseps);
+  PetscCall(PetscOptionsInt("-hylc_metis_ufactor", "Allowed imbalance of the bisections, in 1/1000 (METIS's default)", "HylcMetisNodeND", ufactor, &ufactor, &set));
+  PetscCheck(!set || ufactor >= 1, comm, PETSC_ERR_USER_INPUT, "option -hylc_metis_ufactor: %" PetscInt_FMT " is not >= 1", ufactor);
+  PetscCall(PetscOptionsBool("-hylc_metis_compress", "Compress vertices with identical adjacency", "HylcMetisNodeND", b, &b, NULL));
+  PetscOptionsEnd();
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
