@@ -67,7 +67,8 @@ $MPIEXEC -n 2 $tool "${long[@]}" -sampler_batch 7 -sampler_output batch7.h5 >b7.
 [ "$(h5dump -a /provenance/digest ref.h5 | grep '(0)')" = "$(h5dump -a /provenance/digest batch7.h5 | grep '(0)')" ] || die "-sampler_batch changed the digest"
 
 # samples that do not converge are recorded with their status, never dropped
-$tool "${common[@]}" -sampler_reference none -sampler_terms sx -micro_snes_max_it 1 -sampler_output cap.h5 >cap.txt 2>&1 || { cat cap.txt; die "capped run failed"; }
+# (with an option of the ordering, read at set-up: accepted, not refused as unknown)
+$tool "${common[@]}" -sampler_reference none -sampler_terms sx -micro_snes_max_it 1 -hylc_metis_nseps 2 -sampler_output cap.h5 >cap.txt 2>&1 || { cat cap.txt; die "capped run failed"; }
 grep -q 'wrote cap.h5: 5 samples' cap.txt || { cat cap.txt; die "capped samples dropped"; }
 h5dump -d /samples/status cap.h5 | grep -q '1, 1\|(0): 1' || { h5dump -d /samples/status cap.h5; die "iteration_cap status not recorded"; }
 
@@ -87,10 +88,11 @@ refuse "Cannot open missing.pyp \(-pattern_file\)" -pattern_type file -pattern_f
 refuse "Cannot write /nonexistent-dir/out.h5 \(-sampler_output\): directory /nonexistent-dir does not exist" -sampler_output /nonexistent-dir/out.h5
 refuse "Unknown option\\(s\\): -sampler_outptu" -sampler_outptu x.h5
 refuse "sampler_batch must be at least 1" -sampler_batch 0
+refuse "option -hylc_metis_nseps: 0 is not >= 1" -hylc_metis_nseps 0
 # -help documents every option of the job and does no work
 rm -f samples.h5 samples.h5.journal
 $tool -pattern_type plain -help >help.txt 2>&1 || { tail help.txt; die "-help failed"; }
-for opt in -sampler_output -sampler_resume -sampler_overwrite -sampler_start -sampler_terms -sampler_n1 -sampler_n2 -sampler_family -sampler_range_sx -sampler_batch -sampler_progress -sampler_export_raw -sampler_reference -reference_output -reference_etol -micro_rtol -micro_snes_max_it -periodic_slide -yarn_kc -pattern_file; do
+for opt in -sampler_output -sampler_resume -sampler_overwrite -sampler_start -sampler_terms -sampler_n1 -sampler_n2 -sampler_family -sampler_range_sx -sampler_batch -sampler_progress -sampler_export_raw -sampler_reference -reference_output -reference_etol -micro_rtol -micro_snes_max_it -micro_saddle_test -hylc_metis_nseps -periodic_slide -yarn_kc -pattern_file; do
   grep -q -- "$opt" help.txt || die "-help does not document $opt"
 done
 [ ! -e samples.h5.journal ] || die "-help started the job"
