@@ -17,6 +17,7 @@
    through the relative positions of R_s's rows in its row list. */
 #include <hylc/chol.h>
 #include <hylc/private/clones.h>
+#include <string.h>
 
 struct _n_HylcChol {
   HylcCholOrdering ordering;
@@ -272,49 +273,99 @@ static PetscErrorCode CholSymbolic(HylcChol C, Mat A, PetscInt bs)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* c (4 x 4, row-major) = sum_k a[k ld + i] b[k ld + j] over k < W: one block of L_r L_c^T; with signs sg,
-   sum_k a[k ld + i] sg[k] b[k ld + j] (L_r S L_c^T) */
-static inline void BlockProduct4(PetscInt W, PetscInt ld, const PetscReal *a, const PetscReal *b, const PetscReal *sg, PetscReal c[16])
-{
-  PetscReal c00 = 0, c01 = 0, c02 = 0, c03 = 0, c10 = 0, c11 = 0, c12 = 0, c13 = 0;
-  PetscReal c20 = 0, c21 = 0, c22 = 0, c23 = 0, c30 = 0, c31 = 0, c32 = 0, c33 = 0;
-  for (PetscInt k = 0; k < W; k++, a += ld, b += ld) {
-    const PetscReal s  = sg ? sg[k] : 1.0;
-    const PetscReal a0 = a[0], a1 = a[1], a2 = a[2], a3 = a[3], b0 = s * b[0], b1 = s * b[1], b2 = s * b[2], b3 = s * b[3];
-    c00 += a0 * b0, c01 += a0 * b1, c02 += a0 * b2, c03 += a0 * b3;
-    c10 += a1 * b0, c11 += a1 * b1, c12 += a1 * b2, c13 += a1 * b3;
-    c20 += a2 * b0, c21 += a2 * b1, c22 += a2 * b2, c23 += a2 * b3;
-    c30 += a3 * b0, c31 += a3 * b1, c32 += a3 * b2, c33 += a3 * b3;
-  }
-  c[0] = c00, c[1] = c01, c[2] = c02, c[3] = c03, c[4] = c10, c[5] = c11, c[6] = c12, c[7] = c13;
-  c[8] = c20, c[9] = c21, c[10] = c22, c[11] = c23, c[12] = c30, c[13] = c31, c[14] = c32, c[15] = c33;
-}
+#if defined(__GNUC__)
+/* four doubles as one value (GCC and Clang vector extensions): an AVX register in the x86-64-v3 clone, two
+   SSE2 registers otherwise; loads and stores through memcpy, so no alignment is assumed */
+typedef PetscReal V4 __attribute__((vector_size(4 * sizeof(PetscReal))));
+#  define V4LOAD(v, p)  memcpy(&(v), (p), sizeof(V4))
+#  define V4STORE(p, v) memcpy((p), &(v), sizeof(V4))
+#  define V4SUBFROM(p, c) \
+    do {                  \
+      V4 t_;              \
+      V4LOAD(t_, p);      \
+      t_ -= (c);          \
+      V4STORE(p, t_);     \
+    } while (0)
 
-static inline void BlockProduct(PetscInt bs, PetscInt W, PetscInt ld, const PetscReal *a, const PetscReal *b, const PetscReal *sg, PetscReal c[])
+/* the bs = 4 kernel: for each of nr4 (1 or 2) row blocks a + 4 i (rows of the panel, contiguous in its
+   columns), tgt[i] (4 x 4, column-major with leading dimension ldt) -= sum_k a[k ld + 4 i + (0..3)]
+   s_k b[k ld + j] over the W columns k (s_k = sg[k], or 1 without sg). The accumulators are the target's
+   columns, so each product is a vector times a broadcast scalar (an FMA with FP contraction) and the target
+   is updated with whole-column vector operations; two row blocks share the broadcasts of b. */
+static inline __attribute__((always_inline)) void Update4(PetscInt nr4, PetscInt W, PetscInt ld, const PetscReal *a, const PetscReal *b, const PetscReal *sg, PetscReal *tgt0, PetscReal *tgt1, PetscInt ldt)
 {
-  for (PetscInt i = 0; i < bs * bs; i++) c[i] = 0;
+  V4 c00 = {0}, c01 = {0}, c02 = {0}, c03 = {0}, c10 = {0}, c11 = {0}, c12 = {0}, c13 = {0};
+  for (PetscInt k = 0; k < W; k++, a += ld, b += ld) {
+    const PetscReal s = sg ? sg[k] : 1.0, s0 = s * b[0], s1 = s * b[1], s2 = s * b[2], s3 = s * b[3];
+    const V4        b0 = {s0, s0, s0, s0}, b1 = {s1, s1, s1, s1}, b2 = {s2, s2, s2, s2}, b3 = {s3, s3, s3, s3};
+    V4              a0;
+    V4LOAD(a0, a);
+    c00 += a0 * b0, c01 += a0 * b1, c02 += a0 * b2, c03 += a0 * b3;
+    if (nr4 == 2) {
+      V4 a1;
+      V4LOAD(a1, a + 4);
+      c10 += a1 * b0, c11 += a1 * b1, c12 += a1 * b2, c13 += a1 * b3;
+    }
+  }
+  V4SUBFROM(tgt0, c00);
+  V4SUBFROM(tgt0 + ldt, c01);
+  V4SUBFROM(tgt0 + 2 * ldt, c02);
+  V4SUBFROM(tgt0 + 3 * ldt, c03);
+  if (nr4 == 2) {
+    V4SUBFROM(tgt1, c10);
+    V4SUBFROM(tgt1 + ldt, c11);
+    V4SUBFROM(tgt1 + 2 * ldt, c12);
+    V4SUBFROM(tgt1 + 3 * ldt, c13);
+  }
+}
+#else
+static inline void Update4(PetscInt nr4, PetscInt W, PetscInt ld, const PetscReal *a, const PetscReal *b, const PetscReal *sg, PetscReal *tgt0, PetscReal *tgt1, PetscInt ldt)
+{
+  for (PetscInt h = 0; h < nr4; h++) {
+    PetscReal c[4][4] = {{0}}, *tgt = h ? tgt1 : tgt0;
+    for (PetscInt k = 0; k < W; k++) {
+      const PetscReal s = sg ? sg[k] : 1.0;
+      for (int j = 0; j < 4; j++)
+        for (int i = 0; i < 4; i++) c[j][i] += a[k * ld + 4 * h + i] * s * b[k * ld + j];
+    }
+    for (int j = 0; j < 4; j++)
+      for (int i = 0; i < 4; i++) tgt[j * ldt + i] -= c[j][i];
+  }
+}
+#endif
+
+/* any bs: tgt (bs x bs, column-major with leading dimension ldt) -= the block product of a and b over W
+   columns (with signs sg) */
+static inline void BlockUpdateGeneral(PetscInt bs, PetscInt W, PetscInt ld, const PetscReal *a, const PetscReal *b, const PetscReal *sg, PetscReal blk[], PetscReal *tgt, PetscInt ldt)
+{
+  for (PetscInt i = 0; i < bs * bs; i++) blk[i] = 0;
   for (PetscInt k = 0; k < W; k++, a += ld, b += ld) {
     const PetscReal s = sg ? sg[k] : 1.0;
-    for (PetscInt i = 0; i < bs; i++)
-      for (PetscInt j = 0; j < bs; j++) c[i * bs + j] += a[i] * s * b[j];
+    for (PetscInt j = 0; j < bs; j++)
+      for (PetscInt i = 0; i < bs; i++) blk[j * bs + i] += a[i] * s * b[j];
   }
+  for (PetscInt j = 0; j < bs; j++, tgt += ldt)
+    for (PetscInt i = 0; i < bs; i++) tgt[i] -= blk[j * bs + i];
 }
 
-/* tgt (bs x bs, column-major with leading dimension ldt) -= the block product of a and b over W columns.
-   Without negative pivots (sg = NULL) the bs = 4 kernel is specialized by the compiler for the no-sign case. */
-static inline void BlockUpdate(PetscInt bs, PetscInt W, PetscInt ld, const PetscReal *a, const PetscReal *b, const PetscReal *sg, PetscReal blk[], PetscReal *tgt, PetscInt ldt)
+/* the update of the block column b (its bs columns) at the row blocks r0 <= r < r1 of a panel: the block of
+   row r, a + bs r, lands at tgt + toff(r) (target offsets through pos: bs pos[R[r]] with R, or bs r without);
+   with bs = 4, two row blocks at a time, and a no-sign specialization by the compiler */
+static inline __attribute__((always_inline)) void UpdateRows(PetscInt bs, PetscInt r0, PetscInt r1, PetscInt W, PetscInt ld, const PetscReal *a, const PetscReal *b, const PetscReal *sg, PetscReal blk[], PetscReal *tgt, PetscInt ldt, const PetscInt *R, const PetscInt *pos)
 {
+#define TOFF(r) (R ? bs * pos[R[r]] : bs * (r))
   if (bs == 4) {
-    if (sg)
-      BlockProduct4(W, ld, a, b, sg, blk);
-    else
-      BlockProduct4(W, ld, a, b, NULL, blk);
-    for (PetscInt j = 0; j < 4; j++, tgt += ldt) tgt[0] -= blk[j], tgt[1] -= blk[4 + j], tgt[2] -= blk[8 + j], tgt[3] -= blk[12 + j];
-  } else {
-    BlockProduct(bs, W, ld, a, b, sg, blk);
-    for (PetscInt j = 0; j < bs; j++, tgt += ldt)
-      for (PetscInt i = 0; i < bs; i++) tgt[i] -= blk[i * bs + j];
-  }
+    PetscInt r = r0;
+    if (sg) {
+      for (; r + 1 < r1; r += 2) Update4(2, W, ld, a + 4 * r, b, sg, tgt + TOFF(r), tgt + TOFF(r + 1), ldt);
+      if (r < r1) Update4(1, W, ld, a + 4 * r, b, sg, tgt + TOFF(r), NULL, ldt);
+    } else {
+      for (; r + 1 < r1; r += 2) Update4(2, W, ld, a + 4 * r, b, NULL, tgt + TOFF(r), tgt + TOFF(r + 1), ldt);
+      if (r < r1) Update4(1, W, ld, a + 4 * r, b, NULL, tgt + TOFF(r), NULL, ldt);
+    }
+  } else
+    for (PetscInt r = r0; r < r1; r++) BlockUpdateGeneral(bs, W, ld, a + bs * r, b, sg, blk, tgt + TOFF(r), ldt);
+#undef TOFF
 }
 
 /* The signed factorization A = L S L^T, S = diag(+-1) (the sign of each pivot): L_kk = sqrt(|d_k|). With
@@ -351,8 +402,7 @@ HYLC_TARGET_CLONES static PetscErrorCode CholNumeric(HylcChol C, Mat A, PetscBoo
        left-looking by block columns (block products of the previous columns, then an unblocked step) */
     for (PetscInt jb = 0; jb < w && *ok; jb++) {
       PetscReal *cjb = P + (PetscCount)bs * jb * ld;
-      if (jb)
-        for (PetscInt r = jb; r < nr; r++) BlockUpdate(bs, bs * jb, ld, P + bs * r, P + bs * jb, neg ? sg + c0 : NULL, blk, cjb + bs * r, ld);
+      if (jb) UpdateRows(bs, jb, nr, bs * jb, ld, P, P + bs * jb, neg ? sg + c0 : NULL, blk, cjb, ld, NULL, NULL);
       for (PetscInt k = bs * jb; k < bs * (jb + 1); k++) {
         PetscReal *ck = P + k * ld, d = ck[k];
         if (!PetscIsNormalReal(d) || PetscAbsReal(d) <= 1e-14 * dA[c0 + k] || (d < 0 && !C->indefinite)) {
@@ -382,7 +432,7 @@ HYLC_TARGET_CLONES static PetscErrorCode CholNumeric(HylcChol C, Mat A, PetscBoo
       for (PetscInt i = 0; i < nrt; i++) C->relpos[Rt[i]] = i;
       for (PetscInt q = p; q < q1; q++) {
         PetscReal *tcol = Pt + (PetscCount)bs * (R[q] - ft) * ldt;
-        for (PetscInt r = q; r < nr; r++) BlockUpdate(bs, W, ld, P + bs * r, P + bs * q, neg ? sg + c0 : NULL, blk, tcol + bs * C->relpos[R[r]], ldt);
+        UpdateRows(bs, q, nr, W, ld, P, P + bs * q, neg ? sg + c0 : NULL, blk, tcol, ldt, R, C->relpos);
       }
       p = q1;
     }
