@@ -97,6 +97,12 @@ endif
 $(OBJ)/src/sampler/identity.o: CFLAGS += -DHYLC_BUILD_ID='"$(HYLC_BUILD_ID)"'
 $(OBJ)/src/sampler/identity.o: $(BUILD_ID_FILE)
 
+# the Cholesky kernels and solves: GCC's -O2 vectorizes only loops it needs no run-time alias check for;
+# the dynamic cost model lets it version the solves' loops (about 2x on them, results bitwise unchanged:
+# docs/performance.md). Only where the compiler knows the flag.
+VECT_FLAGS := $(shell $(CC) -fvect-cost-model=dynamic -E -x c /dev/null >/dev/null 2>&1 && echo -fvect-cost-model=dynamic)
+$(OBJ)/src/linalg/chol.o: CFLAGS += $(VECT_FLAGS)
+
 # libhylc's copy of hylcmat reads HDF5 tables too (the standalone libhylcmat: see below)
 $(OBJ)/src/hylcmat/%.o: CFLAGS += -DHYLCMAT_WITH_HDF5
 

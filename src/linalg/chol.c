@@ -244,13 +244,16 @@ static PetscErrorCode CholSymbolic(HylcChol C, Mat A, PetscInt bs)
   PetscCall(PetscMalloc1(ia[n] + 1, &C->amap));
   for (PetscInt i = 0; i < n; i++) {
     const PetscInt BI = C->iperm[i / bs], ii = i % bs;
+    PetscInt       lastBJ = -1, pos = -1; /* the columns of a block are adjacent in the row: one search per block */
     for (PetscInt t = ia[i]; t < ia[i + 1]; t++) {
       const PetscInt BJ = C->iperm[ja[t] / bs], jj = ja[t] % bs;
       C->amap[t] = -1;
       if (BI < BJ || (BI == BJ && ii < jj)) continue;
       const PetscInt s = C->snode[BJ], nr = C->rptr[s + 1] - C->rptr[s];
-      PetscInt       pos;
-      PetscCall(PetscFindInt(BI, nr, C->rows + C->rptr[s], &pos));
+      if (BJ != lastBJ) {
+        PetscCall(PetscFindInt(BI, nr, C->rows + C->rptr[s], &pos));
+        lastBJ = BJ;
+      }
       PetscCheck(pos >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "HylcChol: entry (%" PetscInt_FMT ", %" PetscInt_FMT ") outside the symbolic structure", i, ja[t]);
       C->amap[t] = (PetscInt)(C->voff[s] + (PetscCount)(bs * (BJ - C->sfirst[s]) + jj) * (bs * nr) + bs * pos + ii);
     }
