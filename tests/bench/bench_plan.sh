@@ -14,6 +14,8 @@
 # relative difference of Psi, where, and the median (issue 15 asks it on a full plan).
 # HYLC_BENCH_PLAN_OPTS adds options to every run (e.g. "-micro_alpha_schedule adaptive");
 # HYLC_BENCH_PLAN_N1, HYLC_BENCH_PLAN_N2 change the plan (default 30 and 10; 150 and 50 is the full plan).
+# Each run also prints the sampler's count of saddle points (samples that left one, samples still at one).
+# HYLC_BENCH_PLAN_KEEP=dir keeps the sample files there (<pattern>.<start>.h5).
 # Skipped when the paper's reference data or h5py is absent.
 set -u
 cd "$(dirname "$0")/../.."
@@ -55,6 +57,8 @@ PY
     proj=$(/usr/bin/python3 "$root/tools/loadbalance.py" "$tmp/$p.$start.h5" --cpu-total "$(awk -v w="$wall" 'BEGIN { print 2 * w }')" --ranks 2 | awk '$1 == 2 && $2 == "|" { print $3 }')
     awk -v p="$p" -v w="$wall" -v n="$n" -v c="$conv" -v s1="${paper[$p]}" -v im="$itmean" -v id="$itmed" -v ix="$itmax" -v pr="$proj" -v l="$load" -v s="$start" \
       'BEGIN { cpu = 2 * w / n; printf "  %-22s %-8s %7.1f s wall, %d/%d converged, %.3f CPU-s per sample, Table S1 %.1f: %.1fx (target 50x); Newton its mean/median/max %s/%s/%s; full plan on 2 ranks projected %.2f h; load %s at start\n", p, s, w, c, n, cpu, s1, s1 / cpu, im, id, ix, pr, l }'
+    grep '^\[sampler\] of .* converged samples' "$tmp/$p.log" | sed 's/^\[sampler\] /    saddle points: /'
+    [ -n "${HYLC_BENCH_PLAN_KEEP:-}" ] && { mkdir -p "$HYLC_BENCH_PLAN_KEEP" && cp "$tmp/$p.$start.h5" "$HYLC_BENCH_PLAN_KEEP/"; }
   done
   if [ -f "$tmp/$p.cold.h5" ] && [ -f "$tmp/$p.continue.h5" ]; then
     /usr/bin/python3 - "$tmp/$p.cold.h5" "$tmp/$p.continue.h5" "$p" <<'PY'
