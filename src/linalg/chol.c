@@ -293,8 +293,9 @@ typedef PetscReal V4 __attribute__((vector_size(4 * sizeof(PetscReal))));
 /* the bs = 4 kernel: for each of nr4 (1 or 2) row blocks a + 4 i (rows of the panel, contiguous in its
    columns), tgt[i] (4 x 4, column-major with leading dimension ldt) -= sum_k a[k ld + 4 i + (0..3)]
    s_k b[k ld + j] over the W columns k (s_k = sg[k], or 1 without sg). The accumulators are the target's
-   columns, so each product is a vector times a broadcast scalar (an FMA with FP contraction) and the target
-   is updated with whole-column vector operations; two row blocks share the broadcasts of b. */
+   columns, so each product is a vector times a broadcast scalar (one multiply and one add per lane, the
+   order of the scalar code) and the target is updated with whole-column vector operations; two row blocks
+   share the broadcasts of b. */
 static inline __attribute__((always_inline)) void Update4(PetscInt nr4, PetscInt W, PetscInt ld, const PetscReal *a, const PetscReal *b, const PetscReal *sg, PetscReal *tgt0, PetscReal *tgt1, PetscInt ldt)
 {
   V4 c00 = {0}, c01 = {0}, c02 = {0}, c03 = {0}, c10 = {0}, c11 = {0}, c12 = {0}, c13 = {0};
