@@ -345,8 +345,8 @@ PetscErrorCode HylcMicroSolve(HylcMicro M, const PetscReal z[6], HylcMicroResult
   PetscCall(VecRestoreArray(M->X, &x));
   M->haveH  = PETSC_FALSE;
   M->stalls = M->stallsTotal = M->retries = 0;
-  M->statusSet = M->factorFailed = PETSC_FALSE;
-  M->status                      = HYLC_MICRO_CONVERGED;
+  M->statusSet = M->factorFailed = M->resolved = PETSC_FALSE;
+  M->status                                    = HYLC_MICRO_CONVERGED;
   M->tFactor = M->tLineSearch = 0;
   M->nhist                    = 0;
   M->E0                       = PETSC_INFINITY;
@@ -369,8 +369,9 @@ PetscErrorCode HylcMicroSolve(HylcMicro M, const PetscReal z[6], HylcMicroResult
     if (!escaped) break;
     M->escapes++;
     M->itBase += its;
-    M->restart = PETSC_TRUE;
-    M->stalls  = 0;
+    M->restart  = PETSC_TRUE;
+    M->stalls   = 0;
+    M->resolved = PETSC_FALSE;
     PetscCall(SNESSolve(M->snes, NULL, M->X));
     PetscCall(SNESGetConvergedReason(M->snes, &reason));
     PetscCall(SNESGetIterationNumber(M->snes, &its));

@@ -251,7 +251,16 @@ static PetscErrorCode LineSearch(SNESLineSearch ls, void *ctx)
     M->stalls = 0;
     PetscCall(HylcMicroPushEnergy_Private(M, M->E0));
   } else {
-    /* keep the iterate (alpha decays with the iteration count); the cached Hessian stays valid */
+    /* keep the iterate (alpha decays with the iteration count); the cached Hessian stays valid. If the
+       step's first-order decrease F.Y is below the rounding of the energy (1e3 eps |E0|), no trial can
+       show a decrease: the iterate is converged as far as the energy can tell, and the convergence test
+       ends the solve there (once the constraints hold), instead of stalling */
+    PetscScalar fy;
+    PetscCall(VecDot(F, Y, &fy));
+    if (PetscRealPart(fy) <= 1e3 * PETSC_MACHINE_EPSILON * PetscAbsReal(M->E0)) {
+      M->resolved = PETSC_TRUE;
+      PetscCall(PetscInfo(M, "rejected step with first-order decrease %g below the energy's rounding (E %g): converged to the energy's resolution\n", (double)PetscRealPart(fy), (double)M->E0));
+    }
     M->stalls++;
     M->stallsTotal++;
     PetscCall(HylcMicroToY_Private(M, X, M->yw));
@@ -349,6 +358,10 @@ static PetscErrorCode Converged(SNES snes, PetscInt it, PetscReal xnorm, PetscRe
   M->lastc = cn / M->r;
   if ((zn <= M->par.rtol * M->z0 || zn <= M->par.atol * M->ks) && cn < M->par.ctol * M->r) {
     *reason = SNES_CONVERGED_FNORM_RELATIVE;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  if (M->resolved && cn < M->par.ctol * M->r) { /* the line search could not resolve the step's decrease */
+    *reason = SNES_CONVERGED_FNORM_ABS;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscCall(PetscTime(&now));

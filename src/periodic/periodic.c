@@ -199,7 +199,7 @@ PetscErrorCode HylcPeriodicSetOptionsPrefix(HylcPeriodic P, const char prefix[])
                                      the direction in which a file lists each yarn; docs/method.md) (HylcPeriodicSetSlideConstraint())
 . -periodic_margin <0>             - contact ghosts: every copy of a tile edge in the neighbouring tiles (0), or only the copies within
                                      max(3 r, margin min(px, py)) of the tile on the deformed initial guess (HylcPeriodicSetContactMargin())
-. -periodic_pair_margin <1.05>     - Hessian structure: keep pairs whose boxes inflated by this many r overlap (HylcPeriodicSetPairMargin())
+. -periodic_pair_margin <1.05>     - Hessian structure: keep the segment pairs closer than this many 2 r (HylcPeriodicSetPairMargin())
 . -periodic_constraint_rtol <1e-6> - drop a constraint row within this relative distance of the span of the
                                      rows before it (linearly dependent: straight yarns; docs/method.md) (HylcPeriodicSetConstraintTolerance())
 . -periodic_view                   - print the tile after each set-up (HylcPeriodicView())
@@ -221,7 +221,7 @@ PetscErrorCode HylcPeriodicSetFromOptions(HylcPeriodic P)
   crtol        = P->crtol;
   PetscObjectOptionsBegin((PetscObject)P);
   PetscCall(PetscOptionsEnum("-periodic_slide", "Slide constraint: none, global (one row), per_yarn (one row per yarn loop) or per_family (one row per yarn family, each yarn in its canonical direction)", "HylcPeriodicSetSlideConstraint", HylcSlideConstraints, sl, &sl, NULL));
-  PetscCall(PetscOptionsReal("-periodic_pair_margin", "Hessian structure: keep segment pairs whose boxes inflated by this many r overlap, so that it changes rarely", "HylcPeriodicSetPairMargin", pairMargin, &pairMargin, NULL));
+  PetscCall(PetscOptionsReal("-periodic_pair_margin", "Hessian structure: keep the segment pairs closer than this many 2 r (touching: 2 r), so that it changes rarely", "HylcPeriodicSetPairMargin", pairMargin, &pairMargin, NULL));
   PetscCall(PetscOptionsReal("-periodic_margin", "Contact ghosts: 0 for every copy of a tile edge in the neighbouring tiles; > 0 for only the copies within max(3 r, margin * min(px, py)) of the tile on the deformed initial guess (misses contacts once yarns move more than about (margin - 2 r) / 2)", "HylcPeriodicSetContactMargin", marginFactor, &marginFactor, NULL));
   PetscCall(PetscOptionsReal("-periodic_constraint_rtol", "A constraint row whose distance to the span of the rows before it is at most this times its norm is dropped as linearly dependent (straight yarns: the slide row repeats the translation)", "HylcPeriodicSetConstraintTolerance", crtol, &crtol, NULL));
   PetscCall(PetscOptionsName("-periodic_view", "Print the tile after each set-up", "HylcPeriodicView", NULL));
@@ -370,14 +370,15 @@ PetscErrorCode HylcPeriodicSetContactMargin(HylcPeriodic P, PetscReal margin)
 
 /*@C
   HylcPeriodicSetPairMargin - Sets the margin of the Hessian's contact structure (option
-  -periodic_pair_margin): segment pairs whose boxes inflated by this many r overlap are kept in it, so that
-  it changes rarely.
+  -periodic_pair_margin): the segment pairs closer than margin x 2 r are kept in it (the pairs that touch
+  are closer than 2 r), so that it changes rarely. It is rebuilt, and the factorization's symbolic phase
+  redone, when a touching pair is not in it; a larger margin rebuilds less often but fills the factor more.
 
   Not collective
 
   Input Parameters:
 + P      - the periodic tile
-- margin - the factor (>= 1: boxes inflated by r find every touching pair)
+- margin - the factor (>= 1, so that the structure holds every touching pair)
 
   Level: advanced
 
@@ -387,7 +388,7 @@ PetscErrorCode HylcPeriodicSetPairMargin(HylcPeriodic P, PetscReal margin)
 {
   PetscFunctionBegin;
   PetscValidHeaderSpecific(P, HYLC_PERIODIC_CLASSID, 1);
-  PetscCheck(margin >= 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-periodic_pair_margin must be at least 1 (boxes inflated by r find every touching pair)");
+  PetscCheck(margin >= 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-periodic_pair_margin must be at least 1 (the structure must hold every touching pair)");
   P->pairMargin = margin;
   P->setup      = PETSC_FALSE;
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -66,8 +66,8 @@ struct _p_HylcPeriodic {
   HylcBVH      bvh;
   double      *segx;
   HylcPairList cand;
-  PetscInt     npairs, cappairs, *pairs; /* pairs that can touch (boxes inflated by r overlap): full edges i, j */
-  PetscInt     ncand, capcand, *cpairs;  /* candidates for the Hessian's structure (boxes inflated by pairMargin r) */
+  PetscInt     npairs, cappairs, *pairs; /* pairs that can touch (segments closer than 2 r): full edges i, j */
+  PetscInt     ncand, capcand, *cpairs;  /* candidates for the Hessian's structure (closer than 2 pairMargin r) */
   PetscReal   *cw;
   PetscReal    pairMargin;
   PetscReal   *pw;         /* pair weights */

@@ -70,6 +70,7 @@ struct _p_HylcMicro {
   PetscLogDouble  tStart, tFactor, tLineSearch;
   HylcMicroStatus status;
   PetscBool       statusSet;
+  PetscBool       resolved;     /* a rejected step whose first-order decrease is below the energy's rounding: converged as far as E can tell */
   PetscBool       factorFailed; /* the Newton matrix could not be factored after every alpha increase */
   PetscBool       inject;       /* this solve raises the injected error (HYLC_INJECT_ERROR) */
   PetscInt        injectAt;     /* the value of HYLC_INJECT_ERROR of this solve (for the message) */
