@@ -252,12 +252,13 @@ static PetscErrorCode LineSearch(SNESLineSearch ls, void *ctx)
     PetscCall(HylcMicroPushEnergy_Private(M, M->E0));
   } else {
     /* keep the iterate (alpha decays with the iteration count); the cached Hessian stays valid. If the
-       step's first-order decrease F.Y is below the rounding of the energy (1e3 eps |E0|), no trial can
-       show a decrease: the iterate is converged as far as the energy can tell, and the convergence test
-       ends the solve there (once the constraints hold), instead of stalling */
+       step is a descent direction whose first-order decrease F.Y is below the rounding of the energy
+       (1e3 eps |E0|), no trial can show a decrease: the iterate is converged as far as the energy can
+       tell, and the convergence test ends the solve there (once the constraints hold), instead of
+       stalling. (A direction that is not a descent direction, F.Y <= 0, is a stall.) */
     PetscScalar fy;
     PetscCall(VecDot(F, Y, &fy));
-    if (PetscRealPart(fy) <= 1e3 * PETSC_MACHINE_EPSILON * PetscAbsReal(M->E0)) {
+    if (PetscRealPart(fy) > 0 && PetscRealPart(fy) <= 1e3 * PETSC_MACHINE_EPSILON * PetscAbsReal(M->E0)) {
       M->resolved = PETSC_TRUE;
       PetscCall(PetscInfo(M, "rejected step with first-order decrease %g below the energy's rounding (E %g): converged to the energy's resolution\n", (double)PetscRealPart(fy), (double)M->E0));
     }
