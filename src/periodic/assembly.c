@@ -54,14 +54,15 @@ static PetscErrorCode FindPairs(HylcPeriodic P)
     const PetscInt nor = (P->esrc[i] < P->N) + (P->ehead[i] < P->N) + (P->esrc[j] < P->N) + (P->ehead[j] < P->N);
     if (!nor) continue;
     /* by the distance of the segments (the broadphase's boxes are a coarse superset): the structure keeps
-       the pairs closer than 2 m r (m the pair margin), the contact terms are evaluated on the pairs closer
-       than 2 r (with a relative slack of 1e-6 for the rounding of the kernels' own test: a pair at
-       distance >= 2 r has E = 0, g = 0 and H = 0, include/hylc/contact.h) */
+       the pairs closer than 2 m r (m >= 1 the pair margin), the contact terms are evaluated on the pairs
+       closer than 2 r, both with a relative slack of 1e-6 for the rounding of the kernels' own test (a
+       pair at distance >= 2 r has E = 0, g = 0 and H = 0, include/hylc/contact.h), so that the touching
+       pairs are always in the structure */
     double          sp, tp;
-    const PetscReal d = HylcSegmentSegmentDistance(P->segx + 6 * i, P->segx + 6 * i + 3, P->segx + 6 * j, P->segx + 6 * j + 3, &sp, &tp);
-    if (!(d < 2 * P->pairMargin * P->c.r)) continue;
+    const PetscReal d = HylcSegmentSegmentDistance(P->segx + 6 * i, P->segx + 6 * i + 3, P->segx + 6 * j, P->segx + 6 * j + 3, &sp, &tp), slack = 1 + 1e-6;
+    if (!(d < 2 * P->pairMargin * P->c.r * slack)) continue;
     PetscCall(PushPair(&P->ncand, &P->capcand, &P->cpairs, &P->cw, i, j, nor / 4.0));
-    if (d < 2 * P->c.r * (1 + 1e-6)) PetscCall(PushPair(&P->npairs, &P->cappairs, &P->pairs, &P->pw, i, j, nor / 4.0));
+    if (d < 2 * P->c.r * slack) PetscCall(PushPair(&P->npairs, &P->cappairs, &P->pairs, &P->pw, i, j, nor / 4.0));
   }
   P->pairsValid = PETSC_TRUE;
   PetscCall(PetscLogEventEnd(HYLC_TileBroadphase, 0, 0, 0, 0));
