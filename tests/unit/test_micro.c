@@ -74,6 +74,22 @@ static PetscErrorCode SolveStraight(PetscInt N, const PetscReal z[6], HylcMicroR
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* the option name=value is refused by HylcMicroSetFromOptions() with PETSC_ERR_USER_INPUT (the option is
+   cleared again) */
+static PetscErrorCode CheckOptionRefused(HylcMicro M, const char name[], const char value[])
+{
+  PetscErrorCode ierr;
+
+  PetscFunctionBegin;
+  PetscCall(PetscOptionsSetValue(NULL, name, value));
+  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+  ierr = HylcMicroSetFromOptions(M);
+  PetscCall(PetscPopErrorHandler());
+  PetscCall(PetscOptionsClearValue(NULL, name));
+  HYLC_CHECK(ierr == PETSC_ERR_USER_INPUT, "%s %s: error %d, expected PETSC_ERR_USER_INPUT", name, value, (int)ierr);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode TestAnalytic(void)
 {
   HylcMicroResult   res;
@@ -468,12 +484,7 @@ static PetscErrorCode TestObject(void)
   PetscCall(PetscOptionsClearValue(NULL, "-other_ls_max"));
   PetscCall(HylcMicroSolve(M, z, &r1));
   /* the removed -factor_type */
-  PetscCall(PetscOptionsSetValue(NULL, "-other_factor_type", "petsc"));
-  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
-  ierr = HylcMicroSetFromOptions(M);
-  PetscCall(PetscPopErrorHandler());
-  PetscCall(PetscOptionsClearValue(NULL, "-other_factor_type"));
-  HYLC_CHECK(ierr == PETSC_ERR_USER_INPUT, "-other_factor_type: error %d, expected PETSC_ERR_USER_INPUT", (int)ierr);
+  PetscCall(CheckOptionRefused(M, "-other_factor_type", "petsc"));
   PetscCall(HylcMicroDestroy(&M));
   /* PETSc's Cholesky chosen through the getter */
   PetscCall(HylcMicroCreate(PETSC_COMM_SELF, &M));
@@ -555,12 +566,7 @@ static PetscErrorCode TestAdaptive(void)
   remove(path);
   /* bad values */
   for (size_t b = 0; b < sizeof(bad) / sizeof(bad[0]); b++) {
-    PetscCall(PetscOptionsSetValue(NULL, bad[b][0], bad[b][1]));
-    PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
-    ierr = HylcMicroSetFromOptions(M);
-    PetscCall(PetscPopErrorHandler());
-    PetscCall(PetscOptionsClearValue(NULL, bad[b][0]));
-    HYLC_CHECK(ierr == PETSC_ERR_USER_INPUT, "%s %s: error %d, expected PETSC_ERR_USER_INPUT", bad[b][0], bad[b][1], (int)ierr);
+    PetscCall(CheckOptionRefused(M, bad[b][0], bad[b][1]));
     PetscCall(HylcMicroSetRegularizationSchedule(M, HYLC_MICRO_ALPHA_PAPER, 4, 1e-2, 1e10)); /* restore */
     PetscCall(HylcMicroSetRegularizationSwitch(M, 1e-2));
     PetscCall(HylcMicroSetStepClearance(M, 0));
@@ -745,12 +751,7 @@ static PetscErrorCode TestSaddle(void)
   ierr = HylcMicroSetSaddleEscape(M, PETSC_TRUE, -1, PETSC_DEFAULT);
   PetscCall(PetscPopErrorHandler());
   HYLC_CHECK(ierr == PETSC_ERR_USER_INPUT, "HylcMicroSetSaddleEscape(-1 escapes): error %d, expected PETSC_ERR_USER_INPUT", (int)ierr);
-  PetscCall(PetscOptionsSetValue(NULL, "-micro_saddle_tol", "0"));
-  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
-  ierr = HylcMicroSetFromOptions(M);
-  PetscCall(PetscPopErrorHandler());
-  PetscCall(PetscOptionsClearValue(NULL, "-micro_saddle_tol"));
-  HYLC_CHECK(ierr == PETSC_ERR_USER_INPUT, "-micro_saddle_tol 0: error %d, expected PETSC_ERR_USER_INPUT", (int)ierr);
+  PetscCall(CheckOptionRefused(M, "-micro_saddle_tol", "0"));
   PetscCall(HylcMicroDestroy(&M));
   PetscCall(HylcPatternDestroy(&p));
   PetscFunctionReturn(PETSC_SUCCESS);
