@@ -44,6 +44,7 @@ static PetscErrorCode FindPairs(HylcPeriodic P)
   PetscCheck(!HylcBVHQuery(P->bvh, &P->cand), PETSC_COMM_SELF, PETSC_ERR_MEM, "Broadphase query failed");
   HylcPairListSort(&P->cand);
   P->npairs = P->ncand = 0;
+  P->clearance          = 2 * P->pairMargin * P->c.r;
   for (size_t c = 0; c < P->cand.n; c++) {
     const PetscInt i = P->cand.idx[2 * c], j = P->cand.idx[2 * c + 1];
     const PetscInt ki = P->esrc[i], kj = P->esrc[j];
@@ -61,6 +62,7 @@ static PetscErrorCode FindPairs(HylcPeriodic P)
     double          sp, tp;
     const PetscReal d = HylcSegmentSegmentDistance(P->segx + 6 * i, P->segx + 6 * i + 3, P->segx + 6 * j, P->segx + 6 * j + 3, &sp, &tp), slack = 1 + 1e-6;
     if (!(d < 2 * P->pairMargin * P->c.r * slack)) continue;
+    P->clearance = PetscMin(P->clearance, d);
     PetscCall(PushPair(&P->ncand, &P->capcand, &P->cpairs, &P->cw, i, j, nor / 4.0));
     if (d < 2 * P->c.r * slack) PetscCall(PushPair(&P->npairs, &P->cappairs, &P->pairs, &P->pw, i, j, nor / 4.0));
   }
@@ -93,9 +95,9 @@ PetscErrorCode HylcPeriodicGetNumContactPairs(HylcPeriodic P, PetscInt *n)
 
 /*@C
   HylcPeriodicGetClearance - The smallest distance between the centerlines of two yarn segments that may
-  come into contact, in the current state (runs the broadphase): the minimum over the broadphase's
-  candidate pairs (same-yarn neighbours excluded as for contact), or 2 m r (m the pair margin: no candidate
-  pair is closer) if that is smaller. If every vertex moves by less than half of it along a
+  come into contact, in the current state (runs the broadphase, which computes it with the pair lists): the
+  minimum over the segment pairs (same-yarn neighbours excluded as for contact), or 2 m r (m the pair
+  margin) if that is smaller. If every vertex moves by less than half of it along a
   straight step, no two centerlines cross during the step (the distance of two segments is 2-Lipschitz in
   the largest vertex displacement), the basis of the clearance step limit (HylcMicroSetStepLimit()).
 
@@ -113,18 +115,10 @@ PetscErrorCode HylcPeriodicGetNumContactPairs(HylcPeriodic P, PetscInt *n)
 @*/
 PetscErrorCode HylcPeriodicGetClearance(HylcPeriodic P, PetscReal *d)
 {
-  double dmin;
-
   PetscFunctionBegin;
   PetscCheck(P->setup, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE, "Call HylcPeriodicSetUp() first");
   PetscCall(FindPairs(P));
-  dmin = 2 * P->pairMargin * P->c.r;
-  for (PetscInt p = 0; p < P->ncand; p++) {
-    const PetscInt i = P->cpairs[2 * p], j = P->cpairs[2 * p + 1];
-    double         s, t;
-    dmin = PetscMin(dmin, HylcSegmentSegmentDistance(P->segx + 6 * i, P->segx + 6 * i + 3, P->segx + 6 * j, P->segx + 6 * j + 3, &s, &t));
-  }
-  *d = dmin;
+  *d = P->clearance;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -72,6 +72,7 @@ struct _p_HylcPeriodic {
   PetscReal    pairMargin;
   PetscReal   *pw;         /* pair weights */
   PetscBool    pairsValid; /* the pair lists are those of the current x (FindPairs is skipped) */
+  PetscReal    clearance;  /* min(2 pairMargin r, the smallest distance of a structure pair), set with the lists */
   /* COO */
   PetscInt     ncoo, capcoo, *coopos; /* where each element entry goes in the CSR values of H_y */
   PetscInt    *rowptr, *colind, nnz; /* the CSR structure of H_y: 4x4 blocks of coupled vertices */

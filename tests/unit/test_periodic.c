@@ -138,6 +138,11 @@ static PetscErrorCode TestDerivatives(HylcPattern p, const char *what, const Pet
   PetscCall(HylcPeriodicCreateMatrix(P, &H));
   PetscCall(HylcPeriodicEvaluate(P, HYLC_TERM_ALL, e, g, H));
   HYLC_CHECK(e[3] > 0 && np > 4, "%s: no contact in the test state", what);
+  { /* pairs closer than 2 r exist, so the clearance (computed with the pair lists) is below 2 r */
+    PetscReal d;
+    PetscCall(HylcPeriodicGetClearance(P, &d));
+    HYLC_CHECK(d > 0 && d < 2 * r, "%s: clearance %g with %d pairs closer than 2 r = %g", what, (double)d, (int)np, (double)(2 * r));
+  }
   PetscReal gmax = 0, hmax, gerr = 0, herr = 0;
   for (PetscInt i = 0; i < n; i++) gmax = PetscMax(gmax, PetscAbsReal(g[i]));
   PetscCall(MatNorm(H, NORM_MAX, &hmax));
