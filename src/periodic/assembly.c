@@ -44,7 +44,7 @@ static PetscErrorCode FindPairs(HylcPeriodic P)
   PetscCheck(!HylcBVHQuery(P->bvh, &P->cand), PETSC_COMM_SELF, PETSC_ERR_MEM, "Broadphase query failed");
   HylcPairListSort(&P->cand);
   P->npairs = P->ncand = 0;
-  P->clearance          = 2 * P->pairMargin * P->c.r;
+  P->clearance         = 2 * P->pairMargin * P->c.r;
   for (size_t c = 0; c < P->cand.n; c++) {
     const PetscInt i = P->cand.idx[2 * c], j = P->cand.idx[2 * c + 1];
     const PetscInt ki = P->esrc[i], kj = P->esrc[j];
