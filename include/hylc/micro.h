@@ -55,6 +55,7 @@ typedef struct {
   PetscInt        stalls;                                    /* line searches without decrease */
   PetscInt        escapes;                                   /* saddle escapes (HylcMicroSetSaddleEscape()) */
   PetscInt        negcurv;                                   /* negative eigenvalues of the projected Hessian at the end; -1 not tested */
+  PetscBool       fallback;                                  /* the adaptive or hybrid schedule did not converge: solved again from the same start with the paper schedule (HylcMicroSetRegularizationFallback()) */
   PetscReal       residual;                                  /* |z| / |z0| at the end */
   PetscReal       cresidual;                                 /* |A y - dL| / r at the end */
   PetscLogDouble  time;                                      /* wall time of the solve (s) */
@@ -68,6 +69,7 @@ PETSC_EXTERN PetscErrorCode HylcMicroSetOptionsPrefix(HylcMicro, const char[]);
 PETSC_EXTERN PetscErrorCode HylcMicroSetRegularization(HylcMicro, PetscReal start, PetscReal end, PetscInt its, PetscInt retries);
 PETSC_EXTERN PetscErrorCode HylcMicroSetRegularizationSchedule(HylcMicro, HylcMicroAlphaSchedule, PetscReal factor, PetscReal min, PetscReal max);
 PETSC_EXTERN PetscErrorCode HylcMicroSetRegularizationSwitch(HylcMicro, PetscReal);
+PETSC_EXTERN PetscErrorCode HylcMicroSetRegularizationFallback(HylcMicro, PetscBool);
 PETSC_EXTERN PetscErrorCode HylcMicroSetStepClearance(HylcMicro, PetscReal);
 PETSC_EXTERN PetscErrorCode HylcMicroSetTwistScale(HylcMicro, PetscReal);
 PETSC_EXTERN PetscErrorCode HylcMicroSetStepLimit(HylcMicro, PetscReal p0, PetscReal p1);

@@ -14,29 +14,30 @@ static PetscInt injectAt = -1, solveCount = 0; /* injectAt: -1 unread, 0 off */
 
 static void ParamsDefault(HylcMicroParams *p)
 {
-  p->alphaStart  = 5000;
-  p->alphaEnd    = 5;
-  p->alphaIts    = 400;
-  p->maxRetries  = 12;
-  p->alphaSched  = HYLC_MICRO_ALPHA_PAPER;
-  p->alphaFact   = 4;
-  p->alphaMin    = 1e-2;
-  p->alphaMax    = 1e10;
-  p->alphaSwitch = 1e-2;
-  p->twistScale  = 0;
-  p->stepP0      = 0.05;
-  p->stepP1      = 0.15;
-  p->lsFactor    = 0.1;
-  p->lsMax       = 11;
-  p->maxStalls   = 5;
-  p->rtol        = 1e-5;
-  p->atol        = 1e-10;
-  p->ctol        = 1e-4;
-  p->maxTime     = 60;
-  p->indefinite  = PETSC_TRUE;
-  p->saddleTest  = PETSC_TRUE;
-  p->saddleMax   = 5;
-  p->saddleTol   = 1e-6;
+  p->alphaStart    = 5000;
+  p->alphaEnd      = 5;
+  p->alphaIts      = 400;
+  p->maxRetries    = 12;
+  p->alphaSched    = HYLC_MICRO_ALPHA_PAPER;
+  p->alphaFact     = 4;
+  p->alphaMin      = 1e-2;
+  p->alphaMax      = 1e10;
+  p->alphaSwitch   = 1e-2;
+  p->alphaFallback = PETSC_TRUE;
+  p->twistScale    = 0;
+  p->stepP0        = 0.05;
+  p->stepP1        = 0.15;
+  p->lsFactor      = 0.1;
+  p->lsMax         = 11;
+  p->maxStalls     = 5;
+  p->rtol          = 1e-5;
+  p->atol          = 1e-10;
+  p->ctol          = 1e-4;
+  p->maxTime       = 60;
+  p->indefinite    = PETSC_TRUE;
+  p->saddleTest    = PETSC_TRUE;
+  p->saddleMax     = 5;
+  p->saddleTol     = 1e-6;
 }
 
 /*@C
@@ -286,7 +287,9 @@ PetscErrorCode HylcMicroSetUp(HylcMicro M)
 
 .seealso: HylcMicroSetUp(), HylcMicroGetState(), HylcMicroResultView()
 @*/
-PetscErrorCode HylcMicroSolve(HylcMicro M, const PetscReal z[6], HylcMicroResult *res)
+/* one solve of HylcMicroSolve() with the current parameters: from the cold guess, or from the state of
+   HylcMicroSetInitialState() if one is pending */
+static PetscErrorCode SolveOnce(HylcMicro M, const PetscReal z[6], HylcMicroResult *res)
 {
   PetscLogDouble      t1, tEval, tContact, tAssemble;
   PetscScalar        *x;
@@ -297,20 +300,8 @@ PetscErrorCode HylcMicroSolve(HylcMicro M, const PetscReal z[6], HylcMicroResult
   PetscInt            m;
 
   PetscFunctionBegin;
-  PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
-  PetscCheck(M->pat, PetscObjectComm((PetscObject)M), PETSC_ERR_ARG_WRONGSTATE, "Call HylcMicroSetPattern() first");
-  if (injectAt < 0) { /* read once per process */
-    const char *env = getenv("HYLC_INJECT_ERROR");
-    char       *end = NULL;
-    long        n   = env ? strtol(env, &end, 10) : 0;
-    PetscCheck(!env || (end != env && !*end && n >= 0 && n < PETSC_MAX_INT), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "HYLC_INJECT_ERROR=%s: expected a non-negative integer (the 1-based number of the solve that raises an injected error)", env);
-    injectAt = (PetscInt)n;
-  }
-  M->inject   = (PetscBool)(injectAt > 0 && ++solveCount == injectAt);
-  M->injectAt = injectAt;
   PetscCall(PetscMemzero(res, sizeof(*res)));
   for (int k = 0; k < 6; k++) res->z[k] = z[k];
-  PetscCall(PetscLogEventBegin(HYLC_MicroSolve, M, 0, 0, 0));
   PetscCall(PetscTime(&M->tStart));
   PetscCall(HylcPeriodicSetStrain(M->P, z));
   PetscCall(HylcPeriodicSetUp(M->P));
@@ -407,6 +398,47 @@ PetscErrorCode HylcMicroSolve(HylcMicro M, const PetscReal z[6], HylcMicroResult
   res->tContact    = tContact;
   res->tFactor     = M->tFactor;
   res->tLineSearch = M->tLineSearch;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcMicroSolve(HylcMicro M, const PetscReal z[6], HylcMicroResult *res)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
+  PetscCheck(M->pat, PetscObjectComm((PetscObject)M), PETSC_ERR_ARG_WRONGSTATE, "Call HylcMicroSetPattern() first");
+  if (injectAt < 0) { /* read once per process */
+    const char *env = getenv("HYLC_INJECT_ERROR");
+    char       *end = NULL;
+    long        n   = env ? strtol(env, &end, 10) : 0;
+    PetscCheck(!env || (end != env && !*end && n >= 0 && n < PETSC_MAX_INT), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "HYLC_INJECT_ERROR=%s: expected a non-negative integer (the 1-based number of the solve that raises an injected error)", env);
+    injectAt = (PetscInt)n;
+  }
+  M->inject   = (PetscBool)(injectAt > 0 && ++solveCount == injectAt);
+  M->injectAt = injectAt;
+  PetscCall(PetscLogEventBegin(HYLC_MicroSolve, M, 0, 0, 0));
+  PetscCall(SolveOnce(M, z, res));
+  if (res->status != HYLC_MICRO_CONVERGED && M->par.alphaFallback && M->par.alphaSched != HYLC_MICRO_ALPHA_PAPER) {
+    /* the adaptive or hybrid schedule failed: the same start with the paper schedule (its steps are shorter
+       while the gradient is large), the sums of both solves' counts and times reported */
+    const HylcMicroResult first = *res;
+    const PetscInt        sched = M->par.alphaSched;
+    PetscErrorCode        ierr;
+    PetscCall(PetscInfo(M, "the %s schedule ended %s after %" PetscInt_FMT " iterations: solved again from the same start with the paper schedule\n", HylcMicroAlphaSchedules[sched], HylcMicroStatuses[first.status], first.iterations));
+    M->haveInit       = M->continued; /* the state of HylcMicroSetInitialState() is kept in uinit */
+    M->par.alphaSched = HYLC_MICRO_ALPHA_PAPER;
+    ierr              = SolveOnce(M, z, res);
+    M->par.alphaSched = sched;
+    PetscCall(ierr);
+    res->fallback = PETSC_TRUE;
+    res->iterations += first.iterations;
+    res->retries += first.retries;
+    res->stalls += first.stalls;
+    res->time += first.time;
+    res->tAssembly += first.tAssembly;
+    res->tContact += first.tContact;
+    res->tFactor += first.tFactor;
+    res->tLineSearch += first.tLineSearch;
+  }
   PetscCall(PetscLogEventEnd(HYLC_MicroSolve, M, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -573,6 +605,7 @@ PetscErrorCode HylcMicroResultView(const HylcMicroResult *r, PetscViewer viewer)
   PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
   PetscCall(PetscViewerASCIIPrintf(viewer, "status: %s\n", HylcMicroStatuses[r->status]));
   PetscCall(PetscViewerASCIIPrintf(viewer, "iterations: %" PetscInt_FMT "\n", r->iterations));
+  if (r->fallback) PetscCall(PetscViewerASCIIPrintf(viewer, "fallback: the adaptive or hybrid schedule did not converge; solved again from the same start with the paper schedule (iterations, retries, stalls and times are the sums of both)\n"));
   if (r->negcurv >= 0) PetscCall(PetscViewerASCIIPrintf(viewer, "second-order test: %" PetscInt_FMT " negative eigenvalues on the tangent space at the end (%s), %" PetscInt_FMT " saddle escapes\n", r->negcurv, r->negcurv ? "a saddle point" : "a minimum", r->escapes));
   snprintf(buf, sizeof(buf), "residual: %.3e (projected gradient, relative), constraints %.3e r\nregularization retries: %d, stalled line searches: %d\ntime: %.4f s (assembly %.4f, contact %.4f, factorization %.4f, line search %.4f)\n", (double)r->residual, (double)r->cresidual, (int)r->retries, (int)r->stalls, r->time, r->tAssembly, r->tContact, r->tFactor, r->tLineSearch);
   PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));

@@ -110,6 +110,33 @@ PetscErrorCode HylcMicroSetRegularizationSwitch(HylcMicro M, PetscReal sw)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@
+  HylcMicroSetRegularizationFallback - Whether a solve with the adaptive or the hybrid schedule
+  (HylcMicroSetRegularizationSchedule()) that does not converge is repeated, from the same start, with the
+  paper's schedule. The adaptive schedule can stall where the paper's converges: a cold start deep in
+  compression (the rib at s_x < -0.5) forces the yarns into each other, and the steps of a small alpha^ meet the
+  pole of the contact penalty. The result is then the repeat's (HylcMicroResult.fallback is set; the
+  iterations, retries, stalls and times are the sums of both solves). Not collective.
+
+  Input Parameters:
++ M  - the solver
+- fb - PETSC_TRUE (default) to repeat, PETSC_FALSE to report the first solve's status
+
+  Options Database Key:
+. -micro_alpha_fallback <true> - fb
+
+  Level: intermediate
+
+.seealso: HylcMicroSetRegularizationSchedule(), HylcMicroSolve()
+@*/
+PetscErrorCode HylcMicroSetRegularizationFallback(HylcMicro M, PetscBool fb)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
+  M->par.alphaFallback = fb;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /*@C
   HylcMicroSetTwistScale - Sets mu, the scale of the twist unknowns (y = M y^, M = 1 per position, mu per
   twist). Not collective.
@@ -376,6 +403,7 @@ PetscErrorCode HylcMicroSetFromOptions(HylcMicro M)
   PetscCall(PetscOptionsReal("-alpha_min", "Adaptive regularization: smallest alpha^", "HylcMicroSetRegularizationSchedule", p.alphaMin, &p.alphaMin, NULL));
   PetscCall(PetscOptionsReal("-alpha_max", "Adaptive regularization: largest alpha^", "HylcMicroSetRegularizationSchedule", p.alphaMax, &p.alphaMax, NULL));
   PetscCall(PetscOptionsReal("-alpha_switch", "Hybrid regularization: adaptive once ||M g||_inf <= alpha_switch x its value at the first iteration", "HylcMicroSetRegularizationSwitch", p.alphaSwitch, &p.alphaSwitch, NULL));
+  PetscCall(PetscOptionsBool("-alpha_fallback", "Adaptive and hybrid regularization: a solve that does not converge is repeated from the same start with the paper schedule", "HylcMicroSetRegularizationFallback", p.alphaFallback, &p.alphaFallback, NULL));
   PetscCall(PetscOptionsReal("-twist_scale", "Scale mu of the twist unknowns, 0 = 1/r", "HylcMicroSetTwistScale", p.twistScale, &p.twistScale, NULL));
   PetscCall(PetscOptionsReal("-step_p0", "Step limit d_max = (p0 + p1 clamp(lambda_min(I),0,1)) r: p0", "HylcMicroSetStepLimit", p.stepP0, &p.stepP0, NULL));
   PetscCall(PetscOptionsReal("-step_p1", "Step limit: p1", "HylcMicroSetStepLimit", p.stepP1, &p.stepP1, NULL));
@@ -405,6 +433,7 @@ PetscErrorCode HylcMicroSetFromOptions(HylcMicro M)
   PetscCall(HylcMicroSetRegularization(M, p.alphaStart, p.alphaEnd, p.alphaIts, p.maxRetries));
   PetscCall(HylcMicroSetRegularizationSchedule(M, (HylcMicroAlphaSchedule)p.alphaSched, p.alphaFact, p.alphaMin, p.alphaMax));
   PetscCall(HylcMicroSetRegularizationSwitch(M, p.alphaSwitch));
+  PetscCall(HylcMicroSetRegularizationFallback(M, p.alphaFallback));
   PetscCall(HylcMicroSetTwistScale(M, p.twistScale));
   PetscCall(HylcMicroSetStepLimit(M, p.stepP0, p.stepP1));
   PetscCall(HylcMicroSetStepClearance(M, p.stepClear));
@@ -459,6 +488,7 @@ PetscErrorCode HylcMicroView(HylcMicro M, PetscViewer viewer)
   else
     snprintf(buf, sizeof(buf), "regularization: paper schedule, alpha^ %g -> %g over %d iterations, up to %d retries x 10; factorization of an indefinite K %s\n", (double)p->alphaStart, (double)p->alphaEnd, (int)p->alphaIts, (int)p->maxRetries, p->indefinite ? "accepted" : "refused");
   PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
+  if (p->alphaSched != HYLC_MICRO_ALPHA_PAPER) PetscCall(PetscViewerASCIIPrintf(viewer, "a solve that does not converge is %s\n", p->alphaFallback ? "repeated from the same start with the paper schedule" : "not repeated (-micro_alpha_fallback false)"));
   if (p->stepClear > 0)
     snprintf(buf, sizeof(buf), "twist scale mu: %s; step limit min((%g + %g clamp(lambda_min, 0, 1)) r, %g x clearance); line search x %g, %d trials, stop after %d stalls\n", p->twistScale > 0 ? "set" : "1/r", (double)p->stepP0, (double)p->stepP1, (double)p->stepClear, (double)p->lsFactor, (int)p->lsMax, (int)p->maxStalls);
   else

@@ -255,12 +255,22 @@ static PetscErrorCode LineSearch(SNESLineSearch ls, void *ctx)
        step is a descent direction whose first-order decrease F.Y is below the rounding of the energy
        (1e3 eps |E0|), no trial can show a decrease: the iterate is converged as far as the energy can
        tell, and the convergence test ends the solve there (once the constraints hold), instead of
-       stalling. (A direction that is not a descent direction, F.Y <= 0, is a stall.) */
+       stalling. That holds only for a step that is close to the Newton step: if alpha makes more than
+       half of the model's curvature along Y (alpha |Y|^2 > Y.(K - alpha I)Y), the step is short because
+       alpha is large (after the x 10 retries, or at the adaptive schedule's largest alpha^), not because
+       the iterate is converged, and the rejection is a stall. (A direction that is not a descent
+       direction, F.Y <= 0, is a stall too.) */
     PetscScalar fy;
     PetscCall(VecDot(F, Y, &fy));
     if (PetscRealPart(fy) > 0 && PetscRealPart(fy) <= 1e3 * PETSC_MACHINE_EPSILON * PetscAbsReal(M->E0)) {
-      M->resolved = PETSC_TRUE;
-      PetscCall(PetscInfo(M, "rejected step with first-order decrease %g below the energy's rounding (E %g): converged to the energy's resolution\n", (double)PetscRealPart(fy), (double)M->E0));
+      PetscScalar yky, yy;
+      PetscCall(MatMult(M->K, Y, G));
+      PetscCall(VecDot(Y, G, &yky));
+      PetscCall(VecDot(Y, Y, &yy));
+      if (M->alpha * PetscRealPart(yy) <= PetscRealPart(yky) - M->alpha * PetscRealPart(yy)) {
+        M->resolved = PETSC_TRUE;
+        PetscCall(PetscInfo(M, "rejected step with first-order decrease %g below the energy's rounding (E %g): converged to the energy's resolution\n", (double)PetscRealPart(fy), (double)M->E0));
+      } else PetscCall(PetscInfo(M, "rejected step with first-order decrease %g below the energy's rounding (E %g), shortened by alpha (%g of the model's curvature along it): a stall\n", (double)PetscRealPart(fy), (double)M->E0, (double)(M->alpha * PetscRealPart(yy) / PetscRealPart(yky))));
     }
     M->stalls++;
     M->stallsTotal++;

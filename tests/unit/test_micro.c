@@ -559,6 +559,25 @@ static PetscErrorCode TestAdaptive(void)
     PetscCall(HylcMicroSetStepClearance(M, 0));
     PetscCall(HylcMicroSetStepLimit(M, 0.05, 0.15));
   }
+  { /* the fallback: an adaptive schedule held at alpha^ = 1e10 makes steps too short to converge in 20
+       iterations; the solve is repeated with the paper schedule, which converges to its Psi (rtol 1e-10);
+       without the fallback the status is the iteration cap */
+    HylcMicroResult rf;
+    SNES            snes;
+    PetscInt        maxit;
+    PetscCall(HylcMicroGetSNES(M, &snes));
+    PetscCall(SNESGetTolerances(snes, NULL, NULL, NULL, &maxit, NULL));
+    PetscCall(SNESSetTolerances(snes, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, 20, PETSC_DEFAULT));
+    PetscCall(HylcMicroSetRegularizationSchedule(M, HYLC_MICRO_ALPHA_ADAPTIVE, PETSC_DEFAULT, 1e10, 1e10));
+    PetscCall(HylcMicroSolve(M, zs[1], &rf));
+    HYLC_CHECK(rf.status == HYLC_MICRO_CONVERGED && rf.fallback && rf.iterations > 20 && PetscAbsReal(rf.psi - psi1) <= 1e-8 * PetscAbsReal(psi1), "plain weave, adaptive at alpha^ 1e10, 20 iterations: status %s, fallback %d, %d iterations, psi %.12g, paper %.12g", HylcMicroStatuses[rf.status], (int)rf.fallback, (int)rf.iterations, (double)rf.psi, (double)psi1);
+    PetscCall(HylcMicroSetRegularizationFallback(M, PETSC_FALSE));
+    PetscCall(HylcMicroSolve(M, zs[1], &rf));
+    HYLC_CHECK(rf.status == HYLC_MICRO_MAX_IT && !rf.fallback && rf.iterations == 20, "plain weave, adaptive at alpha^ 1e10, 20 iterations, no fallback: status %s, fallback %d, %d iterations", HylcMicroStatuses[rf.status], (int)rf.fallback, (int)rf.iterations);
+    PetscCall(HylcMicroSetRegularizationFallback(M, PETSC_TRUE));
+    PetscCall(HylcMicroSetRegularizationSchedule(M, HYLC_MICRO_ALPHA_PAPER, PETSC_DEFAULT, 1e-2, 1e10));
+    PetscCall(SNESSetTolerances(snes, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, maxit, PETSC_DEFAULT));
+  }
   PetscCall(HylcMicroSetRegularizationSchedule(M, HYLC_MICRO_ALPHA_HYBRID, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
   /* the view names the schedule */
   PetscCall(ViewToTempFile((PetscObject)M, path));

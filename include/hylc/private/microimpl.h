@@ -22,6 +22,7 @@ typedef struct {
   PetscReal alphaMin, alphaMax; /* adaptive: the bounds of alpha^ */
   PetscReal stepClear;          /* step limit also <= stepClear x the clearance (0: off) */
   PetscReal alphaSwitch;        /* hybrid: adaptive once ||M g||_inf <= alphaSwitch ||M g_0||_inf */
+  PetscBool alphaFallback;      /* adaptive, hybrid: a solve that does not converge is repeated with the paper schedule */
   PetscBool saddleTest;         /* second-order test of a converged state */
   PetscInt  saddleMax;          /* escapes from saddle points per solve */
   PetscReal saddleTol;          /* negative curvature below -saddleTol max|diag(M H M)| makes a saddle */
