@@ -270,7 +270,8 @@ static PetscErrorCode LineSearch(SNESLineSearch ls, void *ctx)
       if (M->alpha * PetscRealPart(yy) <= PetscRealPart(yky) - M->alpha * PetscRealPart(yy)) {
         M->resolved = PETSC_TRUE;
         PetscCall(PetscInfo(M, "rejected step with first-order decrease %g below the energy's rounding (E %g): converged to the energy's resolution\n", (double)PetscRealPart(fy), (double)M->E0));
-      } else PetscCall(PetscInfo(M, "rejected step with first-order decrease %g below the energy's rounding (E %g), shortened by alpha (%g of the model's curvature along it): a stall\n", (double)PetscRealPart(fy), (double)M->E0, (double)(M->alpha * PetscRealPart(yy) / PetscRealPart(yky))));
+      } else
+        PetscCall(PetscInfo(M, "rejected step with first-order decrease %g below the energy's rounding (E %g), shortened by alpha (%g of the model's curvature along it): a stall\n", (double)PetscRealPart(fy), (double)M->E0, (double)(M->alpha * PetscRealPart(yy) / PetscRealPart(yky))));
     }
     M->stalls++;
     M->stallsTotal++;
