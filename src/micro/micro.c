@@ -268,25 +268,6 @@ PetscErrorCode HylcMicroSetUp(HylcMicro M)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/*@C
-  HylcMicroSolve - Solves for the equilibrium of the tile under the strain z (Algorithms C2, C3) from the
-  initial guess u~ = 0 (or from the state of HylcMicroSetInitialState(), once), setting the solver up first if needed. Not collective (PETSC_COMM_SELF).
-
-  Input Parameters:
-+ M - the solver, with a pattern
-- z - the strain (sx, sa, sy, II00, II01, II11; II in 1/m)
-
-  Output Parameter:
-. res - the result: psi, energies, status, iterations, residuals and times
-
-  Notes:
-  The result's status says whether it converged; a non-converged sample is not an error. An error inside
-  the solve (a bug, no memory, a bad option) is an error of this function.
-
-  Level: beginner
-
-.seealso: HylcMicroSetUp(), HylcMicroGetState(), HylcMicroResultView()
-@*/
 /* one solve of HylcMicroSolve() with the current parameters: from the cold guess, or from the state of
    HylcMicroSetInitialState() if one is pending */
 static PetscErrorCode SolveOnce(HylcMicro M, const PetscReal z[6], HylcMicroResult *res)
@@ -401,6 +382,27 @@ static PetscErrorCode SolveOnce(HylcMicro M, const PetscReal z[6], HylcMicroResu
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMicroSolve - Solves for the equilibrium of the tile under the strain z (Algorithms C2, C3) from the
+  initial guess u~ = 0 (or from the state of HylcMicroSetInitialState(), once), setting the solver up first if needed. Not collective (PETSC_COMM_SELF).
+
+  Input Parameters:
++ M - the solver, with a pattern
+- z - the strain (sx, sa, sy, II00, II01, II11; II in 1/m)
+
+  Output Parameter:
+. res - the result: psi, energies, status, iterations, residuals and times
+
+  Notes:
+  The result's status says whether it converged; a non-converged sample is not an error. With the adaptive
+  or hybrid schedule, a solve that does not converge is repeated from the same start with the paper's
+  schedule (HylcMicroSetRegularizationFallback(); res->fallback says so). An error inside
+  the solve (a bug, no memory, a bad option) is an error of this function.
+
+  Level: beginner
+
+.seealso: HylcMicroSetUp(), HylcMicroGetState(), HylcMicroResultView()
+@*/
 PetscErrorCode HylcMicroSolve(HylcMicro M, const PetscReal z[6], HylcMicroResult *res)
 {
   PetscFunctionBegin;
