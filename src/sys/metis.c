@@ -64,17 +64,17 @@ static PetscErrorCode MetisOptions(idx_t opt[METIS_NOPTIONS])
 PetscErrorCode HylcMetisSetFromOptions(MPI_Comm comm)
 {
   PetscInt  seed = -1, nseps = 1, ufactor = 200;
-  PetscBool b = PETSC_TRUE, set;
+  PetscBool b = PETSC_TRUE;
+  idx_t     opt[METIS_NOPTIONS];
 
   PetscFunctionBegin;
   PetscOptionsBegin(comm, NULL, "METIS nested-dissection ordering (metisnd; the factorization of the Newton matrix)", "Mat");
   PetscCall(PetscOptionsInt("-hylc_metis_seed", "METIS random seed (-1: METIS's own, deterministic)", "HylcMetisNodeND", seed, &seed, NULL));
-  PetscCall(PetscOptionsInt("-hylc_metis_nseps", "Separators computed at each bisection, the smallest kept", "HylcMetisNodeND", nseps, &nseps, &set));
-  PetscCheck(!set || nseps >= 1, comm, PETSC_ERR_USER_INPUT, "option -hylc_metis_nseps: %" PetscInt_FMT " is not >= 1", nseps);
-  PetscCall(PetscOptionsInt("-hylc_metis_ufactor", "Allowed imbalance of the bisections, in 1/1000 (METIS's default)", "HylcMetisNodeND", ufactor, &ufactor, &set));
-  PetscCheck(!set || ufactor >= 1, comm, PETSC_ERR_USER_INPUT, "option -hylc_metis_ufactor: %" PetscInt_FMT " is not >= 1", ufactor);
+  PetscCall(PetscOptionsInt("-hylc_metis_nseps", "Separators computed at each bisection, the smallest kept (>= 1)", "HylcMetisNodeND", nseps, &nseps, NULL));
+  PetscCall(PetscOptionsInt("-hylc_metis_ufactor", "Allowed imbalance of the bisections, in 1/1000 (>= 1; METIS's default)", "HylcMetisNodeND", ufactor, &ufactor, NULL));
   PetscCall(PetscOptionsBool("-hylc_metis_compress", "Compress vertices with identical adjacency", "HylcMetisNodeND", b, &b, NULL));
   PetscOptionsEnd();
+  PetscCall(MetisOptions(opt)); /* the checks of the values, the same as at each ordering */
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
