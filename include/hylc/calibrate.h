@@ -61,14 +61,23 @@ PETSC_EXTERN PetscErrorCode HylcCalibrateSetRoles(HylcCalibrate, const HylcCalib
 /* bounds of parameter j (0 < lo <= hi) */
 PETSC_EXTERN PetscErrorCode HylcCalibrateSetBounds(HylcCalibrate, PetscInt j, PetscReal lo, PetscReal hi);
 PETSC_EXTERN PetscErrorCode HylcCalibrateSetMaxIterations(HylcCalibrate, PetscInt);
-PETSC_EXTERN PetscErrorCode HylcCalibrateSetLevenbergMarquardt(HylcCalibrate, PetscInt maxReject, PetscReal lambda);
-PETSC_EXTERN PetscErrorCode HylcCalibrateSetTolerances(HylcCalibrate, PetscReal xtol, PetscReal ftol, PetscReal fatol, PetscReal flatTol);
-PETSC_EXTERN PetscErrorCode HylcCalibrateSetPlanRanges(HylcCalibrate, const HylcPlanRanges *);
-PETSC_EXTERN PetscErrorCode HylcCalibrateSetTerms(HylcCalibrate, PetscInt terms);
-PETSC_EXTERN PetscErrorCode HylcCalibrateSetSampleCounts(HylcCalibrate, PetscInt n1, PetscInt n2);
-PETSC_EXTERN PetscErrorCode HylcCalibrateSetThinning(HylcCalibrate, PetscInt stride, PetscInt maxSamples);
-PETSC_EXTERN PetscErrorCode HylcCalibrateSetTermWeight(HylcCalibrate, const char term[], PetscReal w);
-PETSC_EXTERN PetscErrorCode HylcCalibrateSetReference(HylcCalibrate, HylcReferenceMode, const char output[]);
+/* -calibrate_start: how each evaluation's samples are solved: auto (the way the target was made: a samples
+   file's own start, cold for a table, raw data or CSV, as the paper's were computed), cold, or continue */
+typedef enum {
+  HYLC_CALIBRATE_START_AUTO     = 0,
+  HYLC_CALIBRATE_START_COLD     = 1,
+  HYLC_CALIBRATE_START_CONTINUE = 2
+} HylcCalibrateStart;
+PETSC_EXTERN const char *const HylcCalibrateStarts[];
+PETSC_EXTERN PetscErrorCode    HylcCalibrateSetStart(HylcCalibrate, HylcCalibrateStart);
+PETSC_EXTERN PetscErrorCode    HylcCalibrateSetLevenbergMarquardt(HylcCalibrate, PetscInt maxReject, PetscReal lambda);
+PETSC_EXTERN PetscErrorCode    HylcCalibrateSetTolerances(HylcCalibrate, PetscReal xtol, PetscReal ftol, PetscReal fatol, PetscReal flatTol);
+PETSC_EXTERN PetscErrorCode    HylcCalibrateSetPlanRanges(HylcCalibrate, const HylcPlanRanges *);
+PETSC_EXTERN PetscErrorCode    HylcCalibrateSetTerms(HylcCalibrate, PetscInt terms);
+PETSC_EXTERN PetscErrorCode    HylcCalibrateSetSampleCounts(HylcCalibrate, PetscInt n1, PetscInt n2);
+PETSC_EXTERN PetscErrorCode    HylcCalibrateSetThinning(HylcCalibrate, PetscInt stride, PetscInt maxSamples);
+PETSC_EXTERN PetscErrorCode    HylcCalibrateSetTermWeight(HylcCalibrate, const char term[], PetscReal w);
+PETSC_EXTERN PetscErrorCode    HylcCalibrateSetReference(HylcCalibrate, HylcReferenceMode, const char output[]);
 
 /* The objective f at explicit parameter values p = (E, Es, G, kc) (no ties applied) and its gradient
    grad[j] = df / dlog p_j by the envelope theorem (may be NULL); one solve per sample. *nfailed (may be

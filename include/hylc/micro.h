@@ -87,6 +87,9 @@ PETSC_EXTERN PetscErrorCode HylcMicroSolve(HylcMicro, const PetscReal[6], HylcMi
 PETSC_EXTERN PetscErrorCode HylcMicroGetPeriodic(HylcMicro, HylcPeriodic *);
 PETSC_EXTERN PetscErrorCode HylcMicroGetState(HylcMicro, PetscReal[]);
 PETSC_EXTERN PetscErrorCode HylcMicroSetInitialState(HylcMicro, const PetscReal[]);
+PETSC_EXTERN PetscErrorCode HylcMicroSetInitialFluctuation(HylcMicro, const PetscReal[]);
+PETSC_EXTERN PetscErrorCode HylcMicroGetFluctuation(HylcMicro, const PetscReal[], PetscReal[]);
+PETSC_EXTERN PetscErrorCode HylcMicroSolveContinued(HylcMicro, const PetscReal[6], const PetscReal[], HylcMicroResult *, PetscReal[], PetscBool *);
 PETSC_EXTERN PetscErrorCode HylcMicroGetContinued(HylcMicro, PetscBool *);
 PETSC_EXTERN PetscErrorCode HylcMicroGetEnergyHistory(HylcMicro, PetscInt *, const PetscReal **);
 PETSC_EXTERN PetscErrorCode HylcMicroResultView(const HylcMicroResult *, PetscViewer);

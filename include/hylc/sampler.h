@@ -1,9 +1,11 @@
 #pragma once
 /* HylcSampler: the sampling job of Algorithm C4 over MPI (the main program, hylc-sample).
    Every rank takes batches of the plan's samples from a shared counter (dynamic scheduling by MPI
-   one-sided fetch-and-add) and solves them with one HylcMicro on PETSC_COMM_SELF, each from u~ = 0, so results do not depend on the number of ranks.
-   With -sampler_start continue the unit of work is a half-line of the plan (HylcPlanUnits), solved whole by
-   one rank, each sample from its predecessor's equilibrium: results still do not depend on the ranks.
+   one-sided fetch-and-add) and solves them with one HylcMicro on PETSC_COMM_SELF; with -sampler_start cold
+   each from u~ = 0, so results do not depend on the number of ranks.
+   With -sampler_start continue (the default) or both, the unit of work is a half-line of the plan
+   (HylcPlanUnits), solved whole by one rank, each sample from its predecessor's equilibrium (both: and
+   cold): results still do not depend on the ranks.
    Rank 0 gathers the records as they arrive, appends them to a journal (survives SIGKILL; -sampler_resume
    continues without recomputing finished samples), reports progress, and writes the HDF5 file at the end
    (docs/output-format.md). A sample that fails is recorded with its status, never dropped. */
@@ -41,14 +43,17 @@ PETSC_EXTERN PetscErrorCode HylcSamplerSetPlanRanges(HylcSampler, const HylcPlan
 PETSC_EXTERN PetscErrorCode HylcSamplerSetSampleCounts(HylcSampler, PetscInt, PetscInt);
 PETSC_EXTERN PetscErrorCode HylcSamplerSetTerms(HylcSampler, PetscInt);
 PETSC_EXTERN PetscErrorCode HylcSamplerSetBatchSize(HylcSampler, PetscInt);
-/* -sampler_start: cold (every sample from u~ = 0) or continue (half-lines from the zero strain outward,
-   each sample from its predecessor's equilibrium; HylcPlanUnits) */
+/* -sampler_start: cold (every sample from u~ = 0), continue (half-lines from the zero strain outward, each
+   sample from its predecessor's equilibrium; HylcPlanUnits) or both (every sample from both starts, the
+   lower Psi kept, the other recorded: a map of where the tile is multistable) */
 typedef enum {
   HYLC_SAMPLER_START_COLD     = 0,
-  HYLC_SAMPLER_START_CONTINUE = 1
+  HYLC_SAMPLER_START_CONTINUE = 1,
+  HYLC_SAMPLER_START_BOTH     = 2
 } HylcSamplerStart;
 PETSC_EXTERN const char *const HylcSamplerStarts[];
 PETSC_EXTERN PetscErrorCode    HylcSamplerSetStart(HylcSampler, HylcSamplerStart);
+PETSC_EXTERN PetscErrorCode    HylcSamplerSetBothTolerance(HylcSampler, PetscReal);
 PETSC_EXTERN PetscErrorCode    HylcSamplerSetProgressInterval(HylcSampler, PetscReal);
 PETSC_EXTERN PetscErrorCode    HylcSamplerSetExportRaw(HylcSampler, const char[], PetscReal);
 PETSC_EXTERN PetscErrorCode    HylcSamplerSetReference(HylcSampler, HylcReferenceMode, const char[]);

@@ -10,16 +10,19 @@ typedef struct {
   int    term;   /* 0: zero sample, 1..5: 1D terms, 6..14: 2D terms (include/hylc/plan.h) */
   int    status; /* HylcMicroStatus */
   int    iterations;
-  int    retries;   /* regularization increases */
-  double z[6];      /* sx, sa, sy, II00, II01, II11 */
-  double psi;       /* J/m^2 */
-  double parts[4];  /* stretch, bend, twist, contact energy (J) */
-  double residual;  /* |z| / |z0| */
-  double cresidual; /* |A y - dL| / r */
-  double time;      /* wall seconds (both solves of a sample retried cold) */
-  int    start;     /* HylcSampleStart: 0 cold, 1 continued, 2 continued, did not converge, retried cold */
-  int    negcurv;   /* negative eigenvalues of the projected Hessian at the final state (HylcMicroResult); -1 not tested */
-  int    escapes;   /* saddle escapes of the kept solve (HylcMicroResult) */
+  int    retries;     /* regularization increases */
+  double z[6];        /* sx, sa, sy, II00, II01, II11 */
+  double psi;         /* J/m^2 */
+  double parts[4];    /* stretch, bend, twist, contact energy (J) */
+  double residual;    /* |z| / |z0| */
+  double cresidual;   /* |A y - dL| / r */
+  double time;        /* wall seconds (both solves of a sample retried cold) */
+  int    start;       /* HylcSampleStart: 0 cold, 1 continued, 2 continued, did not converge, retried cold */
+  int    negcurv;     /* negative eigenvalues of the projected Hessian at the final state (HylcMicroResult); -1 not tested */
+  int    escapes;     /* saddle escapes of the kept solve (HylcMicroResult) */
+  double psiOther;    /* -sampler_start both: Psi of the start not kept (J/m^2); NaN if it was not solved */
+  int    statusOther; /* its HylcMicroStatus; -1 not solved (other starts, or the first sample of a half-line) */
+  int    multistable; /* both starts converged and their Psi differ by more than -sampler_both_rtol: 1; 0 if not; -1 not compared */
 } HylcSampleRecord;
 
 /* how a sample's solve started (/samples/start) */

@@ -59,6 +59,7 @@ PetscErrorCode HylcCalibrateCreate(MPI_Comm comm, HylcCalibrate *out)
   C->ftol      = 1e-10;
   C->fatol     = 1e-20;
   C->flatTol   = 1e-4;
+  C->start     = HYLC_CALIBRATE_START_AUTO;
   *out         = C;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -68,7 +69,9 @@ PetscErrorCode HylcCalibrateResetSamples_Private(HylcCalibrate C)
   PetscFunctionBegin;
   PetscCall(PetscFree3(C->z, C->tpsi, C->term));
   PetscCall(PetscFree2(C->rec0, C->rec1));
-  C->m = 0;
+  PetscCall(PetscFree2(C->ustart, C->uorder));
+  C->nunits = 0;
+  C->m      = 0;
   for (int t = 0; t < HYLC_CALIB_NTERM; t++) {
     C->nt[t]    = 0;
     C->range[t] = 0;
@@ -263,6 +266,8 @@ PetscErrorCode HylcCalibrateSetUp(HylcCalibrate C)
   if (C->dump[0]) PetscCall(HylcFileCheckOutput(comm, C->dump, "-calibrate_dump"));
   if (C->refout[0]) PetscCall(HylcFileCheckOutput(comm, C->refout, "-reference_output"));
   PetscCall(HylcCalibrateReadTarget_Private(C)); /* checks the target's path and content */
+  C->continued = (PetscBool)(C->start == HYLC_CALIBRATE_START_CONTINUE || (C->start == HYLC_CALIBRATE_START_AUTO && C->targetResolved == HYLC_CALIB_TARGET_SAMPLES && C->targetContinued));
+  PetscCall(HylcCalibrateBuildUnits_Private(C));
   if (C->output[0]) PetscCall(HylcFileCheckDistinct(comm, C->output, "-calibrate_output", C->target, "-calibrate_target"));
   if (C->dump[0]) PetscCall(HylcFileCheckDistinct(comm, C->dump, "-calibrate_dump", C->target, "-calibrate_target"));
   PetscCall(PetscMalloc2(C->m * HYLC_CALIB_NRECORD, &C->rec0, C->m * HYLC_CALIB_NRECORD, &C->rec1));
@@ -403,6 +408,7 @@ PetscErrorCode HylcCalibrateView(HylcCalibrate C, PetscViewer viewer)
   PetscCall(PetscObjectTypeCompare((PetscObject)viewer, PETSCVIEWERASCII, &isascii));
   if (!isascii) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PetscViewerASCIIPrintf(viewer, "calibration: pattern %s%s, target %s (%s), %" PetscInt_FMT " samples\n", C->patLabel, C->refComputed ? " (reference state computed with the initial parameters)" : "", C->target, HylcCalibTargetTypes[C->targetResolved], C->m));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "samples solved %s (-calibrate_start %s; %" PetscInt_FMT " units of work)\n", C->continued ? "by continuation along each 1D term's half-line from zero outward" : "cold, each from the reference state", HylcCalibrateStarts[C->start], C->nunits));
   for (int j = 0; j < HYLC_CALIBRATE_NPARAM; j++) {
     const char *flag = "";
     if (C->solved && C->held[j])

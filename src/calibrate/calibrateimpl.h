@@ -55,6 +55,11 @@ struct _p_HylcCalibrate {
   PetscInt  maxIt, maxReject;
   PetscReal lambda0, xtol, ftol, fatol, flatTol;
   /* the samples: 0 is the base strain z_b */
+  HylcCalibrateStart start;    /* -calibrate_start */
+  PetscBool  targetContinued;  /* a samples target with continued samples (read by HylcCalibrateReadTarget_Private) */
+  PetscBool  continued;        /* the start resolved in HylcCalibrateSetUp(): the units below solved by continuation */
+  PetscInt   nunits, *ustart;  /* units of work: samples uorder[ustart[u] .. ustart[u+1]) (m + 1 entries) */
+  PetscInt  *uorder;           /* m: the samples, unit by unit, each unit from the zero strain outward */
   PetscInt   m;
   PetscReal *z, *tpsi; /* 6m, m: strains and the target energy */
   PetscInt  *term;     /* m */
@@ -75,6 +80,9 @@ PETSC_INTERN PetscErrorCode HylcCalibrateResetSamples_Private(HylcCalibrate);
 PETSC_INTERN PetscErrorCode HylcCalibrateSetUpSolver_Private(HylcCalibrate);
 /* target.c: reads the target and fills z, target, term, nt, range (collective) */
 PETSC_INTERN PetscErrorCode HylcCalibrateReadTarget_Private(HylcCalibrate);
+/* solve.c: the units of work of the samples (continuation: the half-lines of the 1D terms; otherwise or
+   for the other samples, one sample each) */
+PETSC_INTERN PetscErrorCode HylcCalibrateBuildUnits_Private(HylcCalibrate);
 /* term name (the plan's names and "other") */
 PETSC_INTERN const char *HylcCalibrateTermName_Private(PetscInt t);
 /* solve.c: one evaluation at explicit p (no ties): the records (m x HYLC_CALIB_NRECORD) on every rank */

@@ -166,6 +166,39 @@ PetscErrorCode HylcCalibrateSetMaxIterations(HylcCalibrate C, PetscInt n)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+const char *const HylcCalibrateStarts[] = {"auto", "cold", "continue", "HylcCalibrateStart", "HYLC_CALIBRATE_START_", NULL};
+
+/*@C
+  HylcCalibrateSetStart - How the samples of an evaluation are solved (option -calibrate_start): auto (the
+  default: the way the target was made, so that the model is compared with the target on the same branch
+  of its equilibria: continue for a samples file with continued samples, cold for one without, and cold
+  for a table, raw data.txt or CSV, as the paper's tables and data were computed by cold starts), continue
+  (each 1D term's half-line from the zero strain outward, each sample from its predecessor's equilibrium,
+  retried cold if that does not converge, as hylc-sample's default; the base strain, 2D terms and rows off
+  the axes cold) or cold (every sample from the reference state, the paper's procedure). The knits have
+  several equilibria at large compressions, and the two starts reach different ones (docs/method.md,
+  "Multistability"). The gradient by the envelope theorem holds for either.
+
+  Not collective
+
+  Input Parameters:
++ C     - the calibration
+- start - HYLC_CALIBRATE_START_AUTO, HYLC_CALIBRATE_START_COLD or HYLC_CALIBRATE_START_CONTINUE
+
+  Level: intermediate
+
+.seealso: HylcSamplerSetStart(), HylcMicroSolveContinued()
+@*/
+PetscErrorCode HylcCalibrateSetStart(HylcCalibrate C, HylcCalibrateStart start)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
+  PetscCheck(start >= HYLC_CALIBRATE_START_AUTO && start <= HYLC_CALIBRATE_START_CONTINUE, PetscObjectComm((PetscObject)C), PETSC_ERR_ARG_OUTOFRANGE, "-calibrate_start: unknown start %d (auto, cold or continue)", (int)start);
+  C->start = start;
+  PetscCall(HylcCalibrateResetSamples_Private(C));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /*@C
   HylcCalibrateSetLevenbergMarquardt - Rejected trial steps in a row before stopping, and the initial
   damping relative to the diagonal of J^T J (options -calibrate_max_reject, -calibrate_lambda).
@@ -418,6 +451,7 @@ static PetscErrorCode ParseParamList(MPI_Comm comm, const char opt[], const char
 . -sampler_family, -sampler_range_<c> - the plan's ranges (table target), as hylc-sample (HylcCalibrateSetPlanRanges())
 . -calibrate_stride <1>, -calibrate_max_samples <0> - thinning of a file target (HylcCalibrateSetThinning())
 . -calibrate_weight_zero <1>, -calibrate_weights <t=w,...> - weights of Psi(z_b) and of the terms (HylcCalibrateSetTermWeight())
+. -calibrate_start <auto>          - auto (as the target was made), continue (each 1D term's half-line from zero outward) or cold (HylcCalibrateSetStart())
 . -calibrate_max_it <30>            - Levenberg-Marquardt iterations (HylcCalibrateSetMaxIterations())
 . -calibrate_max_reject <8>, -calibrate_lambda <1e-3> - Levenberg-Marquardt (HylcCalibrateSetLevenbergMarquardt())
 . -calibrate_xtol <1e-6>, -calibrate_ftol <1e-10>, -calibrate_fatol <1e-20>, -calibrate_flat_tol <1e-4> - stopping tests, flat directions (HylcCalibrateSetTolerances())
@@ -433,7 +467,7 @@ PetscErrorCode HylcCalibrateSetFromOptions(HylcCalibrate C)
   MPI_Comm       comm        = PetscObjectComm((PetscObject)C);
   char           params[256] = "", tie[256] = "G", terms[512] = "", weights[1024] = "", target[PETSC_MAX_PATH_LEN], output[PETSC_MAX_PATH_LEN], dump[PETSC_MAX_PATH_LEN], refout[PETSC_MAX_PATH_LEN];
   PetscBool      set, pset, tset, ttset;
-  PetscEnum      tt = (PetscEnum)C->targetType, rm = (PetscEnum)C->refmode;
+  PetscEnum      tt = (PetscEnum)C->targetType, rm = (PetscEnum)C->refmode, start = (PetscEnum)C->start;
   PetscInt       n1 = C->n1, n2 = C->n2, stride = C->stride, maxSamples = C->maxSamples, maxIt = C->maxIt, maxReject = C->maxReject;
   PetscReal      wzero = C->wzero, lambda0 = C->lambda0, xtol = C->xtol, ftol = C->ftol, fatol = C->fatol, flatTol = C->flatTol;
   HylcPlanRanges ranges = C->ranges;
@@ -496,6 +530,7 @@ PetscErrorCode HylcCalibrateSetFromOptions(HylcCalibrate C)
   PetscCall(PetscOptionsInt("-calibrate_max_samples", "File target: at most this many rows (thinned evenly within each term; 0: all)", "HylcCalibrateSetThinning", maxSamples, &maxSamples, NULL));
   PetscCall(PetscOptionsReal("-calibrate_weight_zero", "Weight of the relative error of Psi at the base strain (the constant)", "HylcCalibrateSetTermWeight", wzero, &wzero, NULL));
   PetscCall(PetscOptionsString("-calibrate_weights", "Weights of terms, a comma list term=weight (e.g. sx=2,sa-sy=0.5; default 1 each; 'other' for file rows off the plan's axes)", "HylcCalibrateSetTermWeight", weights, weights, sizeof(weights), NULL));
+  PetscCall(PetscOptionsEnum("-calibrate_start", "How each evaluation's samples are solved: auto (as the target was made: a samples file's own start; cold for a table, raw data or CSV), continue (each 1D term's half-line from zero outward, as hylc-sample) or cold (every sample from the reference state, the paper's procedure)", "HylcCalibrateSetStart", HylcCalibrateStarts, start, &start, NULL));
   PetscCall(PetscOptionsInt("-calibrate_max_it", "Levenberg-Marquardt: at most this many iterations (accepted steps)", "HylcCalibrateSetMaxIterations", maxIt, &maxIt, NULL));
   PetscCall(PetscOptionsInt("-calibrate_max_reject", "Levenberg-Marquardt: stop after this many rejected trial steps in a row", "HylcCalibrateSetLevenbergMarquardt", maxReject, &maxReject, NULL));
   PetscCall(PetscOptionsReal("-calibrate_lambda", "Levenberg-Marquardt: initial damping (relative to the diagonal of J^T J)", "HylcCalibrateSetLevenbergMarquardt", lambda0, &lambda0, NULL));
@@ -557,6 +592,7 @@ PetscErrorCode HylcCalibrateSetFromOptions(HylcCalibrate C)
   PetscCall(HylcCalibrateSetMaxIterations(C, maxIt));
   PetscCall(HylcCalibrateSetLevenbergMarquardt(C, maxReject, lambda0));
   PetscCall(HylcCalibrateSetTolerances(C, xtol, ftol, fatol, flatTol));
+  PetscCall(HylcCalibrateSetStart(C, (HylcCalibrateStart)start));
   PetscCall(HylcCalibrateResetSamples_Private(C));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

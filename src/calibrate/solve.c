@@ -9,13 +9,50 @@
 /* energy part matching parameter j: E bend (1), Es stretch (0), G twist (2), kc contact (3) */
 static const int PartOf[HYLC_CALIBRATE_NPARAM] = {1, 0, 2, 3};
 
+/* the coordinate of a 1D term t (1..5) in z: sx, sa, sy, II00, II11 */
+static const int CoordOf1D[6] = {-1, 0, 1, 2, 3, 5};
+
+PetscErrorCode HylcCalibrateBuildUnits_Private(HylcCalibrate C)
+{
+  PetscInt nu = 0, pos = 0;
+
+  PetscFunctionBegin;
+  PetscCall(PetscFree2(C->ustart, C->uorder));
+  PetscCall(PetscMalloc2(C->m + 1, &C->ustart, C->m + 1, &C->uorder));
+  /* the half-lines of the 1D terms (samples at zero strain go with the positive side), each ordered by the
+     distance from zero (insertion sort, stable: equal distances keep the target's order) */
+  if (C->continued)
+    for (PetscInt t = 1; t <= 5; t++)
+      for (int side = 0; side < 2; side++) {
+        const PetscInt first = pos, c = CoordOf1D[t];
+        for (PetscInt i = 1; i < C->m; i++) {
+          if (C->term[i] != t || (side == 0) != (C->z[6 * i + c] >= 0)) continue;
+          PetscInt j = pos++;
+          for (; j > first && PetscAbsReal(C->z[6 * C->uorder[j - 1] + c]) > PetscAbsReal(C->z[6 * i + c]); j--) C->uorder[j] = C->uorder[j - 1];
+          C->uorder[j] = i;
+        }
+        if (pos > first) C->ustart[nu++] = first;
+      }
+  /* every other sample (the base strain, 2D terms, rows off the axes; all of them when cold) alone */
+  for (PetscInt i = 0; i < C->m; i++) {
+    if (C->continued && i > 0 && C->term[i] >= 1 && C->term[i] <= 5) continue;
+    C->ustart[nu++]  = pos;
+    C->uorder[pos++] = i;
+  }
+  PetscCheck(pos == C->m, PETSC_COMM_SELF, PETSC_ERR_PLIB, "The units of the calibration cover %" PetscInt_FMT " of %" PetscInt_FMT " samples", pos, C->m);
+  C->ustart[nu] = pos;
+  C->nunits     = nu;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode HylcCalibrateSolveSamples_Private(HylcCalibrate C, const PetscReal p[], PetscReal rec[])
 {
   MPI_Comm      comm  = PetscObjectComm((PetscObject)C);
   HylcYarnModel model = C->model;
-  PetscInt      nloc = 0, j = 0;
-  PetscReal    *buf, *all;
+  PetscInt      nloc = 0, j = 0, ny = 0;
+  PetscReal    *buf, *all, *y = NULL, *u = NULL;
   PetscMPIInt  *counts, *displs;
+  const int     NB = HYLC_CALIB_NRECORD + 1; /* a record and its sample index */
 
   PetscFunctionBegin;
   model.E  = p[0];
@@ -25,36 +62,52 @@ PetscErrorCode HylcCalibrateSolveSamples_Private(HylcCalibrate C, const PetscRea
   PetscCall(PetscLogEventBegin(HYLC_CalibrateEvaluate, C, 0, 0, 0));
   PetscCall(HylcMicroSetPattern(C->micro, C->pat, &model));
   PetscCall(HylcMicroSetUp(C->micro));
-  for (PetscInt k = C->rank; k < C->m; k += C->size) nloc++;
-  PetscCall(PetscMalloc1(nloc * HYLC_CALIB_NRECORD + 1, &buf));
-  /* static cyclic split: each sample is solved from the reference state by this rank's own solver, so its
-     result does not depend on which rank solves it */
-  for (PetscInt k = C->rank; k < C->m; k += C->size, j++) {
-    HylcMicroResult res;
-    HylcPeriodic    P;
-    PetscReal       area, *o = buf + j * HYLC_CALIB_NRECORD;
-    PetscCall(HylcMicroSolve(C->micro, C->z + 6 * k, &res));
-    PetscCall(HylcMicroGetPeriodic(C->micro, &P));
-    PetscCall(HylcPeriodicGetArea(P, &area));
-    o[0] = res.psi;
-    for (int q = 0; q < HYLC_CALIBRATE_NPARAM; q++) o[1 + q] = res.parts[PartOf[q]] / area; /* dPsi/dlog p_q */
-    o[5] = (PetscReal)res.status;
-    o[6] = (PetscReal)res.iterations;
+  for (PetscInt b = C->rank; b < C->nunits; b += C->size) nloc += C->ustart[b + 1] - C->ustart[b];
+  PetscCall(PetscMalloc1(nloc * NB + 1, &buf));
+  /* static cyclic split of the units (continuation: a 1D term's half-line, from zero outward, each sample
+     from its predecessor's equilibrium, retried cold if that does not converge; cold: one sample each), each
+     unit's first sample from the reference state: a result does not depend on which rank solves it */
+  for (PetscInt b = C->rank; b < C->nunits; b += C->size) {
+    PetscBool prevOk = PETSC_FALSE;
+    for (PetscInt q = C->ustart[b]; q < C->ustart[b + 1]; q++, j++) {
+      const PetscInt  k = C->uorder[q];
+      HylcMicroResult res;
+      HylcPeriodic    P;
+      PetscReal       area, *o = buf + j * NB;
+      PetscCall(HylcMicroSolveContinued(C->micro, C->z + 6 * k, prevOk ? u : NULL, &res, y, NULL));
+      PetscCall(HylcMicroGetPeriodic(C->micro, &P));
+      if (!y && C->continued) { /* the tile's size is known after the first solve */
+        PetscCall(HylcPeriodicGetSizes(P, &ny, NULL, NULL, NULL));
+        PetscCall(PetscMalloc2(ny, &y, ny, &u));
+        PetscCall(HylcMicroGetState(C->micro, y));
+      }
+      prevOk = (PetscBool)(C->continued && res.status == HYLC_MICRO_CONVERGED);
+      if (prevOk) PetscCall(HylcMicroGetFluctuation(C->micro, y, u));
+      PetscCall(HylcPeriodicGetArea(P, &area));
+      o[0] = res.psi;
+      for (int r = 0; r < HYLC_CALIBRATE_NPARAM; r++) o[1 + r] = res.parts[PartOf[r]] / area; /* dPsi/dlog p_r */
+      o[5] = (PetscReal)res.status;
+      o[6] = (PetscReal)res.iterations;
+      o[7] = (PetscReal)k;
+    }
   }
+  PetscCall(PetscFree2(y, u));
   PetscCall(PetscLogEventEnd(HYLC_CalibrateEvaluate, C, 0, 0, 0));
   PetscCall(PetscLogEventBegin(HYLC_CalibrateGather, C, 0, 0, 0));
-  PetscCall(PetscMalloc3(C->size, &counts, C->size, &displs, C->m * HYLC_CALIB_NRECORD + 1, &all));
+  PetscCall(PetscMalloc3(C->size, &counts, C->size, &displs, C->m * NB + 1, &all));
   for (PetscMPIInt r = 0, off = 0; r < C->size; r++) {
     PetscInt nr = 0;
-    for (PetscInt k = r; k < C->m; k += C->size) nr++;
-    counts[r] = (PetscMPIInt)(nr * HYLC_CALIB_NRECORD);
+    for (PetscInt b = r; b < C->nunits; b += C->size) nr += C->ustart[b + 1] - C->ustart[b];
+    counts[r] = (PetscMPIInt)(nr * NB);
     displs[r] = off;
     off += counts[r];
   }
-  PetscCallMPI(MPI_Allgatherv(buf, (PetscMPIInt)(nloc * HYLC_CALIB_NRECORD), MPIU_REAL, all, counts, displs, MPIU_REAL, comm));
-  for (PetscMPIInt r = 0; r < C->size; r++) {
-    PetscInt jj = 0;
-    for (PetscInt k = r; k < C->m; k += C->size, jj++) PetscCall(PetscArraycpy(rec + k * HYLC_CALIB_NRECORD, all + displs[r] + jj * HYLC_CALIB_NRECORD, HYLC_CALIB_NRECORD));
+  PetscCallMPI(MPI_Allgatherv(buf, (PetscMPIInt)(nloc * NB), MPIU_REAL, all, counts, displs, MPIU_REAL, comm));
+  for (PetscInt i = 0; i < C->m; i++) {
+    const PetscReal *o = all + i * NB;
+    const PetscInt   k = (PetscInt)o[HYLC_CALIB_NRECORD];
+    PetscCheck(k >= 0 && k < C->m, PETSC_COMM_SELF, PETSC_ERR_PLIB, "Gathered record of sample %" PetscInt_FMT " outside the %" PetscInt_FMT " samples", k, C->m);
+    PetscCall(PetscArraycpy(rec + k * HYLC_CALIB_NRECORD, o, HYLC_CALIB_NRECORD));
   }
   PetscCall(PetscFree3(counts, displs, all));
   PetscCall(PetscFree(buf));

@@ -158,7 +158,7 @@ static PetscErrorCode ReadCSV(const char path[], Rows *R)
 }
 
 /* samples.h5 of hylc-sample: the converged rows with their terms */
-static PetscErrorCode ReadSamples(const char path[], Rows *R, PetscInt *nskipped)
+static PetscErrorCode ReadSamples(const char path[], Rows *R, PetscInt *nskipped, PetscBool *continued)
 {
   long              n;
   HylcSampleRecord *recs;
@@ -166,7 +166,9 @@ static PetscErrorCode ReadSamples(const char path[], Rows *R, PetscInt *nskipped
 
   PetscFunctionBegin;
   PetscCall(HylcSamplesReadHDF5(path, &n, &recs, &done, NULL));
+  *continued = PETSC_FALSE;
   for (long k = 0; k < n; k++) {
+    if (done[k] && (recs[k].start == HYLC_SAMPLE_START_CONTINUED || recs[k].start == HYLC_SAMPLE_START_RETRIED)) *continued = PETSC_TRUE;
     if (!done[k] || recs[k].status != HYLC_MICRO_CONVERGED) {
       (*nskipped)++;
       continue;
@@ -345,16 +347,17 @@ PetscErrorCode HylcCalibrateReadTarget_Private(HylcCalibrate C)
     }
     PetscCallMPI(MPI_Bcast(&kind, 1, MPI_INT, 0, comm));
   }
-  C->targetResolved = (HylcCalibTargetType)kind;
-  C->nskipped       = 0;
+  C->targetResolved  = (HylcCalibTargetType)kind;
+  C->nskipped        = 0;
+  C->targetContinued = PETSC_FALSE;
   if (kind == HYLC_CALIB_TARGET_TABLE)
     PetscCall(SampleTable(C));
   else {
-    PetscInt head[3] = {0, 0, 0};
+    PetscInt head[4] = {0, 0, 0, 0};
     if (!C->rank) {
       Rows R = {0}, S = {0};
       if (kind == HYLC_CALIB_TARGET_SAMPLES)
-        PetscCall(ReadSamples(path, &R, &C->nskipped));
+        PetscCall(ReadSamples(path, &R, &C->nskipped, &C->targetContinued));
       else if (kind == HYLC_CALIB_TARGET_RAW)
         PetscCall(ReadRaw(path, &R));
       else
@@ -370,8 +373,10 @@ PetscErrorCode HylcCalibrateReadTarget_Private(HylcCalibrate C)
       head[0] = C->m;
       head[1] = C->nrows;
       head[2] = C->nskipped;
+      head[3] = C->targetContinued;
     }
-    PetscCallMPI(MPI_Bcast(head, 3, MPIU_INT, 0, comm));
+    PetscCallMPI(MPI_Bcast(head, 4, MPIU_INT, 0, comm));
+    C->targetContinued = (PetscBool)head[3];
     if (C->rank) {
       C->m        = head[0];
       C->nrows    = head[1];

@@ -18,7 +18,7 @@ static void ParamsDefault(HylcMicroParams *p)
   p->alphaEnd      = 5;
   p->alphaIts      = 400;
   p->maxRetries    = 12;
-  p->alphaSched    = HYLC_MICRO_ALPHA_PAPER;
+  p->alphaSched    = HYLC_MICRO_ALPHA_ADAPTIVE;
   p->alphaFact     = 4;
   p->alphaMin      = 1e-2;
   p->alphaMax      = 1e10;
@@ -536,6 +536,118 @@ PetscErrorCode HylcMicroSetInitialState(HylcMicro M, const PetscReal y[])
   for (PetscInt i = 0; i < M->ny; i++) PetscCheck(!PetscIsInfOrNanReal(y[i]), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "HylcMicroSetInitialState: unknown %" PetscInt_FMT " of the state is not finite (%g)", i, (double)y[i]);
   PetscCall(HylcPeriodicFluctuationToLocal(M->P, y, M->uinit));
   M->haveInit = PETSC_TRUE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcMicroGetFluctuation - The local coordinates of the fluctuation of a state of the tile at the strain of
+  the last solve (HylcPeriodicFluctuationToLocal()): what HylcMicroSetInitialState() carries over. Taken
+  right after a solve, it can be given to HylcMicroSetInitialFluctuation() later, after solves at other
+  strains (the sampler's -sampler_start both solves each sample cold before it continues from its
+  predecessor). Not collective.
+
+  Input Parameters:
++ M - the solver, after a HylcMicroSolve() (its tile is set up at the strain of that solve)
+- y - a state of the tile at that strain (HylcMicroGetState())
+
+  Output Parameter:
+. u - the local fluctuation (the tile's size, HylcPeriodicGetSizes(); may not be y)
+
+  Level: advanced
+
+.seealso: HylcMicroSetInitialFluctuation(), HylcMicroSetInitialState()
+@*/
+PetscErrorCode HylcMicroGetFluctuation(HylcMicro M, const PetscReal y[], PetscReal u[])
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
+  PetscCheck(M->X && M->P && M->setupcalled, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE, "HylcMicroGetFluctuation: no solve yet (the state must be one of the tile at the strain of the last solve)");
+  PetscCall(HylcPeriodicFluctuationToLocal(M->P, y, u));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcMicroSetInitialFluctuation - Makes the next HylcMicroSolve() (only the next one) start from y0(z) plus
+  a fluctuation in local coordinates (HylcMicroGetFluctuation()); HylcMicroSetInitialState(M, y) is this
+  with the fluctuation of y at the strain of the last solve. Not collective.
+
+  Input Parameters:
++ M - the solver, after a HylcMicroSolve() (for the tile's size)
+- u - the local fluctuation, finite; NULL cancels
+
+  Level: advanced
+
+.seealso: HylcMicroGetFluctuation(), HylcMicroSetInitialState()
+@*/
+PetscErrorCode HylcMicroSetInitialFluctuation(HylcMicro M, const PetscReal u[])
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
+  if (!u) {
+    M->haveInit = PETSC_FALSE;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCheck(M->X && M->P && M->setupcalled, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE, "HylcMicroSetInitialFluctuation: no solve yet (the tile's size is not known)");
+  if (M->nuinit != M->ny) {
+    PetscCall(PetscFree(M->uinit));
+    PetscCall(PetscMalloc1(M->ny, &M->uinit));
+    M->nuinit = M->ny;
+  }
+  for (PetscInt i = 0; i < M->ny; i++) PetscCheck(!PetscIsInfOrNanReal(u[i]), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "HylcMicroSetInitialFluctuation: unknown %" PetscInt_FMT " of the fluctuation is not finite (%g)", i, (double)u[i]);
+  PetscCall(PetscArraycpy(M->uinit, u, M->ny));
+  M->haveInit = PETSC_TRUE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* the order of outcomes: converged, then not converged, then non-finite */
+static int OutcomeRank(const HylcMicroResult *r)
+{
+  return r->status == HYLC_MICRO_CONVERGED ? 0 : r->status == HYLC_MICRO_NONFINITE ? 2
+                                                                                   : 1;
+}
+
+/*@C
+  HylcMicroSolveContinued - One step of a continuation: solves at z from the fluctuation u of an earlier
+  equilibrium (HylcMicroGetFluctuation()), and, if that does not converge, again cold (u~ = 0); the better of
+  the two is kept (converged, then not converged, then non-finite; the cold one on a tie). With u NULL it is
+  HylcMicroSolve() from u~ = 0. Not collective.
+
+  Input Parameters:
++ M - the solver, after a first HylcMicroSolve() if u is given
+. z - the strain
+- u - the local fluctuation to start from, or NULL
+
+  Output Parameters:
++ res     - the kept result; its iterations and time are the sums of both solves when it was retried
+. y       - the kept result's state (the tile's size; may be NULL)
+- retried - whether the continued solve was retried cold (may be NULL)
+
+  Level: intermediate
+
+.seealso: HylcMicroSolve(), HylcMicroGetFluctuation(), HylcMicroSetInitialFluctuation()
+@*/
+PetscErrorCode HylcMicroSolveContinued(HylcMicro M, const PetscReal z[6], const PetscReal u[], HylcMicroResult *res, PetscReal y[], PetscBool *retried)
+{
+  HylcMicroResult rc;
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
+  if (retried) *retried = PETSC_FALSE;
+  if (u) PetscCall(HylcMicroSetInitialFluctuation(M, u));
+  PetscCall(HylcMicroSolve(M, z, res));
+  if (y) PetscCall(HylcMicroGetState(M, y));
+  if (!u || res->status == HYLC_MICRO_CONVERGED) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(HylcMicroSolve(M, z, &rc));
+  if (retried) *retried = PETSC_TRUE;
+  rc.iterations += res->iterations;
+  rc.time += res->time;
+  if (OutcomeRank(&rc) <= OutcomeRank(res)) {
+    *res = rc;
+    if (y) PetscCall(HylcMicroGetState(M, y));
+  } else {
+    res->iterations = rc.iterations;
+    res->time       = rc.time;
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

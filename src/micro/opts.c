@@ -39,9 +39,9 @@ PetscErrorCode HylcMicroSetRegularization(HylcMicro M, PetscReal start, PetscRea
 const char *const HylcMicroAlphaSchedules[] = {"paper", "adaptive", "hybrid", "HylcMicroAlphaSchedule", "HYLC_MICRO_ALPHA_", NULL};
 
 /*@C
-  HylcMicroSetRegularizationSchedule - Sets how alpha^ of alpha = alpha^ ||M g||_inf evolves: paper (default), the
-  geometric decay of HylcMicroSetRegularization() over the iteration count; or adaptive, a trust-region-like
-  rule: alpha^ starts at the start value of HylcMicroSetRegularization() and, after each line search, is the
+  HylcMicroSetRegularizationSchedule - Sets how alpha^ of alpha = alpha^ ||M g||_inf evolves: paper (the
+  paper's procedure), the geometric decay of HylcMicroSetRegularization() over the iteration count; or
+  adaptive (the default), a trust-region-like rule: alpha^ starts at the start value of HylcMicroSetRegularization() and, after each line search, is the
   alpha^ the step was computed with (after any x 10 retries) divided by factor if the full step was accepted
   and the actual energy decrease is more than 3/4 of the decrease predicted by the quadratic model of the
   unregularized Hessian, multiplied by factor if it is less than 1/4 or the step was backtracked, by
@@ -60,7 +60,7 @@ const char *const HylcMicroAlphaSchedules[] = {"paper", "adaptive", "hybrid", "H
 - max      - adaptive: the largest alpha^, >= min (default 1e10)
 
   Options Database Keys:
-+ -micro_alpha_schedule <paper> - paper, adaptive or hybrid
++ -micro_alpha_schedule <adaptive> - adaptive, paper (the paper's procedure) or hybrid
 . -micro_alpha_factor <4> - factor
 . -micro_alpha_min <1e-2> - min
 - -micro_alpha_max <1e10> - max
@@ -359,7 +359,7 @@ PetscErrorCode HylcMicroSetSaddleEscape(HylcMicro M, PetscBool test, PetscInt ma
 
   Options Database Keys:
 + -micro_alpha_start, -micro_alpha_end, -micro_alpha_its, -micro_alpha_retries - HylcMicroSetRegularization()
-. -micro_alpha_schedule paper|adaptive, -micro_alpha_factor, -micro_alpha_min, -micro_alpha_max - HylcMicroSetRegularizationSchedule()
+. -micro_alpha_schedule adaptive|paper|hybrid, -micro_alpha_factor, -micro_alpha_min, -micro_alpha_max - HylcMicroSetRegularizationSchedule()
 . -micro_twist_scale - HylcMicroSetTwistScale()
 . -micro_step_p0, -micro_step_p1 - HylcMicroSetStepLimit()
 . -micro_ls_factor, -micro_ls_max, -micro_max_stalls - HylcMicroSetLineSearch()
@@ -398,7 +398,7 @@ PetscErrorCode HylcMicroSetFromOptions(HylcMicro M)
   PetscCall(PetscOptionsInt("-alpha_its", "Regularization schedule: iterations of the geometric decay", "HylcMicroSetRegularization", p.alphaIts, &p.alphaIts, NULL));
   PetscCall(PetscOptionsInt("-alpha_retries", "Retries with alpha x 10 when the Newton matrix is indefinite", "HylcMicroSetRegularization", p.maxRetries, &p.maxRetries, NULL));
   PetscCall(PetscStrncpy(sched, HylcMicroAlphaSchedules[p.alphaSched], sizeof(sched)));
-  PetscCall(PetscOptionsString("-alpha_schedule", "Regularization schedule of alpha^: paper (decay over alpha_its iterations), adaptive (trust-region-like: down after good steps, up after poor or rejected ones) or hybrid (paper until ||M g||_inf <= alpha_switch x its initial value, then adaptive)", "HylcMicroSetRegularizationSchedule", sched, sched, sizeof(sched), &schedSet));
+  PetscCall(PetscOptionsString("-alpha_schedule", "Regularization schedule of alpha^: adaptive (trust-region-like: down after good steps, up after poor or rejected ones; the default), paper (the paper's decay over alpha_its iterations) or hybrid (paper until ||M g||_inf <= alpha_switch x its initial value, then adaptive)", "HylcMicroSetRegularizationSchedule", sched, sched, sizeof(sched), &schedSet));
   PetscCall(PetscOptionsReal("-alpha_factor", "Adaptive regularization: alpha^ / factor after a good step, x factor after a poor one", "HylcMicroSetRegularizationSchedule", p.alphaFact, &p.alphaFact, NULL));
   PetscCall(PetscOptionsReal("-alpha_min", "Adaptive regularization: smallest alpha^", "HylcMicroSetRegularizationSchedule", p.alphaMin, &p.alphaMin, NULL));
   PetscCall(PetscOptionsReal("-alpha_max", "Adaptive regularization: largest alpha^", "HylcMicroSetRegularizationSchedule", p.alphaMax, &p.alphaMax, NULL));

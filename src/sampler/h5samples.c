@@ -32,18 +32,22 @@ static PetscErrorCode DatasetInt(hid_t loc, const char name[], PetscInt n, Petsc
 
 static PetscErrorCode WriteSamplesGroup(hid_t file, long N, const HylcSampleRecord recs[], const unsigned char done[])
 {
-  double *strain, *psi, *parts, *res, *cres, *t;
-  int    *term, *status, *its, *retries, *start, *negcurv, *escapes;
+  double *strain, *psi, *parts, *res, *cres, *t, *psio;
+  int    *term, *status, *its, *retries, *start, *negcurv, *escapes, *stato, *multi;
   hid_t   g;
   int     nstat = HylcSamplesNumStatuses_();
 
   PetscFunctionBegin;
   PetscCall(PetscMalloc6(6 * N + 1, &strain, N + 1, &psi, 4 * N + 1, &parts, N + 1, &res, N + 1, &cres, N + 1, &t));
   PetscCall(PetscMalloc7(N + 1, &term, N + 1, &status, N + 1, &its, N + 1, &retries, N + 1, &start, N + 1, &negcurv, N + 1, &escapes));
+  PetscCall(PetscMalloc3(N + 1, &psio, N + 1, &stato, N + 1, &multi));
   for (long k = 0; k < N; k++) {
     start[k]   = done && done[k] ? recs[k].start : -1;
     negcurv[k] = done && done[k] ? recs[k].negcurv : -1;
     escapes[k] = done && done[k] ? recs[k].escapes : -1;
+    psio[k]    = done && done[k] ? recs[k].psiOther : NAN;
+    stato[k]   = done && done[k] ? recs[k].statusOther : -1;
+    multi[k]   = done && done[k] ? recs[k].multistable : -1;
     if (done && done[k]) {
       const HylcSampleRecord *r = &recs[k];
       for (int i = 0; i < 6; i++) strain[6 * k + i] = r->z[i];
@@ -77,9 +81,12 @@ static PetscErrorCode WriteSamplesGroup(hid_t file, long N, const HylcSampleReco
   HylcCallHDF5(HylcH5WriteDataset(g, "status", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, status, "1", "HylcMicroStatus of the Newton solve, index into /samples@status_names (0 converged, 1 iteration_cap, 2 time_cap, 3 stalled, 4 nonfinite; 5 failed is reserved, no longer produced); -1: not computed (the run ended before this sample, all its values are NaN or -1)"));
   HylcCallHDF5(HylcH5WriteDataset(g, "iterations", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, its, "1", "Newton iterations; -1 not computed"));
   HylcCallHDF5(HylcH5WriteDataset(g, "retries", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, retries, "1", "regularization increases (alpha x 10 for an indefinite K); -1 not computed"));
-  HylcCallHDF5(HylcH5WriteDataset(g, "start", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, start, "1", "how the solve started (-sampler_start): 0 cold (u~ = 0), 1 continued from the equilibrium of the sample before it on its half-line, 2 continued, did not converge, retried cold (the better of the two kept; iterations and time are the sums of both); -1 not computed"));
+  HylcCallHDF5(HylcH5WriteDataset(g, "start", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, start, "1", "how the kept solve started (-sampler_start): 0 cold (u~ = 0), 1 continued from the equilibrium of the sample before it on its half-line, 2 continued, did not converge, retried cold (the better of the two kept; iterations and time are the sums of both); -1 not computed. With -sampler_start both, 0 or 1 says which start was kept (iterations and time are the sums of both)"));
   HylcCallHDF5(HylcH5WriteDataset(g, "negcurv", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, negcurv, "1", "second-order test of the final state (-micro_saddle_test): the number of negative eigenvalues of the Hessian on the tangent space of the constraints, 0 a local minimum, > 0 a saddle point (its escapes did not reach a minimum); -1 not tested (test off, solve not converged, or no inertia from the factorization) or not computed"));
   HylcCallHDF5(HylcH5WriteDataset(g, "escapes", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, escapes, "1", "steps along negative curvature that left a saddle point during the kept solve (-micro_saddle_escapes); -1 not computed"));
+  HylcCallHDF5(HylcH5WriteDataset(g, "psi_other", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_DOUBLE, psio, "J/m^2", "-sampler_start both: psi of the start that was not kept (the kept one, in /samples/psi and /samples/start, has the lower psi of the two converged ones); NaN where only one start was solved (other starts; the first sample of a half-line has no continued start)"));
+  HylcCallHDF5(HylcH5WriteDataset(g, "status_other", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, stato, "1", "-sampler_start both: HylcMicroStatus of the start that was not kept (as /samples/status); -1 not solved"));
+  HylcCallHDF5(HylcH5WriteDataset(g, "multistable", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, multi, "1", "-sampler_start both: 1 where both starts converged and their psi differ by more than -sampler_both_rtol of the larger (two equilibria at one strain: the tile is multistable there), 0 where they agree; -1 not compared"));
   HylcCallHDF5(HylcH5WriteDataset(g, "energy_parts", 2, (hsize_t[]){(hsize_t)N, 4}, H5T_NATIVE_DOUBLE, parts, "J", "energy of the tile by kind: columns stretch, bend, twist, contact"));
   HylcCallHDF5(HylcH5WriteDataset(g, "residual", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_DOUBLE, res, "1", "final projected-gradient norm relative to the initial one, |z| / |z0|"));
   HylcCallHDF5(HylcH5WriteDataset(g, "constraint_residual", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_DOUBLE, cres, "1 (units of the yarn radius)", "final periodicity-constraint residual |A y - dL| / r"));
@@ -87,6 +94,7 @@ static PetscErrorCode WriteSamplesGroup(hid_t file, long N, const HylcSampleReco
   HylcCallHDF5(H5Gclose(g));
   PetscCall(PetscFree6(strain, psi, parts, res, cres, t));
   PetscCall(PetscFree7(term, status, its, retries, start, negcurv, escapes));
+  PetscCall(PetscFree3(psio, stato, multi));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -360,6 +368,9 @@ static PetscErrorCode ReadFile(hid_t file, long *nsamples, HylcSampleRecord **re
   HylcSampleRecord *recs;
   unsigned char    *done;
 
+  double *psio;
+  int    *stato, *multi;
+
   PetscFunctionBegin;
   HylcCallHDF5Id(d, H5Dopen2(file, "samples/psi", H5P_DEFAULT));
   HylcCallHDF5Id(s, H5Dget_space(d));
@@ -396,6 +407,18 @@ static PetscErrorCode ReadFile(hid_t file, long *nsamples, HylcSampleRecord **re
     HylcCallHDF5((herr_t)(hase < 0 ? -1 : 0));
     if (hase > 0) PetscCall(H5ReadDataset(file, "samples/escapes", H5T_NATIVE_INT, N, 0, escapes));
   }
+  /* files before /samples/psi_other, status_other, multistable: not compared */
+  PetscCall(PetscMalloc3(N + 1, &psio, N + 1, &stato, N + 1, &multi));
+  for (long k = 0; k < N; k++) psio[k] = NAN, stato[k] = -1, multi[k] = -1;
+  {
+    htri_t has = H5Lexists(file, "samples/psi_other", H5P_DEFAULT);
+    HylcCallHDF5((herr_t)(has < 0 ? -1 : 0));
+    if (has > 0) {
+      PetscCall(H5ReadDataset(file, "samples/psi_other", H5T_NATIVE_DOUBLE, N, 0, psio));
+      PetscCall(H5ReadDataset(file, "samples/status_other", H5T_NATIVE_INT, N, 0, stato));
+      PetscCall(H5ReadDataset(file, "samples/multistable", H5T_NATIVE_INT, N, 0, multi));
+    }
+  }
   PetscCall(PetscCalloc1(N + 1, &recs));
   PetscCall(PetscCalloc1(N + 1, &done));
   for (long k = 0; k < N; k++) {
@@ -403,19 +426,23 @@ static PetscErrorCode ReadFile(hid_t file, long *nsamples, HylcSampleRecord **re
     r->index            = k;
     for (int i = 0; i < 6; i++) r->z[i] = strain[6 * k + i];
     for (int i = 0; i < 4; i++) r->parts[i] = parts[4 * k + i];
-    r->psi        = psi[k];
-    r->residual   = res[k];
-    r->cresidual  = cres[k];
-    r->time       = tm[k];
-    r->term       = term[k];
-    r->status     = status[k];
-    r->iterations = its[k];
-    r->retries    = retries[k];
-    r->start      = start[k] >= 0 ? start[k] : 0;
-    r->negcurv    = negcurv[k] >= 0 ? negcurv[k] : -1;
-    r->escapes    = escapes[k] >= 0 ? escapes[k] : 0;
-    done[k]       = status[k] >= 0;
+    r->psi         = psi[k];
+    r->residual    = res[k];
+    r->cresidual   = cres[k];
+    r->time        = tm[k];
+    r->term        = term[k];
+    r->status      = status[k];
+    r->iterations  = its[k];
+    r->retries     = retries[k];
+    r->start       = start[k] >= 0 ? start[k] : 0;
+    r->negcurv     = negcurv[k] >= 0 ? negcurv[k] : -1;
+    r->escapes     = escapes[k] >= 0 ? escapes[k] : 0;
+    r->psiOther    = psio[k];
+    r->statusOther = stato[k] >= -1 && stato[k] < HylcSamplesNumStatuses_() ? stato[k] : -1;
+    r->multistable = multi[k] >= -1 && multi[k] <= 1 ? multi[k] : -1;
+    done[k]        = status[k] >= 0;
   }
+  PetscCall(PetscFree3(psio, stato, multi));
   PetscCall(PetscFree6(strain, psi, parts, res, cres, tm));
   PetscCall(PetscFree4(term, status, its, retries));
   PetscCall(PetscFree(start));

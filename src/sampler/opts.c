@@ -162,30 +162,57 @@ PetscErrorCode HylcSamplerSetBatchSize(HylcSampler S, PetscInt batch)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-const char *const HylcSamplerStarts[] = {"cold", "continue", "HylcSamplerStart", "HYLC_SAMPLER_START_", NULL};
+const char *const HylcSamplerStarts[] = {"cold", "continue", "both", "HylcSamplerStart", "HYLC_SAMPLER_START_", NULL};
 
 /*@C
-  HylcSamplerSetStart - How each sample's solve starts (option -sampler_start): cold (from u~ = 0, the
-  default) or continue. With continue, the unit of work handed to a rank is a half-line of the plan
-  (HylcPlanUnits(): each 1D term and each line of a 2D grid split at zero, going outward);
-  a unit's first sample starts cold, each other one from its predecessor's equilibrium if that converged
-  (else cold); a continued solve that does not converge is retried cold. -sampler_batch is not used then.
+  HylcSamplerSetStart - How each sample's solve starts (option -sampler_start): continue (the default), cold
+  (from u~ = 0, the paper's procedure) or both.
+  With continue, the unit of work handed to a rank is a half-line of the plan (HylcPlanUnits(): each 1D term
+  and each line of a 2D grid split at zero, going outward); a unit's first sample starts cold, each other one
+  from its predecessor's equilibrium if that converged (else cold); a continued solve that does not converge
+  is retried cold. With both, the units are the same and every sample is solved cold and, where its
+  predecessor converged, continued: the lower Psi of the converged ones is kept (and continued from), the
+  other start's Psi and status are recorded, and samples whose two Psi differ by more than
+  HylcSamplerSetBothTolerance() are flagged multistable. -sampler_batch is used only by cold.
 
   Not collective
 
   Input Parameters:
 + S     - the sampler
-- start - HYLC_SAMPLER_START_COLD or HYLC_SAMPLER_START_CONTINUE
+- start - HYLC_SAMPLER_START_CONTINUE, HYLC_SAMPLER_START_COLD or HYLC_SAMPLER_START_BOTH
 
   Level: intermediate
 
-.seealso: HylcMicroSetInitialState(), HylcPlanUnits()
+.seealso: HylcMicroSetInitialFluctuation(), HylcPlanUnits(), HylcSamplerSetBothTolerance()
 @*/
 PetscErrorCode HylcSamplerSetStart(HylcSampler S, HylcSamplerStart start)
 {
   SAMPLER_SETTER_BEGIN;
-  PetscCheck(start == HYLC_SAMPLER_START_COLD || start == HYLC_SAMPLER_START_CONTINUE, PetscObjectComm((PetscObject)S), PETSC_ERR_ARG_OUTOFRANGE, "-sampler_start: unknown start %d (cold or continue)", (int)start);
+  PetscCheck(start == HYLC_SAMPLER_START_COLD || start == HYLC_SAMPLER_START_CONTINUE || start == HYLC_SAMPLER_START_BOTH, PetscObjectComm((PetscObject)S), PETSC_ERR_ARG_OUTOFRANGE, "-sampler_start: unknown start %d (continue, cold or both)", (int)start);
   S->start = start;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcSamplerSetBothTolerance - With -sampler_start both, the relative difference of the two starts' Psi
+  above which a sample is flagged multistable (option -sampler_both_rtol): |Psi_cold - Psi_continued| >
+  rtol max(|Psi_cold|, |Psi_continued|).
+
+  Not collective
+
+  Input Parameters:
++ S    - the sampler
+- rtol - finite and positive (default 1e-3)
+
+  Level: intermediate
+
+.seealso: HylcSamplerSetStart()
+@*/
+PetscErrorCode HylcSamplerSetBothTolerance(HylcSampler S, PetscReal rtol)
+{
+  SAMPLER_SETTER_BEGIN;
+  PetscCheck(rtol > 0 && !PetscIsInfOrNanReal(rtol), PetscObjectComm((PetscObject)S), PETSC_ERR_USER_INPUT, "-sampler_both_rtol %g: must be finite and positive", (double)rtol);
+  S->bothRtol = rtol;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -273,7 +300,8 @@ PetscErrorCode HylcSamplerSetReference(HylcSampler S, HylcReferenceMode mode, co
 . -sampler_terms <all>            - comma list of terms: zero, sx, sa, sy, II00, II11, sx-sa, sx-sy,
                                     sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11, or all (HylcSamplerSetTerms())
 . -sampler_batch <1>              - samples per batch (the unit of work handed to a rank) (HylcSamplerSetBatchSize())
-. -sampler_start <cold>           - cold or continue (half-lines from the zero strain outward) (HylcSamplerSetStart())
+. -sampler_start <continue>       - continue (half-lines from the zero strain outward), cold (the paper's) or both (HylcSamplerSetStart())
+. -sampler_both_rtol <1e-3>       - both: relative difference of the two Psi flagged multistable (HylcSamplerSetBothTolerance())
 . -sampler_progress <5>           - seconds between progress lines (HylcSamplerSetProgressInterval())
 . -sampler_export_raw <dir>, -sampler_density <0> - the paper's raw layout (HylcSamplerSetExportRaw())
 . -sampler_reference <auto>, -reference_output <f.pyp> - reference state (HylcSamplerSetReference())
@@ -288,7 +316,7 @@ PetscErrorCode HylcSamplerSetFromOptions(HylcSampler S)
   MPI_Comm       comm       = PetscObjectComm((PetscObject)S);
   char           terms[512] = "all", output[PETSC_MAX_PATH_LEN], refout[PETSC_MAX_PATH_LEN], rawdir[PETSC_MAX_PATH_LEN];
   PetscInt       n1 = S->n1, n2 = S->n2, batch = S->batch;
-  PetscReal      progress = S->progress, density = S->density;
+  PetscReal      progress = S->progress, density = S->density, bothRtol = S->bothRtol;
   PetscBool      resume = S->resume, overwrite = S->overwrite, tset;
   PetscEnum      mode = (PetscEnum)S->refmode, start = (PetscEnum)S->start;
   HylcPlanRanges ranges = S->ranges;
@@ -320,7 +348,8 @@ PetscErrorCode HylcSamplerSetFromOptions(HylcSampler S)
   PetscCall(PetscOptionsInt("-sampler_n2", "Samples per axis of a 2D term", "HylcSamplerSetSampleCounts", n2, &n2, NULL));
   PetscCall(PetscOptionsString("-sampler_terms", "Terms to sample: all, or a comma list of zero, sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11", "HylcSamplerSetTerms", terms, terms, sizeof(terms), &tset));
   PetscCall(PetscOptionsInt("-sampler_batch", "Samples per batch (unit of work of a rank)", "HylcSamplerSetBatchSize", batch, &batch, NULL));
-  PetscCall(PetscOptionsEnum("-sampler_start", "How each sample's solve starts: cold (from u~ = 0) or continue (half-lines of the plan from the zero strain outward, each sample from its predecessor's equilibrium, retried cold if it does not converge; the unit of work is a half-line)", "HylcSamplerSetStart", HylcSamplerStarts, start, &start, NULL));
+  PetscCall(PetscOptionsEnum("-sampler_start", "How each sample's solve starts: continue (half-lines of the plan from the zero strain outward, each sample from its predecessor's equilibrium, retried cold if it does not converge; the unit of work is a half-line), cold (every sample from u~ = 0: the paper's procedure) or both (every sample from both, the lower Psi kept, the other in /samples/psi_other: a map of multistability)", "HylcSamplerSetStart", HylcSamplerStarts, start, &start, NULL));
+  PetscCall(PetscOptionsReal("-sampler_both_rtol", "-sampler_start both: relative difference of the two starts' Psi above which a sample is flagged multistable (1)", "HylcSamplerSetBothTolerance", bothRtol, &bothRtol, NULL));
   PetscCall(PetscOptionsReal("-sampler_progress", "Seconds between progress lines", "HylcSamplerSetProgressInterval", progress, &progress, NULL));
   PetscCall(PetscOptionsString("-sampler_export_raw", "Also write the paper's raw layout into this directory: data.txt (rows sx sa sy II00 II01 II11 Psi in the order of C4) and info.txt (area, area density)", "HylcSamplerSetExportRaw", rawdir, rawdir, sizeof(rawdir), NULL));
   PetscCall(PetscOptionsReal("-sampler_density", "Volumetric yarn density for the area density of info.txt (kg/m^3; <= 0: 0.12 kg/m^2 / r, as hylc-fit)", "HylcSamplerSetExportRaw", density, &density, NULL));
@@ -334,6 +363,7 @@ PetscErrorCode HylcSamplerSetFromOptions(HylcSampler S)
   PetscCall(HylcSamplerSetSampleCounts(S, n1, n2));
   PetscCall(HylcSamplerSetBatchSize(S, batch));
   PetscCall(HylcSamplerSetStart(S, (HylcSamplerStart)start));
+  PetscCall(HylcSamplerSetBothTolerance(S, bothRtol));
   PetscCall(HylcSamplerSetProgressInterval(S, progress));
   PetscCall(HylcSamplerSetExportRaw(S, rawdir, density));
   if (tset) {

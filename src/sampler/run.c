@@ -145,53 +145,71 @@ static void FillRecord(long k, int term, const double z[6], const HylcMicroResul
   for (int i = 0; i < 6; i++) rec->z[i] = z[i];
   rec->psi = r->psi;
   for (int i = 0; i < 4; i++) rec->parts[i] = r->parts[i];
-  rec->residual  = r->residual;
-  rec->cresidual = r->cresidual;
-  rec->time      = r->time;
-  rec->start     = HYLC_SAMPLE_START_COLD;
-  rec->negcurv   = (int)r->negcurv;
-  rec->escapes   = (int)r->escapes;
+  rec->residual    = r->residual;
+  rec->cresidual   = r->cresidual;
+  rec->time        = r->time;
+  rec->start       = HYLC_SAMPLE_START_COLD;
+  rec->negcurv     = (int)r->negcurv;
+  rec->escapes     = (int)r->escapes;
+  rec->psiOther    = NAN;
+  rec->statusOther = -1;
+  rec->multistable = -1;
 }
 
-/* sample k; from the state prev (a state of the tile at the strain of the last solve) if not NULL, retried
-   cold if that does not converge. A continued solve that converges is kept even below its predecessor's Psi:
-   different equilibria of cold and continued starts are path dependence (buckled compressions), and the
-   lower energy is the better estimate (docs/performance.md, "Continuation"). (Until 2026-11-24 such a drop
-   was retried cold: the drops then were states whose loops had come apart through contacts missing from
-   the pruned contact ghosts.) On return the state of the kept result is in 'state' (if not NULL). */
-static PetscErrorCode SolveSample(HylcSampler S, long k, const PetscReal *prev, PetscReal *state, HylcSampleRecord *rec)
+/* the order of outcomes: converged, then not converged, then non-finite */
+static int OutcomeRank(const HylcMicroResult *r)
 {
-  HylcMicroResult r;
+  return r->status == HYLC_MICRO_CONVERGED ? 0 : r->status == HYLC_MICRO_NONFINITE ? 2
+                                                                                   : 1;
+}
+
+/* sample k; from the fluctuation u (local coordinates, HylcMicroGetFluctuation() of the kept state of the
+   sample before it on its half-line) if not NULL. On return the kept result's state is in 'state' (if not
+   NULL).
+   - cold and continue: a continued solve that does not converge is retried cold, and the better of the two
+     is kept (converged, then not converged, then non-finite; the cold one on a tie). A continued solve that
+     converges is kept even below its predecessor's Psi: different equilibria of cold and continued starts
+     are path dependence (buckled compressions), and the lower energy is the better estimate
+     (docs/performance.md, "Continuation").
+   - both: the cold solve always, then the continued one if u is given; the continued one is kept if it is
+     better (both converged: a Psi strictly lower), and the other one's Psi and status are recorded, with the
+     multistable flag where both converged and differ by more than bothRtol of the larger |Psi|.
+   Iterations and time are the sums of the solves. */
+static PetscErrorCode SolveSample(HylcSampler S, long k, const PetscReal *u, PetscReal *state, HylcSampleRecord *rec)
+{
+  HylcMicroResult r, rc;
   double          z[6];
   int             term;
 
   PetscFunctionBegin;
   PetscCheck(!HylcPlanSample(&S->plan, k, z, &term), PETSC_COMM_SELF, PETSC_ERR_PLIB, "Sample %ld outside the plan", k);
-  if (prev) PetscCall(HylcMicroSetInitialState(S->micro, prev));
-  PetscCall(HylcMicroSolve(S->micro, z, &r));
-  FillRecord(k, term, z, &r, rec);
-  if (state) PetscCall(HylcMicroGetState(S->micro, state));
-  if (prev) {
-    rec->start = HYLC_SAMPLE_START_CONTINUED;
-    if (r.status != HYLC_MICRO_CONVERGED) {
-      /* retried cold; the better of the two is kept: converged, then not converged, then non-finite (the
-         cold one on a tie); iterations and time are the sums of both solves */
-      HylcSampleRecord cont = *rec;
-      HylcMicroResult  rc;
-      PetscCall(HylcMicroSolve(S->micro, z, &rc));
-      const int rankC = r.status == HYLC_MICRO_CONVERGED ? 0 : r.status == HYLC_MICRO_NONFINITE ? 2
-                                                                                                : 1;
-      const int rankR = rc.status == HYLC_MICRO_CONVERGED ? 0 : rc.status == HYLC_MICRO_NONFINITE ? 2
-                                                                                                  : 1;
-      if (rankR <= rankC) {
-        FillRecord(k, term, z, &rc, rec);
+  if (S->start == HYLC_SAMPLER_START_BOTH) {
+    PetscCall(HylcMicroSolve(S->micro, z, &rc));
+    FillRecord(k, term, z, &rc, rec);
+    if (state) PetscCall(HylcMicroGetState(S->micro, state));
+    if (u) {
+      PetscBool contBetter;
+      PetscCall(HylcMicroSetInitialFluctuation(S->micro, u));
+      PetscCall(HylcMicroSolve(S->micro, z, &r));
+      contBetter = (PetscBool)(OutcomeRank(&r) < OutcomeRank(&rc) || (r.status == HYLC_MICRO_CONVERGED && rc.status == HYLC_MICRO_CONVERGED && r.psi < rc.psi));
+      if (contBetter) {
+        FillRecord(k, term, z, &r, rec);
+        rec->start = HYLC_SAMPLE_START_CONTINUED;
         if (state) PetscCall(HylcMicroGetState(S->micro, state));
-      } else
-        *rec = cont; /* its state is still in 'state' */
-      rec->start      = HYLC_SAMPLE_START_RETRIED;
+      }
+      rec->psiOther    = contBetter ? rc.psi : r.psi;
+      rec->statusOther = (int)(contBetter ? rc.status : r.status);
+      if (r.status == HYLC_MICRO_CONVERGED && rc.status == HYLC_MICRO_CONVERGED) rec->multistable = PetscAbsReal(r.psi - rc.psi) > S->bothRtol * PetscMax(PetscAbsReal(r.psi), PetscAbsReal(rc.psi));
       rec->iterations = (int)(r.iterations + rc.iterations);
       rec->time       = r.time + rc.time;
     }
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  {
+    PetscBool retried;
+    PetscCall(HylcMicroSolveContinued(S->micro, z, u, &r, state, &retried));
+    FillRecord(k, term, z, &r, rec);
+    rec->start = !u ? HYLC_SAMPLE_START_COLD : (retried ? HYLC_SAMPLE_START_RETRIED : HYLC_SAMPLE_START_CONTINUED);
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -324,8 +342,8 @@ PetscErrorCode HylcSamplerRun(HylcSampler S)
     PetscCall(HylcJournalGetDone(J, &nd, &jd));
     PetscCall(PetscArraycpy(done, jd, S->nsamples));
     pg.done = pg.converged0 = nd;
-    if (S->start == HYLC_SAMPLER_START_CONTINUE)
-      PetscCall(PetscPrintf(PETSC_COMM_SELF, "[sampler] %ld samples in %ld half-lines (continuation) on %d ranks; %ld already done (%s)\n", S->nsamples, HylcPlanUnits(&S->plan, NULL, NULL), (int)S->size, (long)nd, jpath));
+    if (S->start != HYLC_SAMPLER_START_COLD)
+      PetscCall(PetscPrintf(PETSC_COMM_SELF, "[sampler] %ld samples in %ld half-lines (%s) on %d ranks; %ld already done (%s)\n", S->nsamples, HylcPlanUnits(&S->plan, NULL, NULL), S->start == HYLC_SAMPLER_START_BOTH ? "continuation, and every sample also cold" : "continuation", (int)S->size, (long)nd, jpath));
     else
       PetscCall(PetscPrintf(PETSC_COMM_SELF, "[sampler] %ld samples in %ld batches on %d ranks; %ld already done (%s)\n", S->nsamples, (S->nsamples + S->batch - 1) / S->batch, (int)S->size, (long)nd, jpath));
   }
@@ -335,9 +353,9 @@ PetscErrorCode HylcSamplerRun(HylcSampler S)
   /* dynamic scheduling: the next batch (cold) or unit (continue: a half-line, HylcPlanUnits) comes from a
      shared counter on rank 0 (MPI one-sided atomic fetch-and-add, no involvement of rank 0); which rank
      solves a sample (cold) or a unit (continue) does not change its result */
-  const PetscBool cont   = (PetscBool)(S->start == HYLC_SAMPLER_START_CONTINUE);
+  const PetscBool cont   = (PetscBool)(S->start != HYLC_SAMPLER_START_COLD); /* continue and both: units are half-lines */
   long           *ustart = NULL, *uorder = NULL, nb;
-  PetscReal      *yprev = NULL, *ycur = NULL;
+  PetscReal      *uprev = NULL, *ycur = NULL;
   PetscInt        ny = 0, cap = S->batch;
   if (cont) {
     const long nu = HylcPlanUnits(&S->plan, NULL, NULL);
@@ -373,16 +391,17 @@ PetscErrorCode HylcSamplerRun(HylcSampler S)
         if (!done[uorder[i]]) todo = PETSC_TRUE;
       if (!todo) continue;
       for (long i = ustart[b]; i < ustart[b + 1]; i++) {
-        PetscCall(SolveSample(S, uorder[i], prevOk ? yprev : NULL, ycur, &recs[n]));
+        PetscCall(SolveSample(S, uorder[i], prevOk ? uprev : NULL, ycur, &recs[n]));
         if (!ycur) { /* the tile's size is known after its first set-up (a cold solve: its state is the kept one) */
           HylcPeriodic P;
           PetscCall(HylcMicroGetPeriodic(S->micro, &P));
           PetscCall(HylcPeriodicGetSizes(P, &ny, NULL, NULL, NULL));
-          PetscCall(PetscMalloc2(ny, &yprev, ny, &ycur));
+          PetscCall(PetscMalloc2(ny, &uprev, ny, &ycur));
           PetscCall(HylcMicroGetState(S->micro, ycur));
         }
+        /* the kept state's fluctuation, taken while the tile is at this sample's strain */
         prevOk = (PetscBool)(recs[n].status == HYLC_MICRO_CONVERGED);
-        if (prevOk) PetscCall(PetscArraycpy(yprev, ycur, ny));
+        if (prevOk) PetscCall(HylcMicroGetFluctuation(S->micro, ycur, uprev));
         n++;
         if (!S->rank) PetscCall(Drain(S, J, &pg, &finished, PETSC_FALSE));
       }
@@ -434,11 +453,21 @@ PetscErrorCode HylcSamplerRun(HylcSampler S)
       }
       PetscCall(PetscPrintf(PETSC_COMM_SELF, "[sampler] of %ld converged samples: %ld left a saddle point (/samples/escapes), %ld ended at one (/samples/negcurv > 0), %ld not tested\n", nconv, nesc, nsad, nunk));
     }
+    if (S->start == HYLC_SAMPLER_START_BOTH) { /* the map of multistability (/samples/multistable) */
+      long ncmp = 0, nmulti = 0, ncont = 0;
+      for (long k = 0; k < S->nsamples; k++) {
+        if (!jd[k] || all[k].multistable < 0) continue;
+        ncmp++;
+        nmulti += all[k].multistable;
+        ncont += all[k].multistable && all[k].start == HYLC_SAMPLE_START_CONTINUED;
+      }
+      PetscCall(PetscPrintf(PETSC_COMM_SELF, "[sampler] -sampler_start both: %ld samples converged from both starts, %ld of them (%.1f%%) with Psi differing by more than %g relative (/samples/multistable), the continued start lower in %ld, the cold one in %ld\n", ncmp, nmulti, 100.0 * nmulti / PetscMax(ncmp, 1), (double)S->bothRtol, ncont, nmulti - ncont));
+    }
     if (S->rawdir[0]) PetscCall(ExportRaw(S, all, jd));
     PetscCall(HylcJournalClose(&S->journal));
   }
   PetscCall(PetscFree2(ustart, uorder));
-  PetscCall(PetscFree2(yprev, ycur));
+  PetscCall(PetscFree2(uprev, ycur));
   PetscCall(PetscFree(S->done));
   PetscCall(PetscFree(S->recs));
   PetscCallMPI(MPI_Barrier(PetscObjectComm((PetscObject)S)));

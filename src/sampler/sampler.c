@@ -35,6 +35,8 @@ PetscErrorCode HylcSamplerCreate(MPI_Comm comm, HylcSampler *s)
   S->terms    = (1 << HYLC_PLAN_NTERM) - 1;
   S->batch    = 1;
   S->progress = 5;
+  S->start    = HYLC_SAMPLER_START_CONTINUE;
+  S->bothRtol = 1e-3;
   S->density  = 0;
   S->refmode  = HYLC_REFERENCE_AUTO;
   PetscCall(HylcYarnModelDefault(&S->model));
@@ -213,7 +215,10 @@ PetscErrorCode HylcSamplerView(HylcSampler S, PetscViewer viewer)
   else
     PetscCall(PetscStrncpy(count, " (ranges not resolved: not set up)", sizeof(count)));
   PetscCall(PetscViewerASCIIPrintf(viewer, "plan: family %s, %" PetscInt_FMT " samples per 1D term, %" PetscInt_FMT " per 2D axis, terms %s%s\n", HylcPlanFamilies[S->ranges.family], S->n1, S->n2, terms, count));
-  PetscCall(PetscViewerASCIIPrintf(viewer, "start: %s%s\n", HylcSamplerStarts[S->start], S->start == HYLC_SAMPLER_START_CONTINUE ? " (units: half-lines from the zero strain outward)" : " (every sample from u~ = 0)"));
+  if (S->start == HYLC_SAMPLER_START_BOTH)
+    PetscCall(PetscViewerASCIIPrintf(viewer, "start: both (units: half-lines from the zero strain outward; every sample also cold, the lower Psi kept, multistable where they differ by more than %g)\n", (double)S->bothRtol));
+  else
+    PetscCall(PetscViewerASCIIPrintf(viewer, "start: %s%s\n", HylcSamplerStarts[S->start], S->start == HYLC_SAMPLER_START_CONTINUE ? " (units: half-lines from the zero strain outward)" : " (every sample from u~ = 0)"));
   PetscCall(PetscViewerASCIIPrintf(viewer, "%d ranks, batches of %" PetscInt_FMT ", progress every %g s, reference state %s%s%s\n", (int)S->size, S->batch, (double)S->progress, HylcReferenceModes[S->refmode], S->refout[0] ? " written to " : "", S->refout));
   if (S->rawdir[0]) PetscCall(PetscViewerASCIIPrintf(viewer, "raw layout exported to %s\n", S->rawdir));
   PetscCall(PetscViewerASCIIPopTab(viewer));

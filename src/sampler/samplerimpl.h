@@ -28,6 +28,7 @@ struct _p_HylcSampler {
   HylcSampleRecord   *recs;     /* samples done, and one batch of records */
   PetscInt            batch;
   HylcSamplerStart    start;    /* -sampler_start */
+  PetscReal           bothRtol; /* -sampler_both_rtol */
   PetscReal           progress; /* seconds between progress lines */
   long                nsamples;
   HylcReferenceMode   refmode;

@@ -38,7 +38,7 @@ for np in 1 2; do
     if [ -f $k.journal ]; then
       s=$(stat -c %s $k.journal)
       [ -z "$s0" ] && [ "$s" -gt 0 ] && s0=$s
-      [ -n "$s0" ] && [ "$s" -ge $((s0 + 3 * 156)) ] && break
+      [ -n "$s0" ] && [ "$s" -ge $((s0 + 3 * 172)) ] && break
     fi
     sleep 0.005
   done

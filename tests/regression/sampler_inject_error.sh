@@ -9,7 +9,7 @@ set -u
 cd "$HYLC_TMP"
 tool=$HYLC_BIN/hylc-sample
 die() { echo "FAIL: $*"; exit 1; }
-args="-pattern_type plain -sampler_reference none -sampler_terms zero,sx -sampler_n1 8"
+args="-pattern_type plain -sampler_reference none -sampler_terms zero,sx -sampler_n1 8 -sampler_start cold" # cold: a sample per unit of work, so 1 rank journals exactly 2
 py=/usr/bin/python3
 havepy=0
 [ -x $py ] && $py -c 'import h5py, numpy' >/dev/null 2>&1 && havepy=1
@@ -23,14 +23,15 @@ cat >journal.py <<'PY'
 import struct, sys, numpy as np, h5py
 b = open(sys.argv[1], "rb").read()
 assert b[:8] == b"HYLCJNL1", "journal magic"
-assert struct.unpack_from("<I", b, 12)[0] == 4, "journal format version"
+assert struct.unpack_from("<I", b, 12)[0] == 5, "journal format version"
 rs, L = struct.unpack_from("<II", b, 16)
 rec = np.dtype([("index", "<i8"), ("term", "<i4"), ("status", "<i4"), ("iterations", "<i4"),
                 ("retries", "<i4"), ("z", "<f8", 6), ("psi", "<f8"), ("parts", "<f8", 4),
                 ("residual", "<f8"), ("cresidual", "<f8"), ("time", "<f8"), ("start", "<i4"), ("negcurv", "<i4"),
-                ("escapes", "<i4"), ("fnv", "<u8")])
+                ("escapes", "<i4"), ("psi_other", "<f8"), ("status_other", "<i4"), ("multistable", "<i4"),
+                ("fnv", "<u8")])
 assert rs == rec.itemsize, "record size %d" % rs
-body = b[72 + L:]  # format 4: 64-byte fixed header, identity, 8-byte hash
+body = b[72 + L:]  # format 5: 64-byte fixed header, identity, 8-byte hash
 r = np.frombuffer(body[: len(body) // rs * rs], dtype=rec)
 want = int(sys.argv[3])
 assert want < 0 or len(r) == want, "%d records in the journal, expected %d" % (len(r), want)

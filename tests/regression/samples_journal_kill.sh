@@ -15,7 +15,7 @@ for round in 1 2 3 4; do
   for _ in $(seq 400); do grep -q started writer.txt && break; sleep 0.05; done
   grep -q started writer.txt || { kill -9 $pid; cat writer.txt; die "writer did not start"; }
   h=$(stat -c %s kill.journal) # the header: wait for a first record (a loaded machine may be slow)
-  for _ in $(seq 200); do [ "$(stat -c %s kill.journal)" -gt $((h + 156)) ] && break; sleep 0.02; done
+  for _ in $(seq 200); do [ "$(stat -c %s kill.journal)" -gt $((h + 172)) ] && break; sleep 0.02; done
   sleep "0.$((RANDOM % 5 + 1))$((RANDOM % 10))"
   kill -9 $pid 2>/dev/null || die "writer ended before it was killed"
   wait $pid 2>/dev/null
