@@ -98,18 +98,23 @@ int hylcmat_shell_rest_3d(const double X[9], double angle, hylcmat_shell_rest *r
 /* ---- one edge (hinge) ---------------------------------------------------------------------------- */
 typedef struct {
   double e[3], f[3], g[3];
-  double l2, l, fe, ge, fg, sig, fp[3], kap, V, X, Y, r2, th, w;
-  double cfg[3], cge[3], N[3]; /* f x g, g x e, e x f */
+  double len, l2, l, fe, ge, fg, sig, fp[3], kap, V, X, Y, r2, th, w; /* len = |e|; the rest in units of len */
+  double cfg[3], cge[3], N[3];                                        /* f x g, g x e, e x f */
   double dX[9], dY[9], dth[9], dkap[9], dw[9];
 } Hinge;
 
-/* values; returns HYLCMAT_ERR_DEGENERATE if the neighbour face has zero area (the central triangle was
-   checked by the caller) */
+/* values. The edge is computed in units of its length (e, f, g divided by |e| = len): theta is
+   invariant, kappa and w = len w~ scale with it, so dw/dx = dw~/d(e, f, g)~ and d2w/dx2 = d2w~ / len;
+   X, Y and r^2 stay of order 1 for any size of the stencil. Returns HYLCMAT_ERR_DEGENERATE if the
+   neighbour face has zero area (the central triangle was checked by the caller). */
 static int HingeValue(Hinge *h)
 {
-  const double *e = h->e, *f = h->f, *g = h->g;
-  double        g2;
+  double *e = h->e, *f = h->f, *g = h->g, g2, il;
 
+  h->len = sqrt(Dot(e, e));
+  if (!(h->len > 0) || !isfinite(h->len)) return h->len > 0 ? HYLCMAT_ERR_RANGE : HYLCMAT_ERR_DEGENERATE;
+  il = 1 / h->len;
+  for (int i = 0; i < 3; i++) e[i] *= il, f[i] *= il, g[i] *= il;
   h->l2  = Dot(e, e);
   h->l   = sqrt(h->l2);
   h->fe  = Dot(f, e);
@@ -124,10 +129,11 @@ static int HingeValue(Hinge *h)
   h->X  = h->fe * h->ge - h->l2 * h->fg;
   h->r2 = h->X * h->X + h->Y * h->Y;
   g2    = Dot(g, g);
+  if (!isfinite(h->r2) || !isfinite(g2)) return HYLCMAT_ERR_RANGE;
   /* r^2 = |e x f|^2 |g x e|^2 and |e x f| = kappa l: the neighbour's sine below DEG_SINE */
   if (!(h->r2 > DEG_SINE * DEG_SINE * h->kap * h->kap * h->l2 * h->l2 * g2)) return HYLCMAT_ERR_DEGENERATE;
   h->th = atan2(h->Y, h->X);
-  h->w  = -h->kap * h->th;
+  h->w  = -h->len * h->kap * h->th;
   return HYLCMAT_OK;
 }
 
@@ -270,7 +276,7 @@ typedef struct {
   double C0[3], C1[3];                         /* a = sum C0[i] x_i, b = sum C1[i] x_i */
   double T[3][3];                              /* T[k] = (t0^2, t0 t1, t1^2) of edge k */
   int    nb;
-  Hinge  h[3];
+  Hinge  h[3]; /* e, f, g in units of the edge length */
 } Elem;
 
 static const int EdgeA[3] = {0, 1, 2}, EdgeB[3] = {1, 2, 0}, EdgeC[3] = {2, 0, 1};
@@ -303,8 +309,11 @@ static int Strains(const hylcmat_shell_rest *r, const double x[18], int nb, Elem
   el->al = sqrt(Dot(el->a, el->a));
   el->be = sqrt(Dot(el->b, el->b));
   Cross(d1, d2, N);
-  if (!(sqrt(Dot(N, N)) > DEG_SINE * sqrt(Dot(d1, d1) * Dot(d2, d2))) || !(el->al > 0) || !(el->be > 0)) return HYLCMAT_ERR_DEGENERATE;
-  if (!isfinite(el->al) || !isfinite(el->be)) return HYLCMAT_ERR_RANGE;
+  {
+    const double nN = sqrt(Dot(N, N)), n12 = sqrt(Dot(d1, d1) * Dot(d2, d2));
+    if (!isfinite(el->al) || !isfinite(el->be) || !isfinite(nN) || !isfinite(n12)) return HYLCMAT_ERR_RANGE;
+    if (!(nN > DEG_SINE * n12) || !(el->al > 0) || !(el->be > 0)) return HYLCMAT_ERR_DEGENERATE;
+  }
   for (int i = 0; i < 3; i++) {
     el->ah[i] = el->a[i] / el->al;
     el->bh[i] = el->b[i] / el->be;
@@ -542,7 +551,7 @@ static int Element(const hylcmat *m, const hylcmat_shell_rest *r, const double x
     double L[81];
     if (!(nb >> k & 1)) continue;
     memset(L, 0, sizeof(L));
-    HingeHess(&el.h[k], py[3 + k], L);
+    HingeHess(&el.h[k], py[3 + k] / el.h[k].len, L);
     MapHinge(H, L, EdgeA[k], EdgeB[k], EdgeC[k], 3 + k);
   }
   /* exact symmetry */
