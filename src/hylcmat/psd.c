@@ -1,26 +1,45 @@
 /* Projection of an element Hessian (18 x 18) to positive semidefinite: eigenvalues below
-   HYLCMAT_PSD_FLOOR raised to it, on the coordinates of the vertices present (src/hylcmat/shell.c has
-   the outline). The symmetric eigensolver (n <= 15 after the translations are split off):
-   Householder tridiagonalization with the reflections accumulated, then the implicit symmetric QR
-   step with Wilkinson's shift (Golub and Van Loan, Matrix Computations, 4th ed., 8.3.1-8.3.3), the
-   rotations applied to the rows of the accumulated transform (eigenvectors as rows). Plain C99. */
+   HYLCMAT_PSD_FLOOR raised to it, on the coordinates of the vertices present.
+
+   The translations t (one per axis) are exact null vectors of H (E depends on edge vectors only). With
+   the reflection P = I - tau v v^T over the na vertices present (v = e_0 + 1/sqrt(na), so P e_0 is the
+   unit translation), (P x I3) H (P x I3) has a zero first vertex block row and column; its remaining
+   (3 na - 3)-square block M holds the rest of the spectrum. M = Z^T diag(lambda) Z by the symmetric
+   eigensolver below, and with u_q = (P x I3) [0; z_q] (the eigenvectors in the original coordinates)
+       H+ = H + floor / na (1 1^T x I3) + sum over lambda_q < floor of (floor - lambda_q) u_q u_q^T,
+   the first term raising the translations' zero eigenvalues to the floor: the same as clamping the
+   eigenvalues of the whole matrix.
+
+   The eigensolver (n <= 15): Householder tridiagonalization with the reflections accumulated, then
+   implicit symmetric QR steps with Wilkinson's shift (Golub and Van Loan, Matrix Computations, 4th ed.,
+   8.3.1 - 8.3.3), each rotation applied to two rows of the accumulated transform (the eigenvectors are
+   rows). Plain C99. */
 #include "hylcmatimpl.h"
 #include <math.h>
 #include <string.h>
 
-#define NMAX 18
+#define NMAX 15 /* 3 (6 vertices - 1) */
+#define EPS  2.220446049250313e-16
+
+/* sqrt(x^2 + z^2) without overflow or underflow of the squares */
+static inline double Norm2(double x, double z)
+{
+  const double ax = fabs(x), az = fabs(z), mx = ax > az ? ax : az;
+  if (mx > 1e-150 && mx < 1e150) return sqrt(x * x + z * z);
+  if (mx == 0) return 0;
+  return mx * sqrt((x / mx) * (x / mx) + (z / mx) * (z / mx));
+}
 
 /* A (n x n, row-major, symmetric; overwritten) = Z^T diag(w) Z: eigenvalues w, eigenvectors the rows
-   of Z. Returns 0, or -1 if the QR iteration did not converge (never seen; the caller fails). */
-static int SymEig(int n, double *A, double *w, double *Z)
+   of Z (n x n). Returns 0, or -1 if the QR iteration did not converge. */
+static int SymEig(int n, double *restrict A, double *restrict w, double *restrict Z)
 {
-  double d[NMAX], e[NMAX], v[NMAX], p[NMAX], beta[NMAX];
+  double d[NMAX], e[NMAX], beta[NMAX];
 
-  /* tridiagonalize: for column k, the reflection I - beta v v^T of rows k+1.. (v stored in A's column k) */
+  /* tridiagonalize: for column k, the reflection I - beta v v^T of rows k+1.. (v kept in column k) */
   for (int k = 0; k + 2 < n; k++) {
-    const int m  = n - k - 1; /* length of the vector */
-    double    xn = 0, alpha, vv, K;
-    double   *x  = v;
+    const int m = n - k - 1;
+    double    x[NMAX], p[NMAX], xn = 0, alpha, vv, K = 0;
     for (int i = 0; i < m; i++) {
       x[i] = A[n * (k + 1 + i) + k];
       xn += x[i] * x[i];
@@ -29,29 +48,31 @@ static int SymEig(int n, double *A, double *w, double *Z)
     if (xn == 0) {
       beta[k] = 0;
       e[k]    = 0;
-      for (int i = 0; i < m; i++) A[n * (k + 1 + i) + k] = 0;
       continue;
     }
     alpha = x[0] > 0 ? -xn : xn;
     x[0] -= alpha;
-    vv = 0;
-    for (int i = 0; i < m; i++) vv += x[i] * x[i];
+    vv = xn * xn - 2 * alpha * (x[0] + alpha) + alpha * alpha; /* |x - alpha e0|^2 = |x|^2 - 2 alpha x0 + alpha^2 */
+    if (!(vv > 0)) {
+      vv = 0;
+      for (int i = 0; i < m; i++) vv += x[i] * x[i];
+    }
     beta[k] = 2 / vv;
     e[k]    = alpha;
-    /* p = beta A22 v; K = beta p.v / 2; q = p - K v; A22 -= v q^T + q v^T (lower triangle used) */
+    /* p = beta A22 v; K = beta p.v / 2; p -= K v; A22 -= v p^T + p v^T */
     for (int i = 0; i < m; i++) {
-      const double *row = A + n * (k + 1 + i) + k + 1;
-      double        s   = 0;
+      const double *restrict row = A + n * (k + 1 + i) + k + 1;
+      double s                   = 0;
       for (int j = 0; j < m; j++) s += row[j] * x[j];
       p[i] = beta[k] * s;
     }
-    K = 0;
     for (int i = 0; i < m; i++) K += p[i] * x[i];
     K *= 0.5 * beta[k];
     for (int i = 0; i < m; i++) p[i] -= K * x[i];
     for (int i = 0; i < m; i++) {
-      double *row = A + n * (k + 1 + i) + k + 1;
-      for (int j = 0; j < m; j++) row[j] -= x[i] * p[j] + p[i] * x[j];
+      double *restrict row = A + n * (k + 1 + i) + k + 1;
+      const double xi = x[i], pi = p[i];
+      for (int j = 0; j < m; j++) row[j] -= xi * p[j] + pi * x[j];
     }
     for (int i = 0; i < m; i++) A[n * (k + 1 + i) + k] = x[i];
   }
@@ -64,52 +85,47 @@ static int SymEig(int n, double *A, double *w, double *Z)
   for (int i = 0; i < n; i++) Z[n * i + i] = 1;
   for (int k = n - 3; k >= 0; k--) {
     const int m = n - k - 1;
+    double    v[NMAX];
     if (beta[k] == 0) continue;
     for (int i = 0; i < m; i++) v[i] = A[n * (k + 1 + i) + k];
     for (int i = k + 1; i < n; i++) {
-      double *row = Z + n * i + k + 1, s = 0;
+      double *restrict row = Z + n * i + k + 1;
+      double s             = 0;
       for (int j = 0; j < m; j++) s += row[j] * v[j];
       s *= beta[k];
       for (int j = 0; j < m; j++) row[j] -= s * v[j];
     }
   }
-  /* the eigenvectors of A are Q s for those s of T; as rows s^T Q^T = s^T Z: each rotation G of T
-     (T <- G^T T G) updates Z <- G^T Z, two rows */
+  /* implicit QR steps on the trailing unreduced block; the eigenvectors of A are Q s for those s of T,
+     as rows s^T Q^T = s^T Z: each rotation G of T (T <- G^T T G) updates Z <- G^T Z, two rows */
   {
     int       hi = n - 1, it = 0;
     const int maxit = 40 * n;
     while (hi > 0) {
       int lo;
-      /* deflate negligible off-diagonals at the bottom */
-      if (fabs(e[hi - 1]) <= 1e-300 + 2.220446049250313e-16 * (fabs(d[hi - 1]) + fabs(d[hi]))) {
+      if (fabs(e[hi - 1]) <= 1e-300 + EPS * (fabs(d[hi - 1]) + fabs(d[hi]))) {
         e[hi - 1] = 0;
         hi--;
         continue;
       }
       if (++it > maxit) return -1;
-      /* the unreduced block lo..hi */
       lo = hi - 1;
-      while (lo > 0 && fabs(e[lo - 1]) > 1e-300 + 2.220446049250313e-16 * (fabs(d[lo - 1]) + fabs(d[lo]))) lo--;
+      while (lo > 0 && fabs(e[lo - 1]) > 1e-300 + EPS * (fabs(d[lo - 1]) + fabs(d[lo]))) lo--;
       if (lo > 0) e[lo - 1] = 0;
       {
-        /* Wilkinson shift from the trailing 2 x 2 */
-        const double dd = 0.5 * (d[hi - 1] - d[hi]), b = e[hi - 1], hyp = hypot(dd, b);
+        /* Wilkinson's shift from the trailing 2 x 2 */
+        const double dd = 0.5 * (d[hi - 1] - d[hi]), b = e[hi - 1], hyp = Norm2(dd, b);
         const double mu = d[hi] - b * b / (dd + (dd >= 0 ? hyp : -hyp));
         double       x = d[lo] - mu, z = e[lo];
         for (int k = lo; k < hi; k++) {
-          double c, s, r, a0, b0, d0;
+          double c = 1, s = 0, a0, b0, d0;
           /* G = [c s; -s c] with s x + c z = 0 */
-          if (z == 0) {
-            c = 1;
-            s = 0;
-            r = x;
-          } else {
-            r = hypot(x, z);
-            c = x / r;
-            s = -z / r;
+          if (z != 0) {
+            const double r = Norm2(x, z);
+            c              = x / r;
+            s              = -z / r;
           }
           if (k > lo) e[k - 1] = c * e[k - 1] - s * z; /* (k-1, k); (k-1, k+1) becomes 0 */
-          (void)r;
           a0       = d[k];
           b0       = e[k];
           d0       = d[k + 1];
@@ -122,7 +138,7 @@ static int SymEig(int n, double *A, double *w, double *Z)
             x = e[k];
           }
           {
-            double *zk = Z + n * k, *zk1 = Z + n * (k + 1);
+            double *restrict zk = Z + n * k, *restrict zk1 = Z + n * (k + 1);
             for (int j = 0; j < n; j++) {
               const double u = zk[j], t = zk1[j];
               zk[j]  = c * u - s * t;
@@ -139,73 +155,63 @@ static int SymEig(int n, double *A, double *w, double *Z)
 
 int hm_psd_project(double H[324], int nb)
 {
-  int    act[6], na = 0, n;
-  double Hc[NMAX * NMAX], v[6], vv = 0, Z[NMAX * NMAX], w[NMAX], M[(NMAX - 3) * (NMAX - 3)];
-  double floor_ = HYLCMAT_PSD_FLOOR;
+  int          act[6], na = 0, n, nm;
+  double       v[6], vv   = 0, tau, R[6][9], C[9], M[NMAX * NMAX], Z[NMAX * NMAX], w[NMAX];
+  const double floor_ = HYLCMAT_PSD_FLOOR;
 
   for (int i = 0; i < 3; i++) act[na++] = i;
   for (int k = 0; k < 3; k++)
     if (nb >> k & 1) act[na++] = 3 + k;
-  n = 3 * na;
-  for (int i = 0; i < na; i++)
-    for (int a = 0; a < 3; a++)
-      for (int j = 0; j < na; j++)
-        for (int b = 0; b < 3; b++) Hc[n * (3 * i + a) + 3 * j + b] = H[18 * (3 * act[i] + a) + 3 * act[j] + b];
-  /* the reflection P = I - 2 v v^T / v.v over the vertices, v = e_0 + 1 / sqrt(na): P e_0 = -1/sqrt(na) */
+  n  = 3 * na;
+  nm = n - 3;
   for (int i = 0; i < na; i++) v[i] = 1 / sqrt((double)na);
   v[0] += 1;
   for (int i = 0; i < na; i++) vv += v[i] * v[i];
-  /* Hc <- (P x I3) Hc (P x I3): rows, then columns */
-  for (int pass = 0; pass < 2; pass++) {
-    for (int c = 0; c < n; c++)
-      for (int a = 0; a < 3; a++) {
-        double s = 0;
-        for (int i = 0; i < na; i++) s += v[i] * (pass ? Hc[n * c + 3 * i + a] : Hc[n * (3 * i + a) + c]);
-        s *= 2 / vv;
-        for (int i = 0; i < na; i++) {
-          if (pass)
-            Hc[n * c + 3 * i + a] -= s * v[i];
-          else
-            Hc[n * (3 * i + a) + c] -= s * v[i];
-        }
-      }
+  tau = 2 / vv;
+  /* blocks B_ij of the vertices present; R_j = sum_i v_i B_ij, C = sum_j v_j R_j; then the blocks
+     (i, j >= 1) of P B P: B_ij - tau v_i R_j - tau R_i^T v_j + tau^2 v_i v_j C */
+  for (int j = 0; j < na; j++)
+    for (int q = 0; q < 9; q++) {
+      double s = 0;
+      for (int i = 0; i < na; i++) s += v[i] * H[18 * (3 * act[i] + q / 3) + 3 * act[j] + q % 3];
+      R[j][q] = s;
+    }
+  for (int q = 0; q < 9; q++) {
+    double s = 0;
+    for (int j = 0; j < na; j++) s += v[j] * R[j][q];
+    C[q] = s;
   }
-  /* the translations: first vertex block -> floor I, its coupling -> 0 */
-  {
-    const int nm = n - 3;
-    for (int i = 0; i < nm; i++)
-      for (int j = 0; j < nm; j++) M[nm * i + j] = Hc[n * (3 + i) + 3 + j];
-    if (SymEig(nm, M, w, Z)) return HYLCMAT_ERR_NAN;
-    for (int i = 0; i < 3; i++)
-      for (int j = 0; j < n; j++) Hc[n * i + j] = Hc[n * j + i] = 0;
-    for (int i = 0; i < 3; i++) Hc[n * i + i] = floor_;
-    for (int q = 0; q < nm; q++) {
-      const double s = floor_ - w[q];
-      if (!(s > 0)) continue;
-      for (int i = 0; i < nm; i++)
-        for (int j = 0; j < nm; j++) Hc[n * (3 + i) + 3 + j] += s * Z[nm * q + i] * Z[nm * q + j];
+  for (int i = 1; i < na; i++)
+    for (int j = 1; j < na; j++)
+      for (int a = 0; a < 3; a++)
+        for (int b = 0; b < 3; b++)
+          M[nm * (3 * (i - 1) + a) + 3 * (j - 1) + b] = H[18 * (3 * act[i] + a) + 3 * act[j] + b] - tau * v[i] * R[j][3 * a + b] - tau * v[j] * R[i][3 * b + a] + tau * tau * v[i] * v[j] * C[3 * a + b];
+  if (SymEig(nm, M, w, Z)) return HYLCMAT_ERR_NAN;
+  /* the translations: + floor / na on the diagonal of every vertex block pair */
+  for (int i = 0; i < na; i++)
+    for (int j = 0; j < na; j++)
+      for (int a = 0; a < 3; a++) H[18 * (3 * act[i] + a) + 3 * act[j] + a] += floor_ / na;
+  /* the clamped eigenvalues: u = (P x I3) [0; z] */
+  for (int q = 0; q < nm; q++) {
+    const double s = floor_ - w[q];
+    double       u[18], dot[3] = {0, 0, 0};
+    if (!(s > 0)) continue;
+    for (int a = 0; a < 3; a++) u[a] = 0;
+    for (int i = 0; i < nm; i++) u[3 + i] = Z[nm * q + i];
+    for (int i = 1; i < na; i++)
+      for (int a = 0; a < 3; a++) dot[a] += v[i] * u[3 * i + a];
+    for (int i = 0; i < na; i++)
+      for (int a = 0; a < 3; a++) u[3 * i + a] -= tau * v[i] * dot[a];
+    for (int i = 0; i < n; i++) {
+      double *restrict row = H + 18 * (3 * act[i / 3] + i % 3);
+      const double su      = s * u[i];
+      for (int j = 0; j < na; j++) {
+        double *restrict blk = row + 3 * act[j];
+        blk[0] += su * u[3 * j];
+        blk[1] += su * u[3 * j + 1];
+        blk[2] += su * u[3 * j + 2];
+      }
     }
   }
-  /* undo the reflection */
-  for (int pass = 0; pass < 2; pass++) {
-    for (int c = 0; c < n; c++)
-      for (int a = 0; a < 3; a++) {
-        double s = 0;
-        for (int i = 0; i < na; i++) s += v[i] * (pass ? Hc[n * c + 3 * i + a] : Hc[n * (3 * i + a) + c]);
-        s *= 2 / vv;
-        for (int i = 0; i < na; i++) {
-          if (pass)
-            Hc[n * c + 3 * i + a] -= s * v[i];
-          else
-            Hc[n * (3 * i + a) + c] -= s * v[i];
-        }
-      }
-  }
-  for (int i = 0; i < n; i++)
-    for (int j = i + 1; j < n; j++) Hc[n * i + j] = Hc[n * j + i] = 0.5 * (Hc[n * i + j] + Hc[n * j + i]);
-  for (int i = 0; i < na; i++)
-    for (int a = 0; a < 3; a++)
-      for (int j = 0; j < na; j++)
-        for (int b = 0; b < 3; b++) H[18 * (3 * act[i] + a) + 3 * act[j] + b] = Hc[n * (3 * i + a) + 3 * j + b];
   return HYLCMAT_OK;
 }
