@@ -30,9 +30,11 @@ static inline double Norm2(double x, double z)
   return mx * sqrt((x / mx) * (x / mx) + (z / mx) * (z / mx));
 }
 
-/* A (n x n, row-major, symmetric; overwritten) = Z^T diag(w) Z: eigenvalues w, eigenvectors the rows
-   of Z (n x n). Returns 0, or -1 if the QR iteration did not converge. */
-static int SymEig(int n, double *restrict A, double *restrict w, double *restrict Z)
+/* A (n x n, row-major, symmetric; overwritten) = Q T Q^T, T = S^T diag(w) S: eigenvalues w, the
+   eigenvectors of T the rows of Z (n x n); the reflections of Q in the rows of Vr (n x n: row k holds
+   beta_k at k and the vector from k + 1), which BackTransform applies. Returns 0, or -1 if the QR
+   iteration did not converge. */
+static int SymEig(int n, double *restrict A, double *restrict w, double *restrict Z, double *restrict Vr)
 {
   double d[NMAX], e[NMAX], beta[NMAX];
 
@@ -74,43 +76,36 @@ static int SymEig(int n, double *restrict A, double *restrict w, double *restric
       const double xi = x[i], pi = p[i];
       for (int j = 0; j < m; j++) row[j] -= xi * p[j] + pi * x[j];
     }
-    for (int i = 0; i < m; i++) A[n * (k + 1 + i) + k] = x[i];
+    for (int i = 0; i < m; i++) Vr[n * k + k + 1 + i] = x[i];
   }
   for (int k = 0; k < n; k++) d[k] = A[n * k + k];
   if (n >= 2) e[n - 2] = A[n * (n - 1) + n - 2];
   e[n - 1] = 0;
-  /* Q = H_0 H_1 ... H_{n-3} (T = Q^T A Q); Z = Q^T = H_{n-3} ... H_0, built as Z <- Z H_k from k = n-3
-     down (rows 0..k of Z are still those of I there, zero in the columns k+1.. that H_k mixes) */
+  /* the rotations of the QR steps start from the identity: Z's rows become the eigenvectors s of T
+     (those of A are Q s with Q = H_0 H_1 ... H_{n-3}, applied by BackTransform to the few needed) */
   memset(Z, 0, sizeof(double) * n * n);
   for (int i = 0; i < n; i++) Z[n * i + i] = 1;
-  for (int k = n - 3; k >= 0; k--) {
-    const int m = n - k - 1;
-    double    v[NMAX];
-    if (beta[k] == 0) continue;
-    for (int i = 0; i < m; i++) v[i] = A[n * (k + 1 + i) + k];
-    for (int i = k + 1; i < n; i++) {
-      double *restrict row = Z + n * i + k + 1;
-      double s             = 0;
-      for (int j = 0; j < m; j++) s += row[j] * v[j];
-      s *= beta[k];
-      for (int j = 0; j < m; j++) row[j] -= s * v[j];
-    }
-  }
-  /* implicit QR steps on the trailing unreduced block; the eigenvectors of A are Q s for those s of T,
-     as rows s^T Q^T = s^T Z: each rotation G of T (T <- G^T T G) updates Z <- G^T Z, two rows */
+  for (int k = 0; k + 2 < n; k++) Vr[n * k + k] = beta[k]; /* row k of Vr: beta, then the vector */
+  /* implicit QR steps on the trailing unreduced block; each rotation G of T (T <- G^T T G) updates
+     Z <- G^T Z, two rows. An off-diagonal entry below eps |T| (the largest |d| + 2 |e|) is negligible:
+     the result is needed to rounding relative to |H| (the floor is 1e-8), not to each eigenvalue's own
+     relative accuracy, and that takes fewer steps when the eigenvalues span many magnitudes */
   {
-    int       hi = n - 1, it = 0;
+    int    hi = n - 1, it = 0;
+    double tnorm = 0;
+    for (int i = 0; i < n; i++) tnorm = fmax(tnorm, fabs(d[i]) + fabs(e[i]) + (i ? fabs(e[i - 1]) : 0));
+    tnorm           = 1e-300 + EPS * tnorm;
     const int maxit = 40 * n;
     while (hi > 0) {
       int lo;
-      if (fabs(e[hi - 1]) <= 1e-300 + EPS * (fabs(d[hi - 1]) + fabs(d[hi]))) {
+      if (fabs(e[hi - 1]) <= tnorm) {
         e[hi - 1] = 0;
         hi--;
         continue;
       }
       if (++it > maxit) return -1;
       lo = hi - 1;
-      while (lo > 0 && fabs(e[lo - 1]) > 1e-300 + EPS * (fabs(d[lo - 1]) + fabs(d[lo]))) lo--;
+      while (lo > 0 && fabs(e[lo - 1]) > tnorm) lo--;
       if (lo > 0) e[lo - 1] = 0;
       {
         /* Wilkinson's shift from the trailing 2 x 2 */
@@ -121,9 +116,9 @@ static int SymEig(int n, double *restrict A, double *restrict w, double *restric
           double c = 1, s = 0, a0, b0, d0;
           /* G = [c s; -s c] with s x + c z = 0 */
           if (z != 0) {
-            const double r = Norm2(x, z);
-            c              = x / r;
-            s              = -z / r;
+            const double ir = 1 / Norm2(x, z);
+            c               = x * ir;
+            s               = -z * ir;
           }
           if (k > lo) e[k - 1] = c * e[k - 1] - s * z; /* (k-1, k); (k-1, k+1) becomes 0 */
           a0       = d[k];
@@ -153,10 +148,26 @@ static int SymEig(int n, double *restrict A, double *restrict w, double *restric
   return 0;
 }
 
+/* z <- Q z with Q = H_0 H_1 ... H_{n-3} kept in Vr by SymEig */
+static void BackTransform(int n, const double *restrict Vr, double *restrict z)
+{
+  for (int k = n - 3; k >= 0; k--) {
+    const int    m           = n - k - 1;
+    const double beta        = Vr[n * k + k];
+    const double *restrict v = Vr + n * k + k + 1;
+    double *restrict zz      = z + k + 1;
+    double t                 = 0;
+    if (beta == 0) continue;
+    for (int i = 0; i < m; i++) t += v[i] * zz[i];
+    t *= beta;
+    for (int i = 0; i < m; i++) zz[i] -= t * v[i];
+  }
+}
+
 int hm_psd_project(double H[324], int nb)
 {
-  int          act[6], na = 0, n, nm;
-  double       v[6], vv   = 0, tau, R[6][9], C[9], M[NMAX * NMAX], Z[NMAX * NMAX], w[NMAX];
+  int          act[6], idx[18], na = 0, n, nm;
+  double       v[6], vv = 0, tau, R[6][9], C[9], M[NMAX * NMAX], Z[NMAX * NMAX], Vr[NMAX * NMAX], w[NMAX], W[18 * 18];
   const double floor_ = HYLCMAT_PSD_FLOOR;
 
   for (int i = 0; i < 3; i++) act[na++] = i;
@@ -164,6 +175,7 @@ int hm_psd_project(double H[324], int nb)
     if (nb >> k & 1) act[na++] = 3 + k;
   n  = 3 * na;
   nm = n - 3;
+  for (int i = 0; i < n; i++) idx[i] = 3 * act[i / 3] + i % 3;
   for (int i = 0; i < na; i++) v[i] = 1 / sqrt((double)na);
   v[0] += 1;
   for (int i = 0; i < na; i++) vv += v[i] * v[i];
@@ -182,36 +194,49 @@ int hm_psd_project(double H[324], int nb)
     C[q] = s;
   }
   for (int i = 1; i < na; i++)
-    for (int j = 1; j < na; j++)
+    for (int j = i; j < na; j++)
       for (int a = 0; a < 3; a++)
-        for (int b = 0; b < 3; b++)
-          M[nm * (3 * (i - 1) + a) + 3 * (j - 1) + b] = H[18 * (3 * act[i] + a) + 3 * act[j] + b] - tau * v[i] * R[j][3 * a + b] - tau * v[j] * R[i][3 * b + a] + tau * tau * v[i] * v[j] * C[3 * a + b];
-  if (SymEig(nm, M, w, Z)) return HYLCMAT_ERR_NAN;
+        for (int b = 0; b < 3; b++) {
+          const double t                              = H[18 * (3 * act[i] + a) + 3 * act[j] + b] - tau * v[i] * R[j][3 * a + b] - tau * v[j] * R[i][3 * b + a] + tau * tau * v[i] * v[j] * C[3 * a + b];
+          M[nm * (3 * (i - 1) + a) + 3 * (j - 1) + b] = t;
+          M[nm * (3 * (j - 1) + b) + 3 * (i - 1) + a] = t;
+        }
+  if (SymEig(nm, M, w, Z, Vr)) return HYLCMAT_ERR_NAN;
   /* the translations: + floor / na on the diagonal of every vertex block pair */
   for (int i = 0; i < na; i++)
     for (int j = 0; j < na; j++)
       for (int a = 0; a < 3; a++) H[18 * (3 * act[i] + a) + 3 * act[j] + a] += floor_ / na;
-  /* the clamped eigenvalues: u = (P x I3) [0; z] */
-  for (int q = 0; q < nm; q++) {
-    const double s = floor_ - w[q];
-    double       u[18], dot[3] = {0, 0, 0};
-    if (!(s > 0)) continue;
-    for (int a = 0; a < 3; a++) u[a] = 0;
-    for (int i = 0; i < nm; i++) u[3 + i] = Z[nm * q + i];
-    for (int i = 1; i < na; i++)
-      for (int a = 0; a < 3; a++) dot[a] += v[i] * u[3 * i + a];
-    for (int i = 0; i < na; i++)
-      for (int a = 0; a < 3; a++) u[3 * i + a] -= tau * v[i] * dot[a];
-    for (int i = 0; i < n; i++) {
-      double *restrict row = H + 18 * (3 * act[i / 3] + i % 3);
-      const double su      = s * u[i];
-      for (int j = 0; j < na; j++) {
-        double *restrict blk = row + 3 * act[j];
-        blk[0] += su * u[3 * j];
-        blk[1] += su * u[3 * j + 1];
-        blk[2] += su * u[3 * j + 2];
+  /* the clamped eigenvalues: u = (P x I3) [0; Q s]; W = sum (floor - lambda) u u^T (compact, upper
+     triangle), then added to H */
+  {
+    int clamped = 0;
+    for (int q = 0; q < nm; q++) {
+      const double s = floor_ - w[q];
+      double       u[18], dot[3] = {0, 0, 0};
+      if (!(s > 0)) continue;
+      if (!clamped++) memset(W, 0, sizeof(double) * n * n);
+      for (int a = 0; a < 3; a++) u[a] = 0;
+      for (int i = 0; i < nm; i++) u[3 + i] = Z[nm * q + i];
+      BackTransform(nm, Vr, u + 3);
+      for (int i = 1; i < na; i++)
+        for (int a = 0; a < 3; a++) dot[a] += v[i] * u[3 * i + a];
+      for (int i = 0; i < na; i++)
+        for (int a = 0; a < 3; a++) u[3 * i + a] -= tau * v[i] * dot[a];
+      for (int i = 0; i < n; i++) {
+        double *restrict row = W + n * i;
+        const double su      = s * u[i];
+        for (int j = i; j < n; j++) row[j] += su * u[j];
       }
     }
+    if (clamped)
+      for (int i = 0; i < n; i++) {
+        double *restrict row = H + 18 * idx[i];
+        row[idx[i]] += W[n * i + i];
+        for (int j = i + 1; j < n; j++) {
+          row[idx[j]] += W[n * i + j];
+          H[18 * idx[j] + idx[i]] = row[idx[j]];
+        }
+      }
   }
   return HYLCMAT_OK;
 }

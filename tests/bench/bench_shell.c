@@ -5,7 +5,8 @@
      energy; energy + gradient; + Hessian; + PSD projection;
    - whole mesh: a 224 x 224 grid of a 1 m square (100,352 triangles, 50,625 vertices) stretched and
      waved (curvatures up to ~10 1/m), hylcmat_mesh_eval at the same four levels (assembly included).
-   Rates from the process CPU time (the wall time is printed too: other work may share the core).
+   Rates from the process CPU time, the best of 5 repetitions (the wall time of that one in brackets:
+   other work may share the core, and the best repetition is the one it disturbed least).
    Targets (issue 31): energy + gradient >= 1e6 triangles/s, + Hessian >= 3e5/s, + projection >= 1e5/s. */
 #include <hylcmat.h>
 #include <math.h>
@@ -95,21 +96,25 @@ int main(void)
   printf("shell element (Algorithm C8) on stock1.json, one core; rates from CPU time (wall time in brackets)\n");
   printf("per triangle, %d random interior stencils evaluated repeatedly:\n", NS);
   for (int lev = 0; lev < 4; lev++) {
-    const long reps = lev < 2 ? 25000 : (lev == 2 ? 8000 : 2000);
-    double     E, g[18], H[324], c0 = Cpu(), w0 = Wall(), c, w;
-    for (long k = 0; k < reps; k++)
-      for (int s = 0; s < NS; s++) {
-        const int ret = hylcmat_shell_eval(m, &r[s], X[s], 7, lev == 3 ? HYLCMAT_SHELL_PSD : 0, &E, lev ? g : NULL, lev > 1 ? H : NULL);
-        if (ret) {
-          printf("error %d\n", ret);
-          return 1;
+    const long reps = lev < 2 ? 5000 : (lev == 2 ? 1600 : 400);
+    double     best = 0, bestw = 0;
+    for (int rep = 0; rep < 5; rep++) {
+      double E, g[18], H[324], c0 = Cpu(), w0 = Wall(), c, w;
+      for (long k = 0; k < reps; k++)
+        for (int s = 0; s < NS; s++) {
+          const int ret = hylcmat_shell_eval(m, &r[s], X[s], 7, lev == 3 ? HYLCMAT_SHELL_PSD : 0, &E, lev ? g : NULL, lev > 1 ? H : NULL);
+          if (ret) {
+            printf("error %d\n", ret);
+            return 1;
+          }
+          sink += E;
         }
-        sink += E;
-      }
-    c = Cpu() - c0;
-    w = Wall() - w0;
-    printf("  %-18s %10.3g triangles/s (%.3g)", names[lev], reps * NS / c, reps * NS / w);
-    printf(Verdict(reps * NS / c, targets[lev]), targets[lev]);
+      c = Cpu() - c0;
+      w = Wall() - w0;
+      if (reps * NS / c > best) best = reps * NS / c, bestw = reps * NS / w;
+    }
+    printf("  %-18s %10.3g triangles/s (%.3g)", names[lev], best, bestw);
+    printf(Verdict(best, targets[lev]), targets[lev]);
     printf("\n");
   }
   /* the whole mesh */
@@ -144,20 +149,24 @@ int main(void)
       x[3 * v + 2] = 0.01 * sin(2 * M_PI * u / 0.2) * cos(2 * M_PI * s / 0.3);
     }
     for (int lev = 0; lev < 4; lev++) {
-      double c, w;
-      int    ret;
-      c0  = Cpu();
-      w0  = Wall();
-      ret = hylcmat_mesh_eval(M, m, x, lev == 3 ? HYLCMAT_SHELL_PSD : 0, &E, lev ? g : NULL, lev > 1 ? h : NULL, err, sizeof(err));
-      c   = Cpu() - c0;
-      w   = Wall() - w0;
-      if (ret) {
-        printf("mesh eval: %s\n", err);
-        return 1;
+      double best = 0, bestw = 0;
+      for (int rep = 0; rep < (lev < 2 ? 5 : 3); rep++) {
+        double c, w;
+        int    ret;
+        c0  = Cpu();
+        w0  = Wall();
+        ret = hylcmat_mesh_eval(M, m, x, lev == 3 ? HYLCMAT_SHELL_PSD : 0, &E, lev ? g : NULL, lev > 1 ? h : NULL, err, sizeof(err));
+        c   = Cpu() - c0;
+        w   = Wall() - w0;
+        if (ret) {
+          printf("mesh eval: %s\n", err);
+          return 1;
+        }
+        sink += E;
+        if (nt / c > best) best = nt / c, bestw = nt / w;
       }
-      sink += E;
-      printf("  %-18s %10.3g triangles/s (%.3g)", names[lev], nt / c, nt / w);
-      printf(Verdict(nt / c, targets[lev]), targets[lev]);
+      printf("  %-18s %10.3g triangles/s (%.3g)", names[lev], best, bestw);
+      printf(Verdict(best, targets[lev]), targets[lev]);
       printf("\n");
     }
     hylcmat_mesh_free(M);
