@@ -10,10 +10,13 @@
    the first term raising the translations' zero eigenvalues to the floor: the same as clamping the
    eigenvalues of the whole matrix.
 
-   The eigensolver (n <= 15): Householder tridiagonalization with the reflections accumulated, then
-   implicit symmetric QR steps with Wilkinson's shift (Golub and Van Loan, Matrix Computations, 4th ed.,
-   8.3.1 - 8.3.3), each rotation applied to two rows of the accumulated transform (the eigenvectors are
-   rows). Plain C99. */
+   The eigensolver (n <= 15; Golub and Van Loan, Matrix Computations, 4th ed., 8.3): Householder
+   tridiagonalization T = Q^T M Q (the reflections kept; only the lower triangle is read and updated),
+   implicit symmetric QR steps with Wilkinson's shift on T with the rotations accumulated into T's
+   eigenvectors (rows of Z, from the identity), and Q applied only to the eigenvectors of the clamped
+   eigenvalues. (Computing only those by inverse iteration instead takes fewer instructions but more
+   time: its triangular solves are serial chains, while the rotations' vector updates overlap the QR
+   steps' own chain of square roots and divisions, which sets the pace.) Plain C99. */
 #include "hylcmatimpl.h"
 #include <math.h>
 #include <string.h>
@@ -24,19 +27,22 @@
 /* sqrt(x^2 + z^2) without overflow or underflow of the squares */
 static inline double Norm2(double x, double z)
 {
-  const double ax = fabs(x), az = fabs(z), mx = ax > az ? ax : az;
-  if (mx > 1e-150 && mx < 1e150) return sqrt(x * x + z * z);
-  if (mx == 0) return 0;
-  return mx * sqrt((x / mx) * (x / mx) + (z / mx) * (z / mx));
+  const double r = sqrt(x * x + z * z);
+  if (r > 1e-290 && r < 1e290) return r; /* the squares did not overflow or underflow */
+  {
+    const double ax = fabs(x), az = fabs(z), mx = ax > az ? ax : az;
+    if (mx == 0) return 0;
+    return mx * sqrt((x / mx) * (x / mx) + (z / mx) * (z / mx));
+  }
 }
 
-/* A (n x n, row-major, symmetric; overwritten) = Q T Q^T, T = S^T diag(w) S: eigenvalues w, the
-   eigenvectors of T the rows of Z (n x n); the reflections of Q in the rows of Vr (n x n: row k holds
-   beta_k at k and the vector from k + 1), which BackTransform applies. Returns 0, or -1 if the QR
-   iteration did not converge. */
-static int SymEig(int n, double *restrict A, double *restrict w, double *restrict Z, double *restrict Vr)
+/* Householder tridiagonalization of A (n x n, row-major, symmetric: only its lower triangle is read;
+   overwritten): T = Q^T A Q with
+   diagonal d and off-diagonal e (e[n-1] = 0); the reflections of Q in the rows of Vr (row k: beta_k at
+   k, the vector from k + 1), which BackTransform applies */
+static void Tridiagonalize(int n, double *restrict A, double *restrict d, double *restrict e, double *restrict Vr)
 {
-  double d[NMAX], e[NMAX], beta[NMAX];
+  double beta[NMAX];
 
   /* tridiagonalize: for column k, the reflection I - beta v v^T of rows k+1.. (v kept in column k) */
   for (int k = 0; k + 2 < n; k++) {
@@ -61,31 +67,44 @@ static int SymEig(int n, double *restrict A, double *restrict w, double *restric
     }
     beta[k] = 2 / vv;
     e[k]    = alpha;
-    /* p = beta A22 v; K = beta p.v / 2; p -= K v; A22 -= v p^T + p v^T */
+    /* p = beta A22 v from A22's lower triangle; K = beta p.v / 2; p -= K v; A22 -= v p^T + p v^T (lower) */
+    for (int i = 0; i < m; i++) p[i] = 0;
     for (int i = 0; i < m; i++) {
       const double *restrict row = A + n * (k + 1 + i) + k + 1;
-      double s                   = 0;
-      for (int j = 0; j < m; j++) s += row[j] * x[j];
-      p[i] = beta[k] * s;
+      const double xi            = x[i];
+      double       t             = row[i] * xi;
+      for (int j = 0; j < i; j++) {
+        t += row[j] * x[j];
+        p[j] += row[j] * xi;
+      }
+      p[i] += t;
     }
+    for (int i = 0; i < m; i++) p[i] *= beta[k];
     for (int i = 0; i < m; i++) K += p[i] * x[i];
     K *= 0.5 * beta[k];
     for (int i = 0; i < m; i++) p[i] -= K * x[i];
     for (int i = 0; i < m; i++) {
       double *restrict row = A + n * (k + 1 + i) + k + 1;
       const double xi = x[i], pi = p[i];
-      for (int j = 0; j < m; j++) row[j] -= xi * p[j] + pi * x[j];
+      for (int j = 0; j <= i; j++) row[j] -= xi * p[j] + pi * x[j];
     }
     for (int i = 0; i < m; i++) Vr[n * k + k + 1 + i] = x[i];
   }
+  for (int k = 0; k + 2 < n; k++) Vr[n * k + k] = beta[k];
   for (int k = 0; k < n; k++) d[k] = A[n * k + k];
   if (n >= 2) e[n - 2] = A[n * (n - 1) + n - 2];
   e[n - 1] = 0;
-  /* the rotations of the QR steps start from the identity: Z's rows become the eigenvectors s of T
-     (those of A are Q s with Q = H_0 H_1 ... H_{n-3}, applied by BackTransform to the few needed) */
-  memset(Z, 0, sizeof(double) * n * n);
-  for (int i = 0; i < n; i++) Z[n * i + i] = 1;
-  for (int k = 0; k + 2 < n; k++) Vr[n * k + k] = beta[k]; /* row k of Vr: beta, then the vector */
+}
+
+/* the eigenvalues w (unsorted) of the tridiagonal (d, e) (overwritten) by implicit QR steps; with Z (n x n,
+   set to I here) the rotations are accumulated into its rows, which become T's eigenvectors. Returns 0,
+   or -1 if the iteration did not converge. */
+static int TridiagQR(int n, double *restrict d, double *restrict e, double *restrict w, double *restrict Z)
+{
+  if (Z) {
+    memset(Z, 0, sizeof(double) * n * n);
+    for (int i = 0; i < n; i++) Z[n * i + i] = 1;
+  }
   /* implicit QR steps on the trailing unreduced block; each rotation G of T (T <- G^T T G) updates
      Z <- G^T Z, two rows. An off-diagonal entry below eps |T| (the largest |d| + 2 |e|) is negligible:
      the result is needed to rounding relative to |H| (the floor is 1e-8), not to each eigenvalue's own
@@ -132,7 +151,7 @@ static int SymEig(int n, double *restrict A, double *restrict w, double *restric
             e[k + 1] *= c;
             x = e[k];
           }
-          {
+          if (Z) {
             double *restrict zk = Z + n * k, *restrict zk1 = Z + n * (k + 1);
             for (int j = 0; j < n; j++) {
               const double u = zk[j], t = zk1[j];
@@ -148,7 +167,7 @@ static int SymEig(int n, double *restrict A, double *restrict w, double *restric
   return 0;
 }
 
-/* z <- Q z with Q = H_0 H_1 ... H_{n-3} kept in Vr by SymEig */
+/* z <- Q z with Q = H_0 H_1 ... H_{n-3} kept in Vr by Tridiagonalize */
 static void BackTransform(int n, const double *restrict Vr, double *restrict z)
 {
   for (int k = n - 3; k >= 0; k--) {
@@ -183,11 +202,12 @@ int hm_psd_project(double H[324], int nb)
   /* blocks B_ij of the vertices present; R_j = sum_i v_i B_ij, C = sum_j v_j R_j; then the blocks
      (i, j >= 1) of P B P: B_ij - tau v_i R_j - tau R_i^T v_j + tau^2 v_i v_j C */
   for (int j = 0; j < na; j++)
-    for (int q = 0; q < 9; q++) {
-      double s = 0;
-      for (int i = 0; i < na; i++) s += v[i] * H[18 * (3 * act[i] + q / 3) + 3 * act[j] + q % 3];
-      R[j][q] = s;
-    }
+    for (int a = 0; a < 3; a++)
+      for (int b = 0; b < 3; b++) {
+        double t = 0;
+        for (int i = 0; i < na; i++) t += v[i] * H[18 * (3 * act[i] + a) + 3 * act[j] + b];
+        R[j][3 * a + b] = t;
+      }
   for (int q = 0; q < 9; q++) {
     double s = 0;
     for (int j = 0; j < na; j++) s += v[j] * R[j][q];
@@ -198,10 +218,13 @@ int hm_psd_project(double H[324], int nb)
       for (int a = 0; a < 3; a++)
         for (int b = 0; b < 3; b++) {
           const double t                              = H[18 * (3 * act[i] + a) + 3 * act[j] + b] - tau * v[i] * R[j][3 * a + b] - tau * v[j] * R[i][3 * b + a] + tau * tau * v[i] * v[j] * C[3 * a + b];
-          M[nm * (3 * (i - 1) + a) + 3 * (j - 1) + b] = t;
-          M[nm * (3 * (j - 1) + b) + 3 * (i - 1) + a] = t;
+          M[nm * (3 * (j - 1) + b) + 3 * (i - 1) + a] = t; /* lower triangle (and the upper part of diagonal blocks) */
         }
-  if (SymEig(nm, M, w, Z, Vr)) return HYLCMAT_ERR_NAN;
+  {
+    double d[NMAX], e[NMAX];
+    Tridiagonalize(nm, M, d, e, Vr);
+    if (TridiagQR(nm, d, e, w, Z)) return HYLCMAT_ERR_NAN;
+  }
   /* the translations: + floor / na on the diagonal of every vertex block pair */
   for (int i = 0; i < na; i++)
     for (int j = 0; j < na; j++)
