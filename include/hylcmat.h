@@ -164,6 +164,12 @@ int hylcmat_shell_strains(const hylcmat_shell_rest *r, const double x[18], int n
    (HYLCMAT_ERR_NONFINITE, _DEGENERATE, _RANGE, _NAN, _ARG) E, grad and hess are set to 0: never NaN.
    No allocation; thread-safe. */
 int hylcmat_shell_eval(const hylcmat *m, const hylcmat_shell_rest *r, const double x[18], int nbmask, int flags, double *E, double grad[18], double hess[324]);
+/* n elements at once (rest data r[n], coordinates x (n x 18), neighbour masks nbmask[n]): E (n), grad
+   (n x 18, may be NULL), hess (n x 324, may be NULL; needs grad), the same values as n calls of
+   hylcmat_shell_eval. With HYLCMAT_SHELL_PSD it is faster on one core: the eigen-decompositions of four
+   elements are iterated in turn, overlapping their latency-bound chains. Returns the first error after
+   evaluating every element (a failed element's outputs are 0). No allocation; thread-safe. */
+int hylcmat_shell_eval_batch(const hylcmat *m, size_t n, const hylcmat_shell_rest *r, const double *x, const int *nbmask, int flags, double *E, double *grad, double *hess);
 
 /* ---- a mesh of shell elements ------------------------------------------------------------------
    Triangles tri (nt x 3 vertex indices, 0-based, counter-clockwise in material coordinates); the

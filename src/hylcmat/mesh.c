@@ -384,50 +384,72 @@ int hylcmat_mesh_strains(const hylcmat_mesh *mesh, const double *x, double *z, c
   return HYLCMAT_OK;
 }
 
+HM_INTERN int hm_psd_project_many(int m, double *const H[], const int nb[]);
+
+/* the group of the batched projection (hylcmat_shell_eval_batch) */
+#define GROUP 4
+
 int hylcmat_mesh_eval(const hylcmat_mesh *mesh, const hylcmat *m, const double *x, int flags, double *E, double *grad, double *hval, char *err, size_t errlen)
 {
-  hm_err Er  = {err, errlen};
-  double tot = 0;
+  hm_err    Er  = {err, errlen};
+  double    tot = 0, xs[GROUP][18], e[GROUP], g[GROUP][18], H[GROUP][324];
+  const int psd = hval && (flags & HYLCMAT_SHELL_PSD);
 
   if (err && errlen) err[0] = 0;
   if (E) *E = 0;
   HM_CHECK(mesh && m && x && E && (!hval || grad), &Er, HYLCMAT_ERR_ARG, "mesh eval: NULL argument (or a Hessian without the gradient)");
   if (grad) memset(grad, 0, sizeof(double) * 3 * (size_t)mesh->nv);
   if (hval) memset(hval, 0, sizeof(double) * (size_t)mesh->nnz);
-  for (int t = 0; t < mesh->nt; t++) {
-    const int *s  = mesh->st + 6 * (size_t)t;
-    const int  nb = mesh->nb[t];
-    double     xs[18], e, g[18], H[324];
-    int        ret;
-    Gather(mesh, t, x, xs);
-    ret = hylcmat_shell_eval(m, &mesh->rest[t], xs, nb, flags, &e, grad ? g : NULL, hval ? H : NULL);
+  /* groups of GROUP triangles: each element without the projection, then (PSD) the group's projections
+     together, then the assembly */
+  for (int t0 = 0; t0 < mesh->nt; t0 += GROUP) {
+    const int t1  = t0 + GROUP < mesh->nt ? t0 + GROUP : mesh->nt;
+    int       ret = HYLCMAT_OK, bad = -1;
+    for (int t = t0; t < t1 && !ret; t++) {
+      Gather(mesh, t, x, xs[t - t0]);
+      ret = hylcmat_shell_eval(m, &mesh->rest[t], xs[t - t0], mesh->nb[t], flags & ~HYLCMAT_SHELL_PSD, &e[t - t0], grad ? g[t - t0] : NULL, hval ? H[t - t0] : NULL);
+      if (ret) bad = t;
+    }
+    if (!ret && psd) {
+      double *Hs[GROUP];
+      int     nbs[GROUP];
+      for (int t = t0; t < t1; t++) Hs[t - t0] = H[t - t0], nbs[t - t0] = mesh->nb[t];
+      if (hm_psd_project_many(t1 - t0, Hs, nbs)) /* (never seen) each on its own, to name the triangle */
+        for (int t = t0; t < t1 && !ret; t++) {
+          ret = hylcmat_shell_eval(m, &mesh->rest[t], xs[t - t0], mesh->nb[t], flags, &e[t - t0], g[t - t0], H[t - t0]);
+          if (ret) bad = t;
+        }
+    }
     if (ret) {
       if (grad) memset(grad, 0, sizeof(double) * 3 * (size_t)mesh->nv);
       if (hval) memset(hval, 0, sizeof(double) * (size_t)mesh->nnz);
-      return ElementError(mesh, t, ret, &Er);
+      return ElementError(mesh, bad, ret, &Er);
     }
-    tot += e;
-    if (grad)
-      for (int i = 0; i < 6; i++)
-        if (s[i] >= 0)
-          for (int c = 0; c < 3; c++) grad[3 * (size_t)s[i] + c] += g[3 * i + c];
-    if (hval) {
-      const int *pos = mesh->pos + 36 * (size_t)t;
-      for (int i = 0; i < 6; i++) {
-        int64_t row;
-        int     deg3;
-        if (s[i] < 0) continue;
-        row  = mesh->base[s[i]];
-        deg3 = 3 * (int)(mesh->adjptr[s[i] + 1] - mesh->adjptr[s[i]]);
-        for (int j = 0; j < 6; j++) {
-          const int p = pos[6 * i + j];
-          if (p < 0) continue;
-          for (int a = 0; a < 3; a++) {
-            double       *dst = hval + row + a * deg3 + 3 * p;
-            const double *src = H + 18 * (3 * i + a) + 3 * j;
-            dst[0] += src[0];
-            dst[1] += src[1];
-            dst[2] += src[2];
+    for (int t = t0; t < t1; t++) {
+      const int *s = mesh->st + 6 * (size_t)t;
+      tot += e[t - t0];
+      if (grad)
+        for (int i = 0; i < 6; i++)
+          if (s[i] >= 0)
+            for (int c = 0; c < 3; c++) grad[3 * (size_t)s[i] + c] += g[t - t0][3 * i + c];
+      if (hval) {
+        const int *pos = mesh->pos + 36 * (size_t)t;
+        for (int i = 0; i < 6; i++) {
+          int64_t row;
+          int     deg3;
+          if (s[i] < 0) continue;
+          row  = mesh->base[s[i]];
+          deg3 = 3 * (int)(mesh->adjptr[s[i] + 1] - mesh->adjptr[s[i]]);
+          for (int j = 0; j < 6; j++) {
+            const int p = pos[6 * i + j];
+            if (p < 0) continue;
+            for (int a = 0; a < 3; a++) {
+              double       *dst = hval + row + a * deg3 + 3 * p;
+              const double *src = H[t - t0] + 18 * (3 * i + a) + 3 * j;
+              dst[0] += src[0];
+              dst[1] += src[1];
+              dst[2] += src[2];
+            }
           }
         }
       }

@@ -238,12 +238,13 @@ static int Strains(const hylcmat_shell_rest *r, const double x[18], int nb, Elem
   const double *D = r->dinv;
   double        d1[3], d2[3], N[3], t[3][2];
 
-  for (int i = 0; i < 9; i++)
-    if (!isfinite(x[i])) return HYLCMAT_ERR_NONFINITE;
-  for (int k = 0; k < 3; k++)
-    if (nb >> k & 1)
-      for (int i = 0; i < 3; i++)
-        if (!isfinite(x[9 + 3 * k + i])) return HYLCMAT_ERR_NONFINITE;
+  {
+    double t = 0; /* x * 0 is NaN exactly when x is not finite */
+    for (int i = 0; i < 9; i++) t += x[i] * 0;
+    for (int k = 0; k < 3; k++)
+      if (nb >> k & 1) t += x[9 + 3 * k] * 0 + x[10 + 3 * k] * 0 + x[11 + 3 * k] * 0;
+    if (t != 0 || isnan(t)) return HYLCMAT_ERR_NONFINITE;
+  }
   el->nb = nb;
   Sub(x + 3, x, d1);
   Sub(x + 6, x, d2);
@@ -341,6 +342,7 @@ static void MapHinge(double *H, double B[6][9], int va, int vb, int vc, int vp)
 }
 
 HM_INTERN int hm_psd_project(double H[324], int nb);
+HM_INTERN int hm_psd_project_many(int m, double *const H[], const int nb[]);
 
 /* the element at level 0 (E), 1 (+ g), 2 (+ H) */
 static int Element(const hylcmat *m, const hylcmat_shell_rest *r, const double x[18], int nb, int level, double *E, double g[18], double H[324], double zout[6])
@@ -374,12 +376,14 @@ static int Element(const hylcmat *m, const hylcmat_shell_rest *r, const double x
     if (!(nb >> k & 1)) continue;
     HingeGrad(h);
     {
-      const int va = EdgeA[k], v[3] = {EdgeB[k], EdgeC[k], 3 + k};
-      for (int c = 0; c < 3; c++)
-        for (int i = 0; i < 3; i++) {
-          g[3 * v[c] + i] += py[3 + k] * h->dw[3 * c + i];
-          g[3 * va + i] -= py[3 + k] * h->dw[3 * c + i];
-        }
+      double *ga = g + 3 * EdgeA[k], *gb = g + 3 * EdgeB[k], *gc = g + 3 * EdgeC[k], *gp = g + 9 + 3 * k;
+      for (int i = 0; i < 3; i++) {
+        const double de = py[3 + k] * h->dw[i], df = py[3 + k] * h->dw[3 + i], dg = py[3 + k] * h->dw[6 + i];
+        gb[i] += de;
+        gc[i] += df;
+        gp[i] = dg;
+        ga[i] -= de + df + dg;
+      }
     }
   }
   if (level < 2) return HYLCMAT_OK;
@@ -569,4 +573,34 @@ fail:
   if (hess)
     for (int i = 0; i < 324; i++) hess[i] = 0;
   return ret;
+}
+
+/* the group size of the batched projection: up to this many eigen-decompositions iterated in turn */
+#define PSD_GROUP 4
+
+int hylcmat_shell_eval_batch(const hylcmat *m, size_t n, const hylcmat_shell_rest *r, const double *x, const int *nbmask, int flags, double *E, double *grad, double *hess)
+{
+  int first = HYLCMAT_OK;
+
+  if (!m || (n && (!r || !x || !nbmask || !E)) || (hess && !grad)) return HYLCMAT_ERR_ARG;
+  for (size_t i0 = 0; i0 < n; i0 += PSD_GROUP) {
+    const size_t i1 = i0 + PSD_GROUP < n ? i0 + PSD_GROUP : n;
+    double      *Hs[PSD_GROUP];
+    int          nbs[PSD_GROUP], g = 0;
+    size_t       which[PSD_GROUP];
+    for (size_t i = i0; i < i1; i++) {
+      const int ret = hylcmat_shell_eval(m, &r[i], x + 18 * i, nbmask[i], flags & ~HYLCMAT_SHELL_PSD, &E[i], grad ? grad + 18 * i : NULL, hess ? hess + 324 * i : NULL);
+      if (ret) {
+        if (!first) first = ret;
+      } else if (hess && (flags & HYLCMAT_SHELL_PSD)) {
+        Hs[g] = hess + 324 * i, nbs[g] = nbmask[i] & 7, which[g++] = i;
+      }
+    }
+    if (g && hm_psd_project_many(g, Hs, nbs)) /* (never seen) each on its own, to find the one */
+      for (int k = 0; k < g; k++) {
+        const size_t i = which[k];
+        if (hylcmat_shell_eval(m, &r[i], x + 18 * i, nbmask[i], flags, &E[i], grad + 18 * i, hess + 324 * i) && !first) first = HYLCMAT_ERR_NAN;
+      }
+  }
+  return first;
 }

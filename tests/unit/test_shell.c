@@ -497,6 +497,35 @@ static void TestRigid(const hylcmat *m, const char *name, unsigned long long *st
   }
 }
 
+/* hylcmat_shell_eval_batch gives exactly the values of single calls, also around a failing element */
+static void TestBatch(const hylcmat *m, unsigned long long *st)
+{
+  enum { NB = 11 };
+  hylcmat_shell_rest r[NB];
+  double             x[NB * 18], E[NB], g[NB * 18], H[NB * 324], sc[5];
+  int                nb[NB];
+
+  hylcmat_strain_scale(m, sc);
+  for (int i = 0; i < NB; i++) {
+    Stencil S;
+    MakeStencil(i % 4, 0.7 * fmin(sc[3], sc[4]), 0.1, st, &S);
+    r[i]  = S.r;
+    nb[i] = S.nb;
+    memcpy(x + 18 * i, S.x, sizeof(S.x));
+  }
+  x[18 * 5 + 4] = NAN;
+  for (int flags = 0; flags <= HYLCMAT_SHELL_PSD; flags++) {
+    const int ret = hylcmat_shell_eval_batch(m, NB, r, x, nb, flags, E, g, H);
+    HYLC_CHECK(ret == HYLCMAT_ERR_NONFINITE, "batch: returned %d, not the NaN element's error", ret);
+    for (int i = 0; i < NB; i++) {
+      double    e1, g1[18], H1[324];
+      const int r1 = hylcmat_shell_eval(m, &r[i], x + 18 * i, nb[i], flags, &e1, g1, H1);
+      HYLC_CHECK((r1 != 0) == (i == 5), "batch: element %d: single call returned %d", i, r1);
+      HYLC_CHECK(e1 == E[i] && !memcmp(g1, g + 18 * i, sizeof(g1)) && !memcmp(H1, H + 324 * i, sizeof(H1)), "batch (flags %d): element %d differs from a single call", flags, i);
+    }
+  }
+}
+
 /* ---- meshes ----------------------------------------------------------------------------------------- */
 /* an (n+1) x (n+1) grid of [0, a] x [0, b] in material coordinates, two triangles per cell (diagonals
    alternating if alt), interior vertices jittered by jit cells */
@@ -928,6 +957,7 @@ int main(int argc, char **argv)
     TestRigid(mat->hm, name, &st, rig);
     PetscCall(TestFlatMesh(mat->hm, name, 1, &st));
     if (!f) PetscCall(TestErrors(mat->hm));
+    TestBatch(mat->hm, &st);
     PetscCall(HylcMaterialDestroy(&mat));
     ntables++;
   }
