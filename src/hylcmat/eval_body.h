@@ -119,8 +119,28 @@ static void F(QuotPieces)(int n, const double t[], const R P[], const R M[], int
   R       l[4], d[4] = {0, 0, 0, 0};
   const R w = s * s;
 
-  F(Piece)
-  (n, t, P, M, j0, ext, L, a, l);
+  if (Rp == L + 1 && L >= 0 && Rp < n - 1) {
+    /* an interior knot k = Rp between a - s and a + s: both pieces' own coefficients once; the jump at k
+       is J = (0, 0, cR2 - (cL2 + 3 cL3 h), cR3 - cL3) (the left piece moved to t[k]), shifted to a */
+    R       cL[4], cR[4], kL, kR, J2, J3, dk;
+    const R h = (R)t[Rp] - (R)t[L];
+    F(PieceOwn)
+    (n, t, P, M, j0, ext, L, &kL, cL);
+    F(PieceOwn)
+    (n, t, P, M, j0, ext, Rp, &kR, cR);
+    F(ShiftPoly)
+    (cL, a - kL, l);
+    J2   = cR[2] - (cL[2] + 3 * cL[3] * h);
+    J3   = cR[3] - cL[3];
+    dk   = a - kR;
+    d[0] = dk * dk * (J2 + J3 * dk);
+    d[1] = dk * (2 * J2 + 3 * J3 * dk);
+    d[2] = J2 + 3 * J3 * dk;
+    d[3] = J3;
+  } else {
+    F(Piece)
+    (n, t, P, M, j0, ext, L, a, l);
+  }
   q->P   = l[0] + l[2] * w;
   q->Q   = l[1] + l[3] * w;
   q->Pa  = nd > 0 ? l[1] + 3 * l[3] * w : 0;
@@ -131,14 +151,15 @@ static void F(QuotPieces)(int n, const double t[], const R P[], const R M[], int
   q->W2  = 0;
   q->W3  = 0;
   if (Rp == L) return;
-  for (int k = L + 1; k <= Rp; k++) { /* h_R - h_L: the sum of the jumps at the knots between */
-    R J[4], e[4];
-    F(KnotJump)
-    (n, t, P, M, j0, ext, k, J);
-    F(ShiftPoly)
-    (J, a - t[k], e);
-    for (int r = 0; r < 4; r++) d[r] += e[r];
-  }
+  if (!(Rp == L + 1 && L >= 0 && Rp < n - 1))
+    for (int k = L + 1; k <= Rp; k++) { /* h_R - h_L: the sum of the jumps at the knots between */
+      R J[4], e[4];
+      F(KnotJump)
+      (n, t, P, M, j0, ext, k, J);
+      F(ShiftPoly)
+      (J, a - t[k], e);
+      for (int r = 0; r < 4; r++) d[r] += e[r];
+    }
   {
     const R s3 = w * s;
     q->P += 0.5 * (d[0] + d[1] * s + d[2] * w + d[3] * s3);
