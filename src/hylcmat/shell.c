@@ -17,11 +17,12 @@
        d2theta = (X d2Y - Y d2X) / r^2 - (dtheta drho^T + drho dtheta^T),  drho = (X dX + Y dY) / r^2,
    r^2 = X^2 + Y^2 = (|e x f| |g x e|)^2, and mapped to the vertices (x_a gets minus the sum).
 
-   Projection: the translations of the vertices present are exact null vectors of H; a Householder
-   reflection over the vertices splits them off, the remaining (3 n - 3)-dimensional block is
-   eigen-decomposed (Householder tridiagonalization and implicit QL with Wilkinson shifts), eigenvalues
-   below HYLCMAT_PSD_FLOOR are raised to it (H + sum (floor - lambda) v v^T), the translations get the
-   floor, and the reflection is undone. This equals clamping the eigenvalues of the whole matrix. */
+   Projection (src/hylcmat/psd.c): the translations of the vertices present are exact null vectors of
+   H; a Householder reflection over the vertices splits them off, the remaining (3 n - 3)-dimensional
+   block is eigen-decomposed (Householder tridiagonalization and implicit QR with Wilkinson shifts),
+   eigenvalues below HYLCMAT_PSD_FLOOR are raised to it (H + sum (floor - lambda) u u^T), and the
+   translations get the floor: the same as clamping the eigenvalues of the whole matrix. The Hessian is
+   built in its upper block triangle and mirrored once, so it is exactly symmetric. */
 #include "hylcmatimpl.h"
 #include <math.h>
 #include <string.h>
@@ -347,11 +348,9 @@ HM_INTERN int hm_psd_project_many(int m, double *const H[], const int nb[]);
 /* the element at level 0 (E), 1 (+ g), 2 (+ H) */
 static int Element(const hylcmat *m, const hylcmat_shell_rest *r, const double x[18], int nb, int level, double *E, double g[18], double H[324], double zout[6])
 {
-  Elem         el;
-  double       z[6], psi, dpsi[6], hpsi[36], py[6], Hy[36], A = r->area;
-  const double T0 = 0;
+  Elem   el;
+  double z[6], psi, dpsi[6], hpsi[36], py[6], Hy[36], A = r->area;
 
-  (void)T0;
   HM_CALL(Strains(r, x, nb, &el, z));
   if (zout) memcpy(zout, z, sizeof(z));
   HM_CALL(hylcmat_eval(m, z, &psi, level ? dpsi : NULL, level > 1 ? hpsi : NULL));
