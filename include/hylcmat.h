@@ -4,7 +4,9 @@
    with no dependency beyond libc and libm: read a material table (ARCSim-HYLC JSON; hylc HDF5 when the
    library is built with HYLCMAT_WITH_HDF5) and evaluate Psi(s), its gradient and its Hessian with
    respect to the six strains s = (sx, sa, sy, II00, II01, II11), with exact limits at equal
-   eigenvalues of II. docs/library.md describes the API, the units and the strain definitions.
+   eigenvalues of II; and the macroscale shell element of Algorithm C8 (energy, gradient, Hessian of a
+   triangle and its edge neighbours, and of a whole mesh). docs/library.md describes the API, the
+   units, the strain definitions and the element's conventions.
 
    Thread safety: there is no global state. A loaded table is read-only for the evaluation functions,
    so any number of threads may evaluate one table at once; the set/load functions modify a table and
@@ -14,13 +16,14 @@
    errlen write a one-line message (naming the file, the line and the key of a bad value) into err
    (truncated to errlen - 1 characters; err may be NULL). */
 #include <stddef.h>
+#include <stdint.h>
 
 #ifdef __cplusplus
 extern "C" {
 #endif
 
 #define HYLCMAT_VERSION_MAJOR 1
-#define HYLCMAT_VERSION_MINOR 0
+#define HYLCMAT_VERSION_MINOR 1
 
 enum {
   HYLCMAT_OK          = 0,
@@ -32,7 +35,16 @@ enum {
   HYLCMAT_ERR_ARG     = 6, /* a bad argument (NULL table, term index out of range, ...) */
   HYLCMAT_ERR_NO_HDF5 = 7, /* an HDF5 file, but the library was built without HDF5 */
   HYLCMAT_ERR_HDF5    = 8, /* the HDF5 library failed */
-  HYLCMAT_ERR_NAN     = 9  /* a NaN result at a finite strain (a defect: please report it) */
+  HYLCMAT_ERR_NAN     = 9, /* a NaN result at a finite strain (a defect: please report it) */
+  /* the shell element and the mesh */
+  HYLCMAT_ERR_MESH = 10,       /* a mesh the element cannot use: vertex index out of range, a vertex twice
+                                  in a triangle, an edge of more than two triangles (non-manifold), two
+                                  neighbours of opposite orientation */
+  HYLCMAT_ERR_REST       = 11, /* an inverted (clockwise), zero-area or non-finite rest triangle */
+  HYLCMAT_ERR_NONFINITE  = 12, /* a NaN or infinite deformed coordinate */
+  HYLCMAT_ERR_DEGENERATE = 13, /* a deformed triangle or neighbour face of zero area, or a zero-length
+                                  material axis: the strains are undefined */
+  HYLCMAT_ERR_RANGE = 14       /* a result beyond the double range (outputs set to 0) */
 };
 
 #define HYLCMAT_N1D 5 /* 1D terms k = 0 sx, 1 sa, 2 sy, 3 x-bending (II00), 4 y-bending (II11) */
@@ -104,6 +116,99 @@ void   hylcmat_strain_shift(const hylcmat *m, int shift[5]);
 /* 1 and *t filled (pointers owned by the table, valid until it changes) if the term is present, else 0 */
 int hylcmat_term1d_get(const hylcmat *m, int k, hylcmat_term1d *t);
 int hylcmat_term2d_get(const hylcmat *m, int k0, int k1, hylcmat_term2d *t);
+
+/* ---- the shell element (Algorithm C8) -------------------------------------------------------------
+   A triangle and the vertices across its edges, 6 vertices, 18 coordinates x (m, vertex i at 3i..3i+2):
+   0, 1, 2 the triangle (counter-clockwise in material coordinates), 3 across edge (0,1), 4 across (1,2),
+   5 across (2,0) (docs/library.md has a figure). nbmask: bit k set if vertex 3+k exists; a missing
+   neighbour (boundary edge) drops that edge's bending term, its coordinates are not read and its
+   gradient entries and Hessian rows and columns are 0.
+   Strains (method-spec section 10, the conventions of ARCSim-HYLC): F = [x1 - x0 | x2 - x0] Dm^-1 =
+   [x_u | x_v]; sx = |x_u| - 1, sa = x_u.x_v / (|x_u| |x_v|), sy = |x_v| - 1;
+   II = -2 A_def sum_k theta_k / l_k t_k t_k^T over the edges with a neighbour (A_def the deformed area,
+   l_k the deformed edge length, t_k the material gradient of the barycentric coordinate of the vertex
+   opposite edge k, theta_k = atan2((n x m).e, n.m) the signed dihedral angle with n the unit normal of
+   (x1 - x0) x (x2 - x0), e the unit edge a -> b, m the unit normal of the neighbour face (b, a, p)).
+   II > 0 bends the surface toward n. Energy E = A Psi(z) with the rest area A; gradient +dE/dx.
+   Everything is computed from edge vectors (translation-exact); the Hessian is exact (the chain rule
+   with the exact second derivatives of the strains, and hylcmat_eval's exact equal-eigenvalue limits),
+   so it is bounded at flat states. */
+
+/* flag of hylcmat_shell_eval / hylcmat_mesh_eval: project each element Hessian to positive
+   semidefinite (its eigenvalues below HYLCMAT_PSD_FLOOR raised to it, as ARCSim-HYLC does) */
+#define HYLCMAT_SHELL_PSD 1
+#define HYLCMAT_PSD_FLOOR 1e-8
+
+/* The rest data of one element: Dm^-1 (row-major) with Dm = [u1 - u0 | u2 - u0] the columns of the
+   material coordinates (m) of the triangle's vertices, and the rest area A = det(Dm) / 2 > 0 (m^2). */
+typedef struct {
+  double dinv[4];
+  double area;
+} hylcmat_shell_rest;
+
+/* Rest data from material coordinates uv = (u0, v0, u1, v1, u2, v2) (m). HYLCMAT_ERR_REST for a
+   non-finite, clockwise (inverted) or zero-area triangle (sine of its angle at vertex 0 below 1e-13),
+   HYLCMAT_ERR_ARG for NULL. */
+int hylcmat_shell_rest_uv(const double uv[6], hylcmat_shell_rest *r);
+/* Rest data from the 3D rest positions X (3 x 3, vertex-major, m) and the material angle (radians):
+   the material u axis lies in the triangle's plane at that angle from the edge x1 - x0, turning toward
+   x2 (counter-clockwise about the rest normal); v is u turned by +90 degrees. Errors as above. */
+int hylcmat_shell_rest_3d(const double X[9], double angle, hylcmat_shell_rest *r);
+/* The strains z = (sx, sa, sy, II00, II01, II11) of a stencil, and (J != NULL) their Jacobian
+   J = dz/dx (6 x 18, row-major). Returns HYLCMAT_ERR_NONFINITE, HYLCMAT_ERR_DEGENERATE (outputs 0) or
+   HYLCMAT_OK. No allocation; thread-safe. */
+int hylcmat_shell_strains(const hylcmat_shell_rest *r, const double x[18], int nbmask, double z[6], double J[108]);
+/* The element energy E = A Psi(z), its gradient grad = dE/dx (18, may be NULL) and Hessian hess
+   (18 x 18 row-major, symmetric, may be NULL; needs grad); flags: HYLCMAT_SHELL_PSD projects hess (on
+   the coordinates of the vertices present; the translations get HYLCMAT_PSD_FLOOR). On an error
+   (HYLCMAT_ERR_NONFINITE, _DEGENERATE, _RANGE, _NAN, _ARG) E, grad and hess are set to 0: never NaN.
+   No allocation; thread-safe. */
+int hylcmat_shell_eval(const hylcmat *m, const hylcmat_shell_rest *r, const double x[18], int nbmask, int flags, double *E, double grad[18], double hess[324]);
+/* n elements at once (rest data r[n], coordinates x (n x 18), neighbour masks nbmask[n]): E (n), grad
+   (n x 18, may be NULL), hess (n x 324, may be NULL; needs grad), the same values as n calls of
+   hylcmat_shell_eval. With HYLCMAT_SHELL_PSD it is faster on one core: the eigen-decompositions of four
+   elements are iterated in turn, overlapping their latency-bound chains. Returns the first error after
+   evaluating every element (a failed element's outputs are 0). No allocation; thread-safe. */
+int hylcmat_shell_eval_batch(const hylcmat *m, size_t n, const hylcmat_shell_rest *r, const double *x, const int *nbmask, int flags, double *E, double *grad, double *hess);
+
+/* ---- a mesh of shell elements ------------------------------------------------------------------
+   Triangles tri (nt x 3 vertex indices, 0-based, counter-clockwise in material coordinates); the
+   adjacency (each triangle's stencil), the rest data and the sparsity of the Hessian are computed once.
+   Edges of one triangle are boundary edges (no bending term). Read-only after creation: any number of
+   threads may evaluate one mesh at once. */
+typedef struct hylcmat_mesh hylcmat_mesh;
+
+/* A mesh from rest positions X (nv x 3, m) and per-triangle material angles (nt, radians, as
+   hylcmat_shell_rest_3d; NULL: all 0). Errors (with a message naming the triangle or edge):
+   HYLCMAT_ERR_MESH, HYLCMAT_ERR_REST, HYLCMAT_ERR_ARG (nv < 3, nt < 1, NULL arrays),
+   HYLCMAT_ERR_MEMORY. *mesh is NULL on an error. */
+int hylcmat_mesh_create(int nv, int nt, const int *tri, const double *X, const double *angle, hylcmat_mesh **mesh, char *err, size_t errlen);
+/* A mesh from material coordinates per triangle corner: uv (nt x 6: u0 v0 u1 v1 u2 v2, m; a seam may
+   give one vertex different coordinates in different triangles). Errors as hylcmat_mesh_create. */
+int  hylcmat_mesh_create_uv(int nv, int nt, const int *tri, const double *uv, hylcmat_mesh **mesh, char *err, size_t errlen);
+void hylcmat_mesh_free(hylcmat_mesh *mesh);
+int  hylcmat_mesh_nv(const hylcmat_mesh *mesh); /* number of vertices */
+int  hylcmat_mesh_nt(const hylcmat_mesh *mesh); /* number of triangles */
+/* the total rest area (m^2) */
+double hylcmat_mesh_area(const hylcmat_mesh *mesh);
+/* the stencil of triangle t: its 6 vertex indices (-1 for a missing neighbour) and its rest data
+   (either pointer may be NULL); HYLCMAT_ERR_ARG if t is out of range */
+int hylcmat_mesh_element(const hylcmat_mesh *mesh, int t, int v[6], hylcmat_shell_rest *r);
+/* The sparsity of the Hessian (3 nv x 3 nv, symmetric, both triangles stored, columns sorted in each
+   row): the number of entries, and its CSR arrays rowptr (3 nv + 1) and colind (nnz) or its COO rows
+   and cols (nnz each), all in the order of the values of hylcmat_mesh_eval. */
+int64_t hylcmat_mesh_hessian_nnz(const hylcmat_mesh *mesh);
+void    hylcmat_mesh_hessian_csr(const hylcmat_mesh *mesh, int64_t *rowptr, int *colind);
+void    hylcmat_mesh_hessian_coo(const hylcmat_mesh *mesh, int *rows, int *cols);
+/* the strains of every triangle at positions x (nv x 3): z (nt x 6). Errors as hylcmat_shell_strains,
+   with the triangle in the message. */
+int hylcmat_mesh_strains(const hylcmat_mesh *mesh, const double *x, double *z, char *err, size_t errlen);
+/* The total energy E = sum of the elements' A Psi at positions x (nv x 3), its gradient grad (nv x 3,
+   may be NULL) and the Hessian's values hval (nnz, in the order of hylcmat_mesh_hessian_csr/coo; may
+   be NULL; needs grad). flags: HYLCMAT_SHELL_PSD projects every element Hessian before assembly. On an
+   error (as hylcmat_shell_eval; the message names the triangle) the outputs are 0. Serial (one
+   thread); no allocation. */
+int hylcmat_mesh_eval(const hylcmat_mesh *mesh, const hylcmat *m, const double *x, int flags, double *E, double *grad, double *hval, char *err, size_t errlen);
 
 /* ---- names -------------------------------------------------------------------------------------- */
 /* (k0, k1) of 2D term q (0..8), in the order of the JSON tables */

@@ -5,6 +5,8 @@ hylc's HDF5 files (through h5py).
     m = hylc.Material("stock1.json")            # or a hylc HDF5 material (model.h5)
     psi, grad, hess = m.evaluate(strains)       # strains: (N, 6) -> (N,), (N, 6), (N, 6, 6)
     psi, grad = m.evaluate(strains, hessian=False)
+    mesh = hylc.Mesh(triangles, rest=X)         # or uv=...: the shell element of Algorithm C8
+    E, grad, H = mesh.evaluate(m, x)            # (), (nv, 3), scipy.sparse (3 nv x 3 nv)
 
 Strains are s = (sx, sa, sy, II00, II01, II11): stretches sx, sy (0 at rest), sa the cosine of the
 angle between the deformed material axes, II the second fundamental form in 1/m. Psi is in J/m^2
@@ -17,7 +19,7 @@ import os
 
 import numpy as np
 
-__all__ = ["Material", "HylcError", "read_material_h5", "read_samples", "library_path"]
+__all__ = ["Material", "Mesh", "HylcError", "read_material_h5", "read_samples", "library_path"]
 
 _HDF5_SIGNATURE = b"\x89HDF\r\n\x1a\n"
 TERMS_1D = ["sx", "sa", "sy", "II00", "II11"]
@@ -89,6 +91,31 @@ _lib.hylcmat_set_strain_scale.argtypes = [_vp, _dp, ctypes.c_char_p, ctypes.c_si
 _lib.hylcmat_set_strain_scale.restype = ctypes.c_int
 _lib.hylcmat_set_strain_shift.argtypes = [_vp, ctypes.POINTER(ctypes.c_int)]
 _lib.hylcmat_set_strain_shift.restype = None
+
+
+_ip = ctypes.POINTER(ctypes.c_int)
+_i64p = ctypes.POINTER(ctypes.c_int64)
+for _f, _args in (("hylcmat_mesh_create", [ctypes.c_int, ctypes.c_int, _vp, _vp, _vp, ctypes.POINTER(_vp), ctypes.c_char_p, ctypes.c_size_t]),
+                  ("hylcmat_mesh_create_uv", [ctypes.c_int, ctypes.c_int, _vp, _vp, ctypes.POINTER(_vp), ctypes.c_char_p, ctypes.c_size_t]),
+                  ("hylcmat_mesh_strains", [_vp, _vp, _vp, ctypes.c_char_p, ctypes.c_size_t]),
+                  ("hylcmat_mesh_eval", [_vp, _vp, _vp, ctypes.c_int, _dp, _vp, _vp, ctypes.c_char_p, ctypes.c_size_t]),
+                  ("hylcmat_mesh_element", [_vp, ctypes.c_int, _vp, _vp])):
+    getattr(_lib, _f).argtypes = _args
+    getattr(_lib, _f).restype = ctypes.c_int
+_lib.hylcmat_mesh_free.argtypes = [_vp]
+_lib.hylcmat_mesh_free.restype = None
+for _f in ("hylcmat_mesh_nv", "hylcmat_mesh_nt"):
+    getattr(_lib, _f).argtypes = [_vp]
+    getattr(_lib, _f).restype = ctypes.c_int
+_lib.hylcmat_mesh_area.argtypes = [_vp]
+_lib.hylcmat_mesh_area.restype = ctypes.c_double
+_lib.hylcmat_mesh_hessian_nnz.argtypes = [_vp]
+_lib.hylcmat_mesh_hessian_nnz.restype = ctypes.c_int64
+_lib.hylcmat_mesh_hessian_csr.argtypes = [_vp, _vp, _vp]
+_lib.hylcmat_mesh_hessian_csr.restype = None
+_lib.hylcmat_mesh_hessian_coo.argtypes = [_vp, _vp, _vp]
+_lib.hylcmat_mesh_hessian_coo.restype = None
+PSD = 1  # HYLCMAT_SHELL_PSD
 
 
 class _Term1D(ctypes.Structure):
@@ -203,6 +230,138 @@ class Material:
     def psi(self, strains):
         """Psi only (N,)"""
         return self.evaluate(strains, hessian=False, gradient=False)
+
+
+class Mesh:
+    """A triangle mesh of shell elements (Algorithm C8, libhylcmat's hylcmat_mesh): the adjacency, the
+    rest data and the Hessian's sparsity are computed once.
+
+        Mesh(triangles, rest=X, angle=None)   # rest positions (nv, 3) in m, material angle per
+                                              # triangle (radians from the edge x1 - x0; None: 0)
+        Mesh(triangles, uv=U)                 # material coordinates (m): per vertex (nv, 2) or per
+                                              # triangle corner (nt, 3, 2)
+
+    triangles: (nt, 3) vertex indices, counter-clockwise in material coordinates (this fixes the
+    normal n: II > 0 bends toward n). An edge of one triangle is a boundary edge. Errors (non-manifold
+    edge, inverted or zero-area rest triangle, ...) raise HylcError with the triangle in the message."""
+
+    def __init__(self, triangles, rest=None, angle=None, uv=None):
+        tri = np.ascontiguousarray(triangles, dtype=np.int32)
+        if tri.ndim != 2 or tri.shape[1] != 3:
+            raise ValueError("triangles must have shape (nt, 3), got %s" % (np.shape(triangles),))
+        self._h = _vp()
+        err = ctypes.create_string_buffer(1024)
+        nt = tri.shape[0]
+        if (rest is None) == (uv is None):
+            raise ValueError("give either rest (nv, 3) or uv (nv, 2) / (nt, 3, 2)")
+        if rest is not None:
+            X = np.ascontiguousarray(rest, dtype=np.float64)
+            if X.ndim != 2 or X.shape[1] != 3:
+                raise ValueError("rest must have shape (nv, 3), got %s" % (X.shape,))
+            nv = X.shape[0]
+            ang = None
+            if angle is not None:
+                ang = np.ascontiguousarray(np.broadcast_to(np.asarray(angle, dtype=np.float64), (nt,)))
+            _check(_lib.hylcmat_mesh_create(nv, nt, tri.ctypes.data, X.ctypes.data, ang.ctypes.data if ang is not None else None,
+                                            ctypes.byref(self._h), err, len(err)), err)
+        else:
+            U = np.asarray(uv, dtype=np.float64)
+            if U.ndim == 2 and U.shape[1] == 2:
+                nv = U.shape[0]
+                if tri.size and (tri.min() < 0 or tri.max() >= nv):
+                    raise HylcError(10, "mesh: a vertex index is out of range (%d vertices)" % nv)
+                U = U[tri]
+            elif U.ndim == 3 and U.shape[1:] == (3, 2) and U.shape[0] == nt:
+                nv = int(tri.max()) + 1 if tri.size else 0
+            else:
+                raise ValueError("uv must have shape (nv, 2) or (nt, 3, 2), got %s" % (U.shape,))
+            U = np.ascontiguousarray(U.reshape(nt, 6))
+            _check(_lib.hylcmat_mesh_create_uv(nv, nt, tri.ctypes.data, U.ctypes.data, ctypes.byref(self._h), err, len(err)), err)
+        self.nv = _lib.hylcmat_mesh_nv(self._h)
+        self.nt = _lib.hylcmat_mesh_nt(self._h)
+        self.nnz = int(_lib.hylcmat_mesh_hessian_nnz(self._h))
+        self._csr = None
+
+    def __del__(self):
+        h = getattr(self, "_h", None)
+        if h:
+            _lib.hylcmat_mesh_free(h)
+            self._h = _vp()
+
+    @property
+    def area(self):
+        """the total rest area (m^2)"""
+        return _lib.hylcmat_mesh_area(self._h)
+
+    @property
+    def stencils(self):
+        """(nt, 6) vertex indices of each triangle's stencil: its vertices, then the neighbours across
+        the edges (0,1), (1,2), (2,0); -1 on a boundary edge"""
+        st = np.empty((self.nt, 6), dtype=np.int32)
+        for t in range(self.nt):
+            _lib.hylcmat_mesh_element(self._h, t, st[t].ctypes.data, None)
+        return st
+
+    def hessian_structure(self):
+        """(indptr (3 nv + 1,), indices (nnz,)): the CSR sparsity of the Hessian, in the order of the
+        values of evaluate()"""
+        if self._csr is None:
+            indptr = np.empty(3 * self.nv + 1, dtype=np.int64)
+            indices = np.empty(self.nnz, dtype=np.int32)
+            _lib.hylcmat_mesh_hessian_csr(self._h, indptr.ctypes.data, indices.ctypes.data)
+            self._csr = (indptr, indices)
+        return self._csr
+
+    def hessian_triplets(self):
+        """(rows, cols) (nnz each): the COO sparsity of the Hessian, in the order of evaluate()'s values"""
+        rows = np.empty(self.nnz, dtype=np.int32)
+        cols = np.empty(self.nnz, dtype=np.int32)
+        _lib.hylcmat_mesh_hessian_coo(self._h, rows.ctypes.data, cols.ctypes.data)
+        return rows, cols
+
+    def _positions(self, x):
+        x = np.ascontiguousarray(x, dtype=np.float64)
+        if x.shape != (self.nv, 3):
+            raise ValueError("positions must have shape (%d, 3), got %s" % (self.nv, x.shape))
+        return x
+
+    def strains(self, x):
+        """the strains (nt, 6) (sx, sa, sy, II00, II01, II11) of every triangle at positions x (nv, 3)"""
+        x = self._positions(x)
+        z = np.empty((self.nt, 6))
+        err = ctypes.create_string_buffer(1024)
+        _check(_lib.hylcmat_mesh_strains(self._h, x.ctypes.data, z.ctypes.data, err, len(err)), err)
+        return z
+
+    def evaluate(self, material, x, gradient=True, hessian=True, project=False, sparse=None):
+        """The total energy E (J) at positions x (nv, 3) (m), its gradient dE/dx (nv, 3) and Hessian
+        (3 nv x 3 nv, vertex-major: row 3 i + c is coordinate c of vertex i). project=True projects each
+        element Hessian to positive semidefinite first. The Hessian is a scipy.sparse.csr_matrix when
+        scipy is importable (sparse=None) or sparse=True, else the triplets (rows, cols, values).
+        Returns E, (E, grad) or (E, grad, H) as asked."""
+        x = self._positions(x)
+        E = ctypes.c_double()
+        g = np.empty((self.nv, 3)) if (gradient or hessian) else None
+        h = np.empty(self.nnz) if hessian else None
+        err = ctypes.create_string_buffer(1024)
+        _check(_lib.hylcmat_mesh_eval(self._h, material._h, x.ctypes.data, PSD if project else 0, ctypes.byref(E),
+                                      g.ctypes.data if g is not None else None, h.ctypes.data if h is not None else None,
+                                      err, len(err)), err)
+        if not hessian:
+            return (E.value, g) if gradient else E.value
+        if sparse is None or sparse:
+            try:
+                import scipy.sparse
+            except ImportError:
+                if sparse:
+                    raise
+                sparse = False
+            else:
+                indptr, indices = self.hessian_structure()
+                H = scipy.sparse.csr_matrix((h, indices, indptr), shape=(3 * self.nv, 3 * self.nv))
+                return E.value, g, H
+        rows, cols = self.hessian_triplets()
+        return E.value, g, (rows, cols, h)
 
 
 # ---------------------------------------------------------------- HDF5 files (h5py)

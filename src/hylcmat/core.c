@@ -81,6 +81,16 @@ const char *hylcmat_strerror(int code)
     return "the HDF5 library failed";
   case HYLCMAT_ERR_NAN:
     return "NaN result at a finite strain";
+  case HYLCMAT_ERR_MESH:
+    return "a mesh the element cannot use (index out of range, non-manifold edge, inconsistent orientation)";
+  case HYLCMAT_ERR_REST:
+    return "an inverted, zero-area or non-finite rest triangle";
+  case HYLCMAT_ERR_NONFINITE:
+    return "a NaN or infinite deformed coordinate";
+  case HYLCMAT_ERR_DEGENERATE:
+    return "a degenerate deformed triangle or neighbour face (zero area): the strains are undefined";
+  case HYLCMAT_ERR_RANGE:
+    return "a result beyond the double range";
   }
   return "unknown error";
 }

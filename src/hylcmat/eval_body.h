@@ -112,41 +112,65 @@ static void F(KnotJump)(int n, const double t[], const R P[], const R M[], int j
   }
 }
 
-/* the piece form: x- = a - s in piece L, x+ = a + s in piece Rp (Rp - L <= 1); node data P, M from j0 */
-static void F(QuotPieces)(int n, const double t[], const R P[], const R M[], int j0, int ext, int L, int Rp, R a, R s, F(Quot) * q)
+/* the piece form: x- = a - s in piece L, x+ = a + s in piece Rp (Rp - L <= 1); node data P, M from j0;
+   nd = number of a-derivatives wanted (0: P, Q; 1: + Pa, Qa, W1; 2: all), the others are set to 0 */
+static void F(QuotPieces)(int n, const double t[], const R P[], const R M[], int j0, int ext, int L, int Rp, R a, R s, int nd, F(Quot) * q)
 {
   R       l[4], d[4] = {0, 0, 0, 0};
   const R w = s * s;
 
-  F(Piece)
-  (n, t, P, M, j0, ext, L, a, l);
+  if (Rp == L + 1 && L >= 0 && Rp < n - 1) {
+    /* an interior knot k = Rp between a - s and a + s: both pieces' own coefficients once; the jump at k
+       is J = (0, 0, cR2 - (cL2 + 3 cL3 h), cR3 - cL3) (the left piece moved to t[k]), shifted to a */
+    R       cL[4], cR[4], kL, kR, J2, J3, dk;
+    const R h = (R)t[Rp] - (R)t[L];
+    F(PieceOwn)
+    (n, t, P, M, j0, ext, L, &kL, cL);
+    F(PieceOwn)
+    (n, t, P, M, j0, ext, Rp, &kR, cR);
+    F(ShiftPoly)
+    (cL, a - kL, l);
+    J2   = cR[2] - (cL[2] + 3 * cL[3] * h);
+    J3   = cR[3] - cL[3];
+    dk   = a - kR;
+    d[0] = dk * dk * (J2 + J3 * dk);
+    d[1] = dk * (2 * J2 + 3 * J3 * dk);
+    d[2] = J2 + 3 * J3 * dk;
+    d[3] = J3;
+  } else {
+    F(Piece)
+    (n, t, P, M, j0, ext, L, a, l);
+  }
   q->P   = l[0] + l[2] * w;
   q->Q   = l[1] + l[3] * w;
-  q->Pa  = l[1] + 3 * l[3] * w;
-  q->Qa  = 2 * l[2];
-  q->Paa = 2 * l[2];
-  q->Qaa = 6 * l[3];
-  q->W1  = l[3];
+  q->Pa  = nd > 0 ? l[1] + 3 * l[3] * w : 0;
+  q->Qa  = nd > 0 ? 2 * l[2] : 0;
+  q->Paa = nd > 1 ? 2 * l[2] : 0;
+  q->Qaa = nd > 1 ? 6 * l[3] : 0;
+  q->W1  = nd > 0 ? l[3] : 0;
   q->W2  = 0;
   q->W3  = 0;
   if (Rp == L) return;
-  for (int k = L + 1; k <= Rp; k++) { /* h_R - h_L: the sum of the jumps at the knots between */
-    R J[4], e[4];
-    F(KnotJump)
-    (n, t, P, M, j0, ext, k, J);
-    F(ShiftPoly)
-    (J, a - t[k], e);
-    for (int r = 0; r < 4; r++) d[r] += e[r];
-  }
+  if (!(Rp == L + 1 && L >= 0 && Rp < n - 1))
+    for (int k = L + 1; k <= Rp; k++) { /* h_R - h_L: the sum of the jumps at the knots between */
+      R J[4], e[4];
+      F(KnotJump)
+      (n, t, P, M, j0, ext, k, J);
+      F(ShiftPoly)
+      (J, a - t[k], e);
+      for (int r = 0; r < 4; r++) d[r] += e[r];
+    }
   {
     const R s3 = w * s;
     q->P += 0.5 * (d[0] + d[1] * s + d[2] * w + d[3] * s3);
     q->Q += 0.5 * (d[0] / s + d[1] + d[2] * s + d[3] * w);
+    if (nd < 1) return;
     q->Pa += 0.5 * (d[1] + 2 * d[2] * s + 3 * d[3] * w);
     q->Qa += 0.5 * (d[1] / s + 2 * d[2] + 3 * d[3] * s);
+    q->W1 += 0.5 * d[3] + (d[2] * w - d[0]) / (4 * s3);
+    if (nd < 2) return;
     q->Paa += d[2] + 3 * d[3] * s;
     q->Qaa += d[2] / s + 3 * d[3];
-    q->W1 += 0.5 * d[3] + (d[2] * w - d[0]) / (4 * s3);
     q->W2 = (3 * d[3] * w - d[1]) / (4 * s3);
     q->W3 = (3 * d[0] - d[2] * w) / (8 * s3 * w);
   }
@@ -265,7 +289,7 @@ static void F(Quot1D)(const hylcmat_term1d *sp, double sw, double ih, R a, R s, 
         M[j - j0] = sp->m[j];
       }
       F(QuotPieces)
-      (sp->n, sp->t, P, M, j0, sp->ext, L, Rp, a, ss, q);
+      (sp->n, sp->t, P, M, j0, sp->ext, L, Rp, a, ss, level, q);
       return;
     }
   }
@@ -292,7 +316,7 @@ static void F(Quot2D)(const hylcmat_term2d *sp, double sw, double ihv, const F(B
       F(SliceV)
       (sp, Bu, j0, j1, level, P, M);
       for (int o = 0; o <= level; o++) F(QuotPieces)
-      (sp->nv, sp->tv, P[o], M[o], j0, sp->ext, L, Rp, a, ss, &q[o]);
+      (sp->nv, sp->tv, P[o], M[o], j0, sp->ext, L, Rp, a, ss, level - o, &q[o]);
       return;
     }
   }
@@ -312,22 +336,27 @@ static void F(Quot2D)(const hylcmat_term2d *sp, double sw, double ihv, const F(B
    is = 1/sigma of its bending coordinate, f = the factor of its u-derivative order (1, 1/sigma_i, 1/sigma_i^2).
    The P-type part P, P_A, P_AA, P_w = Q_a/2, P_Aw = Q_aa/2, P_ww = W2/2 is the same for f and g; the
    Q-type part Q, Q_A, Q_AA, Q_w, Q_Aw, Q_ww carries the sign. */
-static inline void F(Add)(F(Bend) * T, const F(Quot) * q, R sg, R is, R f)
+static inline void F(Add)(F(Bend) * T, const F(Quot) * q, R sg, R is, R f, int nd)
 {
-  const R is2 = is * is, is3 = is2 * is, is4 = is2 * is2, is5 = is4 * is, fs = f * sg;
+  const R is2 = is * is, is3 = is2 * is, fs = f * sg;
 
   T->P += f * q->P;
-  T->PA += f * q->Pa * is;
-  T->PAA += f * q->Paa * is2;
-  T->Pw += f * 0.5 * q->Qa * is2;
-  T->PAw += f * 0.5 * q->Qaa * is3;
-  T->Pww += f * 0.5 * q->W2 * is4;
   T->Q += fs * q->Q * is;
+  if (nd < 1) return;
+  T->PA += f * q->Pa * is;
+  T->Pw += f * 0.5 * q->Qa * is2;
   T->QA += fs * q->Qa * is2;
-  T->QAA += fs * q->Qaa * is3;
   T->Qw += fs * q->W1 * is3;
-  T->QAw += fs * q->W2 * is4;
-  T->Qww += fs * q->W3 * is5;
+  if (nd < 2) return;
+  {
+    const R is4 = is2 * is2, is5 = is4 * is;
+    T->PAA += f * q->Paa * is2;
+    T->PAw += f * 0.5 * q->Qaa * is3;
+    T->Pww += f * 0.5 * q->W2 * is4;
+    T->QAA += fs * q->Qaa * is3;
+    T->QAw += fs * q->W2 * is4;
+    T->Qww += fs * q->W3 * is5;
+  }
 }
 
 /* S = sqrt(B^2 + C^2) without overflow or underflow of the squares (the plain form in the range where
@@ -399,7 +428,7 @@ static void F(Evaluate)(const hylcmat *m, const double s[6], int level, R *psi, 
     F(Quot1D)
     (&m->t1[k], m->sw1[k], m->ih1[k], A * is[k], S * is[k], level, &q);
     F(Add)
-    (&T0, &q, k == 3 ? 1 : -1, is[k], 1);
+    (&T0, &q, k == 3 ? 1 : -1, is[k], 1, level);
   }
   for (int r = 0; r < HYLCMAT_N2D; r++) {
     const int i = HylcmatPairs[r][0], k = HylcmatPairs[r][1];
@@ -413,11 +442,11 @@ static void F(Evaluate)(const hylcmat *m, const double s[6], int level, R *psi, 
     F(Quot2D)
     (&m->t2[r], m->sw2[r], m->ihv[r], &Bu, A * is[k], S * is[k], level, q);
     F(Add)
-    (&T0, &q[0], k == 3 ? 1 : -1, is[k], 1);
+    (&T0, &q[0], k == 3 ? 1 : -1, is[k], 1, level);
     if (level) F(Add)
-    (&Tu[i], &q[1], k == 3 ? 1 : -1, is[k], is[i]);
+    (&Tu[i], &q[1], k == 3 ? 1 : -1, is[k], is[i], level - 1);
     if (level > 1) F(Add)
-    (&Tuu[i], &q[2], k == 3 ? 1 : -1, is[k], is[i] * is[i]);
+    (&Tuu[i], &q[2], k == 3 ? 1 : -1, is[k], is[i] * is[i], 0);
   }
   E += T0.P + B * T0.Q;
   if (level) {

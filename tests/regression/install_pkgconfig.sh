@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # make install into a temporary prefix, then build two programs from examples/ against it with
 # pkg-config alone: eval_material.c (libhylcmat: evaluates a table as a simulator would; ldd shows no
-# PETSc, MPI or HDF5; its numbers equal hylc-eval's) and solve_sample.c (libhylc: solves a sample).
+# PETSc, MPI or HDF5; its numbers equal hylc-eval's), shell_element.c (libhylcmat: the shell element on
+# a small bent mesh; no PETSc, MPI or HDF5 either) and solve_sample.c (libhylc: solves a sample).
 # make uninstall then leaves nothing behind. The same with DESTDIR (a staged install for packaging).
 set -u
 cd "$HYLC_TMP"
@@ -28,6 +29,10 @@ LD_LIBRARY_PATH=$prefix/lib ldd ./eval_material >ldd.txt
 cat ldd.txt
 grep -q "libhylcmat.so.1 => $prefix/lib/" ldd.txt || die "eval_material does not use the installed libhylcmat"
 if grep -Eiq 'petsc|mpi|hdf5|metis' ldd.txt; then die "eval_material depends on PETSc/MPI/HDF5/METIS"; fi
+cc -std=c99 -O2 "$top/examples/shell_element.c" $(pkg-config --cflags --libs hylcmat) -lm -o shell_element 2>cc3.log || { cat cc3.log; die "shell_element does not build with pkg-config hylcmat"; }
+LD_LIBRARY_PATH=$prefix/lib ldd ./shell_element >ldd3.txt
+grep -q "libhylcmat.so.1 => $prefix/lib/" ldd3.txt || die "shell_element does not use the installed libhylcmat"
+if grep -Eiq 'petsc|mpi|hdf5|metis' ldd3.txt; then die "shell_element depends on PETSc/MPI/HDF5/METIS"; fi
 
 mat=$HYLC_TMP/small.json
 cat >"$mat" <<'JSON'
@@ -43,6 +48,8 @@ cat >"$mat" <<'JSON'
 JSON
 mats=("$mat")
 [ -f "$HYLC_REFDATA/materials/stock1.json" ] && mats+=("$HYLC_REFDATA/materials/stock1.json")
+LD_LIBRARY_PATH=$prefix/lib ./shell_element "$mat" >se.txt 2>&1 || { cat se.txt; die "shell_element failed"; }
+grep -q "II00, II01, II11): .* 49.48 0.00 0.00" se.txt || { cat se.txt; die "shell_element: unexpected II of the cylinder"; }
 for m in "${mats[@]}"; do
   for s in 0,0,0,50,0,50 0.1,0.2,-0.1,30,-20,10; do
     LD_LIBRARY_PATH=$prefix/lib ./eval_material "$m" "$s" >a.txt 2>&1 || { cat a.txt; die "eval_material $m $s failed"; }

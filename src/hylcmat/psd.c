@@ -1,0 +1,344 @@
+/* Projection of an element Hessian (18 x 18) to positive semidefinite: eigenvalues below
+   HYLCMAT_PSD_FLOOR raised to it, on the coordinates of the vertices present.
+
+   The translations t (one per axis) are exact null vectors of H (E depends on edge vectors only). With
+   the reflection P = I - tau v v^T over the na vertices present (v = e_0 + 1/sqrt(na), so P e_0 is the
+   unit translation), (P x I3) H (P x I3) has a zero first vertex block row and column; its remaining
+   (3 na - 3)-square block M holds the rest of the spectrum. M = Z^T diag(lambda) Z by the symmetric
+   eigensolver below, and with u_q = (P x I3) [0; z_q] (the eigenvectors in the original coordinates)
+       H+ = H + floor / na (1 1^T x I3) + sum over lambda_q < floor of (floor - lambda_q) u_q u_q^T,
+   the first term raising the translations' zero eigenvalues to the floor: the same as clamping the
+   eigenvalues of the whole matrix.
+
+   The eigensolver (n <= 15; Golub and Van Loan, Matrix Computations, 4th ed., 8.3): Householder
+   tridiagonalization T = Q^T M Q (the reflections kept; only the lower triangle is read and updated),
+   implicit symmetric QR steps with Wilkinson's shift on T with the rotations accumulated into T's
+   eigenvectors (rows of Z, from the identity), and Q applied only to the eigenvectors of the clamped
+   eigenvalues. (Computing only those by inverse iteration instead takes fewer instructions but more
+   time: its triangular solves are serial chains, while the rotations' vector updates overlap the QR
+   steps' own chain of square roots and divisions, which sets the pace.) Plain C99. */
+#include "hylcmatimpl.h"
+#include <math.h>
+#include <string.h>
+
+#define NMAX 15 /* 3 (6 vertices - 1) */
+
+/* GCC on x86-64 Linux (glibc's ifunc): the function also compiled for AVX2, the version chosen at load
+   time; the same results (no FMA contraction in either) */
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
+#  define AVX2_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#  define AVX2_CLONES
+#endif
+#define EPS 2.220446049250313e-16
+
+/* sqrt(x^2 + z^2) without overflow or underflow of the squares */
+static inline double Norm2(double x, double z)
+{
+  const double r = sqrt(x * x + z * z);
+  if (r > 1e-290 && r < 1e290) return r; /* the squares did not overflow or underflow */
+  {
+    const double ax = fabs(x), az = fabs(z), mx = ax > az ? ax : az;
+    if (mx == 0) return 0;
+    return mx * sqrt((x / mx) * (x / mx) + (z / mx) * (z / mx));
+  }
+}
+
+/* Householder tridiagonalization of A (n x n, row-major, symmetric: only its lower triangle is read;
+   overwritten): T = Q^T A Q with
+   diagonal d and off-diagonal e (e[n-1] = 0); the reflections of Q in the rows of Vr (row k: beta_k at
+   k, the vector from k + 1), which BackTransform applies */
+static void Tridiagonalize(int n, double *restrict A, double *restrict d, double *restrict e, double *restrict Vr)
+{
+  double beta[NMAX];
+
+  /* tridiagonalize: for column k, the reflection I - beta v v^T of rows k+1.. (v kept in column k) */
+  for (int k = 0; k + 2 < n; k++) {
+    const int m = n - k - 1;
+    double    x[NMAX], p[NMAX], xn = 0, alpha, vv, K = 0;
+    for (int i = 0; i < m; i++) {
+      x[i] = A[n * (k + 1 + i) + k];
+      xn += x[i] * x[i];
+    }
+    xn = sqrt(xn);
+    if (xn == 0) {
+      beta[k] = 0;
+      e[k]    = 0;
+      continue;
+    }
+    alpha = x[0] > 0 ? -xn : xn;
+    x[0] -= alpha;
+    vv = xn * xn - 2 * alpha * (x[0] + alpha) + alpha * alpha; /* |x - alpha e0|^2 = |x|^2 - 2 alpha x0 + alpha^2 */
+    if (!(vv > 0)) {
+      vv = 0;
+      for (int i = 0; i < m; i++) vv += x[i] * x[i];
+    }
+    beta[k] = 2 / vv;
+    e[k]    = alpha;
+    /* p = beta A22 v from A22's lower triangle; K = beta p.v / 2; p -= K v; A22 -= v p^T + p v^T (lower) */
+    for (int i = 0; i < m; i++) p[i] = 0;
+    for (int i = 0; i < m; i++) {
+      const double *restrict row = A + n * (k + 1 + i) + k + 1;
+      const double xi            = x[i];
+      double       t             = row[i] * xi;
+      for (int j = 0; j < i; j++) {
+        t += row[j] * x[j];
+        p[j] += row[j] * xi;
+      }
+      p[i] += t;
+    }
+    for (int i = 0; i < m; i++) p[i] *= beta[k];
+    for (int i = 0; i < m; i++) K += p[i] * x[i];
+    K *= 0.5 * beta[k];
+    for (int i = 0; i < m; i++) p[i] -= K * x[i];
+    for (int i = 0; i < m; i++) {
+      double *restrict row = A + n * (k + 1 + i) + k + 1;
+      const double xi = x[i], pi = p[i];
+      for (int j = 0; j <= i; j++) row[j] -= xi * p[j] + pi * x[j];
+    }
+    for (int i = 0; i < m; i++) Vr[n * k + k + 1 + i] = x[i];
+  }
+  for (int k = 0; k + 2 < n; k++) Vr[n * k + k] = beta[k];
+  for (int k = 0; k < n; k++) d[k] = A[n * k + k];
+  if (n >= 2) e[n - 2] = A[n * (n - 1) + n - 2];
+  e[n - 1] = 0;
+}
+
+/* Implicit QR steps on a tridiagonal (d, e) (overwritten; its eigenvalues end in d), the rotations
+   accumulated into the rows of Z (set to I here), which become T's eigenvectors. The iteration is kept
+   in a state advanced one unit of work at a time (a deflation test, a new step's shift, or one
+   rotation), so that several independent matrices can be iterated in turn: each step's chain of a
+   square root, a division and the bulge update is latency-bound, and the processor overlaps the
+   chains of different matrices (TridiagQRMany). An off-diagonal entry below eps |T| (|T| the largest
+   |d| + 2 |e|) is negligible: the result is needed to rounding relative to |H| (the floor is 1e-8), not
+   to each eigenvalue's relative accuracy, and that takes fewer steps when the eigenvalues span many
+   magnitudes. */
+typedef struct {
+  int     n, hi, lo, k, it, maxit, insweep;
+  double *d, *e, *Z, tnorm, x, z;
+} QRState;
+
+static void QRInit(QRState *q, int n, double *d, double *e, double *Z)
+{
+  double tn = 0;
+  memset(Z, 0, sizeof(double) * n * n);
+  for (int i = 0; i < n; i++) Z[n * i + i] = 1;
+  for (int i = 0; i < n; i++) tn = fmax(tn, fabs(d[i]) + fabs(e[i]) + (i ? fabs(e[i - 1]) : 0));
+  q->n = n, q->hi = n - 1, q->lo = 0, q->k = 0, q->it = 0, q->maxit = 40 * n, q->insweep = 0;
+  q->d = d, q->e = e, q->Z = Z, q->tnorm = 1e-300 + EPS * tn, q->x = q->z = 0;
+}
+
+/* one unit of work; returns 1 while the iteration goes on, 0 when it is done, -1 if it did not converge */
+static inline int QRStep(QRState *restrict q)
+{
+  double *restrict d = q->d, *restrict e = q->e;
+  const int n = q->n;
+
+  if (!q->insweep) {
+    int lo;
+    if (q->hi <= 0) return 0;
+    if (fabs(e[q->hi - 1]) <= q->tnorm) {
+      e[q->hi - 1] = 0;
+      q->hi--;
+      return q->hi > 0;
+    }
+    if (++q->it > q->maxit) return -1;
+    lo = q->hi - 1;
+    while (lo > 0 && fabs(e[lo - 1]) > q->tnorm) lo--;
+    if (lo > 0) e[lo - 1] = 0;
+    {
+      /* Wilkinson's shift from the trailing 2 x 2 */
+      const int    hi = q->hi;
+      const double dd = 0.5 * (d[hi - 1] - d[hi]), b = e[hi - 1], hyp = Norm2(dd, b);
+      const double mu = d[hi] - b * b / (dd + (dd >= 0 ? hyp : -hyp));
+      q->x = d[lo] - mu, q->z = e[lo], q->lo = lo, q->k = lo, q->insweep = 1;
+    }
+    return 1;
+  }
+  {
+    const int k = q->k, hi = q->hi;
+    double    c = 1, s = 0, a0, b0, d0, x = q->x, z = q->z;
+    /* G = [c s; -s c] with s x + c z = 0 */
+    if (z != 0) {
+      const double ir = 1 / Norm2(x, z);
+      c               = x * ir;
+      s               = -z * ir;
+    }
+    if (k > q->lo) e[k - 1] = c * e[k - 1] - s * z; /* (k-1, k); (k-1, k+1) becomes 0 */
+    a0       = d[k];
+    b0       = e[k];
+    d0       = d[k + 1];
+    d[k]     = c * c * a0 - 2 * c * s * b0 + s * s * d0;
+    d[k + 1] = s * s * a0 + 2 * c * s * b0 + c * c * d0;
+    e[k]     = c * s * (a0 - d0) + (c * c - s * s) * b0;
+    if (k + 1 < hi) {
+      q->z = -s * e[k + 1];
+      e[k + 1] *= c;
+      q->x = e[k];
+    }
+    {
+      double *restrict zk = q->Z + n * k, *restrict zk1 = q->Z + n * (k + 1);
+      for (int j = 0; j < n; j++) {
+        const double u = zk[j], t = zk1[j];
+        zk[j]  = c * u - s * t;
+        zk1[j] = s * u + c * t;
+      }
+    }
+    if (++q->k >= hi) q->insweep = 0;
+  }
+  return 1;
+}
+
+/* the QR iterations of m (1..4) matrices, in turn; returns 0, or -1 if one did not converge (with AVX2:
+   the rotations' updates of the 15-long eigenvector rows run 4 wide) */
+AVX2_CLONES
+static int TridiagQRMany(int m, QRState *q)
+{
+  int st[4] = {1, 1, 1, 1}, active = m;
+
+  if (m == 1) {
+    while ((st[0] = QRStep(&q[0])) > 0) {}
+    return st[0] < 0 ? -1 : 0;
+  }
+  if (m == 2) {
+    while (active) {
+      if (st[0] > 0 && (st[0] = QRStep(&q[0])) <= 0) active--;
+      if (st[1] > 0 && (st[1] = QRStep(&q[1])) <= 0) active--;
+    }
+  } else
+    while (active)
+      for (int i = 0; i < m; i++)
+        if (st[i] > 0 && (st[i] = QRStep(&q[i])) <= 0) active--;
+  for (int i = 0; i < m; i++)
+    if (st[i] < 0) return -1;
+  return 0;
+}
+
+/* z <- Q z with Q = H_0 H_1 ... H_{n-3} kept in Vr by Tridiagonalize */
+static void BackTransform(int n, const double *restrict Vr, double *restrict z)
+{
+  for (int k = n - 3; k >= 0; k--) {
+    const int    m           = n - k - 1;
+    const double beta        = Vr[n * k + k];
+    const double *restrict v = Vr + n * k + k + 1;
+    double *restrict zz      = z + k + 1;
+    double t                 = 0;
+    if (beta == 0) continue;
+    for (int i = 0; i < m; i++) t += v[i] * zz[i];
+    t *= beta;
+    for (int i = 0; i < m; i++) zz[i] -= t * v[i];
+  }
+}
+
+/* the work of one element's projection */
+typedef struct {
+  double *H;
+  int     act[6], idx[18], na, n, nm;
+  double  v[6], tau, M[NMAX * NMAX], Z[NMAX * NMAX], Vr[NMAX * NMAX], d[NMAX], e[NMAX];
+} Proj;
+
+/* M = the rows and columns 3.. of (P x I3) H (P x I3) over the vertices present, tridiagonalized */
+static void ProjPrepare(Proj *p, double *H, int nb)
+{
+  double R[6][9], C[9], vv = 0;
+  int    na = 0, nm;
+
+  p->H = H;
+  for (int i = 0; i < 3; i++) p->act[na++] = i;
+  for (int k = 0; k < 3; k++)
+    if (nb >> k & 1) p->act[na++] = 3 + k;
+  p->na = na, p->n = 3 * na, p->nm = nm = 3 * na - 3;
+  for (int i = 0; i < p->n; i++) p->idx[i] = 3 * p->act[i / 3] + i % 3;
+  for (int i = 0; i < na; i++) p->v[i] = 1 / sqrt((double)na);
+  p->v[0] += 1;
+  for (int i = 0; i < na; i++) vv += p->v[i] * p->v[i];
+  p->tau = 2 / vv;
+  /* blocks B_ij of the vertices present; R_j = sum_i v_i B_ij, C = sum_j v_j R_j; then the blocks
+     (i, j >= 1) of P B P: B_ij - tau v_i R_j - tau R_i^T v_j + tau^2 v_i v_j C */
+  {
+    const int    *act = p->act;
+    const double *v = p->v, tau = p->tau;
+    for (int j = 0; j < na; j++)
+      for (int a = 0; a < 3; a++)
+        for (int b = 0; b < 3; b++) {
+          double t = 0;
+          for (int i = 0; i < na; i++) t += v[i] * H[18 * (3 * act[i] + a) + 3 * act[j] + b];
+          R[j][3 * a + b] = t;
+        }
+    for (int q = 0; q < 9; q++) {
+      double t = 0;
+      for (int j = 0; j < na; j++) t += v[j] * R[j][q];
+      C[q] = t;
+    }
+    for (int i = 1; i < na; i++)
+      for (int j = i; j < na; j++)
+        for (int a = 0; a < 3; a++)
+          for (int b = 0; b < 3; b++) /* the lower triangle (and the upper part of diagonal blocks) */
+            p->M[nm * (3 * (j - 1) + b) + 3 * (i - 1) + a] = H[18 * (3 * act[i] + a) + 3 * act[j] + b] - tau * v[i] * R[j][3 * a + b] - tau * v[j] * R[i][3 * b + a] + tau * tau * v[i] * v[j] * C[3 * a + b];
+  }
+  Tridiagonalize(nm, p->M, p->d, p->e, p->Vr);
+}
+
+/* H += floor / na (1 1^T x I3) + sum over the clamped eigenvalues of (floor - lambda) u u^T */
+static void ProjFinish(Proj *p)
+{
+  const int    na = p->na, n = p->n, nm = p->nm, *act = p->act, *idx = p->idx;
+  const double floor_ = HYLCMAT_PSD_FLOOR, *v = p->v, tau = p->tau, *w = p->d;
+  double *restrict H = p->H, W[18 * 18];
+  int clamped        = 0;
+
+  /* the translations: + floor / na on the diagonal of every vertex block pair */
+  for (int i = 0; i < na; i++)
+    for (int j = 0; j < na; j++)
+      for (int a = 0; a < 3; a++) H[18 * (3 * act[i] + a) + 3 * act[j] + a] += floor_ / na;
+  /* the clamped eigenvalues: u = (P x I3) [0; Q s]; W = sum (floor - lambda) u u^T (compact, upper
+     triangle), then added to H */
+  for (int q = 0; q < nm; q++) {
+    const double s = floor_ - w[q];
+    double       u[18], dot[3] = {0, 0, 0};
+    if (!(s > 0)) continue;
+    if (!clamped++) memset(W, 0, sizeof(double) * n * n);
+    for (int a = 0; a < 3; a++) u[a] = 0;
+    for (int i = 0; i < nm; i++) u[3 + i] = p->Z[nm * q + i];
+    BackTransform(nm, p->Vr, u + 3);
+    for (int i = 1; i < na; i++)
+      for (int a = 0; a < 3; a++) dot[a] += v[i] * u[3 * i + a];
+    for (int i = 0; i < na; i++)
+      for (int a = 0; a < 3; a++) u[3 * i + a] -= tau * v[i] * dot[a];
+    for (int i = 0; i < n; i++) {
+      double *restrict row = W + n * i;
+      const double su      = s * u[i];
+      for (int j = i; j < n; j++) row[j] += su * u[j];
+    }
+  }
+  if (clamped)
+    for (int i = 0; i < n; i++) {
+      double *restrict row = H + 18 * idx[i];
+      row[idx[i]] += W[n * i + i];
+      for (int j = i + 1; j < n; j++) {
+        row[idx[j]] += W[n * i + j];
+        H[18 * idx[j] + idx[i]] = row[idx[j]];
+      }
+    }
+}
+
+/* projects m (1..4) element Hessians H[i] with neighbour masks nb[i], their QR iterations in turn */
+int hm_psd_project_many(int m, double *const H[], const int nb[])
+{
+  Proj    p[4];
+  QRState q[4];
+
+  for (int i = 0; i < m; i++) {
+    ProjPrepare(&p[i], H[i], nb[i]);
+    QRInit(&q[i], p[i].nm, p[i].d, p[i].e, p[i].Z);
+  }
+  if (TridiagQRMany(m, q)) return HYLCMAT_ERR_NAN;
+  for (int i = 0; i < m; i++) ProjFinish(&p[i]);
+  return HYLCMAT_OK;
+}
+
+int hm_psd_project(double H[324], int nb)
+{
+  double *const Hs[1] = {H};
+  return hm_psd_project_many(1, Hs, &nb);
+}
