@@ -46,7 +46,7 @@ def main():
     terms = [t for t in range(1, len(names)) if (term == t).any()]
     ncol = 5
     nrow = (len(terms) + ncol - 1) // ncol
-    fig, axes = plt.subplots(nrow, ncol, figsize=(3.2 * ncol, 2.8 * nrow), squeeze=False)
+    fig, axes = plt.subplots(nrow, ncol, figsize=(3.4 * ncol, 3.0 * nrow), squeeze=False, constrained_layout=True)
     print("%s: %d samples compared, %d multistable (%.1f %%)" % (title, (ms >= 0).sum(), (ms == 1).sum(), 100.0 * (ms == 1).sum() / max((ms >= 0).sum(), 1)))
     for ax, t in zip(axes.flat, terms):
         idx = np.where(term == t)[0]
