@@ -74,6 +74,13 @@ PETSC_EXTERN PetscErrorCode HylcFitEvaluateAxes(HylcFit, const PetscReal z[6], P
 /* Per-term statistics of the fit against its data: number of samples used, RMS of (model - data) in
    J/m^2 and the max |data - f0| of the term (0 for a term not fitted); t = 1..14 as in plan.h. */
 PETSC_EXTERN PetscErrorCode HylcFitGetTermStats(HylcFit, PetscInt t, PetscInt *n, PetscReal *rms, PetscReal *range);
+/* The fit's relative error against its data in strain bands, where cloth lives and beyond (issue 30): a
+   sample is in band 0 if every strain of its term is small (|s| <= 5 % for sx, sa, sy; |II| <= 20 1/m),
+   band 1 if none is beyond 20 % (80 1/m), else band 2; per band the number of samples and the RMS of
+   (model - data) divided by the RMS of (data - f0) there (0 where the band is empty). */
+#define HYLC_FIT_NBAND 3
+PETSC_EXTERN const PetscReal HylcFitBandLimits[2][2]; /* [stretch or shear, curvature (1/m)][upper limit of band 0, 1] */
+PETSC_EXTERN PetscErrorCode  HylcFitGetTermBandStats(HylcFit, PetscInt t, PetscInt n[HYLC_FIT_NBAND], PetscReal rel[HYLC_FIT_NBAND]);
 
 /* ---- Plain C kernels of the pipeline (no PETSc objects; used by HylcFitCompute, tested alone) ---- */
 

@@ -416,6 +416,42 @@ PetscErrorCode HylcFitGetTermStats(HylcFit fit, PetscInt t, PetscInt *n, PetscRe
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+const PetscReal HylcFitBandLimits[2][2] = {{0.05, 0.2}, {20, 80}};
+
+/*@C
+  HylcFitGetTermBandStats - The fit's relative error against its data in three strain bands (where cloth
+  lives, moderate, large): a sample is in band 0 if every strain of its term is small (|s| <= 0.05 for sx,
+  sa, sy; |II| <= 20 1/m), in band 1 if none exceeds 0.2 (80 1/m), else in band 2. Per band, the number of
+  samples and the RMS of (model - data) over the RMS of (data - f0) there, so that a term whose energy is
+  small where cloth lives is judged there and not by its largest values.
+
+  Not collective
+
+  Input Parameters:
++ fit - the fit, computed
+- t   - the term (1..14)
+
+  Output Parameters:
++ n   - samples per band (may be NULL)
+- rel - the relative error per band (0 for an empty band; may be NULL)
+
+  Level: intermediate
+
+.seealso: HylcFitGetTermStats()
+@*/
+PetscErrorCode HylcFitGetTermBandStats(HylcFit fit, PetscInt t, PetscInt n[HYLC_FIT_NBAND], PetscReal rel[HYLC_FIT_NBAND])
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(fit, HYLC_FIT_CLASSID, 1);
+  PetscCheck(fit->computed, PetscObjectComm((PetscObject)fit), PETSC_ERR_ARG_WRONGSTATE, "Call HylcFitCompute() first");
+  PetscCheck(t >= 1 && t < HYLC_PLAN_NTERM, PetscObjectComm((PetscObject)fit), PETSC_ERR_ARG_OUTOFRANGE, "term %" PetscInt_FMT " (valid 1..14)", t);
+  for (int b = 0; b < HYLC_FIT_NBAND; b++) {
+    if (n) n[b] = fit->has[t] ? fit->statBandN[t][b] : 0;
+    if (rel) rel[b] = fit->has[t] ? fit->statBandRel[t][b] : 0;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* C-library formatting (PETSc's printf turns %g of 3.0 into "3."): a line on the viewer, a string */
 static PetscErrorCode Line(PetscViewer viewer, const char fmt[], ...)
 {
@@ -443,7 +479,9 @@ static PetscErrorCode Fmt(char buf[], size_t size, const char fmt[], ...)
 
 /*@C
   HylcFitView - Prints the settings and, after HylcFitCompute, f0, the strain scale, the area density
-  and per term: knots, data range, samples and the RMS residual of the model against the data.
+  and per term: knots, data range, samples and the RMS residual of the model against the data, and the
+  relative error by strain band (HylcFitGetTermBandStats(): small |s| <= 5 %, |II| <= 20 1/m; moderate
+  up to 20 %, 80 1/m; large).
   Not collective (prints on the object's communicator).
 @*/
 PetscErrorCode HylcFitView(HylcFit fit, PetscViewer viewer)
@@ -486,6 +524,16 @@ PetscErrorCode HylcFitView(HylcFit fit, PetscViewer viewer)
         PetscCall(Fmt(range, sizeof(range), "%s in [%.4g, %.4g], %s in [%.4g, %.4g]", HylcPlanTermName(1 + ci), (double)fit->statMin[t][0], (double)fit->statMax[t][0], HylcPlanTermName(1 + cj), (double)fit->statMin[t][1], (double)fit->statMax[t][1]));
       }
       PetscCall(Line(viewer, "%-8s %-11s %5" PetscInt_FMT " samples, %s; RMS residual %.3g J/m^2 (%.3g%% of max |psi - f0| %.3g)\n", HylcPlanTermName(t), knots, fit->statN[t], range, (double)fit->statRms[t], fit->statRange[t] > 0 ? (double)(100 * fit->statRms[t] / fit->statRange[t]) : 0.0, (double)fit->statRange[t]));
+      {
+        char bands[3][48];
+        for (int b = 0; b < HYLC_FIT_NBAND; b++) {
+          if (fit->statBandN[t][b])
+            PetscCall(Fmt(bands[b], sizeof(bands[b]), "%.3g%% (%" PetscInt_FMT ")", (double)(100 * fit->statBandRel[t][b]), fit->statBandN[t][b]));
+          else
+            PetscCall(Fmt(bands[b], sizeof(bands[b]), "-"));
+        }
+        PetscCall(Line(viewer, "%-8s relative error of psi - f0 by band (samples): small %s, moderate %s, large %s\n", "", bands[0], bands[1], bands[2]));
+      }
     }
   }
   PetscCall(PetscViewerASCIIPopTab(viewer));

@@ -329,10 +329,11 @@ PetscErrorCode HylcFitCompute(HylcFit fit)
   fit->computed = PETSC_TRUE;
   /* statistics of the model against each term's data */
   for (int t = 1; t < HYLC_PLAN_NTERM; t++) {
-    PetscReal ss = 0, rng = 0;
+    PetscReal ss = 0, rng = 0, bss[HYLC_FIT_NBAND] = {0, 0, 0}, bref[HYLC_FIT_NBAND] = {0, 0, 0};
     PetscInt  cnt  = 0;
     int       c[2] = {t - 1, -1};
     if (!fit->has[t]) continue;
+    for (int b = 0; b < HYLC_FIT_NBAND; b++) fit->statBandN[t][b] = 0;
     if (t >= 6) HylcPlanPair(t, &c[0], &c[1]);
     for (int a = 0; a < 2; a++) {
       fit->statMin[t][a] = PETSC_MAX_REAL;
@@ -345,13 +346,20 @@ PetscErrorCode HylcFitCompute(HylcFit fit)
       ss += PetscSqr(f - fit->psi[k]);
       rng = PetscMax(rng, PetscAbsReal(fit->psi[k] - fit->f0));
       cnt++;
+      int band = 0;
       for (int a = 0; a < 2; a++) {
         if (c[a] < 0) continue;
         const PetscReal x  = fit->z[6 * k + HylcPlanStrainIndex(c[a])];
+        const int       kc = c[a] >= 3; /* a curvature */
         fit->statMin[t][a] = PetscMin(fit->statMin[t][a], x);
         fit->statMax[t][a] = PetscMax(fit->statMax[t][a], x);
+        band               = PetscMax(band, PetscAbsReal(x) <= HylcFitBandLimits[kc][0] ? 0 : (PetscAbsReal(x) <= HylcFitBandLimits[kc][1] ? 1 : 2));
       }
+      bss[band] += PetscSqr(f - fit->psi[k]);
+      bref[band] += PetscSqr(fit->psi[k] - fit->f0);
+      fit->statBandN[t][band]++;
     }
+    for (int b = 0; b < HYLC_FIT_NBAND; b++) fit->statBandRel[t][b] = bref[b] > 0 ? PetscSqrtReal(bss[b] / bref[b]) : 0;
     fit->statN[t]     = cnt;
     fit->statRms[t]   = PetscSqrtReal(ss / PetscMax(cnt, 1));
     fit->statRange[t] = rng;

@@ -53,6 +53,8 @@ struct _p_HylcFit {
   HylcSpline2D s2[9];
   PetscInt     statN[HYLC_PLAN_NTERM];
   PetscReal    statRms[HYLC_PLAN_NTERM], statRange[HYLC_PLAN_NTERM], statMin[HYLC_PLAN_NTERM][2], statMax[HYLC_PLAN_NTERM][2];
+  PetscInt     statBandN[HYLC_PLAN_NTERM][HYLC_FIT_NBAND];   /* samples per strain band (HylcFitGetTermBandStats) */
+  PetscReal    statBandRel[HYLC_PLAN_NTERM][HYLC_FIT_NBAND]; /* RMS(model - data) / RMS(data - f0) per band */
 };
 
 /* input.c: reads fit->input into the data arrays (rank-local). */
