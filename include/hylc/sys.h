@@ -72,5 +72,8 @@ PETSC_EXTERN PetscErrorCode HylcFileCheckDistinct(MPI_Comm, const char[], const 
 PETSC_EXTERN PetscErrorCode HylcFileOpenTemp(const char[], char[], size_t, FILE **);
 PETSC_EXTERN PetscErrorCode HylcFileCommitTemp(FILE **, const char[], const char[]);
 PETSC_EXTERN void           HylcFileAbortTemp(FILE **, const char[]);
+/* Raises on every rank of comm the error (code and message) that rank 0 met in work done alone with
+   PetscReturnErrorHandler pushed (ierr: rank 0's code; ignored elsewhere). Collective. */
+PETSC_EXTERN PetscErrorCode HylcShareError(MPI_Comm, PetscErrorCode);
 /* Refuses options nothing has read (before any work). Collective. */
 PETSC_EXTERN PetscErrorCode HylcCheckOptionsUsed(MPI_Comm);

@@ -75,6 +75,17 @@ PETSC_INTERN PetscErrorCode HylcCalibrateResetSamples_Private(HylcCalibrate);
 PETSC_INTERN PetscErrorCode HylcCalibrateSetUpSolver_Private(HylcCalibrate);
 /* target.c: reads the target and fills z, target, term, nt, range (collective) */
 PETSC_INTERN PetscErrorCode HylcCalibrateReadTarget_Private(HylcCalibrate);
+/* target.c: the rows of a file target (rank 0) */
+typedef struct {
+  PetscInt   n, cap;
+  PetscReal *z, *psi; /* 6n, n */
+  PetscInt  *term;    /* the plan's term (HYLC_CALIB_OTHER: off the plan's axes) */
+  PetscInt  *line;    /* the row's line in a text file (1-based), its row in a samples file (0-based) */
+} HylcCalibRows;
+PETSC_INTERN PetscErrorCode HylcCalibRowsDestroy_Private(HylcCalibRows *);
+/* target.c: rank 0's part of reading a CSV, raw data.txt or samples file target: rows read, checked (values,
+   strains against the tile P unless NULL), the base row and the rows kept in S (not collective) */
+PETSC_INTERN PetscErrorCode HylcCalibrateReadFileTarget_Private(const char path[], HylcCalibTargetType kind, PetscReal radius, PetscInt stride, PetscInt maxSamples, HylcPeriodic P, HylcCalibRows *S, PetscInt *nrows, PetscInt *nskipped);
 /* term name (the plan's names and "other") */
 PETSC_INTERN const char *HylcCalibrateTermName_Private(PetscInt t);
 /* solve.c: one evaluation at explicit p (no ties): the records (m x HYLC_CALIB_NRECORD) on every rank */

@@ -221,6 +221,38 @@ int HylcMainFinalize(PetscErrorCode ierr)
 }
 
 /*@C
+  HylcShareError - Raises on every rank of comm the error that rank 0 met in work it did alone. Rank 0
+  runs the work with PetscReturnErrorHandler pushed (so nothing is printed there) and passes its error
+  code; the other ranks pass 0. If rank 0 failed, every rank raises its code with its message, so the
+  program reports it once, in one line, and no rank is left waiting in a collective. Collective.
+
+  Input Parameters:
++ comm - the ranks
+- ierr - rank 0: the work's error code; other ranks: ignored
+
+  Level: developer
+@*/
+PetscErrorCode HylcShareError(MPI_Comm comm, PetscErrorCode ierr)
+{
+  PetscMPIInt rank;
+  int         code      = 0;
+  char        msg[2048] = "";
+
+  PetscFunctionBegin;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (!rank && ierr) {
+    char *text = NULL;
+    code       = (int)ierr;
+    PetscCall(PetscErrorMessage(ierr, NULL, &text));
+    PetscCall(PetscStrncpy(msg, text && text[0] ? text : "an error on rank 0", sizeof(msg)));
+  }
+  PetscCallMPI(MPI_Bcast(&code, 1, MPI_INT, 0, comm));
+  if (!code) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCallMPI(MPI_Bcast(msg, (PetscMPIInt)sizeof(msg), MPI_CHAR, 0, comm));
+  SETERRQ(comm, (PetscErrorCode)code, "%s", msg);
+}
+
+/*@C
   HylcCheckOptionsUsed - Refuses options that nothing has read (misspelt or not for this program), before
   any work is done. Collective.
 @*/
