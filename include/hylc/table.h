@@ -47,6 +47,9 @@ PETSC_EXTERN const char *const HylcTableStrainNames[7];
 PETSC_EXTERN PetscErrorCode HylcTableReadText(const char path[], const char option[], const HylcTableSpec *, HylcTable *);
 PETSC_EXTERN PetscErrorCode HylcTableReadStream(FILE *, const char path[], const HylcTableSpec *, HylcTable *);
 PETSC_EXTERN PetscErrorCode HylcTableReadHDF5(const char path[], const char option[], const char *const datasets[], const HylcTableSpec *, HylcTable *);
+/* Strains (6 columns) from a file recognized by content: HDF5 (/strain or /samples/strain, N x 6) or text
+   (6 numbers per line): hylc-eval's -eval_input. */
+PETSC_EXTERN PetscErrorCode HylcTableReadStrainFile(const char path[], const char option[], HylcTable *);
 PETSC_EXTERN PetscErrorCode HylcTableDestroy(HylcTable *);
 
 /* The first problem of a strain z (6 values): NULL if it is finite with 1 + sx > 0, 1 + sy > 0 and

@@ -629,3 +629,42 @@ PetscErrorCode HylcTableReadHDF5(const char path[], const char option[], const c
   PetscCall(ierr);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+/*@C
+  HylcTableReadStrainFile - Reads strains (6 per row) from a file recognized by content: HDF5 (the
+  dataset /strain or /samples/strain of shape (N, 6)) or text (6 numbers per line); every strain finite
+  and in the domain (include/hylc/table.h). The reader of hylc-eval's -eval_input.
+
+  Not collective
+
+  Input Parameters:
++ path   - the file
+- option - the option that named it (messages), or NULL
+
+  Output Parameter:
+. t - the rows (free with HylcTableDestroy())
+
+  Level: developer
+@*/
+PetscErrorCode HylcTableReadStrainFile(const char path[], const char option[], HylcTable *t)
+{
+  static const char *const datasets[] = {"strain", "samples/strain", NULL};
+  const HylcTableSpec      spec       = {HYLC_TABLE_NUMBERS, 6, HylcTableStrainNames, PETSC_TRUE};
+  unsigned char            head[8]    = {0};
+  size_t                   got        = 0;
+  FILE                    *fp;
+  char                     w[PETSC_MAX_PATH_LEN];
+
+  PetscFunctionBegin;
+  PetscCall(HylcFileCheckInput(PETSC_COMM_SELF, path, option));
+  OptionText(option, w, sizeof(w));
+  fp = fopen(path, "rb");
+  PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot open %s%s: %s", path, w, strerror(errno));
+  got = fread(head, 1, sizeof(head), fp);
+  fclose(fp);
+  if (got == sizeof(head) && !memcmp(head, "\211HDF\r\n\032\n", 8))
+    PetscCall(HylcTableReadHDF5(path, option, datasets, &spec, t));
+  else
+    PetscCall(HylcTableReadText(path, option, &spec, t));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
