@@ -37,5 +37,7 @@ PETSC_EXTERN PetscErrorCode HylcFilesView(HylcFiles, PetscViewer);
    (~/.petscrc, .petscrc, petscrc) unless -skip_petscrc is given. fn(path, what, yaml, ctx) is called once
    per file (by path), what saying where it was named. */
 PETSC_EXTERN void HylcOptionsFilesForEach(int argc, char **argv, void (*fn)(const char path[], const char what[], int yaml, void *ctx), void *ctx);
-/* The temporary a writer replaces an output through may add this many characters to its name. */
-#define HYLC_FILES_TEMP_SUFFIX 16
+/* The most characters the temporary an output is written through adds to its name: ".tmp.XXXXXX" of
+   HylcFileOpenTemp(), ".tmp<pid>" of hylc-eval's HDF5 output (pid_max 4194304), ".tmp" of the material
+   writers. */
+#define HYLC_FILES_TEMP_SUFFIX 11

@@ -73,10 +73,10 @@ static PetscErrorCode WriteResults(const char path[], PetscInt n, const PetscRea
 
   PetscFunctionBegin;
   if (l > 3 && (!strcmp(path + l - 3, ".h5") || (l > 5 && !strcmp(path + l - 5, ".hdf5")))) {
-    char    tmp[PETSC_MAX_PATH_LEN + 16];
-    hid_t   f;
-    herr_t  e     = 0;
-    hsize_t d1[1] = {(hsize_t)n}, d2[2] = {(hsize_t)n, 6}, d3[3] = {(hsize_t)n, 6, 6};
+    char        tmp[PETSC_MAX_PATH_LEN + 16];
+    hid_t       f;
+    herr_t      e     = 0;
+    hsize_t     d1[1] = {(hsize_t)n}, d2[2] = {(hsize_t)n, 6}, d3[3] = {(hsize_t)n, 6, 6};
     H5E_auto2_t efunc;
     void       *edata;
     snprintf(tmp, sizeof(tmp), "%s.tmp%d", path, (int)getpid());

@@ -5,6 +5,7 @@ static const char help[] = "hylc-solve: the equilibrium of a periodic yarn tile 
 
 #include <hylc/micro.h>
 #include <hylc/sys.h>
+#include <hylc/files.h>
 
 /* the work of hylc-solve on pat and micro (created and destroyed by Run, also on an error) */
 static PetscErrorCode Solve(HylcPattern pat, HylcMicro micro)
@@ -18,7 +19,6 @@ static PetscErrorCode Solve(HylcPattern pat, HylcMicro micro)
 
   PetscFunctionBeginUser;
   PetscCall(HylcPatternSetFromOptions(pat));
-  PetscCall(HylcPatternSetUp(pat));
   PetscCall(HylcYarnModelDefault(&model));
   PetscCall(HylcYarnModelSetFromOptions(PETSC_COMM_SELF, NULL, &model));
   PetscOptionsBegin(PETSC_COMM_SELF, NULL, "hylc-solve options", "hylc-solve");
@@ -29,23 +29,28 @@ static PetscErrorCode Solve(HylcPattern pat, HylcMicro micro)
   nt = 2;
   PetscCall(PetscOptionsIntArray("-solve_vtk_tiles", "Tile copies nx,ny in the VTK file", "hylc-solve", tiles, &nt, NULL));
   PetscOptionsEnd();
-  /* every output path checked before the solve, and never an input */
+  /* every file before any work (include/hylc/files.h): the pattern file and the options files read, the
+     outputs writable and within the path limits, never an input or each other */
   {
-    char      in[PETSC_MAX_PATH_LEN] = "";
-    PetscBool same;
-    PetscCall(PetscOptionsGetString(NULL, NULL, "-pattern_file", in, sizeof(in), NULL));
-    if (out[0]) {
-      PetscCall(HylcFileCheckOutput(PETSC_COMM_SELF, out, "-solve_output"));
-      PetscCall(HylcFileCheckDistinct(PETSC_COMM_SELF, out, "-solve_output", in, "-pattern_file"));
-      PetscCheck(z[1] == 0 && z[3] == 0 && z[4] == 0 && z[5] == 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-solve_output %s: a deformed tile is a .pyp pattern only without shear and bending (sa = II = 0); use -solve_vtk instead", out);
-    }
-    if (vtk[0]) {
-      PetscCall(HylcFileCheckOutput(PETSC_COMM_SELF, vtk, "-solve_vtk"));
-      PetscCall(HylcFileCheckDistinct(PETSC_COMM_SELF, vtk, "-solve_vtk", in, "-pattern_file"));
-    }
-    PetscCall(PetscStrcmp(out, vtk, &same));
-    PetscCheck(!out[0] || !same, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-solve_output and -solve_vtk name the same file %s", out);
+    char            in[PETSC_MAX_PATH_LEN] = "";
+    HylcPatternType type;
+    PetscBool       isfile;
+    HylcFiles       files;
+    PetscErrorCode  ierr;
+    PetscCall(HylcPatternGetType(pat, &type));
+    PetscCall(PetscStrcmp(type, HYLCPATTERNFILE, &isfile));
+    if (isfile) PetscCall(PetscOptionsGetString(NULL, NULL, "-pattern_file", in, sizeof(in), NULL));
+    PetscCheck(!out[0] || (z[1] == 0 && z[3] == 0 && z[4] == 0 && z[5] == 0), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-solve_output %s: a deformed tile is a .pyp pattern only without shear and bending (sa = II = 0); use -solve_vtk instead", out);
+    PetscCall(HylcFilesCreate(PETSC_COMM_SELF, &files));
+    ierr = HylcFilesAddOptionsFiles(files);
+    if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_INPUT, in, "-pattern_file");
+    if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, out, "-solve_output");
+    if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, vtk, "-solve_vtk");
+    if (!ierr) ierr = HylcFilesCheck(files);
+    PetscCall(HylcFilesDestroy(&files));
+    PetscCall(ierr);
   }
+  PetscCall(HylcPatternSetUp(pat));
   PetscCall(HylcMicroSetPattern(micro, pat, &model));
   PetscCall(HylcMicroSetFromOptions(micro));
   {

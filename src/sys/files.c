@@ -77,7 +77,7 @@ static void VisitArgs(OptionsWalk *w, int n, char **args, const char what[])
 /* the arguments of $PETSC_OPTIONS, split at blanks (a malloc'd copy in *buf, pointers in args) */
 static int EnvArgs(char **buf, char *args[], int max)
 {
-  const char *env = getenv("PETSC_OPTIONS");
+  const char *env  = getenv("PETSC_OPTIONS");
   char       *save = NULL, *t;
   int         n    = 0;
 
@@ -316,8 +316,8 @@ static PetscErrorCode CheckLength(const Entry *e)
   }
   PetscCheck(len + extra < PATH_MAX && len < PETSC_MAX_PATH_LEN, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: the path has %zu characters, over the limit of %d%s", e->what, len, (int)PetscMin(PATH_MAX, PETSC_MAX_PATH_LEN) - 1 - (int)extra, extra ? " for an output (the temporary it is written through adds a suffix)" : "");
   while (*c) {
-    const char  *s = strchr(c, '/');
-    const size_t n = s ? (size_t)(s - c) : strlen(c);
+    const char  *s    = strchr(c, '/');
+    const size_t n    = s ? (size_t)(s - c) : strlen(c);
     const int    last = !s;
     PetscCheck(n + (last ? extra : 0) <= NAME_MAX, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: the path component '%.24s...' has %zu characters, over the limit of %d%s", e->what, c, n, NAME_MAX - (int)(last ? extra : 0), last && extra ? " for an output's name (the temporary it is written through adds a suffix)" : "");
     c += n + (s ? 1 : 0);
@@ -403,6 +403,8 @@ PetscErrorCode HylcFilesView(HylcFiles files, PetscViewer viewer)
 {
   PetscFunctionBegin;
   if (!viewer) PetscCall(PetscViewerASCIIGetStdout(files->comm, &viewer));
-  for (int i = 0; i < files->n; i++) PetscCall(PetscViewerASCIIPrintf(viewer, "%s %s (%s)\n", files->e[i].role == HYLC_FILE_OUTPUT ? "output" : files->e[i].role == HYLC_FILE_INPUT ? "input" : "input (optional)", files->e[i].path, files->e[i].what));
+  for (int i = 0; i < files->n; i++) PetscCall(PetscViewerASCIIPrintf(viewer, "%s %s (%s)\n", files->e[i].role == HYLC_FILE_OUTPUT ? "output" : files->e[i].role == HYLC_FILE_INPUT ? "input"
+                                                                                                                                                                                    : "input (optional)",
+                                                                      files->e[i].path, files->e[i].what));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
