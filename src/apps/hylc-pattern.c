@@ -3,6 +3,7 @@ static const char help[] = "hylc-pattern: load or generate a periodic yarn patte
                            "  hylc-pattern -pattern_type satin -pattern_output s.pyp   generate and write\n"
                            "  hylc-pattern -pattern_file f.pyp -pattern_vtk f.vtk -pattern_vtk_tiles 3,3\n\n";
 
+#include <hylc/options.h>
 #include <hylc/pattern.h>
 #include <hylc/sys.h>
 #include <hylc/files.h>
@@ -18,7 +19,7 @@ static PetscErrorCode RunPattern(HylcPattern pat)
   PetscOptionsBegin(PETSC_COMM_WORLD, NULL, "hylc-pattern output options", "hylc-pattern");
   PetscCall(PetscOptionsString("-pattern_output", "Write the pattern to this .pyp file", "HylcPatternWrite", out, out, sizeof(out), NULL));
   PetscCall(PetscOptionsString("-pattern_vtk", "Write the tiled pattern as legacy-VTK polylines to this file", "HylcPatternWriteVTK", vtk, vtk, sizeof(vtk), NULL));
-  PetscCall(PetscOptionsIntArray("-pattern_vtk_tiles", "Number of tile copies nx,ny in the VTK file", "HylcPatternWriteVTK", tiles, &nt, &flg));
+  PetscCall(HylcOptionsIntArray("-pattern_vtk_tiles", "Number of tile copies nx,ny in the VTK file", "HylcPatternWriteVTK", tiles, &nt, &flg));
   PetscOptionsEnd();
   PetscCheck(!flg || (nt == 2 && tiles[0] >= 1 && tiles[1] >= 1), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-pattern_vtk_tiles needs two positive integers nx,ny");
   PetscCheck((double)tiles[0] * tiles[1] <= 1e6, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-pattern_vtk_tiles %" PetscInt_FMT ",%" PetscInt_FMT ": at most 1e6 tile copies", tiles[0], tiles[1]);

@@ -3,6 +3,7 @@ static const char help[] = "hylc-solve: the equilibrium of a periodic yarn tile 
                            "  hylc-solve -pattern_type stockinette -strain 0,0,0,100,0,0 -solve_vtk s.vtk\n\n"
                            "Prints psi (J/m^2), the energy parts, the status, the Newton iterations and the wall time.\n\n";
 
+#include <hylc/options.h>
 #include <hylc/micro.h>
 #include <hylc/sys.h>
 #include <hylc/files.h>
@@ -22,12 +23,12 @@ static PetscErrorCode Solve(HylcPattern pat, HylcMicro micro)
   PetscCall(HylcYarnModelDefault(&model));
   PetscCall(HylcYarnModelSetFromOptions(PETSC_COMM_SELF, NULL, &model));
   PetscOptionsBegin(PETSC_COMM_SELF, NULL, "hylc-solve options", "hylc-solve");
-  PetscCall(PetscOptionsRealArray("-strain", "Macroscopic strain sx,sa,sy,II00,II01,II11 (II in 1/m): finite, |sa| < 1, 0 < 1+sx, 1+sy <= 1e3, the midsurface turning by at most 2 pi across a period (docs/method.md)", "HylcMicroSolve", z, &nz, &flg));
+  PetscCall(HylcOptionsRealArray("-strain", "Macroscopic strain sx,sa,sy,II00,II01,II11 (II in 1/m): finite, |sa| < 1, 0 < 1+sx, 1+sy <= 1e3, the midsurface turning by at most 2 pi across a period (docs/method.md)", "HylcMicroSolve", z, &nz, &flg));
   PetscCheck(!flg || nz == 6, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-strain needs 6 comma-separated values sx,sa,sy,II00,II01,II11, got %" PetscInt_FMT, nz);
   PetscCall(PetscOptionsString("-solve_output", "Write the equilibrium tile as .pyp (positions and twists; rest data unchanged)", "hylc-solve", out, out, sizeof(out), NULL));
   PetscCall(PetscOptionsString("-solve_vtk", "Write the equilibrium, tiled, as legacy-VTK polylines", "hylc-solve", vtk, vtk, sizeof(vtk), NULL));
   nt = 2;
-  PetscCall(PetscOptionsIntArray("-solve_vtk_tiles", "Tile copies nx,ny in the VTK file", "hylc-solve", tiles, &nt, NULL));
+  PetscCall(HylcOptionsIntArray("-solve_vtk_tiles", "Tile copies nx,ny in the VTK file", "hylc-solve", tiles, &nt, NULL));
   PetscOptionsEnd();
   /* every file before any work (include/hylc/files.h): the pattern file and the options files read, the
      outputs writable and within the path limits, never an input or each other */
