@@ -321,6 +321,7 @@ PetscErrorCode HylcTableReadText(const char path[], const char option[], const H
   char           w[PETSC_MAX_PATH_LEN];
 
   PetscFunctionBegin;
+  PetscCall(PetscMemzero(t, sizeof(*t)));
   PetscCall(HylcFileCheckInput(PETSC_COMM_SELF, path, option));
   OptionText(option, w, sizeof(w));
   fp = fopen(path, "r");
@@ -656,6 +657,7 @@ PetscErrorCode HylcTableReadStrainFile(const char path[], const char option[], H
   char                     w[PETSC_MAX_PATH_LEN];
 
   PetscFunctionBegin;
+  PetscCall(PetscMemzero(t, sizeof(*t)));
   PetscCall(HylcFileCheckInput(PETSC_COMM_SELF, path, option));
   OptionText(option, w, sizeof(w));
   fp = fopen(path, "rb");
