@@ -140,7 +140,7 @@ PetscErrorCode HylcCalibrateSetBounds(HylcCalibrate C, PetscInt j, PetscReal lo,
   PetscFunctionBegin;
   PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
   PetscCheck(j >= 0 && j < HYLC_CALIBRATE_NPARAM, PetscObjectComm((PetscObject)C), PETSC_ERR_ARG_OUTOFRANGE, "Parameter index %" PetscInt_FMT " out of range 0..3", j);
-  PetscCheck(lo > 0 && lo <= hi, PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "Bounds of %s must be 0 < lo <= hi, got %g,%g", HylcCalibrateParamNames[j], (double)lo, (double)hi);
+  PetscCheck(lo > 0 && lo <= hi && !PetscIsInfOrNanReal(hi), PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "Bounds of %s must be finite with 0 < lo <= hi, got %g,%g", HylcCalibrateParamNames[j], (double)lo, (double)hi);
   C->blo[j]      = lo;
   C->bhi[j]      = hi;
   C->solverSetUp = PETSC_FALSE;
@@ -336,14 +336,14 @@ PetscErrorCode HylcCalibrateSetTermWeight(HylcCalibrate C, const char term[], Pe
   PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
   PetscCall(PetscStrcmp(term, "zero", &zero));
   if (zero) {
-    PetscCheck(w >= 0, PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "-calibrate_weight_zero must be >= 0, got %g", (double)w);
+    PetscCheck(w >= 0 && !PetscIsInfOrNanReal(w), PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "-calibrate_weight_zero must be finite and >= 0, got %g", (double)w);
     C->wzero = w;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   for (int t = 1; t < HYLC_CALIB_NTERM; t++)
     if (!strcmp(term, HylcCalibrateTermName_Private(t))) found = t;
   PetscCheck(found >= 1, PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "-calibrate_weights: unknown term '%s' (use sx, sa, sy, II00, II11, a 2D term such as sx-sa, or other; the constant's is -calibrate_weight_zero)", term);
-  PetscCheck(w >= 0, PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "-calibrate_weights: the weight of %s must be a number >= 0, got %g", term, (double)w);
+  PetscCheck(w >= 0 && !PetscIsInfOrNanReal(w), PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "-calibrate_weights: the weight of %s must be a finite number >= 0, got %g", term, (double)w);
   C->w[found] = w;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -549,7 +549,7 @@ PetscErrorCode HylcCalibrateSetFromOptions(HylcCalibrate C)
       PetscCheck(eq, comm, PETSC_ERR_USER_INPUT, "-calibrate_weights: '%s' is not term=weight", tok);
       *eq = 0;
       v   = strtod(eq + 1, &end);
-      PetscCheck(end != eq + 1 && !*end && v >= 0, comm, PETSC_ERR_USER_INPUT, "-calibrate_weights: the weight of %s must be a number >= 0, got '%s'", tok, eq + 1);
+      PetscCheck(end != eq + 1 && !*end && v >= 0 && !PetscIsInfOrNanReal(v), comm, PETSC_ERR_USER_INPUT, "-calibrate_weights: the weight of %s must be a finite number >= 0, got '%s'", tok, eq + 1);
       PetscCheck(strcmp(tok, "zero"), comm, PETSC_ERR_USER_INPUT, "-calibrate_weights: unknown term '%s' (use sx, sa, sy, II00, II11, a 2D term such as sx-sa, or other; the constant's is -calibrate_weight_zero)", tok);
       PetscCall(HylcCalibrateSetTermWeight(C, tok, v));
     }
