@@ -259,15 +259,19 @@ PetscErrorCode HylcShareError(MPI_Comm comm, PetscErrorCode ierr)
 @*/
 PetscErrorCode HylcCheckOptionsUsed(MPI_Comm comm)
 {
-  PetscInt n     = 0;
+  PetscInt n     = 0, shown = 0;
   char   **names = NULL, **values = NULL, list[1024] = "";
 
   PetscFunctionBegin;
   PetscCall(PetscOptionsLeftGet(NULL, &n, &names, &values));
+  /* as many names as fit, then how many more (PETSc 3.18's PetscStrlcat writes past a nearly full buffer) */
   for (PetscInt i = 0; i < n; i++) {
-    PetscCall(PetscStrlcat(list, " -", sizeof(list)));
-    PetscCall(PetscStrlcat(list, names[i], sizeof(list)));
+    const size_t used = strlen(list), need = strlen(names[i]) + 2;
+    if (used + need + 32 >= sizeof(list)) break;
+    snprintf(list + used, sizeof(list) - used, " -%s", names[i]);
+    shown++;
   }
+  if (shown < n) snprintf(list + strlen(list), sizeof(list) - strlen(list), " and %" PetscInt_FMT " more", n - shown);
   PetscCall(PetscOptionsLeftRestore(NULL, &n, &names, &values));
   PetscCheck(!list[0], comm, PETSC_ERR_USER_INPUT, "Unknown option(s):%s (misspelt, or not for this program; -help lists the options)", list);
   PetscFunctionReturn(PETSC_SUCCESS);
