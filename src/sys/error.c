@@ -259,7 +259,7 @@ PetscErrorCode HylcShareError(MPI_Comm comm, PetscErrorCode ierr)
 @*/
 PetscErrorCode HylcCheckOptionsUsed(MPI_Comm comm)
 {
-  PetscInt n     = 0, shown = 0;
+  PetscInt n = 0, shown = 0;
   char   **names = NULL, **values = NULL, list[1024] = "";
 
   PetscFunctionBegin;
