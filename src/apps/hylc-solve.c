@@ -3,8 +3,10 @@ static const char help[] = "hylc-solve: the equilibrium of a periodic yarn tile 
                            "  hylc-solve -pattern_type stockinette -strain 0,0,0,100,0,0 -solve_vtk s.vtk\n\n"
                            "Prints psi (J/m^2), the energy parts, the status, the Newton iterations and the wall time.\n\n";
 
+#include <hylc/options.h>
 #include <hylc/micro.h>
 #include <hylc/sys.h>
+#include <hylc/files.h>
 
 /* the work of hylc-solve on pat and micro (created and destroyed by Run, also on an error) */
 static PetscErrorCode Solve(HylcPattern pat, HylcMicro micro)
@@ -18,34 +20,38 @@ static PetscErrorCode Solve(HylcPattern pat, HylcMicro micro)
 
   PetscFunctionBeginUser;
   PetscCall(HylcPatternSetFromOptions(pat));
-  PetscCall(HylcPatternSetUp(pat));
   PetscCall(HylcYarnModelDefault(&model));
   PetscCall(HylcYarnModelSetFromOptions(PETSC_COMM_SELF, NULL, &model));
   PetscOptionsBegin(PETSC_COMM_SELF, NULL, "hylc-solve options", "hylc-solve");
-  PetscCall(PetscOptionsRealArray("-strain", "Macroscopic strain sx,sa,sy,II00,II01,II11 (II in 1/m): finite, |sa| < 1, 0 < 1+sx, 1+sy <= 1e3, the midsurface turning by at most 2 pi across a period (docs/method.md)", "HylcMicroSolve", z, &nz, &flg));
+  PetscCall(HylcOptionsRealArray("-strain", "Macroscopic strain sx,sa,sy,II00,II01,II11 (II in 1/m): finite, |sa| < 1, 0 < 1+sx, 1+sy <= 1e3, the midsurface turning by at most 2 pi across a period (docs/method.md)", "HylcMicroSolve", z, &nz, &flg));
   PetscCheck(!flg || nz == 6, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-strain needs 6 comma-separated values sx,sa,sy,II00,II01,II11, got %" PetscInt_FMT, nz);
   PetscCall(PetscOptionsString("-solve_output", "Write the equilibrium tile as .pyp (positions and twists; rest data unchanged)", "hylc-solve", out, out, sizeof(out), NULL));
   PetscCall(PetscOptionsString("-solve_vtk", "Write the equilibrium, tiled, as legacy-VTK polylines", "hylc-solve", vtk, vtk, sizeof(vtk), NULL));
   nt = 2;
-  PetscCall(PetscOptionsIntArray("-solve_vtk_tiles", "Tile copies nx,ny in the VTK file", "hylc-solve", tiles, &nt, NULL));
+  PetscCall(HylcOptionsIntArray("-solve_vtk_tiles", "Tile copies nx,ny in the VTK file", "hylc-solve", tiles, &nt, NULL));
   PetscOptionsEnd();
-  /* every output path checked before the solve, and never an input */
+  /* every file before any work (include/hylc/files.h): the pattern file and the options files read, the
+     outputs writable and within the path limits, never an input or each other */
   {
-    char      in[PETSC_MAX_PATH_LEN] = "";
-    PetscBool same;
-    PetscCall(PetscOptionsGetString(NULL, NULL, "-pattern_file", in, sizeof(in), NULL));
-    if (out[0]) {
-      PetscCall(HylcFileCheckOutput(PETSC_COMM_SELF, out, "-solve_output"));
-      PetscCall(HylcFileCheckDistinct(PETSC_COMM_SELF, out, "-solve_output", in, "-pattern_file"));
-      PetscCheck(z[1] == 0 && z[3] == 0 && z[4] == 0 && z[5] == 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-solve_output %s: a deformed tile is a .pyp pattern only without shear and bending (sa = II = 0); use -solve_vtk instead", out);
-    }
-    if (vtk[0]) {
-      PetscCall(HylcFileCheckOutput(PETSC_COMM_SELF, vtk, "-solve_vtk"));
-      PetscCall(HylcFileCheckDistinct(PETSC_COMM_SELF, vtk, "-solve_vtk", in, "-pattern_file"));
-    }
-    PetscCall(PetscStrcmp(out, vtk, &same));
-    PetscCheck(!out[0] || !same, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-solve_output and -solve_vtk name the same file %s", out);
+    char            in[PETSC_MAX_PATH_LEN] = "";
+    HylcPatternType type;
+    PetscBool       isfile;
+    HylcFiles       files;
+    PetscErrorCode  ierr;
+    PetscCall(HylcPatternGetType(pat, &type));
+    PetscCall(PetscStrcmp(type, HYLCPATTERNFILE, &isfile));
+    if (isfile) PetscCall(PetscOptionsGetString(NULL, NULL, "-pattern_file", in, sizeof(in), NULL));
+    PetscCheck(!out[0] || (z[1] == 0 && z[3] == 0 && z[4] == 0 && z[5] == 0), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-solve_output %s: a deformed tile is a .pyp pattern only without shear and bending (sa = II = 0); use -solve_vtk instead", out);
+    PetscCall(HylcFilesCreate(PETSC_COMM_SELF, &files));
+    ierr = HylcFilesAddOptionsFiles(files);
+    if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_INPUT, in, "-pattern_file");
+    if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, out, "-solve_output");
+    if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, vtk, "-solve_vtk");
+    if (!ierr) ierr = HylcFilesCheck(files);
+    PetscCall(HylcFilesDestroy(&files));
+    PetscCall(ierr);
   }
+  PetscCall(HylcPatternSetUp(pat));
   PetscCall(HylcMicroSetPattern(micro, pat, &model));
   PetscCall(HylcMicroSetFromOptions(micro));
   {

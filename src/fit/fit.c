@@ -1,4 +1,5 @@
 /* HylcFit: lifecycle, options, viewer and results of the fitting pipeline (include/hylc/fit.h). */
+#include <hylc/options.h>
 #include <hylc/private/fitimpl.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -153,7 +154,7 @@ static PetscErrorCode KnotPairOption(PetscOptionItems *PetscOptionsObject, HylcF
   PetscBool set;
 
   PetscFunctionBegin;
-  PetscCall(PetscOptionsIntArray(name, help, "HylcFitSetFromOptions", v, &n, &set));
+  PetscCall(HylcOptionsIntArray(name, help, "HylcFitSetFromOptions", v, &n, &set));
   if (set) {
     PetscCheck(n == 2 && v[0] >= 1 && v[1] >= 1 && v[0] + v[1] >= 3, PetscObjectComm((PetscObject)fit), PETSC_ERR_USER_INPUT, "%s needs two knot counts left,right (each >= 1, counting the 0 knot on both sides, at least 2 knots in all)", name);
     k[0] = v[0];
@@ -201,30 +202,30 @@ PetscErrorCode HylcFitSetFromOptions(HylcFit fit)
   PetscCall(PetscOptionsString("-fit_json", "ARCSim-HYLC JSON material file to write", "HylcFitSetOutputs", fit->json, fit->json, sizeof(fit->json), NULL));
   PetscCall(PetscOptionsEnum("-fit_family", "Pattern family: woven and knit share the constants; stockinette: -fit_reg 1e-2 and coarse 2D bending knots (factor 0.3, 2+4 and 3+3)", "HylcFitSetFamily", HylcFitFamilies, family, &family, &set));
   if (set) PetscCall(FamilyDefaults(fit, (HylcFitFamily)family));
-  PetscCall(PetscOptionsReal("-fit_reg", "Quasiconvex marching: minimum outward slope p^x_min in J/m^2 per normalised unit (S28)", "HylcFitSetFromOptions", fit->reg, &fit->reg, NULL));
+  PetscCall(HylcOptionsReal("-fit_reg", "Quasiconvex marching: minimum outward slope p^x_min in J/m^2 per normalised unit (S28)", "HylcFitSetFromOptions", fit->reg, &fit->reg, NULL));
   PetscCall(PetscOptionsBool("-fit_quasiconvex", "Apply the quasiconvex marching (false: the unregularized fits, like rib1_noreg)", "HylcFitSetFromOptions", fit->quasiconvex, &fit->quasiconvex, NULL));
   PetscCall(PetscOptionsEnum("-fit_compat", "paper, or authors: the authors' code's two departures (S42 x-clamp dropped; mv <= -reg on the minimum's row)", "HylcFitSetFromOptions", HylcFitCompats, compat, &compat, NULL));
   PetscCall(PetscOptionsEnum("-fit_monotone_rule", "1D slope limiter: circle (alpha^2 + beta^2 <= 9, the authors') or box (0 <= alpha, beta <= 3)", "HylcFitSetFromOptions", HylcMonotoneRules, rule, &rule, NULL));
-  PetscCall(PetscOptionsReal("-fit_flat_tol", "1D monotone cubic: an interval with |dp| below this gets zero slopes", "HylcFitSetFromOptions", fit->flatTol, &fit->flatTol, NULL));
-  PetscCall(PetscOptionsReal("-fit_end_slope", "Boundary slopes at least this outward (increasing linear extrapolation)", "HylcFitSetFromOptions", fit->endSlope, &fit->endSlope, NULL));
-  PetscCall(PetscOptionsReal("-fit_mls_kernel", "MLS kernel radius as a fraction of the term's data span per axis", "HylcFitSetFromOptions", fit->kernel, &fit->kernel, NULL));
-  PetscCall(PetscOptionsReal("-fit_mls_truncation", "MLS kernel radius / Gaussian sigma (weights are zero beyond the radius)", "HylcFitSetFromOptions", fit->truncation, &fit->truncation, NULL));
-  PetscCall(PetscOptionsReal("-fit_mls_grow", "Where the MLS has too few samples in its kernel (singular), enlarge the kernel by this factor until it has (with a warning); <= 1: error", "HylcFitSetFromOptions", fit->mlsGrow, &fit->mlsGrow, NULL));
+  PetscCall(HylcOptionsReal("-fit_flat_tol", "1D monotone cubic: an interval with |dp| below this gets zero slopes", "HylcFitSetFromOptions", fit->flatTol, &fit->flatTol, NULL));
+  PetscCall(HylcOptionsReal("-fit_end_slope", "Boundary slopes at least this outward (increasing linear extrapolation)", "HylcFitSetFromOptions", fit->endSlope, &fit->endSlope, NULL));
+  PetscCall(HylcOptionsReal("-fit_mls_kernel", "MLS kernel radius as a fraction of the term's data span per axis", "HylcFitSetFromOptions", fit->kernel, &fit->kernel, NULL));
+  PetscCall(HylcOptionsReal("-fit_mls_truncation", "MLS kernel radius / Gaussian sigma (weights are zero beyond the radius)", "HylcFitSetFromOptions", fit->truncation, &fit->truncation, NULL));
+  PetscCall(HylcOptionsReal("-fit_mls_grow", "Where the MLS has too few samples in its kernel (singular), enlarge the kernel by this factor until it has (with a warning); <= 1: error", "HylcFitSetFromOptions", fit->mlsGrow, &fit->mlsGrow, NULL));
   PetscCall(PetscOptionsBool("-fit_symmetrize_sa", "Symmetrize the MLS in sa: g(u) = (g(u) + g(-u)) / 2 in symlog space", "HylcFitSetFromOptions", fit->symmetrize, &fit->symmetrize, NULL));
-  PetscCall(PetscOptionsReal("-fit_fd_eps", "Width of the central differences for the Hermite slopes (points at +-half of it), as a fraction of the smallest knot spacing", "HylcFitSetFromOptions", fit->fdEps, &fit->fdEps, NULL));
+  PetscCall(HylcOptionsReal("-fit_fd_eps", "Width of the central differences for the Hermite slopes (points at +-half of it), as a fraction of the smallest knot spacing", "HylcFitSetFromOptions", fit->fdEps, &fit->fdEps, NULL));
   PetscCall(PetscOptionsInt("-fit_knots1d", "Knots of a 1D term", "HylcFitSetFromOptions", fit->nk1, &fit->nk1, NULL));
-  PetscCall(PetscOptionsReal("-fit_knots1d_factor", "1D knots span factor x [min, max] of the data (then shifted so that 0 is a knot)", "HylcFitSetFromOptions", fit->factor1, &fit->factor1, NULL));
-  PetscCall(PetscOptionsReal("-fit_knots2d_factor", "2D knots span factor x [min, 0] and [0, max] of the data", "HylcFitSetFromOptions", fit->factor2, &fit->factor2, NULL));
+  PetscCall(HylcOptionsReal("-fit_knots1d_factor", "1D knots span factor x [min, max] of the data (then shifted so that 0 is a knot)", "HylcFitSetFromOptions", fit->factor1, &fit->factor1, NULL));
+  PetscCall(HylcOptionsReal("-fit_knots2d_factor", "2D knots span factor x [min, 0] and [0, max] of the data", "HylcFitSetFromOptions", fit->factor2, &fit->factor2, NULL));
   PetscCall(KnotPairOption(PetscOptionsObject, fit, "-fit_knots2d_stretch", "2D knots of an sx or sy axis left,right of 0 (0 counted in both)", fit->kStretch));
   PetscCall(KnotPairOption(PetscOptionsObject, fit, "-fit_knots2d_poisson", "2D knots of each axis of (sx, sy) left,right of 0", fit->kPoisson));
   PetscCall(KnotPairOption(PetscOptionsObject, fit, "-fit_knots2d_symmetric", "2D knots of an sa or bending axis left,right of 0", fit->kSym));
-  PetscCall(PetscOptionsReal("-fit_knots2d_bend_factor", "2D knots span factor of the pairs with a bending axis (stockinette 0.3)", "HylcFitSetFromOptions", fit->factor2bend, &fit->factor2bend, NULL));
+  PetscCall(HylcOptionsReal("-fit_knots2d_bend_factor", "2D knots span factor of the pairs with a bending axis (stockinette 0.3)", "HylcFitSetFromOptions", fit->factor2bend, &fit->factor2bend, NULL));
   PetscCall(KnotPairOption(PetscOptionsObject, fit, "-fit_knots2d_bend_stretch", "Knots of the sx or sy axis of a bending pair (stockinette 2,4)", fit->kBendStretch));
   PetscCall(KnotPairOption(PetscOptionsObject, fit, "-fit_knots2d_bend_symmetric", "Knots of the sa or bending axis of a bending pair (stockinette 3,3)", fit->kBendSym));
   PetscCall(PetscOptionsBool("-fit_zero_compression", "Zero the 2D residuals where sx or sy < 0 (not (sx, sy))", "HylcFitSetFromOptions", fit->zeroCompression, &fit->zeroCompression, NULL));
   PetscCall(PetscOptionsBool("-fit_zero_compression_strict", "Also zero muv on the axis bordering the compressed nodes, so the residual vanishes on the whole compressed half-plane", "HylcFitSetFromOptions", fit->zeroStrict, &fit->zeroStrict, NULL));
-  PetscCall(PetscOptionsReal("-fit_density", "Area density of the material in kg/m^2 (> 0 overrides the input's)", "HylcFitSetFromOptions", fit->density, &fit->density, NULL));
-  PetscCall(PetscOptionsReal("-fit_yarn_density", "Yarn density in kg/m^3 for the area density rho pi r^2 L / (px py) of a samples file (<= 0: 0.12 kg/m^2 / r, i.e. 120 kg/m^3 at r = 1 mm, the paper's tables)", "HylcFitSetFromOptions", fit->yarnDensity, &fit->yarnDensity, NULL));
+  PetscCall(HylcOptionsReal("-fit_density", "Area density of the material in kg/m^2 (> 0 overrides the input's)", "HylcFitSetFromOptions", fit->density, &fit->density, NULL));
+  PetscCall(HylcOptionsReal("-fit_yarn_density", "Yarn density in kg/m^3 for the area density rho pi r^2 L / (px py) of a samples file (<= 0: 0.12 kg/m^2 / r, i.e. 120 kg/m^3 at r = 1 mm, the paper's tables)", "HylcFitSetFromOptions", fit->yarnDensity, &fit->yarnDensity, NULL));
   PetscCall(PetscOptionsInt("-fit_raw_n1", "Raw data.txt: rows per 1D block (0: the leading run of sx-only rows)", "HylcFitSetFromOptions", fit->rawN1, &fit->rawN1, NULL));
   PetscCall(PetscOptionsInt("-fit_raw_n2", "Raw data.txt: grid size per axis of a 2D block (0: from the row count)", "HylcFitSetFromOptions", fit->rawN2, &fit->rawN2, NULL));
   PetscCall(PetscOptionsInt("-fit_min_samples_1d", "A 1D term with fewer samples (but some) is an error", "HylcFitSetFromOptions", fit->min1, &fit->min1, NULL));

@@ -1,5 +1,6 @@
 /* HylcMicro: the parameters, their setters and options (HylcMicroSetFromOptions reads options and builds
    nothing), and the viewer. */
+#include <hylc/options.h>
 #include <hylc/private/microimpl.h>
 
 /*@C
@@ -393,32 +394,32 @@ PetscErrorCode HylcMicroSetFromOptions(HylcMicro M)
   PetscCall(PetscOptionsHasName(((PetscObject)M)->options, ((PetscObject)M)->prefix, "-factor_type", &flg));
   PetscCheck(!flg, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%sfactor_type was removed: choose the factorization with -%sfactor_pc_factor_mat_solver_type hylc|petsc|cholmod|mumps (hylc is the default; petsc is the former -%sfactor_type petsc)", HylcMicroPrefix_Private(M), HylcMicroPrefix_Private(M), HylcMicroPrefix_Private(M));
   PetscObjectOptionsBegin((PetscObject)M);
-  PetscCall(PetscOptionsReal("-alpha_start", "Regularization schedule: alpha^ at iteration 0", "HylcMicroSetRegularization", p.alphaStart, &p.alphaStart, NULL));
-  PetscCall(PetscOptionsReal("-alpha_end", "Regularization schedule: alpha^ from iteration alpha_its on", "HylcMicroSetRegularization", p.alphaEnd, &p.alphaEnd, NULL));
+  PetscCall(HylcOptionsReal("-alpha_start", "Regularization schedule: alpha^ at iteration 0", "HylcMicroSetRegularization", p.alphaStart, &p.alphaStart, NULL));
+  PetscCall(HylcOptionsReal("-alpha_end", "Regularization schedule: alpha^ from iteration alpha_its on", "HylcMicroSetRegularization", p.alphaEnd, &p.alphaEnd, NULL));
   PetscCall(PetscOptionsInt("-alpha_its", "Regularization schedule: iterations of the geometric decay", "HylcMicroSetRegularization", p.alphaIts, &p.alphaIts, NULL));
   PetscCall(PetscOptionsInt("-alpha_retries", "Retries with alpha x 10 when the Newton matrix is indefinite", "HylcMicroSetRegularization", p.maxRetries, &p.maxRetries, NULL));
   PetscCall(PetscStrncpy(sched, HylcMicroAlphaSchedules[p.alphaSched], sizeof(sched)));
   PetscCall(PetscOptionsString("-alpha_schedule", "Regularization schedule of alpha^: adaptive (trust-region-like: down after good steps, up after poor or rejected ones; the default), paper (the paper's decay over alpha_its iterations) or hybrid (paper until ||M g||_inf <= alpha_switch x its initial value, then adaptive)", "HylcMicroSetRegularizationSchedule", sched, sched, sizeof(sched), &schedSet));
-  PetscCall(PetscOptionsReal("-alpha_factor", "Adaptive regularization: alpha^ / factor after a good step, x factor after a poor one", "HylcMicroSetRegularizationSchedule", p.alphaFact, &p.alphaFact, NULL));
-  PetscCall(PetscOptionsReal("-alpha_min", "Adaptive regularization: smallest alpha^", "HylcMicroSetRegularizationSchedule", p.alphaMin, &p.alphaMin, NULL));
-  PetscCall(PetscOptionsReal("-alpha_max", "Adaptive regularization: largest alpha^", "HylcMicroSetRegularizationSchedule", p.alphaMax, &p.alphaMax, NULL));
-  PetscCall(PetscOptionsReal("-alpha_switch", "Hybrid regularization: adaptive once ||M g||_inf <= alpha_switch x its value at the first iteration", "HylcMicroSetRegularizationSwitch", p.alphaSwitch, &p.alphaSwitch, NULL));
+  PetscCall(HylcOptionsReal("-alpha_factor", "Adaptive regularization: alpha^ / factor after a good step, x factor after a poor one", "HylcMicroSetRegularizationSchedule", p.alphaFact, &p.alphaFact, NULL));
+  PetscCall(HylcOptionsReal("-alpha_min", "Adaptive regularization: smallest alpha^", "HylcMicroSetRegularizationSchedule", p.alphaMin, &p.alphaMin, NULL));
+  PetscCall(HylcOptionsReal("-alpha_max", "Adaptive regularization: largest alpha^", "HylcMicroSetRegularizationSchedule", p.alphaMax, &p.alphaMax, NULL));
+  PetscCall(HylcOptionsReal("-alpha_switch", "Hybrid regularization: adaptive once ||M g||_inf <= alpha_switch x its value at the first iteration", "HylcMicroSetRegularizationSwitch", p.alphaSwitch, &p.alphaSwitch, NULL));
   PetscCall(PetscOptionsBool("-alpha_fallback", "Adaptive and hybrid regularization: a solve that does not converge is repeated from the same start with the paper schedule", "HylcMicroSetRegularizationFallback", p.alphaFallback, &p.alphaFallback, NULL));
-  PetscCall(PetscOptionsReal("-twist_scale", "Scale mu of the twist unknowns, 0 = 1/r", "HylcMicroSetTwistScale", p.twistScale, &p.twistScale, NULL));
-  PetscCall(PetscOptionsReal("-step_p0", "Step limit d_max = (p0 + p1 clamp(lambda_min(I),0,1)) r: p0", "HylcMicroSetStepLimit", p.stepP0, &p.stepP0, NULL));
-  PetscCall(PetscOptionsReal("-step_p1", "Step limit: p1", "HylcMicroSetStepLimit", p.stepP1, &p.stepP1, NULL));
-  PetscCall(PetscOptionsReal("-step_clearance", "Step limit also at most this fraction (< 1/2) of the smallest distance between yarn centerlines that may touch, so that no step crosses two yarns; 0 = off", "HylcMicroSetStepClearance", p.stepClear, &p.stepClear, NULL));
-  PetscCall(PetscOptionsReal("-ls_factor", "Backtracking factor of the line search", "HylcMicroSetLineSearch", p.lsFactor, &p.lsFactor, NULL));
+  PetscCall(HylcOptionsReal("-twist_scale", "Scale mu of the twist unknowns, 0 = 1/r", "HylcMicroSetTwistScale", p.twistScale, &p.twistScale, NULL));
+  PetscCall(HylcOptionsReal("-step_p0", "Step limit d_max = (p0 + p1 clamp(lambda_min(I),0,1)) r: p0", "HylcMicroSetStepLimit", p.stepP0, &p.stepP0, NULL));
+  PetscCall(HylcOptionsReal("-step_p1", "Step limit: p1", "HylcMicroSetStepLimit", p.stepP1, &p.stepP1, NULL));
+  PetscCall(HylcOptionsReal("-step_clearance", "Step limit also at most this fraction (< 1/2) of the smallest distance between yarn centerlines that may touch, so that no step crosses two yarns; 0 = off", "HylcMicroSetStepClearance", p.stepClear, &p.stepClear, NULL));
+  PetscCall(HylcOptionsReal("-ls_factor", "Backtracking factor of the line search", "HylcMicroSetLineSearch", p.lsFactor, &p.lsFactor, NULL));
   PetscCall(PetscOptionsInt("-ls_max", "Line-search trials per iteration", "HylcMicroSetLineSearch", p.lsMax, &p.lsMax, NULL));
   PetscCall(PetscOptionsInt("-max_stalls", "Consecutive line searches without decrease before the solve stops, status stalled", "HylcMicroSetLineSearch", p.maxStalls, &p.maxStalls, NULL));
-  PetscCall(PetscOptionsReal("-rtol", "Convergence: projected gradient |z| < rtol |z0|", "HylcMicroSetTolerances", p.rtol, &p.rtol, NULL));
-  PetscCall(PetscOptionsReal("-atol", "Convergence also when |z| < atol k_s (k_s = Es pi r^2, a force): for tiles already at rest", "HylcMicroSetTolerances", p.atol, &p.atol, NULL));
-  PetscCall(PetscOptionsReal("-ctol", "Convergence: constraint residual |A y - dL| < ctol r", "HylcMicroSetTolerances", p.ctol, &p.ctol, NULL));
-  PetscCall(PetscOptionsReal("-max_time", "Wall-time cap per solve (s); status time_cap", "HylcMicroSetTolerances", p.maxTime, &p.maxTime, NULL));
+  PetscCall(HylcOptionsReal("-rtol", "Convergence: projected gradient |z| < rtol |z0|", "HylcMicroSetTolerances", p.rtol, &p.rtol, NULL));
+  PetscCall(HylcOptionsReal("-atol", "Convergence also when |z| < atol k_s (k_s = Es pi r^2, a force): for tiles already at rest", "HylcMicroSetTolerances", p.atol, &p.atol, NULL));
+  PetscCall(HylcOptionsReal("-ctol", "Convergence: constraint residual |A y - dL| < ctol r", "HylcMicroSetTolerances", p.ctol, &p.ctol, NULL));
+  PetscCall(HylcOptionsReal("-max_time", "Wall-time cap per solve (s); status time_cap", "HylcMicroSetTolerances", p.maxTime, &p.maxTime, NULL));
   PetscCall(PetscOptionsBool("-factor_indefinite", "Accept the factorization of an indefinite Newton matrix if the step descends with positive curvature; false: alpha x 10 at any negative eigenvalue", "HylcMicroSetIndefinite", p.indefinite, &p.indefinite, NULL));
   PetscCall(PetscOptionsBool("-saddle_test", "Second-order test of converged states: count the negative eigenvalues of the Hessian on the constraints' tangent space (implied by -micro_saddle_escapes > 0)", "HylcMicroSetSaddleEscape", p.saddleTest, &p.saddleTest, NULL));
   PetscCall(PetscOptionsInt("-saddle_escapes", "Second-order test: escapes from saddle points (negative curvature on the constraints' tangent space) along negative curvature, per solve", "HylcMicroSetSaddleEscape", p.saddleMax, &p.saddleMax, NULL));
-  PetscCall(PetscOptionsReal("-saddle_tol", "Second-order test: curvature below -saddle_tol x max|diag(M H M)| is negative", "HylcMicroSetSaddleEscape", p.saddleTol, &p.saddleTol, NULL));
+  PetscCall(HylcOptionsReal("-saddle_tol", "Second-order test: curvature below -saddle_tol x max|diag(M H M)| is negative", "HylcMicroSetSaddleEscape", p.saddleTol, &p.saddleTol, NULL));
   PetscCall(PetscOptionsName("-view", "Print the solver at set-up", "HylcMicroView", &flg));
   PetscOptionsEnd();
   if (schedSet) { /* checked after PetscOptionsEnd(), which must run */

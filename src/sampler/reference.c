@@ -1,4 +1,5 @@
 /* The reference state of Algorithm C1 (include/hylc/reference.h). */
+#include <hylc/options.h>
 #include <hylc/reference.h>
 
 const char *const        HylcReferenceModes[] = {"auto", "compute", "none", "HylcReferenceMode", "HYLC_REFERENCE_", NULL};
@@ -28,13 +29,13 @@ PetscErrorCode HylcReferenceParamsSetFromOptions(MPI_Comm comm, HylcReferencePar
 
   PetscFunctionBegin;
   PetscOptionsBegin(comm, NULL, "Reference state (Algorithm C1)", "HylcReferenceState");
-  PetscCall(PetscOptionsReal("-reference_etol", "Stress-free relaxation: stop when the energy is below this (J)", "HylcReferenceStateCompute", p->etol, &p->etol, NULL));
+  PetscCall(HylcOptionsReal("-reference_etol", "Stress-free relaxation: stop when the energy is below this (J)", "HylcReferenceStateCompute", p->etol, &p->etol, NULL));
   PetscCall(PetscOptionsInt("-reference_max_rounds", "Stress-free relaxation: at most this many reset-and-relax rounds", "HylcReferenceStateCompute", p->maxRounds, &p->maxRounds, NULL));
   PetscCall(PetscOptionsEnum("-reference_kind", "Tension factors: knit (rest lengths x 0.9, curvatures x 0.8) or woven (curvatures x 0.9); auto: knit if every yarn runs along x", "HylcReferenceStateCompute", Kinds, kind, &kind, NULL));
   PetscCall(PetscOptionsBool("-reference_tension", "Apply the tension factors", "HylcReferenceStateCompute", p->tension, &p->tension, NULL));
   PetscCall(PetscOptionsBool("-reference_minimum", "Find the in-plane minimum of the energy over the periods", "HylcReferenceStateCompute", p->minimum, &p->minimum, NULL));
-  PetscCall(PetscOptionsRealArray("-reference_bounds", "Bounds lo,hi of sx and sy in the in-plane minimum", "HylcReferenceStateCompute", b, &nb, &set));
-  PetscCall(PetscOptionsReal("-reference_xtol", "In-plane minimum: Nelder-Mead simplex size tolerance (strain)", "HylcReferenceStateCompute", p->xtol, &p->xtol, NULL));
+  PetscCall(HylcOptionsRealArray("-reference_bounds", "Bounds lo,hi of sx and sy in the in-plane minimum", "HylcReferenceStateCompute", b, &nb, &set));
+  PetscCall(HylcOptionsReal("-reference_xtol", "In-plane minimum: Nelder-Mead simplex size tolerance (strain)", "HylcReferenceStateCompute", p->xtol, &p->xtol, NULL));
   PetscCall(PetscOptionsInt("-reference_max_evals", "In-plane minimum: at most this many solves", "HylcReferenceStateCompute", p->maxEvals, &p->maxEvals, NULL));
   PetscOptionsEnd();
   PetscCheck(!set || (nb == 2 && b[0] < 0 && b[1] > 0 && b[0] > -1), comm, PETSC_ERR_USER_INPUT, "-reference_bounds needs lo,hi with -1 < lo < 0 < hi");

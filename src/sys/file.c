@@ -106,31 +106,6 @@ PetscErrorCode HylcFileCheckOutput(MPI_Comm comm, const char path[], const char 
 }
 
 /*@C
-  HylcFileCheckDistinct - Refuses an output path that names the same file as an input (same device and
-  inode, so links and different spellings are caught). An output that does not exist yet is distinct.
-  Not collective.
-
-  Input Parameters:
-+ comm   - communicator the error is raised on
-. out    - the output path
-. outopt - the option that named the output
-. in     - the input path (NULL or empty: nothing to check)
-- inopt  - the option that named the input
-
-  Level: developer
-@*/
-PetscErrorCode HylcFileCheckDistinct(MPI_Comm comm, const char out[], const char outopt[], const char in[], const char inopt[])
-{
-  struct stat so, si;
-
-  PetscFunctionBegin;
-  if (!out || !out[0] || !in || !in[0]) PetscFunctionReturn(PETSC_SUCCESS);
-  if (stat(out, &so) != 0 || stat(in, &si) != 0) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCheck(!(so.st_dev == si.st_dev && so.st_ino == si.st_ino), comm, PETSC_ERR_USER_INPUT, "Output %s (%s) is the input %s (%s): refusing to overwrite an input", out, outopt ? outopt : "output", in, inopt ? inopt : "input");
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/*@C
   HylcFileOpenTemp - Opens a new temporary file beside path (same directory, unique name), to be
   renamed onto path by HylcFileCommitTemp() once completely written, or removed by HylcFileAbortTemp().
   A crash or a full disk never leaves a partial file at path. Not collective.
