@@ -174,8 +174,8 @@ PetscErrorCode HylcCalibrateReadFileTarget_Private(const char path[], HylcCalibT
   else
     ierr = ReadText(path, kind, &R);
   if (!ierr) {
-    *nrows = R.n + *nskipped;
-    ierr   = SelectRows(path, &R, radius, stride, maxSamples, S, nskipped);
+    *nrows       = R.n + *nskipped;
+    ierr         = SelectRows(path, &R, radius, stride, maxSamples, S, nskipped);
     S->continued = R.continued;
   }
   for (PetscInt i = 0; !ierr && P && i < S->n; i++) {

@@ -24,6 +24,8 @@ static PetscErrorCode FamilyDefaults(HylcFit fit, HylcFitFamily family)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+const char *const HylcFitKnotLayouts[] = {"paper", "refined", "HylcFitKnotLayout", "HYLC_FIT_KNOTS_", NULL};
+
 /*@C
   HylcFitCreate - Creates a fit with the constants of method-spec §9.1 (family woven). Not collective.
 @*/
@@ -48,6 +50,10 @@ PetscErrorCode HylcFitCreate(MPI_Comm comm, HylcFit *out)
   fit->flatTol         = 1e-8;
   fit->endSlope        = 1e-8;
   fit->nk1             = 11;
+  fit->knots           = HYLC_FIT_KNOTS_REFINED;
+  fit->refine          = 3;
+  fit->kernelSpacing   = 1.6;
+  fit->kernelMin       = 6;
   fit->factor1         = 0.95;
   fit->factor2         = 0.9;
   fit->kStretch[0]     = 2;
@@ -213,7 +219,15 @@ PetscErrorCode HylcFitSetFromOptions(HylcFit fit)
   PetscCall(HylcOptionsReal("-fit_mls_grow", "Where the MLS has too few samples in its kernel (singular), enlarge the kernel by this factor until it has (with a warning); <= 1: error", "HylcFitSetFromOptions", fit->mlsGrow, &fit->mlsGrow, NULL));
   PetscCall(PetscOptionsBool("-fit_symmetrize_sa", "Symmetrize the MLS in sa: g(u) = (g(u) + g(-u)) / 2 in symlog space", "HylcFitSetFromOptions", fit->symmetrize, &fit->symmetrize, NULL));
   PetscCall(HylcOptionsReal("-fit_fd_eps", "Width of the central differences for the Hermite slopes (points at +-half of it), as a fraction of the smallest knot spacing", "HylcFitSetFromOptions", fit->fdEps, &fit->fdEps, NULL));
-  PetscCall(PetscOptionsInt("-fit_knots1d", "Knots of a 1D term", "HylcFitSetFromOptions", fit->nk1, &fit->nk1, NULL));
+  {
+    PetscEnum layout = (PetscEnum)fit->knots;
+    PetscCall(PetscOptionsEnum("-fit_knots", "1D knot layout: refined (the paper's, with -fit_knots_refine more knots towards 0 whose MLS kernels follow the knot spacing: resolves small strains) or paper (the authors' uniform layout; implied by -fit_compat authors)", "HylcFitSetFromOptions", HylcFitKnotLayouts, layout, &layout, &fit->knotsSet));
+    fit->knots = (HylcFitKnotLayout)layout;
+  }
+  PetscCall(PetscOptionsInt("-fit_knots_refine", "Refined knots: knots added at h/2, h/4, ... of the first interval on each side of 0", "HylcFitSetFromOptions", fit->refine, &fit->refine, NULL));
+  PetscCall(HylcOptionsReal("-fit_knots_kernel_spacing", "Refined knots: MLS kernel radius of an added knot as a multiple of its distance from 0 (at most -fit_mls_kernel of the span)", "HylcFitSetFromOptions", fit->kernelSpacing, &fit->kernelSpacing, NULL));
+  PetscCall(PetscOptionsInt("-fit_knots_kernel_samples", "Refined knots: the MLS kernel of an added knot is widened until it holds this many samples", "HylcFitSetFromOptions", fit->kernelMin, &fit->kernelMin, NULL));
+  PetscCall(PetscOptionsInt("-fit_knots1d", "Knots of a 1D term in the paper's layout (refined: before the refinement)", "HylcFitSetFromOptions", fit->nk1, &fit->nk1, NULL));
   PetscCall(HylcOptionsReal("-fit_knots1d_factor", "1D knots span factor x [min, max] of the data (then shifted so that 0 is a knot)", "HylcFitSetFromOptions", fit->factor1, &fit->factor1, NULL));
   PetscCall(HylcOptionsReal("-fit_knots2d_factor", "2D knots span factor x [min, 0] and [0, max] of the data", "HylcFitSetFromOptions", fit->factor2, &fit->factor2, NULL));
   PetscCall(KnotPairOption(PetscOptionsObject, fit, "-fit_knots2d_stretch", "2D knots of an sx or sy axis left,right of 0 (0 counted in both)", fit->kStretch));
@@ -233,7 +247,11 @@ PetscErrorCode HylcFitSetFromOptions(HylcFit fit)
   PetscCall(PetscOptionsString("-fit_terms", "Terms to fit: all, or a comma list of sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11", "HylcFitSetFromOptions", terms, terms, sizeof(terms), NULL));
   PetscOptionsEnd();
   fit->compat = (HylcFitCompat)compat;
-  fit->rule   = (HylcMonotoneRule)rule;
+  PetscCheck(!(fit->compat == HYLC_FIT_COMPAT_AUTHORS && fit->knotsSet && fit->knots != HYLC_FIT_KNOTS_PAPER), comm, PETSC_ERR_USER_INPUT, "-fit_compat authors reproduces the authors' fits, whose knots are the paper's layout: drop -fit_knots %s", HylcFitKnotLayouts[fit->knots]);
+  if (fit->compat == HYLC_FIT_COMPAT_AUTHORS) fit->knots = HYLC_FIT_KNOTS_PAPER;
+  PetscCheck(fit->refine >= 0 && fit->refine <= 20, comm, PETSC_ERR_USER_INPUT, "-fit_knots_refine %" PetscInt_FMT " must be in 0..20", fit->refine);
+  PetscCheck(fit->kernelSpacing > 0 && fit->kernelMin >= 3, comm, PETSC_ERR_USER_INPUT, "-fit_knots_kernel_spacing must be > 0 and -fit_knots_kernel_samples >= 3");
+  fit->rule = (HylcMonotoneRule)rule;
   PetscCheck(fit->reg >= 0, comm, PETSC_ERR_USER_INPUT, "-fit_reg %g must be >= 0", (double)fit->reg);
   PetscCheck(fit->kernel > 0 && fit->kernel <= 1, comm, PETSC_ERR_USER_INPUT, "-fit_mls_kernel %g must be in (0, 1]", (double)fit->kernel);
   PetscCheck(fit->truncation > 0, comm, PETSC_ERR_USER_INPUT, "-fit_mls_truncation %g must be > 0", (double)fit->truncation);
@@ -498,6 +516,10 @@ PetscErrorCode HylcFitView(HylcFit fit, PetscViewer viewer)
   PetscCall(PetscViewerASCIIPushTab(viewer));
   PetscCall(Line(viewer, "input: %s\n", fit->source[0] ? fit->source : (fit->input[0] ? fit->input : "(none)")));
   PetscCall(Line(viewer, "reg %g%s, compat %s, MLS kernel %g of the span (sigma = kernel/%g), FD width %g of the knot spacing\n", (double)fit->reg, fit->quasiconvex ? "" : " (marching off)", HylcFitCompats[fit->compat], (double)fit->kernel, (double)fit->truncation, (double)fit->fdEps));
+  if (fit->knots == HYLC_FIT_KNOTS_REFINED)
+    PetscCall(Line(viewer, "1D knots: the paper's, refined towards 0 by %" PetscInt_FMT " more on each side (h/2 ... h/%d), their MLS kernels %g x the distance from 0, at least %" PetscInt_FMT " samples, at most the paper's\n", fit->refine, 1 << (int)fit->refine, (double)fit->kernelSpacing, fit->kernelMin));
+  else
+    PetscCall(Line(viewer, "1D knots: the paper's uniform layout\n"));
   PetscCall(Line(viewer, "knots: 1D %" PetscInt_FMT " x %g; 2D factor %g (bending pairs %g), stretch %" PetscInt_FMT "+%" PetscInt_FMT ", poisson %" PetscInt_FMT "+%" PetscInt_FMT ", symmetric %" PetscInt_FMT "+%" PetscInt_FMT ", bending pairs %" PetscInt_FMT "+%" PetscInt_FMT " / %" PetscInt_FMT "+%" PetscInt_FMT "\n", fit->nk1, (double)fit->factor1, (double)fit->factor2,
                  (double)fit->factor2bend, fit->kStretch[0], fit->kStretch[1], fit->kPoisson[0], fit->kPoisson[1], fit->kSym[0], fit->kSym[1], fit->kBendStretch[0], fit->kBendStretch[1], fit->kBendSym[0], fit->kBendSym[1]));
   if (fit->setupcalled) {
