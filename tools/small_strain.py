@@ -13,7 +13,9 @@ For each paper pattern (config/PATTERN.yaml, the pattern from ../shared/refdata 
     dPsi/dsy vanish), next to the same derivative at sx = 5 % for scale;
   - the linear stiffness: the diagonal of the Hessian of Psi at 0 from the tile (second differences over
     the same h) beside the tables' (hylc-eval -derivatives; one-sided where a table has a knot at 0).
-Prints a Markdown report. hylc-solve runs on N processes at a time (default 2). Needs the programs built.
+Prints a Markdown report. hylc-solve runs on N processes at a time (default 2). --tiles DIR takes the tiles
+from DIR/PATTERN.pyp instead (e.g. the relaxed reference states of hylc-sample -sampler_reference relax
+-reference_output). Needs the programs built.
 """
 import argparse
 import json
@@ -43,10 +45,13 @@ def strain(name, v):
     return z
 
 
+PATTERNS = os.path.join(REF, "patterns", "hylc2020")
+
+
 def solve(pattern, z):
     """Psi of the tile's equilibrium at z (cold, the config's settings); None if it did not converge."""
     cmd = [os.path.join(BIN, "hylc-solve"), "-options_file", os.path.join(ROOT, "config", pattern + ".yaml"),
-           "-pattern_file", os.path.join(REF, "patterns", "hylc2020", pattern + ".pyp"),
+           "-pattern_file", os.path.join(PATTERNS, pattern + ".pyp"),
            "-strain", ",".join("%.17g" % x for x in z)]
     out = subprocess.run(cmd, capture_output=True, text=True, cwd=ROOT)
     psi, status = None, None
@@ -87,7 +92,11 @@ def main():
     ap.add_argument("patterns", nargs="*", default=list(TABLE))
     ap.add_argument("--ours", help="directory with our fitted tables, PATTERN.json")
     ap.add_argument("--np", type=int, default=2)
+    ap.add_argument("--tiles", help="directory with the tiles, PATTERN.pyp (default: the paper's; e.g. reference states written by hylc-sample -sampler_reference relax -reference_output)")
     a = ap.parse_args()
+    global PATTERNS
+    if a.tiles:
+        PATTERNS = a.tiles
     for p in a.patterns:
         if p not in TABLE:
             raise SystemExit("small_strain: unknown pattern %s (one of %s)" % (p, ", ".join(TABLE)))

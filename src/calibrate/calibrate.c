@@ -310,15 +310,19 @@ PetscErrorCode HylcCalibrateSetUp(HylcCalibrate C)
   PetscCall(PetscMalloc2(C->m * HYLC_CALIB_NRECORD, &C->rec0, C->m * HYLC_CALIB_NRECORD, &C->rec1));
   /* the reference state: a generated pattern's depends on the parameters; it is computed once, with the
      initial values, and kept fixed (docs/calibrate.md) */
-  PetscCall(HylcPatternGetType(C->pat, &type));
-  PetscCall(PetscStrcmp(type, HYLCPATTERNFILE, &isfile));
-  if (C->refmode == HYLC_REFERENCE_COMPUTE || (C->refmode == HYLC_REFERENCE_AUTO && !isfile)) {
+  {
     HylcPattern ref;
-    PetscCall(PetscPrintf(comm, "[calibrate] reference state of the %s pattern with the initial parameters (kept fixed)\n", C->patLabel));
-    PetscCall(HylcReferenceStateCompute(C->pat, &C->model, &C->refpar, C->rank ? NULL : PETSC_VIEWER_STDOUT_SELF, &ref));
-    PetscCall(HylcPatternDestroy(&C->pat));
-    C->pat         = ref;
-    C->refComputed = PETSC_TRUE;
+    PetscBool   asks;
+    PetscCall(HylcPatternGetType(C->pat, &type));
+    PetscCall(PetscStrcmp(type, HYLCPATTERNFILE, &isfile));
+    asks = (PetscBool)(C->refmode == HYLC_REFERENCE_COMPUTE || C->refmode == HYLC_REFERENCE_RELAX || (C->refmode == HYLC_REFERENCE_AUTO && !isfile));
+    if (asks) PetscCall(PetscPrintf(comm, "[calibrate] reference state (%s) of the %s pattern with the initial parameters (kept fixed)\n", HylcReferenceModes[C->refmode], C->patLabel));
+    PetscCall(HylcReferenceStateForMode(C->pat, C->refmode, &C->model, &C->refpar, C->rank ? NULL : PETSC_VIEWER_STDOUT_SELF, &ref));
+    if (ref) {
+      PetscCall(HylcPatternDestroy(&C->pat));
+      C->pat         = ref;
+      C->refComputed = PETSC_TRUE;
+    }
   }
   if (C->refout[0]) PetscCall(HylcPatternWrite(C->pat, C->refout));
   C->setupcalled = PETSC_TRUE;

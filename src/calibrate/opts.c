@@ -389,7 +389,7 @@ PetscErrorCode HylcCalibrateSetTermWeight(HylcCalibrate C, const char term[], Pe
 
   Input Parameters:
 + C      - the calibration
-. mode   - HYLC_REFERENCE_AUTO (for a generated pattern), HYLC_REFERENCE_COMPUTE or HYLC_REFERENCE_NONE
+. mode   - HYLC_REFERENCE_AUTO (for a generated pattern), HYLC_REFERENCE_COMPUTE, HYLC_REFERENCE_NONE or HYLC_REFERENCE_RELAX (the in-plane minimum of the pattern as given)
 - output - .pyp file for the reference state (NULL or empty: none)
 
   Level: intermediate
@@ -398,7 +398,7 @@ PetscErrorCode HylcCalibrateSetReference(HylcCalibrate C, HylcReferenceMode mode
 {
   PetscFunctionBegin;
   PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
-  PetscCheck(mode >= HYLC_REFERENCE_AUTO && mode <= HYLC_REFERENCE_NONE, PetscObjectComm((PetscObject)C), PETSC_ERR_ARG_OUTOFRANGE, "Unknown reference mode %d", (int)mode);
+  PetscCheck(mode >= HYLC_REFERENCE_AUTO && mode <= HYLC_REFERENCE_RELAX, PetscObjectComm((PetscObject)C), PETSC_ERR_ARG_OUTOFRANGE, "Unknown reference mode %d", (int)mode);
   C->refmode = mode;
   PetscCall(PetscStrncpy(C->refout, output ? output : "", sizeof(C->refout)));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -539,7 +539,7 @@ PetscErrorCode HylcCalibrateSetFromOptions(HylcCalibrate C)
   PetscCall(HylcOptionsReal("-calibrate_ftol", "Stop when an accepted step decreases the objective by less than this fraction", "HylcCalibrateSetTolerances", ftol, &ftol, NULL));
   PetscCall(HylcOptionsReal("-calibrate_fatol", "Stop when the objective is below this", "HylcCalibrateSetTolerances", fatol, &fatol, NULL));
   PetscCall(HylcOptionsReal("-calibrate_flat_tol", "A direction of the log parameters along which the normalised residuals change by less than this per unit (a singular value of the Jacobian) is flat: its parameter is held and reported", "HylcCalibrateSetTolerances", flatTol, &flatTol, NULL));
-  PetscCall(PetscOptionsEnum("-calibrate_reference", "Reference state: auto (compute it once with the initial parameters for a generated pattern; a .pyp file is its own), compute, none", "HylcCalibrateSetReference", HylcReferenceModes, rm, &rm, NULL));
+  PetscCall(PetscOptionsEnum("-calibrate_reference", "Reference state: auto (compute it once with the initial parameters for a generated pattern; a .pyp file is its own), compute, none, or relax (only the in-plane minimum over the periods of the pattern as given)", "HylcCalibrateSetReference", HylcReferenceModes, rm, &rm, NULL));
   PetscCall(PetscOptionsName("-calibrate_view", "Print the set-up at the end of HylcCalibrateSetUp()", "HylcCalibrateView", NULL));
   PetscOptionsEnd();
   PetscCall(HylcCalibrateSetPlanRanges(C, &ranges));

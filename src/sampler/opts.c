@@ -264,7 +264,7 @@ PetscErrorCode HylcSamplerSetExportRaw(HylcSampler S, const char dir[], PetscRea
 
   Input Parameters:
 + S      - the sampler
-. mode   - HYLC_REFERENCE_AUTO (for generated patterns), HYLC_REFERENCE_COMPUTE or HYLC_REFERENCE_NONE
+. mode   - HYLC_REFERENCE_AUTO (for generated patterns), HYLC_REFERENCE_COMPUTE, HYLC_REFERENCE_NONE or HYLC_REFERENCE_RELAX (the in-plane minimum of the pattern as given)
 - output - .pyp file for the reference state (NULL or empty: none)
 
   Level: intermediate
@@ -272,7 +272,7 @@ PetscErrorCode HylcSamplerSetExportRaw(HylcSampler S, const char dir[], PetscRea
 PetscErrorCode HylcSamplerSetReference(HylcSampler S, HylcReferenceMode mode, const char output[])
 {
   SAMPLER_SETTER_BEGIN;
-  PetscCheck(mode >= HYLC_REFERENCE_AUTO && mode <= HYLC_REFERENCE_NONE, PetscObjectComm((PetscObject)S), PETSC_ERR_ARG_OUTOFRANGE, "Unknown reference mode %d", (int)mode);
+  PetscCheck(mode >= HYLC_REFERENCE_AUTO && mode <= HYLC_REFERENCE_RELAX, PetscObjectComm((PetscObject)S), PETSC_ERR_ARG_OUTOFRANGE, "Unknown reference mode %d", (int)mode);
   S->refmode = mode;
   PetscCall(PetscStrncpy(S->refout, output ? output : "", sizeof(S->refout)));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -339,7 +339,7 @@ PetscErrorCode HylcSamplerSetFromOptions(HylcSampler S)
   PetscCall(HylcSamplerSetYarnModel(S, &model));
   PetscCall(HylcReferenceParamsSetFromOptions(comm, &S->refpar));
   PetscObjectOptionsBegin((PetscObject)S);
-  PetscCall(PetscOptionsEnum("-sampler_reference", "Reference state (Algorithm C1): auto (compute for generated patterns, not for files), compute, none", "HylcSamplerSetReference", HylcReferenceModes, mode, &mode, NULL));
+  PetscCall(PetscOptionsEnum("-sampler_reference", "Reference state (Algorithm C1): auto (compute for generated patterns, not for files), compute, none, or relax (only the in-plane minimum over the periods of the pattern as given: a stored tile made a minimum of the configured yarn)", "HylcSamplerSetReference", HylcReferenceModes, mode, &mode, NULL));
   PetscCall(PetscOptionsString("-reference_output", "Write the reference state as .pyp", "HylcSamplerSetReference", refout, refout, sizeof(refout), NULL));
   PetscCall(PetscOptionsString("-sampler_output", "HDF5 output file (the journal is <output>.journal)", "HylcSamplerSetOutput", output, output, sizeof(output), NULL));
   PetscCall(PetscOptionsBool("-sampler_resume", "Continue an interrupted run from its journal <output>.journal (refused, naming the differences, if any setting that changes results differs)", "HylcSamplerSetResume", resume, &resume, NULL));

@@ -94,11 +94,9 @@ static PetscErrorCode CheckOutputsAndLock(HylcSampler S)
 @*/
 PetscErrorCode HylcSamplerSetUp(HylcSampler S)
 {
-  MPI_Comm        comm = PetscObjectComm((PetscObject)S);
-  HylcPatternType type;
-  PetscBool       isfile;
-  int             code      = 0;
-  char            msg[2048] = "";
+  MPI_Comm comm      = PetscObjectComm((PetscObject)S);
+  int      code      = 0;
+  char     msg[2048] = "";
 
   PetscFunctionBegin;
   PetscValidHeaderSpecific(S, HYLC_SAMPLER_CLASSID, 1);
@@ -123,14 +121,14 @@ PetscErrorCode HylcSamplerSetUp(HylcSampler S)
     PetscCallMPI(MPI_Bcast(msg, (PetscMPIInt)sizeof(msg), MPI_CHAR, 0, comm));
     SETERRQ(comm, (PetscErrorCode)code, "%s", msg);
   }
-  PetscCall(HylcPatternGetType(S->pat, &type));
-  PetscCall(PetscStrcmp(type, HYLCPATTERNFILE, &isfile));
-  if (S->refmode == HYLC_REFERENCE_COMPUTE || (S->refmode == HYLC_REFERENCE_AUTO && !isfile)) {
+  {
     HylcPattern ref;
-    PetscCall(HylcReferenceStateCompute(S->pat, &S->model, &S->refpar, S->rank ? NULL : PETSC_VIEWER_STDOUT_SELF, &ref));
-    PetscCall(HylcPatternDestroy(&S->pat));
-    S->pat = ref;
-    PetscCall(HylcMicroSetPattern(S->micro, S->pat, &S->model));
+    PetscCall(HylcReferenceStateForMode(S->pat, S->refmode, &S->model, &S->refpar, S->rank ? NULL : PETSC_VIEWER_STDOUT_SELF, &ref));
+    if (ref) {
+      PetscCall(HylcPatternDestroy(&S->pat));
+      S->pat = ref;
+      PetscCall(HylcMicroSetPattern(S->micro, S->pat, &S->model));
+    }
   }
   if (S->refout[0]) PetscCall(HylcPatternWrite(S->pat, S->refout));
   S->setupcalled = PETSC_TRUE;
