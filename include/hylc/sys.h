@@ -72,5 +72,8 @@ PETSC_EXTERN PetscErrorCode HylcFileCheckDistinct(MPI_Comm, const char[], const 
 PETSC_EXTERN PetscErrorCode HylcFileOpenTemp(const char[], char[], size_t, FILE **);
 PETSC_EXTERN PetscErrorCode HylcFileCommitTemp(FILE **, const char[], const char[]);
 PETSC_EXTERN void           HylcFileAbortTemp(FILE **, const char[]);
+/* A uniaxial curve as CSV (docs/fabric-uniaxial.md): the header strain,T_N_per_m,lateral_strain_sa,lateral_strain_s2
+   and one row per point (s2: sy for a test along x, sx along y), written atomically. Not collective. */
+PETSC_EXTERN PetscErrorCode HylcWriteUniaxialCSV(const char[], PetscInt, const PetscReal[], const PetscReal[], const PetscReal[], const PetscReal[]);
 /* Refuses options nothing has read (before any work). Collective. */
 PETSC_EXTERN PetscErrorCode HylcCheckOptionsUsed(MPI_Comm);
