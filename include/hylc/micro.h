@@ -89,7 +89,8 @@ typedef struct {
   PetscReal             T;               /* dPsi/ds, the force per unit width of a strip (N/m) */
   PetscReal             grad[3];         /* dPsi/d(sx, sa, sy) (N/m) */
   PetscReal             step;            /* the Newton step to the minimizer predicted at the state returned, max norm (strain) */
-  PetscBool             converged;       /* step <= the tolerance and every solve of the state converged */
+  PetscBool             converged;       /* step <= xtol, or a line search failed with |lateral gradient| <= gtol |T| (gradientStop); the state's solve converged */
+  PetscBool             gradientStop;    /* converged by the gradient test after a failed line search (Psi's noise, nearby equilibria) */
   PetscInt              iterations;      /* accepted Newton steps in the lateral strains */
   PetscInt              solves;          /* microscale solves (HylcMicroSolve) */
   PetscInt              microIterations; /* their Newton iterations, summed */
@@ -130,5 +131,6 @@ PETSC_EXTERN PetscErrorCode HylcMicroGetEnergyHistory(HylcMicro, PetscInt *, con
 PETSC_EXTERN PetscErrorCode HylcMicroResultView(const HylcMicroResult *, PetscViewer);
 PETSC_EXTERN PetscErrorCode HylcMicroGetStrainGradient(HylcMicro, PetscReal[3]);
 PETSC_EXTERN PetscErrorCode HylcMicroSetUniaxial(HylcMicro, HylcMicroUniaxialGradient, PetscReal, PetscInt, PetscReal, PetscReal);
+PETSC_EXTERN PetscErrorCode HylcMicroSetUniaxialTolerances(HylcMicro, PetscReal, PetscReal);
 PETSC_EXTERN PetscErrorCode HylcMicroSolveUniaxial(HylcMicro, HylcUniaxialDirection, PetscReal, const PetscReal[2], const PetscReal[], HylcMicroUniaxialResult *, PetscReal[]);
 PETSC_EXTERN PetscErrorCode HylcMicroUniaxialResultView(const HylcMicroUniaxialResult *, PetscViewer);

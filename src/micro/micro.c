@@ -43,6 +43,8 @@ static void ParamsDefault(HylcMicroParams *p)
   p->uniMaxIt      = 30;
   p->uniH          = 1e-4;
   p->uniMaxStep    = 0.05;
+  p->uniRtol       = 1e-8;
+  p->uniGtol       = 1e-4;
 }
 
 /*@C

@@ -404,6 +404,43 @@ PetscErrorCode HylcMicroSetUniaxial(HylcMicro M, HylcMicroUniaxialGradient gradi
 }
 
 /*@C
+  HylcMicroSetUniaxialTolerances - Sets the accuracy of HylcMicroSolveUniaxial(): the relative tolerance of its
+  microscale solves (-micro_rtol while it runs; the lateral minimization needs gradients well below the
+  lateral stresses it drives to zero) and the gradient test that ends it when a line search finds no decrease
+  (Psi is then at its noise level: nearby equilibria of the tile differ by about 1e-7 relative). Not collective.
+
+  Input Parameters:
++ M    - the solver
+. rtol - -micro_rtol of the uniaxial solves (default 1e-8; PETSC_DEFAULT keeps the value)
+- gtol - converged after a failed line search if the lateral gradient is at most gtol |T| (default 1e-4)
+
+  Options Database Keys:
++ -micro_uniaxial_rtol <1e-8> - rtol
+- -micro_uniaxial_gtol <1e-4> - gtol
+
+  Level: intermediate
+
+.seealso: HylcMicroSolveUniaxial(), HylcMicroSetUniaxial(), HylcMicroSetTolerances()
+@*/
+PetscErrorCode HylcMicroSetUniaxialTolerances(HylcMicro M, PetscReal rtol, PetscReal gtol)
+{
+  const char *p;
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
+  p = HylcMicroPrefix_Private(M);
+  if (rtol != (PetscReal)PETSC_DEFAULT) {
+    PetscCheck(rtol > 0 && rtol < 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%suniaxial_rtol %g: must be in (0, 1)", p, (double)rtol);
+    M->par.uniRtol = rtol;
+  }
+  if (gtol != (PetscReal)PETSC_DEFAULT) {
+    PetscCheck(gtol >= 0 && gtol < 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%suniaxial_gtol %g: must be in [0, 1)", p, (double)gtol);
+    M->par.uniGtol = gtol;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
   HylcMicroSetFromOptions - Reads the options of the Newton solver (prefix -micro_ by default) and, as
   SLEPc's EPSSetFromOptions() calls STSetFromOptions(), those of its sub-objects, created on first use
   with their defaults: the periodic tile (HylcMicroGetPeriodic(): -periodic_*, -macro_*), the
@@ -482,6 +519,8 @@ PetscErrorCode HylcMicroSetFromOptions(HylcMicro M)
   PetscCall(PetscOptionsInt("-uniaxial_max_it", "Uniaxial state: Newton steps in the lateral strains", "HylcMicroSetUniaxial", p.uniMaxIt, &p.uniMaxIt, NULL));
   PetscCall(PetscOptionsReal("-uniaxial_fd_step", "Uniaxial state: difference step of the lateral Hessian and of the fd gradient (strain, dimensionless)", "HylcMicroSetUniaxial", p.uniH, &p.uniH, NULL));
   PetscCall(PetscOptionsReal("-uniaxial_max_step", "Uniaxial state: largest change of a lateral strain per Newton step (strain, dimensionless)", "HylcMicroSetUniaxial", p.uniMaxStep, &p.uniMaxStep, NULL));
+  PetscCall(PetscOptionsReal("-uniaxial_rtol", "Uniaxial state: -micro_rtol of its microscale solves (relative, dimensionless)", "HylcMicroSetUniaxialTolerances", p.uniRtol, &p.uniRtol, NULL));
+  PetscCall(PetscOptionsReal("-uniaxial_gtol", "Uniaxial state: converged after a line search without decrease if |lateral gradient| <= gtol |T| (dimensionless)", "HylcMicroSetUniaxialTolerances", p.uniGtol, &p.uniGtol, NULL));
   PetscCall(PetscOptionsName("-view", "Print the solver at set-up", "HylcMicroView", &flg));
   PetscOptionsEnd();
   if (schedSet) { /* checked after PetscOptionsEnd(), which must run */
@@ -505,6 +544,7 @@ PetscErrorCode HylcMicroSetFromOptions(HylcMicro M)
   PetscCall(HylcMicroSetIndefinite(M, p.indefinite));
   PetscCall(HylcMicroSetSaddleEscape(M, p.saddleTest, p.saddleMax, p.saddleTol));
   PetscCall(HylcMicroSetUniaxial(M, (HylcMicroUniaxialGradient)p.uniGrad, p.uniXtol, p.uniMaxIt, p.uniH, p.uniMaxStep));
+  PetscCall(HylcMicroSetUniaxialTolerances(M, p.uniRtol, p.uniGtol));
   /* the sub-objects, created with their defaults first so that the options override them */
   PetscCall(HylcMicroGetPeriodic(M, &P));
   PetscCall(HylcPeriodicSetFromOptions(P));
@@ -565,7 +605,7 @@ PetscErrorCode HylcMicroView(HylcMicro M, PetscViewer viewer)
   else
     snprintf(buf, sizeof(buf), "second-order test: off (converged states may be saddle points)\n");
   PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
-  snprintf(buf, sizeof(buf), "uniaxial state: gradient %s, Newton in the lateral strains to a predicted step <= %g, at most %d steps of <= %g, difference step %g\n", HylcMicroUniaxialGradients[p->uniGrad], (double)p->uniXtol, (int)p->uniMaxIt, (double)p->uniMaxStep, (double)p->uniH);
+  snprintf(buf, sizeof(buf), "uniaxial state: gradient %s, Newton in the lateral strains to a predicted step <= %g (or |lateral gradient| <= %g |T| when a line search fails), at most %d steps of <= %g, difference step %g, solves with rtol %g\n", HylcMicroUniaxialGradients[p->uniGrad], (double)p->uniXtol, (double)p->uniGtol, (int)p->uniMaxIt, (double)p->uniMaxStep, (double)p->uniH, (double)p->uniRtol);
   PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
   if (!M->pat)
     PetscCall(PetscViewerASCIIPrintf(viewer, "no pattern set\n"));

@@ -189,41 +189,8 @@ static void NewtonStep2(const PetscReal H[4], const PetscReal g[2], PetscReal d[
   d[1] = -(g1 / l1 * v1[1] + g2 / l2 * v2[1]);
 }
 
-/*@C
-  HylcMicroSolveUniaxial - The homogeneous uniaxial tension state of the tile: the stretch s prescribed along
-  the material x axis (sx = s) or y axis (sy = s), bending zero, and Psi minimized over the two free strains
-  (sa and the other stretch), so that the lateral stresses vanish (free contraction). Returns T = dPsi/ds,
-  the force per unit width of a strip in its homogeneous central zone (N/m), and the lateral strains. Not
-  collective.
-
-  Input Parameters:
-+ M    - the solver, with a pattern
-. dir  - HYLC_UNIAXIAL_X or HYLC_UNIAXIAL_Y
-. s    - the stretch, in [0, 1)
-. lat0 - the starting lateral strains (sa, sy) for x, (sa, sx) for y (NULL: 0, 0)
-- u0   - the local fluctuation of an earlier equilibrium to continue from (HylcMicroGetFluctuation(), or the
-         u of an earlier call; NULL: cold)
-
-  Output Parameters:
-+ res - the result (res->converged says whether the minimization converged)
-- u   - the local fluctuation of the state returned (the tile's size; may be NULL), to continue from
-
-  Notes:
-  Each Psi is a microscale equilibrium (HylcMicroSolve(), continued from the last accepted point, cold again
-  if that does not converge). The minimization is a Newton method in the two lateral strains p: the
-  gradient by HylcMicroGetStrainGradient() (or central differences, HylcMicroSetUniaxial()), the Hessian by
-  forward differences of the lateral gradient (two more solves per step, continued from the point), made
-  positive definite, steps of at most maxStep per strain and a backtracking line search on Psi (Armijo,
-  1e-4). It stops when the Newton step predicted at the current point is at most xtol in each strain. A
-  point whose solve does not converge is rejected by the line search; if the first one fails, or every
-  trial of a line search, the result is returned with res->converged false. Options:
-  HylcMicroSetUniaxial().
-
-  Level: intermediate
-
-.seealso: HylcMicroSetUniaxial(), HylcMicroGetStrainGradient(), HylcMicroUniaxialResultView()
-@*/
-PetscErrorCode HylcMicroSolveUniaxial(HylcMicro M, HylcUniaxialDirection dir, PetscReal s, const PetscReal lat0[2], const PetscReal u0[], HylcMicroUniaxialResult *res, PetscReal u[])
+/* the work of HylcMicroSolveUniaxial() */
+static PetscErrorCode SolveUniaxial(HylcMicro M, HylcUniaxialDirection dir, PetscReal s, const PetscReal lat0[2], const PetscReal u0[], HylcMicroUniaxialResult *res, PetscReal u[])
 {
   const HylcMicroParams *par = &M->par;
   UniPoint               cur, trial, pert;
@@ -292,7 +259,11 @@ PetscErrorCode HylcMicroSolveUniaxial(HylcMicro M, HylcUniaxialDirection dir, Pe
       PetscCall(Evaluate(M, dir, s, cur.u, &trial, res));
       accepted = (PetscBool)(trial.ok && trial.psi <= cur.psi + 1e-4 * t * PetscMin(slope, 0));
     }
-    if (!accepted) break;
+    if (!accepted) { /* no decrease: Psi at its noise level? */
+      const PetscReal T = PetscAbsReal(cur.g[dir == HYLC_UNIAXIAL_X ? 0 : 2]);
+      if (PetscMax(PetscAbsReal(gl[0]), PetscAbsReal(gl[1])) <= par->uniGtol * T) res->converged = res->gradientStop = PETSC_TRUE;
+      break;
+    }
     CopyPoint(M->ny, &trial, &cur);
     res->iterations++;
   }
@@ -307,6 +278,57 @@ PetscErrorCode HylcMicroSolveUniaxial(HylcMicro M, HylcUniaxialDirection dir, Pe
   PetscCall(PetscFree3(cur.u, trial.u, pert.u));
   PetscCall(PetscTime(&t1));
   res->time = t1 - t0;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcMicroSolveUniaxial - The homogeneous uniaxial tension state of the tile: the stretch s prescribed along
+  the material x axis (sx = s) or y axis (sy = s), bending zero, and Psi minimized over the two free strains
+  (sa and the other stretch), so that the lateral stresses vanish (free contraction). Returns T = dPsi/ds,
+  the force per unit width of a strip in its homogeneous central zone (N/m), and the lateral strains. Not
+  collective.
+
+  Input Parameters:
++ M    - the solver, with a pattern
+. dir  - HYLC_UNIAXIAL_X or HYLC_UNIAXIAL_Y
+. s    - the stretch, in [0, 1)
+. lat0 - the starting lateral strains (sa, sy) for x, (sa, sx) for y (NULL: 0, 0)
+- u0   - the local fluctuation of an earlier equilibrium to continue from (HylcMicroGetFluctuation(), or the
+         u of an earlier call; NULL: cold)
+
+  Output Parameters:
++ res - the result (res->converged says whether the minimization converged)
+- u   - the local fluctuation of the state returned (the tile's size; may be NULL), to continue from
+
+  Notes:
+  Each Psi is a microscale equilibrium (HylcMicroSolve(), continued from the last accepted point, cold again
+  if that does not converge). The minimization is a Newton method in the two lateral strains p: the
+  gradient by HylcMicroGetStrainGradient() (or central differences, HylcMicroSetUniaxial()), the Hessian by
+  forward differences of the lateral gradient (two more solves per step, continued from the point), made
+  positive definite, steps of at most maxStep per strain and a backtracking line search on Psi (Armijo,
+  1e-4). It stops when the Newton step predicted at the current point is at most xtol in each strain, or
+  when a line search finds no decrease while the lateral gradient is at most gtol |T| (Psi at its noise
+  level; res->gradientStop). A point whose solve does not converge is rejected by the line search; if the
+  first one fails, or every trial of a line search at a larger gradient, the result is returned with
+  res->converged false. The solves use the relative tolerance of HylcMicroSetUniaxialTolerances() (1e-8)
+  instead of -micro_rtol. Options: HylcMicroSetUniaxial(), HylcMicroSetUniaxialTolerances().
+
+  Level: intermediate
+
+.seealso: HylcMicroSetUniaxial(), HylcMicroGetStrainGradient(), HylcMicroUniaxialResultView()
+@*/
+PetscErrorCode HylcMicroSolveUniaxial(HylcMicro M, HylcUniaxialDirection dir, PetscReal s, const PetscReal lat0[2], const PetscReal u0[], HylcMicroUniaxialResult *res, PetscReal u[])
+{
+  PetscReal      rtol;
+  PetscErrorCode ierr;
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
+  rtol        = M->par.rtol;
+  M->par.rtol = M->par.uniRtol;
+  ierr        = SolveUniaxial(M, dir, s, lat0, u0, res, u);
+  M->par.rtol = rtol; /* restored on an error too */
+  PetscCall(ierr);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -330,7 +352,7 @@ PetscErrorCode HylcMicroUniaxialResultView(const HylcMicroUniaxialResult *r, Pet
   PetscFunctionBegin;
   LateralOf(r->dir, r->grad, gl);
   /* C formatting: PETSc's printf appends '.' to integral %g values */
-  snprintf(buf, sizeof(buf), "uniaxial %s: s %.6g T %.9e N/m sa %.6e %s %.6e psi %.10e lateral gradient %.2e %.2e N/m step %.1e %s; %d Newton steps, %d solves (%d not converged), %d micro iterations, %.2f s\n", HylcUniaxialDirections[r->dir], (double)r->s, (double)r->T, (double)r->lateral[0], r->dir == HYLC_UNIAXIAL_X ? "sy" : "sx", (double)r->lateral[1], (double)r->psi, (double)gl[0], (double)gl[1], (double)r->step, r->converged ? "converged" : "NOT CONVERGED", (int)r->iterations, (int)r->solves, (int)r->failedSolves, (int)r->microIterations, r->time);
+  snprintf(buf, sizeof(buf), "uniaxial %s: s %.6g T %.9e N/m sa %.6e %s %.6e psi %.10e lateral gradient %.2e %.2e N/m step %.1e %s; %d Newton steps, %d solves (%d not converged), %d micro iterations, %.2f s\n", HylcUniaxialDirections[r->dir], (double)r->s, (double)r->T, (double)r->lateral[0], r->dir == HYLC_UNIAXIAL_X ? "sy" : "sx", (double)r->lateral[1], (double)r->psi, (double)gl[0], (double)gl[1], (double)r->step, r->converged ? (r->gradientStop ? "converged (gradient test)" : "converged") : "NOT CONVERGED", (int)r->iterations, (int)r->solves, (int)r->failedSolves, (int)r->microIterations, r->time);
   PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -31,6 +31,8 @@ typedef struct {
   PetscInt  uniMaxIt;           /* uniaxial: Newton steps */
   PetscReal uniH;               /* uniaxial: difference step (strain) of the lateral Hessian (and of the fd gradient) */
   PetscReal uniMaxStep;         /* uniaxial: largest change of a lateral strain per Newton step */
+  PetscReal uniRtol;            /* uniaxial: -micro_rtol of its solves (the gradients' accuracy) */
+  PetscReal uniGtol;            /* uniaxial: converged also when a line search fails with |lateral gradient| <= gtol |T| */
 } HylcMicroParams;
 
 struct _HylcMicroOps {
