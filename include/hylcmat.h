@@ -230,8 +230,11 @@ typedef struct {
 
 /* The uniaxial state at the stretch s along dir (0 x, 1 y): Newton's method in the two lateral strains
    with the table's exact Hessian (made positive definite where it is not), steps of at most 0.1 and a
-   backtracking line search on Psi, from guess (the lateral strains, e.g. the state of a nearby s; NULL:
-   0, 0), to a Newton step below 1e-12. Errors (with a message in err): HYLCMAT_ERR_ARG for a NULL
+   backtracking line search on Psi, to a Newton step below 1e-11, then probes around the point (a lower
+   one restarts Newton: tables have stationary lines on the axes). It starts from guess (the lateral
+   strains, e.g. the state of a nearby s along a loading path: the local minimum reached from it), or
+   with guess NULL from the lowest point of the grid |sa|, |s2| <= 0.5 in steps of 0.02 (tables can
+   have several lateral minima; our stockinette at s = 0.2 along x: sy = +0.003 and -0.119). Errors (with a message in err): HYLCMAT_ERR_ARG for a NULL
    argument, dir not 0 or 1, s outside [0, 1) or outside the table's range of the stretch's 1D term (its
    knots times its strain scale), or a bad guess; HYLCMAT_ERR_NOCONV if the minimization does not
    converge in 200 iterations (st holds the last iterate); an evaluation's error. No allocation;

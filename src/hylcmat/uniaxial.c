@@ -70,9 +70,9 @@ int hylcmat_uniaxial(const hylcmat *m, int dir, double s, const double guess[2],
   hm_err       E       = {err, errlen};
   const char  *name[2] = {"x (sx = s)", "y (sy = s)"};
   double       p[2], psi, gl[2], H[4], T, d[2] = {0, 0};
-  const double xtol = 1e-12, maxStep = 0.1;
+  const double xtol = 1e-11, maxStep = 0.1;
   const int    maxIt = 200, maxRestarts = 20;
-  int          r, it = 0, converged = 0;
+  int          r, it = 0, converged = 0, nblind = 0;
 
   if (err && errlen) err[0] = 0;
   HM_CHECK(m && st, &E, HYLCMAT_ERR_ARG, "hylcmat_uniaxial: NULL table or result");
@@ -90,6 +90,17 @@ int hylcmat_uniaxial(const hylcmat *m, int dir, double s, const double guess[2],
   p[0] = guess ? guess[0] : 0;
   p[1] = guess ? guess[1] : 0;
   HM_CHECK(isfinite(p[0]) && isfinite(p[1]) && fabs(p[0]) < 0.99 && p[1] > -0.99, &E, HYLCMAT_ERR_ARG, "uniaxial starting lateral strains (%g, %g): need finite values, |sa| < 0.99 and a stretch > -0.99", p[0], p[1]);
+  if (!guess) { /* no guess: start from the lowest point of a grid (tables can have several lateral minima) */
+    double best = INFINITY;
+    for (int i = -25; i <= 25; i++)
+      for (int j = -25; j <= 25; j++) {
+        const double q[2] = {0.02 * i, 0.02 * j};
+        double       qpsi, qg[2];
+        r = Eval(m, dir, s, q, &qpsi, qg, NULL, NULL);
+        if (r) return hm_fail(&E, r, "uniaxial state along %s at s = %g: the evaluation failed at the lateral strains (%g, %g) (%s)", name[dir], s, q[0], q[1], hylcmat_strerror(r));
+        if (qpsi < best) best = qpsi, p[0] = q[0], p[1] = q[1];
+      }
+  }
   r = Eval(m, dir, s, p, &psi, gl, H, &T);
   if (r) return hm_fail(&E, r, "uniaxial state along %s at s = %g: the evaluation failed (%s)", name[dir], s, hylcmat_strerror(r));
   for (int restart = 0;; restart++) {
@@ -102,16 +113,23 @@ int hylcmat_uniaxial(const hylcmat *m, int dir, double s, const double guess[2],
       }
       const double nd = fmax(fabs(d[0]), fabs(d[1]));
       if (nd > maxStep) d[0] *= maxStep / nd, d[1] *= maxStep / nd;
-      /* backtracking on Psi (Armijo 1e-4) */
+      /* backtracking on Psi (Armijo 1e-4); a decrease below Psi's rounding cannot be seen: then the full
+         Newton step (at most 20 in a row) */
       const double slope    = gl[0] * d[0] + gl[1] * d[1];
+      const int    blind    = -slope <= 1e-13 * fabs(psi);
       int          accepted = 0;
+      if (blind && ++nblind > 20) {
+        converged = nd <= 1e-8;
+        break;
+      }
+      if (!blind) nblind = 0;
       for (double t = 1; t > 1e-10 && !accepted; t *= 0.5) {
         const double q[2] = {p[0] + t * d[0], p[1] + t * d[1]};
         double       qpsi, qg[2], qH[4], qT;
-        if (!(fabs(q[0]) < 0.99 && q[1] > -0.99)) continue;
+        if (!(fabs(q[0]) < 0.99 && q[1] > -0.99) || (q[0] == p[0] && q[1] == p[1])) continue;
         r = Eval(m, dir, s, q, &qpsi, qg, qH, &qT);
         if (r) return hm_fail(&E, r, "uniaxial state along %s at s = %g: the evaluation failed at the lateral strains (%g, %g) (%s)", name[dir], s, q[0], q[1], hylcmat_strerror(r));
-        if (qpsi <= psi + 1e-4 * t * fmin(slope, 0)) {
+        if (blind || qpsi <= psi + 1e-4 * t * fmin(slope, 0)) {
           accepted = 1;
           p[0] = q[0], p[1] = q[1];
           psi = qpsi, T = qT;

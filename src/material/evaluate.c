@@ -33,7 +33,8 @@ PetscErrorCode HylcMaterialEvaluate(HylcMaterial m, const PetscReal s[6], PetscR
 + m     - the material
 . dir   - 0 (x; HYLC_UNIAXIAL_X of include/hylc/micro.h) or 1 (y)
 . s     - the stretch, in [0, 1) and within the table's range of the stretch's 1D term
-- guess - the starting lateral strains ((sa, sy) for x, (sa, sx) for y), e.g. those of a nearby s; NULL: 0, 0
+- guess - the starting lateral strains ((sa, sy) for x, (sa, sx) for y), e.g. those of a nearby s on a loading
+          path; NULL: the lowest point of a grid of the lateral strains (hylcmat_uniaxial())
 
   Output Parameters:
 + T         - dPsi/ds (N/m; may be NULL)
