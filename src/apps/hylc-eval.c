@@ -290,7 +290,7 @@ static PetscErrorCode Eval(HylcMaterial mat)
   PetscCall(PetscOptionsString("-eval_input", "Batch mode: evaluate at the strains of this file (text: 6 numbers per line; HDF5: dataset /strain or /samples/strain, N x 6)", "HylcMaterialEvaluate", bin, bin, sizeof(bin), &hasIn));
   PetscCall(PetscOptionsString("-eval_output", "Batch mode: write psi (and with -derivatives grad, hessian) per strain here: text, or HDF5 if it ends in .h5", "HylcMaterialEvaluate", bout, bout, sizeof(bout), &hasOut));
   PetscCall(PetscOptionsString("-eval_uniaxial", "Uniaxial tension mode: x or y, the material axis of the prescribed stretch; Psi minimized over the other two in-plane strains, bending zero (docs/fabric-uniaxial.md)", "HylcMaterialUniaxial", udir, udir, sizeof(udir), &hasUni));
-  PetscCall(PetscOptionsRealArray("-eval_uniaxial_strains", "Uniaxial mode: the stretches s in [0, 1) (strain, 0 at rest; at most 256), in this order: the first from the lowest point of a grid of the lateral strains, each other from the lateral strains of the one before", "HylcMaterialUniaxial", ustrain, &nu, &hasUStrains));
+  PetscCall(PetscOptionsRealArray("-eval_uniaxial_strains", "Uniaxial mode: the stretches s in [0, 1) (strain, 0 at rest; default 0.05,0.1,0.2; at most 256), in this order: the first from the lowest point of a grid of the lateral strains, each other from the lateral strains of the one before", "HylcMaterialUniaxial", ustrain, &nu, &hasUStrains));
   PetscCall(PetscOptionsString("-eval_uniaxial_csv", "Uniaxial mode: write strain,T_N_per_m,lateral_strain_sa,lateral_strain_s2 (T in N/m) to this CSV file", "HylcWriteUniaxialCSV", ucsv, ucsv, sizeof(ucsv), &hasUCsv));
   PetscOptionsEnd();
   if (!hasUStrains) nu = 3;

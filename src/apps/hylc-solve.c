@@ -81,7 +81,7 @@ static PetscErrorCode Solve(HylcPattern pat, HylcMicro micro)
   nt = 2;
   PetscCall(PetscOptionsIntArray("-solve_vtk_tiles", "Tile copies nx,ny in the VTK file", "hylc-solve", tiles, &nt, NULL));
   PetscCall(PetscOptionsString("-solve_uniaxial", "Uniaxial tension mode: x or y, the material axis of the prescribed stretch; the other two in-plane strains free, bending zero (docs/fabric-uniaxial.md)", "HylcMicroSolveUniaxial", udir, udir, sizeof(udir), &uni));
-  PetscCall(PetscOptionsRealArray("-solve_uniaxial_strains", "Uniaxial mode: the stretches s in [0, 1) (strain, 0 at rest), solved in this order, each continued from the one before (at most 64)", "HylcMicroSolveUniaxial", ustrain, &nu, &hasStrains));
+  PetscCall(PetscOptionsRealArray("-solve_uniaxial_strains", "Uniaxial mode: the stretches s in [0, 1) (strain, 0 at rest; default 0.05,0.1,0.2), solved in this order, each continued from the one before (at most 64)", "HylcMicroSolveUniaxial", ustrain, &nu, &hasStrains));
   PetscCall(PetscOptionsString("-solve_uniaxial_csv", "Uniaxial mode: write strain,T_N_per_m,lateral_strain_sa,lateral_strain_s2 (T in N/m) to this CSV file", "HylcWriteUniaxialCSV", csv, csv, sizeof(csv), &hasCsv));
   PetscOptionsEnd();
   if (!hasStrains) nu = 3;

@@ -461,6 +461,8 @@ PetscErrorCode HylcMicroSetUniaxialTolerances(HylcMicro M, PetscReal rtol, Petsc
 . -micro_rtol, -micro_atol, -micro_ctol, -micro_max_time - HylcMicroSetTolerances()
 . -micro_factor_indefinite - HylcMicroSetIndefinite()
 . -micro_saddle_test, -micro_saddle_escapes, -micro_saddle_tol - HylcMicroSetSaddleEscape()
+. -micro_uniaxial_gradient, -micro_uniaxial_xtol, -micro_uniaxial_max_it, -micro_uniaxial_fd_step, -micro_uniaxial_max_step - HylcMicroSetUniaxial()
+. -micro_uniaxial_rtol, -micro_uniaxial_gtol - HylcMicroSetUniaxialTolerances()
 . -micro_view - HylcMicroView() at set-up
 . -periodic_*, -macro_* - HylcPeriodicSetFromOptions() of HylcMicroGetPeriodic()
 . -micro_factor_pc_* - PCSetFromOptions() of HylcMicroGetFactorPC()
