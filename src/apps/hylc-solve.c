@@ -15,30 +15,36 @@ static PetscErrorCode SolveUniaxial(HylcMicro micro, HylcUniaxialDirection dir, 
 {
   HylcPeriodic P;
   PetscInt     ny, nfail = 0;
+  PetscBool    haveU = PETSC_FALSE;
   PetscReal   *u, *unext, *T, *sa, *s2, lat[2] = {0, 0};
+  PetscBool   *conv;
 
   PetscFunctionBegin;
   PetscCall(HylcMicroSetUp(micro));
   PetscCall(HylcMicroGetPeriodic(micro, &P));
   PetscCall(HylcPeriodicGetSizes(P, &ny, NULL, NULL, NULL));
-  PetscCall(PetscMalloc5(ny, &u, ny, &unext, n, &T, n, &sa, n, &s2));
+  PetscCall(PetscMalloc6(ny, &u, ny, &unext, n, &T, n, &sa, n, &s2, n, &conv));
   for (PetscInt i = 0; i < n; i++) {
     HylcMicroUniaxialResult r;
-    if (i >= 2 && s[i - 1] != s[i - 2]) { /* linear predictor of the lateral strains */
+    if (i >= 2 && s[i - 1] != s[i - 2] && conv[i - 1] && conv[i - 2]) { /* linear predictor of the lateral strains */
       const PetscReal f = (s[i] - s[i - 1]) / (s[i - 1] - s[i - 2]);
       lat[0]            = sa[i - 1] + f * (sa[i - 1] - sa[i - 2]);
       lat[1]            = s2[i - 1] + f * (s2[i - 1] - s2[i - 2]);
       if (!(PetscAbsReal(lat[0]) < 0.9 && lat[1] > -0.9)) lat[0] = sa[i - 1], lat[1] = s2[i - 1];
     }
-    PetscCall(HylcMicroSolveUniaxial(micro, dir, s[i], lat, i ? u : NULL, &r, unext));
+    PetscCall(HylcMicroSolveUniaxial(micro, dir, s[i], lat, haveU ? u : NULL, &r, unext));
     PetscCall(HylcMicroUniaxialResultView(&r, PETSC_VIEWER_STDOUT_SELF));
-    T[i]   = r.T;
-    sa[i]  = r.lateral[0];
-    s2[i]  = r.lateral[1];
-    lat[0] = sa[i];
-    lat[1] = s2[i];
-    PetscCall(PetscArraycpy(u, unext, ny));
-    if (!r.converged) nfail++;
+    conv[i] = r.converged;
+    T[i]    = r.T;
+    sa[i]   = r.lateral[0];
+    s2[i]   = r.lateral[1];
+    if (r.converged) { /* the next stretch continues from the last converged state */
+      lat[0] = sa[i];
+      lat[1] = s2[i];
+      PetscCall(PetscArraycpy(u, unext, ny));
+      haveU = PETSC_TRUE;
+    } else
+      nfail++;
   }
   for (PetscInt i = 0; i < n; i++)
     if (s[i] > 0) {
@@ -52,7 +58,7 @@ static PetscErrorCode SolveUniaxial(HylcMicro micro, HylcUniaxialDirection dir, 
     PetscCall(HylcWriteUniaxialCSV(csv, n, s, T, sa, s2));
     PetscCall(PetscPrintf(PETSC_COMM_SELF, "wrote %s\n", csv));
   }
-  PetscCall(PetscFree5(u, unext, T, sa, s2));
+  PetscCall(PetscFree6(u, unext, T, sa, s2, conv));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -124,8 +124,12 @@ static PetscErrorCode Evaluate(HylcMicro M, HylcUniaxialDirection dir, PetscReal
   PetscCall(SolveAt(M, pt->z, u, res, &r));
   pt->psi = r.psi;
   pt->ok  = (PetscBool)(r.status == HYLC_MICRO_CONVERGED);
-  PetscCall(HylcMicroGetState(M, M->yw));
-  PetscCall(HylcMicroGetFluctuation(M, M->yw, pt->u));
+  if (r.status == HYLC_MICRO_NONFINITE)
+    PetscCall(PetscArrayzero(pt->u, M->ny)); /* no state to continue from: cold */
+  else {
+    PetscCall(HylcMicroGetState(M, M->yw));
+    PetscCall(HylcMicroGetFluctuation(M, M->yw, pt->u));
+  }
   if (!pt->ok) PetscFunctionReturn(PETSC_SUCCESS);
   if (M->par.uniGrad == HYLC_MICRO_UNIAXIAL_ENVELOPE)
     PetscCall(HylcMicroGetStrainGradient(M, pt->g));
