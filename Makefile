@@ -32,13 +32,15 @@ else
   SAN_FLAGS :=
 endif
 OBJ     := $(BUILD)/obj
-PKGS    := petsc hdf5-openmpi
+# nettle: SHA-256 of the run identities (src/sys/sha256.c); yaml-0.1: libyaml, the check of YAML options
+# files (src/sys/yamlcheck.c). Every program loads both through PETSc and HDF5 already.
+PKGS    := petsc hdf5-openmpi nettle yaml-0.1
 NOCHECK_GOALS := deps test test-asan coverage check-format demo clean format help distclean bench-run fuzz fuzz-build fuzz-deps hylcmat uninstall
 PETSC_OK := $(shell pkg-config --exists $(PKGS) 2>/dev/null && echo yes)
 
 ifeq ($(filter $(NOCHECK_GOALS),$(MAKECMDGOALS)),)
   ifneq ($(PETSC_OK),yes)
-    $(error PETSc/HDF5 development files were not found by pkg-config ($(PKGS)). Install them with 'make deps' (runs config/install-deps.sh), or run 'make test' / 'make demo', which install them first)
+    $(error PETSc/HDF5/nettle/libyaml development files were not found by pkg-config ($(PKGS)). Install them with 'make deps' (runs config/install-deps.sh), or run 'make test' / 'make demo', which install them first)
   endif
 endif
 

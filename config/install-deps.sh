@@ -4,7 +4,7 @@
 #   HYLC_NO_INSTALL=1  only check, never install
 #   HYLC_DEPS_EXTRA="pkg ..."  also these (make fuzz: clang-14 libclang-rt-14-dev)
 set -eu
-pkgs=(petsc-dev libopenmpi-dev openmpi-bin libhdf5-openmpi-dev libmetis-dev hdf5-tools pkg-config make gcc valgrind lcov python3-h5py python3-matplotlib python3-scipy ${HYLC_DEPS_EXTRA:-})
+pkgs=(petsc-dev libopenmpi-dev openmpi-bin libhdf5-openmpi-dev libmetis-dev nettle-dev libyaml-dev hdf5-tools pkg-config make gcc valgrind lcov python3-h5py python3-matplotlib python3-scipy ${HYLC_DEPS_EXTRA:-})
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")

@@ -11,7 +11,7 @@
 # Prints a Markdown table (and counts terms <= 5 % and constants within 3 %); exits 0 with a message
 # when the paper's reference data (../shared/refdata or $HYLC_REFDATA) is absent.  The column "sa sym."
 # (not counted) is the sa term with the model's dPsi symmetrised, (dPsi(sa) + dPsi(-sa)) / 2, as the
-# paper's fit symmetrised its data in sa before building the tables (method-spec 9), so a table has no
+# paper's fit symmetrised its data in sa before building the tables (docs/method.md §9), so a table has no
 # odd part in sa to compare with.
 set -u
 cd "$(dirname "$0")/.."

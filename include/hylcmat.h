@@ -124,7 +124,7 @@ int hylcmat_term2d_get(const hylcmat *m, int k0, int k1, hylcmat_term2d *t);
    5 across (2,0) (docs/library.md has a figure). nbmask: bit k set if vertex 3+k exists; a missing
    neighbour (boundary edge) drops that edge's bending term, its coordinates are not read and its
    gradient entries and Hessian rows and columns are 0.
-   Strains (method-spec section 10, the conventions of ARCSim-HYLC): F = [x1 - x0 | x2 - x0] Dm^-1 =
+   Strains (docs/method.md §10, the conventions of ARCSim-HYLC): F = [x1 - x0 | x2 - x0] Dm^-1 =
    [x_u | x_v]; sx = |x_u| - 1, sa = x_u.x_v / (|x_u| |x_v|), sy = |x_v| - 1;
    II = -2 A_def sum_k theta_k / l_k t_k t_k^T over the edges with a neighbour (A_def the deformed area,
    l_k the deformed edge length, t_k the material gradient of the barycentric coordinate of the vertex

@@ -91,6 +91,8 @@ PC
   for d in docs/*.md; do put 644 "$d" "$DOCDIR"; done
   if [ -d python/hylc ]; then
     for f in python/hylc/*.py; do put 644 "$f" "$DATADIR/hylc/python/hylc"; done
+    # pip install PREFIX/share/hylc/python: setup.py copies PREFIX/lib/libhylcmat.so into the package
+    for f in python/pyproject.toml python/setup.py python/README.md; do put 644 "$f" "$DATADIR/hylc/python"; done
   fi
   mkd "$(dirname "$MANIFEST")"
   sort -u "$tmpman" >"$man"

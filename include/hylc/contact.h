@@ -1,6 +1,6 @@
 #pragma once
 /* Yarn-yarn contact: element kernels for one pair of segments and a broadphase over many segments.
-   No PETSc objects (see docs/contact.md and method-spec section 4).
+   No PETSc objects (see docs/contact.md and docs/method.md §4).
 
    Conventions shared by the pair kernels:
    - A pair is segment a = (a0, a1) and segment b = (b0, b1); its 12 degrees of freedom are ordered
@@ -9,7 +9,7 @@
      symmetric.
    - The penalty is f(delta) = 1/delta^2 + delta^2 - 2 for delta < 1 and 0 otherwise, delta = dist/(2 r),
      r the yarn radius: the tubes touch exactly at dist = 2 r. f is C1 at delta = 1 (f'' jumps from 8 to 0).
-   - Every output (E, g, H) is multiplied by the fractional weight w (method-spec 5.2); w = 1 gives the
+   - Every output (E, g, H) is multiplied by the fractional weight w (docs/method.md §5.2); w = 1 gives the
      plain energy.
    - g and H may be NULL (not computed). When given they are overwritten (not accumulated); a rejected
      pair (segment distance >= 2 r) returns E = 0 and zero-filled g and H.
@@ -29,7 +29,7 @@ int HylcGaussLegendre01(int n, const double **nodes, const double **weights);
 /* Penalty f(delta) and its first two derivatives (delta > 0); zero for delta >= 1. */
 void HylcContactPenalty(double delta, double *f, double *df, double *d2f);
 
-/* Quadrature (Kaldor) contact energy of one segment pair, method-spec 4.1:
+/* Quadrature (Kaldor) contact energy of one segment pair, docs/method.md §4.1:
      E = w k_c la lb sum_g sum_h w_g w_h f(|p_g - q_h| / (2 r)),
      p_g = (1 - s_g) a0 + s_g a1,  q_h = (1 - s_h) b0 + s_h b1,
    with (s_g, w_g) the n-point Gauss-Legendre rule on [0, 1] for both segments.
@@ -42,7 +42,7 @@ void HylcContactPenalty(double delta, double *f, double *df, double *d2f);
    Returns E; g (12) and H (144) as described above, either may be NULL. */
 double HylcContactQuadrature(const double a0[3], const double a1[3], const double b0[3], const double b1[3], double la, double lb, double kc, double r, int n, double w, double g[12], double H[144]);
 
-/* Closest-point contact energy of one segment pair, method-spec 4.3:
+/* Closest-point contact energy of one segment pair, docs/method.md §4.3:
      E = w k_c la lb f(d / (2 r)),  d = min over s, t in [0,1] of |a0 + s (a1 - a0) - b0 - t (b1 - b0)|.
    The gradient follows from the envelope theorem, the Hessian is exact: the Schur complement of the
    distance minimisation over the parameters that are not clamped at 0 or 1.

@@ -1,5 +1,5 @@
 #pragma once
-/* HylcFit: the fitting pipeline of Algorithms C5-C7 (seeds §S3; method-spec §9 and §9.1) that turns
+/* HylcFit: the fitting pipeline of Algorithms C5-C7 (seeds §S3; docs/method.md §9 and §9.1) that turns
    microscale samples into the homogenized material model (the spline tables of (S26)).
 
    Input: the samples file of hylc-sample (HDF5, docs/output-format.md; rows with status 0) or the
@@ -20,7 +20,7 @@
 
 typedef struct _p_HylcFit *HylcFit;
 
-/* Pattern families with their own fitting constants (method-spec §9, §S3.4): WOVEN and KNIT share the
+/* Pattern families with their own fitting constants (docs/method.md §9, §S3.4): WOVEN and KNIT share the
    constants of every pattern but the stockinette; STOCKINETTE has reg 1e-2 and coarse 2D bending knots
    (factor 0.3, 2+4 and 3+3). The family is the object's type name. */
 typedef enum {

@@ -1,5 +1,5 @@
 #pragma once
-/* Macroscopic deformation of the tile (method-spec §1, supplementary §S1.1): the strain coordinates
+/* Macroscopic deformation of the tile (docs/method.md §1, supplementary §S1.1): the strain coordinates
    z = (sx, sa, sy, II00, II01, II11), the first fundamental form I, its upper-triangular factor
    A = sqrt(I) (A^T A = I), S = [A; 0], the normal derivatives N = [n_{i,alpha}] = -A^{-T} II (S12), the
    rotation field R(xi) (S10), and the micro-midsurface phi with grad phi = R S: an exact closed form

@@ -1,6 +1,6 @@
 #pragma once
 /* HylcMicro: the microscale equilibrium of a periodic yarn tile under a macroscopic strain (Algorithms
-   C2, C3; method-spec §6), a constrained, regularized Newton method on PETSc SNES:
+   C2, C3; docs/method.md §6), a constrained, regularized Newton method on PETSc SNES:
    - unknowns: the scaled reduced unknowns y^ = M^-1 y (M = 1 per position, mu per twist);
    - objective: the total energy E; residual: M g_y;
    - Jacobian: K = M H_y M + alpha I with alpha = alpha^_i ||M g_y||_inf (S22);

@@ -1,5 +1,5 @@
 #pragma once
-/* Shape-preserving kernels of the fit (seeds §S3, §S5; method-spec §9): quasiconvex marching (S28),
+/* Shape-preserving kernels of the fit (seeds §S3, §S5; docs/method.md §9): quasiconvex marching (S28),
    the Fritsch-Carlson monotone cubic, and the modified Carlson-Fritsch monotone bicubic (S36-S42).
    Plain C on plain arrays, in place; 2D arrays have nu*nv entries, node (i, j) at j*nu + i (u = first
    coordinate, index i; v = second, index j), as in include/hylc/spline.h.
@@ -16,7 +16,7 @@ typedef enum {
 } HylcMonotoneRule;
 PETSC_EXTERN const char *const HylcMonotoneRules[];
 
-/* Which variant of the two places where the authors' code departs from the paper (method-spec §9.1):
+/* Which variant of the two places where the authors' code departs from the paper (docs/method.md §9.1):
    PAPER: the S42 mixed-derivative clamps of both directions are applied, and in the 2D marching the
    slopes on the minimum's own row/column are not sign-clamped; AUTHORS: as their code (only the
    transposed S42 clamp reaches the output; mv <= -reg on the minimum's row). */

@@ -1,6 +1,6 @@
 #pragma once
 /* HylcPeriodic: a periodic yarn tile under a macroscopic strain z = (sx, sa, sy, II00, II01, II11), in the
-   reduced unknowns of the co-rotated periodic boundary conditions (method-spec §5, seeds S1.2, S2.1).
+   reduced unknowns of the co-rotated periodic boundary conditions (docs/method.md §5, seeds S1.2, S2.1).
 
    - The extended pattern: every stretch, bend and twist element touching an original vertex, with the
      ghost vertices it needs, plus copies of edges from the neighbouring tiles within a margin for contact;

@@ -1,5 +1,5 @@
 #pragma once
-/* The sampling plan of Algorithm C4 (method-spec §8), as pure functions on plain arrays.
+/* The sampling plan of Algorithm C4 (docs/method.md §8), as pure functions on plain arrays.
 
    Coordinates (index c): 0 = sx, 1 = sa, 2 = sy, 3 = II00, 4 = II11; in the 6-vector strain
    z = (sx, sa, sy, II00, II01, II11) they sit at positions 0, 1, 2, 3, 5 (II01 is never sampled).
@@ -44,7 +44,7 @@ int HylcPlanSample(const HylcPlan *, long k, double z[6], int *term);
    (the plan's sample indices, unit after unit); either may be NULL (to count). Returns the number of units
    (at most 1 + 10 + 18 n2), or -1 for an invalid plan. Depends only on the plan. */
 long HylcPlanUnits(const HylcPlan *, long start[], long order[]);
-/* the default ranges of method-spec §8 for a named pattern family: "woven" (basket, satin), "stockinette",
+/* the default ranges of docs/method.md §8 for a named pattern family: "woven" (basket, satin), "stockinette",
    "honeycomb", "rib"; II ranges scale with 1/r relative to r = 1 mm (scale = 1e-3 / r). Returns -1 for an
    unknown family. 2D ranges: stretch axes paired with sa or a bending [-0.1, 0.84 max], (sx, sy) both
    [0.74 min, max], sa in 2D +-0.8 max, bending in 2D +-0.8 max (+-0.72 max on the same axis). */

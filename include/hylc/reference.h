@@ -1,5 +1,5 @@
 #pragma once
-/* The reference state of Algorithm C1 (method-spec §7): a stress-free relaxation (rest values reset to the
+/* The reference state of Algorithm C1 (docs/method.md §7): a stress-free relaxation (rest values reset to the
    current geometry and relaxed until E < tol), tension (knits: rest lengths x 0.9, rest curvatures x 0.8;
    wovens: rest curvatures x 0.9), the in-plane minimum of the energy over the periods (sx, sy) by
    Nelder-Mead, and recentring. */

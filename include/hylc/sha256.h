@@ -1,19 +1,20 @@
 #pragma once
-/* SHA-256 (FIPS 180-4), plain C: the digest of a run's identity (the sampler's resume fingerprint,
-   docs/output-format.md). Written for hylc; checked against the published test vectors in
-   tests/unit/test_sha256.c. Not thread-safe per context; no global state. */
+/* SHA-256 (FIPS 180-4) of nettle (libnettle, Debian nettle-dev; every hylc program already loads it
+   through PETSc's and HDF5's dependencies): the digest of a run's identity (the sampler's resume
+   fingerprint, docs/output-format.md). These wrappers keep hylc's names and its hexadecimal form; the
+   digests are those of any SHA-256 (tests/unit/test_sha256.c checks the published FIPS 180 vectors,
+   tests/regression/sampler_identity.sh compares with Python's hashlib). Not thread-safe per context; no
+   global state, no allocation. */
 #include <stddef.h>
-#include <stdint.h>
+#include <nettle/sha2.h>
 
 typedef struct {
-  uint32_t      h[8];
-  uint64_t      nbytes; /* message length so far */
-  unsigned char buf[64];
-  size_t        nbuf;
+  struct sha256_ctx ctx;
 } HylcSha256;
 
 void HylcSha256Init(HylcSha256 *);
 void HylcSha256Update(HylcSha256 *, const void *, size_t);
+/* the 32-byte digest; the context is reset to HylcSha256Init's state */
 void HylcSha256Final(HylcSha256 *, unsigned char digest[32]);
 /* the digest of n bytes as 64 lower-case hexadecimal digits and a terminating NUL */
 void HylcSha256Hex(const void *, size_t, char hex[65]);

@@ -1,5 +1,5 @@
 #pragma once
-/* HylcYarnModel: the material and contact parameters of the yarns (method-spec §3.2, §4, §11).
+/* HylcYarnModel: the material and contact parameters of the yarns (docs/method.md §3.2, §4, §11).
    A plain struct with options; every value has a documented default (docs/method.md). */
 #include <hylc/sys.h>
 #include <hylc/rod.h>

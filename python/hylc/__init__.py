@@ -3,15 +3,16 @@ hylc's HDF5 files (through h5py).
 
     import hylc
     m = hylc.Material("stock1.json")            # or a hylc HDF5 material (model.h5)
-    psi, grad, hess = m.evaluate(strains)       # strains: (N, 6) -> (N,), (N, 6), (N, 6, 6)
+    psi, grad, hess = m.evaluate(strains)       # strains (..., 6) -> (...), (..., 6), (..., 6, 6)
     psi, grad = m.evaluate(strains, hessian=False)
     mesh = hylc.Mesh(triangles, rest=X)         # or uv=...: the shell element of Algorithm C8
     E, grad, H = mesh.evaluate(m, x)            # (), (nv, 3), scipy.sparse (3 nv x 3 nv)
 
 Strains are s = (sx, sa, sy, II00, II01, II11): stretches sx, sy (0 at rest), sa the cosine of the
 angle between the deformed material axes, II the second fundamental form in 1/m. Psi is in J/m^2
-(docs/library.md). The library is found through $HYLCMAT_LIB, then next to this package (a checkout's
-build/, an installed prefix's lib/), then the system's library path.
+(docs/library.md). The library is found through $HYLCMAT_LIB, then inside this package (the copy that
+`pip install ./python` builds, python/setup.py), then next to it (a checkout's build/, an installed
+prefix's lib/), then the system's library path; `hylc.library_path` says which one was loaded.
 """
 import ctypes
 import ctypes.util
@@ -19,7 +20,9 @@ import os
 
 import numpy as np
 
-__all__ = ["Material", "Mesh", "HylcError", "read_material_h5", "read_samples", "library_path"]
+from ._version import __version__
+
+__all__ = ["Material", "Mesh", "HylcError", "read_material_h5", "read_samples", "library_path", "__version__"]
 
 _HDF5_SIGNATURE = b"\x89HDF\r\n\x1a\n"
 TERMS_1D = ["sx", "sa", "sy", "II00", "II11"]
@@ -41,6 +44,7 @@ def _candidates():
     if env:
         yield env
     here = os.path.dirname(os.path.abspath(__file__))
+    yield os.path.join(here, "libhylcmat.so")                                # pip install ./python
     build = os.environ.get("BUILD", "build")
     yield os.path.join(here, "..", "..", build, "libhylcmat.so")          # a checkout: python/hylc
     yield os.path.join(here, "..", "..", "..", "..", "lib", "libhylcmat.so")  # PREFIX/share/hylc/python/hylc
@@ -115,6 +119,10 @@ _lib.hylcmat_mesh_hessian_csr.argtypes = [_vp, _vp, _vp]
 _lib.hylcmat_mesh_hessian_csr.restype = None
 _lib.hylcmat_mesh_hessian_coo.argtypes = [_vp, _vp, _vp]
 _lib.hylcmat_mesh_hessian_coo.restype = None
+for _f in ("hylcmat_term1d_get", "hylcmat_term2d_get"):
+    getattr(_lib, _f).restype = ctypes.c_int
+_lib.hylcmat_term1d_get.argtypes = [_vp, ctypes.c_int, _vp]
+_lib.hylcmat_term2d_get.argtypes = [_vp, ctypes.c_int, ctypes.c_int, _vp]
 PSD = 1  # HYLCMAT_SHELL_PSD
 
 
@@ -195,34 +203,40 @@ class Material:
 
     @property
     def constant(self):
+        """the constant C0 of the table (J/m^2): Psi = C0 + the sum of its terms"""
         return _lib.hylcmat_constant(self._h)
 
     @property
     def strain_scale(self):
+        """the 5 strain scales (sx, sa, sy, II00, II11) by which a strain is divided before the splines"""
         s = (ctypes.c_double * 5)()
         _lib.hylcmat_strain_scale(self._h, s)
         return np.array(s[:])
 
     def evaluate(self, strains, hessian=True, gradient=True):
-        """Psi (N,), and dPsi/ds (N, 6) and d2Psi/ds2 (N, 6, 6) at strains (N, 6) (or one strain (6,):
-        the results then have no leading axis). hessian=False: (psi, grad); gradient=False too: psi."""
-        s = np.ascontiguousarray(strains, dtype=np.float64)
-        single = s.ndim == 1
-        if single:
-            s = s.reshape(1, 6)
-        if s.ndim != 2 or s.shape[1] != 6:
-            raise ValueError("strains must have shape (N, 6) (sx, sa, sy, II00, II01, II11), got %s" % (np.shape(strains),))
-        n = s.shape[0]
+        """Psi and its derivatives at strains of any shape (..., 6) (sx, sa, sy, II00, II01, II11).
+
+        Returns psi (...) in J/m^2, dPsi/ds (..., 6) and d2Psi/ds2 (..., 6, 6): the leading axes of the
+        input are kept, so (N, 6) gives (N,), (N, 6), (N, 6, 6), a grid (nx, ny, 6) gives (nx, ny), ...,
+        and one strain (6,) gives a scalar psi, a (6,) gradient and a (6, 6) Hessian. hessian=False
+        returns (psi, grad); gradient=False as well returns psi alone. A strain outside the domain
+        (1 + sx > 0, 1 + sy > 0, |sa| < 1) raises HylcError; the GIL is released during the C call."""
+        s = np.asarray(strains, dtype=np.float64)
+        if s.ndim == 0 or s.shape[-1] != 6:
+            raise ValueError("strains must have shape (..., 6) (sx, sa, sy, II00, II01, II11), got %s" % (np.shape(strains),))
+        lead = s.shape[:-1]
+        flat = np.ascontiguousarray(s.reshape(-1, 6))
+        n = flat.shape[0]
         psi = np.empty(n)
         grad = np.empty((n, 6)) if (gradient or hessian) else None
         hess = np.empty((n, 6, 6)) if hessian else None
-        r = _lib.hylcmat_eval_batch(self._h, n, s.ctypes.data, psi.ctypes.data, grad.ctypes.data if grad is not None else None,
-                                    hess.ctypes.data if hess is not None else None)
-        _check(r)
-        if single:
-            psi = psi[0]
-            grad = grad[0] if grad is not None else None
-            hess = hess[0] if hess is not None else None
+        if n:
+            r = _lib.hylcmat_eval_batch(self._h, n, flat.ctypes.data, psi.ctypes.data, grad.ctypes.data if grad is not None else None,
+                                        hess.ctypes.data if hess is not None else None)
+            _check(r)
+        psi = psi[0] if lead == () else psi.reshape(lead)
+        grad = grad.reshape(lead + (6,)) if grad is not None else None
+        hess = hess.reshape(lead + (6, 6)) if hess is not None else None
         if hessian:
             return psi, grad, hess
         if gradient:
@@ -230,8 +244,21 @@ class Material:
         return psi
 
     def psi(self, strains):
-        """Psi only (N,)"""
+        """Psi alone (J/m^2) at strains (..., 6): an array of shape (...), a scalar for one strain (6,)."""
         return self.evaluate(strains, hessian=False, gradient=False)
+
+    def terms(self):
+        """The names of the table's terms, 1D first ("sx", ..., "II11"), then 2D ("sx-sa", ...), in the
+        order of the JSON tables; a term absent from the table is not listed."""
+        one = [TERMS_1D[k] for k in range(5) if _lib.hylcmat_term1d_get(self._h, k, None)]
+        two = [TERMS_2D[q] for q, (k0, k1) in enumerate(PAIRS) if _lib.hylcmat_term2d_get(self._h, k0, k1, None)]
+        return one + two
+
+    def __repr__(self):
+        t = self.terms()
+        n1 = sum(1 for x in t if "-" not in x)
+        return "<hylc.Material %r: density %.6g kg/m^2, C0 %.6g J/m^2, %d 1D + %d 2D terms, strain scale %s>" % (
+            self.path, self.density, self.constant, n1, len(t) - n1, np.array2string(self.strain_scale, separator=", "))
 
 
 class Mesh:
@@ -283,6 +310,9 @@ class Mesh:
         self.nt = _lib.hylcmat_mesh_nt(self._h)
         self.nnz = int(_lib.hylcmat_mesh_hessian_nnz(self._h))
         self._csr = None
+
+    def __repr__(self):
+        return "<hylc.Mesh: %d vertices, %d triangles, rest area %.6g m^2, %d Hessian nonzeros>" % (self.nv, self.nt, self.area, self.nnz)
 
     def __del__(self):
         h = getattr(self, "_h", None)

@@ -6,7 +6,7 @@
 
 const char *const HylcFitFamilies[] = {"woven", "knit", "stockinette", "HylcFitFamily", "HYLC_FIT_FAMILY_", NULL};
 
-/* the family's constants (method-spec §9, §S3.4): everything but the stockinette shares one set; the
+/* the family's constants (docs/method.md §9, §S3.4): everything but the stockinette shares one set; the
    family is the object's type name */
 static PetscErrorCode FamilyDefaults(HylcFit fit, HylcFitFamily family)
 {
@@ -27,7 +27,7 @@ static PetscErrorCode FamilyDefaults(HylcFit fit, HylcFitFamily family)
 const char *const HylcFitKnotLayouts[] = {"paper", "refined", "HylcFitKnotLayout", "HYLC_FIT_KNOTS_", NULL};
 
 /*@C
-  HylcFitCreate - Creates a fit with the constants of method-spec §9.1 (family woven). Not collective.
+  HylcFitCreate - Creates a fit with the constants of docs/method.md §9.1 (family woven). Not collective.
 @*/
 PetscErrorCode HylcFitCreate(MPI_Comm comm, HylcFit *out)
 {
@@ -179,7 +179,7 @@ static PetscErrorCode KnotPairOption(PetscOptionItems *PetscOptionsObject, HylcF
 . -fit_family <woven>              - woven, knit (the same constants) or stockinette (sets the next two groups)
 . -fit_reg <1e-3>                  - quasiconvex marching p^x_min (stockinette 1e-2)
 . -fit_knots2d_bend_factor, -fit_knots2d_bend_stretch, -fit_knots2d_bend_symmetric - 2D bending-pair knots
-. -fit_compat <paper>              - paper or authors (the two departures of method-spec §9.1)
+. -fit_compat <paper>              - paper or authors (the two departures of docs/method.md §9.1)
 . -fit_mls_kernel <0.15>, -fit_mls_truncation <3> - MLS kernel (fraction of span), kernel / sigma
 . -fit_mls_grow <1.5>             - kernel growth where the MLS is singular (<= 1: error)
 . -fit_fd_eps <0.1>                - FD width (points at +-half of it) as a fraction of the smallest knot spacing

@@ -1,5 +1,5 @@
 /* Plain C kernels of the fitting pipeline (include/hylc/fit.h): symlog, MLS, knots, boundary rules,
-   residualization and the zero-compression rule (method-spec §9, §9.1). */
+   residualization and the zero-compression rule (docs/method.md §9, §9.1). */
 #include <hylc/fit.h>
 #include <math.h>
 

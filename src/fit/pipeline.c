@@ -1,4 +1,4 @@
-/* HylcFitCompute: the fitting pipeline of Algorithms C5-C7 as the authors' code does it (method-spec
+/* HylcFitCompute: the fitting pipeline of Algorithms C5-C7 as the authors' code does it (docs/method.md
    §9.1); the shape-preserving steps are the kernels of include/hylc/monotone.h. */
 #include <hylc/private/fitimpl.h>
 

@@ -1,6 +1,6 @@
 /* The macroscale shell element (Algorithm C8): strains z of a triangle and its three edge neighbours,
    the energy A Psi(z), its exact gradient and Hessian by the chain rule (S43, S44), and the per-element
-   projection of the Hessian to positive semidefinite. Conventions: method-spec section 10 (those of
+   projection of the Hessian to positive semidefinite. Conventions: docs/method.md §10 (those of
    ARCSim-HYLC's compiled code), restated in include/hylcmat.h and docs/library.md.
 
    Variables. The in-plane strains depend on the material axes a = x_u, b = x_v (linear in x0, x1, x2:

@@ -1,6 +1,6 @@
 /* Pure kernels of the macroscopic deformation: strain coordinates, I, A = sqrt(I), S, N (S12), the
    rotation field R(xi) (S10) with robust sinc-type functions, and the closed-form midsurface for
-   singly curved II (method-spec §1.1-1.5, docs/macro.md). */
+   singly curved II (docs/method.md §1.1-1.5, docs/macro.md). */
 #include <hylc/macro.h>
 #include <math.h>
 

@@ -1,5 +1,5 @@
 /* HylcMidsurface: the micro-midsurface phi(xi) and normal n(xi) for a macroscopic strain, closed form
-   (flat or singly curved II) or Poisson solve (any II); positions x = phi + h n (method-spec §1.4, 1.5). */
+   (flat or singly curved II) or Poisson solve (any II); positions x = phi + h n (docs/method.md §1.4, 1.5). */
 #include <hylc/private/macroimpl.h>
 
 const char *const HylcMidsurfaceTypes[]   = {"auto", "closed", "poisson", "HylcMidsurfaceType", "HYLC_MIDSURFACE_", NULL};

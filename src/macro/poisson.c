@@ -1,4 +1,4 @@
-/* The Poisson midsurface (method-spec §1.4, (16), (17)): on a DMDA node grid, solve
+/* The Poisson midsurface (docs/method.md §1.4, (16), (17)): on a DMDA node grid, solve
    lap phi_k = div (R S)_k with the pure Neumann condition N . grad phi = N . (R S), for k = 1..3, with one
    symmetric positive semi-definite matrix (5-point Laplacian, ghost-node Neumann rows), CG with the
    constant null space removed, then shift so that the interpolated phi(0) = 0. */

@@ -216,7 +216,7 @@ PetscErrorCode HylcPatternSetFromOptions(HylcPattern p)
   sizeset = flg;
   PetscCall(HylcOptionsReal("-pattern_density", "Volumetric yarn density for the summary's area density (kg/m^3); 0 = 0.12 kg/m^2 / r (120 kg/m^3 at r = 1 mm), the rule of hylc-fit, hylc-sample's raw export and the paper's tables", "HylcPatternGetAreaDensity", p->viewDensity, &p->viewDensity, &set[7]));
   PetscCall(HylcOptionsReal("-pattern_exclude_arc", "Summary: same-yarn segment pairs closer than this rest arc length (units of r) are not contacts", "HylcPatternMinSegmentDistance", p->viewExcludeArc, &p->viewExcludeArc, &set[8]));
-  PetscCall(PetscOptionsBool("-pattern_consistent_periods", "Loader: replace the stored periods by the ones the rest lengths of the periodic edges imply (basket.pyp, method-spec 2.1b)", "HylcPatternLoad", p->consistentPeriods, &p->consistentPeriods, NULL));
+  PetscCall(PetscOptionsBool("-pattern_consistent_periods", "Loader: replace the stored periods by the ones the rest lengths of the periodic edges imply (basket.pyp, docs/method.md §2.1b)", "HylcPatternLoad", p->consistentPeriods, &p->consistentPeriods, NULL));
   PetscCall(PetscObjectProcessOptionsHandlers((PetscObject)p, PetscOptionsObject));
   PetscOptionsEnd();
   /* checked after PetscOptionsEnd(), so that an error leaves nothing allocated behind */

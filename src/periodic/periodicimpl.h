@@ -106,7 +106,7 @@ static inline void Mat3(const PetscReal M[9], const PetscReal v[3], PetscReal ou
 }
 
 /* the derivatives of A = sqrt(I) = [[X, sa Y], [0, sqrt(1 - sa^2) Y]] (row-major, X = 1 + sx, Y = 1 + sy)
-   with respect to sx, sa, sy: dA[4 j .. 4 j + 3] for z_j, j = 0, 1, 2 (method-spec 1.1) */
+   with respect to sx, sa, sy: dA[4 j .. 4 j + 3] for z_j, j = 0, 1, 2 (docs/method.md §1.1) */
 static inline void StretchDerivatives(const PetscReal z[6], PetscReal dA[12])
 {
   const PetscReal Y = 1 + z[2], c = z[1], q = PetscSqrtReal(1 - c * c);

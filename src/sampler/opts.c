@@ -295,7 +295,7 @@ PetscErrorCode HylcSamplerSetReference(HylcSampler S, HylcReferenceMode mode, co
 . -sampler_resume                 - continue an interrupted run from its journal (refused if its settings differ) (HylcSamplerSetResume())
 . -sampler_overwrite              - start over: replace an existing output and its journal (without either
                                     option an existing output or a journal holding samples is refused) (HylcSamplerSetOverwrite())
-. -sampler_family <woven>         - default ranges of method-spec §8: woven, stockinette, honeycomb, rib (HylcSamplerSetPlanRanges())
+. -sampler_family <woven>         - default ranges of docs/method.md §8: woven, stockinette, honeycomb, rib (HylcSamplerSetPlanRanges())
 . -sampler_range_<c> min,max      - 1D range of c = sx, sa, sy, II00, II11 (II in 1/m; 2D ranges follow) (HylcSamplerSetPlanRanges())
 . -sampler_n1 <150>, -sampler_n2 <50> - samples per 1D term, per axis of a 2D term (HylcSamplerSetSampleCounts())
 . -sampler_terms <all>            - comma list of terms: zero, sx, sa, sy, II00, II11, sx-sa, sx-sy,

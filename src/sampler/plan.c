@@ -92,7 +92,7 @@ int HylcPlanSample(const HylcPlan *p, long k, double z[6], int *term)
 
 int HylcPlanDefaults(const char *family, double scale, HylcPlan *p)
 {
-  /* 1D limits of method-spec §8: sx = sy range, sa, II00, II11 (1/m at r = 1 mm) */
+  /* 1D limits of docs/method.md §8: sx = sy range, sa, II00, II11 (1/m at r = 1 mm) */
   double s0, s1, sa, b0, b1;
   if (!strcmp(family, "woven"))
     s0 = -0.60, s1 = 1.00, sa = 0.75, b0 = 170, b1 = 170;

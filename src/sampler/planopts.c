@@ -8,7 +8,7 @@ const char *const HylcPlanFamilies[] = {"woven", "stockinette", "honeycomb", "ri
 /*@C
   HylcPlanRangesFromOptions - Reads the plan's ranges inside a PetscOptionsBegin/End block (only reads them;
   HylcPlanRangesApply() turns them into ranges for a yarn radius): -sampler_family (the defaults of
-  method-spec §8, II scaled by 1 mm / r) and -sampler_range_<c> min,max for c = sx, sa, sy, II00, II11
+  docs/method.md §8, II scaled by 1 mm / r) and -sampler_range_<c> min,max for c = sx, sa, sy, II00, II11
   (the 2D ranges follow the 1D ones in proportion). -help shows the family's defaults for r = 1 mm.
 
   Collective
@@ -32,7 +32,7 @@ PetscErrorCode HylcPlanRangesFromOptions(PetscOptionItems *PetscOptionsObject, M
   HylcPlan    p;
 
   PetscFunctionBegin;
-  PetscCall(PetscOptionsEnum("-sampler_family", "Default sampling ranges of method-spec 8 (II scaled by 1 mm / r)", man, HylcPlanFamilies, fam, &fam, NULL));
+  PetscCall(PetscOptionsEnum("-sampler_family", "Default sampling ranges of docs/method.md §8 (II scaled by 1 mm / r)", man, HylcPlanFamilies, fam, &fam, NULL));
   ranges->family = (PetscInt)fam;
   PetscCheck(!HylcPlanDefaults(HylcPlanFamilies[fam], 1, &p), comm, PETSC_ERR_USER_INPUT, "Unknown sampling family");
   for (int c = 0; c < HYLC_PLAN_NCOORD; c++) {

@@ -1,6 +1,7 @@
 /* Concise error reports for user-input errors in hylc programs. */
 #include <hylc/sys.h>
 #include <hylc/files.h>
+#include <hylc/private/yamlcheck.h>
 #include <unistd.h>
 #include <ctype.h>
 #include <errno.h>
@@ -293,155 +294,6 @@ static int HylcLaunchRankZero(void)
   return 1;
 }
 
-/* Checks one line-oriented YAML options file against the subset PETSc's option reader understands and
-   hylc's configs use: comments, blank lines, "key: value" (a plain scalar, a quoted string closed on
-   its line, or a one-line [list]), "key:" opening a block of more indented lines, and "- item" entries.
-   Returns 0, or writes "file:line: problem" to msg and returns 1. */
-static int HylcCheckYAMLFile(const char path[], char msg[], size_t len)
-{
-  FILE       *fp;
-  char        line[4096];
-  int         lineno = 0, depth = 0, indent[64], opened = 0, bad = 0;
-  struct stat st;
-
-  if (stat(path, &st) != 0) return snprintf(msg, len, "Cannot open options file %s: %s", path, strerror(errno)), 1;
-  if (S_ISDIR(st.st_mode)) return snprintf(msg, len, "Cannot read options file %s: it is a directory", path), 1;
-  fp = fopen(path, "r");
-  if (!fp) return snprintf(msg, len, "Cannot open options file %s: %s", path, strerror(errno)), 1;
-  indent[0] = 0;
-  while (!bad && fgets(line, sizeof(line), fp)) {
-    char  *s   = line, *key, *colon, *v;
-    int    ind = 0;
-    size_t n   = strlen(line);
-    lineno++;
-    if (n == sizeof(line) - 1 && line[n - 1] != '\n') {
-      snprintf(msg, len, "%s:%d: line longer than %d characters", path, lineno, (int)sizeof(line) - 2);
-      bad = 1;
-      break;
-    }
-    if (memchr(line, 0, n) != NULL || (n && (unsigned char)line[0] == 0)) continue;
-    while (*s == ' ') s++, ind++;
-    if (*s == '\t') {
-      snprintf(msg, len, "%s:%d: a tab in the indentation (YAML allows spaces only)", path, lineno);
-      bad = 1;
-      break;
-    }
-    /* strip a comment: '#' at the start or after a blank, outside quotes */
-    {
-      char q = 0;
-      for (char *c = s; *c; c++) {
-        if (q) {
-          if (*c == q) q = 0;
-        } else if (*c == '"' || *c == '\'') {
-          if (c == s || HylcIsSpace(c[-1]) || c[-1] == ':' || c[-1] == '[' || c[-1] == ',') q = *c;
-        } else if (*c == '#' && (c == s || HylcIsSpace(c[-1]))) {
-          *c = 0;
-          break;
-        }
-      }
-    }
-    n = strlen(s);
-    while (n && HylcIsSpace(s[n - 1])) s[--n] = 0;
-    if (!n) continue;
-    if (!strcmp(s, "---") || !strcmp(s, "...")) continue;
-    if (s[0] == '%') continue; /* a directive */
-    /* indentation: deeper only right after "key:", shallower only back to an open level */
-    if (ind > indent[depth]) {
-      if (!opened) {
-        snprintf(msg, len, "%s:%d: unexpected indentation ('%s' is indented but the line before is not a 'key:' opening a block)", path, lineno, s);
-        bad = 1;
-        break;
-      }
-      if (depth + 1 >= (int)(sizeof(indent) / sizeof(indent[0]))) {
-        snprintf(msg, len, "%s:%d: nested too deeply", path, lineno);
-        bad = 1;
-        break;
-      }
-      indent[++depth] = ind;
-    } else {
-      if (opened) {
-        snprintf(msg, len, "%s:%d: the block opened by the 'key:' on the line before is empty (give the key a value)", path, lineno - 1);
-        bad = 1;
-        break;
-      }
-      while (depth > 0 && ind < indent[depth]) depth--;
-      if (ind != indent[depth]) {
-        snprintf(msg, len, "%s:%d: inconsistent indentation (%d spaces; the enclosing block uses %d)", path, lineno, ind, indent[depth]);
-        bad = 1;
-        break;
-      }
-    }
-    opened = 0;
-    if (s[0] == '-' && (s[1] == 0 || s[1] == ' ')) continue; /* a sequence entry */
-    key   = s;
-    colon = NULL;
-    for (char *c = s; *c; c++)
-      if (*c == ':' && (c[1] == 0 || c[1] == ' ')) {
-        colon = c;
-        break;
-      }
-    if (!colon) {
-      snprintf(msg, len, "%s:%d: expected 'key: value', found '%s'", path, lineno, s);
-      bad = 1;
-      break;
-    }
-    for (char *c = key; c < colon; c++)
-      if (!(isalnum((unsigned char)*c) || *c == '_' || *c == '-' || *c == '.')) {
-        snprintf(msg, len, "%s:%d: '%.*s' is not an option name (letters, digits, '_' only)", path, lineno, (int)(colon - key), key);
-        bad = 1;
-        break;
-      }
-    if (bad) break;
-    if (colon == key) {
-      snprintf(msg, len, "%s:%d: empty key before ':'", path, lineno);
-      bad = 1;
-      break;
-    }
-    v = colon + 1;
-    while (*v == ' ') v++;
-    if (!*v) {
-      opened = 1; /* "key:" opens a block of more indented lines */
-      continue;
-    }
-    if (*v == '"' || *v == '\'') {
-      char *e = strchr(v + 1, *v);
-      if (!e) {
-        snprintf(msg, len, "%s:%d: unclosed quote in the value of '%.*s'", path, lineno, (int)(colon - key), key);
-        bad = 1;
-      } else if (e[1]) {
-        snprintf(msg, len, "%s:%d: text '%s' after the quoted value of '%.*s'", path, lineno, e + 1, (int)(colon - key), key);
-        bad = 1;
-      }
-    } else if (*v == '[' || *v == '{') {
-      const char close = *v == '[' ? ']' : '}';
-      if (v[strlen(v) - 1] != close) {
-        snprintf(msg, len, "%s:%d: unclosed '%c' in the value of '%.*s' (write lists on one line)", path, lineno, *v, (int)(colon - key), key);
-        bad = 1;
-      }
-    } else if (*v == ']' || *v == '}' || *v == '&' || *v == '*' || *v == '!' || *v == '|' || *v == '>' || *v == '@' || *v == '`') {
-      snprintf(msg, len, "%s:%d: value '%s' of '%.*s' starts with '%c', which YAML reserves (quote the value)", path, lineno, v, (int)(colon - key), key, *v);
-      bad = 1;
-    } else {
-      for (char *c = v; *c; c++)
-        if (*c == ':' && (c[1] == 0 || c[1] == ' ')) {
-          snprintf(msg, len, "%s:%d: a second ':' in '%s' (one 'key: value' per line)", path, lineno, s);
-          bad = 1;
-          break;
-        }
-    }
-  }
-  if (!bad && opened) {
-    snprintf(msg, len, "%s:%d: the block opened by the last 'key:' is empty (give the key a value)", path, lineno);
-    bad = 1;
-  }
-  if (!bad && ferror(fp)) {
-    snprintf(msg, len, "Cannot read options file %s: %s", path, strerror(errno));
-    bad = 1;
-  }
-  fclose(fp);
-  return bad;
-}
-
 /* ---- every options file checked, and the options counted, before PetscInitialize() ---- */
 
 /* PETSc 3.18 holds at most this many options (MAXOPTIONS of src/sys/objects/options.c); more end
@@ -562,7 +414,7 @@ static void HylcScanOptionsFile(const char path[], const char what[], int yaml, 
 
   if (o->bad) return;
   if (yaml) {
-    if (HylcCheckYAMLFile(path, o->msg, o->len)) {
+    if (HylcYAMLCheckFile(path, o->msg, o->len)) {
       o->bad = 1;
       return;
     }

@@ -9,7 +9,7 @@ PetscErrorCode HylcYarnModelDefault(HylcYarnModel *m)
 {
   PetscFunctionBegin;
   PetscCall(PetscMemzero(m, sizeof(*m)));
-  m->E             = 1.0e6; /* the 0.1 mm patterns' value (method-spec §11) */
+  m->E             = 1.0e6; /* the 0.1 mm patterns' value (docs/method.md §11) */
   m->Es            = 0;     /* = E */
   m->G             = 0;     /* = E / 2.5 */
   m->kc            = 0;     /* = 0.7 E r */

@@ -1,5 +1,5 @@
 /* Benchmark: microscale solves on the paper's seven patterns with their config/<name>.yaml parameters,
-   at z = 0, sx = +-0.3, sy = 0.3, sa = 0.5, II00 = +-0.8 sigma, II11 = +-0.8 sigma (sigma: method-spec §8).
+   at z = 0, sx = +-0.3, sy = 0.3, sa = 0.5, II00 = +-0.8 sigma, II11 = +-0.8 sigma (sigma: docs/method.md §8).
    Prints per sample: Newton iterations, status, CPU seconds (clock()), and the shares of the wall time in
    assembly (energy, gradient and Hessian evaluations without contact), contact (broadphase and contact
    kernels), factorization (Cholesky and the Schur-complement solves) and line search (including its

@@ -1,21 +1,29 @@
 #!/usr/bin/env bash
 # Probe 4.8 (options files and values): a malformed YAML options file used to give PETSc's "YAML parser
 # loading error" with neither file nor line, and a non-numeric value "Input string abc has no integer
-# value" naming neither option nor file. Now one line naming the file, line, option and value.
+# value" naming neither option nor file. Now one line naming the file, line, option and value. Since
+# issue 33 the file is parsed by libyaml (src/sys/yamlcheck.c), whose messages give line and column.
 set -u
 . "$(dirname "$0")/probe_common.inc"
 cd "$HYLC_TMP"
 P=$HYLC_BIN/hylc-pattern
 printf 'pattern_type: plain\npattern_radius 1e-3\n' >nocolon.yaml
-refused no-colon "^hylc: error: nocolon.yaml:2: expected 'key: value', found 'pattern_radius 1e-3'" $P -options_file nocolon.yaml
+refused no-colon "^hylc: error: nocolon.yaml:2:1: while scanning a simple key: could not find expected ':' \(at line 3, column 1\)" $P -options_file nocolon.yaml
 printf 'pattern_type: plain\n  pattern_radius: 1e-3\n' >indent.yaml
-refused indentation "^hylc: error: indent.yaml:2: unexpected indentation" $P -options_file indent.yaml
+refused indentation "^hylc: error: indent.yaml:2:17: mapping values are not allowed in this context" $P -options_file indent.yaml
 printf '# comment\npattern_type: "plain\n' >quote.yaml
-refused unclosed-quote "^hylc: error: quote.yaml:2: unclosed quote in the value of 'pattern_type'" $P -options_file quote.yaml
+refused unclosed-quote "^hylc: error: quote.yaml:2:15: while scanning a quoted scalar: found unexpected end of stream" $P -options_file quote.yaml
 printf 'pattern_type: plain\n\tpattern_radius: 1e-3\n' >tab.yaml
-refused tab "^hylc: error: tab.yaml:2: a tab in the indentation" $P -options_file tab.yaml
+refused tab "^hylc: error: tab.yaml:.*: found a tab character that violates indentation \(at line 2, column 1\)" $P -options_file tab.yaml
 printf 'pattern_size: [4, 4\n' >bracket.yaml
-refused unclosed-list "^hylc: error: bracket.yaml:1: unclosed '\[' in the value of 'pattern_size'" $P -options_file bracket.yaml
+refused unclosed-list "^hylc: error: bracket.yaml:1:15: while parsing a flow sequence: did not find expected ',' or '\]'" $P -options_file bracket.yaml
+# the structure PETSc's reader takes: a top-level mapping, option names as keys, no key without a value
+printf -- '- pattern_type\n- plain\n' >list.yaml
+refused top-list "^hylc: error: list.yaml:1:1: the top level of an options file must be 'key: value' lines, found a list" $P -options_file list.yaml
+printf 'pattern type: plain\n' >name.yaml
+refused bad-name "^hylc: error: name.yaml:1:1: 'pattern type' is not an option name" $P -options_file name.yaml
+printf 'pattern_type: plain\npattern_radius:\n' >empty.yaml
+refused no-value "^hylc: error: empty.yaml:2:16: 'pattern_radius' has no value" $P -options_file empty.yaml
 refused missing-file "^hylc: error: Cannot open options file nonexistent.yaml: No such file" $P -options_file nonexistent.yaml
 mkdir -p adir.yaml
 refused directory "^hylc: error: Cannot read options file adir.yaml: it is a directory" $P -options_file adir.yaml
@@ -28,4 +36,10 @@ refused cmdline-int "^hylc: error: option -pattern_size: 'x' is not an integer$"
 printf -- '---\n# a comment\npattern_type: plain   # trailing comment\n\npattern_radius: 1.0e-3\n' >good.yaml
 $P -options_file good.yaml >good.txt 2>&1 || { cat good.txt; echo "FAIL: a well-formed YAML file is refused"; exit 1; }
 grep -q 'type: plain' good.txt || { cat good.txt; echo "FAIL: good.yaml not applied"; exit 1; }
+# a block list, and a list written over two lines, are YAML that PETSc reads: accepted
+printf 'pattern_type: plain\npattern_size:\n  - 4\n  - 2\n' >blocklist.yaml
+$P -options_file blocklist.yaml >bl.txt 2>&1 || { cat bl.txt; echo "FAIL: a block list is refused"; exit 1; }
+printf 'pattern_type: plain\npattern_size: [4,\n  2]\n' >flowlist.yaml
+$P -options_file flowlist.yaml >fl.txt 2>&1 || { cat fl.txt; echo "FAIL: a list over two lines is refused"; exit 1; }
+cmp -s bl.txt fl.txt || { diff bl.txt fl.txt; echo "FAIL: the two spellings of one list differ"; exit 1; }
 finish

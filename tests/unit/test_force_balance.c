@@ -1,10 +1,10 @@
 /* Force balance of the paper's stored patterns with the per-pattern yarn parameters of config/<name>.yaml
-   (method-spec §11): ||net force|| / ||bend + twist forces|| over all vertex positions, where the net force
+   (docs/method.md §11): ||net force|| / ||bend + twist forces|| over all vertex positions, where the net force
    is the gradient of stretch + bend + twist + contact energy of the periodic tile. The stored patterns are
    (near) equilibria of the paper's model, so this ratio measures how well our model matches theirs.
    HYLC_REPORT=1 prints the table (docs/method.md). Checks: satin_small and honeycomb, whose parameters are
    known with high confidence, balance to better than 15 % (the spec measured 5-10 %). satin_small is checked
-   both with its method-spec §11 values (given here) and with the values calibrated against the paper's
+   both with its docs/method.md §11 values (given here) and with the values calibrated against the paper's
    table that config/satin_small.yaml holds (docs/method.md). */
 #include "tile.h"
 #include "hylctest.h"
@@ -77,7 +77,7 @@ static PetscErrorCode Balance(const char *root, const char *dir, const Case *c, 
   }
   const PetscReal ratio = PetscSqrtReal(net / bt);
   if (report)
-    PetscCall(PetscPrintf(PETSC_COMM_SELF, "| %s%s%s | %.3g | %.3g | %.3g | %.3g | %.3g |\n", c->name, c->consistent ? " (consistent periods)" : "", c->yarn ? " (method-spec 11 values)" : "", (double)ratio, (double)PetscSqrtReal(st / bt), (double)PetscSqrtReal(ct / bt), (double)PetscSqrtReal(tnet / PetscMax(tbt, 1e-300)), (double)(e[3])));
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, "| %s%s%s | %.3g | %.3g | %.3g | %.3g | %.3g |\n", c->name, c->consistent ? " (consistent periods)" : "", c->yarn ? " (docs/method.md §11 values)" : "", (double)ratio, (double)PetscSqrtReal(st / bt), (double)PetscSqrtReal(ct / bt), (double)PetscSqrtReal(tnet / PetscMax(tbt, 1e-300)), (double)(e[3])));
   if (c->limit > 0) HYLC_CHECK(ratio < c->limit, "%s: ||net force|| / ||bend + twist forces|| = %.3g, expected < %g", c->name, (double)ratio, (double)c->limit);
   PetscCall(PetscFree5(g, gbt, gs, gc, gt));
   PetscCall(HylcTileDestroy(&T));

@@ -62,7 +62,7 @@ static PetscErrorCode TestRefPatterns(const char *dir)
       HYLC_CHECK(n == want, "%s: loop %d has %d vertices, expected %d", refcases[c].file, (int)l, (int)n, (int)want);
       HYLC_CHECK(PetscAbsInt(w[0]) + PetscAbsInt(w[1]) == 1, "%s: loop %d winding (%d, %d)", refcases[c].file, (int)l, (int)w[0], (int)w[1]);
     }
-    /* contact-relevant pairs at the stored state sit at 1.87-1.98 r (method-spec 2.3) */
+    /* contact-relevant pairs at the stored state sit at 1.87-1.98 r (docs/method.md §2.3) */
     PetscReal dmin, r;
     PetscCall(HylcPatternGetRadius(p, &r));
     PetscCall(HylcPatternMinSegmentDistance(p, 3.0, &dmin, NULL));

@@ -1,4 +1,4 @@
-/* Rest-data conventions of the paper's seven .pyp patterns (method-spec 2.1, 3.1), measured.
+/* Rest-data conventions of the paper's seven .pyp patterns (docs/method.md §2.1, §3.1), measured.
    At every vertex the reference twist, the twist and the material curvature are recomputed from the
    stored geometry, reference directors (as re-orthonormalized by the loader) and edge twists theta,
    and compared with the stored RefT, RT and RK:

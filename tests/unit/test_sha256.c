@@ -1,4 +1,4 @@
-/* SHA-256 (src/sys/sha256.c) against the published test vectors of FIPS 180-4 / NIST (the "abc", the
+/* SHA-256 (src/sys/sha256.c: nettle's, under hylc's names) against the published test vectors of FIPS 180-4 / NIST (the "abc", the
    empty message, the 448- and 896-bit messages, one million 'a'), and the same digest whatever the
    split of the input into updates.
    hylc-test: nprocs=1 */

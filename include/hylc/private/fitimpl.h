@@ -15,7 +15,7 @@ struct _p_HylcFit {
   /* constants (docs/fit.md) */
   HylcFitFamily     family;
   PetscReal         reg;                                                             /* quasiconvex marching p^x_min */
-  HylcFitCompat     compat;                                                          /* paper or authors (method-spec §9.1) */
+  HylcFitCompat     compat;                                                          /* paper or authors (docs/method.md §9.1) */
   HylcMonotoneRule  rule;                                                            /* 1D slope limiter */
   PetscBool         quasiconvex;                                                     /* marching on (off: the "noreg" fits) */
   PetscBool         symmetrize;                                                      /* symmetrize in sa */
