@@ -86,7 +86,7 @@ tests: $(TESTS) $(REPLAYS)
 benches: $(BENCHES)
 examples: $(EXAMPLES)
 
-# The build identity in every sampling run's identity (src/sampler/identity.c, docs/output-format.md):
+# The build identity in every sampling run's identity (src/samples/identity.c, docs/output-format.md):
 # `git describe --always --dirty` of the checkout, "unknown" outside one. $(BUILD)/build-id changes only
 # when it does, and identity.o is rebuilt then.
 HYLC_BUILD_ID := $(shell git -C $(CURDIR) describe --always --dirty 2>/dev/null || echo unknown)
@@ -94,8 +94,8 @@ BUILD_ID_FILE := $(BUILD)/build-id
 ifeq ($(filter clean help,$(MAKECMDGOALS)),)
   $(shell mkdir -p $(BUILD); [ "$$(cat $(BUILD_ID_FILE) 2>/dev/null)" = "$(HYLC_BUILD_ID)" ] || echo "$(HYLC_BUILD_ID)" > $(BUILD_ID_FILE))
 endif
-$(OBJ)/src/sampler/identity.o: CFLAGS += -DHYLC_BUILD_ID='"$(HYLC_BUILD_ID)"'
-$(OBJ)/src/sampler/identity.o: $(BUILD_ID_FILE)
+$(OBJ)/src/samples/identity.o: CFLAGS += -DHYLC_BUILD_ID='"$(HYLC_BUILD_ID)"'
+$(OBJ)/src/samples/identity.o: $(BUILD_ID_FILE)
 
 # the Cholesky kernels and solves: GCC's -O2 vectorizes only loops it needs no run-time alias check for;
 # the dynamic cost model lets it version the solves' loops (about 2x on them, results bitwise unchanged:

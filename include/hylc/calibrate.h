@@ -16,7 +16,6 @@
 #include <hylc/plan.h>
 #include <hylc/material.h>
 #include <hylc/reference.h>
-#include <hylc/sampler.h> /* HylcPlanRanges */
 
 typedef struct _p_HylcCalibrate *HylcCalibrate;
 

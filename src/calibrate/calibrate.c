@@ -1,7 +1,6 @@
 /* HylcCalibrate: lifecycle, sub-objects (lazy getters), set-up, getters and View (include/hylc/calibrate.h,
    docs/calibrate.md); the setters and HylcCalibrateSetFromOptions are in opts.c. */
 #include "calibrateimpl.h"
-#include <hylc/sampler.h>
 #include <hylc/files.h>
 #include <sys/stat.h>
 #include <stdio.h>

@@ -1,6 +1,6 @@
 /* The sampling plan's options, shared by hylc-sample and hylc-calibrate (one spelling, one check). */
 #include <hylc/options.h>
-#include <hylc/sampler.h>
+#include <hylc/plan.h>
 #include <string.h>
 
 const char *const HylcPlanFamilies[] = {"woven", "stockinette", "honeycomb", "rib", "HylcPlanFamily", "", NULL};

@@ -1,7 +1,7 @@
 /* The journal of a sampling run (include/hylc/samples.h; format in docs/output-format.md): an
    append-only binary file of fixed-size checksummed records that survives SIGKILL at any moment, opened
    under an exclusive flock and tied to the run by its identity (format 2). Plain C stdio + POSIX. The
-   HDF5 samples file is written by src/sampler/h5samples.c. */
+   HDF5 samples file is written by src/samples/h5samples.c. */
 #include <hylc/samples.h>
 #include <hylc/sha256.h>
 #include <hylc/private/samplesimpl.h>
