@@ -20,6 +20,11 @@
 
 typedef struct _p_HylcFit *HylcFit;
 
+/* Registration: the class id and log events of this stage (HylcFitInitializePackage(), called by HylcFitCreate()). */
+PETSC_EXTERN PetscClassId   HYLC_FIT_CLASSID;
+PETSC_EXTERN PetscLogEvent  HYLC_FitRun, HYLC_FitTerm, HYLC_FitMLS, HYLC_FitMonotone;
+PETSC_EXTERN PetscErrorCode HylcFitInitializePackage(void);
+
 /* Pattern families with their own fitting constants (method-spec §9, §S3.4): WOVEN and KNIT share the
    constants of every pattern but the stockinette; STOCKINETTE has reg 1e-2 and coarse 2D bending knots
    (factor 0.3, 2+4 and 3+3). The family is the object's type name. */

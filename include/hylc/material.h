@@ -19,6 +19,11 @@
 
 typedef struct _p_HylcMaterial *HylcMaterial;
 
+/* Registration: the class id and log events of this stage (HylcMaterialInitializePackage(), called by HylcMaterialCreate()). */
+PETSC_EXTERN PetscClassId   HYLC_MATERIAL_CLASSID;
+PETSC_EXTERN PetscLogEvent  HYLC_MaterialLoad, HYLC_MaterialWrite;
+PETSC_EXTERN PetscErrorCode HylcMaterialInitializePackage(void);
+
 #define HYLC_MATERIAL_N1D 5 /* 1D terms k = 0 sx, 1 sa, 2 sy, 3 x-bending, 4 y-bending */
 #define HYLC_MATERIAL_N2D 9 /* 2D terms, in table order HylcMaterialPairs */
 

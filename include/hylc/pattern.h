@@ -21,6 +21,11 @@
 
 typedef struct _p_HylcPattern *HylcPattern;
 
+/* Registration: the class id and log events of this stage (HylcPatternInitializePackage(), called by HylcPatternCreate()). */
+PETSC_EXTERN PetscClassId   HYLC_PATTERN_CLASSID;
+PETSC_EXTERN PetscLogEvent  HYLC_PatternLoad, HYLC_PatternWrite, HYLC_PatternGenerate, HYLC_PatternDistance;
+PETSC_EXTERN PetscErrorCode HylcPatternInitializePackage(void);
+
 /* Pattern sources: a .pyp file or one of the procedural generators. */
 typedef const char *HylcPatternType;
 #define HYLCPATTERNFILE        "file"

@@ -14,6 +14,11 @@
 
 typedef struct _p_HylcSampler *HylcSampler;
 
+/* Registration: the class id and log events of this stage (HylcSamplerInitializePackage(), called by HylcSamplerCreate()). */
+PETSC_EXTERN PetscClassId   HYLC_SAMPLER_CLASSID;
+PETSC_EXTERN PetscLogEvent  HYLC_SamplerRun;
+PETSC_EXTERN PetscErrorCode HylcSamplerInitializePackage(void);
+
 /* lifecycle and work (src/sampler/sampler.c; each function's manual block there) */
 PETSC_EXTERN PetscErrorCode HylcSamplerCreate(MPI_Comm, HylcSampler *);
 PETSC_EXTERN PetscErrorCode HylcSamplerDestroy(HylcSampler *);

@@ -12,6 +12,42 @@ static const char *const RoleNames[]                                    = {"free
 
 const char *HylcCalibrateTermName_Private(PetscInt t) { return t == HYLC_CALIB_OTHER ? "other" : HylcPlanTermName((int)t); }
 
+PetscClassId  HYLC_CALIBRATE_CLASSID;
+PetscLogEvent HYLC_CalibrateSetUp, HYLC_CalibrateSolve, HYLC_CalibrateEvaluate, HYLC_CalibrateGather;
+
+static PetscBool HylcCalibratePackageInitialized = PETSC_FALSE;
+
+static PetscErrorCode HylcCalibrateFinalizePackage(void)
+{
+  PetscFunctionBegin;
+  HylcCalibratePackageInitialized = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcCalibrateInitializePackage - Registers the class id HylcCalibrate and its log events (CALIB_SetUp, CALIB_Solve, CALIB_Evaluate, CALIB_Gather). Called by
+  HylcCalibrateCreate() and by HylcInitializePackage(); idempotent.
+
+  Not collective
+
+  Level: developer
+
+.seealso: HylcInitializePackage()
+@*/
+PetscErrorCode HylcCalibrateInitializePackage(void)
+{
+  PetscFunctionBegin;
+  if (HylcCalibratePackageInitialized) PetscFunctionReturn(PETSC_SUCCESS);
+  HylcCalibratePackageInitialized = PETSC_TRUE;
+  PetscCall(PetscClassIdRegister("HylcCalibrate", &HYLC_CALIBRATE_CLASSID));
+  PetscCall(PetscLogEventRegister("CALIB_SetUp", HYLC_CALIBRATE_CLASSID, &HYLC_CalibrateSetUp));
+  PetscCall(PetscLogEventRegister("CALIB_Solve", HYLC_CALIBRATE_CLASSID, &HYLC_CalibrateSolve));
+  PetscCall(PetscLogEventRegister("CALIB_Evaluate", HYLC_CALIBRATE_CLASSID, &HYLC_CalibrateEvaluate));
+  PetscCall(PetscLogEventRegister("CALIB_Gather", HYLC_CALIBRATE_CLASSID, &HYLC_CalibrateGather));
+  PetscCall(PetscRegisterFinalize(HylcCalibrateFinalizePackage));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /*@C
   HylcCalibrateCreate - Creates a calibration: free E, Es, kc with G tied to E, bounds 1/1000 to 1000 x the
   initial values, the plan's 1D terms with 15 samples each, the default yarn model as initial values.
@@ -34,7 +70,7 @@ PetscErrorCode HylcCalibrateCreate(MPI_Comm comm, HylcCalibrate *out)
 
   PetscFunctionBegin;
   PetscValidPointer(out, 2);
-  PetscCall(HylcInitializePackage());
+  PetscCall(HylcCalibrateInitializePackage());
   PetscCall(PetscHeaderCreate(C, HYLC_CALIBRATE_CLASSID, "HylcCalibrate", "Yarn parameter calibration", "Calibrate", comm, HylcCalibrateDestroy, HylcCalibrateView));
   PetscCallMPI(MPI_Comm_rank(comm, &C->rank));
   PetscCallMPI(MPI_Comm_size(comm, &C->size));

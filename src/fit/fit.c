@@ -26,6 +26,42 @@ static PetscErrorCode FamilyDefaults(HylcFit fit, HylcFitFamily family)
 
 const char *const HylcFitKnotLayouts[] = {"paper", "refined", "HylcFitKnotLayout", "HYLC_FIT_KNOTS_", NULL};
 
+PetscClassId  HYLC_FIT_CLASSID;
+PetscLogEvent HYLC_FitRun, HYLC_FitTerm, HYLC_FitMLS, HYLC_FitMonotone;
+
+static PetscBool HylcFitPackageInitialized = PETSC_FALSE;
+
+static PetscErrorCode HylcFitFinalizePackage(void)
+{
+  PetscFunctionBegin;
+  HylcFitPackageInitialized = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcFitInitializePackage - Registers the class id HylcFit and its log events (FIT_Run, FIT_Term, FIT_MLS, FIT_Monotone). Called by
+  HylcFitCreate() and by HylcInitializePackage(); idempotent.
+
+  Not collective
+
+  Level: developer
+
+.seealso: HylcInitializePackage()
+@*/
+PetscErrorCode HylcFitInitializePackage(void)
+{
+  PetscFunctionBegin;
+  if (HylcFitPackageInitialized) PetscFunctionReturn(PETSC_SUCCESS);
+  HylcFitPackageInitialized = PETSC_TRUE;
+  PetscCall(PetscClassIdRegister("HylcFit", &HYLC_FIT_CLASSID));
+  PetscCall(PetscLogEventRegister("FIT_Run", HYLC_FIT_CLASSID, &HYLC_FitRun));
+  PetscCall(PetscLogEventRegister("FIT_Term", HYLC_FIT_CLASSID, &HYLC_FitTerm));
+  PetscCall(PetscLogEventRegister("FIT_MLS", HYLC_FIT_CLASSID, &HYLC_FitMLS));
+  PetscCall(PetscLogEventRegister("FIT_Monotone", HYLC_FIT_CLASSID, &HYLC_FitMonotone));
+  PetscCall(PetscRegisterFinalize(HylcFitFinalizePackage));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /*@C
   HylcFitCreate - Creates a fit with the constants of method-spec §9.1 (family woven). Not collective.
 @*/
@@ -35,7 +71,7 @@ PetscErrorCode HylcFitCreate(MPI_Comm comm, HylcFit *out)
 
   PetscFunctionBegin;
   PetscValidPointer(out, 2);
-  PetscCall(HylcInitializePackage());
+  PetscCall(HylcFitInitializePackage());
   PetscCall(PetscHeaderCreate(fit, HYLC_FIT_CLASSID, "HylcFit", "Material fit", "Fit", comm, HylcFitDestroy, HylcFitView));
   fit->compat          = HYLC_FIT_COMPAT_PAPER;
   fit->rule            = HYLC_MONOTONE_CIRCLE;

@@ -39,10 +39,49 @@ struct _n_HylcChol {
   HylcCholInfo     info;
 };
 
+PetscClassId  HYLC_CHOL_CLASSID;
+PetscLogEvent HYLC_CholSymbolic, HYLC_CholNumeric, HYLC_CholSolve;
+
+static PetscBool HylcCholPackageInitialized = PETSC_FALSE;
+
+static PetscErrorCode HylcCholFinalizePackage(void)
+{
+  PetscFunctionBegin;
+  HylcCholPackageInitialized = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcCholInitializePackage - Registers the class id HylcChol and its log events (CHOL_Symbolic,
+  CHOL_Numeric, CHOL_Solve), the ordering METIS_NodeND uses (HylcSysInitializePackage()) and the solver
+  type MATSOLVERHYLC (HylcCholRegisterSolverType()). Called by HylcCholCreate() and by
+  HylcInitializePackage(); idempotent.
+
+  Not collective
+
+  Level: developer
+
+.seealso: HylcInitializePackage(), HylcCholRegisterSolverType()
+@*/
+PetscErrorCode HylcCholInitializePackage(void)
+{
+  PetscFunctionBegin;
+  if (HylcCholPackageInitialized) PetscFunctionReturn(PETSC_SUCCESS);
+  HylcCholPackageInitialized = PETSC_TRUE;
+  PetscCall(HylcSysInitializePackage());
+  PetscCall(PetscClassIdRegister("HylcChol", &HYLC_CHOL_CLASSID));
+  PetscCall(PetscLogEventRegister("CHOL_Symbolic", HYLC_CHOL_CLASSID, &HYLC_CholSymbolic));
+  PetscCall(PetscLogEventRegister("CHOL_Numeric", HYLC_CHOL_CLASSID, &HYLC_CholNumeric));
+  PetscCall(PetscLogEventRegister("CHOL_Solve", HYLC_CHOL_CLASSID, &HYLC_CholSolve));
+  PetscCall(HylcCholRegisterSolverType());
+  PetscCall(PetscRegisterFinalize(HylcCholFinalizePackage));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode HylcCholCreate(HylcChol *chol)
 {
   PetscFunctionBegin;
-  PetscCall(HylcInitializePackage());
+  PetscCall(HylcCholInitializePackage());
   PetscCall(PetscNew(chol));
   (*chol)->ordering = HYLC_CHOL_ORDERING_METIS;
   (*chol)->relax    = PETSC_FALSE;

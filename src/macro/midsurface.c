@@ -6,6 +6,41 @@ const char *const HylcMidsurfaceTypes[]   = {"auto", "closed", "poisson", "HylcM
 const char *const HylcMidsurfaceInterps[] = {"bilinear", "bicubic", "HylcMidsurfaceInterp", "HYLC_MIDSURFACE_INTERP_", NULL};
 const char *const HylcMidsurfaceNormals[] = {"rotation", "polar", "HylcMidsurfaceNormal", "HYLC_MIDSURFACE_NORMAL_", NULL};
 
+PetscClassId  HYLC_MIDSURFACE_CLASSID;
+PetscLogEvent HYLC_MacroSetUp, HYLC_MacroPoisson, HYLC_MacroEvaluate;
+
+static PetscBool HylcMidsurfacePackageInitialized = PETSC_FALSE;
+
+static PetscErrorCode HylcMidsurfaceFinalizePackage(void)
+{
+  PetscFunctionBegin;
+  HylcMidsurfacePackageInitialized = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcMidsurfaceInitializePackage - Registers the class id HylcMidsurface and its log events (MACRO_SetUp, MACRO_Poisson, MACRO_Evaluate). Called by
+  HylcMidsurfaceCreate() and by HylcInitializePackage(); idempotent.
+
+  Not collective
+
+  Level: developer
+
+.seealso: HylcInitializePackage()
+@*/
+PetscErrorCode HylcMidsurfaceInitializePackage(void)
+{
+  PetscFunctionBegin;
+  if (HylcMidsurfacePackageInitialized) PetscFunctionReturn(PETSC_SUCCESS);
+  HylcMidsurfacePackageInitialized = PETSC_TRUE;
+  PetscCall(PetscClassIdRegister("HylcMidsurface", &HYLC_MIDSURFACE_CLASSID));
+  PetscCall(PetscLogEventRegister("MACRO_SetUp", HYLC_MIDSURFACE_CLASSID, &HYLC_MacroSetUp));
+  PetscCall(PetscLogEventRegister("MACRO_Poisson", HYLC_MIDSURFACE_CLASSID, &HYLC_MacroPoisson));
+  PetscCall(PetscLogEventRegister("MACRO_Evaluate", HYLC_MIDSURFACE_CLASSID, &HYLC_MacroEvaluate));
+  PetscCall(PetscRegisterFinalize(HylcMidsurfaceFinalizePackage));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /*@C
   HylcMidsurfaceCreate - Creates a midsurface at zero strain on the box [-1, 1]^2. Not collective; use
   PETSC_COMM_SELF (the Poisson grid lives on one rank).
@@ -17,7 +52,7 @@ PetscErrorCode HylcMidsurfaceCreate(MPI_Comm comm, HylcMidsurface *out)
 
   PetscFunctionBegin;
   PetscValidPointer(out, 2);
-  PetscCall(HylcInitializePackage());
+  PetscCall(HylcMidsurfaceInitializePackage());
   PetscCall(PetscHeaderCreate(ms, HYLC_MIDSURFACE_CLASSID, "HylcMidsurface", "Micro-midsurface", "Macro", comm, HylcMidsurfaceDestroy, HylcMidsurfaceView));
   ms->type   = HYLC_MIDSURFACE_AUTO;
   ms->interp = HYLC_MIDSURFACE_INTERP_BILINEAR;

@@ -38,6 +38,40 @@ static const char *G(char buf[32], PetscReal v)
 
 static const char *const ExtNames[] = {"linear", "constant", "zero"};
 
+PetscClassId  HYLC_MATERIAL_CLASSID;
+PetscLogEvent HYLC_MaterialLoad, HYLC_MaterialWrite;
+
+static PetscBool HylcMaterialPackageInitialized = PETSC_FALSE;
+
+static PetscErrorCode HylcMaterialFinalizePackage(void)
+{
+  PetscFunctionBegin;
+  HylcMaterialPackageInitialized = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcMaterialInitializePackage - Registers the class id HylcMaterial and its log events (MATERIAL_Load, MATERIAL_Write). Called by
+  HylcMaterialCreate() and by HylcInitializePackage(); idempotent.
+
+  Not collective
+
+  Level: developer
+
+.seealso: HylcInitializePackage()
+@*/
+PetscErrorCode HylcMaterialInitializePackage(void)
+{
+  PetscFunctionBegin;
+  if (HylcMaterialPackageInitialized) PetscFunctionReturn(PETSC_SUCCESS);
+  HylcMaterialPackageInitialized = PETSC_TRUE;
+  PetscCall(PetscClassIdRegister("HylcMaterial", &HYLC_MATERIAL_CLASSID));
+  PetscCall(PetscLogEventRegister("MATERIAL_Load", HYLC_MATERIAL_CLASSID, &HYLC_MaterialLoad));
+  PetscCall(PetscLogEventRegister("MATERIAL_Write", HYLC_MATERIAL_CLASSID, &HYLC_MaterialWrite));
+  PetscCall(PetscRegisterFinalize(HylcMaterialFinalizePackage));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /*@C
   HylcMaterialCreate - Creates an empty material model: no terms (Psi = 0), density 0, strain scale 1,
   strain shift 1,0,1,0,0. Collective.
@@ -48,7 +82,7 @@ PetscErrorCode HylcMaterialCreate(MPI_Comm comm, HylcMaterial *mat)
 
   PetscFunctionBegin;
   PetscValidPointer(mat, 2);
-  PetscCall(HylcInitializePackage());
+  PetscCall(HylcMaterialInitializePackage());
   PetscCall(PetscHeaderCreate(m, HYLC_MATERIAL_CLASSID, "HylcMaterial", "Homogenized cloth material model", "Material", comm, HylcMaterialDestroy, HylcMaterialView));
   PetscCheck(hylcmat_create(&m->hm) == HYLCMAT_OK, comm, PETSC_ERR_MEM, "Cannot allocate a material table");
   PetscCall(HylcMaterialReset(m));

@@ -12,6 +12,44 @@ const char *const HylcMicroStatuses[] = {"converged", "iteration_cap", "time_cap
    process raise PETSC_ERR_LIB from inside the SNES function evaluation */
 static PetscInt injectAt = -1, solveCount = 0; /* injectAt: -1 unread, 0 off */
 
+PetscClassId  HYLC_MICRO_CLASSID;
+PetscLogEvent HYLC_MicroSetUp, HYLC_MicroSolve, HYLC_MicroFactor, HYLC_MicroSaddle, HYLC_MicroLineSearch;
+
+static PetscBool HylcMicroPackageInitialized = PETSC_FALSE;
+
+static PetscErrorCode HylcMicroFinalizePackage(void)
+{
+  PetscFunctionBegin;
+  HylcMicroPackageInitialized = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcMicroInitializePackage - Registers the class id HylcMicro and its log events (MICRO_SetUp, MICRO_Solve, MICRO_Factor, MICRO_Saddle, MICRO_LineSearch). Called by
+  HylcMicroCreate() and by HylcInitializePackage(); idempotent.
+
+  Not collective
+
+  Level: developer
+
+.seealso: HylcInitializePackage()
+@*/
+PetscErrorCode HylcMicroInitializePackage(void)
+{
+  PetscFunctionBegin;
+  if (HylcMicroPackageInitialized) PetscFunctionReturn(PETSC_SUCCESS);
+  HylcMicroPackageInitialized = PETSC_TRUE;
+  PetscCall(HylcSysInitializePackage()); /* the default ordering of the factorization, metisnd */
+  PetscCall(PetscClassIdRegister("HylcMicro", &HYLC_MICRO_CLASSID));
+  PetscCall(PetscLogEventRegister("MICRO_SetUp", HYLC_MICRO_CLASSID, &HYLC_MicroSetUp));
+  PetscCall(PetscLogEventRegister("MICRO_Solve", HYLC_MICRO_CLASSID, &HYLC_MicroSolve));
+  PetscCall(PetscLogEventRegister("MICRO_Factor", HYLC_MICRO_CLASSID, &HYLC_MicroFactor));
+  PetscCall(PetscLogEventRegister("MICRO_Saddle", HYLC_MICRO_CLASSID, &HYLC_MicroSaddle));
+  PetscCall(PetscLogEventRegister("MICRO_LineSearch", HYLC_MICRO_CLASSID, &HYLC_MicroLineSearch));
+  PetscCall(PetscRegisterFinalize(HylcMicroFinalizePackage));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static void ParamsDefault(HylcMicroParams *p)
 {
   p->alphaStart    = 5000;
@@ -62,7 +100,7 @@ PetscErrorCode HylcMicroCreate(MPI_Comm comm, HylcMicro *micro)
 
   PetscFunctionBegin;
   PetscValidPointer(micro, 2);
-  PetscCall(HylcInitializePackage());
+  PetscCall(HylcMicroInitializePackage());
   PetscCall(PetscHeaderCreate(M, HYLC_MICRO_CLASSID, "HylcMicro", "Microscale Newton solver", "Micro", comm, HylcMicroDestroy, HylcMicroView));
   ParamsDefault(&M->par);
   PetscCall(PetscObjectChangeTypeName((PetscObject)M, "regularized_newton"));
@@ -165,6 +203,7 @@ PetscErrorCode HylcMicroGetFactorPC(HylcMicro M, PC *pc)
   PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
   PetscValidPointer(pc, 2);
   if (!M->inner) {
+    PetscCall(HylcCholRegisterSolverType()); /* the default solver type, linalg's */
     PetscCall(PCCreate(PETSC_COMM_SELF, &M->inner));
     PetscCall(PetscObjectIncrementTabLevel((PetscObject)M->inner, (PetscObject)M, 1));
     PetscCall(PCSetType(M->inner, PCCHOLESKY));

@@ -2,6 +2,42 @@
 #include <hylc/options.h>
 #include <hylc/private/patternimpl.h>
 
+PetscClassId  HYLC_PATTERN_CLASSID;
+PetscLogEvent HYLC_PatternLoad, HYLC_PatternWrite, HYLC_PatternGenerate, HYLC_PatternDistance;
+
+static PetscBool HylcPatternPackageInitialized = PETSC_FALSE;
+
+static PetscErrorCode HylcPatternFinalizePackage(void)
+{
+  PetscFunctionBegin;
+  HylcPatternPackageInitialized = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPatternInitializePackage - Registers the class id HylcPattern and its log events (PATTERN_Load, PATTERN_Write, PATTERN_Generate, PATTERN_Distance). Called by
+  HylcPatternCreate() and by HylcInitializePackage(); idempotent.
+
+  Not collective
+
+  Level: developer
+
+.seealso: HylcInitializePackage()
+@*/
+PetscErrorCode HylcPatternInitializePackage(void)
+{
+  PetscFunctionBegin;
+  if (HylcPatternPackageInitialized) PetscFunctionReturn(PETSC_SUCCESS);
+  HylcPatternPackageInitialized = PETSC_TRUE;
+  PetscCall(PetscClassIdRegister("HylcPattern", &HYLC_PATTERN_CLASSID));
+  PetscCall(PetscLogEventRegister("PATTERN_Load", HYLC_PATTERN_CLASSID, &HYLC_PatternLoad));
+  PetscCall(PetscLogEventRegister("PATTERN_Write", HYLC_PATTERN_CLASSID, &HYLC_PatternWrite));
+  PetscCall(PetscLogEventRegister("PATTERN_Generate", HYLC_PATTERN_CLASSID, &HYLC_PatternGenerate));
+  PetscCall(PetscLogEventRegister("PATTERN_Distance", HYLC_PATTERN_CLASSID, &HYLC_PatternDistance));
+  PetscCall(PetscRegisterFinalize(HylcPatternFinalizePackage));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode HylcPatternGenParamsDefault(HylcPatternGenParams *g)
 {
   PetscFunctionBegin;
@@ -21,7 +57,7 @@ PetscErrorCode HylcPatternCreate(MPI_Comm comm, HylcPattern *pat)
 
   PetscFunctionBegin;
   PetscValidPointer(pat, 2);
-  PetscCall(HylcInitializePackage());
+  PetscCall(HylcPatternInitializePackage());
   PetscCall(PetscHeaderCreate(p, HYLC_PATTERN_CLASSID, "HylcPattern", "Periodic yarn pattern", "Pattern", comm, HylcPatternDestroy, HylcPatternView));
   PetscCall(HylcPatternGenParamsDefault(&p->gen));
   p->viewDensity    = 1200.0;

@@ -1,6 +1,39 @@
 /* HylcSampler: lifecycle, sub-objects, View (include/hylc/sampler.h). */
 #include "samplerimpl.h"
 
+PetscClassId  HYLC_SAMPLER_CLASSID;
+PetscLogEvent HYLC_SamplerRun;
+
+static PetscBool HylcSamplerPackageInitialized = PETSC_FALSE;
+
+static PetscErrorCode HylcSamplerFinalizePackage(void)
+{
+  PetscFunctionBegin;
+  HylcSamplerPackageInitialized = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcSamplerInitializePackage - Registers the class id HylcSampler and its log events (SAMPLER_Run). Called by
+  HylcSamplerCreate() and by HylcInitializePackage(); idempotent.
+
+  Not collective
+
+  Level: developer
+
+.seealso: HylcInitializePackage()
+@*/
+PetscErrorCode HylcSamplerInitializePackage(void)
+{
+  PetscFunctionBegin;
+  if (HylcSamplerPackageInitialized) PetscFunctionReturn(PETSC_SUCCESS);
+  HylcSamplerPackageInitialized = PETSC_TRUE;
+  PetscCall(PetscClassIdRegister("HylcSampler", &HYLC_SAMPLER_CLASSID));
+  PetscCall(PetscLogEventRegister("SAMPLER_Run", HYLC_SAMPLER_CLASSID, &HYLC_SamplerRun));
+  PetscCall(PetscRegisterFinalize(HylcSamplerFinalizePackage));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /*@C
   HylcSamplerCreate - Creates the sampling job: output samples.h5, the woven family's ranges, every term
   with 150 samples per 1D term and 50 per axis of a 2D term, batches of 1, progress every 5 s, the
@@ -25,7 +58,7 @@ PetscErrorCode HylcSamplerCreate(MPI_Comm comm, HylcSampler *s)
   PetscFunctionBegin;
   PetscValidPointer(s, 2);
   *s = NULL;
-  PetscCall(HylcInitializePackage());
+  PetscCall(HylcSamplerInitializePackage());
   PetscCall(PetscHeaderCreate(S, HYLC_SAMPLER_CLASSID, "HylcSampler", "Sampling job", "Sampler", comm, HylcSamplerDestroy, HylcSamplerView));
   PetscCallMPI(MPI_Comm_rank(comm, &S->rank));
   PetscCallMPI(MPI_Comm_size(comm, &S->size));
