@@ -11,11 +11,13 @@ static PetscErrorCode HylcPatternFinalizePackage(void)
 {
   PetscFunctionBegin;
   HylcPatternPackageInitialized = PETSC_FALSE;
+  PetscCall(HylcPatternRegistryDestroy_Private());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /*@C
-  HylcPatternInitializePackage - Registers the class id HylcPattern and its log events (PATTERN_Load, PATTERN_Write, PATTERN_Generate, PATTERN_Distance). Called by
+  HylcPatternInitializePackage - Registers the class id HylcPattern, its log events (PATTERN_Load,
+  PATTERN_Write, PATTERN_Generate, PATTERN_Distance) and the built-in pattern sources (HylcPatternRegisterAll()). Called by
   HylcPatternCreate() and by HylcInitializePackage(); idempotent.
 
   Not collective
@@ -34,6 +36,7 @@ PetscErrorCode HylcPatternInitializePackage(void)
   PetscCall(PetscLogEventRegister("PATTERN_Write", HYLC_PATTERN_CLASSID, &HYLC_PatternWrite));
   PetscCall(PetscLogEventRegister("PATTERN_Generate", HYLC_PATTERN_CLASSID, &HYLC_PatternGenerate));
   PetscCall(PetscLogEventRegister("PATTERN_Distance", HYLC_PATTERN_CLASSID, &HYLC_PatternDistance));
+  PetscCall(HylcPatternRegisterAll());
   PetscCall(PetscRegisterFinalize(HylcPatternFinalizePackage));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -117,17 +120,16 @@ PetscErrorCode HylcPatternSetOptionsPrefix(HylcPattern p, const char prefix[])
 
 PetscErrorCode HylcPatternSetType(HylcPattern p, HylcPatternType type)
 {
-  const char *known[] = {HYLCPATTERNFILE, HYLCPATTERNPLAIN, HYLCPATTERNBASKET, HYLCPATTERNTWILL, HYLCPATTERNSATIN, HYLCPATTERNSTOCKINETTE, HYLCPATTERNRIB};
-  PetscBool   ok      = PETSC_FALSE;
+  HylcPatternGenerator source;
 
   PetscFunctionBegin;
   PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
-  for (size_t i = 0; i < sizeof(known) / sizeof(known[0]); i++) {
-    PetscBool eq;
-    PetscCall(PetscStrcmp(type, known[i], &eq));
-    ok = (PetscBool)(ok || eq);
+  PetscCall(HylcPatternFindSource_Private(type, &source));
+  if (!source) {
+    char names[1024];
+    PetscCall(HylcPatternSourceNames_Private(", ", PETSC_FALSE, names, sizeof(names)));
+    SETERRQ(PetscObjectComm((PetscObject)p), PETSC_ERR_USER_INPUT, "Unknown pattern type '%s'; use one of %s", type, names);
   }
-  PetscCheck(ok, PetscObjectComm((PetscObject)p), PETSC_ERR_USER_INPUT, "Unknown pattern type '%s'; use one of file, plain, basket, twill, satin, stockinette, rib", type);
   PetscCall(PetscObjectChangeTypeName((PetscObject)p, type));
   p->setupcalled = PETSC_FALSE;
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -147,6 +149,31 @@ PetscErrorCode HylcPatternSetFileName(HylcPattern p, const char file[])
   PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
   PetscCall(PetscStrncpy(p->filename, file, sizeof(p->filename)));
   PetscCall(HylcPatternSetType(p, HYLCPATTERNFILE));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPatternGetFileName - The .pyp file the pattern loads (type "file"; HylcPatternSetFileName() or
+  -pattern_file), or "" if none was given.
+
+  Not collective
+
+  Input Parameter:
+. p - the pattern
+
+  Output Parameter:
+. file - the path (owned by the pattern)
+
+  Level: intermediate
+
+.seealso: HylcPatternSetFileName(), HylcPatternGetType()
+@*/
+PetscErrorCode HylcPatternGetFileName(HylcPattern p, const char *file[])
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
+  PetscValidPointer(file, 2);
+  *file = p->filename;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -207,7 +234,7 @@ static PetscErrorCode CheckSize(HylcPattern p, const char name[], PetscInt n, co
 
   Options (prefix "-pattern_" unless the object has another prefix):
 + -pattern_file <f.pyp>            - load this .pyp file (sets the type to "file")
-. -pattern_type <stockinette>      - file, plain, basket, twill, satin, stockinette, rib
+. -pattern_type <stockinette>      - file, or a registered generator: plain, basket, twill, satin, stockinette, rib, ... (HylcPatternRegister())
 . -pattern_radius <1e-3>           - generators: yarn radius (m)
 . -pattern_spacing <4r>            - wovens: distance between neighbouring parallel yarns (m)
 . -pattern_gap <0.1>               - wovens: clearance at crossings relative to 2r
@@ -220,25 +247,22 @@ static PetscErrorCode CheckSize(HylcPattern p, const char name[], PetscInt n, co
 @*/
 PetscErrorCode HylcPatternSetFromOptions(HylcPattern p)
 {
-  char        file[PETSC_MAX_PATH_LEN] = "", type[64];
-  PetscBool   flg, tflg, set[9] = {PETSC_FALSE}, sizeset = PETSC_FALSE, both;
-  PetscInt    n = 2, nsize = 0, tn;
-  const char *types[] = {HYLCPATTERNFILE, HYLCPATTERNPLAIN, HYLCPATTERNBASKET, HYLCPATTERNTWILL, HYLCPATTERNSATIN, HYLCPATTERNSTOCKINETTE, HYLCPATTERNRIB};
+  char                 file[PETSC_MAX_PATH_LEN] = "", type[64];
+  PetscBool            flg, fflg, tflg, set[9] = {PETSC_FALSE}, sizeset = PETSC_FALSE, both, isfile;
+  PetscInt             n = 2, nsize = 0;
+  HylcPatternGenerator source;
 
   PetscFunctionBegin;
   PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
+  PetscCall(HylcPatternInitializePackage()); /* the registry of -pattern_type */
   PetscObjectOptionsBegin((PetscObject)p);
   PetscCall(PetscStrncpy(type, ((PetscObject)p)->type_name, sizeof(type)));
-  PetscCall(PetscOptionsString("-pattern_file", "Periodic yarn pattern file (.pyp) to load", "HylcPatternLoad", p->filename, file, sizeof(file), &flg));
-  if (flg)
+  PetscCall(PetscOptionsString("-pattern_file", "Periodic yarn pattern file (.pyp) to load", "HylcPatternLoad", p->filename, file, sizeof(file), &fflg));
+  if (fflg)
     PetscCall(HylcPatternSetFileName(p, file));
   else if (p->filename[0])
     PetscCall(PetscStrncpy(type, HYLCPATTERNFILE, sizeof(type)));
-  PetscCall(PetscOptionsEList("-pattern_type", "Pattern source: a file or a generator", "HylcPatternSetType", types, 7, type, &n, &tflg));
-  (void)n;
-  if (tflg) PetscCall(HylcPatternSetType(p, types[n]));
-  both = (PetscBool)(flg && tflg && n != 0);
-  tn   = n;
+  PetscCall(PetscOptionsFList("-pattern_type", "Pattern source: a file or a generator (HylcPatternRegister())", "HylcPatternSetType", HylcPatternList, type, type, sizeof(type), &tflg));
   PetscCall(HylcOptionsReal("-pattern_radius", "Generators: yarn radius (m), > 0", "HylcPatternGenerate", p->gen.radius, &p->gen.radius, &set[0]));
   PetscCall(HylcOptionsReal("-pattern_spacing", "Wovens: distance between neighbouring parallel yarns (m); 0 = 4 r", "HylcPatternGenerate", p->gen.spacing, &p->gen.spacing, &set[1]));
   PetscCall(HylcOptionsReal("-pattern_gap", "Wovens: clearance at crossings relative to 2r; 0 = 0.1", "HylcPatternGenerate", p->gen.gap, &p->gen.gap, &set[2]));
@@ -256,7 +280,19 @@ PetscErrorCode HylcPatternSetFromOptions(HylcPattern p)
   PetscCall(PetscObjectProcessOptionsHandlers((PetscObject)p, PetscOptionsObject));
   PetscOptionsEnd();
   /* checked after PetscOptionsEnd(), so that an error leaves nothing allocated behind */
-  PetscCheck(!both, PetscObjectComm((PetscObject)p), PETSC_ERR_USER_INPUT, "Both -pattern_file %s and -pattern_type %s were given; use one", file, types[tn]);
+  if (tflg) {
+    PetscCall(HylcPatternFindSource_Private(type, &source));
+    if (!source) {
+      const char *prefix = ((PetscObject)p)->prefix;
+      char        names[1024];
+      PetscCall(HylcPatternSourceNames_Private(" ", PETSC_TRUE, names, sizeof(names)));
+      SETERRQ(PetscObjectComm((PetscObject)p), PETSC_ERR_USER, "Unknown option %s for -%spattern_type. Available options: %s", type, prefix ? prefix : "", names);
+    }
+    PetscCall(HylcPatternSetType(p, type));
+  }
+  PetscCall(PetscStrcmp(type, HYLCPATTERNFILE, &isfile));
+  both = (PetscBool)(fflg && tflg && !isfile);
+  PetscCheck(!both, PetscObjectComm((PetscObject)p), PETSC_ERR_USER_INPUT, "Both -pattern_file %s and -pattern_type %s were given; use one", file, type);
   PetscCall(CheckReal(p, "-pattern_radius", set[0], p->gen.radius, PETSC_TRUE));
   PetscCall(CheckReal(p, "-pattern_spacing", set[1], p->gen.spacing, PETSC_FALSE));
   PetscCall(CheckReal(p, "-pattern_gap", set[2], p->gen.gap, PETSC_FALSE));
@@ -281,9 +317,10 @@ PetscErrorCode HylcPatternSetUp(HylcPattern p)
   PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
   if (p->setupcalled && p->hasdata) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PetscStrcmp(((PetscObject)p)->type_name, HYLCPATTERNFILE, &isfile));
-  if (isfile) {
-    PetscCheck(p->filename[0], PetscObjectComm((PetscObject)p), PETSC_ERR_USER_INPUT, "Pattern type 'file' needs a file name (-pattern_file f.pyp)");
-    PetscCall(HylcPatternLoad(p, p->filename));
+  if (isfile) { /* the registered source "file" (registry.c) */
+    HylcPatternGenerator load;
+    PetscCall(HylcPatternFindSource_Private(HYLCPATTERNFILE, &load));
+    PetscCall((*load)(p, &p->gen));
   } else {
     char type[64];
     PetscCall(PetscStrncpy(type, ((PetscObject)p)->type_name, sizeof(type)));
