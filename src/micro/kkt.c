@@ -1,5 +1,5 @@
 /* HylcMicro: the KKT preconditioner (S22), a PCSHELL that solves the constrained Newton system by a Schur
-   complement around an ordinary PCCHOLESKY of K (prefix <micro_>factor_). The solver type of that
+   complement around an ordinary PCCHOLESKY of K (prefix <prefix>micro_factor_). The solver type of that
    factorization is PETSc's choice (-micro_factor_pc_factor_mat_solver_type hylc|petsc|cholmod|mumps,
    default hylc: HylcChol, include/hylc/chol.h); the ordering is METIS nested dissection (metisnd) for the
    solver types that use the PC's ordering. Indefiniteness is detected the same way for every solver type:
@@ -290,7 +290,7 @@ PetscErrorCode HylcMicroSetUpKKT_Private(HylcMicro M, PC pc)
   PetscFunctionBegin;
   PetscCall(PCFactorGetMatSolverType(M->inner, &type));
   PetscCall(PetscStrcmp(type, MATSOLVERCHOLMOD, &M->cholmod));
-  PetscCall(PetscSNPrintf(name, sizeof(name), "hylc KKT (S22): Schur complement around PCCHOLESKY, solver type %s (-%sfactor_pc_factor_mat_solver_type)", type ? type : "default", ((PetscObject)M)->prefix ? ((PetscObject)M)->prefix : ""));
+  PetscCall(PetscSNPrintf(name, sizeof(name), "hylc KKT (S22): Schur complement around PCCHOLESKY, solver type %s (-%smicro_factor_pc_factor_mat_solver_type)", type ? type : "default", ((PetscObject)M)->prefix ? ((PetscObject)M)->prefix : ""));
   PetscCall(PCShellSetName(pc, name));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -79,8 +79,8 @@ static void ParamsDefault(HylcMicroParams *p)
 }
 
 /*@C
-  HylcMicroCreate - Creates a microscale solver with the default parameters and the options prefix
-  "micro_". Its sub-objects, the periodic tile (HylcMicroGetPeriodic()), the SNES (HylcMicroGetSNES())
+  HylcMicroCreate - Creates a microscale solver with the default parameters and no options prefix (its
+  options are -micro_*). Its sub-objects, the periodic tile (HylcMicroGetPeriodic()), the SNES (HylcMicroGetSNES())
   and the factorization PC (HylcMicroGetFactorPC()), are created on first use. Not collective (each rank
   solves its samples alone; use PETSC_COMM_SELF).
 
@@ -104,7 +104,6 @@ PetscErrorCode HylcMicroCreate(MPI_Comm comm, HylcMicro *micro)
   PetscCall(PetscHeaderCreate(M, HYLC_MICRO_CLASSID, "HylcMicro", "Microscale Newton solver", "Micro", comm, HylcMicroDestroy, HylcMicroView));
   ParamsDefault(&M->par);
   PetscCall(PetscObjectChangeTypeName((PetscObject)M, "regularized_newton"));
-  PetscCall(PetscObjectSetOptionsPrefix((PetscObject)M, "micro_"));
   *micro = M;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -157,13 +156,14 @@ PetscErrorCode HylcMicroDestroy(HylcMicro *micro)
 }
 
 /*@C
-  HylcMicroSetOptionsPrefix - Sets the prefix of the solver's options (default "micro_"); its SNES has
-  the same prefix and the factorization PC the prefix followed by "factor_" (the periodic tile keeps its
-  own: -periodic_*, -macro_*). Not collective.
+  HylcMicroSetOptionsPrefix - Sets the prefix of the solver's options (default none: -micro_*, as every
+  stage spells its keys with its module name) and of its sub-objects: the periodic tile (-<prefix>periodic_*,
+  -<prefix>macro_*), the SNES (-<prefix>micro_snes_*, -<prefix>micro_ksp_*) and the factorization PC
+  (-<prefix>micro_factor_pc_*). Not collective.
 
   Input Parameters:
 + M      - the solver
-- prefix - the prefix (without the leading dash)
+- prefix - the prefix (without the leading dash; NULL: none)
 
   Level: intermediate
 
@@ -174,18 +174,22 @@ PetscErrorCode HylcMicroSetOptionsPrefix(HylcMicro M, const char prefix[])
   PetscFunctionBegin;
   PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
   PetscCall(PetscObjectSetOptionsPrefix((PetscObject)M, prefix));
-  if (M->snes) PetscCall(SNESSetOptionsPrefix(M->snes, prefix));
+  if (M->snes) {
+    PetscCall(SNESSetOptionsPrefix(M->snes, prefix));
+    PetscCall(SNESAppendOptionsPrefix(M->snes, "micro_"));
+  }
   if (M->inner) {
     PetscCall(PCSetOptionsPrefix(M->inner, prefix));
-    PetscCall(PCAppendOptionsPrefix(M->inner, "factor_"));
+    PetscCall(PCAppendOptionsPrefix(M->inner, "micro_factor_"));
   }
+  if (M->P) PetscCall(HylcPeriodicSetOptionsPrefix(M->P, prefix));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /*@C
   HylcMicroGetFactorPC - Gets the PCCHOLESKY that factors the Newton matrix K inside the KKT
   preconditioner, creating it on first use (solver type hylc, ordering metisnd, options prefix
-  "<prefix>factor_", e.g. -micro_factor_pc_factor_mat_solver_type). Not collective.
+  "<prefix>micro_factor_", e.g. -micro_factor_pc_factor_mat_solver_type). Not collective.
 
   Input Parameter:
 . M - the solver
@@ -210,7 +214,7 @@ PetscErrorCode HylcMicroGetFactorPC(HylcMicro M, PC *pc)
     PetscCall(PCFactorSetMatOrderingType(M->inner, HylcDefaultOrdering()));
     PetscCall(PCFactorSetMatSolverType(M->inner, MATSOLVERHYLC));
     PetscCall(PCSetOptionsPrefix(M->inner, ((PetscObject)M)->prefix));
-    PetscCall(PCAppendOptionsPrefix(M->inner, "factor_"));
+    PetscCall(PCAppendOptionsPrefix(M->inner, "micro_factor_"));
   }
   *pc = M->inner;
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -221,7 +225,7 @@ PetscErrorCode HylcMicroGetFactorPC(HylcMicro M, PC *pc)
   defaults: type newtonls, the energy as objective, the residual M g_y, the projected-gradient convergence
   test, at most 2000 iterations, the shell line search (step limit and backtracking), a KSPPREONLY whose PC
   is the KKT PCSHELL around the factorization PC (HylcMicroGetFactorPC()). Its options prefix is the
-  solver's (-micro_snes_*, -micro_ksp_*); HylcMicroSetFromOptions() calls SNESSetFromOptions() on it, so
+  solver's followed by micro_ (-micro_snes_*, -micro_ksp_*); HylcMicroSetFromOptions() calls SNESSetFromOptions() on it, so
   options override these defaults. The Jacobian and the vectors are given at HylcMicroSetUp(); a new
   pattern resets it (SNESReset()). Not collective.
 
@@ -485,8 +489,8 @@ PetscErrorCode HylcMicroSolve(HylcMicro M, const PetscReal z[6], HylcMicroResult
 }
 
 /*@C
-  HylcMicroGetPeriodic - Gets the periodic tile of the solver, creating it on first use (options
-  -periodic_*, -macro_*, read by HylcMicroSetFromOptions()); HylcMicroSetPattern() gives it the pattern.
+  HylcMicroGetPeriodic - Gets the periodic tile of the solver, creating it on first use with the solver's
+  prefix (options -<prefix>periodic_*, -<prefix>macro_*, read by HylcMicroSetFromOptions()); HylcMicroSetPattern() gives it the pattern.
   Not collective.
 
   Input Parameter:
@@ -504,7 +508,10 @@ PetscErrorCode HylcMicroGetPeriodic(HylcMicro M, HylcPeriodic *P)
   PetscFunctionBegin;
   PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
   PetscValidPointer(P, 2);
-  if (!M->P) PetscCall(HylcPeriodicCreate(PETSC_COMM_SELF, &M->P));
+  if (!M->P) {
+    PetscCall(HylcPeriodicCreate(PETSC_COMM_SELF, &M->P));
+    PetscCall(HylcPeriodicSetOptionsPrefix(M->P, ((PetscObject)M)->prefix));
+  }
   *P = M->P;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -391,7 +391,7 @@ static PetscErrorCode Converged(SNES snes, PetscInt it, PetscReal xnorm, PetscRe
 /* the SNES with every default of the method, before any of its options are read (HylcMicroGetSNES()):
    Newton with the objective, residual and convergence test above, the iteration cap 2000, the shell line
    search, a KSPPREONLY whose PC is the KKT PCSHELL of kkt.c around the factorization PC; the options
-   (-<prefix>snes_*, -<prefix>ksp_*, ...) are read by HylcMicroSetFromOptions() and override these */
+   (-<prefix>micro_snes_*, -<prefix>micro_ksp_*, ...) are read by HylcMicroSetFromOptions() and override these */
 PetscErrorCode HylcMicroCreateSNES_Private(HylcMicro M)
 {
   KSP            ksp;
@@ -403,6 +403,7 @@ PetscErrorCode HylcMicroCreateSNES_Private(HylcMicro M)
   PetscCall(PetscObjectGetOptionsPrefix((PetscObject)M, &prefix));
   PetscCall(SNESCreate(PETSC_COMM_SELF, &M->snes));
   PetscCall(SNESSetOptionsPrefix(M->snes, prefix));
+  PetscCall(SNESAppendOptionsPrefix(M->snes, "micro_"));
   PetscCall(SNESSetType(M->snes, SNESNEWTONLS));
   PetscCall(SNESSetObjective(M->snes, FormObjective, M));
   PetscCall(SNESSetFunction(M->snes, NULL, FormFunction, M));
@@ -442,6 +443,6 @@ PetscErrorCode HylcMicroSetUpSNES_Private(HylcMicro M)
   PetscCall(HylcMicroSetUpKKT_Private(M, pc));
   M->setupcalled = PETSC_TRUE;
   PetscCall(PetscLogEventEnd(HYLC_MicroSetUp, M, 0, 0, 0));
-  PetscCall(HylcMicroViewFromOptions(M, NULL, "-view"));
+  PetscCall(HylcMicroViewFromOptions(M, NULL, "-micro_view"));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -45,7 +45,7 @@ struct _p_HylcMicro {
   Mat             K;
   Vec             X, mvec;
   PetscReal      *yw, *gw; /* work: unscaled unknowns and gradient */
-  PC              inner;   /* PCCHOLESKY of K (prefix <micro_>factor_; solver type hylc by default) */
+  PC              inner;   /* PCCHOLESKY of K (prefix <prefix>micro_factor_; solver type hylc by default) */
   PetscBool       cholmod; /* the solver type is CHOLMOD (its not-positive-definite error is a failed factorization) */
   Mat             Bd, Zd;  /* dense n x m: the Schur right-hand sides M A^T and Z = K^-1 M A^T (on Bw, Z) */
   PetscReal      *Bw;
@@ -86,7 +86,7 @@ struct _p_HylcMicro {
   PetscBool       continued; /* the last solve started from a state given by HylcMicroSetInitialState() */
 };
 
-/* the prefix of the options, for messages */
+/* the object's options prefix ("" if none), for messages: "-%smicro_alpha_start" */
 static inline const char *HylcMicroPrefix_Private(HylcMicro M)
 {
   return ((PetscObject)M)->prefix ? ((PetscObject)M)->prefix : "";
