@@ -60,6 +60,9 @@ PETSC_EXTERN PetscErrorCode HylcFitViewFromOptions(HylcFit, PetscObject, const c
 PETSC_EXTERN PetscErrorCode HylcFitSetInput(HylcFit, const char path[]);
 /* Output files written by HylcFitRun() (-fit_output, -fit_json); NULL or "" for none. */
 PETSC_EXTERN PetscErrorCode HylcFitSetOutputs(HylcFit, const char h5[], const char json[]);
+/* The input and the outputs as set or read from the options (owned by the fit; "" for none). */
+PETSC_EXTERN PetscErrorCode HylcFitGetInput(HylcFit, const char *path[]);
+PETSC_EXTERN PetscErrorCode HylcFitGetOutputs(HylcFit, const char *h5[], const char *json[]);
 /* The family (sets the family's defaults of -fit_reg and the 2D bending knots; call before
    HylcFitSetFromOptions to let options override them). */
 PETSC_EXTERN PetscErrorCode HylcFitSetFamily(HylcFit, HylcFitFamily);

@@ -180,6 +180,57 @@ PetscErrorCode HylcFitSetOutputs(HylcFit fit, const char h5[], const char json[]
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcFitGetInput - The input file of the fit (HylcFitSetInput() or -fit_input; "" if none, or if the data
+  were set with HylcFitSetData()).
+
+  Not collective
+
+  Input Parameter:
+. fit - the fit
+
+  Output Parameter:
+. path - the path (owned by the fit)
+
+  Level: intermediate
+
+.seealso: HylcFitSetInput(), HylcFitGetOutputs()
+@*/
+PetscErrorCode HylcFitGetInput(HylcFit fit, const char *path[])
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(fit, HYLC_FIT_CLASSID, 1);
+  PetscValidPointer(path, 2);
+  *path = fit->input;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcFitGetOutputs - The files HylcFitRun() writes (HylcFitSetOutputs(), -fit_output and -fit_json; "" for
+  none).
+
+  Not collective
+
+  Input Parameter:
+. fit - the fit
+
+  Output Parameters:
++ h5   - the HDF5 material file (may be NULL; owned by the fit)
+- json - the ARCSim-HYLC JSON file (may be NULL; owned by the fit)
+
+  Level: intermediate
+
+.seealso: HylcFitSetOutputs(), HylcFitGetInput()
+@*/
+PetscErrorCode HylcFitGetOutputs(HylcFit fit, const char *h5[], const char *json[])
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(fit, HYLC_FIT_CLASSID, 1);
+  if (h5) *h5 = fit->output;
+  if (json) *json = fit->json;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode HylcFitSetFamily(HylcFit fit, HylcFitFamily family)
 {
   PetscFunctionBegin;

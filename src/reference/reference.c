@@ -18,18 +18,23 @@ PetscErrorCode HylcReferenceParamsDefault(HylcReferenceParams *p)
   p->hi         = 0.2;
   p->xtol       = 1e-4;
   p->maxEvals   = 80;
+  p->prefix[0]  = 0;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode HylcReferenceParamsSetFromOptions(MPI_Comm comm, HylcReferenceParams *p)
+PetscErrorCode HylcReferenceParamsSetFromOptions(MPI_Comm comm, const char prefix[], HylcReferenceParams *p)
 {
   PetscEnum kind = (PetscEnum)p->kind;
   PetscReal b[2] = {p->lo, p->hi};
   PetscInt  nb   = 2;
   PetscBool set;
+  size_t    len;
 
   PetscFunctionBegin;
-  PetscOptionsBegin(comm, NULL, "Reference state (Algorithm C1)", "HylcReferenceState");
+  PetscCall(PetscStrlen(prefix, &len));
+  PetscCheck(len < sizeof(p->prefix), comm, PETSC_ERR_ARG_SIZ, "Options prefix %s is longer than %d characters", prefix, (int)sizeof(p->prefix) - 1);
+  PetscCall(PetscStrncpy(p->prefix, prefix ? prefix : "", sizeof(p->prefix)));
+  PetscOptionsBegin(comm, prefix, "Reference state (Algorithm C1)", "HylcReferenceState");
   PetscCall(HylcOptionsReal("-reference_etol", "Stress-free relaxation: stop when the energy is below this (J)", "HylcReferenceStateCompute", p->etol, &p->etol, NULL));
   PetscCall(PetscOptionsInt("-reference_max_rounds", "Stress-free relaxation: at most this many reset-and-relax rounds", "HylcReferenceStateCompute", p->maxRounds, &p->maxRounds, NULL));
   PetscCall(PetscOptionsEnum("-reference_kind", "Tension factors: knit (rest lengths x 0.9, curvatures x 0.8) or woven (curvatures x 0.9); auto: knit if every yarn runs along x", "HylcReferenceStateCompute", Kinds, kind, &kind, NULL));
@@ -40,7 +45,7 @@ PetscErrorCode HylcReferenceParamsSetFromOptions(MPI_Comm comm, HylcReferencePar
   PetscCall(HylcOptionsReal("-reference_xtol", "In-plane minimum: Nelder-Mead simplex size tolerance (strain)", "HylcReferenceStateCompute", p->xtol, &p->xtol, NULL));
   PetscCall(PetscOptionsInt("-reference_max_evals", "In-plane minimum: at most this many solves", "HylcReferenceStateCompute", p->maxEvals, &p->maxEvals, NULL));
   PetscOptionsEnd();
-  PetscCheck(!set || (nb == 2 && b[0] < 0 && b[1] > 0 && b[0] > -1), comm, PETSC_ERR_USER_INPUT, "-reference_bounds needs lo,hi with -1 < lo < 0 < hi");
+  PetscCheck(!set || (nb == 2 && b[0] < 0 && b[1] > 0 && b[0] > -1), comm, PETSC_ERR_USER_INPUT, "-%sreference_bounds needs lo,hi with -1 < lo < 0 < hi", p->prefix);
   p->lo   = b[0];
   p->hi   = b[1];
   p->kind = (PetscInt)kind;
@@ -129,7 +134,7 @@ static PetscErrorCode InPlaneMinimum(HylcMicro M, const HylcReferenceParams *par
 }
 
 /* the equilibrium of pattern p at in-plane strain (sx, sy) as a new pattern */
-static PetscErrorCode Relaxed(HylcPattern p, const HylcYarnModel *model, PetscReal sx, PetscReal sy, HylcPattern *out, PetscReal *E, HylcMicroStatus *status)
+static PetscErrorCode Relaxed(HylcPattern p, const HylcYarnModel *model, const HylcReferenceParams *par, PetscReal sx, PetscReal sy, HylcPattern *out, PetscReal *E, HylcMicroStatus *status)
 {
   HylcMicro       M;
   HylcMicroResult r;
@@ -138,6 +143,7 @@ static PetscErrorCode Relaxed(HylcPattern p, const HylcYarnModel *model, PetscRe
 
   PetscFunctionBegin;
   PetscCall(HylcMicroCreate(PETSC_COMM_SELF, &M));
+  if (par->prefix[0]) PetscCall(HylcMicroSetOptionsPrefix(M, par->prefix));
   PetscCall(HylcMicroSetPattern(M, p, model));
   PetscCall(HylcMicroSetFromOptions(M));
   PetscCall(HylcMicroSolve(M, z, &r));
@@ -167,7 +173,7 @@ PetscErrorCode HylcReferenceStateCompute(HylcPattern in, const HylcYarnModel *mo
   PetscBool stuck = PETSC_FALSE;
   for (round = 0; par->stressFree && round < par->maxRounds; round++) {
     PetscCall(HylcPatternSetRestFromGeometry(p));
-    PetscCall(Relaxed(p, model, 0, 0, &q, &E, &st));
+    PetscCall(Relaxed(p, model, par, 0, 0, &q, &E, &st));
     PetscCall(HylcPatternDestroy(&p));
     p = q;
     if (v) PetscCall(PetscViewerASCIIPrintf(v, "[reference] stress-free round %d: E = %.6e J (%s)\n", (int)round, (double)E, HylcMicroStatuses[st]));
@@ -201,12 +207,13 @@ PetscErrorCode HylcReferenceStateCompute(HylcPattern in, const HylcYarnModel *mo
   if (par->minimum) {
     HylcMicro M;
     PetscCall(HylcMicroCreate(PETSC_COMM_SELF, &M));
+    if (par->prefix[0]) PetscCall(HylcMicroSetOptionsPrefix(M, par->prefix));
     PetscCall(HylcMicroSetPattern(M, p, model));
     PetscCall(HylcMicroSetFromOptions(M));
     PetscCall(InPlaneMinimum(M, par, v, best, &Eb));
     PetscCall(HylcMicroDestroy(&M));
   }
-  PetscCall(Relaxed(p, model, best[0], best[1], &q, &E, &st));
+  PetscCall(Relaxed(p, model, par, best[0], best[1], &q, &E, &st));
   PetscCheck(st == HYLC_MICRO_CONVERGED, PetscObjectComm((PetscObject)in), PETSC_ERR_NOT_CONVERGED, "The equilibrium at the in-plane minimum did not converge (%s)", HylcMicroStatuses[st]);
   PetscCall(HylcPatternDestroy(&p));
   /* 4. recentre */

@@ -111,8 +111,9 @@ PetscErrorCode HylcSamplerDestroy(HylcSampler *s)
 }
 
 /*@C
-  HylcSamplerSetOptionsPrefix - Sets the prefix of the sampler's own options (-<prefix>sampler_*,
-  -<prefix>sampler_view).
+  HylcSamplerSetOptionsPrefix - Sets the prefix of the sampler's options and of its sub-objects'
+  (-<prefix>sampler_*, -<prefix>pattern_*, -<prefix>yarn_*, -<prefix>reference_*, -<prefix>micro_* with the
+  solver's tile -<prefix>periodic_*, -<prefix>macro_*).
 
   Not collective
 
@@ -129,11 +130,13 @@ PetscErrorCode HylcSamplerSetOptionsPrefix(HylcSampler S, const char prefix[])
   PetscFunctionBegin;
   PetscValidHeaderSpecific(S, HYLC_SAMPLER_CLASSID, 1);
   PetscCall(PetscObjectSetOptionsPrefix((PetscObject)S, prefix));
+  if (S->pat) PetscCall(HylcPatternSetOptionsPrefix(S->pat, prefix));
+  if (S->micro) PetscCall(HylcMicroSetOptionsPrefix(S->micro, prefix));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /*@C
-  HylcSamplerGetPattern - The sampler's pattern, created (unset) on first use; HylcSamplerSetFromOptions()
+  HylcSamplerGetPattern - The sampler's pattern, created (unset, with the sampler's prefix) on first use; HylcSamplerSetFromOptions()
   reads its options and HylcSamplerSetUp() loads or generates it (and may replace it by its reference
   state). Borrowed: do not destroy it.
 
@@ -154,13 +157,16 @@ PetscErrorCode HylcSamplerGetPattern(HylcSampler S, HylcPattern *pat)
   PetscFunctionBegin;
   PetscValidHeaderSpecific(S, HYLC_SAMPLER_CLASSID, 1);
   PetscValidPointer(pat, 2);
-  if (!S->pat) PetscCall(HylcPatternCreate(PetscObjectComm((PetscObject)S), &S->pat));
+  if (!S->pat) {
+    PetscCall(HylcPatternCreate(PetscObjectComm((PetscObject)S), &S->pat));
+    PetscCall(HylcPatternSetOptionsPrefix(S->pat, ((PetscObject)S)->prefix));
+  }
   *pat = S->pat;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /*@C
-  HylcSamplerGetMicro - The solver of this rank's samples (on PETSC_COMM_SELF), created on first use;
+  HylcSamplerGetMicro - The solver of this rank's samples (on PETSC_COMM_SELF), created with the sampler's prefix on first use;
   HylcSamplerSetFromOptions() reads its options and HylcSamplerSetUp() gives it the pattern and sets it up.
   Borrowed: do not destroy it.
 
@@ -181,7 +187,10 @@ PetscErrorCode HylcSamplerGetMicro(HylcSampler S, HylcMicro *micro)
   PetscFunctionBegin;
   PetscValidHeaderSpecific(S, HYLC_SAMPLER_CLASSID, 1);
   PetscValidPointer(micro, 2);
-  if (!S->micro) PetscCall(HylcMicroCreate(PETSC_COMM_SELF, &S->micro));
+  if (!S->micro) {
+    PetscCall(HylcMicroCreate(PETSC_COMM_SELF, &S->micro));
+    PetscCall(HylcMicroSetOptionsPrefix(S->micro, ((PetscObject)S)->prefix));
+  }
   *micro = S->micro;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
