@@ -64,5 +64,8 @@ PETSC_EXTERN void           HylcFileAbortTemp(FILE **, const char[]);
 /* Raises on every rank of comm the error (code and message) that rank 0 met in work done alone with
    PetscReturnErrorHandler pushed (ierr: rank 0's code; ignored elsewhere). Collective. */
 PETSC_EXTERN PetscErrorCode HylcShareError(MPI_Comm, PetscErrorCode);
+/* A uniaxial curve as CSV (docs/fabric-uniaxial.md): the header strain,T_N_per_m,lateral_strain_sa,lateral_strain_s2
+   and one row per point (s2: sy for a test along x, sx along y), written atomically. Not collective. */
+PETSC_EXTERN PetscErrorCode HylcWriteUniaxialCSV(const char[], PetscInt, const PetscReal[], const PetscReal[], const PetscReal[], const PetscReal[]);
 /* Refuses options nothing has read (before any work). Collective. */
 PETSC_EXTERN PetscErrorCode HylcCheckOptionsUsed(MPI_Comm);

@@ -2,14 +2,17 @@ static const char help[] = "hylc-eval: the homogenized material model Psi(s) and
                            "  hylc-eval -material stock1.json -strain 0.1,0,0,0,0,0\n"
                            "  hylc-eval -material model.h5 -strain 0,0.2,0,50,10,-20 -derivatives\n"
                            "  hylc-eval -material stock1.json -eval_hdf5 stock1.h5     (convert; also -eval_json)\n"
-                           "  hylc-eval -material stock1.json -eval_input strains.txt -eval_output out.txt [-derivatives]\n\n"
+                           "  hylc-eval -material stock1.json -eval_input strains.txt -eval_output out.txt [-derivatives]\n"
+                           "  hylc-eval -material stock1.json -eval_uniaxial x -eval_uniaxial_strains 0.05,0.1,0.2 -eval_uniaxial_csv x.csv\n\n"
                            "The material is an ARCSim-HYLC JSON table or a hylc HDF5 file (docs/material.md), recognized by\n"
                            "content. The strain is s = (sx, sa, sy, II00, II01, II11): stretches and shear (1), the second\n"
                            "fundamental form (1/m). Prints 'psi: <J/m^2>' and, with -derivatives, 'grad:' (dPsi/ds, 6 numbers)\n"
-                           "and 'hessian:' (6 lines of 6).\n\n";
+                           "and 'hessian:' (6 lines of 6). With -eval_uniaxial x|y: the homogeneous uniaxial tension state at each\n"
+                           "stretch (Psi minimized over the two free strains; T = dPsi/ds in N/m; docs/fabric-uniaxial.md).\n\n";
 
 #include <hylc/material.h>
 #include <hylc/files.h>
+#include <hylc/options.h>
 #include <hylc/table.h>
 #include <hdf5.h>
 #include <errno.h>
@@ -162,6 +165,40 @@ static PetscErrorCode EvalBatch(HylcMaterial mat, const char in[], const char ou
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* -eval_uniaxial: the uniaxial states at the stretches s[0..n), the first from the lowest point of a grid of the
+   lateral strains, each other from the lateral strains of the one before (a loading path) */
+static PetscErrorCode EvalUniaxial(HylcMaterial mat, PetscInt dir, PetscInt n, const PetscReal s[], const char csv[])
+{
+  PetscReal  *T, *sa, *s2, lat[2] = {0, 0};
+  PetscMPIInt rank;
+
+  PetscFunctionBegin;
+  PetscCall(PetscMalloc3(n, &T, n, &sa, n, &s2));
+  for (PetscInt i = 0; i < n; i++) {
+    PetscReal psi;
+    char      buf[256];
+    PetscCall(HylcMaterialUniaxial(mat, dir, s[i], i ? lat : NULL, &T[i], lat, &psi, NULL));
+    sa[i] = lat[0];
+    s2[i] = lat[1];
+    snprintf(buf, sizeof(buf), "uniaxial %s: s %.6g T %.9e N/m sa %.6e %s %.6e psi %.10e\n", dir ? "y" : "x", (double)s[i], (double)T[i], (double)sa[i], dir ? "sx" : "sy", (double)s2[i], (double)psi);
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s", buf));
+  }
+  for (PetscInt i = 0; i < n; i++)
+    if (s[i] > 0) {
+      char buf[160];
+      snprintf(buf, sizeof(buf), "poisson ratio -%s/s%s at s = %g: %.6g\n", dir ? "sx" : "sy", dir ? "y" : "x", (double)s[i], (double)(-s2[i] / s[i]));
+      PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s", buf));
+      break;
+    }
+  PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
+  if (csv[0]) {
+    if (rank == 0) PetscCall(HylcWriteUniaxialCSV(csv, n, s, T, sa, s2));
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "wrote %s\n", csv));
+  }
+  PetscCall(PetscFree3(T, sa, s2));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* the work of hylc-eval on the material mat (created and destroyed by Run, also on an error) */
 static PetscErrorCode Eval(HylcMaterial mat)
 {
@@ -170,6 +207,10 @@ static PetscErrorCode Eval(HylcMaterial mat)
   char      file[PETSC_MAX_PATH_LEN] = "", strain[512] = "", json[PETSC_MAX_PATH_LEN] = "", h5[PETSC_MAX_PATH_LEN] = "", matFile[PETSC_MAX_PATH_LEN] = "";
   PetscBool hasFile, hasStrain, deriv = PETSC_FALSE, help, hasJson, hasH5, hasMatFile;
   PetscReal s[6], psi, grad[6], hess[36];
+  char      udir[16] = "", ucsv[PETSC_MAX_PATH_LEN] = "";
+  PetscBool hasUni, hasUStrains, hasUCsv;
+  PetscReal ustrain[256] = {0.05, 0.1, 0.2};
+  PetscInt  nu = 256, udirn = 0;
 
   PetscFunctionBeginUser;
   PetscOptionsBegin(PETSC_COMM_WORLD, NULL, "hylc-eval options", "hylc-eval");
@@ -180,7 +221,22 @@ static PetscErrorCode Eval(HylcMaterial mat)
   PetscCall(PetscOptionsString("-eval_hdf5", "Write the material as hylc HDF5 to this file (never the input)", "HylcMaterialWriteHDF5", h5, h5, sizeof(h5), &hasH5));
   PetscCall(PetscOptionsString("-eval_input", "Batch mode: evaluate at the strains of this file (text: 6 numbers per line; HDF5: dataset /strain or /samples/strain, N x 6)", "HylcMaterialEvaluate", bin, bin, sizeof(bin), &hasIn));
   PetscCall(PetscOptionsString("-eval_output", "Batch mode: write psi (and with -derivatives grad, hessian) per strain here: text, or HDF5 if it ends in .h5", "HylcMaterialEvaluate", bout, bout, sizeof(bout), &hasOut));
+  PetscCall(PetscOptionsString("-eval_uniaxial", "Uniaxial tension mode: x or y, the material axis of the prescribed stretch; Psi minimized over the other two in-plane strains, bending zero (docs/fabric-uniaxial.md)", "HylcMaterialUniaxial", udir, udir, sizeof(udir), &hasUni));
+  PetscCall(HylcOptionsRealArray("-eval_uniaxial_strains", "Uniaxial mode: the stretches s in [0, 1) (strain, 0 at rest; default 0.05,0.1,0.2; at most 256), in this order: the first from the lowest point of a grid of the lateral strains, each other from the lateral strains of the one before", "HylcMaterialUniaxial", ustrain, &nu, &hasUStrains));
+  PetscCall(PetscOptionsString("-eval_uniaxial_csv", "Uniaxial mode: write strain,T_N_per_m,lateral_strain_sa,lateral_strain_s2 (T in N/m) to this CSV file", "HylcWriteUniaxialCSV", ucsv, ucsv, sizeof(ucsv), &hasUCsv));
   PetscOptionsEnd();
+  if (!hasUStrains) nu = 3;
+  PetscCheck(hasUni || (!hasUStrains && !hasUCsv), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-eval_uniaxial_strains and -eval_uniaxial_csv need -eval_uniaxial x|y");
+  PetscCheck(!hasUStrains || nu > 0, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-eval_uniaxial_strains: needs at least one stretch");
+  PetscCheck(!hasUCsv || ucsv[0], PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-eval_uniaxial_csv needs a file name");
+  if (hasUni) {
+    PetscBool isx, isy;
+    PetscCall(PetscStrcmp(udir, "x", &isx));
+    PetscCall(PetscStrcmp(udir, "y", &isy));
+    PetscCheck(isx || isy, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-eval_uniaxial %s: unknown direction (x or y, the material axis of the stretch)", udir);
+    udirn = isy ? 1 : 0;
+    for (PetscInt i = 0; i < nu; i++) PetscCheck(ustrain[i] >= 0 && ustrain[i] < 1, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-eval_uniaxial_strains: stretch %g is outside [0, 1) (a uniaxial state is a tension test; a compressed strip buckles)", (double)ustrain[i]);
+  }
   PetscCall(PetscOptionsGetString(NULL, NULL, "-material_file", matFile, sizeof(matFile), &hasMatFile));
   PetscCheck(!(hasFile && hasMatFile), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "Both -material and -material_file were given; use one");
   PetscCall(PetscOptionsHasHelp(NULL, &help));
@@ -197,7 +253,7 @@ static PetscErrorCode Eval(HylcMaterial mat)
   PetscCheck(hasIn == hasOut, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "Batch mode needs both -eval_input strains.txt|.h5 and -eval_output out.txt|.h5");
   PetscCheck(!hasIn || (bin[0] && bout[0]), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-eval_input and -eval_output need file names");
   PetscCheck(!(hasIn && hasStrain), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-strain and -eval_input exclude each other");
-  PetscCheck(hasStrain || hasJson || hasH5 || hasIn, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "Nothing to do: give -strain sx,sa,sy,II00,II01,II11 (or -eval_json / -eval_hdf5 to convert the material)");
+  PetscCheck(hasStrain || hasJson || hasH5 || hasIn || hasUni, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "Nothing to do: give -strain sx,sa,sy,II00,II01,II11 (or -eval_json / -eval_hdf5 to convert the material, -eval_uniaxial x|y for the uniaxial states)");
   PetscCheck(!deriv || hasStrain || hasIn, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-derivatives needs -strain");
   if (hasStrain) PetscCall(ParseStrain(strain, s));
   /* every file before any work (include/hylc/files.h): the inputs readable, the outputs writable and
@@ -212,6 +268,7 @@ static PetscErrorCode Eval(HylcMaterial mat)
     if (!ierr && hasIn) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, bout, "-eval_output");
     if (!ierr && hasJson) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, json, "-eval_json");
     if (!ierr && hasH5) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, h5, "-eval_hdf5");
+    if (!ierr && hasUCsv) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, ucsv, "-eval_uniaxial_csv");
     if (!ierr) ierr = HylcFilesCheck(files);
     PetscCall(HylcFilesDestroy(&files));
     PetscCall(ierr);
@@ -235,6 +292,7 @@ static PetscErrorCode Eval(HylcMaterial mat)
     if (saturated) PetscCall(PetscFPrintf(PETSC_COMM_WORLD, stderr, "hylc: warning: at this strain a value exceeds the double range and is printed as +-%.17g (saturated)\n", (double)PETSC_MAX_REAL));
   }
   if (hasIn) PetscCall(EvalBatch(mat, bin, bout, deriv));
+  if (hasUni) PetscCall(EvalUniaxial(mat, udirn, nu, ustrain, ucsv));
   if (hasJson) {
     PetscCall(HylcMaterialWriteJSON(mat, json));
     PetscCall(PetscPrintf(PETSC_COMM_WORLD, "wrote %s\n", json));

@@ -346,6 +346,101 @@ PetscErrorCode HylcMicroSetSaddleEscape(HylcMicro M, PetscBool test, PetscInt ma
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+const char *const HylcMicroUniaxialGradients[] = {"envelope", "fd", "HylcMicroUniaxialGradient", "HYLC_MICRO_UNIAXIAL_", NULL};
+
+/*@C
+  HylcMicroSetUniaxial - Sets how HylcMicroSolveUniaxial() minimizes Psi over the two free (lateral) strains:
+  a Newton method whose gradient is that of gradient, whose Hessian is the forward difference of the lateral
+  gradient with step h, with steps of at most maxStep in each strain and a backtracking line search on Psi.
+  Not collective.
+
+  Input Parameters:
++ M        - the solver
+. gradient - HYLC_MICRO_UNIAXIAL_ENVELOPE (default: the envelope theorem at each equilibrium,
+             HylcMicroGetStrainGradient()) or HYLC_MICRO_UNIAXIAL_FD (central differences of Psi with step
+             h over continued solves)
+. xtol     - converged when the Newton step to the minimizer predicted at the state is at most xtol in each
+             lateral strain (default 1e-5; PETSC_DEFAULT keeps the value)
+. maxIt    - Newton steps (default 30)
+. h        - difference step, a strain (default 1e-4)
+- maxStep  - largest change of a lateral strain per Newton step (default 0.05)
+
+  Options Database Keys:
++ -micro_uniaxial_gradient <envelope> - envelope or fd
+. -micro_uniaxial_xtol <1e-5> - xtol
+. -micro_uniaxial_max_it <30> - maxIt
+. -micro_uniaxial_fd_step <1e-4> - h
+- -micro_uniaxial_max_step <0.05> - maxStep
+
+  Level: intermediate
+
+.seealso: HylcMicroSolveUniaxial(), HylcMicroGetStrainGradient()
+@*/
+PetscErrorCode HylcMicroSetUniaxial(HylcMicro M, HylcMicroUniaxialGradient gradient, PetscReal xtol, PetscInt maxIt, PetscReal h, PetscReal maxStep)
+{
+  const char *p;
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
+  p = HylcMicroPrefix_Private(M);
+  PetscCheck(gradient == HYLC_MICRO_UNIAXIAL_ENVELOPE || gradient == HYLC_MICRO_UNIAXIAL_FD, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_uniaxial_gradient %d: must be envelope or fd", p, (int)gradient);
+  M->par.uniGrad = gradient;
+  if (xtol != (PetscReal)PETSC_DEFAULT) {
+    PetscCheck(xtol > 0 && xtol < 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_uniaxial_xtol %g: must be in (0, 1)", p, (double)xtol);
+    M->par.uniXtol = xtol;
+  }
+  if (maxIt != PETSC_DEFAULT) {
+    PetscCheck(maxIt >= 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_uniaxial_max_it %" PetscInt_FMT ": must be at least 1", p, maxIt);
+    M->par.uniMaxIt = maxIt;
+  }
+  if (h != (PetscReal)PETSC_DEFAULT) {
+    PetscCheck(h > 0 && h <= 0.01, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_uniaxial_fd_step %g: must be in (0, 0.01]", p, (double)h);
+    M->par.uniH = h;
+  }
+  if (maxStep != (PetscReal)PETSC_DEFAULT) {
+    PetscCheck(maxStep > 0 && maxStep <= 0.5, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_uniaxial_max_step %g: must be in (0, 0.5]", p, (double)maxStep);
+    M->par.uniMaxStep = maxStep;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcMicroSetUniaxialTolerances - Sets the accuracy of HylcMicroSolveUniaxial(): the relative tolerance of its
+  microscale solves (-micro_rtol while it runs; the lateral minimization needs gradients well below the
+  lateral stresses it drives to zero) and the gradient test that ends it when a line search finds no decrease
+  (Psi is then at its noise level: nearby equilibria of the tile differ by about 1e-7 relative). Not collective.
+
+  Input Parameters:
++ M    - the solver
+. rtol - -micro_rtol of the uniaxial solves (default 1e-8; PETSC_DEFAULT keeps the value)
+- gtol - converged after a failed line search if the lateral gradient is at most gtol |T| (default 1e-4)
+
+  Options Database Keys:
++ -micro_uniaxial_rtol <1e-8> - rtol
+- -micro_uniaxial_gtol <1e-4> - gtol
+
+  Level: intermediate
+
+.seealso: HylcMicroSolveUniaxial(), HylcMicroSetUniaxial(), HylcMicroSetTolerances()
+@*/
+PetscErrorCode HylcMicroSetUniaxialTolerances(HylcMicro M, PetscReal rtol, PetscReal gtol)
+{
+  const char *p;
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
+  p = HylcMicroPrefix_Private(M);
+  if (rtol != (PetscReal)PETSC_DEFAULT) {
+    PetscCheck(rtol > 0 && rtol < 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_uniaxial_rtol %g: must be in (0, 1)", p, (double)rtol);
+    M->par.uniRtol = rtol;
+  }
+  if (gtol != (PetscReal)PETSC_DEFAULT) {
+    PetscCheck(gtol >= 0 && gtol < 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_uniaxial_gtol %g: must be in [0, 1)", p, (double)gtol);
+    M->par.uniGtol = gtol;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /*@C
   HylcMicroSetFromOptions - Reads the options of the Newton solver (-micro_*, after the solver's prefix if
   it has one) and, as SLEPc's EPSSetFromOptions() calls STSetFromOptions(), those of its sub-objects,
@@ -367,6 +462,8 @@ PetscErrorCode HylcMicroSetSaddleEscape(HylcMicro M, PetscBool test, PetscInt ma
 . -micro_rtol, -micro_atol, -micro_ctol, -micro_max_time - HylcMicroSetTolerances()
 . -micro_factor_indefinite - HylcMicroSetIndefinite()
 . -micro_saddle_test, -micro_saddle_escapes, -micro_saddle_tol - HylcMicroSetSaddleEscape()
+. -micro_uniaxial_gradient, -micro_uniaxial_xtol, -micro_uniaxial_max_it, -micro_uniaxial_fd_step, -micro_uniaxial_max_step - HylcMicroSetUniaxial()
+. -micro_uniaxial_rtol, -micro_uniaxial_gtol - HylcMicroSetUniaxialTolerances()
 . -micro_view - HylcMicroView() at set-up
 . -periodic_*, -macro_* - HylcPeriodicSetFromOptions() of HylcMicroGetPeriodic()
 . -micro_factor_pc_* - PCSetFromOptions() of HylcMicroGetFactorPC()
@@ -420,6 +517,13 @@ PetscErrorCode HylcMicroSetFromOptions(HylcMicro M)
   PetscCall(PetscOptionsBool("-micro_saddle_test", "Second-order test of converged states: count the negative eigenvalues of the Hessian on the constraints' tangent space (implied by -micro_saddle_escapes > 0)", "HylcMicroSetSaddleEscape", p.saddleTest, &p.saddleTest, NULL));
   PetscCall(PetscOptionsInt("-micro_saddle_escapes", "Second-order test: escapes from saddle points (negative curvature on the constraints' tangent space) along negative curvature, per solve", "HylcMicroSetSaddleEscape", p.saddleMax, &p.saddleMax, NULL));
   PetscCall(HylcOptionsReal("-micro_saddle_tol", "Second-order test: curvature below -saddle_tol x max|diag(M H M)| is negative", "HylcMicroSetSaddleEscape", p.saddleTol, &p.saddleTol, NULL));
+  PetscCall(PetscOptionsEnum("-micro_uniaxial_gradient", "Uniaxial state (HylcMicroSolveUniaxial): dPsi/dz by the envelope theorem at each equilibrium, or by central differences of Psi (fd, 6 more solves per point)", "HylcMicroSetUniaxial", HylcMicroUniaxialGradients, (PetscEnum)p.uniGrad, (PetscEnum *)&p.uniGrad, NULL));
+  PetscCall(HylcOptionsReal("-micro_uniaxial_xtol", "Uniaxial state: converged when the predicted Newton step in the lateral strains is at most this (strain, dimensionless)", "HylcMicroSetUniaxial", p.uniXtol, &p.uniXtol, NULL));
+  PetscCall(PetscOptionsInt("-micro_uniaxial_max_it", "Uniaxial state: Newton steps in the lateral strains", "HylcMicroSetUniaxial", p.uniMaxIt, &p.uniMaxIt, NULL));
+  PetscCall(HylcOptionsReal("-micro_uniaxial_fd_step", "Uniaxial state: difference step of the lateral Hessian and of the fd gradient (strain, dimensionless)", "HylcMicroSetUniaxial", p.uniH, &p.uniH, NULL));
+  PetscCall(HylcOptionsReal("-micro_uniaxial_max_step", "Uniaxial state: largest change of a lateral strain per Newton step (strain, dimensionless)", "HylcMicroSetUniaxial", p.uniMaxStep, &p.uniMaxStep, NULL));
+  PetscCall(HylcOptionsReal("-micro_uniaxial_rtol", "Uniaxial state: -micro_rtol of its microscale solves (relative, dimensionless)", "HylcMicroSetUniaxialTolerances", p.uniRtol, &p.uniRtol, NULL));
+  PetscCall(HylcOptionsReal("-micro_uniaxial_gtol", "Uniaxial state: converged after a line search without decrease if |lateral gradient| <= gtol |T| (dimensionless)", "HylcMicroSetUniaxialTolerances", p.uniGtol, &p.uniGtol, NULL));
   PetscCall(PetscOptionsName("-micro_view", "Print the solver at set-up", "HylcMicroView", &flg));
   PetscOptionsEnd();
   if (schedSet) { /* checked after PetscOptionsEnd(), which must run */
@@ -442,6 +546,8 @@ PetscErrorCode HylcMicroSetFromOptions(HylcMicro M)
   PetscCall(HylcMicroSetTolerances(M, p.rtol, p.atol, p.ctol, p.maxTime));
   PetscCall(HylcMicroSetIndefinite(M, p.indefinite));
   PetscCall(HylcMicroSetSaddleEscape(M, p.saddleTest, p.saddleMax, p.saddleTol));
+  PetscCall(HylcMicroSetUniaxial(M, (HylcMicroUniaxialGradient)p.uniGrad, p.uniXtol, p.uniMaxIt, p.uniH, p.uniMaxStep));
+  PetscCall(HylcMicroSetUniaxialTolerances(M, p.uniRtol, p.uniGtol));
   /* the sub-objects, created with their defaults first so that the options override them */
   PetscCall(HylcMicroGetPeriodic(M, &P));
   PetscCall(HylcPeriodicSetFromOptions(P));
@@ -501,6 +607,8 @@ PetscErrorCode HylcMicroView(HylcMicro M, PetscViewer viewer)
     snprintf(buf, sizeof(buf), "second-order test: curvature below -%g max|diag(M H M)| on the tangent space; up to %d saddle escapes per solve\n", (double)p->saddleTol, (int)p->saddleMax);
   else
     snprintf(buf, sizeof(buf), "second-order test: off (converged states may be saddle points)\n");
+  PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
+  snprintf(buf, sizeof(buf), "uniaxial state: gradient %s, Newton in the lateral strains to a predicted step <= %g (or |lateral gradient| <= %g |T| when a line search fails), at most %d steps of <= %g, difference step %g, solves with rtol %g\n", HylcMicroUniaxialGradients[p->uniGrad], (double)p->uniXtol, (double)p->uniGtol, (int)p->uniMaxIt, (double)p->uniMaxStep, (double)p->uniH, (double)p->uniRtol);
   PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
   if (!M->pat)
     PetscCall(PetscViewerASCIIPrintf(viewer, "no pattern set\n"));

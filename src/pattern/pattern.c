@@ -63,7 +63,7 @@ PetscErrorCode HylcPatternCreate(MPI_Comm comm, HylcPattern *pat)
   PetscCall(HylcPatternInitializePackage());
   PetscCall(PetscHeaderCreate(p, HYLC_PATTERN_CLASSID, "HylcPattern", "Periodic yarn pattern", "Pattern", comm, HylcPatternDestroy, HylcPatternView));
   PetscCall(HylcPatternGenParamsDefault(&p->gen));
-  p->viewDensity    = 1200.0;
+  p->viewDensity    = 0; /* the shared default, HylcDefaultYarnDensity(r): what hylc-fit and the JSON use */
   p->viewExcludeArc = 3.0;
   PetscCall(PetscObjectChangeTypeName((PetscObject)p, HYLCPATTERNSTOCKINETTE));
   *pat = p;
@@ -242,7 +242,7 @@ static PetscErrorCode CheckSize(HylcPattern p, const char name[], PetscInt n, co
 . -pattern_seglen <r>              - generators: target edge length (m)
 . -pattern_size <nx,ny>            - generators: tile size in threads or stitches
 . -pattern_consistent_periods      - loader: use the periods implied by the periodic edges' rest lengths
-. -pattern_density <1200>          - volumetric yarn density used by the summary (kg/m^3)
+. -pattern_density <0>             - volumetric yarn density used by the summary (kg/m^3); 0: 0.12 kg/m^2 / r, the rule of hylc-fit and the tables
 - -pattern_exclude_arc <3>         - summary: same-yarn pairs closer than this rest arc (units of r) are not contacts
 @*/
 PetscErrorCode HylcPatternSetFromOptions(HylcPattern p)
@@ -274,7 +274,7 @@ PetscErrorCode HylcPatternSetFromOptions(HylcPattern p)
   PetscCall(PetscOptionsIntArray("-pattern_size", "Generators: tile size nx,ny (each 1 to " HYLC_STR(HYLC_PATTERN_MAX_SIZE) ") in threads (wovens) or wales,courses (knits); default the smallest repeat", "HylcPatternGenerate", p->gen.size, &n, &flg));
   nsize   = n;
   sizeset = flg;
-  PetscCall(HylcOptionsReal("-pattern_density", "Volumetric yarn density for the summary's area density (kg/m^3); 0 = the yarn model's default", "HylcPatternGetAreaDensity", p->viewDensity, &p->viewDensity, &set[7]));
+  PetscCall(HylcOptionsReal("-pattern_density", "Volumetric yarn density for the summary's area density (kg/m^3); 0 = 0.12 kg/m^2 / r (120 kg/m^3 at r = 1 mm), the rule of hylc-fit, hylc-sample's raw export and the paper's tables", "HylcPatternGetAreaDensity", p->viewDensity, &p->viewDensity, &set[7]));
   PetscCall(HylcOptionsReal("-pattern_exclude_arc", "Summary: same-yarn segment pairs closer than this rest arc length (units of r) are not contacts", "HylcPatternMinSegmentDistance", p->viewExcludeArc, &p->viewExcludeArc, &set[8]));
   PetscCall(PetscOptionsBool("-pattern_consistent_periods", "Loader: replace the stored periods by the ones the rest lengths of the periodic edges imply (basket.pyp, method-spec 2.1b)", "HylcPatternLoad", p->consistentPeriods, &p->consistentPeriods, NULL));
   PetscCall(PetscObjectProcessOptionsHandlers((PetscObject)p, PetscOptionsObject));

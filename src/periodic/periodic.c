@@ -155,6 +155,7 @@ PetscErrorCode HylcPeriodicReset_Private(HylcPeriodic P)
   PetscCall(PetscFree2(P->mref, P->mref0));
   PetscCall(PetscFree3(P->y, P->y0, P->x));
   PetscCall(PetscFree3(P->A, P->dL, P->AAtinv));
+  PetscCall(PetscFree(P->crow));
   HylcBVHDestroy(&P->bvh);
   PetscCall(PetscFree(P->segx));
   HylcPairListFree(&P->cand);

@@ -173,3 +173,33 @@ void HylcFileAbortTemp(FILE **fp, const char tmp[])
   *fp = NULL;
   if (tmp && tmp[0]) unlink(tmp);
 }
+
+/*@C
+  HylcWriteUniaxialCSV - Writes a uniaxial tension curve as CSV (docs/fabric-uniaxial.md): the header line
+  "strain,T_N_per_m,lateral_strain_sa,lateral_strain_s2" and one line per point, 17 significant digits.
+  strain is the prescribed stretch s (0 at rest), T = dPsi/ds the force per unit width (N/m), sa the
+  cosine of the angle between the material axes and s2 the lateral stretch (sy for a test along x, sx
+  along y). Written atomically (HylcFileOpenTemp()). Not collective.
+
+  Input Parameters:
++ path   - the file
+. n      - the number of points
+. strain - the stretches
+. T      - the forces per unit width (N/m)
+. sa     - the shears
+- s2     - the lateral stretches
+
+  Level: intermediate
+@*/
+PetscErrorCode HylcWriteUniaxialCSV(const char path[], PetscInt n, const PetscReal strain[], const PetscReal T[], const PetscReal sa[], const PetscReal s2[])
+{
+  char  tmp[PETSC_MAX_PATH_LEN + 32];
+  FILE *fp;
+
+  PetscFunctionBegin;
+  PetscCall(HylcFileOpenTemp(path, tmp, sizeof(tmp), &fp));
+  fprintf(fp, "strain,T_N_per_m,lateral_strain_sa,lateral_strain_s2\n");
+  for (PetscInt i = 0; i < n; i++) fprintf(fp, "%.17g,%.17g,%.17g,%.17g\n", (double)strain[i], (double)T[i], (double)sa[i], (double)s2[i]);
+  PetscCall(HylcFileCommitTemp(&fp, tmp, path));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
