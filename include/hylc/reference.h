@@ -6,15 +6,15 @@
 #include <hylc/micro.h>
 
 typedef struct {
-  PetscReal etol;       /* stress-free: stop when the relaxed energy is below this (J); 1e-10 */
-  PetscInt  maxRounds;  /* stress-free: at most this many reset + relax rounds; 30 */
-  PetscInt  kind;       /* 0: auto (knit if every yarn runs along x), 1: knit, 2: woven */
-  PetscBool stressFree; /* the stress-free relaxation (rest values reset to the geometry); false keeps the rest data */
-  PetscBool tension;    /* apply the tension factors */
-  PetscBool minimum;    /* find the in-plane minimum */
-  PetscReal lo, hi;     /* bounds of sx and sy for the minimum; -0.4, 0.2 */
-  PetscReal xtol;       /* Nelder-Mead: simplex size tolerance in strain; 1e-4 */
-  PetscInt  maxEvals;   /* Nelder-Mead: at most this many solves; 80 */
+  PetscReal etol;        /* stress-free: stop when the relaxed energy is below this (J); 1e-10 */
+  PetscInt  maxRounds;   /* stress-free: at most this many reset + relax rounds; 30 */
+  PetscInt  kind;        /* 0: auto (knit if every yarn runs along x), 1: knit, 2: woven */
+  PetscBool stressFree;  /* the stress-free relaxation (rest values reset to the geometry); false keeps the rest data */
+  PetscBool tension;     /* apply the tension factors */
+  PetscBool minimum;     /* find the in-plane minimum */
+  PetscReal lo, hi;      /* bounds of sx and sy for the minimum; -0.4, 0.2 */
+  PetscReal xtol;        /* Nelder-Mead: simplex size tolerance in strain; 1e-4 */
+  PetscInt  maxEvals;    /* Nelder-Mead: at most this many solves; 80 */
   char      prefix[256]; /* options prefix of the solvers the computation creates (-<prefix>micro_*); "" none */
 } HylcReferenceParams;
 

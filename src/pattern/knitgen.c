@@ -12,9 +12,9 @@ static PetscErrorCode GenerateKnit(HylcPattern p, const HylcPatternGenParams *g,
   const PetscBool rib  = (PetscBool)(kt == HYLC_KNIT_RIB);
   HylcKnitParams  kp;
   int             nyarns, *nverts = NULL;
-  double        *pts = NULL, px, py;
-  char           msg[256];
-  PetscInt      *nv, *winding;
+  double         *pts = NULL, px, py;
+  char            msg[256];
+  PetscInt       *nv, *winding;
 
   PetscFunctionBegin;
   kp.r        = g->radius;

@@ -13,7 +13,7 @@
    the tile is 8 r nx by 4 r */
 static PetscErrorCode GenerateWave(HylcPattern p, const HylcPatternGenParams *g)
 {
-  const PetscReal r = g->radius;
+  const PetscReal r  = g->radius;
   const PetscInt  nx = g->size[0] > 0 ? g->size[0] : 1, n = 16 * nx, winding[2] = {1, 0};
   const PetscReal px = 8 * r * nx, py = 4 * r;
   PetscReal      *pts;
