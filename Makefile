@@ -76,7 +76,7 @@ EX_SRC    := $(sort $(wildcard examples/*.c))
 EXAMPLES  := $(EX_SRC:examples/%.c=$(BUILD)/ex/%)
 SUPPORT_SRC := $(sort $(wildcard tests/support/*.c))
 SUPPORT_LIB := $(BUILD)/libhylc-testsupport.a
-ALL_OBJ   := $(LIB_OBJ) $(SUPPORT_SRC:%.c=$(OBJ)/%.o) $(patsubst src/%.c,$(BUILD)/hylcmat/%.o,$(wildcard src/hylcmat/*.c) src/sys/json.c src/sys/h5util.c) $(APP_SRC:%.c=$(OBJ)/%.o) $(TEST_SRC:%.c=$(OBJ)/%.o) $(REPLAY_SRC:%.c=$(OBJ)/%.o) $(OBJ)/tests/fuzz/replay.o $(BENCH_SRC:%.c=$(OBJ)/%.o) $(EX_SRC:%.c=$(OBJ)/%.o)
+ALL_OBJ   := $(LIB_OBJ) $(SUPPORT_SRC:%.c=$(OBJ)/%.o) $(patsubst src/%.c,$(BUILD)/hylcmat/%.o,$(wildcard src/hylcmat/*.c) src/sys/json.c src/sys/strain.c src/sys/h5util.c) $(APP_SRC:%.c=$(OBJ)/%.o) $(TEST_SRC:%.c=$(OBJ)/%.o) $(REPLAY_SRC:%.c=$(OBJ)/%.o) $(OBJ)/tests/fuzz/replay.o $(BENCH_SRC:%.c=$(OBJ)/%.o) $(EX_SRC:%.c=$(OBJ)/%.o)
 
 .PHONY: all lib apps tests benches examples test test-asan coverage check-format demo bench deps format clean help fuzz fuzz-build fuzz-deps hylcmat install uninstall
 all: lib hylcmat apps tests benches examples
@@ -138,7 +138,7 @@ HYLCMAT_SOVERSION := 1
 HM_CC      ?= cc
 HM_CFLAGS  ?= -O2 -g
 # PETSc-free sources of src/sys shared with libhylc: the JSON reader, and the HDF5 helpers with HDF5
-HM_SRC     := $(sort $(wildcard src/hylcmat/*.c)) src/sys/json.c $(if $(filter 1,$(HYLCMAT_WITH_HDF5)),src/sys/h5util.c)
+HM_SRC     := $(sort $(wildcard src/hylcmat/*.c)) src/sys/json.c src/sys/strain.c $(if $(filter 1,$(HYLCMAT_WITH_HDF5)),src/sys/h5util.c)
 HM_OBJ     := $(HM_SRC:src/%.c=$(BUILD)/hylcmat/%.o)
 HM_LIBS    := -lm
 HYLCMAT_HDF5_PKG ?= hdf5-openmpi

@@ -18,6 +18,7 @@
 #include <hylc/pattern.h>
 #include <hylc/yarn.h>
 #include <hylc/macro.h>
+#include <hylc/strain.h>
 #include <petscmat.h>
 
 typedef struct _p_HylcPeriodic *HylcPeriodic;

@@ -10,9 +10,10 @@
    terms in order, each an n2 x n2 grid with the first coordinate outer. */
 
 #include <hylc/sys.h>
+#include <hylc/strain.h>
 
-#define HYLC_PLAN_NCOORD 5
-#define HYLC_PLAN_NTERM  15
+#define HYLC_PLAN_NCOORD HYLC_NCOORD                    /* the vocabulary's coordinates (include/hylc/strain.h) */
+#define HYLC_PLAN_NTERM  (1 + HYLC_NCOORD + HYLC_NPAIR) /* zero, the 1D terms, the 2D terms */
 
 typedef struct {
   double min1[HYLC_PLAN_NCOORD], max1[HYLC_PLAN_NCOORD]; /* 1D ranges per coordinate */

@@ -61,6 +61,16 @@ PETSC_EXTERN PetscErrorCode HylcFileCheckOutput(MPI_Comm, const char[], const ch
 PETSC_EXTERN PetscErrorCode HylcFileOpenTemp(const char[], char[], size_t, FILE **);
 PETSC_EXTERN PetscErrorCode HylcFileCommitTemp(FILE **, const char[], const char[]);
 PETSC_EXTERN void           HylcFileAbortTemp(FILE **, const char[]);
+/* A dataset of doubles (rank 1..3; v NULL: not written) of HylcFileWriteHDF5(). */
+typedef struct {
+  const char      *name;
+  int              rank;
+  size_t           dims[3];
+  const PetscReal *v;
+} HylcFileH5Doubles;
+/* Atomic HDF5 output (src/sys/h5file.c): the datasets built as an in-memory HDF5 image and written with
+   HylcFileOpenTemp()/HylcFileCommitTemp(); what names the output in messages. Not collective. */
+PETSC_EXTERN PetscErrorCode HylcFileWriteHDF5(const char path[], const char what[], int n, const HylcFileH5Doubles ds[]);
 /* Raises on every rank of comm the error (code and message) that rank 0 met in work done alone with
    PetscReturnErrorHandler pushed (ierr: rank 0's code; ignored elsewhere). Collective. */
 PETSC_EXTERN PetscErrorCode HylcShareError(MPI_Comm, PetscErrorCode);

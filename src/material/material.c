@@ -9,24 +9,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-const PetscInt HylcMaterialPairs[HYLC_MATERIAL_N2D][2] = {
-    {0, 1},
-    {0, 2},
-    {0, 3},
-    {0, 4},
-    {1, 2},
-    {1, 3},
-    {1, 4},
-    {2, 3},
-    {2, 4}};
-const char *const HylcMaterialTermNames1D[HYLC_MATERIAL_N1D] = {"sx", "sa", "sy", "II00", "II11"};
-const char *const HylcMaterialTermNames2D[HYLC_MATERIAL_N2D] = {"sx-sa", "sx-sy", "sx-II00", "sx-II11", "sa-sy", "sa-II00", "sa-II11", "sy-II00", "sy-II11"};
-
 PetscInt HylcMaterialPairIndex(PetscInt k0, PetscInt k1)
 {
-  for (PetscInt q = 0; q < HYLC_MATERIAL_N2D; q++)
-    if (HylcMaterialPairs[q][0] == k0 && HylcMaterialPairs[q][1] == k1) return q;
-  return -1;
+  return HylcPairIndex((int)k0, (int)k1);
 }
 
 /* a number for messages and views (C printf: PETSc's appends '.' to integral %g values) */

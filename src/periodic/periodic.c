@@ -319,9 +319,9 @@ PetscErrorCode HylcPeriodicSetStrain(HylcPeriodic P, const PetscReal z[6])
 @*/
 PetscErrorCode HylcPeriodicCheckStrain(HylcPeriodic P, const PetscReal z[6], const char name[])
 {
-  static const char *const comp[6] = {"sx", "sa", "sy", "II00", "II01", "II11"};
-  double                   zd[6], N[4];
-  char                     v[6][32]; /* C formatting: PETSc's printf appends '.' to integral %g values */
+  const char *const *comp = HylcStrainNames;
+  double             zd[6], N[4];
+  char               v[6][32]; /* C formatting: PETSc's printf appends '.' to integral %g values */
 
   PetscFunctionBegin;
   for (int k = 0; k < 6; k++) {
