@@ -163,18 +163,6 @@ PetscErrorCode HylcMicroKKTFactor_Private(HylcMicro M, PetscBool *ok)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* more regularization: alpha x 10, refactor */
-static PetscErrorCode KKTIncreaseAlpha(HylcMicro M, PetscBool *ok)
-{
-  PetscFunctionBegin;
-  PetscCall(MatShift(M->K, 9 * M->alpha));
-  M->alpha *= 10;
-  M->retries++;
-  PetscCall(PetscInfo(M, "indefinite Newton matrix: alpha x 10 -> %g\n", (double)M->alpha));
-  PetscCall(HylcMicroKKTFactor_Private(M, ok));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 static PetscErrorCode KKTSetUp(PC pc)
 {
   HylcMicro M;
@@ -183,24 +171,8 @@ static PetscErrorCode KKTSetUp(PC pc)
   PetscFunctionBegin;
   PetscCall(PCShellGetContext(pc, &M));
   PetscCall(HylcMicroKKTFactor_Private(M, &ok));
-  if (!ok && M->adapting && M->projNeg > 0 && M->par.alphaSched == HYLC_MICRO_ALPHA_HYBRID) {
-    /* hybrid: negative curvature after the switch, a saddle near: the paper's schedule, whose steps leave
-       saddles along their negative curvature, for the rest of the solve */
-    PetscInt  it;
-    PetscReal apap;
-    PetscCall(SNESGetIterationNumber(M->snes, &it));
-    it += M->itBase;
-    apap        = HylcMicroPaperAlphaHat_Private(M, it) * M->gmax;
-    M->adapting = PETSC_FALSE;
-    M->reverted = PETSC_TRUE;
-    PetscCall(PetscInfo(M, "hybrid schedule: negative curvature at iteration %" PetscInt_FMT ", the paper's schedule from here (alpha %g -> %g)\n", it, (double)M->alpha, (double)PetscMax(M->alpha, apap)));
-    if (apap > M->alpha) {
-      PetscCall(MatShift(M->K, apap - M->alpha));
-      M->alpha = apap;
-    }
-    PetscCall(HylcMicroKKTFactor_Private(M, &ok));
-  }
-  for (PetscInt k = 0; !ok && k < M->par.maxRetries; k++) PetscCall(KKTIncreaseAlpha(M, &ok));
+  if (!ok) PetscCall(HylcMicroRegularizationRevert_Private(M, &ok));
+  for (PetscInt k = 0; !ok && k < M->par.maxRetries; k++) PetscCall(HylcMicroRegularizationIncrease_Private(M, &ok));
   /* no step: the line search ends the solve (status stalled, or nonfinite for a non-finite matrix) */
   if (!ok) M->factorFailed = PETSC_TRUE;
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -254,7 +226,7 @@ static PetscErrorCode KKTApply(PC pc, Vec b, Vec x)
     PetscCall(MatMult(M->K, x, Kx));
     PetscCall(VecDot(x, Kx, &curv));
     if ((PetscRealPart(descent) > 0 && PetscRealPart(curv) > 0) || k >= M->par.maxRetries) break;
-    PetscCall(KKTIncreaseAlpha(M, &ok));
+    PetscCall(HylcMicroRegularizationIncrease_Private(M, &ok));
     if (!ok) {
       M->factorFailed = PETSC_TRUE;
       PetscCall(VecSet(x, 0));

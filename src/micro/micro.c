@@ -469,7 +469,7 @@ PetscErrorCode HylcMicroSolve(HylcMicro M, const PetscReal z[6], HylcMicroResult
   M->injectAt = injectAt;
   PetscCall(PetscLogEventBegin(HYLC_MicroSolve, M, 0, 0, 0));
   PetscCall(SolveOnce(M, z, res));
-  if (res->status != HYLC_MICRO_CONVERGED && M->par.alphaFallback && M->par.alphaSched != HYLC_MICRO_ALPHA_PAPER) {
+  if (HylcMicroRegularizationFallback_Private(M, res->status)) {
     /* the adaptive or hybrid schedule failed: the same start with the paper schedule (its steps are shorter
        while the gradient is large), the sums of both solves' counts and times reported */
     const HylcMicroResult first = *res;

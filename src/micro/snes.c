@@ -17,12 +17,6 @@ PetscErrorCode HylcMicroToY_Private(HylcMicro M, Vec X, PetscReal y[])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* the paper's alpha^ at iteration it: alphaStart (alphaEnd/alphaStart)^(min(it, alphaIts)/alphaIts) */
-PetscReal HylcMicroPaperAlphaHat_Private(HylcMicro M, PetscInt it)
-{
-  return M->par.alphaStart * PetscPowReal(M->par.alphaEnd / M->par.alphaStart, (PetscReal)PetscMin(it, M->par.alphaIts) / M->par.alphaIts);
-}
-
 /* energy at X: a degenerate state (zero-length or folded edge) or a non-finite energy gives +inf (a result
    of the trial step, not an error; every other failure is an error) */
 PetscErrorCode HylcMicroSafeEnergy_Private(HylcMicro M, Vec X, PetscReal *E, PetscReal parts[4])
@@ -91,64 +85,11 @@ static PetscErrorCode FormJacobian(SNES snes, Vec X, Mat J, Mat Jpre, void *ctx)
   for (PetscInt i = 0; i < M->ny; i++) gmax = PetscMax(gmax, PetscAbsReal((i % 4 == 3) ? M->mu * M->gw[i] : M->gw[i]));
   M->gmax       = gmax;
   M->retriesJac = M->retries;
-  {
-    const PetscReal apap  = HylcMicroPaperAlphaHat_Private(M, it);
-    const PetscInt  sched = M->par.alphaSched;
-    if (it == 0) { /* the start of the solve; a restart after a saddle escape continues the count (itBase), so
-                      it keeps the schedule's state unless the saddle was the initial guess itself */
-      M->reverted = PETSC_FALSE;
-      M->gmax0    = gmax;
-      M->ahat     = M->par.alphaStart;
-      M->adapting = (PetscBool)(sched == HYLC_MICRO_ALPHA_ADAPTIVE);
-    }
-    if (sched == HYLC_MICRO_ALPHA_HYBRID && !M->adapting && !M->reverted && gmax <= M->par.alphaSwitch * M->gmax0) { /* the switch: adaptive from the paper's alpha^ */
-      M->adapting = PETSC_TRUE;
-      M->ahat     = apap;
-      PetscCall(PetscInfo(M, "hybrid schedule: adaptive from iteration %" PetscInt_FMT " (||M g||_inf %g of its initial value), alpha^ %g\n", it, (double)(gmax / M->gmax0), (double)apap));
-    }
-    M->alpha = (M->adapting ? M->ahat : apap) * gmax; /* adaptive: alpha^ of the previous line search (AdaptAlpha) */
-  }
-  if (!(M->alpha > 0)) M->alpha = PETSC_SMALL;
+  PetscCall(HylcMicroRegularizationAlpha_Private(M, it, gmax));
   PetscCall(MatDiagonalScale(M->K, M->mvec, M->mvec));
   PetscCall(MatShift(M->K, M->alpha));
   PetscCall(MatSetOption(M->K, MAT_SYMMETRIC, PETSC_TRUE));
   PetscCall(HylcPeriodicConstraintResidual(M->P, M->yw, M->c));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* the adaptive schedule (trust-region logic on alpha^), after each line search, from the alpha^ the step
-   was computed with (after any x 10 retries of the KKT solve, which are kept): a full step that was not cut
-   by the step limit, needed no retry and whose energy decrease agrees with the quadratic model of the
-   unregularized Hessian (ratio > 3/4) divides alpha^ by the factor; a step cut by the step limit (then the
-   step limit is the trust region) lets alpha^ decay at least as the paper's schedule does; a poor agreement
-   (ratio < 1/4) or a backtracked step multiplies it by the factor, a rejected line search by its square;
-   always within [alphaMin, alphaMax] */
-static PetscErrorCode AdaptAlpha(HylcMicro M, PetscBool accepted, PetscBool clipped, PetscReal lambda, PetscReal actual, PetscReal pred)
-{
-  const PetscReal f = M->par.alphaFact;
-  PetscReal       a;
-  PetscInt        it;
-
-  PetscFunctionBegin;
-  if (!(M->gmax > 0)) PetscFunctionReturn(PETSC_SUCCESS); /* alpha was not scaled by ||M g||: keep alpha^ */
-  a = M->alpha / M->gmax;
-  if (!accepted)
-    a *= f * f;
-  else if (lambda < 1)
-    a *= f;
-  else {
-    const PetscReal rho = pred > 0 ? actual / pred : 1; /* a decrease where the model predicts none is good */
-    if (rho < 0.25)
-      a *= f;
-    else if (rho > 0.75 && !clipped && M->retries == M->retriesJac)
-      a /= f;
-  }
-  if (accepted && clipped) { /* the paper's alpha^ of the next iteration as a ceiling */
-    PetscCall(SNESGetIterationNumber(M->snes, &it));
-    a = PetscMin(a, HylcMicroPaperAlphaHat_Private(M, M->itBase + it + 1));
-  }
-  M->ahat = PetscClipInterval(a, M->par.alphaMin, M->par.alphaMax);
-  PetscCall(PetscInfo(M, "adaptive alpha^ %g -> %g (accepted %d, step limit %s, lambda %g, energy decrease %g, predicted %g)\n", (double)(M->alpha / M->gmax), (double)M->ahat, (int)accepted, clipped ? "active" : "inactive", (double)lambda, (double)actual, (double)pred));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -284,7 +225,7 @@ static PetscErrorCode LineSearch(SNESLineSearch ls, void *ctx)
       M->statusSet = PETSC_TRUE;
     }
   }
-  if (adaptive) PetscCall(AdaptAlpha(M, accepted, (PetscBool)(d > dmax), lambda, accepted ? Eold - Etrial : 0, lambda * lin - 0.5 * lambda * lambda * quad));
+  if (adaptive) PetscCall(HylcMicroRegularizationAdapt_Private(M, accepted, (PetscBool)(d > dmax), lambda, accepted ? Eold - Etrial : 0, lambda * lin - 0.5 * lambda * lambda * quad));
   PetscCall(VecNorm(X, NORM_2, &xnorm));
   PetscCall(VecNorm(F, NORM_2, &fnorm));
   PetscCall(VecNorm(Y, NORM_2, &ynorm));

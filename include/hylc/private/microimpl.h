@@ -4,6 +4,7 @@
      src/micro/opts.c   the parameters: setters, SetFromOptions, View;
      src/micro/kkt.c    the KKT preconditioner (S22): a PCSHELL around PCCHOLESKY and its Schur complement;
      src/micro/snes.c   the SNES callbacks: objective, residual, Jacobian, line search, convergence test;
+     src/micro/regularization.c the schedule of alpha (paper, adaptive, hybrid, x 10 retries, fallback);
      src/micro/saddle.c the second-order test of a converged state and the escape from saddle points. */
 #include <hylc/micro.h>
 #include <petsc/private/petscimpl.h>
@@ -110,10 +111,16 @@ PETSC_INTERN PetscErrorCode HylcMicroDestroyKKT_Private(HylcMicro);
 PETSC_INTERN PetscErrorCode HylcMicroCreateSNES_Private(HylcMicro);
 PETSC_INTERN PetscErrorCode HylcMicroSetUpSNES_Private(HylcMicro);
 PETSC_INTERN PetscErrorCode HylcMicroToY_Private(HylcMicro, Vec, PetscReal[]);
-PETSC_INTERN PetscReal      HylcMicroPaperAlphaHat_Private(HylcMicro, PetscInt);
 PETSC_INTERN PetscErrorCode HylcMicroSafeEnergy_Private(HylcMicro, Vec, PetscReal *, PetscReal[4]);
 PETSC_INTERN PetscErrorCode HylcMicroProjectedGradientNorm_Private(HylcMicro, const PetscReal[], PetscReal *);
 PETSC_INTERN PetscErrorCode HylcMicroStepLimit_Private(HylcMicro, Vec, PetscReal *);
 PETSC_INTERN PetscErrorCode HylcMicroPushEnergy_Private(HylcMicro, PetscReal);
+/* regularization.c: the schedule of alpha */
+PETSC_INTERN PetscReal      HylcMicroPaperAlphaHat_Private(HylcMicro, PetscInt);
+PETSC_INTERN PetscErrorCode HylcMicroRegularizationAlpha_Private(HylcMicro, PetscInt, PetscReal);
+PETSC_INTERN PetscErrorCode HylcMicroRegularizationAdapt_Private(HylcMicro, PetscBool, PetscBool, PetscReal, PetscReal, PetscReal);
+PETSC_INTERN PetscErrorCode HylcMicroRegularizationIncrease_Private(HylcMicro, PetscBool *);
+PETSC_INTERN PetscErrorCode HylcMicroRegularizationRevert_Private(HylcMicro, PetscBool *);
+PETSC_INTERN PetscBool      HylcMicroRegularizationFallback_Private(HylcMicro, HylcMicroStatus);
 /* saddle.c */
 PETSC_INTERN PetscErrorCode HylcMicroSaddle_Private(HylcMicro, PetscBool, PetscInt *, PetscBool *);
