@@ -128,7 +128,7 @@ static PetscErrorCode FreeSolver(HylcMicro M)
   PetscCall(PetscFree(M->uinit));
   M->nuinit   = 0;
   M->haveInit = PETSC_FALSE;
-  if (M->inner) PetscCall(PCReset(M->inner));
+  if (M->kkt.inner) PetscCall(PCReset(M->kkt.inner));
   PetscCall(HylcMicroDestroyKKT_Private(M));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -154,7 +154,7 @@ PetscErrorCode HylcMicroDestroy(HylcMicro *micro)
   }
   PetscCall(FreeSolver(*micro));
   PetscCall(SNESDestroy(&(*micro)->snes));
-  PetscCall(PCDestroy(&(*micro)->inner));
+  PetscCall(PCDestroy(&(*micro)->kkt.inner));
   PetscCall(HylcPeriodicDestroy(&(*micro)->P));
   PetscCall(HylcPatternDestroy(&(*micro)->pat));
   PetscCall(PetscFree((*micro)->hist));
@@ -185,9 +185,9 @@ PetscErrorCode HylcMicroSetOptionsPrefix(HylcMicro M, const char prefix[])
     PetscCall(SNESSetOptionsPrefix(M->snes, prefix));
     PetscCall(SNESAppendOptionsPrefix(M->snes, "micro_"));
   }
-  if (M->inner) {
-    PetscCall(PCSetOptionsPrefix(M->inner, prefix));
-    PetscCall(PCAppendOptionsPrefix(M->inner, "micro_factor_"));
+  if (M->kkt.inner) {
+    PetscCall(PCSetOptionsPrefix(M->kkt.inner, prefix));
+    PetscCall(PCAppendOptionsPrefix(M->kkt.inner, "micro_factor_"));
   }
   if (M->P) PetscCall(HylcPeriodicSetOptionsPrefix(M->P, prefix));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -213,17 +213,17 @@ PetscErrorCode HylcMicroGetFactorPC(HylcMicro M, PC *pc)
   PetscFunctionBegin;
   PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
   PetscValidPointer(pc, 2);
-  if (!M->inner) {
+  if (!M->kkt.inner) {
     PetscCall(HylcCholRegisterSolverType()); /* the default solver type, linalg's */
-    PetscCall(PCCreate(PETSC_COMM_SELF, &M->inner));
-    PetscCall(PetscObjectIncrementTabLevel((PetscObject)M->inner, (PetscObject)M, 1));
-    PetscCall(PCSetType(M->inner, PCCHOLESKY));
-    PetscCall(PCFactorSetMatOrderingType(M->inner, HylcDefaultOrdering()));
-    PetscCall(PCFactorSetMatSolverType(M->inner, MATSOLVERHYLC));
-    PetscCall(PCSetOptionsPrefix(M->inner, ((PetscObject)M)->prefix));
-    PetscCall(PCAppendOptionsPrefix(M->inner, "micro_factor_"));
+    PetscCall(PCCreate(PETSC_COMM_SELF, &M->kkt.inner));
+    PetscCall(PetscObjectIncrementTabLevel((PetscObject)M->kkt.inner, (PetscObject)M, 1));
+    PetscCall(PCSetType(M->kkt.inner, PCCHOLESKY));
+    PetscCall(PCFactorSetMatOrderingType(M->kkt.inner, HylcDefaultOrdering()));
+    PetscCall(PCFactorSetMatSolverType(M->kkt.inner, MATSOLVERHYLC));
+    PetscCall(PCSetOptionsPrefix(M->kkt.inner, ((PetscObject)M)->prefix));
+    PetscCall(PCAppendOptionsPrefix(M->kkt.inner, "micro_factor_"));
   }
-  *pc = M->inner;
+  *pc = M->kkt.inner;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -318,6 +318,17 @@ PetscErrorCode HylcMicroSetUp(HylcMicro M)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* the state of one solve at its start: nothing counted, no energy yet, converged until the method says
+   otherwise (the one place the per-solve state is reset; include/hylc/private/microimpl.h) */
+PetscErrorCode HylcMicroResetSolveState_Private(HylcMicro M)
+{
+  PetscFunctionBegin;
+  PetscCall(PetscMemzero(&M->st, sizeof(M->st)));
+  M->st.status = HYLC_MICRO_CONVERGED;
+  M->st.E0     = PETSC_INFINITY;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* one solve of HylcMicroSolve() with the current parameters: from the cold guess, or from the state of
    HylcMicroSetInitialState() if one is pending */
 static PetscErrorCode SolveOnce(HylcMicro M, const PetscReal z[6], HylcMicroResult *res)
@@ -333,11 +344,12 @@ static PetscErrorCode SolveOnce(HylcMicro M, const PetscReal z[6], HylcMicroResu
   PetscFunctionBegin;
   PetscCall(PetscMemzero(res, sizeof(*res)));
   for (int k = 0; k < 6; k++) res->z[k] = z[k];
-  PetscCall(PetscTime(&M->tStart));
+  PetscCall(HylcMicroResetSolveState_Private(M));
+  PetscCall(PetscTime(&M->st.tStart));
   PetscCall(HylcPeriodicSetStrain(M->P, z));
   PetscCall(HylcPeriodicSetUp(M->P));
   PetscCall(HylcPeriodicGetConstants(M->P, &c));
-  PetscCall(HylcPeriodicGetConstraints(M->P, &m, &M->A, &M->dL, &M->AAtinv));
+  PetscCall(HylcPeriodicGetConstraints(M->P, &m, &M->kkt.A, &M->kkt.dL, &M->kkt.AAtinv));
   if (M->setupcalled && m != M->m) PetscCall(HylcMicroResizeKKT_Private(M, m)); /* the number of independent constraint rows may depend on the strain */
   M->r  = c.r;
   M->ks = c.ks;
@@ -352,31 +364,20 @@ static PetscErrorCode SolveOnce(HylcMicro M, const PetscReal z[6], HylcMicroResu
   /* initial guess: y^ = M^-1 y0, or, continued, y0 + u~ of the state given by HylcMicroSetInitialState() with
      the reference frames transported from the rest frames of this strain to it */
   PetscCall(HylcPeriodicGetInitialState(M->P, M->yw));
-  M->continued = PETSC_FALSE;
   if (M->haveInit) {
     M->haveInit = PETSC_FALSE;
     PetscCheck(M->nuinit == M->ny, PETSC_COMM_SELF, PETSC_ERR_ARG_SIZ, "HylcMicroSetInitialState: the state has %" PetscInt_FMT " unknowns, the tile %" PetscInt_FMT, M->nuinit, M->ny);
-    PetscCall(HylcMicroProjectedGradientNorm_Private(M, M->yw, &M->z0cold)); /* the cold start's |z0| */
+    PetscCall(HylcMicroProjectedGradientNorm_Private(M, M->yw, &M->st.z0cold)); /* the cold start's |z0| */
     PetscCall(HylcPeriodicFluctuationFromLocal(M->P, M->uinit, M->yw));
     PetscCall(HylcPeriodicSetState(M->P, M->yw));
     PetscCall(HylcPeriodicUpdateFrames(M->P));
-    M->continued = PETSC_TRUE;
+    M->st.continued = PETSC_TRUE;
   }
   PetscCall(VecGetArray(M->X, &x));
   for (PetscInt i = 0; i < M->ny; i++) x[i] = (i % 4 == 3) ? M->yw[i] / M->mu : M->yw[i];
   PetscCall(VecRestoreArray(M->X, &x));
-  M->haveH  = PETSC_FALSE;
-  M->stalls = M->stallsTotal = M->retries = 0;
-  M->statusSet = M->factorFailed = M->resolved = PETSC_FALSE;
-  M->status                                    = HYLC_MICRO_CONVERGED;
-  M->tFactor = M->tLineSearch = 0;
-  M->nhist                    = 0;
-  M->E0                       = PETSC_INFINITY;
   /* an error inside the solve (a bug, no memory, a bad option) is an error: only the outcomes of the
      method are statuses (a failed factorization and a degenerate trial state are outcomes, handled above) */
-  M->itBase  = 0;
-  M->restart = PETSC_FALSE;
-  M->escapes = 0;
   PetscCall(SNESSolve(M->snes, NULL, M->X));
   PetscCall(SNESGetConvergedReason(M->snes, &reason));
   PetscCall(SNESGetIterationNumber(M->snes, &its));
@@ -386,26 +387,26 @@ static PetscErrorCode SolveOnce(HylcMicro M, const PetscReal z[6], HylcMicroResu
   while (reason > 0 && M->par.saddleTest) {
     PetscInt  neg;
     PetscBool escaped;
-    PetscCall(HylcMicroSaddle_Private(M, (PetscBool)(M->escapes < M->par.saddleMax), &neg, &escaped));
+    PetscCall(HylcMicroSaddle_Private(M, (PetscBool)(M->st.escapes < M->par.saddleMax), &neg, &escaped));
     res->negcurv = neg;
     if (!escaped) break;
-    M->escapes++;
-    M->itBase += its;
-    M->restart  = PETSC_TRUE;
-    M->stalls   = 0;
-    M->resolved = PETSC_FALSE;
+    M->st.escapes++;
+    M->st.itBase += its;
+    M->st.restart  = PETSC_TRUE;
+    M->st.stalls   = 0;
+    M->st.resolved = PETSC_FALSE;
     PetscCall(SNESSolve(M->snes, NULL, M->X));
     PetscCall(SNESGetConvergedReason(M->snes, &reason));
     PetscCall(SNESGetIterationNumber(M->snes, &its));
   }
   if (reason <= 0) res->negcurv = -1; /* not converged after an escape: not tested */
-  its += M->itBase;
-  M->restart   = PETSC_FALSE;
-  res->escapes = M->escapes;
+  its += M->st.itBase;
+  M->st.restart = PETSC_FALSE;
+  res->escapes  = M->st.escapes;
   if (reason > 0)
     res->status = HYLC_MICRO_CONVERGED;
-  else if (M->statusSet)
-    res->status = M->status;
+  else if (M->st.statusSet)
+    res->status = M->st.status;
   else if (reason == SNES_DIVERGED_MAX_IT)
     res->status = HYLC_MICRO_MAX_IT;
   else if (reason == SNES_DIVERGED_FNORM_NAN || reason == SNES_DIVERGED_FUNCTION_DOMAIN)
@@ -418,17 +419,17 @@ static PetscErrorCode SolveOnce(HylcMicro M, const PetscReal z[6], HylcMicroResu
   PetscCall(HylcPeriodicGetArea(M->P, &area));
   res->psi        = res->energy / area;
   res->iterations = its;
-  res->retries    = M->retries;
-  res->stalls     = M->stallsTotal;
-  res->residual   = M->lastz;
-  res->cresidual  = M->lastc;
+  res->retries    = M->st.retries;
+  res->stalls     = M->st.stallsTotal;
+  res->residual   = M->st.lastz;
+  res->cresidual  = M->st.lastc;
   PetscCall(PetscTime(&t1));
-  res->time = t1 - M->tStart;
+  res->time = t1 - M->st.tStart;
   PetscCall(HylcPeriodicGetTimes(M->P, &tEval, &tContact, &tAssemble));
   res->tAssembly   = tEval - tContact;
   res->tContact    = tContact;
-  res->tFactor     = M->tFactor;
-  res->tLineSearch = M->tLineSearch;
+  res->tFactor     = M->st.tFactor;
+  res->tLineSearch = M->st.tLineSearch;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -476,7 +477,7 @@ PetscErrorCode HylcMicroSolve(HylcMicro M, const PetscReal z[6], HylcMicroResult
     const PetscInt        sched = M->par.alphaSched;
     PetscErrorCode        ierr;
     PetscCall(PetscInfo(M, "the %s schedule ended %s after %" PetscInt_FMT " iterations: solved again from the same start with the paper schedule\n", HylcMicroAlphaSchedules[sched], HylcMicroStatuses[first.status], first.iterations));
-    M->haveInit       = M->continued; /* the state of HylcMicroSetInitialState() is kept in uinit */
+    M->haveInit       = M->st.continued; /* the state of HylcMicroSetInitialState() is kept in uinit */
     M->par.alphaSched = HYLC_MICRO_ALPHA_PAPER;
     ierr              = SolveOnce(M, z, res);
     M->par.alphaSched = sched;
@@ -723,7 +724,7 @@ PetscErrorCode HylcMicroGetContinued(HylcMicro M, PetscBool *continued)
   PetscFunctionBegin;
   PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
   PetscValidBoolPointer(continued, 2);
-  *continued = M->continued;
+  *continued = M->st.continued;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -745,7 +746,7 @@ PetscErrorCode HylcMicroGetEnergyHistory(HylcMicro M, PetscInt *n, const PetscRe
 {
   PetscFunctionBegin;
   PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
-  *n = M->nhist;
+  *n = M->st.nhist;
   *E = M->hist;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -616,11 +616,11 @@ PetscErrorCode HylcMicroView(HylcMicro M, PetscViewer viewer)
     PetscCall(PetscViewerASCIIPrintf(viewer, "pattern set, not set up\n"));
   else
     PetscCall(PetscViewerASCIIPrintf(viewer, "unknowns: %" PetscInt_FMT " (%" PetscInt_FMT " vertices), constraint rows: %" PetscInt_FMT "\n", M->ny, M->ny / 4, M->m));
-  if (M->inner) {
+  if (M->kkt.inner) {
     MatSolverType type;
-    PetscCall(PCFactorGetMatSolverType(M->inner, &type));
+    PetscCall(PCFactorGetMatSolverType(M->kkt.inner, &type));
     PetscCall(PetscViewerASCIIPrintf(viewer, "factorization of K: PCCHOLESKY, solver type %s (-%smicro_factor_pc_factor_mat_solver_type)\n", type ? type : "(default)", HylcMicroPrefix_Private(M)));
-    if (M->setupcalled) PetscCall(PCView(M->inner, viewer));
+    if (M->setupcalled) PetscCall(PCView(M->kkt.inner, viewer));
   }
   PetscCall(PetscViewerASCIIPopTab(viewer));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -23,18 +23,18 @@ PetscErrorCode HylcMicroRegularizationAlpha_Private(HylcMicro M, PetscInt it, Pe
   PetscFunctionBegin;
   if (it == 0) { /* the start of the solve; a restart after a saddle escape continues the count (itBase), so
                     it keeps the schedule's state unless the saddle was the initial guess itself */
-    M->reverted = PETSC_FALSE;
-    M->gmax0    = gmax;
-    M->ahat     = M->par.alphaStart;
-    M->adapting = (PetscBool)(sched == HYLC_MICRO_ALPHA_ADAPTIVE);
+    M->st.reverted = PETSC_FALSE;
+    M->st.gmax0    = gmax;
+    M->st.ahat     = M->par.alphaStart;
+    M->st.adapting = (PetscBool)(sched == HYLC_MICRO_ALPHA_ADAPTIVE);
   }
-  if (sched == HYLC_MICRO_ALPHA_HYBRID && !M->adapting && !M->reverted && gmax <= M->par.alphaSwitch * M->gmax0) { /* the switch: adaptive from the paper's alpha^ */
-    M->adapting = PETSC_TRUE;
-    M->ahat     = apap;
-    PetscCall(PetscInfo(M, "hybrid schedule: adaptive from iteration %" PetscInt_FMT " (||M g||_inf %g of its initial value), alpha^ %g\n", it, (double)(gmax / M->gmax0), (double)apap));
+  if (sched == HYLC_MICRO_ALPHA_HYBRID && !M->st.adapting && !M->st.reverted && gmax <= M->par.alphaSwitch * M->st.gmax0) { /* the switch: adaptive from the paper's alpha^ */
+    M->st.adapting = PETSC_TRUE;
+    M->st.ahat     = apap;
+    PetscCall(PetscInfo(M, "hybrid schedule: adaptive from iteration %" PetscInt_FMT " (||M g||_inf %g of its initial value), alpha^ %g\n", it, (double)(gmax / M->st.gmax0), (double)apap));
   }
-  M->alpha = (M->adapting ? M->ahat : apap) * gmax; /* adaptive: alpha^ of the previous line search (HylcMicroRegularizationAdapt_Private) */
-  if (!(M->alpha > 0)) M->alpha = PETSC_SMALL;
+  M->st.alpha = (M->st.adapting ? M->st.ahat : apap) * gmax; /* adaptive: alpha^ of the previous line search (HylcMicroRegularizationAdapt_Private) */
+  if (!(M->st.alpha > 0)) M->st.alpha = PETSC_SMALL;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -52,8 +52,8 @@ PetscErrorCode HylcMicroRegularizationAdapt_Private(HylcMicro M, PetscBool accep
   PetscInt        it;
 
   PetscFunctionBegin;
-  if (!(M->gmax > 0)) PetscFunctionReturn(PETSC_SUCCESS); /* alpha was not scaled by ||M g||: keep alpha^ */
-  a = M->alpha / M->gmax;
+  if (!(M->st.gmax > 0)) PetscFunctionReturn(PETSC_SUCCESS); /* alpha was not scaled by ||M g||: keep alpha^ */
+  a = M->st.alpha / M->st.gmax;
   if (!accepted)
     a *= f * f;
   else if (lambda < 1)
@@ -62,15 +62,15 @@ PetscErrorCode HylcMicroRegularizationAdapt_Private(HylcMicro M, PetscBool accep
     const PetscReal rho = pred > 0 ? actual / pred : 1; /* a decrease where the model predicts none is good */
     if (rho < 0.25)
       a *= f;
-    else if (rho > 0.75 && !clipped && M->retries == M->retriesJac)
+    else if (rho > 0.75 && !clipped && M->st.retries == M->st.retriesJac)
       a /= f;
   }
   if (accepted && clipped) { /* the paper's alpha^ of the next iteration as a ceiling */
     PetscCall(SNESGetIterationNumber(M->snes, &it));
-    a = PetscMin(a, HylcMicroPaperAlphaHat_Private(M, M->itBase + it + 1));
+    a = PetscMin(a, HylcMicroPaperAlphaHat_Private(M, M->st.itBase + it + 1));
   }
-  M->ahat = PetscClipInterval(a, M->par.alphaMin, M->par.alphaMax);
-  PetscCall(PetscInfo(M, "adaptive alpha^ %g -> %g (accepted %d, step limit %s, lambda %g, energy decrease %g, predicted %g)\n", (double)(M->alpha / M->gmax), (double)M->ahat, (int)accepted, clipped ? "active" : "inactive", (double)lambda, (double)actual, (double)pred));
+  M->st.ahat = PetscClipInterval(a, M->par.alphaMin, M->par.alphaMax);
+  PetscCall(PetscInfo(M, "adaptive alpha^ %g -> %g (accepted %d, step limit %s, lambda %g, energy decrease %g, predicted %g)\n", (double)(M->st.alpha / M->st.gmax), (double)M->st.ahat, (int)accepted, clipped ? "active" : "inactive", (double)lambda, (double)actual, (double)pred));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -78,10 +78,10 @@ PetscErrorCode HylcMicroRegularizationAdapt_Private(HylcMicro M, PetscBool accep
 PetscErrorCode HylcMicroRegularizationIncrease_Private(HylcMicro M, PetscBool *ok)
 {
   PetscFunctionBegin;
-  PetscCall(MatShift(M->K, 9 * M->alpha));
-  M->alpha *= 10;
-  M->retries++;
-  PetscCall(PetscInfo(M, "indefinite Newton matrix: alpha x 10 -> %g\n", (double)M->alpha));
+  PetscCall(MatShift(M->K, 9 * M->st.alpha));
+  M->st.alpha *= 10;
+  M->st.retries++;
+  PetscCall(PetscInfo(M, "indefinite Newton matrix: alpha x 10 -> %g\n", (double)M->st.alpha));
   PetscCall(HylcMicroKKTFactor_Private(M, ok));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -96,16 +96,16 @@ PetscErrorCode HylcMicroRegularizationRevert_Private(HylcMicro M, PetscBool *ok)
   PetscReal apap;
 
   PetscFunctionBegin;
-  if (*ok || !M->adapting || M->projNeg <= 0 || M->par.alphaSched != HYLC_MICRO_ALPHA_HYBRID) PetscFunctionReturn(PETSC_SUCCESS);
+  if (*ok || !M->st.adapting || M->st.projNeg <= 0 || M->par.alphaSched != HYLC_MICRO_ALPHA_HYBRID) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(SNESGetIterationNumber(M->snes, &it));
-  it += M->itBase;
-  apap        = HylcMicroPaperAlphaHat_Private(M, it) * M->gmax;
-  M->adapting = PETSC_FALSE;
-  M->reverted = PETSC_TRUE;
-  PetscCall(PetscInfo(M, "hybrid schedule: negative curvature at iteration %" PetscInt_FMT ", the paper's schedule from here (alpha %g -> %g)\n", it, (double)M->alpha, (double)PetscMax(M->alpha, apap)));
-  if (apap > M->alpha) {
-    PetscCall(MatShift(M->K, apap - M->alpha));
-    M->alpha = apap;
+  it += M->st.itBase;
+  apap           = HylcMicroPaperAlphaHat_Private(M, it) * M->st.gmax;
+  M->st.adapting = PETSC_FALSE;
+  M->st.reverted = PETSC_TRUE;
+  PetscCall(PetscInfo(M, "hybrid schedule: negative curvature at iteration %" PetscInt_FMT ", the paper's schedule from here (alpha %g -> %g)\n", it, (double)M->st.alpha, (double)PetscMax(M->st.alpha, apap)));
+  if (apap > M->st.alpha) {
+    PetscCall(MatShift(M->K, apap - M->st.alpha));
+    M->st.alpha = apap;
   }
   PetscCall(HylcMicroKKTFactor_Private(M, ok));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -40,35 +40,29 @@ struct _HylcMicroOps {
   PetscErrorCode (*view)(HylcMicro, PetscViewer);
 };
 
-struct _p_HylcMicro {
-  PETSCHEADER(struct _HylcMicroOps);
-  HylcMicroParams par;
-  HylcPattern     pat;
-  HylcYarnModel   model;
-  HylcPeriodic    P;           /* created by HylcMicroGetPeriodic(); given the pattern by HylcMicroSetPattern() */
-  PetscBool       setupcalled; /* the matrices, vectors and KKT buffers of the current pattern are built */
-  PetscInt        ny, m;       /* unknowns, constraint rows */
-  PetscReal       mu, r, ks;   /* twist scale, yarn radius, stretching stiffness k_s */
-  SNES            snes;        /* created and configured by HylcMicroGetSNES(); reset (SNESReset) for a new pattern */
-  Mat             K;
-  Vec             X, mvec;
-  PetscReal      *yw, *gw; /* work: unscaled unknowns and gradient */
-  PC              inner;   /* PCCHOLESKY of K (prefix <prefix>micro_factor_; solver type hylc by default) */
-  PetscBool       cholmod; /* the solver type is CHOLMOD (its not-positive-definite error is a failed factorization) */
-  Mat             Bd, Zd;  /* dense n x m: the Schur right-hand sides M A^T and Z = K^-1 M A^T (on Bw, Z) */
-  PetscReal      *Bw;
-  /* KKT data */
-  const PetscReal *A, *dL, *AAtinv;
+/* the factorization of K and the KKT data (S22) of the current pattern and strain (kkt.c) */
+typedef struct {
+  PC               inner;   /* PCCHOLESKY of K (prefix <prefix>micro_factor_; solver type hylc by default) */
+  PetscBool        cholmod; /* the solver type is CHOLMOD (its not-positive-definite error is a failed factorization) */
+  Mat              Bd, Zd;  /* dense n x m: the Schur right-hand sides M A^T and Z = K^-1 M A^T (on Bw, Z) */
+  PetscReal       *Bw;
+  const PetscReal *A, *dL, *AAtinv; /* the tile's constraints (borrowed) */
   PetscReal       *c, *Z, *S, *Sinv, *wl, *tmp;
-  PetscReal        alpha;
-  PetscReal        gmax;       /* ||M g||_inf of the iterate the Newton matrix was formed at */
-  PetscReal        ahat;       /* adaptive schedule: alpha^ of the next Newton matrix */
-  PetscReal        gmax0;      /* ||M g||_inf at the first iteration of the solve */
-  PetscBool        adapting;   /* alpha^ follows the adaptive logic in this iteration (adaptive, or hybrid after its switch) */
-  PetscBool        reverted;   /* hybrid: negative curvature after the switch sent this solve back to the paper's schedule */
-  PetscInt         projNeg;    /* negative eigenvalues of K on the constraints' tangent space (when counted) */
-  PetscInt         retriesJac; /* retries before this Newton matrix was formed */
-  /* state of a solve */
+} HylcMicroKKT;
+
+/* the state of one solve: zeroed at its start by HylcMicroResetSolveState_Private() (status converged, no
+   energy yet); everything the method changes while it runs */
+typedef struct {
+  /* the regularization (regularization.c) */
+  PetscReal alpha;
+  PetscReal gmax;       /* ||M g||_inf of the iterate the Newton matrix was formed at */
+  PetscReal ahat;       /* adaptive schedule: alpha^ of the next Newton matrix */
+  PetscReal gmax0;      /* ||M g||_inf at the first iteration of the solve */
+  PetscBool adapting;   /* alpha^ follows the adaptive logic in this iteration (adaptive, or hybrid after its switch) */
+  PetscBool reverted;   /* hybrid: negative curvature after the switch sent this solve back to the paper's schedule */
+  PetscInt  projNeg;    /* negative eigenvalues of K on the constraints' tangent space (when counted) */
+  PetscInt  retriesJac; /* retries before this Newton matrix was formed */
+  /* the iteration */
   PetscBool       haveH; /* K holds the unscaled H_y of the state in X */
   PetscReal       E0;    /* energy of the current iterate */
   PetscReal       parts[4];
@@ -81,17 +75,38 @@ struct _p_HylcMicro {
   PetscBool       statusSet;
   PetscBool       resolved;     /* a rejected step whose first-order decrease is below the energy's rounding: converged as far as E can tell */
   PetscBool       factorFailed; /* the Newton matrix could not be factored after every alpha increase */
-  PetscBool       inject;       /* this solve raises the injected error (HYLC_INJECT_ERROR) */
-  PetscInt        injectAt;     /* the value of HYLC_INJECT_ERROR of this solve (for the message) */
   PetscInt        itBase;       /* Newton iterations of this solve before the current SNESSolve (restarts after saddle escapes) */
   PetscBool       restart;      /* the current SNESSolve continues the solve after a saddle escape */
   PetscInt        escapes;      /* saddle escapes of this solve */
-  PetscInt        nhist, caphist;
-  PetscReal      *hist;
-  PetscReal      *uinit;     /* HylcMicroSetInitialState(): the fluctuation u~ = y - y0 (twists included) of a state */
-  PetscInt        nuinit;    /* its length (the tile's ny when it was set) */
-  PetscBool       haveInit;  /* the next solve starts from y0 + uinit (used once) */
-  PetscBool       continued; /* the last solve started from a state given by HylcMicroSetInitialState() */
+  PetscInt        nhist;        /* energies in the history (hist) */
+  PetscBool       continued;    /* this solve started from a state given by HylcMicroSetInitialState() */
+} HylcMicroSolveState;
+
+/* HylcMicro: the parameters (par: what the setters and options set), the pattern's matrices and vectors,
+   the factorization (kkt) and the state of one solve (st) */
+struct _p_HylcMicro {
+  PETSCHEADER(struct _HylcMicroOps);
+  HylcMicroParams     par;
+  HylcPattern         pat;
+  HylcYarnModel       model;
+  HylcPeriodic        P;           /* created by HylcMicroGetPeriodic(); given the pattern by HylcMicroSetPattern() */
+  PetscBool           setupcalled; /* the matrices, vectors and KKT buffers of the current pattern are built */
+  PetscInt            ny, m;       /* unknowns, constraint rows */
+  PetscReal           mu, r, ks;   /* twist scale, yarn radius, stretching stiffness k_s */
+  SNES                snes;        /* created and configured by HylcMicroGetSNES(); reset (SNESReset) for a new pattern */
+  Mat                 K;
+  Vec                 X, mvec;
+  PetscReal          *yw, *gw; /* work: unscaled unknowns and gradient */
+  PetscInt            caphist;
+  PetscReal          *hist; /* the energy history of the last solve (st.nhist values) */
+  HylcMicroKKT        kkt;
+  HylcMicroSolveState st;
+  /* inputs of the next solve */
+  PetscReal *uinit;    /* HylcMicroSetInitialState(): the fluctuation u~ = y - y0 (twists included) of a state */
+  PetscInt   nuinit;   /* its length (the tile's ny when it was set) */
+  PetscBool  haveInit; /* the next solve starts from y0 + uinit (used once) */
+  PetscBool  inject;   /* this solve raises the injected error (HYLC_INJECT_ERROR) */
+  PetscInt   injectAt; /* the value of HYLC_INJECT_ERROR of this solve (for the message) */
 };
 
 /* the object's options prefix ("" if none), for messages: "-%smicro_alpha_start" */
@@ -100,6 +115,8 @@ static inline const char *HylcMicroPrefix_Private(HylcMicro M)
   return ((PetscObject)M)->prefix ? ((PetscObject)M)->prefix : "";
 }
 
+/* micro.c */
+PETSC_INTERN PetscErrorCode HylcMicroResetSolveState_Private(HylcMicro);
 /* kkt.c */
 PETSC_INTERN PetscErrorCode HylcMicroKKTFactor_Private(HylcMicro, PetscBool *);
 PETSC_INTERN PetscErrorCode HylcMicroKKTSolve_Private(HylcMicro, Vec, Vec);
