@@ -5,6 +5,21 @@
 const char *const        HylcReferenceModes[] = {"auto", "compute", "none", "relax", "HylcReferenceMode", "HYLC_REFERENCE_", NULL};
 static const char *const Kinds[]              = {"auto", "knit", "woven", "HylcReferenceKind", "", NULL};
 
+/*@C
+  HylcReferenceParamsDefault - The default parameters of the reference state (Algorithm C1): the
+  stress-free relaxation to E < 1e-10 J in at most 30 rounds, the tension factors of the pattern's kind
+  (auto), the in-plane minimum over sx, sy in [-0.4, 0.2] (Nelder-Mead, 1e-4, at most 80 solves), no options
+  prefix.
+
+  Not collective
+
+  Output Parameter:
+. p - the parameters
+
+  Level: intermediate
+
+.seealso: HylcReferenceParamsSetFromOptions(), HylcReferenceStateCompute()
+@*/
 PetscErrorCode HylcReferenceParamsDefault(HylcReferenceParams *p)
 {
   PetscFunctionBegin;
@@ -22,6 +37,34 @@ PetscErrorCode HylcReferenceParamsDefault(HylcReferenceParams *p)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcReferenceParamsSetFromOptions - Reads the options of the reference state after the given options
+  prefix, which the parameters keep for the solvers HylcReferenceStateCompute() creates (-<prefix>micro_*).
+
+  Collective
+
+  Input Parameters:
++ comm   - the communicator the options are read on
+- prefix - the options prefix (NULL: none), at most 255 characters
+
+  Input/Output Parameter:
+. p - the parameters: their values are the defaults of the options, replaced by those given
+
+  Options Database Keys:
++ -reference_etol <1e-10> - stress-free relaxation: stop when the energy is below this (J)
+. -reference_max_rounds <30> - stress-free relaxation: at most this many rounds
+. -reference_kind <auto> - tension factors: auto, knit or woven
+. -reference_stress_free <true> - reset the rest values to the geometry and relax
+. -reference_tension <true> - apply the tension factors
+. -reference_minimum <true> - find the in-plane minimum over the periods
+. -reference_bounds <-0.4,0.2> - bounds lo,hi of sx and sy in the minimum (-1 < lo < 0 < hi)
+. -reference_xtol <1e-4> - Nelder-Mead simplex size tolerance (strain)
+- -reference_max_evals <80> - at most this many solves in the minimum
+
+  Level: intermediate
+
+.seealso: HylcReferenceParamsDefault(), HylcReferenceStateCompute()
+@*/
 PetscErrorCode HylcReferenceParamsSetFromOptions(MPI_Comm comm, const char prefix[], HylcReferenceParams *p)
 {
   PetscEnum kind = (PetscEnum)p->kind;
