@@ -22,7 +22,7 @@ def main():
     for fn, h in decl.items():
         page = False
         for s in src:
-            m = re.search(r"^PetscErrorCode\s+%s\s*\(" % fn, s, re.M)
+            m = re.search(r"^(?:[A-Z_]+ )?PetscErrorCode\s+%s\s*\(" % fn, s, re.M)
             if not m:
                 continue
             before = s[: m.start()].rstrip()

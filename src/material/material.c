@@ -188,6 +188,19 @@ PetscErrorCode HylcMaterialDestroy(HylcMaterial *m)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMaterialSetOptionsPrefix - Sets the prefix of the material's options (-<prefix>material_*).
+
+  Not collective
+
+  Input Parameters:
++ m      - the material
+- prefix - the prefix (NULL: none)
+
+  Level: intermediate
+
+.seealso: HylcMaterialSetFromOptions()
+@*/
 PetscErrorCode HylcMaterialSetOptionsPrefix(HylcMaterial m, const char prefix[])
 {
   PetscFunctionBegin;
@@ -265,6 +278,20 @@ PetscErrorCode HylcMaterialView(HylcMaterial m, PetscViewer viewer)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMaterialViewFromOptions - Views the material if the option name is given (PetscObjectViewFromOptions()).
+
+  Collective
+
+  Input Parameters:
++ m    - the material
+. obj  - an object whose prefix is used (NULL: the material's)
+- name - the option, e.g. "-material_view"
+
+  Level: intermediate
+
+.seealso: HylcMaterialView()
+@*/
 PetscErrorCode HylcMaterialViewFromOptions(HylcMaterial m, PetscObject obj, const char name[])
 {
   PetscFunctionBegin;
@@ -277,6 +304,19 @@ PetscErrorCode HylcMaterialViewFromOptions(HylcMaterial m, PetscObject obj, cons
 /* Contents                                                                                           */
 /* ------------------------------------------------------------------------------------------------ */
 
+/*@C
+  HylcMaterialSetDensity - Sets the area density of the material (checked by hylcmat_set_density()).
+
+  Not collective
+
+  Input Parameters:
++ m   - the material
+- rho - the area density (kg/m^2)
+
+  Level: intermediate
+
+.seealso: HylcMaterialGetDensity()
+@*/
 PetscErrorCode HylcMaterialSetDensity(HylcMaterial m, PetscReal rho)
 {
   char err[512] = "";
@@ -288,6 +328,21 @@ PetscErrorCode HylcMaterialSetDensity(HylcMaterial m, PetscReal rho)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMaterialGetDensity - The area density of the material.
+
+  Not collective
+
+  Input Parameter:
+. m - the material
+
+  Output Parameter:
+. rho - the area density (kg/m^2)
+
+  Level: intermediate
+
+.seealso: HylcMaterialSetDensity()
+@*/
 PetscErrorCode HylcMaterialGetDensity(HylcMaterial m, PetscReal *rho)
 {
   PetscFunctionBegin;
@@ -296,6 +351,20 @@ PetscErrorCode HylcMaterialGetDensity(HylcMaterial m, PetscReal *rho)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMaterialSetStrainScale - Sets the strain scales of the tables, one per coordinate (sx, sa, sy, II00,
+  II11; finite and positive with a finite inverse).
+
+  Not collective
+
+  Input Parameters:
++ m     - the material
+- scale - the five scales (copied)
+
+  Level: intermediate
+
+.seealso: HylcMaterialGetStrainScale()
+@*/
 PetscErrorCode HylcMaterialSetStrainScale(HylcMaterial m, const PetscReal scale[5])
 {
   char   err[512] = "";
@@ -309,6 +378,21 @@ PetscErrorCode HylcMaterialSetStrainScale(HylcMaterial m, const PetscReal scale[
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMaterialGetStrainScale - The strain scales of the tables, one per coordinate.
+
+  Not collective
+
+  Input Parameter:
+. m - the material
+
+  Output Parameter:
+. scale - the five scales
+
+  Level: intermediate
+
+.seealso: HylcMaterialSetStrainScale()
+@*/
 PetscErrorCode HylcMaterialGetStrainScale(HylcMaterial m, PetscReal scale[5])
 {
   PetscFunctionBegin;
@@ -317,6 +401,20 @@ PetscErrorCode HylcMaterialGetStrainScale(HylcMaterial m, PetscReal scale[5])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMaterialSetStrainShift - Sets the JSON's informational "strain shift" (not used by the evaluator; kept
+  so that files round-trip).
+
+  Not collective
+
+  Input Parameters:
++ m     - the material
+- shift - the five values (default 1, 0, 1, 0, 0)
+
+  Level: developer
+
+.seealso: HylcMaterialGetStrainShift()
+@*/
 PetscErrorCode HylcMaterialSetStrainShift(HylcMaterial m, const PetscInt shift[5])
 {
   int i5[5];
@@ -329,6 +427,21 @@ PetscErrorCode HylcMaterialSetStrainShift(HylcMaterial m, const PetscInt shift[5
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMaterialGetStrainShift - The JSON's informational "strain shift".
+
+  Not collective
+
+  Input Parameter:
+. m - the material
+
+  Output Parameter:
+. shift - the five values
+
+  Level: developer
+
+.seealso: HylcMaterialSetStrainShift()
+@*/
 PetscErrorCode HylcMaterialGetStrainShift(HylcMaterial m, PetscInt shift[5])
 {
   PetscFunctionBegin;
@@ -337,6 +450,19 @@ PetscErrorCode HylcMaterialGetStrainShift(HylcMaterial m, PetscInt shift[5])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMaterialSetConstant - Sets the constant term of the energy density.
+
+  Not collective
+
+  Input Parameters:
++ m - the material
+- c - the constant (J/m^2, finite)
+
+  Level: intermediate
+
+.seealso: HylcMaterialGetConstant()
+@*/
 PetscErrorCode HylcMaterialSetConstant(HylcMaterial m, PetscReal c)
 {
   char err[512] = "";
@@ -348,6 +474,21 @@ PetscErrorCode HylcMaterialSetConstant(HylcMaterial m, PetscReal c)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMaterialGetConstant - The constant term of the energy density.
+
+  Not collective
+
+  Input Parameter:
+. m - the material
+
+  Output Parameter:
+. c - the constant (J/m^2)
+
+  Level: intermediate
+
+.seealso: HylcMaterialSetConstant()
+@*/
 PetscErrorCode HylcMaterialGetConstant(HylcMaterial m, PetscReal *c)
 {
   PetscFunctionBegin;
@@ -409,6 +550,22 @@ PetscErrorCode HylcMaterialSet2D(HylcMaterial m, const HylcSpline2D *s)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMaterialGet1D - The 1D term of coordinate k (include/hylc/strain.h: 0 sx, 1 sa, 2 sy, 3 II00, 4 II11).
+
+  Not collective
+
+  Input Parameters:
++ m - the material
+- k - the coordinate, 0..4
+
+  Output Parameter:
+. s - the spline (owned by the material, valid until it changes), NULL for an absent term
+
+  Level: intermediate
+
+.seealso: HylcMaterialSet1D(), HylcMaterialGet2D()
+@*/
 PetscErrorCode HylcMaterialGet1D(HylcMaterial m, PetscInt k, const HylcSpline1D **s)
 {
   PetscFunctionBegin;
@@ -418,6 +575,23 @@ PetscErrorCode HylcMaterialGet1D(HylcMaterial m, PetscInt k, const HylcSpline1D 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMaterialGet2D - The 2D term of the pair (k0, k1) (include/hylc/strain.h).
+
+  Not collective
+
+  Input Parameters:
++ m  - the material
+. k0 - the first coordinate of the pair
+- k1 - the second (k0 < k1; a pair that is no term of the model is an error)
+
+  Output Parameter:
+. s - the spline (owned by the material, valid until it changes), NULL for an absent term
+
+  Level: intermediate
+
+.seealso: HylcMaterialSet2D(), HylcMaterialGet1D()
+@*/
 PetscErrorCode HylcMaterialGet2D(HylcMaterial m, PetscInt k0, PetscInt k1, const HylcSpline2D **s)
 {
   const PetscInt q = HylcMaterialPairIndex(k0, k1);

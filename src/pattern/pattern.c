@@ -41,6 +41,19 @@ PetscErrorCode HylcPatternInitializePackage(void)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPatternGenParamsDefault - The default parameters of the generators: radius 1 mm, every other value 0
+  (the generator's own default).
+
+  Not collective
+
+  Output Parameter:
+. g - the parameters
+
+  Level: intermediate
+
+.seealso: HylcPatternSetGenParams()
+@*/
 PetscErrorCode HylcPatternGenParamsDefault(HylcPatternGenParams *g)
 {
   PetscFunctionBegin;
@@ -110,6 +123,19 @@ PetscErrorCode HylcPatternDestroy(HylcPattern *p)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPatternSetOptionsPrefix - Sets the prefix of the pattern's options (-<prefix>pattern_*).
+
+  Not collective
+
+  Input Parameters:
++ p      - the pattern
+- prefix - the prefix (NULL: none)
+
+  Level: intermediate
+
+.seealso: HylcPatternSetFromOptions()
+@*/
 PetscErrorCode HylcPatternSetOptionsPrefix(HylcPattern p, const char prefix[])
 {
   PetscFunctionBegin;
@@ -118,6 +144,23 @@ PetscErrorCode HylcPatternSetOptionsPrefix(HylcPattern p, const char prefix[])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPatternSetType - Sets the pattern's source: "file" or a registered generator (HylcPatternRegister());
+  HylcPatternSetUp() then loads or generates the data.
+
+  Collective
+
+  Input Parameters:
++ p    - the pattern
+- type - the name (an unknown one is refused, naming the registered ones)
+
+  Options Database Key:
+. -pattern_type <file> - the same (-help lists the registered names)
+
+  Level: beginner
+
+.seealso: HylcPatternGetType(), HylcPatternRegister(), HylcPatternSetFileName()
+@*/
 PetscErrorCode HylcPatternSetType(HylcPattern p, HylcPatternType type)
 {
   HylcPatternGenerator source;
@@ -135,6 +178,21 @@ PetscErrorCode HylcPatternSetType(HylcPattern p, HylcPatternType type)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPatternGetType - The pattern's source: "file" or the name of a registered generator.
+
+  Not collective
+
+  Input Parameter:
+. p - the pattern
+
+  Output Parameter:
+. type - the name (owned by the pattern; NULL if none was set)
+
+  Level: beginner
+
+.seealso: HylcPatternSetType()
+@*/
 PetscErrorCode HylcPatternGetType(HylcPattern p, HylcPatternType *type)
 {
   PetscFunctionBegin;
@@ -143,6 +201,22 @@ PetscErrorCode HylcPatternGetType(HylcPattern p, HylcPatternType *type)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPatternSetFileName - Sets the .pyp file the pattern loads and its type to "file".
+
+  Collective
+
+  Input Parameters:
++ p    - the pattern
+- file - the path
+
+  Options Database Key:
+. -pattern_file <file.pyp> - the same
+
+  Level: beginner
+
+.seealso: HylcPatternGetFileName(), HylcPatternSetType()
+@*/
 PetscErrorCode HylcPatternSetFileName(HylcPattern p, const char file[])
 {
   PetscFunctionBegin;
@@ -177,6 +251,20 @@ PetscErrorCode HylcPatternGetFileName(HylcPattern p, const char *file[])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPatternSetGenParams - Sets the parameters of the generators (radius, lengths, tile size, ...); a
+  pattern already set up is generated again by the next HylcPatternSetUp().
+
+  Not collective
+
+  Input Parameters:
++ p - the pattern
+- g - the parameters (copied; HylcPatternGenParamsDefault() for the defaults)
+
+  Level: intermediate
+
+.seealso: HylcPatternGetGenParams(), HylcPatternGenerate()
+@*/
 PetscErrorCode HylcPatternSetGenParams(HylcPattern p, const HylcPatternGenParams *g)
 {
   PetscFunctionBegin;
@@ -186,6 +274,21 @@ PetscErrorCode HylcPatternSetGenParams(HylcPattern p, const HylcPatternGenParams
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPatternGetGenParams - The parameters of the generators as set or read from the options.
+
+  Not collective
+
+  Input Parameter:
+. p - the pattern
+
+  Output Parameter:
+. g - a copy of the parameters
+
+  Level: intermediate
+
+.seealso: HylcPatternSetGenParams()
+@*/
 PetscErrorCode HylcPatternGetGenParams(HylcPattern p, HylcPatternGenParams *g)
 {
   PetscFunctionBegin;
@@ -389,6 +492,22 @@ PetscErrorCode HylcPatternBuildLoops_Private(HylcPattern p)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPatternGetData - The pattern's data: vertices, periods, radius, rest data, reference frames and the
+  connectivity (borrowed pointers, valid until the pattern changes).
+
+  Not collective
+
+  Input Parameter:
+. p - the pattern, with data (HylcPatternSetUp(), HylcPatternLoad() or HylcPatternGenerate())
+
+  Output Parameter:
+. d - the data
+
+  Level: intermediate
+
+.seealso: HylcPatternSetData(), HylcPatternGetNumVertices()
+@*/
 PetscErrorCode HylcPatternGetData(HylcPattern p, HylcPatternData *d)
 {
   PetscFunctionBegin;
@@ -411,6 +530,21 @@ PetscErrorCode HylcPatternGetData(HylcPattern p, HylcPatternData *d)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPatternGetNumVertices - The number of vertices of the tile.
+
+  Not collective
+
+  Input Parameter:
+. p - the pattern
+
+  Output Parameter:
+. nv - the number (0 before the data are set)
+
+  Level: beginner
+
+.seealso: HylcPatternGetData()
+@*/
 PetscErrorCode HylcPatternGetNumVertices(HylcPattern p, PetscInt *nv)
 {
   PetscFunctionBegin;
@@ -419,6 +553,22 @@ PetscErrorCode HylcPatternGetNumVertices(HylcPattern p, PetscInt *nv)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPatternGetPeriods - The tile's periods along x and y (m).
+
+  Not collective
+
+  Input Parameter:
+. p - the pattern
+
+  Output Parameters:
++ px - the period along x (may be NULL)
+- py - the period along y (may be NULL)
+
+  Level: beginner
+
+.seealso: HylcPatternGetData()
+@*/
 PetscErrorCode HylcPatternGetPeriods(HylcPattern p, PetscReal *px, PetscReal *py)
 {
   PetscFunctionBegin;
@@ -428,6 +578,21 @@ PetscErrorCode HylcPatternGetPeriods(HylcPattern p, PetscReal *px, PetscReal *py
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPatternGetRadius - The yarn radius of the pattern (m).
+
+  Not collective
+
+  Input Parameter:
+. p - the pattern
+
+  Output Parameter:
+. r - the radius
+
+  Level: beginner
+
+.seealso: HylcPatternGetData(), HylcYarnModelGetConstants()
+@*/
 PetscErrorCode HylcPatternGetRadius(HylcPattern p, PetscReal *r)
 {
   PetscFunctionBegin;
@@ -436,6 +601,21 @@ PetscErrorCode HylcPatternGetRadius(HylcPattern p, PetscReal *r)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPatternGetNumLoops - The number of yarn loops of the tile (the cycles of next[]).
+
+  Not collective
+
+  Input Parameter:
+. p - the pattern
+
+  Output Parameter:
+. nl - the number
+
+  Level: intermediate
+
+.seealso: HylcPatternGetVertexLoop()
+@*/
 PetscErrorCode HylcPatternGetNumLoops(HylcPattern p, PetscInt *nl)
 {
   PetscFunctionBegin;
@@ -462,6 +642,23 @@ PetscErrorCode HylcPatternGetLoop(HylcPattern p, PetscInt l, PetscInt *n, const 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPatternGetVertexLoop - The loop a vertex belongs to and its position along it.
+
+  Not collective
+
+  Input Parameters:
++ p - the pattern
+- v - the vertex, 0 to nv - 1
+
+  Output Parameters:
++ loop - the loop (may be NULL)
+- pos  - the position of v in the loop (may be NULL)
+
+  Level: intermediate
+
+.seealso: HylcPatternGetNumLoops()
+@*/
 PetscErrorCode HylcPatternGetVertexLoop(HylcPattern p, PetscInt v, PetscInt *loop, PetscInt *pos)
 {
   PetscFunctionBegin;
