@@ -36,6 +36,9 @@ PETSC_EXTERN PetscErrorCode HylcMaterialCreate(MPI_Comm, HylcMaterial *);
 PETSC_EXTERN PetscErrorCode HylcMaterialDestroy(HylcMaterial *);
 PETSC_EXTERN PetscErrorCode HylcMaterialSetOptionsPrefix(HylcMaterial, const char[]);
 PETSC_EXTERN PetscErrorCode HylcMaterialSetFromOptions(HylcMaterial);
+/* The file the material's -material_file option names (after its prefix), which HylcMaterialSetFromOptions()
+   loads: for a program that checks its files before any work. Not collective. */
+PETSC_EXTERN PetscErrorCode HylcMaterialGetOptionsFile(HylcMaterial, char[], size_t, PetscBool *);
 PETSC_EXTERN PetscErrorCode HylcMaterialView(HylcMaterial, PetscViewer);
 PETSC_EXTERN PetscErrorCode HylcMaterialViewFromOptions(HylcMaterial, PetscObject, const char[]);
 

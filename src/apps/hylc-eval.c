@@ -203,7 +203,7 @@ static PetscErrorCode Eval(HylcMaterial mat)
     udirn = isy ? 1 : 0;
     for (PetscInt i = 0; i < nu; i++) PetscCheck(ustrain[i] >= 0 && ustrain[i] < 1, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-eval_uniaxial_strains: stretch %g is outside [0, 1) (a uniaxial state is a tension test; a compressed strip buckles)", (double)ustrain[i]);
   }
-  PetscCall(PetscOptionsGetString(NULL, NULL, "-material_file", matFile, sizeof(matFile), &hasMatFile));
+  PetscCall(HylcMaterialGetOptionsFile(mat, matFile, sizeof(matFile), &hasMatFile));
   PetscCheck(!(hasFile && hasMatFile), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "Both -material and -material_file were given; use one");
   PetscCall(PetscOptionsHasHelp(NULL, &help));
   if (help) {                                   /* -help: every option has been listed; do no work */

@@ -210,6 +210,36 @@ PetscErrorCode HylcMaterialSetOptionsPrefix(HylcMaterial m, const char prefix[])
 }
 
 /*@C
+  HylcMaterialGetOptionsFile - The material file that the material's option -material_file names (after the
+  material's prefix), which HylcMaterialSetFromOptions() will load; for a program that checks all its files
+  before any work (include/hylc/files.h). Loads nothing.
+
+  Not collective
+
+  Input Parameters:
++ m   - the material
+- len - the size of file
+
+  Output Parameters:
++ file - the path ("" if the option is not given or has no value)
+- set  - whether the option is given
+
+  Level: intermediate
+
+.seealso: HylcMaterialSetFromOptions(), HylcMaterialLoad()
+@*/
+PetscErrorCode HylcMaterialGetOptionsFile(HylcMaterial m, char file[], size_t len, PetscBool *set)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(m, HYLC_MATERIAL_CLASSID, 1);
+  PetscValidCharPointer(file, 2);
+  PetscValidBoolPointer(set, 4);
+  file[0] = 0;
+  PetscCall(PetscOptionsGetString(((PetscObject)m)->options, ((PetscObject)m)->prefix, "-material_file", file, len, set));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
   HylcMaterialSetFromOptions - Reads the material options. Collective.
 
   Options (after the object's prefix, if any):
