@@ -78,7 +78,7 @@ EX_SRC    := $(sort $(wildcard examples/*.c))
 EXAMPLES  := $(EX_SRC:examples/%.c=$(BUILD)/ex/%)
 SUPPORT_SRC := $(sort $(wildcard tests/support/*.c))
 SUPPORT_LIB := $(BUILD)/libhylc-testsupport.a
-ALL_OBJ   := $(LIB_OBJ) $(SUPPORT_SRC:%.c=$(OBJ)/%.o) $(patsubst src/%.c,$(BUILD)/hylcmat/%.o,$(wildcard src/hylcmat/*.c) src/sys/json.c src/sys/h5util.c) $(APP_SRC:%.c=$(OBJ)/%.o) $(TEST_SRC:%.c=$(OBJ)/%.o) $(REPLAY_SRC:%.c=$(OBJ)/%.o) $(OBJ)/tests/fuzz/replay.o $(BENCH_SRC:%.c=$(OBJ)/%.o) $(EX_SRC:%.c=$(OBJ)/%.o)
+ALL_OBJ   := $(LIB_OBJ) $(SUPPORT_SRC:%.c=$(OBJ)/%.o) $(patsubst src/%.c,$(BUILD)/hylcmat/%.o,$(wildcard src/hylcmat/*.c) src/sys/json.c src/sys/strain.c src/sys/h5util.c) $(APP_SRC:%.c=$(OBJ)/%.o) $(TEST_SRC:%.c=$(OBJ)/%.o) $(REPLAY_SRC:%.c=$(OBJ)/%.o) $(OBJ)/tests/fuzz/replay.o $(BENCH_SRC:%.c=$(OBJ)/%.o) $(EX_SRC:%.c=$(OBJ)/%.o)
 
 .PHONY: all lib apps tests benches examples test test-asan coverage check-format demo bench deps format clean help fuzz fuzz-build fuzz-deps hylcmat install uninstall
 all: lib hylcmat apps tests benches examples
@@ -88,7 +88,7 @@ tests: $(TESTS) $(REPLAYS)
 benches: $(BENCHES)
 examples: $(EXAMPLES)
 
-# The build identity in every sampling run's identity (src/sampler/identity.c, docs/output-format.md):
+# The build identity in every sampling run's identity (src/samples/identity.c, docs/output-format.md):
 # `git describe --always --dirty` of the checkout, "unknown" outside one. $(BUILD)/build-id changes only
 # when it does, and identity.o is rebuilt then.
 HYLC_BUILD_ID := $(shell git -C $(CURDIR) describe --always --dirty 2>/dev/null || echo unknown)
@@ -96,8 +96,8 @@ BUILD_ID_FILE := $(BUILD)/build-id
 ifeq ($(filter clean help,$(MAKECMDGOALS)),)
   $(shell mkdir -p $(BUILD); [ "$$(cat $(BUILD_ID_FILE) 2>/dev/null)" = "$(HYLC_BUILD_ID)" ] || echo "$(HYLC_BUILD_ID)" > $(BUILD_ID_FILE))
 endif
-$(OBJ)/src/sampler/identity.o: CFLAGS += -DHYLC_BUILD_ID='"$(HYLC_BUILD_ID)"'
-$(OBJ)/src/sampler/identity.o: $(BUILD_ID_FILE)
+$(OBJ)/src/samples/identity.o: CFLAGS += -DHYLC_BUILD_ID='"$(HYLC_BUILD_ID)"'
+$(OBJ)/src/samples/identity.o: $(BUILD_ID_FILE)
 
 # the Cholesky kernels and solves: GCC's -O2 vectorizes only loops it needs no run-time alias check for;
 # the dynamic cost model lets it version the solves' loops (about 2x on them, results bitwise unchanged:
@@ -140,7 +140,7 @@ HYLCMAT_SOVERSION := 1
 HM_CC      ?= cc
 HM_CFLAGS  ?= -O2 -g
 # PETSc-free sources of src/sys shared with libhylc: the JSON reader, and the HDF5 helpers with HDF5
-HM_SRC     := $(sort $(wildcard src/hylcmat/*.c)) src/sys/json.c $(if $(filter 1,$(HYLCMAT_WITH_HDF5)),src/sys/h5util.c)
+HM_SRC     := $(sort $(wildcard src/hylcmat/*.c)) src/sys/json.c src/sys/strain.c $(if $(filter 1,$(HYLCMAT_WITH_HDF5)),src/sys/h5util.c)
 HM_OBJ     := $(HM_SRC:src/%.c=$(BUILD)/hylcmat/%.o)
 HM_LIBS    := -lm
 HYLCMAT_HDF5_PKG ?= hdf5-openmpi

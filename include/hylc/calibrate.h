@@ -16,9 +16,13 @@
 #include <hylc/plan.h>
 #include <hylc/material.h>
 #include <hylc/reference.h>
-#include <hylc/sampler.h> /* HylcPlanRanges */
 
 typedef struct _p_HylcCalibrate *HylcCalibrate;
+
+/* Registration: the class id and log events of this stage (HylcCalibrateInitializePackage(), called by HylcCalibrateCreate()). */
+PETSC_EXTERN PetscClassId   HYLC_CALIBRATE_CLASSID;
+PETSC_EXTERN PetscLogEvent  HYLC_CalibrateSetUp, HYLC_CalibrateSolve, HYLC_CalibrateEvaluate, HYLC_CalibrateGather;
+PETSC_EXTERN PetscErrorCode HylcCalibrateInitializePackage(void);
 
 /* the parameters, in this order: E (bending modulus, Pa), Es (stretching modulus, Pa), G (shear modulus,
    Pa), kc (contact stiffness, N/m) */

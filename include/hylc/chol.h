@@ -22,6 +22,12 @@
 
 typedef struct _n_HylcChol *HylcChol;
 
+/* Registration: the class id and log events of this stage (HylcCholInitializePackage(), called by
+   HylcCholCreate()), and the solver type below (HylcCholRegisterSolverType()). */
+PETSC_EXTERN PetscClassId   HYLC_CHOL_CLASSID;
+PETSC_EXTERN PetscLogEvent  HYLC_CholSymbolic, HYLC_CholNumeric, HYLC_CholSolve;
+PETSC_EXTERN PetscErrorCode HylcCholInitializePackage(void);
+
 typedef enum {
   HYLC_CHOL_ORDERING_METIS,  /* METIS_NodeND of the block graph (default) */
   HYLC_CHOL_ORDERING_NATURAL /* the order of A (tests) */
@@ -62,7 +68,7 @@ PETSC_EXTERN PetscErrorCode HylcCholSolveMany(HylcChol, PetscInt nrhs, const Pet
 PETSC_EXTERN PetscErrorCode HylcCholGetInfo(HylcChol, HylcCholInfo *);
 PETSC_EXTERN PetscErrorCode HylcCholView(HylcChol, PetscViewer);
 
-/* HylcChol as a PETSc solver type (src/linalg/matsolver.c), registered by HylcInitializePackage() for
+/* HylcChol as a PETSc solver type (src/linalg/matsolver.c), registered by HylcCholRegisterSolverType() for
    MATSEQAIJ and MAT_FACTOR_CHOLESKY: PCFactorSetMatSolverType(pc, MATSOLVERHYLC) or
    -pc_factor_mat_solver_type hylc (in hylc: -micro_factor_pc_factor_mat_solver_type hylc, the default).
    The factor implements MatCholeskyFactorSymbolic/Numeric, MatSolve, MatMatSolve (all columns of a dense
@@ -73,3 +79,9 @@ PETSC_EXTERN PetscErrorCode HylcCholView(HylcChol, PetscViewer);
    a failed factorization (MAT_FACTOR_NUMERIC_ZEROPIVOT, or an error when A's error-if-failure is set). */
 #define MATSOLVERHYLC "hylc"
 PETSC_EXTERN PetscErrorCode MatGetFactor_SeqAIJ_Hylc(Mat, MatFactorType, Mat *);
+/* Registers MATSOLVERHYLC with PETSc (after PETSc's own solver types, which stay the defaults); idempotent.
+   Called by HylcCholInitializePackage() and, before it names the type, by every user of it
+   (HylcMicroGetFactorPC()): a stage that names another stage's type in a PETSc registry registers that
+   type through the owner's function, as PETSc's MatInitializePackage() registers the external solver
+   types. Not collective. */
+PETSC_EXTERN PetscErrorCode HylcCholRegisterSolverType(void);

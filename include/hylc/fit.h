@@ -20,6 +20,11 @@
 
 typedef struct _p_HylcFit *HylcFit;
 
+/* Registration: the class id and log events of this stage (HylcFitInitializePackage(), called by HylcFitCreate()). */
+PETSC_EXTERN PetscClassId   HYLC_FIT_CLASSID;
+PETSC_EXTERN PetscLogEvent  HYLC_FitRun, HYLC_FitTerm, HYLC_FitMLS, HYLC_FitMonotone;
+PETSC_EXTERN PetscErrorCode HylcFitInitializePackage(void);
+
 /* Pattern families with their own fitting constants (docs/method.md §9, §S3.4): WOVEN and KNIT share the
    constants of every pattern but the stockinette; STOCKINETTE has reg 1e-2 and coarse 2D bending knots
    (factor 0.3, 2+4 and 3+3). The family is the object's type name. */
@@ -55,6 +60,9 @@ PETSC_EXTERN PetscErrorCode HylcFitViewFromOptions(HylcFit, PetscObject, const c
 PETSC_EXTERN PetscErrorCode HylcFitSetInput(HylcFit, const char path[]);
 /* Output files written by HylcFitRun() (-fit_output, -fit_json); NULL or "" for none. */
 PETSC_EXTERN PetscErrorCode HylcFitSetOutputs(HylcFit, const char h5[], const char json[]);
+/* The input and the outputs as set or read from the options (owned by the fit; "" for none). */
+PETSC_EXTERN PetscErrorCode HylcFitGetInput(HylcFit, const char *path[]);
+PETSC_EXTERN PetscErrorCode HylcFitGetOutputs(HylcFit, const char *h5[], const char *json[]);
 /* The family (sets the family's defaults of -fit_reg and the 2D bending knots; call before
    HylcFitSetFromOptions to let options override them). */
 PETSC_EXTERN PetscErrorCode HylcFitSetFamily(HylcFit, HylcFitFamily);

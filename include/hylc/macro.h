@@ -108,6 +108,11 @@ int HylcMacroClosedPosition(const HylcMacroStrain *m, const double xi[2], double
 
 typedef struct _p_HylcMidsurface *HylcMidsurface;
 
+/* Registration: the class id and log events of this stage (HylcMidsurfaceInitializePackage(), called by HylcMidsurfaceCreate()). */
+PETSC_EXTERN PetscClassId   HYLC_MIDSURFACE_CLASSID;
+PETSC_EXTERN PetscLogEvent  HYLC_MacroSetUp, HYLC_MacroPoisson, HYLC_MacroEvaluate;
+PETSC_EXTERN PetscErrorCode HylcMidsurfaceInitializePackage(void);
+
 typedef enum {
   HYLC_MIDSURFACE_AUTO    = 0, /* closed for flat or singly curved II, else poisson */
   HYLC_MIDSURFACE_CLOSED  = 1,

@@ -15,21 +15,30 @@
    Terms that are absent contribute 0. */
 #include <hylc/sys.h>
 #include <hylc/spline.h>
+#include <hylc/strain.h>
 #include <petscviewer.h>
 
 typedef struct _p_HylcMaterial *HylcMaterial;
 
-#define HYLC_MATERIAL_N1D 5 /* 1D terms k = 0 sx, 1 sa, 2 sy, 3 x-bending, 4 y-bending */
-#define HYLC_MATERIAL_N2D 9 /* 2D terms, in table order HylcMaterialPairs */
+/* Registration: the class id and log events of this stage (HylcMaterialInitializePackage(), called by HylcMaterialCreate()). */
+PETSC_EXTERN PetscClassId   HYLC_MATERIAL_CLASSID;
+PETSC_EXTERN PetscLogEvent  HYLC_MaterialLoad, HYLC_MaterialWrite;
+PETSC_EXTERN PetscErrorCode HylcMaterialInitializePackage(void);
 
-/* The (k0, k1) of the 2D terms in the order of the JSON tables and of the sampling plan:
+/* The terms are the shared vocabulary's (include/hylc/strain.h): 1D terms k = 0 sx, 1 sa, 2 sy, 3 x-bending
+   (II00), 4 y-bending (II11); the 2D terms (k0, k1) in the order of the JSON tables and of the sampling plan,
    (0,1) (0,2) (0,3) (0,4) (1,2) (1,3) (1,4) (2,3) (2,4). */
-PETSC_EXTERN const PetscInt HylcMaterialPairs[HYLC_MATERIAL_N2D][2];
+#define HYLC_MATERIAL_N1D HYLC_NCOORD
+#define HYLC_MATERIAL_N2D HYLC_NPAIR
+#define HylcMaterialPairs HylcPairCoords
 
 PETSC_EXTERN PetscErrorCode HylcMaterialCreate(MPI_Comm, HylcMaterial *);
 PETSC_EXTERN PetscErrorCode HylcMaterialDestroy(HylcMaterial *);
 PETSC_EXTERN PetscErrorCode HylcMaterialSetOptionsPrefix(HylcMaterial, const char[]);
 PETSC_EXTERN PetscErrorCode HylcMaterialSetFromOptions(HylcMaterial);
+/* The file the material's -material_file option names (after its prefix), which HylcMaterialSetFromOptions()
+   loads: for a program that checks its files before any work. Not collective. */
+PETSC_EXTERN PetscErrorCode HylcMaterialGetOptionsFile(HylcMaterial, char[], size_t, PetscBool *);
 PETSC_EXTERN PetscErrorCode HylcMaterialView(HylcMaterial, PetscViewer);
 PETSC_EXTERN PetscErrorCode HylcMaterialViewFromOptions(HylcMaterial, PetscObject, const char[]);
 
@@ -64,10 +73,9 @@ PETSC_EXTERN PetscErrorCode HylcMaterialEvaluate(HylcMaterial, const PetscReal s
    x (dir 0) or y (dir 1), the lateral strains minimizing Psi; T = dPsi/ds (N/m). Not collective. */
 PETSC_EXTERN PetscErrorCode HylcMaterialUniaxial(HylcMaterial, PetscInt dir, PetscReal s, const PetscReal guess[2], PetscReal *T, PetscReal lateral[2], PetscReal *psi, PetscBool *converged);
 
-/* Names of the terms, as the sampling plan's (HylcPlanTermName): 1D "sx" "sa" "sy" "II00" "II11"; 2D
-   "sx-sa" "sx-sy" "sx-II00" "sx-II11" "sa-sy" "sa-II00" "sa-II11" "sy-II00" "sy-II11". */
-PETSC_EXTERN const char *const HylcMaterialTermNames1D[HYLC_MATERIAL_N1D];
-PETSC_EXTERN const char *const HylcMaterialTermNames2D[HYLC_MATERIAL_N2D];
+/* Names of the terms: the shared vocabulary's (include/hylc/strain.h), as the sampling plan's (HylcPlanTermName). */
+#define HylcMaterialTermNames1D HylcCoordNames
+#define HylcMaterialTermNames2D HylcPairNames
 /* Index of (k0, k1) in HylcMaterialPairs, or -1 if the model has no such term. */
 PETSC_EXTERN PetscInt HylcMaterialPairIndex(PetscInt k0, PetscInt k1);
 

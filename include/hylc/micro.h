@@ -23,6 +23,11 @@
 
 typedef struct _p_HylcMicro *HylcMicro;
 
+/* Registration: the class id and log events of this stage (HylcMicroInitializePackage(), called by HylcMicroCreate()). */
+PETSC_EXTERN PetscClassId   HYLC_MICRO_CLASSID;
+PETSC_EXTERN PetscLogEvent  HYLC_MicroSetUp, HYLC_MicroSolve, HYLC_MicroFactor, HYLC_MicroSaddle, HYLC_MicroLineSearch;
+PETSC_EXTERN PetscErrorCode HylcMicroInitializePackage(void);
+
 typedef enum {
   HYLC_MICRO_CONVERGED = 0,
   HYLC_MICRO_MAX_IT    = 1, /* iteration cap */

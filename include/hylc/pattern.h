@@ -21,7 +21,12 @@
 
 typedef struct _p_HylcPattern *HylcPattern;
 
-/* Pattern sources: a .pyp file or one of the procedural generators. */
+/* Registration: the class id and log events of this stage (HylcPatternInitializePackage(), called by HylcPatternCreate()). */
+PETSC_EXTERN PetscClassId   HYLC_PATTERN_CLASSID;
+PETSC_EXTERN PetscLogEvent  HYLC_PatternLoad, HYLC_PatternWrite, HYLC_PatternGenerate, HYLC_PatternDistance;
+PETSC_EXTERN PetscErrorCode HylcPatternInitializePackage(void);
+
+/* Pattern sources: a .pyp file or one of the registered generators (HylcPatternRegister()). */
 typedef const char *HylcPatternType;
 #define HYLCPATTERNFILE        "file"
 #define HYLCPATTERNPLAIN       "plain"
@@ -44,6 +49,18 @@ typedef struct {
                         0 = the smallest repeat of the pattern */
 } HylcPatternGenParams;
 
+/* A generator: fills the pattern's data (HylcPatternSetFromCurves() or HylcPatternSetData()) from the
+   parameters; the pattern's type is already its registered name (HylcPatternGetType()). Collective. */
+typedef PetscErrorCode (*HylcPatternGenerator)(HylcPattern, const HylcPatternGenParams *);
+
+/* The registry of pattern sources (src/pattern/registry.c): "file" (HylcPatternSetFileName()) and the
+   generators, each added by one HylcPatternRegister() call; -pattern_type lists them (PetscOptionsFList).
+   HylcPatternRegisterAll() adds the built-in ones (file, plain, basket, twill, satin, stockinette, rib)
+   and is called by HylcPatternInitializePackage(). Not collective. */
+PETSC_EXTERN PetscFunctionList HylcPatternList;
+PETSC_EXTERN PetscErrorCode    HylcPatternRegister(const char[], HylcPatternGenerator);
+PETSC_EXTERN PetscErrorCode    HylcPatternRegisterAll(void);
+
 /* The data arrays of a pattern (read-only views; see the layout above). */
 typedef struct {
   PetscInt         nv;
@@ -64,6 +81,7 @@ PETSC_EXTERN PetscErrorCode HylcPatternViewFromOptions(HylcPattern, PetscObject,
 PETSC_EXTERN PetscErrorCode HylcPatternSetType(HylcPattern, HylcPatternType);
 PETSC_EXTERN PetscErrorCode HylcPatternGetType(HylcPattern, HylcPatternType *);
 PETSC_EXTERN PetscErrorCode HylcPatternSetFileName(HylcPattern, const char[]);
+PETSC_EXTERN PetscErrorCode HylcPatternGetFileName(HylcPattern, const char *[]);
 PETSC_EXTERN PetscErrorCode HylcPatternSetGenParams(HylcPattern, const HylcPatternGenParams *);
 PETSC_EXTERN PetscErrorCode HylcPatternGetGenParams(HylcPattern, HylcPatternGenParams *);
 PETSC_EXTERN PetscErrorCode HylcPatternGenParamsDefault(HylcPatternGenParams *);

@@ -18,9 +18,15 @@
 #include <hylc/pattern.h>
 #include <hylc/yarn.h>
 #include <hylc/macro.h>
+#include <hylc/strain.h>
 #include <petscmat.h>
 
 typedef struct _p_HylcPeriodic *HylcPeriodic;
+
+/* Registration: the class id and log events of this stage (HylcPeriodicInitializePackage(), called by HylcPeriodicCreate()). */
+PETSC_EXTERN PetscClassId   HYLC_PERIODIC_CLASSID;
+PETSC_EXTERN PetscLogEvent  HYLC_PeriodicSetUp, HYLC_PeriodicEvaluate, HYLC_TileBroadphase, HYLC_TileContact, HYLC_TileAssemble, HYLC_TileEvaluate;
+PETSC_EXTERN PetscErrorCode HylcPeriodicInitializePackage(void);
 
 typedef enum {
   HYLC_SLIDE_NONE       = 0,

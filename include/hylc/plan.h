@@ -1,5 +1,6 @@
 #pragma once
-/* The sampling plan of Algorithm C4 (docs/method.md §8), as pure functions on plain arrays.
+/* The sampling plan of Algorithm C4 (docs/method.md §8), as pure functions on plain arrays (src/plan/plan.c),
+   and the plan's options shared by hylc-sample and hylc-calibrate (src/plan/planopts.c).
 
    Coordinates (index c): 0 = sx, 1 = sa, 2 = sy, 3 = II00, 4 = II11; in the 6-vector strain
    z = (sx, sa, sy, II00, II01, II11) they sit at positions 0, 1, 2, 3, 5 (II01 is never sampled).
@@ -8,8 +9,11 @@
    Sample order: the zero sample, then the 1D terms in order (n1 samples each, ascending), then the 2D
    terms in order, each an n2 x n2 grid with the first coordinate outer. */
 
-#define HYLC_PLAN_NCOORD 5
-#define HYLC_PLAN_NTERM  15
+#include <hylc/sys.h>
+#include <hylc/strain.h>
+
+#define HYLC_PLAN_NCOORD HYLC_NCOORD                    /* the vocabulary's coordinates (include/hylc/strain.h) */
+#define HYLC_PLAN_NTERM  (1 + HYLC_NCOORD + HYLC_NPAIR) /* zero, the 1D terms, the 2D terms */
 
 typedef struct {
   double min1[HYLC_PLAN_NCOORD], max1[HYLC_PLAN_NCOORD]; /* 1D ranges per coordinate */
@@ -49,3 +53,20 @@ long HylcPlanUnits(const HylcPlan *, long start[], long order[]);
    unknown family. 2D ranges: stretch axes paired with sa or a bending [-0.1, 0.84 max], (sx, sy) both
    [0.74 min, max], sa in 2D +-0.8 max, bending in 2D +-0.8 max (+-0.72 max on the same axis). */
 int HylcPlanDefaults(const char *family, double scale, HylcPlan *);
+
+/* ---- The plan's options (src/plan/planopts.c) ---- */
+
+/* The plan's ranges as options give them (HylcPlanRangesFromOptions), before the yarn radius is known. */
+typedef struct {
+  PetscInt  family;                /* index into HylcPlanFamilies: woven, stockinette, honeycomb, rib */
+  PetscBool set[HYLC_PLAN_NCOORD]; /* 1D range of coordinate c given (else the family's default) */
+  PetscReal min[HYLC_PLAN_NCOORD], max[HYLC_PLAN_NCOORD];
+} HylcPlanRanges;
+
+/* Family names, -sampler_family and -sampler_range_<c> inside a PetscOptionsBegin/End block (only read;
+   ranges resolved and checked for a radius by HylcPlanRangesApply), and a term list ("all", "1d" or
+   comma-separated names). Collective. */
+PETSC_EXTERN const char *const HylcPlanFamilies[];
+PETSC_EXTERN PetscErrorCode    HylcPlanRangesFromOptions(PetscOptionItems *, MPI_Comm, const char[], HylcPlanRanges *);
+PETSC_EXTERN PetscErrorCode    HylcPlanRangesApply(MPI_Comm, const HylcPlanRanges *, PetscReal, HylcPlan *);
+PETSC_EXTERN PetscErrorCode    HylcPlanTermsFromString(MPI_Comm, const char[], const char[], int *);

@@ -6,15 +6,16 @@
 #include <hylc/micro.h>
 
 typedef struct {
-  PetscReal etol;       /* stress-free: stop when the relaxed energy is below this (J); 1e-10 */
-  PetscInt  maxRounds;  /* stress-free: at most this many reset + relax rounds; 30 */
-  PetscInt  kind;       /* 0: auto (knit if every yarn runs along x), 1: knit, 2: woven */
-  PetscBool stressFree; /* the stress-free relaxation (rest values reset to the geometry); false keeps the rest data */
-  PetscBool tension;    /* apply the tension factors */
-  PetscBool minimum;    /* find the in-plane minimum */
-  PetscReal lo, hi;     /* bounds of sx and sy for the minimum; -0.4, 0.2 */
-  PetscReal xtol;       /* Nelder-Mead: simplex size tolerance in strain; 1e-4 */
-  PetscInt  maxEvals;   /* Nelder-Mead: at most this many solves; 80 */
+  PetscReal etol;        /* stress-free: stop when the relaxed energy is below this (J); 1e-10 */
+  PetscInt  maxRounds;   /* stress-free: at most this many reset + relax rounds; 30 */
+  PetscInt  kind;        /* 0: auto (knit if every yarn runs along x), 1: knit, 2: woven */
+  PetscBool stressFree;  /* the stress-free relaxation (rest values reset to the geometry); false keeps the rest data */
+  PetscBool tension;     /* apply the tension factors */
+  PetscBool minimum;     /* find the in-plane minimum */
+  PetscReal lo, hi;      /* bounds of sx and sy for the minimum; -0.4, 0.2 */
+  PetscReal xtol;        /* Nelder-Mead: simplex size tolerance in strain; 1e-4 */
+  PetscInt  maxEvals;    /* Nelder-Mead: at most this many solves; 80 */
+  char      prefix[256]; /* options prefix of the solvers the computation creates (-<prefix>micro_*); "" none */
 } HylcReferenceParams;
 
 /* Whether a job computes the reference state first (-sampler_reference, -calibrate_reference): auto (for a
@@ -30,9 +31,11 @@ typedef enum {
 PETSC_EXTERN const char *const HylcReferenceModes[];
 
 PETSC_EXTERN PetscErrorCode HylcReferenceParamsDefault(HylcReferenceParams *);
-/* Options (prefix -reference_): -reference_etol, -reference_max_rounds, -reference_kind auto|knit|woven,
-   -reference_tension, -reference_minimum, -reference_bounds lo,hi, -reference_xtol, -reference_max_evals. */
-PETSC_EXTERN PetscErrorCode HylcReferenceParamsSetFromOptions(MPI_Comm, HylcReferenceParams *);
+/* Options, after the given options prefix (NULL: none; kept in the parameters for the solvers the
+   computation creates): -reference_etol, -reference_max_rounds, -reference_kind auto|knit|woven,
+   -reference_stress_free, -reference_tension, -reference_minimum, -reference_bounds lo,hi,
+   -reference_xtol, -reference_max_evals. */
+PETSC_EXTERN PetscErrorCode HylcReferenceParamsSetFromOptions(MPI_Comm, const char[], HylcReferenceParams *);
 /* Computes the reference state of a pattern with the yarn model (each solve on PETSC_COMM_SELF; every rank
    computes the same). Progress lines go to the viewer (may be NULL). Collective on the pattern's comm. */
 PETSC_EXTERN PetscErrorCode HylcReferenceStateCompute(HylcPattern, const HylcYarnModel *, const HylcReferenceParams *, PetscViewer, HylcPattern *);

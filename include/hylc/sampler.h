@@ -14,12 +14,10 @@
 
 typedef struct _p_HylcSampler *HylcSampler;
 
-/* The plan's ranges as options give them (HylcPlanRangesFromOptions), before the yarn radius is known. */
-typedef struct {
-  PetscInt  family;                /* index into HylcPlanFamilies: woven, stockinette, honeycomb, rib */
-  PetscBool set[HYLC_PLAN_NCOORD]; /* 1D range of coordinate c given (else the family's default) */
-  PetscReal min[HYLC_PLAN_NCOORD], max[HYLC_PLAN_NCOORD];
-} HylcPlanRanges;
+/* Registration: the class id and log events of this stage (HylcSamplerInitializePackage(), called by HylcSamplerCreate()). */
+PETSC_EXTERN PetscClassId   HYLC_SAMPLER_CLASSID;
+PETSC_EXTERN PetscLogEvent  HYLC_SamplerRun;
+PETSC_EXTERN PetscErrorCode HylcSamplerInitializePackage(void);
 
 /* lifecycle and work (src/sampler/sampler.c; each function's manual block there) */
 PETSC_EXTERN PetscErrorCode HylcSamplerCreate(MPI_Comm, HylcSampler *);
@@ -57,12 +55,3 @@ PETSC_EXTERN PetscErrorCode    HylcSamplerSetBothTolerance(HylcSampler, PetscRea
 PETSC_EXTERN PetscErrorCode    HylcSamplerSetProgressInterval(HylcSampler, PetscReal);
 PETSC_EXTERN PetscErrorCode    HylcSamplerSetExportRaw(HylcSampler, const char[], PetscReal);
 PETSC_EXTERN PetscErrorCode    HylcSamplerSetReference(HylcSampler, HylcReferenceMode, const char[]);
-
-/* The plan's options, shared by hylc-sample and hylc-calibrate (src/sampler/planopts.c): family names,
-   -sampler_family and -sampler_range_<c> inside a PetscOptionsBegin/End block (only read; ranges resolved
-   and checked for a radius by HylcPlanRangesApply), and a term list ("all", "1d" or comma-separated
-   names). Collective. */
-PETSC_EXTERN const char *const HylcPlanFamilies[];
-PETSC_EXTERN PetscErrorCode    HylcPlanRangesFromOptions(PetscOptionItems *, MPI_Comm, const char[], HylcPlanRanges *);
-PETSC_EXTERN PetscErrorCode    HylcPlanRangesApply(MPI_Comm, const HylcPlanRanges *, PetscReal, HylcPlan *);
-PETSC_EXTERN PetscErrorCode    HylcPlanTermsFromString(MPI_Comm, const char[], const char[], int *);

@@ -68,7 +68,7 @@ PETSC_EXTERN PetscErrorCode HylcJournalGetInfo(HylcJournal, long *, PetscInt *);
 /* Closes the file (the journal stays on disk) and frees the object; accepts NULL. */
 PETSC_EXTERN PetscErrorCode HylcJournalClose(HylcJournal *);
 
-/* ---- The identity of a run (src/sampler/identity.c, docs/output-format.md) ----
+/* ---- The identity of a run (src/samples/identity.c, docs/output-format.md) ----
    A canonical text of everything that can change a sample's result: versions (hylc, its build, PETSc),
    the pattern (every field of HylcPatternData; arrays as SHA-256 of their bytes) and every option of the
    global database except the neutral ones (HylcSamplesOptionIsNeutral), sorted. Not collective. */

@@ -8,27 +8,11 @@
 
 #define HYLC_VERSION_STRING "0.1.0"
 
-/* Class ids and log events, registered by HylcInitializePackage(). */
-PETSC_EXTERN PetscClassId  HYLC_PATTERN_CLASSID;
-PETSC_EXTERN PetscLogEvent HYLC_PatternLoad, HYLC_PatternWrite, HYLC_PatternGenerate, HYLC_PatternDistance;
-PETSC_EXTERN PetscLogEvent HYLC_TileEvaluate, HYLC_TileBroadphase, HYLC_TileContact, HYLC_TileAssemble;
-PETSC_EXTERN PetscLogEvent HYLC_PeriodicSetUp, HYLC_PeriodicEvaluate, HYLC_SamplerRun;
-PETSC_EXTERN PetscClassId  HYLC_MICRO_CLASSID, HYLC_CHOL_CLASSID;
-PETSC_EXTERN PetscLogEvent HYLC_MicroSolve, HYLC_MicroSetUp, HYLC_MicroFactor, HYLC_MicroLineSearch, HYLC_MicroSaddle;
-PETSC_EXTERN PetscLogEvent HYLC_CholSymbolic, HYLC_CholNumeric, HYLC_CholSolve;
-PETSC_EXTERN PetscClassId  HYLC_PERIODIC_CLASSID, HYLC_SAMPLER_CLASSID;
-
 /* The fill-reducing ordering used for the Newton factorization unless -micro_factor_pc_factor_mat_ordering_type says otherwise. */
-PETSC_EXTERN const char   *HylcDefaultOrdering(void);
-PETSC_EXTERN PetscClassId  HYLC_MIDSURFACE_CLASSID;
-PETSC_EXTERN PetscLogEvent HYLC_MacroSetUp, HYLC_MacroPoisson, HYLC_MacroEvaluate;
-PETSC_EXTERN PetscClassId  HYLC_MATERIAL_CLASSID, HYLC_FIT_CLASSID;
-PETSC_EXTERN PetscLogEvent HYLC_MaterialLoad, HYLC_MaterialWrite, HYLC_FitRun, HYLC_FitTerm, HYLC_FitMLS, HYLC_FitMonotone;
-PETSC_EXTERN PetscClassId  HYLC_CALIBRATE_CLASSID;
-PETSC_EXTERN PetscLogEvent HYLC_CalibrateSetUp, HYLC_CalibrateSolve, HYLC_CalibrateEvaluate, HYLC_CalibrateGather;
+PETSC_EXTERN const char *HylcDefaultOrdering(void);
 
 /* The fill-reducing ordering METIS_NodeND (METIS 5 nested dissection of the graph of A + A^T), registered
-   by HylcInitializePackage() for sequential matrices: MatGetOrdering(A, MATORDERINGMETISND, &rperm,
+   by HylcSysInitializePackage() for sequential matrices: MatGetOrdering(A, MATORDERINGMETISND, &rperm,
    &cperm), PCFactorSetMatOrderingType(pc, MATORDERINGMETISND) or -pc_factor_mat_ordering_type metisnd.
    Row and column permutations are equal. Options: -hylc_metis_seed, -hylc_metis_nseps,
    -hylc_metis_ufactor, -hylc_metis_compress (src/sys/metis.c). Programs that use it without creating a
@@ -40,7 +24,12 @@ PETSC_EXTERN PetscErrorCode HylcMetisNodeND(PetscInt n, const PetscInt xadj[], c
 /* Reads and checks the -hylc_metis_* options (for -help and the check of unused options; collective). */
 PETSC_EXTERN PetscErrorCode HylcMetisSetFromOptions(MPI_Comm);
 
-/* Registers hylc's classes and log events (idempotent; called by every XCreate). Not collective. */
+/* Registration (src/sys/package.c). Each stage registers its own class ids, log events and registries in
+   its HylcXInitializePackage(), declared in its header and called by its HylcXCreate(). What belongs to
+   no stage (the ordering "metisnd") is HylcSysInitializePackage()'s; HylcInitializePackage() registers the
+   whole library (every stage), for programs that use a registered name without creating an object.
+   Idempotent; not collective. */
+PETSC_EXTERN PetscErrorCode HylcSysInitializePackage(void);
 PETSC_EXTERN PetscErrorCode HylcInitializePackage(void);
 
 /* Installs hylc's error handler for programs: errors in user input (bad files, options, values) are
@@ -72,6 +61,16 @@ PETSC_EXTERN PetscErrorCode HylcFileCheckOutput(MPI_Comm, const char[], const ch
 PETSC_EXTERN PetscErrorCode HylcFileOpenTemp(const char[], char[], size_t, FILE **);
 PETSC_EXTERN PetscErrorCode HylcFileCommitTemp(FILE **, const char[], const char[]);
 PETSC_EXTERN void           HylcFileAbortTemp(FILE **, const char[]);
+/* A dataset of doubles (rank 1..3; v NULL: not written) of HylcFileWriteHDF5(). */
+typedef struct {
+  const char      *name;
+  int              rank;
+  size_t           dims[3];
+  const PetscReal *v;
+} HylcFileH5Doubles;
+/* Atomic HDF5 output (src/sys/h5file.c): the datasets built as an in-memory HDF5 image and written with
+   HylcFileOpenTemp()/HylcFileCommitTemp(); what names the output in messages. Not collective. */
+PETSC_EXTERN PetscErrorCode HylcFileWriteHDF5(const char path[], const char what[], int n, const HylcFileH5Doubles ds[]);
 /* Raises on every rank of comm the error (code and message) that rank 0 met in work done alone with
    PetscReturnErrorHandler pushed (ierr: rank 0's code; ignored elsewhere). Collective. */
 PETSC_EXTERN PetscErrorCode HylcShareError(MPI_Comm, PetscErrorCode);

@@ -14,6 +14,7 @@
    one line (PETSC_ERR_FILE_* or PETSC_ERR_USER_INPUT) naming the file. Not collective: errors are raised
    on PETSC_COMM_SELF. */
 #include <hylc/sys.h>
+#include <hylc/strain.h>
 #include <hdf5.h>
 #include <stdio.h>
 
@@ -41,8 +42,9 @@ typedef struct {
   PetscInt  *line; /* text: the line of the row (1-based); HDF5: the row of the dataset (0-based) */
 } HylcTable;
 
-/* "sx", "sa", "sy", "II00", "II01", "II11", "psi": the names of a strain and its energy */
-PETSC_EXTERN const char *const HylcTableStrainNames[7];
+/* the names of a strain's six components and its energy psi: the shared vocabulary's HylcStrainNames
+   (include/hylc/strain.h) */
+#define HylcTableStrainNames HylcStrainNames
 
 PETSC_EXTERN PetscErrorCode HylcTableReadText(const char path[], const char option[], const HylcTableSpec *, HylcTable *);
 PETSC_EXTERN PetscErrorCode HylcTableReadStream(FILE *, const char path[], const HylcTableSpec *, HylcTable *);

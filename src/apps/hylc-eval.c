@@ -14,12 +14,10 @@ static const char help[] = "hylc-eval: the homogenized material model Psi(s) and
 #include <hylc/files.h>
 #include <hylc/options.h>
 #include <hylc/table.h>
-#include <hdf5.h>
 #include <errno.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 /* parses "a,b,c,d,e,f" into s[6]; errors name the option and the value */
 static PetscErrorCode ParseStrain(const char text[], PetscReal s[6])
@@ -76,44 +74,12 @@ static PetscErrorCode WriteResults(const char path[], PetscInt n, const PetscRea
 
   PetscFunctionBegin;
   if (l > 3 && (!strcmp(path + l - 3, ".h5") || (l > 5 && !strcmp(path + l - 5, ".hdf5")))) {
-    char        tmp[PETSC_MAX_PATH_LEN + 16];
-    hid_t       f;
-    herr_t      e     = 0;
-    hsize_t     d1[1] = {(hsize_t)n}, d2[2] = {(hsize_t)n, 6}, d3[3] = {(hsize_t)n, 6, 6};
-    H5E_auto2_t efunc;
-    void       *edata;
-    snprintf(tmp, sizeof(tmp), "%s.tmp%d", path, (int)getpid());
-    H5Eget_auto2(H5E_DEFAULT, &efunc, &edata); /* HDF5 prints nothing: a failure is the one line below */
-    H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
-    f = H5Fcreate(tmp, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-    if (f < 0) H5Eset_auto2(H5E_DEFAULT, efunc, edata);
-    PetscCheck(f >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot create -eval_output %s", path);
-    {
-      const struct {
-        const char      *name;
-        int              rank;
-        hsize_t         *dims;
-        const PetscReal *v;
-      } ds[4] = {
-          {"strain", 2, d2, z},
-          {"psi", 1, d1, psi},
-          {"grad", 2, d2, grad},
-          {"hessian", 3, d3, hess}};
-      for (int i = 0; i < 4 && e >= 0; i++) {
-        hid_t sp, d;
-        if (!ds[i].v) continue;
-        sp = H5Screate_simple(ds[i].rank, ds[i].dims, NULL);
-        d  = H5Dcreate2(f, ds[i].name, H5T_IEEE_F64LE, sp, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-        e  = (sp < 0 || d < 0) ? -1 : H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, ds[i].v);
-        if (d >= 0) H5Dclose(d);
-        if (sp >= 0) H5Sclose(sp);
-      }
-    }
-    if (H5Fclose(f) < 0) e = -1;
-    if (e >= 0 && rename(tmp, path)) e = -1;
-    if (e < 0) remove(tmp);
-    H5Eset_auto2(H5E_DEFAULT, efunc, edata);
-    PetscCheck(e >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot write -eval_output %s", path);
+    const HylcFileH5Doubles ds[4] = {
+        {"strain", 2, {(size_t)n, 6}, z},
+        {"psi", 1, {(size_t)n}, psi},
+        {"grad", 2, {(size_t)n, 6}, grad},
+        {"hessian", 3, {(size_t)n, 6, 6}, hess}};
+    PetscCall(HylcFileWriteHDF5(path, "-eval_output", 4, ds));
   } else {
     FILE *fp;
     char  tmp[PETSC_MAX_PATH_LEN + 32];
@@ -237,7 +203,7 @@ static PetscErrorCode Eval(HylcMaterial mat)
     udirn = isy ? 1 : 0;
     for (PetscInt i = 0; i < nu; i++) PetscCheck(ustrain[i] >= 0 && ustrain[i] < 1, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-eval_uniaxial_strains: stretch %g is outside [0, 1) (a uniaxial state is a tension test; a compressed strip buckles)", (double)ustrain[i]);
   }
-  PetscCall(PetscOptionsGetString(NULL, NULL, "-material_file", matFile, sizeof(matFile), &hasMatFile));
+  PetscCall(HylcMaterialGetOptionsFile(mat, matFile, sizeof(matFile), &hasMatFile));
   PetscCheck(!(hasFile && hasMatFile), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "Both -material and -material_file were given; use one");
   PetscCall(PetscOptionsHasHelp(NULL, &help));
   if (help) {                                   /* -help: every option has been listed; do no work */

@@ -49,16 +49,15 @@ static PetscErrorCode Fit(HylcFit fit)
   HylcMaterial   mat = NULL;
   PetscBool      help_only;
   PetscErrorCode ierr;
-  char           in[PETSC_MAX_PATH_LEN] = "", h5[PETSC_MAX_PATH_LEN] = "", json[PETSC_MAX_PATH_LEN] = "";
+  const char    *in, *h5, *json;
 
   PetscFunctionBeginUser;
   PetscCall(HylcFitSetFromOptions(fit));
   PetscCall(PetscOptionsHasHelp(NULL, &help_only));
   if (help_only) PetscFunctionReturn(PETSC_SUCCESS); /* -help: every option has been listed; do no work */
   PetscCall(HylcCheckOptionsUsed(PETSC_COMM_WORLD));
-  PetscCall(PetscOptionsGetString(NULL, NULL, "-fit_input", in, sizeof(in), NULL));
-  PetscCall(PetscOptionsGetString(NULL, NULL, "-fit_output", h5, sizeof(h5), NULL));
-  PetscCall(PetscOptionsGetString(NULL, NULL, "-fit_json", json, sizeof(json), NULL));
+  PetscCall(HylcFitGetInput(fit, &in));
+  PetscCall(HylcFitGetOutputs(fit, &h5, &json));
   PetscCall(CheckPaths(in, h5, json));
   PetscCall(HylcFitSetUp(fit));
   PetscCall(HylcMaterialCreate(PETSC_COMM_WORLD, &mat));

@@ -28,12 +28,12 @@ static PetscErrorCode RunPattern(HylcPattern pat)
   {
     HylcPatternType type;
     PetscBool       isfile;
-    char            in[PETSC_MAX_PATH_LEN] = "";
+    const char     *in = "";
     HylcFiles       files;
     PetscErrorCode  ierr;
     PetscCall(HylcPatternGetType(pat, &type));
     PetscCall(PetscStrcmp(type, HYLCPATTERNFILE, &isfile));
-    if (isfile) PetscCall(PetscOptionsGetString(NULL, NULL, "-pattern_file", in, sizeof(in), NULL));
+    if (isfile) PetscCall(HylcPatternGetFileName(pat, &in));
     PetscCall(HylcFilesCreate(PETSC_COMM_WORLD, &files));
     ierr = HylcFilesAddOptionsFiles(files);
     if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_INPUT, in, "-pattern_file");

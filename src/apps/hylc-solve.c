@@ -106,14 +106,14 @@ static PetscErrorCode Solve(HylcPattern pat, HylcMicro micro)
   /* every file before any work (include/hylc/files.h): the pattern file and the options files read, the
      outputs writable and within the path limits, never an input or each other */
   {
-    char            in[PETSC_MAX_PATH_LEN] = "";
+    const char     *in = "";
     HylcPatternType type;
     PetscBool       isfile;
     HylcFiles       files;
     PetscErrorCode  ierr;
     PetscCall(HylcPatternGetType(pat, &type));
     PetscCall(PetscStrcmp(type, HYLCPATTERNFILE, &isfile));
-    if (isfile) PetscCall(PetscOptionsGetString(NULL, NULL, "-pattern_file", in, sizeof(in), NULL));
+    if (isfile) PetscCall(HylcPatternGetFileName(pat, &in));
     PetscCheck(!out[0] || (z[1] == 0 && z[3] == 0 && z[4] == 0 && z[5] == 0), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-solve_output %s: a deformed tile is a .pyp pattern only without shear and bending (sa = II = 0); use -solve_vtk instead", out);
     PetscCall(HylcFilesCreate(PETSC_COMM_SELF, &files));
     ierr = HylcFilesAddOptionsFiles(files);

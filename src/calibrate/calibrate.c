@@ -1,7 +1,6 @@
 /* HylcCalibrate: lifecycle, sub-objects (lazy getters), set-up, getters and View (include/hylc/calibrate.h,
    docs/calibrate.md); the setters and HylcCalibrateSetFromOptions are in opts.c. */
 #include "calibrateimpl.h"
-#include <hylc/sampler.h>
 #include <hylc/files.h>
 #include <sys/stat.h>
 #include <stdio.h>
@@ -12,6 +11,42 @@ const char *const        HylcCalibTargetTypes[]                         = {"auto
 static const char *const RoleNames[]                                    = {"free", "tied to E", "fixed"};
 
 const char *HylcCalibrateTermName_Private(PetscInt t) { return t == HYLC_CALIB_OTHER ? "other" : HylcPlanTermName((int)t); }
+
+PetscClassId  HYLC_CALIBRATE_CLASSID;
+PetscLogEvent HYLC_CalibrateSetUp, HYLC_CalibrateSolve, HYLC_CalibrateEvaluate, HYLC_CalibrateGather;
+
+static PetscBool HylcCalibratePackageInitialized = PETSC_FALSE;
+
+static PetscErrorCode HylcCalibrateFinalizePackage(void)
+{
+  PetscFunctionBegin;
+  HylcCalibratePackageInitialized = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcCalibrateInitializePackage - Registers the class id HylcCalibrate and its log events (CALIB_SetUp, CALIB_Solve, CALIB_Evaluate, CALIB_Gather). Called by
+  HylcCalibrateCreate() and by HylcInitializePackage(); idempotent.
+
+  Not collective
+
+  Level: developer
+
+.seealso: HylcInitializePackage()
+@*/
+PetscErrorCode HylcCalibrateInitializePackage(void)
+{
+  PetscFunctionBegin;
+  if (HylcCalibratePackageInitialized) PetscFunctionReturn(PETSC_SUCCESS);
+  HylcCalibratePackageInitialized = PETSC_TRUE;
+  PetscCall(PetscClassIdRegister("HylcCalibrate", &HYLC_CALIBRATE_CLASSID));
+  PetscCall(PetscLogEventRegister("CALIB_SetUp", HYLC_CALIBRATE_CLASSID, &HYLC_CalibrateSetUp));
+  PetscCall(PetscLogEventRegister("CALIB_Solve", HYLC_CALIBRATE_CLASSID, &HYLC_CalibrateSolve));
+  PetscCall(PetscLogEventRegister("CALIB_Evaluate", HYLC_CALIBRATE_CLASSID, &HYLC_CalibrateEvaluate));
+  PetscCall(PetscLogEventRegister("CALIB_Gather", HYLC_CALIBRATE_CLASSID, &HYLC_CalibrateGather));
+  PetscCall(PetscRegisterFinalize(HylcCalibrateFinalizePackage));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 
 /*@C
   HylcCalibrateCreate - Creates a calibration: free E, Es, kc with G tied to E, bounds 1/1000 to 1000 x the
@@ -35,7 +70,7 @@ PetscErrorCode HylcCalibrateCreate(MPI_Comm comm, HylcCalibrate *out)
 
   PetscFunctionBegin;
   PetscValidPointer(out, 2);
-  PetscCall(HylcInitializePackage());
+  PetscCall(HylcCalibrateInitializePackage());
   PetscCall(PetscHeaderCreate(C, HYLC_CALIBRATE_CLASSID, "HylcCalibrate", "Yarn parameter calibration", "Calibrate", comm, HylcCalibrateDestroy, HylcCalibrateView));
   PetscCallMPI(MPI_Comm_rank(comm, &C->rank));
   PetscCallMPI(MPI_Comm_size(comm, &C->size));
@@ -110,7 +145,10 @@ PetscErrorCode HylcCalibrateDestroy(HylcCalibrate *C)
 }
 
 /*@C
-  HylcCalibrateSetOptionsPrefix - Sets the prefix of the calibration's own options (-<prefix>calibrate_*).
+  HylcCalibrateSetOptionsPrefix - Sets the prefix of the calibration's options and of its sub-objects'
+  (-<prefix>calibrate_*, -<prefix>pattern_*, -<prefix>yarn_*, -<prefix>reference_*, the plan's
+  -<prefix>sampler_family and -<prefix>sampler_range_*, -<prefix>micro_* with the solver's tile
+  -<prefix>periodic_*, -<prefix>macro_*).
 
   Not collective
 
@@ -125,6 +163,8 @@ PetscErrorCode HylcCalibrateSetOptionsPrefix(HylcCalibrate C, const char prefix[
   PetscFunctionBegin;
   PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
   PetscCall(PetscObjectSetOptionsPrefix((PetscObject)C, prefix));
+  if (C->pat) PetscCall(HylcPatternSetOptionsPrefix(C->pat, prefix));
+  if (C->micro) PetscCall(HylcMicroSetOptionsPrefix(C->micro, prefix));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -150,7 +190,10 @@ PetscErrorCode HylcCalibrateGetPattern(HylcCalibrate C, HylcPattern *pat)
   PetscFunctionBegin;
   PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
   PetscValidPointer(pat, 2);
-  if (!C->pat) PetscCall(HylcPatternCreate(PetscObjectComm((PetscObject)C), &C->pat));
+  if (!C->pat) {
+    PetscCall(HylcPatternCreate(PetscObjectComm((PetscObject)C), &C->pat));
+    PetscCall(HylcPatternSetOptionsPrefix(C->pat, ((PetscObject)C)->prefix));
+  }
   *pat = C->pat;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -177,7 +220,10 @@ PetscErrorCode HylcCalibrateGetMicro(HylcCalibrate C, HylcMicro *micro)
   PetscFunctionBegin;
   PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
   PetscValidPointer(micro, 2);
-  if (!C->micro) PetscCall(HylcMicroCreate(PETSC_COMM_SELF, &C->micro));
+  if (!C->micro) {
+    PetscCall(HylcMicroCreate(PETSC_COMM_SELF, &C->micro));
+    PetscCall(HylcMicroSetOptionsPrefix(C->micro, ((PetscObject)C)->prefix));
+  }
   *micro = C->micro;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -199,10 +245,10 @@ PetscErrorCode HylcCalibrateSetUpSolver_Private(HylcCalibrate C)
   {
     HylcPatternType type;
     PetscBool       isfile;
-    char            file[PETSC_MAX_PATH_LEN] = "";
+    const char     *file = "";
     PetscCall(HylcPatternGetType(pat, &type));
     PetscCall(PetscStrcmp(type, HYLCPATTERNFILE, &isfile));
-    if (isfile) PetscCall(PetscOptionsGetString(NULL, NULL, "-pattern_file", file, sizeof(file), NULL));
+    if (isfile) PetscCall(HylcPatternGetFileName(pat, &file));
     PetscCall(PetscSNPrintf(C->patLabel, sizeof(C->patLabel), "%s%s%s", isfile ? "file " : "generated ", isfile ? file : type, ""));
   }
   {
@@ -240,7 +286,8 @@ PetscErrorCode HylcCalibrateSetUpSolver_Private(HylcCalibrate C)
 static PetscErrorCode CheckFiles(HylcCalibrate C)
 {
   MPI_Comm        comm = PetscObjectComm((PetscObject)C);
-  char            target[PETSC_MAX_PATH_LEN + 16], pfile[PETSC_MAX_PATH_LEN] = "";
+  char            target[PETSC_MAX_PATH_LEN + 16], pfileopt[300];
+  const char     *pfile = "", *prefix = ((PetscObject)C)->prefix;
   HylcPatternType type;
   PetscBool       isfile;
   HylcFiles       files;
@@ -259,11 +306,12 @@ static PetscErrorCode CheckFiles(HylcCalibrate C)
     PetscCall(PetscStrncpy(target, C->target, sizeof(target)));
   PetscCall(HylcPatternGetType(C->pat, &type));
   PetscCall(PetscStrcmp(type, HYLCPATTERNFILE, &isfile));
-  if (isfile) PetscCall(PetscOptionsGetString(NULL, NULL, "-pattern_file", pfile, sizeof(pfile), NULL));
+  if (isfile) PetscCall(HylcPatternGetFileName(C->pat, &pfile));
+  PetscCall(PetscSNPrintf(pfileopt, sizeof(pfileopt), "-%spattern_file", prefix ? prefix : ""));
   PetscCall(HylcFilesCreate(comm, &files));
   ierr = HylcFilesAddOptionsFiles(files);
   if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_INPUT, target, "-calibrate_target");
-  if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_INPUT, pfile, "-pattern_file");
+  if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_INPUT, pfile, pfileopt);
   if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, C->output, "-calibrate_output");
   if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, C->dump, "-calibrate_dump");
   if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, C->refout, "-reference_output");

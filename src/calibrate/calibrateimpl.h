@@ -1,7 +1,6 @@
 #pragma once
 /* Private definition of HylcCalibrate (src/calibrate/ only). */
 #include <hylc/calibrate.h>
-#include <hylc/sampler.h>
 #include <petsc/private/petscimpl.h>
 
 #define HYLC_CALIB_NTERM   (HYLC_PLAN_NTERM + 1) /* the plan's 15 terms and "other" (rows of a file off the plan's axes) */

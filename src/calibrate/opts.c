@@ -490,14 +490,14 @@ PetscErrorCode HylcCalibrateSetFromOptions(HylcCalibrate C)
   /* the tile, the initial yarn model, the reference state's and the solver's options */
   PetscCall(HylcCalibrateGetPattern(C, &pat));
   PetscCall(HylcPatternSetFromOptions(pat));
-  PetscCall(HylcYarnModelSetFromOptions(comm, NULL, &model));
+  PetscCall(HylcYarnModelSetFromOptions(comm, ((PetscObject)C)->prefix, &model));
   PetscCall(HylcCalibrateSetYarnModel(C, &model));
-  PetscCall(HylcReferenceParamsSetFromOptions(comm, &C->refpar));
+  PetscCall(HylcReferenceParamsSetFromOptions(comm, ((PetscObject)C)->prefix, &C->refpar));
   PetscCall(HylcCalibrateGetMicro(C, &micro));
   PetscCall(HylcMicroSetFromOptions(micro));
 
   /* the plan's ranges under the sampler's names, so that -options_file config/<p>.yaml applies */
-  PetscOptionsBegin(comm, NULL, "Calibration: the plan's ranges (table target; the sampler's options)", "HylcCalibrate");
+  PetscOptionsBegin(comm, ((PetscObject)C)->prefix, "Calibration: the plan's ranges (table target; the sampler's options)", "HylcCalibrate");
   PetscCall(HylcPlanRangesFromOptions(PetscOptionsObject, comm, "HylcCalibrateSetPlanRanges", &ranges));
   PetscCall(PetscOptionsString("-reference_output", "Write the reference state as .pyp", "HylcCalibrateSetReference", refout, refout, sizeof(refout), NULL));
   PetscOptionsEnd();

@@ -26,6 +26,42 @@ static PetscErrorCode FamilyDefaults(HylcFit fit, HylcFitFamily family)
 
 const char *const HylcFitKnotLayouts[] = {"paper", "refined", "HylcFitKnotLayout", "HYLC_FIT_KNOTS_", NULL};
 
+PetscClassId  HYLC_FIT_CLASSID;
+PetscLogEvent HYLC_FitRun, HYLC_FitTerm, HYLC_FitMLS, HYLC_FitMonotone;
+
+static PetscBool HylcFitPackageInitialized = PETSC_FALSE;
+
+static PetscErrorCode HylcFitFinalizePackage(void)
+{
+  PetscFunctionBegin;
+  HylcFitPackageInitialized = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcFitInitializePackage - Registers the class id HylcFit and its log events (FIT_Run, FIT_Term, FIT_MLS, FIT_Monotone). Called by
+  HylcFitCreate() and by HylcInitializePackage(); idempotent.
+
+  Not collective
+
+  Level: developer
+
+.seealso: HylcInitializePackage()
+@*/
+PetscErrorCode HylcFitInitializePackage(void)
+{
+  PetscFunctionBegin;
+  if (HylcFitPackageInitialized) PetscFunctionReturn(PETSC_SUCCESS);
+  HylcFitPackageInitialized = PETSC_TRUE;
+  PetscCall(PetscClassIdRegister("HylcFit", &HYLC_FIT_CLASSID));
+  PetscCall(PetscLogEventRegister("FIT_Run", HYLC_FIT_CLASSID, &HYLC_FitRun));
+  PetscCall(PetscLogEventRegister("FIT_Term", HYLC_FIT_CLASSID, &HYLC_FitTerm));
+  PetscCall(PetscLogEventRegister("FIT_MLS", HYLC_FIT_CLASSID, &HYLC_FitMLS));
+  PetscCall(PetscLogEventRegister("FIT_Monotone", HYLC_FIT_CLASSID, &HYLC_FitMonotone));
+  PetscCall(PetscRegisterFinalize(HylcFitFinalizePackage));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /*@C
   HylcFitCreate - Creates a fit with the constants of docs/method.md §9.1 (family woven). Not collective.
 @*/
@@ -35,7 +71,7 @@ PetscErrorCode HylcFitCreate(MPI_Comm comm, HylcFit *out)
 
   PetscFunctionBegin;
   PetscValidPointer(out, 2);
-  PetscCall(HylcInitializePackage());
+  PetscCall(HylcFitInitializePackage());
   PetscCall(PetscHeaderCreate(fit, HYLC_FIT_CLASSID, "HylcFit", "Material fit", "Fit", comm, HylcFitDestroy, HylcFitView));
   fit->compat          = HYLC_FIT_COMPAT_PAPER;
   fit->rule            = HYLC_MONOTONE_CIRCLE;
@@ -104,6 +140,19 @@ static PetscErrorCode ResetData(HylcFit fit)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcFitDestroy - Drops a reference to the fit and frees it with its data and results at the last; accepts
+  NULL and sets the handle to NULL.
+
+  Collective
+
+  Input Parameter:
+. fit - the fit
+
+  Level: beginner
+
+.seealso: HylcFitCreate()
+@*/
 PetscErrorCode HylcFitDestroy(HylcFit *fit)
 {
   PetscFunctionBegin;
@@ -118,6 +167,19 @@ PetscErrorCode HylcFitDestroy(HylcFit *fit)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcFitSetOptionsPrefix - Sets the prefix of the fit's options (-<prefix>fit_*).
+
+  Not collective
+
+  Input Parameters:
++ fit    - the fit
+- prefix - the prefix (NULL: none)
+
+  Level: intermediate
+
+.seealso: HylcFitSetFromOptions()
+@*/
 PetscErrorCode HylcFitSetOptionsPrefix(HylcFit fit, const char prefix[])
 {
   PetscFunctionBegin;
@@ -126,6 +188,23 @@ PetscErrorCode HylcFitSetOptionsPrefix(HylcFit fit, const char prefix[])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcFitSetInput - Sets the samples to fit: an HDF5 samples file of hylc-sample, the paper's raw data.txt
+  or a directory holding data.txt (and info.txt); read by HylcFitSetUp(). Drops data set before.
+
+  Not collective
+
+  Input Parameters:
++ fit  - the fit
+- path - the file or directory (NULL or "" for none)
+
+  Options Database Key:
+. -fit_input <path> - the same
+
+  Level: beginner
+
+.seealso: HylcFitGetInput(), HylcFitSetData(), HylcFitSetUp()
+@*/
 PetscErrorCode HylcFitSetInput(HylcFit fit, const char path[])
 {
   PetscFunctionBegin;
@@ -135,6 +214,24 @@ PetscErrorCode HylcFitSetInput(HylcFit fit, const char path[])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcFitSetOutputs - Sets the files HylcFitRun() writes.
+
+  Not collective
+
+  Input Parameters:
++ fit  - the fit
+. h5   - the HDF5 material file (NULL or "" for none)
+- json - the ARCSim-HYLC JSON material file (NULL or "" for none)
+
+  Options Database Keys:
++ -fit_output <file.h5> - h5
+- -fit_json <file.json> - json
+
+  Level: beginner
+
+.seealso: HylcFitGetOutputs(), HylcFitRun()
+@*/
 PetscErrorCode HylcFitSetOutputs(HylcFit fit, const char h5[], const char json[])
 {
   PetscFunctionBegin;
@@ -144,6 +241,74 @@ PetscErrorCode HylcFitSetOutputs(HylcFit fit, const char h5[], const char json[]
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcFitGetInput - The input file of the fit (HylcFitSetInput() or -fit_input; "" if none, or if the data
+  were set with HylcFitSetData()).
+
+  Not collective
+
+  Input Parameter:
+. fit - the fit
+
+  Output Parameter:
+. path - the path (owned by the fit)
+
+  Level: intermediate
+
+.seealso: HylcFitSetInput(), HylcFitGetOutputs()
+@*/
+PetscErrorCode HylcFitGetInput(HylcFit fit, const char *path[])
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(fit, HYLC_FIT_CLASSID, 1);
+  PetscValidPointer(path, 2);
+  *path = fit->input;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcFitGetOutputs - The files HylcFitRun() writes (HylcFitSetOutputs(), -fit_output and -fit_json; "" for
+  none).
+
+  Not collective
+
+  Input Parameter:
+. fit - the fit
+
+  Output Parameters:
++ h5   - the HDF5 material file (may be NULL; owned by the fit)
+- json - the ARCSim-HYLC JSON file (may be NULL; owned by the fit)
+
+  Level: intermediate
+
+.seealso: HylcFitSetOutputs(), HylcFitGetInput()
+@*/
+PetscErrorCode HylcFitGetOutputs(HylcFit fit, const char *h5[], const char *json[])
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(fit, HYLC_FIT_CLASSID, 1);
+  if (h5) *h5 = fit->output;
+  if (json) *json = fit->json;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcFitSetFamily - Sets the pattern family and with it the family's defaults of -fit_reg and of the 2D
+  bending knots (call before HylcFitSetFromOptions() to let options override them); drops results.
+
+  Not collective
+
+  Input Parameters:
++ fit    - the fit
+- family - HYLC_FIT_FAMILY_WOVEN, HYLC_FIT_FAMILY_KNIT or HYLC_FIT_FAMILY_STOCKINETTE
+
+  Options Database Key:
+. -fit_family <woven> - woven, knit or stockinette
+
+  Level: intermediate
+
+.seealso: HylcFitSetFromOptions()
+@*/
 PetscErrorCode HylcFitSetFamily(HylcFit fit, HylcFitFamily family)
 {
   PetscFunctionBegin;
@@ -290,6 +455,25 @@ PetscErrorCode HylcFitSetFromOptions(HylcFit fit)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcFitSetData - Gives the fit its data without a file (copied; replaces -fit_input): n rows of strain,
+  energy density and term.
+
+  Not collective
+
+  Input Parameters:
++ fit         - the fit
+. n           - the number of rows
+. strain      - n x 6: sx, sa, sy, II00, II01, II11
+. psi         - the energy densities (J/m^2)
+. term        - the term of each row, 0..14 as in include/hylc/plan.h (term 0 rows only take part in f0 and
+                the normalisation)
+- areaDensity - the area density (kg/m^2; <= 0: -fit_density must give it)
+
+  Level: intermediate
+
+.seealso: HylcFitSetInput(), HylcFitSetUp()
+@*/
 PetscErrorCode HylcFitSetData(HylcFit fit, PetscInt n, const PetscReal strain[], const PetscReal psi[], const PetscInt term[], PetscReal areaDensity)
 {
   MPI_Comm comm;
@@ -350,6 +534,21 @@ PetscErrorCode HylcFitSetUp(HylcFit fit)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcFitGetConstant - The constant f0 of the fitted model (J/m^2).
+
+  Not collective
+
+  Input Parameter:
+. fit - the fit, computed (HylcFitCompute())
+
+  Output Parameter:
+. f0 - the constant
+
+  Level: intermediate
+
+.seealso: HylcFitGet1D(), HylcFitGet2D()
+@*/
 PetscErrorCode HylcFitGetConstant(HylcFit fit, PetscReal *f0)
 {
   PetscFunctionBegin;
@@ -359,6 +558,21 @@ PetscErrorCode HylcFitGetConstant(HylcFit fit, PetscReal *f0)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcFitGetStrainScale - The strain scales of the fitted model, one per coordinate (sx, sa, sy, II00, II11).
+
+  Not collective
+
+  Input Parameter:
+. fit - the fit, computed (HylcFitCompute())
+
+  Output Parameter:
+. s - the five scales
+
+  Level: intermediate
+
+.seealso: HylcFitGetConstant()
+@*/
 PetscErrorCode HylcFitGetStrainScale(HylcFit fit, PetscReal s[5])
 {
   PetscFunctionBegin;
@@ -368,6 +582,21 @@ PetscErrorCode HylcFitGetStrainScale(HylcFit fit, PetscReal s[5])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcFitGetDensity - The area density of the material (kg/m^2): -fit_density, or the input's.
+
+  Not collective
+
+  Input Parameter:
+. fit - the fit, set up (HylcFitSetUp())
+
+  Output Parameter:
+. rhoA - the area density
+
+  Level: intermediate
+
+.seealso: HylcFitSetUp()
+@*/
 PetscErrorCode HylcFitGetDensity(HylcFit fit, PetscReal *rhoA)
 {
   PetscFunctionBegin;
@@ -377,6 +606,22 @@ PetscErrorCode HylcFitGetDensity(HylcFit fit, PetscReal *rhoA)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcFitGet1D - The fitted 1D term of coordinate k (0 sx, 1 sa, 2 sy, 3 x-bending, 4 y-bending).
+
+  Not collective
+
+  Input Parameters:
++ fit - the fit, computed (HylcFitCompute())
+- k   - the coordinate, 0..4
+
+  Output Parameter:
+. s - the spline (owned by the fit), NULL for a term that was not fitted (no samples)
+
+  Level: intermediate
+
+.seealso: HylcFitGet2D()
+@*/
 PetscErrorCode HylcFitGet1D(HylcFit fit, PetscInt k, const HylcSpline1D **s)
 {
   PetscFunctionBegin;
@@ -387,6 +632,23 @@ PetscErrorCode HylcFitGet1D(HylcFit fit, PetscInt k, const HylcSpline1D **s)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcFitGet2D - The fitted 2D term of the pair (k0, k1) (include/hylc/strain.h).
+
+  Not collective
+
+  Input Parameters:
++ fit - the fit, computed (HylcFitCompute())
+. k0  - the first coordinate of the pair
+- k1  - the second (k0 < k1)
+
+  Output Parameter:
+. s - the spline (owned by the fit), NULL for a term that was not fitted (no samples)
+
+  Level: intermediate
+
+.seealso: HylcFitGet1D()
+@*/
 PetscErrorCode HylcFitGet2D(HylcFit fit, PetscInt k0, PetscInt k1, const HylcSpline2D **s)
 {
   PetscFunctionBegin;
@@ -401,6 +663,24 @@ PetscErrorCode HylcFitGet2D(HylcFit fit, PetscInt k0, PetscInt k1, const HylcSpl
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcFitEvaluateAxes - The fitted model (S26) at a strain with II01 = 0, where the eigen-split of the
+  bending terms is exact, without a HylcMaterial: f0 + the 1D terms + the 2D terms. Used for the per-term
+  summary; HylcMaterialEvaluate() is the general evaluator.
+
+  Not collective
+
+  Input Parameters:
++ fit - the fit, computed (HylcFitCompute())
+- z   - the strain (sx, sa, sy, II00, II01 = 0, II11)
+
+  Output Parameter:
+. psi - the energy density (J/m^2)
+
+  Level: developer
+
+.seealso: HylcFitGetTermStats()
+@*/
 PetscErrorCode HylcFitEvaluateAxes(HylcFit fit, const PetscReal z[6], PetscReal *psi)
 {
   PetscReal S[5], f;
@@ -423,6 +703,24 @@ PetscErrorCode HylcFitEvaluateAxes(HylcFit fit, const PetscReal z[6], PetscReal 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcFitGetTermStats - Statistics of the fit of a term against its data.
+
+  Not collective
+
+  Input Parameters:
++ fit - the fit, computed (HylcFitCompute())
+- t   - the term, 1..14 as in include/hylc/plan.h
+
+  Output Parameters:
++ n     - the samples used (0 for a term not fitted; may be NULL)
+. rms   - the RMS of model - data (J/m^2; may be NULL)
+- range - the largest |data - f0| of the term (may be NULL)
+
+  Level: developer
+
+.seealso: HylcFitEvaluateAxes()
+@*/
 PetscErrorCode HylcFitGetTermStats(HylcFit fit, PetscInt t, PetscInt *n, PetscReal *rms, PetscReal *range)
 {
   PetscFunctionBegin;
@@ -563,6 +861,20 @@ PetscErrorCode HylcFitView(HylcFit fit, PetscViewer viewer)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcFitViewFromOptions - Views the fit if the option name is given (PetscObjectViewFromOptions()).
+
+  Collective
+
+  Input Parameters:
++ fit  - the fit
+. obj  - an object whose prefix is used (NULL: the fit's)
+- name - the option, e.g. "-fit_view"
+
+  Level: intermediate
+
+.seealso: HylcFitView()
+@*/
 PetscErrorCode HylcFitViewFromOptions(HylcFit fit, PetscObject obj, const char name[])
 {
   PetscFunctionBegin;

@@ -67,6 +67,31 @@ static int VisitCompare(const void *a, const void *b)
   return x->i < y->i ? -1 : (x->i > y->i);
 }
 
+/*@C
+  HylcQuasiconvex2D - Quasiconvex marching (S28) of a 2D table from its minimum node, in place: every other
+  node, in order of squared index distance from the minimum, is raised to at least each of its neighbours
+  toward the minimum plus reg times the knot distance (the 1D marching on the two grid lines through the
+  minimum); then mu and mv are sign-clamped outward with |.| >= reg.
+
+  Not collective
+
+  Input Parameters:
++ nu, nv     - the knots along u and v
+. tu, tv     - the knots (strictly increasing)
+. imin, jmin - the minimum node
+. reg        - the minimum outward slope (J/m^2 per normalised unit)
+- compat     - HYLC_FIT_COMPAT_PAPER or HYLC_FIT_COMPAT_AUTHORS: the treatment of the minimum's own row and
+               column
+
+  Input/Output Parameters:
++ p  - the values, nu x nv (node (i, j) at j nu + i)
+. mu - the slopes along u
+- mv - the slopes along v
+
+  Level: developer
+
+.seealso: HylcQuasiconvex1D(), HylcMonotoneBicubic()
+@*/
 PetscErrorCode HylcQuasiconvex2D(PetscInt nu, PetscInt nv, const PetscReal tu[], const PetscReal tv[], PetscInt imin, PetscInt jmin, PetscReal reg, HylcFitCompat compat, PetscReal p[], PetscReal mu[], PetscReal mv[])
 {
   Visit   *order;
@@ -254,6 +279,30 @@ static void ClampMixed(const Dir *D, const PetscReal p[], const PetscReal ma[], 
     }
 }
 
+/*@C
+  HylcMonotoneBicubic - The modified Carlson-Fritsch monotone bicubic (S36-S42), in place on the slopes:
+  sweep 1 clamps mu and mv per edge (S36), sweep 2 projects the mixed differences (S40)-(S41) with the
+  six-case projection of Fig. S6, sweep 3 clamps muv (S42a-d); include/hylc/monotone.h states what is then
+  monotone.
+
+  Not collective
+
+  Input Parameters:
++ nu, nv      - the knots along u and v
+. tu, tv      - the knots (strictly increasing)
+. p           - the values, nu x nv (node (i, j) at j nu + i; not changed)
+. extrapolate - PETSC_TRUE: the extrapolation-side bound 0 on the boundary cells
+- compat      - HYLC_FIT_COMPAT_PAPER or HYLC_FIT_COMPAT_AUTHORS (only the transposed S42 clamp)
+
+  Input/Output Parameters:
++ mu  - the slopes along u
+. mv  - the slopes along v
+- muv - the mixed derivatives
+
+  Level: developer
+
+.seealso: HylcMonotoneCubic(), HylcQuasiconvex2D()
+@*/
 PetscErrorCode HylcMonotoneBicubic(PetscInt nu, PetscInt nv, const PetscReal tu[], const PetscReal tv[], const PetscReal p[], PetscReal mu[], PetscReal mv[], PetscReal muv[], PetscBool extrapolate, HylcFitCompat compat)
 {
   const Dir  X = {nu, nv, 1, nu, tu, tv}, Y = {nv, nu, nu, 1, tv, tu};

@@ -10,19 +10,6 @@
 #include <string.h>
 #include <sys/stat.h>
 
-const int HylcmatPairs[HYLCMAT_N2D][2] = {
-    {0, 1},
-    {0, 2},
-    {0, 3},
-    {0, 4},
-    {1, 2},
-    {1, 3},
-    {1, 4},
-    {2, 3},
-    {2, 4}};
-const char *const HylcmatNames1D[HYLCMAT_N1D] = {"sx", "sa", "sy", "II00", "II11"};
-const char *const HylcmatNames2D[HYLCMAT_N2D] = {"sx-sa", "sx-sy", "sx-II00", "sx-II11", "sa-sy", "sa-II00", "sa-II11", "sy-II00", "sy-II11"};
-
 int hm_fail(hm_err *e, int code, const char *fmt, ...)
 {
   if (e && e->buf && e->len) {
@@ -43,9 +30,7 @@ void hylcmat_pair(int q, int *k0, int *k1)
 
 int hylcmat_pair_index(int k0, int k1)
 {
-  for (int q = 0; q < HYLCMAT_N2D; q++)
-    if (HylcmatPairs[q][0] == k0 && HylcmatPairs[q][1] == k1) return q;
-  return -1;
+  return HylcPairIndex(k0, k1);
 }
 
 const char *hylcmat_term1d_name(int k)

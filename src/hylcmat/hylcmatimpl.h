@@ -2,6 +2,7 @@
 #ifndef HYLCMATIMPL_H
 #define HYLCMATIMPL_H
 #include <hylcmat.h>
+#include <hylc/strain.h>
 
 /* internal symbols are not exported from the shared libraries */
 #if defined(__GNUC__)
@@ -25,9 +26,10 @@ struct hylcmat {
   double ih1[HYLCMAT_N1D], ihu[HYLCMAT_N2D], ihv[HYLCMAT_N2D];
 };
 
-HM_INTERN extern const int         HylcmatPairs[HYLCMAT_N2D][2];
-HM_INTERN extern const char *const HylcmatNames1D[HYLCMAT_N1D];
-HM_INTERN extern const char *const HylcmatNames2D[HYLCMAT_N2D];
+/* the terms' names and pairs: the shared vocabulary (include/hylc/strain.h, src/sys/strain.c) */
+#define HylcmatPairs   HylcPairCoords
+#define HylcmatNames1D HylcCoordNames
+#define HylcmatNames2D HylcPairNames
 
 /* where a message goes: the caller's buffer (may be NULL) */
 typedef struct {

@@ -39,10 +39,62 @@ struct _n_HylcChol {
   HylcCholInfo     info;
 };
 
+PetscClassId  HYLC_CHOL_CLASSID;
+PetscLogEvent HYLC_CholSymbolic, HYLC_CholNumeric, HYLC_CholSolve;
+
+static PetscBool HylcCholPackageInitialized = PETSC_FALSE;
+
+static PetscErrorCode HylcCholFinalizePackage(void)
+{
+  PetscFunctionBegin;
+  HylcCholPackageInitialized = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcCholInitializePackage - Registers the class id HylcChol and its log events (CHOL_Symbolic,
+  CHOL_Numeric, CHOL_Solve), the ordering METIS_NodeND uses (HylcSysInitializePackage()) and the solver
+  type MATSOLVERHYLC (HylcCholRegisterSolverType()). Called by HylcCholCreate() and by
+  HylcInitializePackage(); idempotent.
+
+  Not collective
+
+  Level: developer
+
+.seealso: HylcInitializePackage(), HylcCholRegisterSolverType()
+@*/
+PetscErrorCode HylcCholInitializePackage(void)
+{
+  PetscFunctionBegin;
+  if (HylcCholPackageInitialized) PetscFunctionReturn(PETSC_SUCCESS);
+  HylcCholPackageInitialized = PETSC_TRUE;
+  PetscCall(HylcSysInitializePackage());
+  PetscCall(PetscClassIdRegister("HylcChol", &HYLC_CHOL_CLASSID));
+  PetscCall(PetscLogEventRegister("CHOL_Symbolic", HYLC_CHOL_CLASSID, &HYLC_CholSymbolic));
+  PetscCall(PetscLogEventRegister("CHOL_Numeric", HYLC_CHOL_CLASSID, &HYLC_CholNumeric));
+  PetscCall(PetscLogEventRegister("CHOL_Solve", HYLC_CHOL_CLASSID, &HYLC_CholSolve));
+  PetscCall(HylcCholRegisterSolverType());
+  PetscCall(PetscRegisterFinalize(HylcCholFinalizePackage));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcCholCreate - Creates a supernodal Cholesky factorization (sequential; a plain handle, not a PETSc
+  object): METIS ordering, no relaxed supernodes, indefinite matrices refused.
+
+  Not collective
+
+  Output Parameter:
+. chol - the factorization
+
+  Level: developer
+
+.seealso: HylcCholFactor(), HylcCholDestroy(), MATSOLVERHYLC
+@*/
 PetscErrorCode HylcCholCreate(HylcChol *chol)
 {
   PetscFunctionBegin;
-  PetscCall(HylcInitializePackage());
+  PetscCall(HylcCholInitializePackage());
   PetscCall(PetscNew(chol));
   (*chol)->ordering = HYLC_CHOL_ORDERING_METIS;
   (*chol)->relax    = PETSC_FALSE;
@@ -62,6 +114,18 @@ static PetscErrorCode CholReset(HylcChol C)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcCholDestroy - Frees the factorization; accepts NULL.
+
+  Not collective
+
+  Input Parameter:
+. chol - the factorization
+
+  Level: developer
+
+.seealso: HylcCholCreate()
+@*/
 PetscErrorCode HylcCholDestroy(HylcChol *chol)
 {
   PetscFunctionBegin;
@@ -72,6 +136,19 @@ PetscErrorCode HylcCholDestroy(HylcChol *chol)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcCholSetOrdering - Sets the fill-reducing ordering (a change drops the symbolic phase).
+
+  Not collective
+
+  Input Parameters:
++ C   - the factorization
+- ord - HYLC_CHOL_ORDERING_METIS (METIS_NodeND of the block graph, the default) or HYLC_CHOL_ORDERING_NATURAL
+
+  Level: developer
+
+.seealso: HylcCholFactorSymbolic()
+@*/
 PetscErrorCode HylcCholSetOrdering(HylcChol C, HylcCholOrdering ord)
 {
   PetscFunctionBegin;
@@ -459,6 +536,21 @@ static PetscErrorCode CheckSeqAIJ(Mat A)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcCholFactorSymbolic - The symbolic phase alone (ordering, elimination tree, supernodes);
+  HylcCholFactor() then runs only the numeric phase while the nonzero pattern of A stays the same.
+
+  Not collective
+
+  Input Parameters:
++ C  - the factorization
+. A  - a MATSEQAIJ matrix
+- bs - the block size
+
+  Level: developer
+
+.seealso: HylcCholFactor()
+@*/
 PetscErrorCode HylcCholFactorSymbolic(HylcChol C, Mat A, PetscInt bs)
 {
   PetscFunctionBegin;
@@ -467,6 +559,26 @@ PetscErrorCode HylcCholFactorSymbolic(HylcChol C, Mat A, PetscInt bs)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcCholFactor - Factors A as A = P^T L S L^T P, S = diag(+-1) the signs of the pivots (the Cholesky
+  factorization when A is positive definite); the symbolic phase is run again only when A, its nonzero
+  pattern or bs changed.
+
+  Not collective
+
+  Input Parameters:
++ C  - the factorization
+. A  - a MATSEQAIJ matrix, both triangles stored
+- bs - the block size, which must divide the order of A
+
+  Output Parameter:
+. ok - PETSC_FALSE, and the factor unusable, when a pivot is zero or tiny (|d| <= 1e-14 |A_kk|), not
+       finite, or negative while indefinite matrices are refused
+
+  Level: developer
+
+.seealso: HylcCholFactorSymbolic(), HylcCholSolve(), HylcCholSetIndefinite()
+@*/
 PetscErrorCode HylcCholFactor(HylcChol C, Mat A, PetscInt bs, PetscBool *ok)
 {
   PetscObjectState st;
@@ -479,6 +591,22 @@ PetscErrorCode HylcCholFactor(HylcChol C, Mat A, PetscInt bs, PetscBool *ok)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcCholGetInertia - The inertia of the last factored matrix (Sylvester's law: the signs of the pivots).
+
+  Not collective
+
+  Input Parameter:
+. C - the factorization, after a successful HylcCholFactor()
+
+  Output Parameters:
++ nneg - the negative eigenvalues (may be NULL)
+- npos - the positive eigenvalues (may be NULL)
+
+  Level: developer
+
+.seealso: HylcCholSetIndefinite()
+@*/
 PetscErrorCode HylcCholGetInertia(HylcChol C, PetscInt *nneg, PetscInt *npos)
 {
   PetscFunctionBegin;
@@ -488,6 +616,20 @@ PetscErrorCode HylcCholGetInertia(HylcChol C, PetscInt *nneg, PetscInt *npos)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcCholSetRelaxed - Sets whether supernodes are merged along the elimination tree at the price of a few
+  explicit zeros (a change drops the symbolic phase). Default false.
+
+  Not collective
+
+  Input Parameters:
++ C     - the factorization
+- relax - PETSC_TRUE to relax
+
+  Level: developer
+
+.seealso: HylcCholSetOrdering()
+@*/
 PetscErrorCode HylcCholSetRelaxed(HylcChol C, PetscBool relax)
 {
   PetscFunctionBegin;
@@ -496,6 +638,20 @@ PetscErrorCode HylcCholSetRelaxed(HylcChol C, PetscBool relax)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcCholSetIndefinite - Sets whether negative pivots are accepted (no pivoting: only for matrices whose
+  leading principal minors do not vanish, as regularized Hessians). Default false.
+
+  Not collective
+
+  Input Parameters:
++ C     - the factorization
+- allow - PETSC_TRUE to accept indefinite matrices
+
+  Level: developer
+
+.seealso: HylcCholGetInertia()
+@*/
 PetscErrorCode HylcCholSetIndefinite(HylcChol C, PetscBool allow)
 {
   PetscFunctionBegin;
@@ -575,6 +731,24 @@ static inline __attribute__((always_inline)) void SolveInterleaved(HylcChol C, c
   }
 }
 
+/*@C
+  HylcCholSolveMany - Solves A x = b for nrhs right-hand sides stored one after the other (b[j n + i]) with
+  the last successful factorization, all of them in one pass over L.
+
+  Not collective
+
+  Input Parameters:
++ C    - the factorization
+. nrhs - the number of right-hand sides
+- b    - the right-hand sides
+
+  Output Parameter:
+. x - the solutions (may be b)
+
+  Level: developer
+
+.seealso: HylcCholSolve()
+@*/
 HYLC_TARGET_CLONES PetscErrorCode HylcCholSolveMany(HylcChol C, PetscInt nrhs, const PetscScalar b[], PetscScalar x[])
 {
   const PetscInt bs = C->bs, n = C->n, m = nrhs;
@@ -607,6 +781,22 @@ HYLC_TARGET_CLONES PetscErrorCode HylcCholSolveMany(HylcChol C, PetscInt nrhs, c
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcCholSolve - Solves A x = b with the last successful factorization.
+
+  Not collective
+
+  Input Parameters:
++ C - the factorization
+- b - the right-hand side
+
+  Output Parameter:
+. x - the solution (may be b)
+
+  Level: developer
+
+.seealso: HylcCholSolveMany(), HylcCholFactor()
+@*/
 PetscErrorCode HylcCholSolve(HylcChol C, const PetscScalar b[], PetscScalar x[])
 {
   PetscFunctionBegin;
@@ -614,6 +804,22 @@ PetscErrorCode HylcCholSolve(HylcChol C, const PetscScalar b[], PetscScalar x[])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcCholGetInfo - Statistics of the factorization: order, block size, supernodes, stored entries of L,
+  flops per numeric factorization and the phases run.
+
+  Not collective
+
+  Input Parameter:
+. C - the factorization
+
+  Output Parameter:
+. info - the statistics
+
+  Level: developer
+
+.seealso: HylcCholView()
+@*/
 PetscErrorCode HylcCholGetInfo(HylcChol C, HylcCholInfo *info)
 {
   PetscFunctionBegin;
@@ -621,6 +827,19 @@ PetscErrorCode HylcCholGetInfo(HylcChol C, HylcCholInfo *info)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcCholView - Prints the statistics of the factorization (one line).
+
+  Not collective
+
+  Input Parameters:
++ C      - the factorization
+- viewer - an ASCII viewer (NULL: stdout)
+
+  Level: developer
+
+.seealso: HylcCholGetInfo()
+@*/
 PetscErrorCode HylcCholView(HylcChol C, PetscViewer viewer)
 {
   char buf[256];

@@ -164,7 +164,7 @@ static PetscErrorCode MatDestroy_Hylc(Mat F)
 
 /*@C
   MatGetFactor_SeqAIJ_Hylc - The factor matrix of the solver type "hylc" (MATSOLVERHYLC) for a MATSEQAIJ
-  matrix; called by MatGetFactor(), registered by HylcInitializePackage(). Not collective (sequential).
+  matrix; called by MatGetFactor(), registered by HylcCholRegisterSolverType(). Not collective (sequential).
 
   Input Parameters:
 + A     - the MATSEQAIJ matrix (symmetric structure and values; block size from MatGetBlockSize())
@@ -205,5 +205,37 @@ PetscErrorCode MatGetFactor_SeqAIJ_Hylc(Mat A, MatFactorType ftype, Mat *F)
   PetscCall(PetscFree(B->solvertype));
   PetscCall(PetscStrallocpy(MATSOLVERHYLC, &B->solvertype));
   *F = B;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscBool HylcCholSolverTypeRegistered = PETSC_FALSE;
+
+static PetscErrorCode HylcCholFinalizeSolverType(void)
+{
+  PetscFunctionBegin;
+  HylcCholSolverTypeRegistered = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcCholRegisterSolverType - Registers the solver type "hylc" (MATSOLVERHYLC) for MATSEQAIJ and
+  MAT_FACTOR_CHOLESKY with MatSolverTypeRegister(), after PETSc's own solver types (which stay the
+  defaults). Called by HylcCholInitializePackage() and by a stage before it names the type
+  (HylcMicroGetFactorPC()); idempotent.
+
+  Not collective
+
+  Level: developer
+
+.seealso: MatGetFactor_SeqAIJ_Hylc(), HylcCholInitializePackage()
+@*/
+PetscErrorCode HylcCholRegisterSolverType(void)
+{
+  PetscFunctionBegin;
+  if (HylcCholSolverTypeRegistered) PetscFunctionReturn(PETSC_SUCCESS);
+  HylcCholSolverTypeRegistered = PETSC_TRUE;
+  PetscCall(MatInitializePackage()); /* PETSc's own solver types first: they stay the defaults */
+  PetscCall(MatSolverTypeRegister(MATSOLVERHYLC, MATSEQAIJ, MAT_FACTOR_CHOLESKY, MatGetFactor_SeqAIJ_Hylc));
+  PetscCall(PetscRegisterFinalize(HylcCholFinalizeSolverType));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

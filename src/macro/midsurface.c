@@ -6,6 +6,41 @@ const char *const HylcMidsurfaceTypes[]   = {"auto", "closed", "poisson", "HylcM
 const char *const HylcMidsurfaceInterps[] = {"bilinear", "bicubic", "HylcMidsurfaceInterp", "HYLC_MIDSURFACE_INTERP_", NULL};
 const char *const HylcMidsurfaceNormals[] = {"rotation", "polar", "HylcMidsurfaceNormal", "HYLC_MIDSURFACE_NORMAL_", NULL};
 
+PetscClassId  HYLC_MIDSURFACE_CLASSID;
+PetscLogEvent HYLC_MacroSetUp, HYLC_MacroPoisson, HYLC_MacroEvaluate;
+
+static PetscBool HylcMidsurfacePackageInitialized = PETSC_FALSE;
+
+static PetscErrorCode HylcMidsurfaceFinalizePackage(void)
+{
+  PetscFunctionBegin;
+  HylcMidsurfacePackageInitialized = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcMidsurfaceInitializePackage - Registers the class id HylcMidsurface and its log events (MACRO_SetUp, MACRO_Poisson, MACRO_Evaluate). Called by
+  HylcMidsurfaceCreate() and by HylcInitializePackage(); idempotent.
+
+  Not collective
+
+  Level: developer
+
+.seealso: HylcInitializePackage()
+@*/
+PetscErrorCode HylcMidsurfaceInitializePackage(void)
+{
+  PetscFunctionBegin;
+  if (HylcMidsurfacePackageInitialized) PetscFunctionReturn(PETSC_SUCCESS);
+  HylcMidsurfacePackageInitialized = PETSC_TRUE;
+  PetscCall(PetscClassIdRegister("HylcMidsurface", &HYLC_MIDSURFACE_CLASSID));
+  PetscCall(PetscLogEventRegister("MACRO_SetUp", HYLC_MIDSURFACE_CLASSID, &HYLC_MacroSetUp));
+  PetscCall(PetscLogEventRegister("MACRO_Poisson", HYLC_MIDSURFACE_CLASSID, &HYLC_MacroPoisson));
+  PetscCall(PetscLogEventRegister("MACRO_Evaluate", HYLC_MIDSURFACE_CLASSID, &HYLC_MacroEvaluate));
+  PetscCall(PetscRegisterFinalize(HylcMidsurfaceFinalizePackage));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /*@C
   HylcMidsurfaceCreate - Creates a midsurface at zero strain on the box [-1, 1]^2. Not collective; use
   PETSC_COMM_SELF (the Poisson grid lives on one rank).
@@ -17,7 +52,7 @@ PetscErrorCode HylcMidsurfaceCreate(MPI_Comm comm, HylcMidsurface *out)
 
   PetscFunctionBegin;
   PetscValidPointer(out, 2);
-  PetscCall(HylcInitializePackage());
+  PetscCall(HylcMidsurfaceInitializePackage());
   PetscCall(PetscHeaderCreate(ms, HYLC_MIDSURFACE_CLASSID, "HylcMidsurface", "Micro-midsurface", "Macro", comm, HylcMidsurfaceDestroy, HylcMidsurfaceView));
   ms->type   = HYLC_MIDSURFACE_AUTO;
   ms->interp = HYLC_MIDSURFACE_INTERP_BILINEAR;
@@ -30,6 +65,19 @@ PetscErrorCode HylcMidsurfaceCreate(MPI_Comm comm, HylcMidsurface *out)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMidsurfaceDestroy - Drops a reference to the midsurface and frees it with its Poisson data at the last;
+  accepts NULL and sets the handle to NULL.
+
+  Not collective
+
+  Input Parameter:
+. ms - the midsurface
+
+  Level: beginner
+
+.seealso: HylcMidsurfaceCreate()
+@*/
 PetscErrorCode HylcMidsurfaceDestroy(HylcMidsurface *ms)
 {
   PetscFunctionBegin;
@@ -44,6 +92,20 @@ PetscErrorCode HylcMidsurfaceDestroy(HylcMidsurface *ms)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMidsurfaceSetOptionsPrefix - Sets the prefix of the midsurface's options (-<prefix>macro_*, with the
+  Poisson KSP's -<prefix>macro_ksp_*, -<prefix>macro_pc_*).
+
+  Not collective
+
+  Input Parameters:
++ ms     - the midsurface
+- prefix - the prefix (NULL: none)
+
+  Level: intermediate
+
+.seealso: HylcMidsurfaceSetFromOptions()
+@*/
 PetscErrorCode HylcMidsurfaceSetOptionsPrefix(HylcMidsurface ms, const char prefix[])
 {
   PetscFunctionBegin;
@@ -83,6 +145,20 @@ PetscErrorCode HylcMidsurfaceSetFromOptions(HylcMidsurface ms)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMidsurfaceSetStrain - Sets the macroscopic strain whose midsurface phi and normal n are evaluated; an
+  invalid strain is a PETSC_ERR_USER_INPUT error naming it.
+
+  Not collective
+
+  Input Parameters:
++ ms - the midsurface
+- z  - the strain (sx, sa, sy, II00, II01, II11; II in 1/m)
+
+  Level: beginner
+
+.seealso: HylcMidsurfaceGetStrain(), HylcMidsurfaceSetUp()
+@*/
 PetscErrorCode HylcMidsurfaceSetStrain(HylcMidsurface ms, const PetscReal z[6])
 {
   double               zd[6];
@@ -98,6 +174,21 @@ PetscErrorCode HylcMidsurfaceSetStrain(HylcMidsurface ms, const PetscReal z[6])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMidsurfaceGetStrain - The data derived from the strain (curvature class, eigen-split of II, ...).
+
+  Not collective
+
+  Input Parameter:
+. ms - the midsurface, with a strain (HylcMidsurfaceSetStrain())
+
+  Output Parameter:
+. m - the strain data (owned by the midsurface)
+
+  Level: developer
+
+.seealso: HylcMidsurfaceSetStrain()
+@*/
 PetscErrorCode HylcMidsurfaceGetStrain(HylcMidsurface ms, const HylcMacroStrain **m)
 {
   PetscFunctionBegin;
@@ -106,6 +197,21 @@ PetscErrorCode HylcMidsurfaceGetStrain(HylcMidsurface ms, const HylcMacroStrain 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMidsurfaceSetBox - Sets the box in xi of the points to evaluate: the Poisson grid covers it, xi = 0 and
+  a margin of 2 cells. Default [-1, 1]^2.
+
+  Not collective
+
+  Input Parameters:
++ ms - the midsurface
+. lo - the lower corner (finite)
+- hi - the upper corner (finite, hi >= lo)
+
+  Level: intermediate
+
+.seealso: HylcMidsurfaceEvaluate()
+@*/
 PetscErrorCode HylcMidsurfaceSetBox(HylcMidsurface ms, const PetscReal lo[2], const PetscReal hi[2])
 {
   PetscFunctionBegin;
@@ -121,6 +227,23 @@ PetscErrorCode HylcMidsurfaceSetBox(HylcMidsurface ms, const PetscReal lo[2], co
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMidsurfaceSetType - Sets how phi is computed: closed form (flat or singly curved II), Poisson, or auto
+  (closed where it exists, else Poisson).
+
+  Not collective
+
+  Input Parameters:
++ ms   - the midsurface
+- type - HYLC_MIDSURFACE_AUTO, HYLC_MIDSURFACE_CLOSED or HYLC_MIDSURFACE_POISSON
+
+  Options Database Key:
+. -macro_phi <auto> - auto, closed or poisson
+
+  Level: intermediate
+
+.seealso: HylcMidsurfaceGetType()
+@*/
 PetscErrorCode HylcMidsurfaceSetType(HylcMidsurface ms, HylcMidsurfaceType type)
 {
   PetscFunctionBegin;
@@ -132,6 +255,22 @@ PetscErrorCode HylcMidsurfaceSetType(HylcMidsurface ms, HylcMidsurfaceType type)
 }
 
 /* After SetUp the resolved type (closed or poisson), before it the requested one. */
+/*@C
+  HylcMidsurfaceGetType - How phi is computed: the type set, or after HylcMidsurfaceSetUp() the one auto
+  resolved to.
+
+  Not collective
+
+  Input Parameter:
+. ms - the midsurface
+
+  Output Parameter:
+. type - the type
+
+  Level: intermediate
+
+.seealso: HylcMidsurfaceSetType()
+@*/
 PetscErrorCode HylcMidsurfaceGetType(HylcMidsurface ms, HylcMidsurfaceType *type)
 {
   PetscFunctionBegin;
@@ -140,6 +279,22 @@ PetscErrorCode HylcMidsurfaceGetType(HylcMidsurface ms, HylcMidsurfaceType *type
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMidsurfaceSetGridSize - Sets the nodes per direction of the Poisson grid.
+
+  Not collective
+
+  Input Parameters:
++ ms - the midsurface
+- n  - the nodes per direction (at least 8; default 96)
+
+  Options Database Key:
+. -macro_grid <96> - the same
+
+  Level: intermediate
+
+.seealso: HylcMidsurfaceSetType()
+@*/
 PetscErrorCode HylcMidsurfaceSetGridSize(HylcMidsurface ms, PetscInt n)
 {
   PetscFunctionBegin;
@@ -150,6 +305,22 @@ PetscErrorCode HylcMidsurfaceSetGridSize(HylcMidsurface ms, PetscInt n)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMidsurfaceSetInterpolation - Sets the interpolation of the Poisson solution between grid nodes.
+
+  Not collective
+
+  Input Parameters:
++ ms     - the midsurface
+- interp - HYLC_MIDSURFACE_INTERP_BILINEAR or HYLC_MIDSURFACE_INTERP_BICUBIC (Catmull-Rom)
+
+  Options Database Key:
+. -macro_interp <bilinear> - bilinear or bicubic
+
+  Level: intermediate
+
+.seealso: HylcMidsurfaceSetGridSize()
+@*/
 PetscErrorCode HylcMidsurfaceSetInterpolation(HylcMidsurface ms, HylcMidsurfaceInterp interp)
 {
   PetscFunctionBegin;
@@ -160,6 +331,23 @@ PetscErrorCode HylcMidsurfaceSetInterpolation(HylcMidsurface ms, HylcMidsurfaceI
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMidsurfaceSetNormalType - Sets how the normal and the rotation are obtained: R(xi) of (S10), or (Poisson
+  only) the polar decomposition of the difference gradient of phi.
+
+  Not collective
+
+  Input Parameters:
++ ms     - the midsurface
+- normal - HYLC_MIDSURFACE_NORMAL_ROTATION or HYLC_MIDSURFACE_NORMAL_POLAR
+
+  Options Database Key:
+. -macro_normal <rotation> - rotation or polar
+
+  Level: intermediate
+
+.seealso: HylcMidsurfaceGetRotation()
+@*/
 PetscErrorCode HylcMidsurfaceSetNormalType(HylcMidsurface ms, HylcMidsurfaceNormal normal)
 {
   PetscFunctionBegin;
@@ -206,6 +394,23 @@ static PetscErrorCode GetRotation_Private(HylcMidsurface ms, const PetscReal xi[
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMidsurfaceGetRotation - The rotation used at a point: R(xi) of (S10), or the polar estimate with
+  -macro_normal polar. Sets the midsurface up if needed.
+
+  Not collective
+
+  Input Parameters:
++ ms - the midsurface, with a strain
+- xi - the point
+
+  Output Parameter:
+. R - the rotation, 3 x 3 row-major
+
+  Level: intermediate
+
+.seealso: HylcMidsurfaceEvaluate(), HylcMidsurfaceSetNormalType()
+@*/
 PetscErrorCode HylcMidsurfaceGetRotation(HylcMidsurface ms, const PetscReal xi[2], PetscReal R[9])
 {
   PetscFunctionBegin;
@@ -246,6 +451,22 @@ PetscErrorCode HylcMidsurfaceEvaluate(HylcMidsurface ms, PetscInt npts, const Pe
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMidsurfaceGetSolveInfo - Statistics of the Poisson solve (0 for the closed form or before set-up).
+
+  Not collective
+
+  Input Parameter:
+. ms - the midsurface
+
+  Output Parameters:
++ grid - the nodes per direction (may be NULL)
+- its  - the KSP iterations over the three components (may be NULL)
+
+  Level: developer
+
+.seealso: HylcMidsurfaceSetUp()
+@*/
 PetscErrorCode HylcMidsurfaceGetSolveInfo(HylcMidsurface ms, PetscInt *grid, PetscInt *its)
 {
   PetscFunctionBegin;
@@ -255,6 +476,20 @@ PetscErrorCode HylcMidsurfaceGetSolveInfo(HylcMidsurface ms, PetscInt *grid, Pet
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMidsurfaceView - Prints the strain, its curvature class and the method (with the Poisson grid and KSP
+  when set up).
+
+  Not collective
+
+  Input Parameters:
++ ms     - the midsurface
+- viewer - an ASCII viewer (NULL: stdout of the midsurface's communicator)
+
+  Level: beginner
+
+.seealso: HylcMidsurfaceViewFromOptions()
+@*/
 PetscErrorCode HylcMidsurfaceView(HylcMidsurface ms, PetscViewer viewer)
 {
   PetscBool              iascii;
@@ -280,6 +515,21 @@ PetscErrorCode HylcMidsurfaceView(HylcMidsurface ms, PetscViewer viewer)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMidsurfaceViewFromOptions - Views the midsurface if the option name is given
+  (PetscObjectViewFromOptions()).
+
+  Not collective
+
+  Input Parameters:
++ ms   - the midsurface
+. obj  - an object whose prefix is used (NULL: the midsurface's)
+- name - the option, e.g. "-macro_view"
+
+  Level: intermediate
+
+.seealso: HylcMidsurfaceView()
+@*/
 PetscErrorCode HylcMidsurfaceViewFromOptions(HylcMidsurface ms, PetscObject obj, const char name[])
 {
   PetscFunctionBegin;

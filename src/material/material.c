@@ -9,24 +9,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-const PetscInt HylcMaterialPairs[HYLC_MATERIAL_N2D][2] = {
-    {0, 1},
-    {0, 2},
-    {0, 3},
-    {0, 4},
-    {1, 2},
-    {1, 3},
-    {1, 4},
-    {2, 3},
-    {2, 4}};
-const char *const HylcMaterialTermNames1D[HYLC_MATERIAL_N1D] = {"sx", "sa", "sy", "II00", "II11"};
-const char *const HylcMaterialTermNames2D[HYLC_MATERIAL_N2D] = {"sx-sa", "sx-sy", "sx-II00", "sx-II11", "sa-sy", "sa-II00", "sa-II11", "sy-II00", "sy-II11"};
-
 PetscInt HylcMaterialPairIndex(PetscInt k0, PetscInt k1)
 {
-  for (PetscInt q = 0; q < HYLC_MATERIAL_N2D; q++)
-    if (HylcMaterialPairs[q][0] == k0 && HylcMaterialPairs[q][1] == k1) return q;
-  return -1;
+  return HylcPairIndex((int)k0, (int)k1);
 }
 
 /* a number for messages and views (C printf: PETSc's appends '.' to integral %g values) */
@@ -38,6 +23,40 @@ static const char *G(char buf[32], PetscReal v)
 
 static const char *const ExtNames[] = {"linear", "constant", "zero"};
 
+PetscClassId  HYLC_MATERIAL_CLASSID;
+PetscLogEvent HYLC_MaterialLoad, HYLC_MaterialWrite;
+
+static PetscBool HylcMaterialPackageInitialized = PETSC_FALSE;
+
+static PetscErrorCode HylcMaterialFinalizePackage(void)
+{
+  PetscFunctionBegin;
+  HylcMaterialPackageInitialized = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcMaterialInitializePackage - Registers the class id HylcMaterial and its log events (MATERIAL_Load, MATERIAL_Write). Called by
+  HylcMaterialCreate() and by HylcInitializePackage(); idempotent.
+
+  Not collective
+
+  Level: developer
+
+.seealso: HylcInitializePackage()
+@*/
+PetscErrorCode HylcMaterialInitializePackage(void)
+{
+  PetscFunctionBegin;
+  if (HylcMaterialPackageInitialized) PetscFunctionReturn(PETSC_SUCCESS);
+  HylcMaterialPackageInitialized = PETSC_TRUE;
+  PetscCall(PetscClassIdRegister("HylcMaterial", &HYLC_MATERIAL_CLASSID));
+  PetscCall(PetscLogEventRegister("MATERIAL_Load", HYLC_MATERIAL_CLASSID, &HYLC_MaterialLoad));
+  PetscCall(PetscLogEventRegister("MATERIAL_Write", HYLC_MATERIAL_CLASSID, &HYLC_MaterialWrite));
+  PetscCall(PetscRegisterFinalize(HylcMaterialFinalizePackage));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /*@C
   HylcMaterialCreate - Creates an empty material model: no terms (Psi = 0), density 0, strain scale 1,
   strain shift 1,0,1,0,0. Collective.
@@ -48,7 +67,7 @@ PetscErrorCode HylcMaterialCreate(MPI_Comm comm, HylcMaterial *mat)
 
   PetscFunctionBegin;
   PetscValidPointer(mat, 2);
-  PetscCall(HylcInitializePackage());
+  PetscCall(HylcMaterialInitializePackage());
   PetscCall(PetscHeaderCreate(m, HYLC_MATERIAL_CLASSID, "HylcMaterial", "Homogenized cloth material model", "Material", comm, HylcMaterialDestroy, HylcMaterialView));
   PetscCheck(hylcmat_create(&m->hm) == HYLCMAT_OK, comm, PETSC_ERR_MEM, "Cannot allocate a material table");
   PetscCall(HylcMaterialReset(m));
@@ -169,11 +188,54 @@ PetscErrorCode HylcMaterialDestroy(HylcMaterial *m)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMaterialSetOptionsPrefix - Sets the prefix of the material's options (-<prefix>material_*).
+
+  Not collective
+
+  Input Parameters:
++ m      - the material
+- prefix - the prefix (NULL: none)
+
+  Level: intermediate
+
+.seealso: HylcMaterialSetFromOptions()
+@*/
 PetscErrorCode HylcMaterialSetOptionsPrefix(HylcMaterial m, const char prefix[])
 {
   PetscFunctionBegin;
   PetscValidHeaderSpecific(m, HYLC_MATERIAL_CLASSID, 1);
   PetscCall(PetscObjectSetOptionsPrefix((PetscObject)m, prefix));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcMaterialGetOptionsFile - The material file that the material's option -material_file names (after the
+  material's prefix), which HylcMaterialSetFromOptions() will load; for a program that checks all its files
+  before any work (include/hylc/files.h). Loads nothing.
+
+  Not collective
+
+  Input Parameters:
++ m   - the material
+- len - the size of file
+
+  Output Parameters:
++ file - the path ("" if the option is not given or has no value)
+- set  - whether the option is given
+
+  Level: intermediate
+
+.seealso: HylcMaterialSetFromOptions(), HylcMaterialLoad()
+@*/
+PetscErrorCode HylcMaterialGetOptionsFile(HylcMaterial m, char file[], size_t len, PetscBool *set)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(m, HYLC_MATERIAL_CLASSID, 1);
+  PetscValidCharPointer(file, 2);
+  PetscValidBoolPointer(set, 4);
+  file[0] = 0;
+  PetscCall(PetscOptionsGetString(((PetscObject)m)->options, ((PetscObject)m)->prefix, "-material_file", file, len, set));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -246,6 +308,20 @@ PetscErrorCode HylcMaterialView(HylcMaterial m, PetscViewer viewer)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMaterialViewFromOptions - Views the material if the option name is given (PetscObjectViewFromOptions()).
+
+  Collective
+
+  Input Parameters:
++ m    - the material
+. obj  - an object whose prefix is used (NULL: the material's)
+- name - the option, e.g. "-material_view"
+
+  Level: intermediate
+
+.seealso: HylcMaterialView()
+@*/
 PetscErrorCode HylcMaterialViewFromOptions(HylcMaterial m, PetscObject obj, const char name[])
 {
   PetscFunctionBegin;
@@ -258,6 +334,19 @@ PetscErrorCode HylcMaterialViewFromOptions(HylcMaterial m, PetscObject obj, cons
 /* Contents                                                                                           */
 /* ------------------------------------------------------------------------------------------------ */
 
+/*@C
+  HylcMaterialSetDensity - Sets the area density of the material (checked by hylcmat_set_density()).
+
+  Not collective
+
+  Input Parameters:
++ m   - the material
+- rho - the area density (kg/m^2)
+
+  Level: intermediate
+
+.seealso: HylcMaterialGetDensity()
+@*/
 PetscErrorCode HylcMaterialSetDensity(HylcMaterial m, PetscReal rho)
 {
   char err[512] = "";
@@ -269,6 +358,21 @@ PetscErrorCode HylcMaterialSetDensity(HylcMaterial m, PetscReal rho)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMaterialGetDensity - The area density of the material.
+
+  Not collective
+
+  Input Parameter:
+. m - the material
+
+  Output Parameter:
+. rho - the area density (kg/m^2)
+
+  Level: intermediate
+
+.seealso: HylcMaterialSetDensity()
+@*/
 PetscErrorCode HylcMaterialGetDensity(HylcMaterial m, PetscReal *rho)
 {
   PetscFunctionBegin;
@@ -277,6 +381,20 @@ PetscErrorCode HylcMaterialGetDensity(HylcMaterial m, PetscReal *rho)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMaterialSetStrainScale - Sets the strain scales of the tables, one per coordinate (sx, sa, sy, II00,
+  II11; finite and positive with a finite inverse).
+
+  Not collective
+
+  Input Parameters:
++ m     - the material
+- scale - the five scales (copied)
+
+  Level: intermediate
+
+.seealso: HylcMaterialGetStrainScale()
+@*/
 PetscErrorCode HylcMaterialSetStrainScale(HylcMaterial m, const PetscReal scale[5])
 {
   char   err[512] = "";
@@ -290,6 +408,21 @@ PetscErrorCode HylcMaterialSetStrainScale(HylcMaterial m, const PetscReal scale[
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMaterialGetStrainScale - The strain scales of the tables, one per coordinate.
+
+  Not collective
+
+  Input Parameter:
+. m - the material
+
+  Output Parameter:
+. scale - the five scales
+
+  Level: intermediate
+
+.seealso: HylcMaterialSetStrainScale()
+@*/
 PetscErrorCode HylcMaterialGetStrainScale(HylcMaterial m, PetscReal scale[5])
 {
   PetscFunctionBegin;
@@ -298,6 +431,20 @@ PetscErrorCode HylcMaterialGetStrainScale(HylcMaterial m, PetscReal scale[5])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMaterialSetStrainShift - Sets the JSON's informational "strain shift" (not used by the evaluator; kept
+  so that files round-trip).
+
+  Not collective
+
+  Input Parameters:
++ m     - the material
+- shift - the five values (default 1, 0, 1, 0, 0)
+
+  Level: developer
+
+.seealso: HylcMaterialGetStrainShift()
+@*/
 PetscErrorCode HylcMaterialSetStrainShift(HylcMaterial m, const PetscInt shift[5])
 {
   int i5[5];
@@ -310,6 +457,21 @@ PetscErrorCode HylcMaterialSetStrainShift(HylcMaterial m, const PetscInt shift[5
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMaterialGetStrainShift - The JSON's informational "strain shift".
+
+  Not collective
+
+  Input Parameter:
+. m - the material
+
+  Output Parameter:
+. shift - the five values
+
+  Level: developer
+
+.seealso: HylcMaterialSetStrainShift()
+@*/
 PetscErrorCode HylcMaterialGetStrainShift(HylcMaterial m, PetscInt shift[5])
 {
   PetscFunctionBegin;
@@ -318,6 +480,19 @@ PetscErrorCode HylcMaterialGetStrainShift(HylcMaterial m, PetscInt shift[5])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMaterialSetConstant - Sets the constant term of the energy density.
+
+  Not collective
+
+  Input Parameters:
++ m - the material
+- c - the constant (J/m^2, finite)
+
+  Level: intermediate
+
+.seealso: HylcMaterialGetConstant()
+@*/
 PetscErrorCode HylcMaterialSetConstant(HylcMaterial m, PetscReal c)
 {
   char err[512] = "";
@@ -329,6 +504,21 @@ PetscErrorCode HylcMaterialSetConstant(HylcMaterial m, PetscReal c)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMaterialGetConstant - The constant term of the energy density.
+
+  Not collective
+
+  Input Parameter:
+. m - the material
+
+  Output Parameter:
+. c - the constant (J/m^2)
+
+  Level: intermediate
+
+.seealso: HylcMaterialSetConstant()
+@*/
 PetscErrorCode HylcMaterialGetConstant(HylcMaterial m, PetscReal *c)
 {
   PetscFunctionBegin;
@@ -390,6 +580,22 @@ PetscErrorCode HylcMaterialSet2D(HylcMaterial m, const HylcSpline2D *s)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMaterialGet1D - The 1D term of coordinate k (include/hylc/strain.h: 0 sx, 1 sa, 2 sy, 3 II00, 4 II11).
+
+  Not collective
+
+  Input Parameters:
++ m - the material
+- k - the coordinate, 0..4
+
+  Output Parameter:
+. s - the spline (owned by the material, valid until it changes), NULL for an absent term
+
+  Level: intermediate
+
+.seealso: HylcMaterialSet1D(), HylcMaterialGet2D()
+@*/
 PetscErrorCode HylcMaterialGet1D(HylcMaterial m, PetscInt k, const HylcSpline1D **s)
 {
   PetscFunctionBegin;
@@ -399,6 +605,23 @@ PetscErrorCode HylcMaterialGet1D(HylcMaterial m, PetscInt k, const HylcSpline1D 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcMaterialGet2D - The 2D term of the pair (k0, k1) (include/hylc/strain.h).
+
+  Not collective
+
+  Input Parameters:
++ m  - the material
+. k0 - the first coordinate of the pair
+- k1 - the second (k0 < k1; a pair that is no term of the model is an error)
+
+  Output Parameter:
+. s - the spline (owned by the material, valid until it changes), NULL for an absent term
+
+  Level: intermediate
+
+.seealso: HylcMaterialSet2D(), HylcMaterialGet1D()
+@*/
 PetscErrorCode HylcMaterialGet2D(HylcMaterial m, PetscInt k0, PetscInt k1, const HylcSpline2D **s)
 {
   const PetscInt q = HylcMaterialPairIndex(k0, k1);

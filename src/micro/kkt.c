@@ -1,5 +1,5 @@
 /* HylcMicro: the KKT preconditioner (S22), a PCSHELL that solves the constrained Newton system by a Schur
-   complement around an ordinary PCCHOLESKY of K (prefix <micro_>factor_). The solver type of that
+   complement around an ordinary PCCHOLESKY of K (prefix <prefix>micro_factor_). The solver type of that
    factorization is PETSc's choice (-micro_factor_pc_factor_mat_solver_type hylc|petsc|cholmod|mumps,
    default hylc: HylcChol, include/hylc/chol.h); the ordering is METIS nested dissection (metisnd) for the
    solver types that use the PC's ordering. Indefiniteness is detected the same way for every solver type:
@@ -17,20 +17,20 @@ PetscErrorCode HylcMicroResizeKKT_Private(HylcMicro M, PetscInt m)
   PetscFunctionBegin;
   PetscCall(HylcMicroDestroyKKT_Private(M));
   M->m = m;
-  PetscCall(PetscMalloc6(M->m, &M->c, M->m * M->ny, &M->Z, M->m * M->m, &M->S, M->m * M->m, &M->Sinv, M->m, &M->wl, M->m, &M->tmp));
-  PetscCall(PetscMalloc1(M->m * M->ny, &M->Bw));
-  PetscCall(MatCreateSeqDense(PETSC_COMM_SELF, M->ny, M->m, M->Bw, &M->Bd));
-  PetscCall(MatCreateSeqDense(PETSC_COMM_SELF, M->ny, M->m, M->Z, &M->Zd));
+  PetscCall(PetscMalloc6(M->m, &M->kkt.c, M->m * M->ny, &M->kkt.Z, M->m * M->m, &M->kkt.S, M->m * M->m, &M->kkt.Sinv, M->m, &M->kkt.wl, M->m, &M->kkt.tmp));
+  PetscCall(PetscMalloc1(M->m * M->ny, &M->kkt.Bw));
+  PetscCall(MatCreateSeqDense(PETSC_COMM_SELF, M->ny, M->m, M->kkt.Bw, &M->kkt.Bd));
+  PetscCall(MatCreateSeqDense(PETSC_COMM_SELF, M->ny, M->m, M->kkt.Z, &M->kkt.Zd));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode HylcMicroDestroyKKT_Private(HylcMicro M)
 {
   PetscFunctionBegin;
-  PetscCall(MatDestroy(&M->Bd));
-  PetscCall(MatDestroy(&M->Zd));
-  PetscCall(PetscFree(M->Bw));
-  PetscCall(PetscFree6(M->c, M->Z, M->S, M->Sinv, M->wl, M->tmp));
+  PetscCall(MatDestroy(&M->kkt.Bd));
+  PetscCall(MatDestroy(&M->kkt.Zd));
+  PetscCall(PetscFree(M->kkt.Bw));
+  PetscCall(PetscFree6(M->kkt.c, M->kkt.Z, M->kkt.S, M->kkt.Sinv, M->kkt.wl, M->kkt.tmp));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -44,7 +44,7 @@ static PetscErrorCode FactorInertia(HylcMicro M, PetscBool *have, PetscInt *nneg
 
   PetscFunctionBegin;
   *nneg = *nzero = 0;
-  PetscCall(PCFactorGetMatrix(M->inner, &F));
+  PetscCall(PCFactorGetMatrix(M->kkt.inner, &F));
   PetscCall(MatFactorGetSolverType(F, &type));
   /* the solver types with MatGetInertia for a Cholesky factor of SeqAIJ; CHOLMOD fails on an indefinite K */
   {
@@ -76,7 +76,7 @@ static PetscErrorCode SchurPositive(HylcMicro M, PetscInt *npos)
   PetscCall(PetscBLASIntCast(M->m, &n));
   lwork = 8 * n;
   PetscCall(PetscMalloc3(M->m * M->m, &a, M->m, &w, lwork, &work));
-  for (PetscInt i = 0; i < M->m * M->m; i++) a[i] = 0.5 * (M->S[i] + M->S[(i % M->m) * M->m + i / M->m]);
+  for (PetscInt i = 0; i < M->m * M->m; i++) a[i] = 0.5 * (M->kkt.S[i] + M->kkt.S[(i % M->m) * M->m + i / M->m]);
   PetscCallBLAS("LAPACKsyev", LAPACKsyev_("N", "U", &n, a, &n, w, work, &lwork, &info));
   PetscCheck(info == 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "LAPACK syev of the %" PetscInt_FMT " x %" PetscInt_FMT " Schur complement failed: info %d", M->m, M->m, (int)info);
   for (PetscInt i = 0; i < M->m; i++) *npos += w[i] > 0;
@@ -96,22 +96,22 @@ PetscErrorCode HylcMicroKKTFactor_Private(HylcMicro M, PetscBool *ok)
   PetscCall(PetscLogEventBegin(HYLC_MicroFactor, M, 0, 0, 0));
   /* a zero pivot is reported by the factorizations as a failed reason, not an error (the matrix's
      erroriffailure is false): that is the regularization's job; any error is an error */
-  PetscCall(PCSetOperators(M->inner, M->K, M->K));
-  if (!M->cholmod) {
-    PetscCall(PCSetUp(M->inner));
-    PetscCall(PCGetFailedReason(M->inner, &reason));
+  PetscCall(PCSetOperators(M->kkt.inner, M->K, M->K));
+  if (!M->kkt.cholmod) {
+    PetscCall(PCSetUp(M->kkt.inner));
+    PetscCall(PCGetFailedReason(M->kkt.inner, &reason));
   } else {
     /* PETSc 3.18's CHOLMOD interface raises PETSC_ERR_MAT_CH_ZRPVT for a matrix that is not positive
        definite, whatever the error-if-failure flag: that error is a failed factorization here */
     PetscErrorCode ierr;
     PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
-    ierr = PCSetUp(M->inner);
+    ierr = PCSetUp(M->kkt.inner);
     PetscCall(PetscPopErrorHandler());
     if (ierr == PETSC_ERR_MAT_CH_ZRPVT)
       reason = PC_FACTOR_NUMERIC_ZEROPIVOT;
     else {
       PetscCall(ierr);
-      PetscCall(PCGetFailedReason(M->inner, &reason));
+      PetscCall(PCGetFailedReason(M->kkt.inner, &reason));
     }
   }
   *ok = (PetscBool)(reason == PC_NOERROR);
@@ -122,12 +122,12 @@ PetscErrorCode HylcMicroKKTFactor_Private(HylcMicro M, PetscBool *ok)
      curvature, and such steps end in saddle points. By Haynsworth's inertia additivity, with B = M A^T of
      full column rank m and S = B^T K^-1 B, the projected matrix Z^T K Z has #neg(K) + #pos(S) - m
      negative eigenvalues. */
-  M->projNeg     = 0;
+  M->st.projNeg  = 0;
   PetscInt  nneg = 0, nzero = 0;
   PetscBool have = PETSC_FALSE;
-  if (*ok && (!M->par.indefinite || M->adapting)) {
+  if (*ok && (!M->par.indefinite || M->st.adapting)) {
     PetscCall(FactorInertia(M, &have, &nneg, &nzero));
-    if (have && (nzero > 0 || (nneg > 0 && !M->adapting))) {
+    if (have && (nzero > 0 || (nneg > 0 && !M->st.adapting))) {
       *ok = PETSC_FALSE;
       PetscCall(PetscInfo(M, "Newton matrix indefinite (%" PetscInt_FMT " negative, %" PetscInt_FMT " zero pivots) and -micro_factor_indefinite false\n", nneg, nzero));
     }
@@ -135,43 +135,31 @@ PetscErrorCode HylcMicroKKTFactor_Private(HylcMicro M, PetscBool *ok)
   if (*ok) { /* Z = K^-1 M A^T: all m right-hand sides in one MatMatSolve */
     Mat F;
     for (PetscInt i = 0; i < m; i++)
-      for (PetscInt k = 0; k < n; k++) M->Bw[i * n + k] = M->A[i * n + k] * ((k % 4 == 3) ? M->mu : 1.0);
-    PetscCall(PCFactorGetMatrix(M->inner, &F));
-    if (m > 0) PetscCall(MatMatSolve(F, M->Bd, M->Zd));
+      for (PetscInt k = 0; k < n; k++) M->kkt.Bw[i * n + k] = M->kkt.A[i * n + k] * ((k % 4 == 3) ? M->mu : 1.0);
+    PetscCall(PCFactorGetMatrix(M->kkt.inner, &F));
+    if (m > 0) PetscCall(MatMatSolve(F, M->kkt.Bd, M->kkt.Zd));
     for (PetscInt i = 0; i < m; i++)
       for (PetscInt j = 0; j < m; j++) {
         PetscReal s = 0;
-        for (PetscInt k = 0; k < n; k++) s += M->A[i * n + k] * ((k % 4 == 3) ? M->mu : 1.0) * M->Z[j * n + k];
-        M->S[i * m + j] = s;
+        for (PetscInt k = 0; k < n; k++) s += M->kkt.A[i * n + k] * ((k % 4 == 3) ? M->mu : 1.0) * M->kkt.Z[j * n + k];
+        M->kkt.S[i * m + j] = s;
       }
     /* adapting: the inertia on the tangent space of the constraints, from S before HylcDenseInverse()
        overwrites it (its work array) */
     PetscInt npos = 0;
     if (have && nneg > 0) PetscCall(SchurPositive(M, &npos));
-    *ok = (PetscBool)(HylcDenseInverse((int)m, M->S, M->Sinv, 0.0) == 0);
+    *ok = (PetscBool)(HylcDenseInverse((int)m, M->kkt.S, M->kkt.Sinv, 0.0) == 0);
     if (*ok && have && nneg > 0) {
-      M->projNeg = nneg + npos - m;
-      if (M->projNeg > 0) {
+      M->st.projNeg = nneg + npos - m;
+      if (M->st.projNeg > 0) {
         *ok = PETSC_FALSE;
-        PetscCall(PetscInfo(M, "Newton matrix indefinite on the constraints' tangent space (%" PetscInt_FMT " negative eigenvalues; %" PetscInt_FMT " negative pivots of K)\n", M->projNeg, nneg));
+        PetscCall(PetscInfo(M, "Newton matrix indefinite on the constraints' tangent space (%" PetscInt_FMT " negative eigenvalues; %" PetscInt_FMT " negative pivots of K)\n", M->st.projNeg, nneg));
       }
     }
   }
   PetscCall(PetscLogEventEnd(HYLC_MicroFactor, M, 0, 0, 0));
   PetscCall(PetscTime(&t1));
-  M->tFactor += t1 - t0;
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* more regularization: alpha x 10, refactor */
-static PetscErrorCode KKTIncreaseAlpha(HylcMicro M, PetscBool *ok)
-{
-  PetscFunctionBegin;
-  PetscCall(MatShift(M->K, 9 * M->alpha));
-  M->alpha *= 10;
-  M->retries++;
-  PetscCall(PetscInfo(M, "indefinite Newton matrix: alpha x 10 -> %g\n", (double)M->alpha));
-  PetscCall(HylcMicroKKTFactor_Private(M, ok));
+  M->st.tFactor += t1 - t0;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -183,26 +171,10 @@ static PetscErrorCode KKTSetUp(PC pc)
   PetscFunctionBegin;
   PetscCall(PCShellGetContext(pc, &M));
   PetscCall(HylcMicroKKTFactor_Private(M, &ok));
-  if (!ok && M->adapting && M->projNeg > 0 && M->par.alphaSched == HYLC_MICRO_ALPHA_HYBRID) {
-    /* hybrid: negative curvature after the switch, a saddle near: the paper's schedule, whose steps leave
-       saddles along their negative curvature, for the rest of the solve */
-    PetscInt  it;
-    PetscReal apap;
-    PetscCall(SNESGetIterationNumber(M->snes, &it));
-    it += M->itBase;
-    apap        = HylcMicroPaperAlphaHat_Private(M, it) * M->gmax;
-    M->adapting = PETSC_FALSE;
-    M->reverted = PETSC_TRUE;
-    PetscCall(PetscInfo(M, "hybrid schedule: negative curvature at iteration %" PetscInt_FMT ", the paper's schedule from here (alpha %g -> %g)\n", it, (double)M->alpha, (double)PetscMax(M->alpha, apap)));
-    if (apap > M->alpha) {
-      PetscCall(MatShift(M->K, apap - M->alpha));
-      M->alpha = apap;
-    }
-    PetscCall(HylcMicroKKTFactor_Private(M, &ok));
-  }
-  for (PetscInt k = 0; !ok && k < M->par.maxRetries; k++) PetscCall(KKTIncreaseAlpha(M, &ok));
+  if (!ok) PetscCall(HylcMicroRegularizationRevert_Private(M, &ok));
+  for (PetscInt k = 0; !ok && k < M->par.maxRetries; k++) PetscCall(HylcMicroRegularizationIncrease_Private(M, &ok));
   /* no step: the line search ends the solve (status stalled, or nonfinite for a non-finite matrix) */
-  if (!ok) M->factorFailed = PETSC_TRUE;
+  if (!ok) M->st.factorFailed = PETSC_TRUE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -213,20 +185,20 @@ PetscErrorCode HylcMicroKKTSolve_Private(HylcMicro M, Vec b, Vec x)
   PetscScalar   *xa;
 
   PetscFunctionBegin;
-  PetscCall(PCApply(M->inner, b, x));
+  PetscCall(PCApply(M->kkt.inner, b, x));
   PetscCall(VecGetArray(x, &xa));
   for (PetscInt i = 0; i < m; i++) {
-    PetscReal s = M->c[i];
-    for (PetscInt k = 0; k < n; k++) s -= M->A[i * n + k] * ((k % 4 == 3) ? M->mu : 1.0) * PetscRealPart(xa[k]);
-    M->tmp[i] = s;
+    PetscReal s = M->kkt.c[i];
+    for (PetscInt k = 0; k < n; k++) s -= M->kkt.A[i * n + k] * ((k % 4 == 3) ? M->mu : 1.0) * PetscRealPart(xa[k]);
+    M->kkt.tmp[i] = s;
   }
   for (PetscInt i = 0; i < m; i++) {
-    M->wl[i] = 0;
-    for (PetscInt j = 0; j < m; j++) M->wl[i] += M->Sinv[i * m + j] * M->tmp[j];
+    M->kkt.wl[i] = 0;
+    for (PetscInt j = 0; j < m; j++) M->kkt.wl[i] += M->kkt.Sinv[i * m + j] * M->kkt.tmp[j];
   }
   for (PetscInt k = 0; k < n; k++) {
     PetscReal s = 0;
-    for (PetscInt i = 0; i < m; i++) s += M->Z[i * n + k] * M->wl[i];
+    for (PetscInt i = 0; i < m; i++) s += M->kkt.Z[i * n + k] * M->kkt.wl[i];
     xa[k] += s;
   }
   PetscCall(VecRestoreArray(x, &xa));
@@ -241,7 +213,7 @@ static PetscErrorCode KKTApply(PC pc, Vec b, Vec x)
 
   PetscFunctionBegin;
   PetscCall(PCShellGetContext(pc, &M));
-  if (M->factorFailed) {
+  if (M->st.factorFailed) {
     PetscCall(VecSet(x, 0));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
@@ -254,9 +226,9 @@ static PetscErrorCode KKTApply(PC pc, Vec b, Vec x)
     PetscCall(MatMult(M->K, x, Kx));
     PetscCall(VecDot(x, Kx, &curv));
     if ((PetscRealPart(descent) > 0 && PetscRealPart(curv) > 0) || k >= M->par.maxRetries) break;
-    PetscCall(KKTIncreaseAlpha(M, &ok));
+    PetscCall(HylcMicroRegularizationIncrease_Private(M, &ok));
     if (!ok) {
-      M->factorFailed = PETSC_TRUE;
+      M->st.factorFailed = PETSC_TRUE;
       PetscCall(VecSet(x, 0));
       break;
     }
@@ -288,9 +260,9 @@ PetscErrorCode HylcMicroSetUpKKT_Private(HylcMicro M, PC pc)
   char          name[256];
 
   PetscFunctionBegin;
-  PetscCall(PCFactorGetMatSolverType(M->inner, &type));
-  PetscCall(PetscStrcmp(type, MATSOLVERCHOLMOD, &M->cholmod));
-  PetscCall(PetscSNPrintf(name, sizeof(name), "hylc KKT (S22): Schur complement around PCCHOLESKY, solver type %s (-%sfactor_pc_factor_mat_solver_type)", type ? type : "default", ((PetscObject)M)->prefix ? ((PetscObject)M)->prefix : ""));
+  PetscCall(PCFactorGetMatSolverType(M->kkt.inner, &type));
+  PetscCall(PetscStrcmp(type, MATSOLVERCHOLMOD, &M->kkt.cholmod));
+  PetscCall(PetscSNPrintf(name, sizeof(name), "hylc KKT (S22): Schur complement around PCCHOLESKY, solver type %s (-%smicro_factor_pc_factor_mat_solver_type)", type ? type : "default", ((PetscObject)M)->prefix ? ((PetscObject)M)->prefix : ""));
   PetscCall(PCShellSetName(pc, name));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

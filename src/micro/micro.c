@@ -12,6 +12,44 @@ const char *const HylcMicroStatuses[] = {"converged", "iteration_cap", "time_cap
    process raise PETSC_ERR_LIB from inside the SNES function evaluation */
 static PetscInt injectAt = -1, solveCount = 0; /* injectAt: -1 unread, 0 off */
 
+PetscClassId  HYLC_MICRO_CLASSID;
+PetscLogEvent HYLC_MicroSetUp, HYLC_MicroSolve, HYLC_MicroFactor, HYLC_MicroSaddle, HYLC_MicroLineSearch;
+
+static PetscBool HylcMicroPackageInitialized = PETSC_FALSE;
+
+static PetscErrorCode HylcMicroFinalizePackage(void)
+{
+  PetscFunctionBegin;
+  HylcMicroPackageInitialized = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcMicroInitializePackage - Registers the class id HylcMicro and its log events (MICRO_SetUp, MICRO_Solve, MICRO_Factor, MICRO_Saddle, MICRO_LineSearch). Called by
+  HylcMicroCreate() and by HylcInitializePackage(); idempotent.
+
+  Not collective
+
+  Level: developer
+
+.seealso: HylcInitializePackage()
+@*/
+PetscErrorCode HylcMicroInitializePackage(void)
+{
+  PetscFunctionBegin;
+  if (HylcMicroPackageInitialized) PetscFunctionReturn(PETSC_SUCCESS);
+  HylcMicroPackageInitialized = PETSC_TRUE;
+  PetscCall(HylcSysInitializePackage()); /* the default ordering of the factorization, metisnd */
+  PetscCall(PetscClassIdRegister("HylcMicro", &HYLC_MICRO_CLASSID));
+  PetscCall(PetscLogEventRegister("MICRO_SetUp", HYLC_MICRO_CLASSID, &HYLC_MicroSetUp));
+  PetscCall(PetscLogEventRegister("MICRO_Solve", HYLC_MICRO_CLASSID, &HYLC_MicroSolve));
+  PetscCall(PetscLogEventRegister("MICRO_Factor", HYLC_MICRO_CLASSID, &HYLC_MicroFactor));
+  PetscCall(PetscLogEventRegister("MICRO_Saddle", HYLC_MICRO_CLASSID, &HYLC_MicroSaddle));
+  PetscCall(PetscLogEventRegister("MICRO_LineSearch", HYLC_MICRO_CLASSID, &HYLC_MicroLineSearch));
+  PetscCall(PetscRegisterFinalize(HylcMicroFinalizePackage));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static void ParamsDefault(HylcMicroParams *p)
 {
   p->alphaStart    = 5000;
@@ -48,8 +86,8 @@ static void ParamsDefault(HylcMicroParams *p)
 }
 
 /*@C
-  HylcMicroCreate - Creates a microscale solver with the default parameters and the options prefix
-  "micro_". Its sub-objects, the periodic tile (HylcMicroGetPeriodic()), the SNES (HylcMicroGetSNES())
+  HylcMicroCreate - Creates a microscale solver with the default parameters and no options prefix (its
+  options are -micro_*). Its sub-objects, the periodic tile (HylcMicroGetPeriodic()), the SNES (HylcMicroGetSNES())
   and the factorization PC (HylcMicroGetFactorPC()), are created on first use. Not collective (each rank
   solves its samples alone; use PETSC_COMM_SELF).
 
@@ -69,11 +107,10 @@ PetscErrorCode HylcMicroCreate(MPI_Comm comm, HylcMicro *micro)
 
   PetscFunctionBegin;
   PetscValidPointer(micro, 2);
-  PetscCall(HylcInitializePackage());
+  PetscCall(HylcMicroInitializePackage());
   PetscCall(PetscHeaderCreate(M, HYLC_MICRO_CLASSID, "HylcMicro", "Microscale Newton solver", "Micro", comm, HylcMicroDestroy, HylcMicroView));
   ParamsDefault(&M->par);
   PetscCall(PetscObjectChangeTypeName((PetscObject)M, "regularized_newton"));
-  PetscCall(PetscObjectSetOptionsPrefix((PetscObject)M, "micro_"));
   *micro = M;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -91,7 +128,7 @@ static PetscErrorCode FreeSolver(HylcMicro M)
   PetscCall(PetscFree(M->uinit));
   M->nuinit   = 0;
   M->haveInit = PETSC_FALSE;
-  if (M->inner) PetscCall(PCReset(M->inner));
+  if (M->kkt.inner) PetscCall(PCReset(M->kkt.inner));
   PetscCall(HylcMicroDestroyKKT_Private(M));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -117,7 +154,7 @@ PetscErrorCode HylcMicroDestroy(HylcMicro *micro)
   }
   PetscCall(FreeSolver(*micro));
   PetscCall(SNESDestroy(&(*micro)->snes));
-  PetscCall(PCDestroy(&(*micro)->inner));
+  PetscCall(PCDestroy(&(*micro)->kkt.inner));
   PetscCall(HylcPeriodicDestroy(&(*micro)->P));
   PetscCall(HylcPatternDestroy(&(*micro)->pat));
   PetscCall(PetscFree((*micro)->hist));
@@ -126,13 +163,14 @@ PetscErrorCode HylcMicroDestroy(HylcMicro *micro)
 }
 
 /*@C
-  HylcMicroSetOptionsPrefix - Sets the prefix of the solver's options (default "micro_"); its SNES has
-  the same prefix and the factorization PC the prefix followed by "factor_" (the periodic tile keeps its
-  own: -periodic_*, -macro_*). Not collective.
+  HylcMicroSetOptionsPrefix - Sets the prefix of the solver's options (default none: -micro_*, as every
+  stage spells its keys with its module name) and of its sub-objects: the periodic tile (-<prefix>periodic_*,
+  -<prefix>macro_*), the SNES (-<prefix>micro_snes_*, -<prefix>micro_ksp_*) and the factorization PC
+  (-<prefix>micro_factor_pc_*). Not collective.
 
   Input Parameters:
 + M      - the solver
-- prefix - the prefix (without the leading dash)
+- prefix - the prefix (without the leading dash; NULL: none)
 
   Level: intermediate
 
@@ -143,18 +181,22 @@ PetscErrorCode HylcMicroSetOptionsPrefix(HylcMicro M, const char prefix[])
   PetscFunctionBegin;
   PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
   PetscCall(PetscObjectSetOptionsPrefix((PetscObject)M, prefix));
-  if (M->snes) PetscCall(SNESSetOptionsPrefix(M->snes, prefix));
-  if (M->inner) {
-    PetscCall(PCSetOptionsPrefix(M->inner, prefix));
-    PetscCall(PCAppendOptionsPrefix(M->inner, "factor_"));
+  if (M->snes) {
+    PetscCall(SNESSetOptionsPrefix(M->snes, prefix));
+    PetscCall(SNESAppendOptionsPrefix(M->snes, "micro_"));
   }
+  if (M->kkt.inner) {
+    PetscCall(PCSetOptionsPrefix(M->kkt.inner, prefix));
+    PetscCall(PCAppendOptionsPrefix(M->kkt.inner, "micro_factor_"));
+  }
+  if (M->P) PetscCall(HylcPeriodicSetOptionsPrefix(M->P, prefix));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /*@C
   HylcMicroGetFactorPC - Gets the PCCHOLESKY that factors the Newton matrix K inside the KKT
   preconditioner, creating it on first use (solver type hylc, ordering metisnd, options prefix
-  "<prefix>factor_", e.g. -micro_factor_pc_factor_mat_solver_type). Not collective.
+  "<prefix>micro_factor_", e.g. -micro_factor_pc_factor_mat_solver_type). Not collective.
 
   Input Parameter:
 . M - the solver
@@ -171,16 +213,17 @@ PetscErrorCode HylcMicroGetFactorPC(HylcMicro M, PC *pc)
   PetscFunctionBegin;
   PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
   PetscValidPointer(pc, 2);
-  if (!M->inner) {
-    PetscCall(PCCreate(PETSC_COMM_SELF, &M->inner));
-    PetscCall(PetscObjectIncrementTabLevel((PetscObject)M->inner, (PetscObject)M, 1));
-    PetscCall(PCSetType(M->inner, PCCHOLESKY));
-    PetscCall(PCFactorSetMatOrderingType(M->inner, HylcDefaultOrdering()));
-    PetscCall(PCFactorSetMatSolverType(M->inner, MATSOLVERHYLC));
-    PetscCall(PCSetOptionsPrefix(M->inner, ((PetscObject)M)->prefix));
-    PetscCall(PCAppendOptionsPrefix(M->inner, "factor_"));
+  if (!M->kkt.inner) {
+    PetscCall(HylcCholRegisterSolverType()); /* the default solver type, linalg's */
+    PetscCall(PCCreate(PETSC_COMM_SELF, &M->kkt.inner));
+    PetscCall(PetscObjectIncrementTabLevel((PetscObject)M->kkt.inner, (PetscObject)M, 1));
+    PetscCall(PCSetType(M->kkt.inner, PCCHOLESKY));
+    PetscCall(PCFactorSetMatOrderingType(M->kkt.inner, HylcDefaultOrdering()));
+    PetscCall(PCFactorSetMatSolverType(M->kkt.inner, MATSOLVERHYLC));
+    PetscCall(PCSetOptionsPrefix(M->kkt.inner, ((PetscObject)M)->prefix));
+    PetscCall(PCAppendOptionsPrefix(M->kkt.inner, "micro_factor_"));
   }
-  *pc = M->inner;
+  *pc = M->kkt.inner;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -189,7 +232,7 @@ PetscErrorCode HylcMicroGetFactorPC(HylcMicro M, PC *pc)
   defaults: type newtonls, the energy as objective, the residual M g_y, the projected-gradient convergence
   test, at most 2000 iterations, the shell line search (step limit and backtracking), a KSPPREONLY whose PC
   is the KKT PCSHELL around the factorization PC (HylcMicroGetFactorPC()). Its options prefix is the
-  solver's (-micro_snes_*, -micro_ksp_*); HylcMicroSetFromOptions() calls SNESSetFromOptions() on it, so
+  solver's followed by micro_ (-micro_snes_*, -micro_ksp_*); HylcMicroSetFromOptions() calls SNESSetFromOptions() on it, so
   options override these defaults. The Jacobian and the vectors are given at HylcMicroSetUp(); a new
   pattern resets it (SNESReset()). Not collective.
 
@@ -275,6 +318,17 @@ PetscErrorCode HylcMicroSetUp(HylcMicro M)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* the state of one solve at its start: nothing counted, no energy yet, converged until the method says
+   otherwise (the one place the per-solve state is reset; include/hylc/private/microimpl.h) */
+PetscErrorCode HylcMicroResetSolveState_Private(HylcMicro M)
+{
+  PetscFunctionBegin;
+  PetscCall(PetscMemzero(&M->st, sizeof(M->st)));
+  M->st.status = HYLC_MICRO_CONVERGED;
+  M->st.E0     = PETSC_INFINITY;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* one solve of HylcMicroSolve() with the current parameters: from the cold guess, or from the state of
    HylcMicroSetInitialState() if one is pending */
 static PetscErrorCode SolveOnce(HylcMicro M, const PetscReal z[6], HylcMicroResult *res)
@@ -290,11 +344,12 @@ static PetscErrorCode SolveOnce(HylcMicro M, const PetscReal z[6], HylcMicroResu
   PetscFunctionBegin;
   PetscCall(PetscMemzero(res, sizeof(*res)));
   for (int k = 0; k < 6; k++) res->z[k] = z[k];
-  PetscCall(PetscTime(&M->tStart));
+  PetscCall(HylcMicroResetSolveState_Private(M));
+  PetscCall(PetscTime(&M->st.tStart));
   PetscCall(HylcPeriodicSetStrain(M->P, z));
   PetscCall(HylcPeriodicSetUp(M->P));
   PetscCall(HylcPeriodicGetConstants(M->P, &c));
-  PetscCall(HylcPeriodicGetConstraints(M->P, &m, &M->A, &M->dL, &M->AAtinv));
+  PetscCall(HylcPeriodicGetConstraints(M->P, &m, &M->kkt.A, &M->kkt.dL, &M->kkt.AAtinv));
   if (M->setupcalled && m != M->m) PetscCall(HylcMicroResizeKKT_Private(M, m)); /* the number of independent constraint rows may depend on the strain */
   M->r  = c.r;
   M->ks = c.ks;
@@ -309,31 +364,20 @@ static PetscErrorCode SolveOnce(HylcMicro M, const PetscReal z[6], HylcMicroResu
   /* initial guess: y^ = M^-1 y0, or, continued, y0 + u~ of the state given by HylcMicroSetInitialState() with
      the reference frames transported from the rest frames of this strain to it */
   PetscCall(HylcPeriodicGetInitialState(M->P, M->yw));
-  M->continued = PETSC_FALSE;
   if (M->haveInit) {
     M->haveInit = PETSC_FALSE;
     PetscCheck(M->nuinit == M->ny, PETSC_COMM_SELF, PETSC_ERR_ARG_SIZ, "HylcMicroSetInitialState: the state has %" PetscInt_FMT " unknowns, the tile %" PetscInt_FMT, M->nuinit, M->ny);
-    PetscCall(HylcMicroProjectedGradientNorm_Private(M, M->yw, &M->z0cold)); /* the cold start's |z0| */
+    PetscCall(HylcMicroProjectedGradientNorm_Private(M, M->yw, &M->st.z0cold)); /* the cold start's |z0| */
     PetscCall(HylcPeriodicFluctuationFromLocal(M->P, M->uinit, M->yw));
     PetscCall(HylcPeriodicSetState(M->P, M->yw));
     PetscCall(HylcPeriodicUpdateFrames(M->P));
-    M->continued = PETSC_TRUE;
+    M->st.continued = PETSC_TRUE;
   }
   PetscCall(VecGetArray(M->X, &x));
   for (PetscInt i = 0; i < M->ny; i++) x[i] = (i % 4 == 3) ? M->yw[i] / M->mu : M->yw[i];
   PetscCall(VecRestoreArray(M->X, &x));
-  M->haveH  = PETSC_FALSE;
-  M->stalls = M->stallsTotal = M->retries = 0;
-  M->statusSet = M->factorFailed = M->resolved = PETSC_FALSE;
-  M->status                                    = HYLC_MICRO_CONVERGED;
-  M->tFactor = M->tLineSearch = 0;
-  M->nhist                    = 0;
-  M->E0                       = PETSC_INFINITY;
   /* an error inside the solve (a bug, no memory, a bad option) is an error: only the outcomes of the
      method are statuses (a failed factorization and a degenerate trial state are outcomes, handled above) */
-  M->itBase  = 0;
-  M->restart = PETSC_FALSE;
-  M->escapes = 0;
   PetscCall(SNESSolve(M->snes, NULL, M->X));
   PetscCall(SNESGetConvergedReason(M->snes, &reason));
   PetscCall(SNESGetIterationNumber(M->snes, &its));
@@ -343,26 +387,26 @@ static PetscErrorCode SolveOnce(HylcMicro M, const PetscReal z[6], HylcMicroResu
   while (reason > 0 && M->par.saddleTest) {
     PetscInt  neg;
     PetscBool escaped;
-    PetscCall(HylcMicroSaddle_Private(M, (PetscBool)(M->escapes < M->par.saddleMax), &neg, &escaped));
+    PetscCall(HylcMicroSaddle_Private(M, (PetscBool)(M->st.escapes < M->par.saddleMax), &neg, &escaped));
     res->negcurv = neg;
     if (!escaped) break;
-    M->escapes++;
-    M->itBase += its;
-    M->restart  = PETSC_TRUE;
-    M->stalls   = 0;
-    M->resolved = PETSC_FALSE;
+    M->st.escapes++;
+    M->st.itBase += its;
+    M->st.restart  = PETSC_TRUE;
+    M->st.stalls   = 0;
+    M->st.resolved = PETSC_FALSE;
     PetscCall(SNESSolve(M->snes, NULL, M->X));
     PetscCall(SNESGetConvergedReason(M->snes, &reason));
     PetscCall(SNESGetIterationNumber(M->snes, &its));
   }
   if (reason <= 0) res->negcurv = -1; /* not converged after an escape: not tested */
-  its += M->itBase;
-  M->restart   = PETSC_FALSE;
-  res->escapes = M->escapes;
+  its += M->st.itBase;
+  M->st.restart = PETSC_FALSE;
+  res->escapes  = M->st.escapes;
   if (reason > 0)
     res->status = HYLC_MICRO_CONVERGED;
-  else if (M->statusSet)
-    res->status = M->status;
+  else if (M->st.statusSet)
+    res->status = M->st.status;
   else if (reason == SNES_DIVERGED_MAX_IT)
     res->status = HYLC_MICRO_MAX_IT;
   else if (reason == SNES_DIVERGED_FNORM_NAN || reason == SNES_DIVERGED_FUNCTION_DOMAIN)
@@ -375,17 +419,17 @@ static PetscErrorCode SolveOnce(HylcMicro M, const PetscReal z[6], HylcMicroResu
   PetscCall(HylcPeriodicGetArea(M->P, &area));
   res->psi        = res->energy / area;
   res->iterations = its;
-  res->retries    = M->retries;
-  res->stalls     = M->stallsTotal;
-  res->residual   = M->lastz;
-  res->cresidual  = M->lastc;
+  res->retries    = M->st.retries;
+  res->stalls     = M->st.stallsTotal;
+  res->residual   = M->st.lastz;
+  res->cresidual  = M->st.lastc;
   PetscCall(PetscTime(&t1));
-  res->time = t1 - M->tStart;
+  res->time = t1 - M->st.tStart;
   PetscCall(HylcPeriodicGetTimes(M->P, &tEval, &tContact, &tAssemble));
   res->tAssembly   = tEval - tContact;
   res->tContact    = tContact;
-  res->tFactor     = M->tFactor;
-  res->tLineSearch = M->tLineSearch;
+  res->tFactor     = M->st.tFactor;
+  res->tLineSearch = M->st.tLineSearch;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -426,14 +470,14 @@ PetscErrorCode HylcMicroSolve(HylcMicro M, const PetscReal z[6], HylcMicroResult
   M->injectAt = injectAt;
   PetscCall(PetscLogEventBegin(HYLC_MicroSolve, M, 0, 0, 0));
   PetscCall(SolveOnce(M, z, res));
-  if (res->status != HYLC_MICRO_CONVERGED && M->par.alphaFallback && M->par.alphaSched != HYLC_MICRO_ALPHA_PAPER) {
+  if (HylcMicroRegularizationFallback_Private(M, res->status)) {
     /* the adaptive or hybrid schedule failed: the same start with the paper schedule (its steps are shorter
        while the gradient is large), the sums of both solves' counts and times reported */
     const HylcMicroResult first = *res;
     const PetscInt        sched = M->par.alphaSched;
     PetscErrorCode        ierr;
     PetscCall(PetscInfo(M, "the %s schedule ended %s after %" PetscInt_FMT " iterations: solved again from the same start with the paper schedule\n", HylcMicroAlphaSchedules[sched], HylcMicroStatuses[first.status], first.iterations));
-    M->haveInit       = M->continued; /* the state of HylcMicroSetInitialState() is kept in uinit */
+    M->haveInit       = M->st.continued; /* the state of HylcMicroSetInitialState() is kept in uinit */
     M->par.alphaSched = HYLC_MICRO_ALPHA_PAPER;
     ierr              = SolveOnce(M, z, res);
     M->par.alphaSched = sched;
@@ -453,8 +497,8 @@ PetscErrorCode HylcMicroSolve(HylcMicro M, const PetscReal z[6], HylcMicroResult
 }
 
 /*@C
-  HylcMicroGetPeriodic - Gets the periodic tile of the solver, creating it on first use (options
-  -periodic_*, -macro_*, read by HylcMicroSetFromOptions()); HylcMicroSetPattern() gives it the pattern.
+  HylcMicroGetPeriodic - Gets the periodic tile of the solver, creating it on first use with the solver's
+  prefix (options -<prefix>periodic_*, -<prefix>macro_*, read by HylcMicroSetFromOptions()); HylcMicroSetPattern() gives it the pattern.
   Not collective.
 
   Input Parameter:
@@ -472,7 +516,10 @@ PetscErrorCode HylcMicroGetPeriodic(HylcMicro M, HylcPeriodic *P)
   PetscFunctionBegin;
   PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
   PetscValidPointer(P, 2);
-  if (!M->P) PetscCall(HylcPeriodicCreate(PETSC_COMM_SELF, &M->P));
+  if (!M->P) {
+    PetscCall(HylcPeriodicCreate(PETSC_COMM_SELF, &M->P));
+    PetscCall(HylcPeriodicSetOptionsPrefix(M->P, ((PetscObject)M)->prefix));
+  }
   *P = M->P;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -677,7 +724,7 @@ PetscErrorCode HylcMicroGetContinued(HylcMicro M, PetscBool *continued)
   PetscFunctionBegin;
   PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
   PetscValidBoolPointer(continued, 2);
-  *continued = M->continued;
+  *continued = M->st.continued;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -699,7 +746,7 @@ PetscErrorCode HylcMicroGetEnergyHistory(HylcMicro M, PetscInt *n, const PetscRe
 {
   PetscFunctionBegin;
   PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
-  *n = M->nhist;
+  *n = M->st.nhist;
   *E = M->hist;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -33,7 +33,7 @@ PetscErrorCode HylcMicroSetRegularization(HylcMicro M, PetscReal start, PetscRea
   if (end != (PetscReal)PETSC_DEFAULT) M->par.alphaEnd = end;
   if (its != PETSC_DEFAULT) M->par.alphaIts = its;
   if (retries != PETSC_DEFAULT) M->par.maxRetries = retries;
-  PetscCheck(M->par.alphaStart > 0 && M->par.alphaEnd > 0 && M->par.alphaIts >= 1 && M->par.maxRetries >= 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%salpha_start %g, -%salpha_end %g must be positive, -%salpha_its %" PetscInt_FMT " at least 1 and -%salpha_retries %" PetscInt_FMT " non-negative", HylcMicroPrefix_Private(M), (double)M->par.alphaStart, HylcMicroPrefix_Private(M), (double)M->par.alphaEnd, HylcMicroPrefix_Private(M), M->par.alphaIts, HylcMicroPrefix_Private(M), M->par.maxRetries);
+  PetscCheck(M->par.alphaStart > 0 && M->par.alphaEnd > 0 && M->par.alphaIts >= 1 && M->par.maxRetries >= 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_alpha_start %g, -%smicro_alpha_end %g must be positive, -%smicro_alpha_its %" PetscInt_FMT " at least 1 and -%smicro_alpha_retries %" PetscInt_FMT " non-negative", HylcMicroPrefix_Private(M), (double)M->par.alphaStart, HylcMicroPrefix_Private(M), (double)M->par.alphaEnd, HylcMicroPrefix_Private(M), M->par.alphaIts, HylcMicroPrefix_Private(M), M->par.maxRetries);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -74,13 +74,13 @@ PetscErrorCode HylcMicroSetRegularizationSchedule(HylcMicro M, HylcMicroAlphaSch
 {
   PetscFunctionBegin;
   PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
-  PetscCheck(schedule == HYLC_MICRO_ALPHA_PAPER || schedule == HYLC_MICRO_ALPHA_ADAPTIVE || schedule == HYLC_MICRO_ALPHA_HYBRID, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%salpha_schedule %d: must be paper, adaptive or hybrid", HylcMicroPrefix_Private(M), (int)schedule);
+  PetscCheck(schedule == HYLC_MICRO_ALPHA_PAPER || schedule == HYLC_MICRO_ALPHA_ADAPTIVE || schedule == HYLC_MICRO_ALPHA_HYBRID, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_alpha_schedule %d: must be paper, adaptive or hybrid", HylcMicroPrefix_Private(M), (int)schedule);
   M->par.alphaSched = schedule;
   if (factor != (PetscReal)PETSC_DEFAULT) M->par.alphaFact = factor;
   if (min != (PetscReal)PETSC_DEFAULT) M->par.alphaMin = min;
   if (max != (PetscReal)PETSC_DEFAULT) M->par.alphaMax = max;
-  PetscCheck(M->par.alphaFact > 1 && PetscIsNormalReal(M->par.alphaFact), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%salpha_factor %g: must be finite and greater than 1", HylcMicroPrefix_Private(M), (double)M->par.alphaFact);
-  PetscCheck(M->par.alphaMin > 0 && M->par.alphaMax >= M->par.alphaMin && PetscIsNormalReal(M->par.alphaMax), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%salpha_min %g must be positive and -%salpha_max %g finite and at least -%salpha_min", HylcMicroPrefix_Private(M), (double)M->par.alphaMin, HylcMicroPrefix_Private(M), (double)M->par.alphaMax, HylcMicroPrefix_Private(M));
+  PetscCheck(M->par.alphaFact > 1 && PetscIsNormalReal(M->par.alphaFact), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_alpha_factor %g: must be finite and greater than 1", HylcMicroPrefix_Private(M), (double)M->par.alphaFact);
+  PetscCheck(M->par.alphaMin > 0 && M->par.alphaMax >= M->par.alphaMin && PetscIsNormalReal(M->par.alphaMax), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_alpha_min %g must be positive and -%smicro_alpha_max %g finite and at least -%smicro_alpha_min", HylcMicroPrefix_Private(M), (double)M->par.alphaMin, HylcMicroPrefix_Private(M), (double)M->par.alphaMax, HylcMicroPrefix_Private(M));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -107,7 +107,7 @@ PetscErrorCode HylcMicroSetRegularizationSwitch(HylcMicro M, PetscReal sw)
   PetscFunctionBegin;
   PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
   if (sw != (PetscReal)PETSC_DEFAULT) M->par.alphaSwitch = sw;
-  PetscCheck(M->par.alphaSwitch > 0 && M->par.alphaSwitch <= 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%salpha_switch %g: must be in (0, 1]", HylcMicroPrefix_Private(M), (double)M->par.alphaSwitch);
+  PetscCheck(M->par.alphaSwitch > 0 && M->par.alphaSwitch <= 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_alpha_switch %g: must be in (0, 1]", HylcMicroPrefix_Private(M), (double)M->par.alphaSwitch);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -157,7 +157,7 @@ PetscErrorCode HylcMicroSetTwistScale(HylcMicro M, PetscReal mu)
 {
   PetscFunctionBegin;
   PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
-  PetscCheck(mu >= 0 && PetscIsNormalReal(mu + 1), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%stwist_scale %g: must be finite and non-negative (0: 1/r)", HylcMicroPrefix_Private(M), (double)mu);
+  PetscCheck(mu >= 0 && PetscIsNormalReal(mu + 1), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_twist_scale %g: must be finite and non-negative (0: 1/r)", HylcMicroPrefix_Private(M), (double)mu);
   M->par.twistScale = mu;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -185,7 +185,7 @@ PetscErrorCode HylcMicroSetStepLimit(HylcMicro M, PetscReal p0, PetscReal p1)
   PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
   if (p0 != (PetscReal)PETSC_DEFAULT) M->par.stepP0 = p0;
   if (p1 != (PetscReal)PETSC_DEFAULT) M->par.stepP1 = p1;
-  PetscCheck(M->par.stepP0 > 0 && M->par.stepP1 >= 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%sstep_p0 %g must be positive, -%sstep_p1 %g non-negative", HylcMicroPrefix_Private(M), (double)M->par.stepP0, HylcMicroPrefix_Private(M), (double)M->par.stepP1);
+  PetscCheck(M->par.stepP0 > 0 && M->par.stepP1 >= 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_step_p0 %g must be positive, -%smicro_step_p1 %g non-negative", HylcMicroPrefix_Private(M), (double)M->par.stepP0, HylcMicroPrefix_Private(M), (double)M->par.stepP1);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -212,7 +212,7 @@ PetscErrorCode HylcMicroSetStepClearance(HylcMicro M, PetscReal rho)
   PetscFunctionBegin;
   PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
   if (rho != (PetscReal)PETSC_DEFAULT) M->par.stepClear = rho;
-  PetscCheck(M->par.stepClear >= 0 && M->par.stepClear < 0.5, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%sstep_clearance %g: must be in [0, 0.5)", HylcMicroPrefix_Private(M), (double)M->par.stepClear);
+  PetscCheck(M->par.stepClear >= 0 && M->par.stepClear < 0.5, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_step_clearance %g: must be in [0, 0.5)", HylcMicroPrefix_Private(M), (double)M->par.stepClear);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -243,7 +243,7 @@ PetscErrorCode HylcMicroSetLineSearch(HylcMicro M, PetscReal factor, PetscInt tr
   if (factor != (PetscReal)PETSC_DEFAULT) M->par.lsFactor = factor;
   if (trials != PETSC_DEFAULT) M->par.lsMax = trials;
   if (maxStalls != PETSC_DEFAULT) M->par.maxStalls = maxStalls;
-  PetscCheck(M->par.lsFactor > 0 && M->par.lsFactor < 1 && M->par.lsMax >= 1 && M->par.maxStalls >= 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%sls_factor %g must be in (0, 1), -%sls_max %" PetscInt_FMT " and -%smax_stalls %" PetscInt_FMT " at least 1", HylcMicroPrefix_Private(M), (double)M->par.lsFactor, HylcMicroPrefix_Private(M), M->par.lsMax, HylcMicroPrefix_Private(M), M->par.maxStalls);
+  PetscCheck(M->par.lsFactor > 0 && M->par.lsFactor < 1 && M->par.lsMax >= 1 && M->par.maxStalls >= 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_ls_factor %g must be in (0, 1), -%smicro_ls_max %" PetscInt_FMT " and -%smicro_max_stalls %" PetscInt_FMT " at least 1", HylcMicroPrefix_Private(M), (double)M->par.lsFactor, HylcMicroPrefix_Private(M), M->par.lsMax, HylcMicroPrefix_Private(M), M->par.maxStalls);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -276,7 +276,7 @@ PetscErrorCode HylcMicroSetTolerances(HylcMicro M, PetscReal rtol, PetscReal ato
   if (atol != (PetscReal)PETSC_DEFAULT) M->par.atol = atol;
   if (ctol != (PetscReal)PETSC_DEFAULT) M->par.ctol = ctol;
   if (maxTime != (PetscReal)PETSC_DEFAULT) M->par.maxTime = maxTime;
-  PetscCheck(M->par.rtol > 0 && M->par.ctol > 0 && M->par.maxTime > 0 && M->par.atol >= 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%srtol %g, -%sctol %g, -%smax_time %g must be positive, -%satol %g non-negative", HylcMicroPrefix_Private(M), (double)M->par.rtol, HylcMicroPrefix_Private(M), (double)M->par.ctol, HylcMicroPrefix_Private(M), (double)M->par.maxTime, HylcMicroPrefix_Private(M), (double)M->par.atol);
+  PetscCheck(M->par.rtol > 0 && M->par.ctol > 0 && M->par.maxTime > 0 && M->par.atol >= 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_rtol %g, -%smicro_ctol %g, -%smicro_max_time %g must be positive, -%smicro_atol %g non-negative", HylcMicroPrefix_Private(M), (double)M->par.rtol, HylcMicroPrefix_Private(M), (double)M->par.ctol, HylcMicroPrefix_Private(M), (double)M->par.maxTime, HylcMicroPrefix_Private(M), (double)M->par.atol);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -341,7 +341,7 @@ PetscErrorCode HylcMicroSetSaddleEscape(HylcMicro M, PetscBool test, PetscInt ma
   PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
   if (maxEscapes != PETSC_DEFAULT) M->par.saddleMax = maxEscapes;
   if (tol != (PetscReal)PETSC_DEFAULT) M->par.saddleTol = tol;
-  PetscCheck(M->par.saddleMax >= 0 && M->par.saddleTol > 0 && M->par.saddleTol < 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%ssaddle_escapes %" PetscInt_FMT " must be non-negative, -%ssaddle_tol %g in (0, 1)", HylcMicroPrefix_Private(M), M->par.saddleMax, HylcMicroPrefix_Private(M), (double)M->par.saddleTol);
+  PetscCheck(M->par.saddleMax >= 0 && M->par.saddleTol > 0 && M->par.saddleTol < 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_saddle_escapes %" PetscInt_FMT " must be non-negative, -%smicro_saddle_tol %g in (0, 1)", HylcMicroPrefix_Private(M), M->par.saddleMax, HylcMicroPrefix_Private(M), (double)M->par.saddleTol);
   M->par.saddleTest = (PetscBool)(test || M->par.saddleMax > 0);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -383,22 +383,22 @@ PetscErrorCode HylcMicroSetUniaxial(HylcMicro M, HylcMicroUniaxialGradient gradi
   PetscFunctionBegin;
   PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
   p = HylcMicroPrefix_Private(M);
-  PetscCheck(gradient == HYLC_MICRO_UNIAXIAL_ENVELOPE || gradient == HYLC_MICRO_UNIAXIAL_FD, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%suniaxial_gradient %d: must be envelope or fd", p, (int)gradient);
+  PetscCheck(gradient == HYLC_MICRO_UNIAXIAL_ENVELOPE || gradient == HYLC_MICRO_UNIAXIAL_FD, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_uniaxial_gradient %d: must be envelope or fd", p, (int)gradient);
   M->par.uniGrad = gradient;
   if (xtol != (PetscReal)PETSC_DEFAULT) {
-    PetscCheck(xtol > 0 && xtol < 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%suniaxial_xtol %g: must be in (0, 1)", p, (double)xtol);
+    PetscCheck(xtol > 0 && xtol < 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_uniaxial_xtol %g: must be in (0, 1)", p, (double)xtol);
     M->par.uniXtol = xtol;
   }
   if (maxIt != PETSC_DEFAULT) {
-    PetscCheck(maxIt >= 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%suniaxial_max_it %" PetscInt_FMT ": must be at least 1", p, maxIt);
+    PetscCheck(maxIt >= 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_uniaxial_max_it %" PetscInt_FMT ": must be at least 1", p, maxIt);
     M->par.uniMaxIt = maxIt;
   }
   if (h != (PetscReal)PETSC_DEFAULT) {
-    PetscCheck(h > 0 && h <= 0.01, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%suniaxial_fd_step %g: must be in (0, 0.01]", p, (double)h);
+    PetscCheck(h > 0 && h <= 0.01, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_uniaxial_fd_step %g: must be in (0, 0.01]", p, (double)h);
     M->par.uniH = h;
   }
   if (maxStep != (PetscReal)PETSC_DEFAULT) {
-    PetscCheck(maxStep > 0 && maxStep <= 0.5, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%suniaxial_max_step %g: must be in (0, 0.5]", p, (double)maxStep);
+    PetscCheck(maxStep > 0 && maxStep <= 0.5, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_uniaxial_max_step %g: must be in (0, 0.5]", p, (double)maxStep);
     M->par.uniMaxStep = maxStep;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -431,24 +431,24 @@ PetscErrorCode HylcMicroSetUniaxialTolerances(HylcMicro M, PetscReal rtol, Petsc
   PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
   p = HylcMicroPrefix_Private(M);
   if (rtol != (PetscReal)PETSC_DEFAULT) {
-    PetscCheck(rtol > 0 && rtol < 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%suniaxial_rtol %g: must be in (0, 1)", p, (double)rtol);
+    PetscCheck(rtol > 0 && rtol < 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_uniaxial_rtol %g: must be in (0, 1)", p, (double)rtol);
     M->par.uniRtol = rtol;
   }
   if (gtol != (PetscReal)PETSC_DEFAULT) {
-    PetscCheck(gtol >= 0 && gtol < 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%suniaxial_gtol %g: must be in [0, 1)", p, (double)gtol);
+    PetscCheck(gtol >= 0 && gtol < 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_uniaxial_gtol %g: must be in [0, 1)", p, (double)gtol);
     M->par.uniGtol = gtol;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /*@C
-  HylcMicroSetFromOptions - Reads the options of the Newton solver (prefix -micro_ by default) and, as
-  SLEPc's EPSSetFromOptions() calls STSetFromOptions(), those of its sub-objects, created on first use
-  with their defaults: the periodic tile (HylcMicroGetPeriodic(): -periodic_*, -macro_*), the
-  factorization PC (HylcMicroGetFactorPC(), prefix micro_factor_: -micro_factor_pc_factor_mat_solver_type
-  hylc|petsc|cholmod|mumps, -micro_factor_pc_factor_mat_ordering_type, ...) and the SNES with its KSP
-  (HylcMicroGetSNES(), prefix micro_: -micro_snes_max_it (iteration cap, default 2000),
-  -micro_snes_monitor, ...). It needs no pattern and builds nothing. Not collective.
+  HylcMicroSetFromOptions - Reads the options of the Newton solver (-micro_*, after the solver's prefix if
+  it has one) and, as SLEPc's EPSSetFromOptions() calls STSetFromOptions(), those of its sub-objects,
+  created on first use with their defaults: the periodic tile (HylcMicroGetPeriodic(): -periodic_*,
+  -macro_*), the factorization PC (HylcMicroGetFactorPC(), prefix micro_factor_:
+  -micro_factor_pc_factor_mat_solver_type hylc|petsc|cholmod|mumps, -micro_factor_pc_factor_mat_ordering_type,
+  ...) and the SNES with its KSP (HylcMicroGetSNES(), prefix micro_: -micro_snes_max_it (iteration cap,
+  default 2000), -micro_snes_monitor, ...). It needs no pattern and builds nothing. Not collective.
 
   Input Parameter:
 . M - the solver
@@ -488,50 +488,50 @@ PetscErrorCode HylcMicroSetFromOptions(HylcMicro M)
 
   PetscFunctionBegin;
   PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
-  PetscCall(PetscOptionsHasName(((PetscObject)M)->options, ((PetscObject)M)->prefix, "-factor_type", &flg));
-  PetscCheck(!flg, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%sfactor_type was removed: choose the factorization with -%sfactor_pc_factor_mat_solver_type hylc|petsc|cholmod|mumps (hylc is the default; petsc is the former -%sfactor_type petsc)", HylcMicroPrefix_Private(M), HylcMicroPrefix_Private(M), HylcMicroPrefix_Private(M));
+  PetscCall(PetscOptionsHasName(((PetscObject)M)->options, ((PetscObject)M)->prefix, "-micro_factor_type", &flg));
+  PetscCheck(!flg, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_factor_type was removed: choose the factorization with -%smicro_factor_pc_factor_mat_solver_type hylc|petsc|cholmod|mumps (hylc is the default; petsc is the former -%smicro_factor_type petsc)", HylcMicroPrefix_Private(M), HylcMicroPrefix_Private(M), HylcMicroPrefix_Private(M));
   PetscObjectOptionsBegin((PetscObject)M);
-  PetscCall(HylcOptionsReal("-alpha_start", "Regularization schedule: alpha^ at iteration 0", "HylcMicroSetRegularization", p.alphaStart, &p.alphaStart, NULL));
-  PetscCall(HylcOptionsReal("-alpha_end", "Regularization schedule: alpha^ from iteration alpha_its on", "HylcMicroSetRegularization", p.alphaEnd, &p.alphaEnd, NULL));
-  PetscCall(PetscOptionsInt("-alpha_its", "Regularization schedule: iterations of the geometric decay", "HylcMicroSetRegularization", p.alphaIts, &p.alphaIts, NULL));
-  PetscCall(PetscOptionsInt("-alpha_retries", "Retries with alpha x 10 when the Newton matrix is indefinite", "HylcMicroSetRegularization", p.maxRetries, &p.maxRetries, NULL));
+  PetscCall(HylcOptionsReal("-micro_alpha_start", "Regularization schedule: alpha^ at iteration 0", "HylcMicroSetRegularization", p.alphaStart, &p.alphaStart, NULL));
+  PetscCall(HylcOptionsReal("-micro_alpha_end", "Regularization schedule: alpha^ from iteration alpha_its on", "HylcMicroSetRegularization", p.alphaEnd, &p.alphaEnd, NULL));
+  PetscCall(PetscOptionsInt("-micro_alpha_its", "Regularization schedule: iterations of the geometric decay", "HylcMicroSetRegularization", p.alphaIts, &p.alphaIts, NULL));
+  PetscCall(PetscOptionsInt("-micro_alpha_retries", "Retries with alpha x 10 when the Newton matrix is indefinite", "HylcMicroSetRegularization", p.maxRetries, &p.maxRetries, NULL));
   PetscCall(PetscStrncpy(sched, HylcMicroAlphaSchedules[p.alphaSched], sizeof(sched)));
-  PetscCall(PetscOptionsString("-alpha_schedule", "Regularization schedule of alpha^: adaptive (trust-region-like: down after good steps, up after poor or rejected ones; the default), paper (the paper's decay over alpha_its iterations) or hybrid (paper until ||M g||_inf <= alpha_switch x its initial value, then adaptive)", "HylcMicroSetRegularizationSchedule", sched, sched, sizeof(sched), &schedSet));
-  PetscCall(HylcOptionsReal("-alpha_factor", "Adaptive regularization: alpha^ / factor after a good step, x factor after a poor one", "HylcMicroSetRegularizationSchedule", p.alphaFact, &p.alphaFact, NULL));
-  PetscCall(HylcOptionsReal("-alpha_min", "Adaptive regularization: smallest alpha^", "HylcMicroSetRegularizationSchedule", p.alphaMin, &p.alphaMin, NULL));
-  PetscCall(HylcOptionsReal("-alpha_max", "Adaptive regularization: largest alpha^", "HylcMicroSetRegularizationSchedule", p.alphaMax, &p.alphaMax, NULL));
-  PetscCall(HylcOptionsReal("-alpha_switch", "Hybrid regularization: adaptive once ||M g||_inf <= alpha_switch x its value at the first iteration", "HylcMicroSetRegularizationSwitch", p.alphaSwitch, &p.alphaSwitch, NULL));
-  PetscCall(PetscOptionsBool("-alpha_fallback", "Adaptive and hybrid regularization: a solve that does not converge is repeated from the same start with the paper schedule", "HylcMicroSetRegularizationFallback", p.alphaFallback, &p.alphaFallback, NULL));
-  PetscCall(HylcOptionsReal("-twist_scale", "Scale mu of the twist unknowns, 0 = 1/r", "HylcMicroSetTwistScale", p.twistScale, &p.twistScale, NULL));
-  PetscCall(HylcOptionsReal("-step_p0", "Step limit d_max = (p0 + p1 clamp(lambda_min(I),0,1)) r: p0", "HylcMicroSetStepLimit", p.stepP0, &p.stepP0, NULL));
-  PetscCall(HylcOptionsReal("-step_p1", "Step limit: p1", "HylcMicroSetStepLimit", p.stepP1, &p.stepP1, NULL));
-  PetscCall(HylcOptionsReal("-step_clearance", "Step limit also at most this fraction (< 1/2) of the smallest distance between yarn centerlines that may touch, so that no step crosses two yarns; 0 = off", "HylcMicroSetStepClearance", p.stepClear, &p.stepClear, NULL));
-  PetscCall(HylcOptionsReal("-ls_factor", "Backtracking factor of the line search", "HylcMicroSetLineSearch", p.lsFactor, &p.lsFactor, NULL));
-  PetscCall(PetscOptionsInt("-ls_max", "Line-search trials per iteration", "HylcMicroSetLineSearch", p.lsMax, &p.lsMax, NULL));
-  PetscCall(PetscOptionsInt("-max_stalls", "Consecutive line searches without decrease before the solve stops, status stalled", "HylcMicroSetLineSearch", p.maxStalls, &p.maxStalls, NULL));
-  PetscCall(HylcOptionsReal("-rtol", "Convergence: projected gradient |z| < rtol |z0|", "HylcMicroSetTolerances", p.rtol, &p.rtol, NULL));
-  PetscCall(HylcOptionsReal("-atol", "Convergence also when |z| < atol k_s (k_s = Es pi r^2, a force): for tiles already at rest", "HylcMicroSetTolerances", p.atol, &p.atol, NULL));
-  PetscCall(HylcOptionsReal("-ctol", "Convergence: constraint residual |A y - dL| < ctol r", "HylcMicroSetTolerances", p.ctol, &p.ctol, NULL));
-  PetscCall(HylcOptionsReal("-max_time", "Wall-time cap per solve (s); status time_cap", "HylcMicroSetTolerances", p.maxTime, &p.maxTime, NULL));
-  PetscCall(PetscOptionsBool("-factor_indefinite", "Accept the factorization of an indefinite Newton matrix if the step descends with positive curvature; false: alpha x 10 at any negative eigenvalue", "HylcMicroSetIndefinite", p.indefinite, &p.indefinite, NULL));
-  PetscCall(PetscOptionsBool("-saddle_test", "Second-order test of converged states: count the negative eigenvalues of the Hessian on the constraints' tangent space (implied by -micro_saddle_escapes > 0)", "HylcMicroSetSaddleEscape", p.saddleTest, &p.saddleTest, NULL));
-  PetscCall(PetscOptionsInt("-saddle_escapes", "Second-order test: escapes from saddle points (negative curvature on the constraints' tangent space) along negative curvature, per solve", "HylcMicroSetSaddleEscape", p.saddleMax, &p.saddleMax, NULL));
-  PetscCall(HylcOptionsReal("-saddle_tol", "Second-order test: curvature below -saddle_tol x max|diag(M H M)| is negative", "HylcMicroSetSaddleEscape", p.saddleTol, &p.saddleTol, NULL));
-  PetscCall(PetscOptionsEnum("-uniaxial_gradient", "Uniaxial state (HylcMicroSolveUniaxial): dPsi/dz by the envelope theorem at each equilibrium, or by central differences of Psi (fd, 6 more solves per point)", "HylcMicroSetUniaxial", HylcMicroUniaxialGradients, (PetscEnum)p.uniGrad, (PetscEnum *)&p.uniGrad, NULL));
-  PetscCall(HylcOptionsReal("-uniaxial_xtol", "Uniaxial state: converged when the predicted Newton step in the lateral strains is at most this (strain, dimensionless)", "HylcMicroSetUniaxial", p.uniXtol, &p.uniXtol, NULL));
-  PetscCall(PetscOptionsInt("-uniaxial_max_it", "Uniaxial state: Newton steps in the lateral strains", "HylcMicroSetUniaxial", p.uniMaxIt, &p.uniMaxIt, NULL));
-  PetscCall(HylcOptionsReal("-uniaxial_fd_step", "Uniaxial state: difference step of the lateral Hessian and of the fd gradient (strain, dimensionless)", "HylcMicroSetUniaxial", p.uniH, &p.uniH, NULL));
-  PetscCall(HylcOptionsReal("-uniaxial_max_step", "Uniaxial state: largest change of a lateral strain per Newton step (strain, dimensionless)", "HylcMicroSetUniaxial", p.uniMaxStep, &p.uniMaxStep, NULL));
-  PetscCall(HylcOptionsReal("-uniaxial_rtol", "Uniaxial state: -micro_rtol of its microscale solves (relative, dimensionless)", "HylcMicroSetUniaxialTolerances", p.uniRtol, &p.uniRtol, NULL));
-  PetscCall(HylcOptionsReal("-uniaxial_gtol", "Uniaxial state: converged after a line search without decrease if |lateral gradient| <= gtol |T| (dimensionless)", "HylcMicroSetUniaxialTolerances", p.uniGtol, &p.uniGtol, NULL));
-  PetscCall(PetscOptionsName("-view", "Print the solver at set-up", "HylcMicroView", &flg));
+  PetscCall(PetscOptionsString("-micro_alpha_schedule", "Regularization schedule of alpha^: adaptive (trust-region-like: down after good steps, up after poor or rejected ones; the default), paper (the paper's decay over alpha_its iterations) or hybrid (paper until ||M g||_inf <= alpha_switch x its initial value, then adaptive)", "HylcMicroSetRegularizationSchedule", sched, sched, sizeof(sched), &schedSet));
+  PetscCall(HylcOptionsReal("-micro_alpha_factor", "Adaptive regularization: alpha^ / factor after a good step, x factor after a poor one", "HylcMicroSetRegularizationSchedule", p.alphaFact, &p.alphaFact, NULL));
+  PetscCall(HylcOptionsReal("-micro_alpha_min", "Adaptive regularization: smallest alpha^", "HylcMicroSetRegularizationSchedule", p.alphaMin, &p.alphaMin, NULL));
+  PetscCall(HylcOptionsReal("-micro_alpha_max", "Adaptive regularization: largest alpha^", "HylcMicroSetRegularizationSchedule", p.alphaMax, &p.alphaMax, NULL));
+  PetscCall(HylcOptionsReal("-micro_alpha_switch", "Hybrid regularization: adaptive once ||M g||_inf <= alpha_switch x its value at the first iteration", "HylcMicroSetRegularizationSwitch", p.alphaSwitch, &p.alphaSwitch, NULL));
+  PetscCall(PetscOptionsBool("-micro_alpha_fallback", "Adaptive and hybrid regularization: a solve that does not converge is repeated from the same start with the paper schedule", "HylcMicroSetRegularizationFallback", p.alphaFallback, &p.alphaFallback, NULL));
+  PetscCall(HylcOptionsReal("-micro_twist_scale", "Scale mu of the twist unknowns, 0 = 1/r", "HylcMicroSetTwistScale", p.twistScale, &p.twistScale, NULL));
+  PetscCall(HylcOptionsReal("-micro_step_p0", "Step limit d_max = (p0 + p1 clamp(lambda_min(I),0,1)) r: p0", "HylcMicroSetStepLimit", p.stepP0, &p.stepP0, NULL));
+  PetscCall(HylcOptionsReal("-micro_step_p1", "Step limit: p1", "HylcMicroSetStepLimit", p.stepP1, &p.stepP1, NULL));
+  PetscCall(HylcOptionsReal("-micro_step_clearance", "Step limit also at most this fraction (< 1/2) of the smallest distance between yarn centerlines that may touch, so that no step crosses two yarns; 0 = off", "HylcMicroSetStepClearance", p.stepClear, &p.stepClear, NULL));
+  PetscCall(HylcOptionsReal("-micro_ls_factor", "Backtracking factor of the line search", "HylcMicroSetLineSearch", p.lsFactor, &p.lsFactor, NULL));
+  PetscCall(PetscOptionsInt("-micro_ls_max", "Line-search trials per iteration", "HylcMicroSetLineSearch", p.lsMax, &p.lsMax, NULL));
+  PetscCall(PetscOptionsInt("-micro_max_stalls", "Consecutive line searches without decrease before the solve stops, status stalled", "HylcMicroSetLineSearch", p.maxStalls, &p.maxStalls, NULL));
+  PetscCall(HylcOptionsReal("-micro_rtol", "Convergence: projected gradient |z| < rtol |z0|", "HylcMicroSetTolerances", p.rtol, &p.rtol, NULL));
+  PetscCall(HylcOptionsReal("-micro_atol", "Convergence also when |z| < atol k_s (k_s = Es pi r^2, a force): for tiles already at rest", "HylcMicroSetTolerances", p.atol, &p.atol, NULL));
+  PetscCall(HylcOptionsReal("-micro_ctol", "Convergence: constraint residual |A y - dL| < ctol r", "HylcMicroSetTolerances", p.ctol, &p.ctol, NULL));
+  PetscCall(HylcOptionsReal("-micro_max_time", "Wall-time cap per solve (s); status time_cap", "HylcMicroSetTolerances", p.maxTime, &p.maxTime, NULL));
+  PetscCall(PetscOptionsBool("-micro_factor_indefinite", "Accept the factorization of an indefinite Newton matrix if the step descends with positive curvature; false: alpha x 10 at any negative eigenvalue", "HylcMicroSetIndefinite", p.indefinite, &p.indefinite, NULL));
+  PetscCall(PetscOptionsBool("-micro_saddle_test", "Second-order test of converged states: count the negative eigenvalues of the Hessian on the constraints' tangent space (implied by -micro_saddle_escapes > 0)", "HylcMicroSetSaddleEscape", p.saddleTest, &p.saddleTest, NULL));
+  PetscCall(PetscOptionsInt("-micro_saddle_escapes", "Second-order test: escapes from saddle points (negative curvature on the constraints' tangent space) along negative curvature, per solve", "HylcMicroSetSaddleEscape", p.saddleMax, &p.saddleMax, NULL));
+  PetscCall(HylcOptionsReal("-micro_saddle_tol", "Second-order test: curvature below -saddle_tol x max|diag(M H M)| is negative", "HylcMicroSetSaddleEscape", p.saddleTol, &p.saddleTol, NULL));
+  PetscCall(PetscOptionsEnum("-micro_uniaxial_gradient", "Uniaxial state (HylcMicroSolveUniaxial): dPsi/dz by the envelope theorem at each equilibrium, or by central differences of Psi (fd, 6 more solves per point)", "HylcMicroSetUniaxial", HylcMicroUniaxialGradients, (PetscEnum)p.uniGrad, (PetscEnum *)&p.uniGrad, NULL));
+  PetscCall(HylcOptionsReal("-micro_uniaxial_xtol", "Uniaxial state: converged when the predicted Newton step in the lateral strains is at most this (strain, dimensionless)", "HylcMicroSetUniaxial", p.uniXtol, &p.uniXtol, NULL));
+  PetscCall(PetscOptionsInt("-micro_uniaxial_max_it", "Uniaxial state: Newton steps in the lateral strains", "HylcMicroSetUniaxial", p.uniMaxIt, &p.uniMaxIt, NULL));
+  PetscCall(HylcOptionsReal("-micro_uniaxial_fd_step", "Uniaxial state: difference step of the lateral Hessian and of the fd gradient (strain, dimensionless)", "HylcMicroSetUniaxial", p.uniH, &p.uniH, NULL));
+  PetscCall(HylcOptionsReal("-micro_uniaxial_max_step", "Uniaxial state: largest change of a lateral strain per Newton step (strain, dimensionless)", "HylcMicroSetUniaxial", p.uniMaxStep, &p.uniMaxStep, NULL));
+  PetscCall(HylcOptionsReal("-micro_uniaxial_rtol", "Uniaxial state: -micro_rtol of its microscale solves (relative, dimensionless)", "HylcMicroSetUniaxialTolerances", p.uniRtol, &p.uniRtol, NULL));
+  PetscCall(HylcOptionsReal("-micro_uniaxial_gtol", "Uniaxial state: converged after a line search without decrease if |lateral gradient| <= gtol |T| (dimensionless)", "HylcMicroSetUniaxialTolerances", p.uniGtol, &p.uniGtol, NULL));
+  PetscCall(PetscOptionsName("-micro_view", "Print the solver at set-up", "HylcMicroView", &flg));
   PetscOptionsEnd();
   if (schedSet) { /* checked after PetscOptionsEnd(), which must run */
     PetscBool paper, adaptive, hybrid;
     PetscCall(PetscStrcmp(sched, "paper", &paper));
     PetscCall(PetscStrcmp(sched, "adaptive", &adaptive));
     PetscCall(PetscStrcmp(sched, "hybrid", &hybrid));
-    PetscCheck(paper || adaptive || hybrid, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%salpha_schedule %s: must be paper, adaptive or hybrid", HylcMicroPrefix_Private(M), sched);
+    PetscCheck(paper || adaptive || hybrid, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_alpha_schedule %s: must be paper, adaptive or hybrid", HylcMicroPrefix_Private(M), sched);
     p.alphaSched = adaptive ? HYLC_MICRO_ALPHA_ADAPTIVE : hybrid ? HYLC_MICRO_ALPHA_HYBRID
                                                                  : HYLC_MICRO_ALPHA_PAPER;
   }
@@ -616,19 +616,19 @@ PetscErrorCode HylcMicroView(HylcMicro M, PetscViewer viewer)
     PetscCall(PetscViewerASCIIPrintf(viewer, "pattern set, not set up\n"));
   else
     PetscCall(PetscViewerASCIIPrintf(viewer, "unknowns: %" PetscInt_FMT " (%" PetscInt_FMT " vertices), constraint rows: %" PetscInt_FMT "\n", M->ny, M->ny / 4, M->m));
-  if (M->inner) {
+  if (M->kkt.inner) {
     MatSolverType type;
-    PetscCall(PCFactorGetMatSolverType(M->inner, &type));
-    PetscCall(PetscViewerASCIIPrintf(viewer, "factorization of K: PCCHOLESKY, solver type %s (-%sfactor_pc_factor_mat_solver_type)\n", type ? type : "(default)", HylcMicroPrefix_Private(M)));
-    if (M->setupcalled) PetscCall(PCView(M->inner, viewer));
+    PetscCall(PCFactorGetMatSolverType(M->kkt.inner, &type));
+    PetscCall(PetscViewerASCIIPrintf(viewer, "factorization of K: PCCHOLESKY, solver type %s (-%smicro_factor_pc_factor_mat_solver_type)\n", type ? type : "(default)", HylcMicroPrefix_Private(M)));
+    if (M->setupcalled) PetscCall(PCView(M->kkt.inner, viewer));
   }
   PetscCall(PetscViewerASCIIPopTab(viewer));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /*@C
-  HylcMicroViewFromOptions - Views the solver if the option name (e.g. "-view", read with the solver's
-  prefix: -micro_view) is set. Not collective.
+  HylcMicroViewFromOptions - Views the solver if the option name (e.g. "-micro_view", read after the
+  solver's prefix) is set. Not collective.
 
   Input Parameters:
 + M    - the solver

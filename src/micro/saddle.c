@@ -48,7 +48,7 @@ static PetscErrorCode MaxDisplacement(HylcMicro M, Vec v, PetscReal *d)
 }
 
 /* the direction of most negative curvature of M H M on the tangent space, by inverse iteration with the
-   factor of K = M H M + sigma I (positive definite there) in M->inner; on return *q is its curvature
+   factor of K = M H M + sigma I (positive definite there) in M->kkt.inner; on return *q is its curvature
    v^T M H M v (|v| = 1) */
 static PetscErrorCode NegativeCurvature(HylcMicro M, PetscReal sigma, Vec v, PetscReal *q)
 {
@@ -59,7 +59,7 @@ static PetscErrorCode NegativeCurvature(HylcMicro M, PetscReal sigma, Vec v, Pet
   PetscFunctionBegin;
   PetscCall(VecDuplicate(v, &w));
   PetscCall(VecDuplicate(v, &kv));
-  PetscCall(PetscArrayzero(M->c, M->m)); /* solutions in the tangent space A M v = 0 */
+  PetscCall(PetscArrayzero(M->kkt.c, M->m)); /* solutions in the tangent space A M v = 0 */
   PetscCall(StartVector(v));
   *q = 0;
   for (PetscInt k = 0; k < 100; k++) {
@@ -84,8 +84,8 @@ static PetscErrorCode NegativeCurvature(HylcMicro M, PetscReal sigma, Vec v, Pet
    negative curvature (*escaped) */
 PetscErrorCode HylcMicroSaddle_Private(HylcMicro M, PetscBool escape, PetscInt *neg, PetscBool *escaped)
 {
-  const PetscBool adapting = M->adapting;
-  const PetscReal alpha    = M->alpha;
+  const PetscBool adapting = M->st.adapting;
+  const PetscReal alpha    = M->st.alpha;
   Vec             v = NULL, w = NULL;
   PetscReal       dmax, sigma, q = 0, E0, dlim, dv, gv = 0;
   PetscBool       ok;
@@ -97,32 +97,32 @@ PetscErrorCode HylcMicroSaddle_Private(HylcMicro M, PetscBool escape, PetscInt *
   PetscCall(VecDuplicate(M->X, &v));
   /* H and g at X (the converged iterate's are in K and gw unless the Jacobian was formed since) */
   PetscCall(HylcMicroToY_Private(M, M->X, M->yw));
-  if (!M->haveH) {
+  if (!M->st.haveH) {
     PetscCall(HylcPeriodicSetState(M->P, M->yw));
-    PetscCall(HylcPeriodicEvaluate(M->P, HYLC_TERM_ALL, M->parts, M->gw, M->K));
+    PetscCall(HylcPeriodicEvaluate(M->P, HYLC_TERM_ALL, M->st.parts, M->gw, M->K));
   }
-  M->haveH = PETSC_FALSE; /* K is scaled and shifted below */
-  E0       = M->parts[0] + M->parts[1] + M->parts[2] + M->parts[3];
+  M->st.haveH = PETSC_FALSE; /* K is scaled and shifted below */
+  E0          = M->st.parts[0] + M->st.parts[1] + M->st.parts[2] + M->st.parts[3];
   PetscCall(MatDiagonalScale(M->K, M->mvec, M->mvec));
   PetscCall(MatGetDiagonal(M->K, v));
   PetscCall(VecNorm(v, NORM_INFINITY, &dmax));
   sigma = M->par.saddleTol * dmax;
   PetscCall(MatShift(M->K, sigma));
   PetscCall(MatSetOption(M->K, MAT_SYMMETRIC, PETSC_TRUE));
-  M->alpha    = sigma;
-  M->adapting = PETSC_TRUE; /* the factorization counts the negative eigenvalues on the tangent space */
+  M->st.alpha    = sigma;
+  M->st.adapting = PETSC_TRUE; /* the factorization counts the negative eigenvalues on the tangent space */
   PetscCall(HylcMicroKKTFactor_Private(M, &ok));
   if (ok)
     *neg = 0;
-  else if (M->projNeg > 0)
-    *neg = M->projNeg;
+  else if (M->st.projNeg > 0)
+    *neg = M->st.projNeg;
   PetscCall(PetscInfo(M, "second-order test (sigma %g = %g x max|diag(M H M)|): %" PetscInt_FMT " negative eigenvalues on the tangent space\n", (double)sigma, (double)M->par.saddleTol, *neg));
   if (*neg > 0 && escape) {
     PetscReal s = sigma;
     for (PetscInt k = 0; !ok && k < M->par.maxRetries; k++) { /* the shift that makes K positive definite there */
       PetscCall(MatShift(M->K, 9 * s));
       s *= 10;
-      M->alpha = s;
+      M->st.alpha = s;
       PetscCall(HylcMicroKKTFactor_Private(M, &ok));
     }
     if (ok) PetscCall(NegativeCurvature(M, s, v, &q));
@@ -151,7 +151,7 @@ PetscErrorCode HylcMicroSaddle_Private(HylcMicro M, PetscBool escape, PetscInt *
           PetscCall(HylcPeriodicSetState(M->P, M->yw));
           PetscCall(HylcPeriodicUpdateFrames(M->P));
           PetscCall(HylcMicroPushEnergy_Private(M, E));
-          M->E0    = E;
+          M->st.E0 = E;
           *escaped = PETSC_TRUE;
           PetscCall(PetscInfo(M, "saddle escape: curvature %g (shift %g), step %g r, energy %.12g -> %.12g\n", (double)q, (double)s, (double)(t * dv / M->r), (double)E0, (double)E));
           break;
@@ -161,8 +161,8 @@ PetscErrorCode HylcMicroSaddle_Private(HylcMicro M, PetscBool escape, PetscInt *
     } else
       PetscCall(PetscInfo(M, "saddle escape: no direction of negative curvature found (factored: %d, curvature %g)\n", (int)ok, (double)q));
   }
-  M->adapting = adapting;
-  M->alpha    = alpha;
+  M->st.adapting = adapting;
+  M->st.alpha    = alpha;
   PetscCall(VecDestroy(&v));
   PetscCall(VecDestroy(&w));
   PetscCall(PetscLogEventEnd(HYLC_MicroSaddle, M, 0, 0, 0));

@@ -17,12 +17,6 @@ PetscErrorCode HylcMicroToY_Private(HylcMicro M, Vec X, PetscReal y[])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* the paper's alpha^ at iteration it: alphaStart (alphaEnd/alphaStart)^(min(it, alphaIts)/alphaIts) */
-PetscReal HylcMicroPaperAlphaHat_Private(HylcMicro M, PetscInt it)
-{
-  return M->par.alphaStart * PetscPowReal(M->par.alphaEnd / M->par.alphaStart, (PetscReal)PetscMin(it, M->par.alphaIts) / M->par.alphaIts);
-}
-
 /* energy at X: a degenerate state (zero-length or folded edge) or a non-finite energy gives +inf (a result
    of the trial step, not an error; every other failure is an error) */
 PetscErrorCode HylcMicroSafeEnergy_Private(HylcMicro M, Vec X, PetscReal *E, PetscReal parts[4])
@@ -61,12 +55,12 @@ static PetscErrorCode FormFunction(SNES snes, Vec X, Vec F, void *ctx)
   PetscCheck(!M->inject, PETSC_COMM_SELF, PETSC_ERR_LIB, "injected error (HYLC_INJECT_ERROR=%" PetscInt_FMT ")", M->injectAt);
   PetscCall(HylcMicroToY_Private(M, X, M->yw));
   PetscCall(HylcPeriodicSetState(M->P, M->yw));
-  PetscCall(HylcPeriodicEvaluateFinite(M->P, HYLC_TERM_ALL, M->parts, M->gw, M->K, &finite));
-  M->haveH = finite;
+  PetscCall(HylcPeriodicEvaluateFinite(M->P, HYLC_TERM_ALL, M->st.parts, M->gw, M->K, &finite));
+  M->st.haveH = finite;
   PetscCall(VecGetArray(F, &f));
   for (PetscInt i = 0; i < M->ny; i++) f[i] = !finite ? PETSC_INFINITY : ((i % 4 == 3) ? M->mu * M->gw[i] : M->gw[i]);
   PetscCall(VecRestoreArray(F, &f));
-  M->E0 = !finite ? PETSC_INFINITY : M->parts[0] + M->parts[1] + M->parts[2] + M->parts[3];
+  M->st.E0 = !finite ? PETSC_INFINITY : M->st.parts[0] + M->st.parts[1] + M->st.parts[2] + M->st.parts[3];
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -81,74 +75,21 @@ static PetscErrorCode FormJacobian(SNES snes, Vec X, Mat J, Mat Jpre, void *ctx)
   (void)J;
   (void)Jpre;
   PetscCall(SNESGetIterationNumber(snes, &it));
-  it += M->itBase; /* the iteration of the whole solve (restarts after saddle escapes continue the schedule) */
+  it += M->st.itBase; /* the iteration of the whole solve (restarts after saddle escapes continue the schedule) */
   PetscCall(HylcMicroToY_Private(M, X, M->yw));
-  if (!M->haveH) {
+  if (!M->st.haveH) {
     PetscCall(HylcPeriodicSetState(M->P, M->yw));
-    PetscCall(HylcPeriodicEvaluate(M->P, HYLC_TERM_ALL, M->parts, M->gw, M->K));
+    PetscCall(HylcPeriodicEvaluate(M->P, HYLC_TERM_ALL, M->st.parts, M->gw, M->K));
   }
-  M->haveH = PETSC_FALSE;
+  M->st.haveH = PETSC_FALSE;
   for (PetscInt i = 0; i < M->ny; i++) gmax = PetscMax(gmax, PetscAbsReal((i % 4 == 3) ? M->mu * M->gw[i] : M->gw[i]));
-  M->gmax       = gmax;
-  M->retriesJac = M->retries;
-  {
-    const PetscReal apap  = HylcMicroPaperAlphaHat_Private(M, it);
-    const PetscInt  sched = M->par.alphaSched;
-    if (it == 0) { /* the start of the solve; a restart after a saddle escape continues the count (itBase), so
-                      it keeps the schedule's state unless the saddle was the initial guess itself */
-      M->reverted = PETSC_FALSE;
-      M->gmax0    = gmax;
-      M->ahat     = M->par.alphaStart;
-      M->adapting = (PetscBool)(sched == HYLC_MICRO_ALPHA_ADAPTIVE);
-    }
-    if (sched == HYLC_MICRO_ALPHA_HYBRID && !M->adapting && !M->reverted && gmax <= M->par.alphaSwitch * M->gmax0) { /* the switch: adaptive from the paper's alpha^ */
-      M->adapting = PETSC_TRUE;
-      M->ahat     = apap;
-      PetscCall(PetscInfo(M, "hybrid schedule: adaptive from iteration %" PetscInt_FMT " (||M g||_inf %g of its initial value), alpha^ %g\n", it, (double)(gmax / M->gmax0), (double)apap));
-    }
-    M->alpha = (M->adapting ? M->ahat : apap) * gmax; /* adaptive: alpha^ of the previous line search (AdaptAlpha) */
-  }
-  if (!(M->alpha > 0)) M->alpha = PETSC_SMALL;
+  M->st.gmax       = gmax;
+  M->st.retriesJac = M->st.retries;
+  PetscCall(HylcMicroRegularizationAlpha_Private(M, it, gmax));
   PetscCall(MatDiagonalScale(M->K, M->mvec, M->mvec));
-  PetscCall(MatShift(M->K, M->alpha));
+  PetscCall(MatShift(M->K, M->st.alpha));
   PetscCall(MatSetOption(M->K, MAT_SYMMETRIC, PETSC_TRUE));
-  PetscCall(HylcPeriodicConstraintResidual(M->P, M->yw, M->c));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* the adaptive schedule (trust-region logic on alpha^), after each line search, from the alpha^ the step
-   was computed with (after any x 10 retries of the KKT solve, which are kept): a full step that was not cut
-   by the step limit, needed no retry and whose energy decrease agrees with the quadratic model of the
-   unregularized Hessian (ratio > 3/4) divides alpha^ by the factor; a step cut by the step limit (then the
-   step limit is the trust region) lets alpha^ decay at least as the paper's schedule does; a poor agreement
-   (ratio < 1/4) or a backtracked step multiplies it by the factor, a rejected line search by its square;
-   always within [alphaMin, alphaMax] */
-static PetscErrorCode AdaptAlpha(HylcMicro M, PetscBool accepted, PetscBool clipped, PetscReal lambda, PetscReal actual, PetscReal pred)
-{
-  const PetscReal f = M->par.alphaFact;
-  PetscReal       a;
-  PetscInt        it;
-
-  PetscFunctionBegin;
-  if (!(M->gmax > 0)) PetscFunctionReturn(PETSC_SUCCESS); /* alpha was not scaled by ||M g||: keep alpha^ */
-  a = M->alpha / M->gmax;
-  if (!accepted)
-    a *= f * f;
-  else if (lambda < 1)
-    a *= f;
-  else {
-    const PetscReal rho = pred > 0 ? actual / pred : 1; /* a decrease where the model predicts none is good */
-    if (rho < 0.25)
-      a *= f;
-    else if (rho > 0.75 && !clipped && M->retries == M->retriesJac)
-      a /= f;
-  }
-  if (accepted && clipped) { /* the paper's alpha^ of the next iteration as a ceiling */
-    PetscCall(SNESGetIterationNumber(M->snes, &it));
-    a = PetscMin(a, HylcMicroPaperAlphaHat_Private(M, M->itBase + it + 1));
-  }
-  M->ahat = PetscClipInterval(a, M->par.alphaMin, M->par.alphaMax);
-  PetscCall(PetscInfo(M, "adaptive alpha^ %g -> %g (accepted %d, step limit %s, lambda %g, energy decrease %g, predicted %g)\n", (double)(M->alpha / M->gmax), (double)M->ahat, (int)accepted, clipped ? "active" : "inactive", (double)lambda, (double)actual, (double)pred));
+  PetscCall(HylcPeriodicConstraintResidual(M->P, M->yw, M->kkt.c));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -156,15 +97,15 @@ static PetscErrorCode AdaptAlpha(HylcMicro M, PetscBool accepted, PetscBool clip
 PetscErrorCode HylcMicroPushEnergy_Private(HylcMicro M, PetscReal E)
 {
   PetscFunctionBegin;
-  if (M->nhist == M->caphist) {
+  if (M->st.nhist == M->caphist) {
     PetscReal *h;
     M->caphist = M->caphist ? 2 * M->caphist : 256;
     PetscCall(PetscMalloc1(M->caphist, &h));
-    PetscCall(PetscArraycpy(h, M->hist, M->nhist));
+    PetscCall(PetscArraycpy(h, M->hist, M->st.nhist));
     PetscCall(PetscFree(M->hist));
     M->hist = h;
   }
-  M->hist[M->nhist++] = E;
+  M->hist[M->st.nhist++] = E;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -197,7 +138,7 @@ static PetscErrorCode LineSearch(SNESLineSearch ls, void *ctx)
   const PetscScalar *y;
   SNES               snes;
   PetscLogDouble     t0, t1;
-  PetscBool          accepted = PETSC_FALSE, adaptive = M->adapting;
+  PetscBool          accepted = PETSC_FALSE, adaptive = M->st.adapting;
   PetscReal          lin = 0, quad = 0, Eold, Etrial = PETSC_INFINITY;
 
   PetscFunctionBegin;
@@ -205,18 +146,18 @@ static PetscErrorCode LineSearch(SNESLineSearch ls, void *ctx)
   PetscCall(PetscLogEventBegin(HYLC_MicroLineSearch, M, 0, 0, 0));
   PetscCall(SNESLineSearchGetSNES(ls, &snes));
   PetscCall(SNESLineSearchGetVecs(ls, &X, &F, &Y, &W, &G));
-  if (M->factorFailed) { /* no Newton step: the iterate stays and the solve ends */
+  if (M->st.factorFailed) { /* no Newton step: the iterate stays and the solve ends */
     PetscReal knorm;
     PetscCall(MatNorm(M->K, NORM_FROBENIUS, &knorm));
-    M->status    = PetscIsInfOrNanReal(knorm) ? HYLC_MICRO_NONFINITE : HYLC_MICRO_STALLED;
-    M->statusSet = PETSC_TRUE;
+    M->st.status    = PetscIsInfOrNanReal(knorm) ? HYLC_MICRO_NONFINITE : HYLC_MICRO_STALLED;
+    M->st.statusSet = PETSC_TRUE;
     PetscCall(VecNorm(X, NORM_2, &xnorm));
     PetscCall(VecNorm(F, NORM_2, &fnorm));
     PetscCall(SNESLineSearchSetNorms(ls, xnorm, fnorm, 0));
     PetscCall(SNESLineSearchSetLambda(ls, 0));
     PetscCall(PetscLogEventEnd(HYLC_MicroLineSearch, M, 0, 0, 0));
     PetscCall(PetscTime(&t1));
-    M->tLineSearch += t1 - t0;
+    M->st.tLineSearch += t1 - t0;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscCall(HylcMicroStepLimit_Private(M, X, &dmax));
@@ -232,13 +173,13 @@ static PetscErrorCode LineSearch(SNESLineSearch ls, void *ctx)
     PetscCall(VecDot(Y, G, &yky));
     PetscCall(VecDot(Y, Y, &yy));
     lin  = PetscRealPart(fy);
-    quad = PetscRealPart(yky) - M->alpha * PetscRealPart(yy);
+    quad = PetscRealPart(yky) - M->st.alpha * PetscRealPart(yy);
   }
-  Eold = M->E0;
+  Eold = M->st.E0;
   for (PetscInt i = 0; i < M->par.lsMax; i++, lambda *= M->par.lsFactor) {
     PetscCall(VecWAXPY(W, -lambda, Y, X));
     PetscCall(HylcMicroSafeEnergy_Private(M, W, &E, NULL));
-    if (E < M->E0) {
+    if (E < M->st.E0) {
       accepted = PETSC_TRUE;
       Etrial   = E;
       break;
@@ -248,8 +189,8 @@ static PetscErrorCode LineSearch(SNESLineSearch ls, void *ctx)
     PetscCall(VecCopy(W, X));
     PetscCall(SNESComputeFunction(snes, X, F)); /* the state, E0, the gradient and the Hessian */
     PetscCall(HylcPeriodicUpdateFrames(M->P));
-    M->stalls = 0;
-    PetscCall(HylcMicroPushEnergy_Private(M, M->E0));
+    M->st.stalls = 0;
+    PetscCall(HylcMicroPushEnergy_Private(M, M->st.E0));
   } else {
     /* keep the iterate (alpha decays with the iteration count); the cached Hessian stays valid. If the
        step is a descent direction whose first-order decrease F.Y is below the rounding of the energy
@@ -262,29 +203,29 @@ static PetscErrorCode LineSearch(SNESLineSearch ls, void *ctx)
        direction, F.Y <= 0, is a stall too.) */
     PetscScalar fy;
     PetscCall(VecDot(F, Y, &fy));
-    if (PetscRealPart(fy) > 0 && PetscRealPart(fy) <= 1e3 * PETSC_MACHINE_EPSILON * PetscAbsReal(M->E0)) {
+    if (PetscRealPart(fy) > 0 && PetscRealPart(fy) <= 1e3 * PETSC_MACHINE_EPSILON * PetscAbsReal(M->st.E0)) {
       PetscScalar yky, yy;
       PetscCall(MatMult(M->K, Y, G));
       PetscCall(VecDot(Y, G, &yky));
       PetscCall(VecDot(Y, Y, &yy));
-      if (M->alpha * PetscRealPart(yy) <= PetscRealPart(yky) - M->alpha * PetscRealPart(yy)) {
-        M->resolved = PETSC_TRUE;
-        PetscCall(PetscInfo(M, "rejected step with first-order decrease %g below the energy's rounding (E %g): converged to the energy's resolution\n", (double)PetscRealPart(fy), (double)M->E0));
+      if (M->st.alpha * PetscRealPart(yy) <= PetscRealPart(yky) - M->st.alpha * PetscRealPart(yy)) {
+        M->st.resolved = PETSC_TRUE;
+        PetscCall(PetscInfo(M, "rejected step with first-order decrease %g below the energy's rounding (E %g): converged to the energy's resolution\n", (double)PetscRealPart(fy), (double)M->st.E0));
       } else
-        PetscCall(PetscInfo(M, "rejected step with first-order decrease %g below the energy's rounding (E %g), shortened by alpha (%g of the model's curvature along it): a stall\n", (double)PetscRealPart(fy), (double)M->E0, (double)(M->alpha * PetscRealPart(yy) / PetscRealPart(yky))));
+        PetscCall(PetscInfo(M, "rejected step with first-order decrease %g below the energy's rounding (E %g), shortened by alpha (%g of the model's curvature along it): a stall\n", (double)PetscRealPart(fy), (double)M->st.E0, (double)(M->st.alpha * PetscRealPart(yy) / PetscRealPart(yky))));
     }
-    M->stalls++;
-    M->stallsTotal++;
+    M->st.stalls++;
+    M->st.stallsTotal++;
     PetscCall(HylcMicroToY_Private(M, X, M->yw));
     PetscCall(HylcPeriodicSetState(M->P, M->yw));
-    PetscCall(HylcPeriodicEvaluate(M->P, HYLC_TERM_ALL, M->parts, M->gw, M->K));
-    M->haveH = PETSC_TRUE;
-    if (M->stalls >= M->par.maxStalls) {
-      M->status    = HYLC_MICRO_STALLED;
-      M->statusSet = PETSC_TRUE;
+    PetscCall(HylcPeriodicEvaluate(M->P, HYLC_TERM_ALL, M->st.parts, M->gw, M->K));
+    M->st.haveH = PETSC_TRUE;
+    if (M->st.stalls >= M->par.maxStalls) {
+      M->st.status    = HYLC_MICRO_STALLED;
+      M->st.statusSet = PETSC_TRUE;
     }
   }
-  if (adaptive) PetscCall(AdaptAlpha(M, accepted, (PetscBool)(d > dmax), lambda, accepted ? Eold - Etrial : 0, lambda * lin - 0.5 * lambda * lambda * quad));
+  if (adaptive) PetscCall(HylcMicroRegularizationAdapt_Private(M, accepted, (PetscBool)(d > dmax), lambda, accepted ? Eold - Etrial : 0, lambda * lin - 0.5 * lambda * lambda * quad));
   PetscCall(VecNorm(X, NORM_2, &xnorm));
   PetscCall(VecNorm(F, NORM_2, &fnorm));
   PetscCall(VecNorm(Y, NORM_2, &ynorm));
@@ -292,7 +233,7 @@ static PetscErrorCode LineSearch(SNESLineSearch ls, void *ctx)
   PetscCall(SNESLineSearchSetLambda(ls, accepted ? lambda : 0));
   PetscCall(PetscLogEventEnd(HYLC_MicroLineSearch, M, 0, 0, 0));
   PetscCall(PetscTime(&t1));
-  M->tLineSearch += t1 - t0;
+  M->st.tLineSearch += t1 - t0;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -304,16 +245,16 @@ static PetscReal ProjectedNorm2(HylcMicro M, const PetscReal g[])
 
   for (PetscInt i = 0; i < m; i++) {
     PetscReal s = 0;
-    for (PetscInt k = 0; k < n; k++) s += M->A[i * n + k] * g[k];
-    M->tmp[i] = s;
+    for (PetscInt k = 0; k < n; k++) s += M->kkt.A[i * n + k] * g[k];
+    M->kkt.tmp[i] = s;
   }
   for (PetscInt i = 0; i < m; i++) {
-    M->wl[i] = 0;
-    for (PetscInt j = 0; j < m; j++) M->wl[i] += M->AAtinv[i * m + j] * M->tmp[j];
+    M->kkt.wl[i] = 0;
+    for (PetscInt j = 0; j < m; j++) M->kkt.wl[i] += M->kkt.AAtinv[i * m + j] * M->kkt.tmp[j];
   }
   for (PetscInt k = 0; k < n; k++) {
     PetscReal zk = g[k];
-    for (PetscInt i = 0; i < m; i++) zk -= M->A[i * n + k] * M->wl[i];
+    for (PetscInt i = 0; i < m; i++) zk -= M->kkt.A[i * n + k] * M->kkt.wl[i];
     z2 += zk * zk;
   }
   return z2;
@@ -328,7 +269,7 @@ PetscErrorCode HylcMicroProjectedGradientNorm_Private(HylcMicro M, const PetscRe
 
   PetscFunctionBegin;
   PetscCall(HylcPeriodicSetState(M->P, y));
-  PetscCall(HylcPeriodicEvaluateFinite(M->P, HYLC_TERM_ALL, M->parts, M->gw, NULL, &finite));
+  PetscCall(HylcPeriodicEvaluateFinite(M->P, HYLC_TERM_ALL, M->st.parts, M->gw, NULL, &finite));
   *zn = finite ? PetscSqrtReal(ProjectedNorm2(M, M->gw)) : 0;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -349,38 +290,38 @@ static PetscErrorCode Converged(SNES snes, PetscInt it, PetscReal xnorm, PetscRe
   (void)gnorm;
   (void)f;
   *reason = SNES_CONVERGED_ITERATING;
-  if (M->statusSet) { /* stalled line search */
+  if (M->st.statusSet) { /* stalled line search */
     *reason = SNES_DIVERGED_LINE_SEARCH;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
-  if (!PetscIsNormalReal(M->E0) && M->E0 != 0) {
-    M->status    = HYLC_MICRO_NONFINITE;
-    M->statusSet = PETSC_TRUE;
-    *reason      = SNES_DIVERGED_FNORM_NAN;
+  if (!PetscIsNormalReal(M->st.E0) && M->st.E0 != 0) {
+    M->st.status    = HYLC_MICRO_NONFINITE;
+    M->st.statusSet = PETSC_TRUE;
+    *reason         = SNES_DIVERGED_FNORM_NAN;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   z2 = ProjectedNorm2(M, M->gw);
   PetscCall(SNESGetSolution(snes, &X));
   PetscCall(HylcMicroToY_Private(M, X, M->yw));
-  PetscCall(HylcPeriodicConstraintResidual(M->P, M->yw, M->c));
-  for (PetscInt i = 0; i < m; i++) c2 += M->c[i] * M->c[i];
+  PetscCall(HylcPeriodicConstraintResidual(M->P, M->yw, M->kkt.c));
+  for (PetscInt i = 0; i < m; i++) c2 += M->kkt.c[i] * M->kkt.c[i];
   const PetscReal zn = PetscSqrtReal(z2), cn = PetscSqrtReal(c2);
-  if (it == 0) M->z0 = !M->restart ? (M->continued ? M->z0cold : zn) : PetscMax(M->z0, zn); /* a restart: at least |z| after the escape (a saddle at the start has |z0| = 0) */
-  M->lastz = M->z0 > 0 ? zn / M->z0 : 0;
-  M->lastc = cn / M->r;
-  if ((zn <= M->par.rtol * M->z0 || zn <= M->par.atol * M->ks) && cn < M->par.ctol * M->r) {
+  if (it == 0) M->st.z0 = !M->st.restart ? (M->st.continued ? M->st.z0cold : zn) : PetscMax(M->st.z0, zn); /* a restart: at least |z| after the escape (a saddle at the start has |z0| = 0) */
+  M->st.lastz = M->st.z0 > 0 ? zn / M->st.z0 : 0;
+  M->st.lastc = cn / M->r;
+  if ((zn <= M->par.rtol * M->st.z0 || zn <= M->par.atol * M->ks) && cn < M->par.ctol * M->r) {
     *reason = SNES_CONVERGED_FNORM_RELATIVE;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
-  if (M->resolved && cn < M->par.ctol * M->r) { /* the line search could not resolve the step's decrease */
+  if (M->st.resolved && cn < M->par.ctol * M->r) { /* the line search could not resolve the step's decrease */
     *reason = SNES_CONVERGED_FNORM_ABS;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscCall(PetscTime(&now));
-  if (now - M->tStart > M->par.maxTime) {
-    M->status    = HYLC_MICRO_MAX_TIME;
-    M->statusSet = PETSC_TRUE;
-    *reason      = SNES_DIVERGED_FUNCTION_COUNT; /* the wall-time budget */
+  if (now - M->st.tStart > M->par.maxTime) {
+    M->st.status    = HYLC_MICRO_MAX_TIME;
+    M->st.statusSet = PETSC_TRUE;
+    *reason         = SNES_DIVERGED_FUNCTION_COUNT; /* the wall-time budget */
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscCall(SNESGetTolerances(snes, NULL, NULL, NULL, &maxit, NULL));
@@ -391,7 +332,7 @@ static PetscErrorCode Converged(SNES snes, PetscInt it, PetscReal xnorm, PetscRe
 /* the SNES with every default of the method, before any of its options are read (HylcMicroGetSNES()):
    Newton with the objective, residual and convergence test above, the iteration cap 2000, the shell line
    search, a KSPPREONLY whose PC is the KKT PCSHELL of kkt.c around the factorization PC; the options
-   (-<prefix>snes_*, -<prefix>ksp_*, ...) are read by HylcMicroSetFromOptions() and override these */
+   (-<prefix>micro_snes_*, -<prefix>micro_ksp_*, ...) are read by HylcMicroSetFromOptions() and override these */
 PetscErrorCode HylcMicroCreateSNES_Private(HylcMicro M)
 {
   KSP            ksp;
@@ -403,6 +344,7 @@ PetscErrorCode HylcMicroCreateSNES_Private(HylcMicro M)
   PetscCall(PetscObjectGetOptionsPrefix((PetscObject)M, &prefix));
   PetscCall(SNESCreate(PETSC_COMM_SELF, &M->snes));
   PetscCall(SNESSetOptionsPrefix(M->snes, prefix));
+  PetscCall(SNESAppendOptionsPrefix(M->snes, "micro_"));
   PetscCall(SNESSetType(M->snes, SNESNEWTONLS));
   PetscCall(SNESSetObjective(M->snes, FormObjective, M));
   PetscCall(SNESSetFunction(M->snes, NULL, FormFunction, M));
@@ -442,6 +384,6 @@ PetscErrorCode HylcMicroSetUpSNES_Private(HylcMicro M)
   PetscCall(HylcMicroSetUpKKT_Private(M, pc));
   M->setupcalled = PETSC_TRUE;
   PetscCall(PetscLogEventEnd(HYLC_MicroSetUp, M, 0, 0, 0));
-  PetscCall(HylcMicroViewFromOptions(M, NULL, "-view"));
+  PetscCall(HylcMicroViewFromOptions(M, NULL, "-micro_view"));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -95,20 +95,12 @@ PetscErrorCode HylcPatternSetFromCurves(HylcPattern p, PetscReal px, PetscReal p
 /* ---------------------------------------------------------------------------------------------- */
 /* Wovens                                                                                          */
 
-/* Whether the x-running yarn j passes over the y-running yarn i. */
-static PetscBool WeaveOver(const char *type, PetscInt i, PetscInt j)
-{
-  switch (type[0]) {
-  case 'p': /* plain: over one, under one */
-    return (PetscBool)((i + j) % 2 == 0);
-  case 'b': /* 2x2 basket: pairs of threads act as one */
-    return (PetscBool)((i / 2 + j / 2) % 2 == 0);
-  case 't': /* 2/2 twill: over two, under two, shifted by one per thread */
-    return (PetscBool)((i + j) % 4 < 2);
-  default: /* 5-harness satin: over four, under one, move number 2 */
-    return (PetscBool)(i % 5 != (2 * j) % 5);
-  }
-}
+/* Whether the x-running yarn j passes over the y-running yarn i, per weave. */
+typedef PetscBool (*WeaveOverFn)(PetscInt, PetscInt);
+static PetscBool OverPlain(PetscInt i, PetscInt j) { return (PetscBool)((i + j) % 2 == 0); }          /* over one, under one */
+static PetscBool OverBasket(PetscInt i, PetscInt j) { return (PetscBool)((i / 2 + j / 2) % 2 == 0); } /* 2x2: pairs of threads act as one */
+static PetscBool OverTwill(PetscInt i, PetscInt j) { return (PetscBool)((i + j) % 4 < 2); }           /* 2/2: over two, under two, shifted by one per thread */
+static PetscBool OverSatin(PetscInt i, PetscInt j) { return (PetscBool)(i % 5 != (2 * j) % 5); }      /* 5-harness: over four, under one, move number 2 */
 
 /* Peirce-type crimp profile of a yarn along its own axis coordinate u in [0, n s): at crossing k
    (u_k = (k + 1/2) s) it is at state[k] * h, wrapped around the crossing yarn on an arc of radius R
@@ -134,20 +126,18 @@ static PetscReal WeaveHeight(const PetscInt state[], PetscInt n, PetscReal s, Pe
   return s0 * z;
 }
 
-PetscErrorCode HylcPatternGenerateWoven_Private(HylcPattern p, HylcPatternType type, const HylcPatternGenParams *g)
+/* a woven tile of the weave whose over/under rule is over and whose pattern repeats every rep threads */
+static PetscErrorCode GenerateWoven(HylcPattern p, const HylcPatternGenParams *g, PetscInt rep, WeaveOverFn over)
 {
   MPI_Comm        comm = PetscObjectComm((PetscObject)p);
+  const char     *type = ((PetscObject)p)->type_name;
   const PetscReal r    = g->radius;
   const PetscReal s    = g->spacing > 0 ? g->spacing : 4 * r;
   const PetscReal gap  = g->gap > 0 ? g->gap : 0.1;
   const PetscReal sl   = g->seglen > 0 ? g->seglen : r;
   const PetscReal R = 2 * r * (1 + gap), h = 0.5 * R;
-  PetscInt        rep;
-  PetscBool       satin;
 
   PetscFunctionBegin;
-  PetscCall(PetscStrcmp(type, HYLCPATTERNSATIN, &satin));
-  rep               = type[0] == 'p' ? 2 : (satin ? 5 : 4);
   const PetscInt nx = g->size[0] > 0 ? g->size[0] : rep, ny = g->size[1] > 0 ? g->size[1] : rep;
   PetscCheck(r > 0, comm, PETSC_ERR_USER_INPUT, "-pattern_radius must be positive, got %g", (double)r);
   PetscCheck(nx % rep == 0 && ny % rep == 0, comm, PETSC_ERR_USER_INPUT, "-pattern_size %" PetscInt_FMT ",%" PetscInt_FMT ": a %s weave repeats every %" PetscInt_FMT " threads; use multiples of %" PetscInt_FMT, nx, ny, type, rep, rep);
@@ -162,7 +152,7 @@ PetscErrorCode HylcPatternGenerateWoven_Private(HylcPattern p, HylcPatternType t
   PetscCall(PetscMalloc1(3 * m * (ny * nx + nx * ny), &pts));
   PetscInt k = 0, q = 0;
   for (PetscInt j = 0; j < ny; j++, k++) { /* yarns along x, at y_j */
-    for (PetscInt i = 0; i < nx; i++) state[i] = WeaveOver(type, i, j) ? 1 : -1;
+    for (PetscInt i = 0; i < nx; i++) state[i] = over(i, j) ? 1 : -1;
     nverts[k]          = nx * m;
     winding[2 * k]     = 1;
     winding[2 * k + 1] = 0;
@@ -174,7 +164,7 @@ PetscErrorCode HylcPatternGenerateWoven_Private(HylcPattern p, HylcPatternType t
     }
   }
   for (PetscInt i = 0; i < nx; i++, k++) { /* yarns along y, at x_i */
-    for (PetscInt j = 0; j < ny; j++) state[j] = WeaveOver(type, i, j) ? -1 : 1;
+    for (PetscInt j = 0; j < ny; j++) state[j] = over(i, j) ? -1 : 1;
     nverts[k]          = ny * m;
     winding[2 * k]     = 0;
     winding[2 * k + 1] = 1;
@@ -196,6 +186,34 @@ PetscErrorCode HylcPatternGenerateWoven_Private(HylcPattern p, HylcPatternType t
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode HylcPatternGeneratePlain_Private(HylcPattern p, const HylcPatternGenParams *g)
+{
+  PetscFunctionBegin;
+  PetscCall(GenerateWoven(p, g, 2, OverPlain));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcPatternGenerateBasket_Private(HylcPattern p, const HylcPatternGenParams *g)
+{
+  PetscFunctionBegin;
+  PetscCall(GenerateWoven(p, g, 4, OverBasket));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcPatternGenerateTwill_Private(HylcPattern p, const HylcPatternGenParams *g)
+{
+  PetscFunctionBegin;
+  PetscCall(GenerateWoven(p, g, 4, OverTwill));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcPatternGenerateSatin_Private(HylcPattern p, const HylcPatternGenParams *g)
+{
+  PetscFunctionBegin;
+  PetscCall(GenerateWoven(p, g, 5, OverSatin));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /*@C
   HylcPatternGenerate - Generates a pattern procedurally: plain, basket (2x2), twill (2/2), satin
   (5-harness), stockinette, rib (1x1). Parameters as in HylcPatternGenParams (docs/patterns.md).
@@ -204,8 +222,9 @@ PetscErrorCode HylcPatternGenerateWoven_Private(HylcPattern p, HylcPatternType t
 @*/
 PetscErrorCode HylcPatternGenerate(HylcPattern p, HylcPatternType type, const HylcPatternGenParams *g)
 {
-  PetscBool knit, file;
-  char      t[64];
+  PetscBool            file;
+  char                 t[64];
+  HylcPatternGenerator generator;
 
   PetscFunctionBegin;
   PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
@@ -221,13 +240,10 @@ PetscErrorCode HylcPatternGenerate(HylcPattern p, HylcPatternType type, const Hy
     for (int k = 0; k < 6; k++) PetscCheck(len[k] == 0 || (PetscIsNormalReal(len[k]) && len[k] > 0), comm, PETSC_ERR_USER_INPUT, "Generator %s: -pattern_%s must be positive and finite, or 0 for the default; got %g", t, nam[k], (double)len[k]);
     PetscCheck(g->size[0] >= 0 && g->size[1] >= 0 && g->size[0] <= HYLC_PATTERN_MAX_SIZE && g->size[1] <= HYLC_PATTERN_MAX_SIZE, comm, PETSC_ERR_USER_INPUT, "Generator %s: tile size (-pattern_size) %" PetscInt_FMT ",%" PetscInt_FMT " out of range: integers from 1 to %d (0: the smallest repeat)", t, g->size[0], g->size[1], HYLC_PATTERN_MAX_SIZE);
   }
+  PetscCall(HylcPatternFindSource_Private(t, &generator));
   PetscCall(PetscLogEventBegin(HYLC_PatternGenerate, p, 0, 0, 0));
   p->gen = *g;
-  PetscCall(PetscStrInList(t, "stockinette,rib", ',', &knit));
-  if (knit)
-    PetscCall(HylcPatternGenerateKnit_Private(p, t, g));
-  else
-    PetscCall(HylcPatternGenerateWoven_Private(p, t, g));
+  PetscCall((*generator)(p, g));
   p->filename[0] = 0;
   PetscCall(PetscLogEventEnd(HYLC_PatternGenerate, p, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);

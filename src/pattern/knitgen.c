@@ -4,20 +4,19 @@
 #include <hylc/private/knit.h>
 #include <stdlib.h>
 
-PetscErrorCode HylcPatternGenerateKnit_Private(HylcPattern p, HylcPatternType type, const HylcPatternGenParams *g)
+/* a knit tile of type kt (the pattern's type names it in messages) */
+static PetscErrorCode GenerateKnit(HylcPattern p, const HylcPatternGenParams *g, HylcKnitType kt)
 {
-  MPI_Comm       comm = PetscObjectComm((PetscObject)p);
-  HylcKnitParams kp;
-  HylcKnitType   kt;
-  PetscBool      rib;
-  int            nyarns, *nverts = NULL;
-  double        *pts = NULL, px, py;
-  char           msg[256];
-  PetscInt      *nv, *winding;
+  MPI_Comm        comm = PetscObjectComm((PetscObject)p);
+  const char     *type = ((PetscObject)p)->type_name;
+  const PetscBool rib  = (PetscBool)(kt == HYLC_KNIT_RIB);
+  HylcKnitParams  kp;
+  int             nyarns, *nverts = NULL;
+  double         *pts = NULL, px, py;
+  char            msg[256];
+  PetscInt       *nv, *winding;
 
   PetscFunctionBegin;
-  PetscCall(PetscStrcmp(type, HYLCPATTERNRIB, &rib));
-  kt          = rib ? HYLC_KNIT_RIB : HYLC_KNIT_STOCKINETTE;
   kp.r        = g->radius;
   kp.wale     = g->wale;
   kp.course   = g->course;
@@ -36,5 +35,19 @@ PetscErrorCode HylcPatternGenerateKnit_Private(HylcPattern p, HylcPatternType ty
   PetscCall(PetscFree2(nv, winding));
   free(nverts);
   free(pts);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcPatternGenerateStockinette_Private(HylcPattern p, const HylcPatternGenParams *g)
+{
+  PetscFunctionBegin;
+  PetscCall(GenerateKnit(p, g, HYLC_KNIT_STOCKINETTE));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcPatternGenerateRib_Private(HylcPattern p, const HylcPatternGenParams *g)
+{
+  PetscFunctionBegin;
+  PetscCall(GenerateKnit(p, g, HYLC_KNIT_RIB));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

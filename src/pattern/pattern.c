@@ -2,6 +2,58 @@
 #include <hylc/options.h>
 #include <hylc/private/patternimpl.h>
 
+PetscClassId  HYLC_PATTERN_CLASSID;
+PetscLogEvent HYLC_PatternLoad, HYLC_PatternWrite, HYLC_PatternGenerate, HYLC_PatternDistance;
+
+static PetscBool HylcPatternPackageInitialized = PETSC_FALSE;
+
+static PetscErrorCode HylcPatternFinalizePackage(void)
+{
+  PetscFunctionBegin;
+  HylcPatternPackageInitialized = PETSC_FALSE;
+  PetscCall(HylcPatternRegistryDestroy_Private());
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPatternInitializePackage - Registers the class id HylcPattern, its log events (PATTERN_Load,
+  PATTERN_Write, PATTERN_Generate, PATTERN_Distance) and the built-in pattern sources (HylcPatternRegisterAll()). Called by
+  HylcPatternCreate() and by HylcInitializePackage(); idempotent.
+
+  Not collective
+
+  Level: developer
+
+.seealso: HylcInitializePackage()
+@*/
+PetscErrorCode HylcPatternInitializePackage(void)
+{
+  PetscFunctionBegin;
+  if (HylcPatternPackageInitialized) PetscFunctionReturn(PETSC_SUCCESS);
+  HylcPatternPackageInitialized = PETSC_TRUE;
+  PetscCall(PetscClassIdRegister("HylcPattern", &HYLC_PATTERN_CLASSID));
+  PetscCall(PetscLogEventRegister("PATTERN_Load", HYLC_PATTERN_CLASSID, &HYLC_PatternLoad));
+  PetscCall(PetscLogEventRegister("PATTERN_Write", HYLC_PATTERN_CLASSID, &HYLC_PatternWrite));
+  PetscCall(PetscLogEventRegister("PATTERN_Generate", HYLC_PATTERN_CLASSID, &HYLC_PatternGenerate));
+  PetscCall(PetscLogEventRegister("PATTERN_Distance", HYLC_PATTERN_CLASSID, &HYLC_PatternDistance));
+  PetscCall(HylcPatternRegisterAll());
+  PetscCall(PetscRegisterFinalize(HylcPatternFinalizePackage));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPatternGenParamsDefault - The default parameters of the generators: radius 1 mm, every other value 0
+  (the generator's own default).
+
+  Not collective
+
+  Output Parameter:
+. g - the parameters
+
+  Level: intermediate
+
+.seealso: HylcPatternSetGenParams()
+@*/
 PetscErrorCode HylcPatternGenParamsDefault(HylcPatternGenParams *g)
 {
   PetscFunctionBegin;
@@ -21,7 +73,7 @@ PetscErrorCode HylcPatternCreate(MPI_Comm comm, HylcPattern *pat)
 
   PetscFunctionBegin;
   PetscValidPointer(pat, 2);
-  PetscCall(HylcInitializePackage());
+  PetscCall(HylcPatternInitializePackage());
   PetscCall(PetscHeaderCreate(p, HYLC_PATTERN_CLASSID, "HylcPattern", "Periodic yarn pattern", "Pattern", comm, HylcPatternDestroy, HylcPatternView));
   PetscCall(HylcPatternGenParamsDefault(&p->gen));
   p->viewDensity    = 0; /* the shared default, HylcDefaultYarnDensity(r): what hylc-fit and the JSON use */
@@ -71,6 +123,19 @@ PetscErrorCode HylcPatternDestroy(HylcPattern *p)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPatternSetOptionsPrefix - Sets the prefix of the pattern's options (-<prefix>pattern_*).
+
+  Not collective
+
+  Input Parameters:
++ p      - the pattern
+- prefix - the prefix (NULL: none)
+
+  Level: intermediate
+
+.seealso: HylcPatternSetFromOptions()
+@*/
 PetscErrorCode HylcPatternSetOptionsPrefix(HylcPattern p, const char prefix[])
 {
   PetscFunctionBegin;
@@ -79,24 +144,55 @@ PetscErrorCode HylcPatternSetOptionsPrefix(HylcPattern p, const char prefix[])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPatternSetType - Sets the pattern's source: "file" or a registered generator (HylcPatternRegister());
+  HylcPatternSetUp() then loads or generates the data.
+
+  Collective
+
+  Input Parameters:
++ p    - the pattern
+- type - the name (an unknown one is refused, naming the registered ones)
+
+  Options Database Key:
+. -pattern_type <file> - the same (-help lists the registered names)
+
+  Level: beginner
+
+.seealso: HylcPatternGetType(), HylcPatternRegister(), HylcPatternSetFileName()
+@*/
 PetscErrorCode HylcPatternSetType(HylcPattern p, HylcPatternType type)
 {
-  const char *known[] = {HYLCPATTERNFILE, HYLCPATTERNPLAIN, HYLCPATTERNBASKET, HYLCPATTERNTWILL, HYLCPATTERNSATIN, HYLCPATTERNSTOCKINETTE, HYLCPATTERNRIB};
-  PetscBool   ok      = PETSC_FALSE;
+  HylcPatternGenerator source;
 
   PetscFunctionBegin;
   PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
-  for (size_t i = 0; i < sizeof(known) / sizeof(known[0]); i++) {
-    PetscBool eq;
-    PetscCall(PetscStrcmp(type, known[i], &eq));
-    ok = (PetscBool)(ok || eq);
+  PetscCall(HylcPatternFindSource_Private(type, &source));
+  if (!source) {
+    char names[1024];
+    PetscCall(HylcPatternSourceNames_Private(", ", PETSC_FALSE, names, sizeof(names)));
+    SETERRQ(PetscObjectComm((PetscObject)p), PETSC_ERR_USER_INPUT, "Unknown pattern type '%s'; use one of %s", type, names);
   }
-  PetscCheck(ok, PetscObjectComm((PetscObject)p), PETSC_ERR_USER_INPUT, "Unknown pattern type '%s'; use one of file, plain, basket, twill, satin, stockinette, rib", type);
   PetscCall(PetscObjectChangeTypeName((PetscObject)p, type));
   p->setupcalled = PETSC_FALSE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPatternGetType - The pattern's source: "file" or the name of a registered generator.
+
+  Not collective
+
+  Input Parameter:
+. p - the pattern
+
+  Output Parameter:
+. type - the name (owned by the pattern; NULL if none was set)
+
+  Level: beginner
+
+.seealso: HylcPatternSetType()
+@*/
 PetscErrorCode HylcPatternGetType(HylcPattern p, HylcPatternType *type)
 {
   PetscFunctionBegin;
@@ -105,6 +201,22 @@ PetscErrorCode HylcPatternGetType(HylcPattern p, HylcPatternType *type)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPatternSetFileName - Sets the .pyp file the pattern loads and its type to "file".
+
+  Collective
+
+  Input Parameters:
++ p    - the pattern
+- file - the path
+
+  Options Database Key:
+. -pattern_file <file.pyp> - the same
+
+  Level: beginner
+
+.seealso: HylcPatternGetFileName(), HylcPatternSetType()
+@*/
 PetscErrorCode HylcPatternSetFileName(HylcPattern p, const char file[])
 {
   PetscFunctionBegin;
@@ -114,6 +226,45 @@ PetscErrorCode HylcPatternSetFileName(HylcPattern p, const char file[])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPatternGetFileName - The .pyp file the pattern loads (type "file"; HylcPatternSetFileName() or
+  -pattern_file), or "" if none was given.
+
+  Not collective
+
+  Input Parameter:
+. p - the pattern
+
+  Output Parameter:
+. file - the path (owned by the pattern)
+
+  Level: intermediate
+
+.seealso: HylcPatternSetFileName(), HylcPatternGetType()
+@*/
+PetscErrorCode HylcPatternGetFileName(HylcPattern p, const char *file[])
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
+  PetscValidPointer(file, 2);
+  *file = p->filename;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPatternSetGenParams - Sets the parameters of the generators (radius, lengths, tile size, ...); a
+  pattern already set up is generated again by the next HylcPatternSetUp().
+
+  Not collective
+
+  Input Parameters:
++ p - the pattern
+- g - the parameters (copied; HylcPatternGenParamsDefault() for the defaults)
+
+  Level: intermediate
+
+.seealso: HylcPatternGetGenParams(), HylcPatternGenerate()
+@*/
 PetscErrorCode HylcPatternSetGenParams(HylcPattern p, const HylcPatternGenParams *g)
 {
   PetscFunctionBegin;
@@ -123,6 +274,21 @@ PetscErrorCode HylcPatternSetGenParams(HylcPattern p, const HylcPatternGenParams
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPatternGetGenParams - The parameters of the generators as set or read from the options.
+
+  Not collective
+
+  Input Parameter:
+. p - the pattern
+
+  Output Parameter:
+. g - a copy of the parameters
+
+  Level: intermediate
+
+.seealso: HylcPatternSetGenParams()
+@*/
 PetscErrorCode HylcPatternGetGenParams(HylcPattern p, HylcPatternGenParams *g)
 {
   PetscFunctionBegin;
@@ -171,7 +337,7 @@ static PetscErrorCode CheckSize(HylcPattern p, const char name[], PetscInt n, co
 
   Options (prefix "-pattern_" unless the object has another prefix):
 + -pattern_file <f.pyp>            - load this .pyp file (sets the type to "file")
-. -pattern_type <stockinette>      - file, plain, basket, twill, satin, stockinette, rib
+. -pattern_type <stockinette>      - file, or a registered generator: plain, basket, twill, satin, stockinette, rib, ... (HylcPatternRegister())
 . -pattern_radius <1e-3>           - generators: yarn radius (m)
 . -pattern_spacing <4r>            - wovens: distance between neighbouring parallel yarns (m)
 . -pattern_gap <0.1>               - wovens: clearance at crossings relative to 2r
@@ -184,25 +350,22 @@ static PetscErrorCode CheckSize(HylcPattern p, const char name[], PetscInt n, co
 @*/
 PetscErrorCode HylcPatternSetFromOptions(HylcPattern p)
 {
-  char        file[PETSC_MAX_PATH_LEN] = "", type[64];
-  PetscBool   flg, tflg, set[9] = {PETSC_FALSE}, sizeset = PETSC_FALSE, both;
-  PetscInt    n = 2, nsize = 0, tn;
-  const char *types[] = {HYLCPATTERNFILE, HYLCPATTERNPLAIN, HYLCPATTERNBASKET, HYLCPATTERNTWILL, HYLCPATTERNSATIN, HYLCPATTERNSTOCKINETTE, HYLCPATTERNRIB};
+  char                 file[PETSC_MAX_PATH_LEN] = "", type[64];
+  PetscBool            flg, fflg, tflg, set[9] = {PETSC_FALSE}, sizeset = PETSC_FALSE, both, isfile;
+  PetscInt             n = 2, nsize = 0;
+  HylcPatternGenerator source;
 
   PetscFunctionBegin;
   PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
+  PetscCall(HylcPatternInitializePackage()); /* the registry of -pattern_type */
   PetscObjectOptionsBegin((PetscObject)p);
   PetscCall(PetscStrncpy(type, ((PetscObject)p)->type_name, sizeof(type)));
-  PetscCall(PetscOptionsString("-pattern_file", "Periodic yarn pattern file (.pyp) to load", "HylcPatternLoad", p->filename, file, sizeof(file), &flg));
-  if (flg)
+  PetscCall(PetscOptionsString("-pattern_file", "Periodic yarn pattern file (.pyp) to load", "HylcPatternLoad", p->filename, file, sizeof(file), &fflg));
+  if (fflg)
     PetscCall(HylcPatternSetFileName(p, file));
   else if (p->filename[0])
     PetscCall(PetscStrncpy(type, HYLCPATTERNFILE, sizeof(type)));
-  PetscCall(PetscOptionsEList("-pattern_type", "Pattern source: a file or a generator", "HylcPatternSetType", types, 7, type, &n, &tflg));
-  (void)n;
-  if (tflg) PetscCall(HylcPatternSetType(p, types[n]));
-  both = (PetscBool)(flg && tflg && n != 0);
-  tn   = n;
+  PetscCall(PetscOptionsFList("-pattern_type", "Pattern source: a file or a generator (HylcPatternRegister())", "HylcPatternSetType", HylcPatternList, type, type, sizeof(type), &tflg));
   PetscCall(HylcOptionsReal("-pattern_radius", "Generators: yarn radius (m), > 0", "HylcPatternGenerate", p->gen.radius, &p->gen.radius, &set[0]));
   PetscCall(HylcOptionsReal("-pattern_spacing", "Wovens: distance between neighbouring parallel yarns (m); 0 = 4 r", "HylcPatternGenerate", p->gen.spacing, &p->gen.spacing, &set[1]));
   PetscCall(HylcOptionsReal("-pattern_gap", "Wovens: clearance at crossings relative to 2r; 0 = 0.1", "HylcPatternGenerate", p->gen.gap, &p->gen.gap, &set[2]));
@@ -220,7 +383,19 @@ PetscErrorCode HylcPatternSetFromOptions(HylcPattern p)
   PetscCall(PetscObjectProcessOptionsHandlers((PetscObject)p, PetscOptionsObject));
   PetscOptionsEnd();
   /* checked after PetscOptionsEnd(), so that an error leaves nothing allocated behind */
-  PetscCheck(!both, PetscObjectComm((PetscObject)p), PETSC_ERR_USER_INPUT, "Both -pattern_file %s and -pattern_type %s were given; use one", file, types[tn]);
+  if (tflg) {
+    PetscCall(HylcPatternFindSource_Private(type, &source));
+    if (!source) {
+      const char *prefix = ((PetscObject)p)->prefix;
+      char        names[1024];
+      PetscCall(HylcPatternSourceNames_Private(" ", PETSC_TRUE, names, sizeof(names)));
+      SETERRQ(PetscObjectComm((PetscObject)p), PETSC_ERR_USER, "Unknown option %s for -%spattern_type. Available options: %s", type, prefix ? prefix : "", names);
+    }
+    PetscCall(HylcPatternSetType(p, type));
+  }
+  PetscCall(PetscStrcmp(type, HYLCPATTERNFILE, &isfile));
+  both = (PetscBool)(fflg && tflg && !isfile);
+  PetscCheck(!both, PetscObjectComm((PetscObject)p), PETSC_ERR_USER_INPUT, "Both -pattern_file %s and -pattern_type %s were given; use one", file, type);
   PetscCall(CheckReal(p, "-pattern_radius", set[0], p->gen.radius, PETSC_TRUE));
   PetscCall(CheckReal(p, "-pattern_spacing", set[1], p->gen.spacing, PETSC_FALSE));
   PetscCall(CheckReal(p, "-pattern_gap", set[2], p->gen.gap, PETSC_FALSE));
@@ -245,9 +420,10 @@ PetscErrorCode HylcPatternSetUp(HylcPattern p)
   PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
   if (p->setupcalled && p->hasdata) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PetscStrcmp(((PetscObject)p)->type_name, HYLCPATTERNFILE, &isfile));
-  if (isfile) {
-    PetscCheck(p->filename[0], PetscObjectComm((PetscObject)p), PETSC_ERR_USER_INPUT, "Pattern type 'file' needs a file name (-pattern_file f.pyp)");
-    PetscCall(HylcPatternLoad(p, p->filename));
+  if (isfile) { /* the registered source "file" (registry.c) */
+    HylcPatternGenerator load;
+    PetscCall(HylcPatternFindSource_Private(HYLCPATTERNFILE, &load));
+    PetscCall((*load)(p, &p->gen));
   } else {
     char type[64];
     PetscCall(PetscStrncpy(type, ((PetscObject)p)->type_name, sizeof(type)));
@@ -316,6 +492,22 @@ PetscErrorCode HylcPatternBuildLoops_Private(HylcPattern p)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPatternGetData - The pattern's data: vertices, periods, radius, rest data, reference frames and the
+  connectivity (borrowed pointers, valid until the pattern changes).
+
+  Not collective
+
+  Input Parameter:
+. p - the pattern, with data (HylcPatternSetUp(), HylcPatternLoad() or HylcPatternGenerate())
+
+  Output Parameter:
+. d - the data
+
+  Level: intermediate
+
+.seealso: HylcPatternSetData(), HylcPatternGetNumVertices()
+@*/
 PetscErrorCode HylcPatternGetData(HylcPattern p, HylcPatternData *d)
 {
   PetscFunctionBegin;
@@ -338,6 +530,21 @@ PetscErrorCode HylcPatternGetData(HylcPattern p, HylcPatternData *d)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPatternGetNumVertices - The number of vertices of the tile.
+
+  Not collective
+
+  Input Parameter:
+. p - the pattern
+
+  Output Parameter:
+. nv - the number (0 before the data are set)
+
+  Level: beginner
+
+.seealso: HylcPatternGetData()
+@*/
 PetscErrorCode HylcPatternGetNumVertices(HylcPattern p, PetscInt *nv)
 {
   PetscFunctionBegin;
@@ -346,6 +553,22 @@ PetscErrorCode HylcPatternGetNumVertices(HylcPattern p, PetscInt *nv)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPatternGetPeriods - The tile's periods along x and y (m).
+
+  Not collective
+
+  Input Parameter:
+. p - the pattern
+
+  Output Parameters:
++ px - the period along x (may be NULL)
+- py - the period along y (may be NULL)
+
+  Level: beginner
+
+.seealso: HylcPatternGetData()
+@*/
 PetscErrorCode HylcPatternGetPeriods(HylcPattern p, PetscReal *px, PetscReal *py)
 {
   PetscFunctionBegin;
@@ -355,6 +578,21 @@ PetscErrorCode HylcPatternGetPeriods(HylcPattern p, PetscReal *px, PetscReal *py
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPatternGetRadius - The yarn radius of the pattern (m).
+
+  Not collective
+
+  Input Parameter:
+. p - the pattern
+
+  Output Parameter:
+. r - the radius
+
+  Level: beginner
+
+.seealso: HylcPatternGetData(), HylcYarnModelGetConstants()
+@*/
 PetscErrorCode HylcPatternGetRadius(HylcPattern p, PetscReal *r)
 {
   PetscFunctionBegin;
@@ -363,6 +601,21 @@ PetscErrorCode HylcPatternGetRadius(HylcPattern p, PetscReal *r)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPatternGetNumLoops - The number of yarn loops of the tile (the cycles of next[]).
+
+  Not collective
+
+  Input Parameter:
+. p - the pattern
+
+  Output Parameter:
+. nl - the number
+
+  Level: intermediate
+
+.seealso: HylcPatternGetVertexLoop()
+@*/
 PetscErrorCode HylcPatternGetNumLoops(HylcPattern p, PetscInt *nl)
 {
   PetscFunctionBegin;
@@ -389,6 +642,23 @@ PetscErrorCode HylcPatternGetLoop(HylcPattern p, PetscInt l, PetscInt *n, const 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPatternGetVertexLoop - The loop a vertex belongs to and its position along it.
+
+  Not collective
+
+  Input Parameters:
++ p - the pattern
+- v - the vertex, 0 to nv - 1
+
+  Output Parameters:
++ loop - the loop (may be NULL)
+- pos  - the position of v in the loop (may be NULL)
+
+  Level: intermediate
+
+.seealso: HylcPatternGetNumLoops()
+@*/
 PetscErrorCode HylcPatternGetVertexLoop(HylcPattern p, PetscInt v, PetscInt *loop, PetscInt *pos)
 {
   PetscFunctionBegin;

@@ -46,6 +46,20 @@ PetscErrorCode HylcPatternView(HylcPattern p, PetscViewer viewer)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcPatternViewFromOptions - Views the pattern if the option name is given (PetscObjectViewFromOptions()).
+
+  Collective
+
+  Input Parameters:
++ p    - the pattern
+. obj  - an object whose prefix is used (NULL: the pattern's)
+- name - the option, e.g. "-pattern_view"
+
+  Level: intermediate
+
+.seealso: HylcPatternView()
+@*/
 PetscErrorCode HylcPatternViewFromOptions(HylcPattern p, PetscObject obj, const char name[])
 {
   PetscFunctionBegin;

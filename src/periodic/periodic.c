@@ -4,6 +4,44 @@
 
 const char *const HylcSlideConstraints[] = {"none", "global", "per_yarn", "per_family", "HylcSlideConstraint", "HYLC_SLIDE_", NULL};
 
+PetscClassId  HYLC_PERIODIC_CLASSID;
+PetscLogEvent HYLC_PeriodicSetUp, HYLC_PeriodicEvaluate, HYLC_TileBroadphase, HYLC_TileContact, HYLC_TileAssemble, HYLC_TileEvaluate;
+
+static PetscBool HylcPeriodicPackageInitialized = PETSC_FALSE;
+
+static PetscErrorCode HylcPeriodicFinalizePackage(void)
+{
+  PetscFunctionBegin;
+  HylcPeriodicPackageInitialized = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPeriodicInitializePackage - Registers the class id HylcPeriodic and its log events (PERIODIC_SetUp, PERIODIC_Evaluate, CONTACT_Broadphase, CONTACT_Energy, PERIODIC_Assemble, TILE_Evaluate). Called by
+  HylcPeriodicCreate() and by HylcInitializePackage(); idempotent.
+
+  Not collective
+
+  Level: developer
+
+.seealso: HylcInitializePackage()
+@*/
+PetscErrorCode HylcPeriodicInitializePackage(void)
+{
+  PetscFunctionBegin;
+  if (HylcPeriodicPackageInitialized) PetscFunctionReturn(PETSC_SUCCESS);
+  HylcPeriodicPackageInitialized = PETSC_TRUE;
+  PetscCall(PetscClassIdRegister("HylcPeriodic", &HYLC_PERIODIC_CLASSID));
+  PetscCall(PetscLogEventRegister("PERIODIC_SetUp", HYLC_PERIODIC_CLASSID, &HYLC_PeriodicSetUp));
+  PetscCall(PetscLogEventRegister("PERIODIC_Evaluate", HYLC_PERIODIC_CLASSID, &HYLC_PeriodicEvaluate));
+  PetscCall(PetscLogEventRegister("CONTACT_Broadphase", HYLC_PERIODIC_CLASSID, &HYLC_TileBroadphase));
+  PetscCall(PetscLogEventRegister("CONTACT_Energy", HYLC_PERIODIC_CLASSID, &HYLC_TileContact));
+  PetscCall(PetscLogEventRegister("PERIODIC_Assemble", HYLC_PERIODIC_CLASSID, &HYLC_TileAssemble));
+  PetscCall(PetscLogEventRegister("TILE_Evaluate", HYLC_PERIODIC_CLASSID, &HYLC_TileEvaluate));
+  PetscCall(PetscRegisterFinalize(HylcPeriodicFinalizePackage));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /*@C
   HylcPeriodicCreate - Creates a periodic tile: slide constraint global, contact-ghost margin 0.25, pair
   margin 1.05, constraint tolerance 1e-6, options prefix none (options -periodic_*). Give it a pattern
@@ -28,7 +66,7 @@ PetscErrorCode HylcPeriodicCreate(MPI_Comm comm, HylcPeriodic *per)
   PetscFunctionBegin;
   PetscValidPointer(per, 2);
   *per = NULL;
-  PetscCall(HylcInitializePackage());
+  PetscCall(HylcPeriodicInitializePackage());
   PetscCall(PetscHeaderCreate(P, HYLC_PERIODIC_CLASSID, "HylcPeriodic", "Periodic yarn tile", "Periodic", comm, HylcPeriodicDestroy, HylcPeriodicView));
   P->slide        = HYLC_SLIDE_GLOBAL;
   P->marginFactor = 0; /* every copy in the neighbouring tiles */
@@ -281,9 +319,9 @@ PetscErrorCode HylcPeriodicSetStrain(HylcPeriodic P, const PetscReal z[6])
 @*/
 PetscErrorCode HylcPeriodicCheckStrain(HylcPeriodic P, const PetscReal z[6], const char name[])
 {
-  static const char *const comp[6] = {"sx", "sa", "sy", "II00", "II01", "II11"};
-  double                   zd[6], N[4];
-  char                     v[6][32]; /* C formatting: PETSc's printf appends '.' to integral %g values */
+  const char *const *comp = HylcStrainNames;
+  double             zd[6], N[4];
+  char               v[6][32]; /* C formatting: PETSc's printf appends '.' to integral %g values */
 
   PetscFunctionBegin;
   for (int k = 0; k < 6; k++) {

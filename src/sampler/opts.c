@@ -335,9 +335,9 @@ PetscErrorCode HylcSamplerSetFromOptions(HylcSampler S)
   PetscCall(HylcSamplerGetPattern(S, &pat));
   PetscCall(HylcPatternSetFromOptions(pat));
   model = S->model;
-  PetscCall(HylcYarnModelSetFromOptions(comm, NULL, &model));
+  PetscCall(HylcYarnModelSetFromOptions(comm, ((PetscObject)S)->prefix, &model));
   PetscCall(HylcSamplerSetYarnModel(S, &model));
-  PetscCall(HylcReferenceParamsSetFromOptions(comm, &S->refpar));
+  PetscCall(HylcReferenceParamsSetFromOptions(comm, ((PetscObject)S)->prefix, &S->refpar));
   PetscObjectOptionsBegin((PetscObject)S);
   PetscCall(PetscOptionsEnum("-sampler_reference", "Reference state (Algorithm C1): auto (compute for generated patterns, not for files), compute, none, or relax (only the in-plane minimum over the periods of the pattern as given: a stored tile made a minimum of the configured yarn)", "HylcSamplerSetReference", HylcReferenceModes, mode, &mode, NULL));
   PetscCall(PetscOptionsString("-reference_output", "Write the reference state as .pyp", "HylcSamplerSetReference", refout, refout, sizeof(refout), NULL));

@@ -39,13 +39,18 @@ PetscErrorCode HylcSamplerSetUpSolver_Private(HylcSampler S)
    and journal as the mode allows, then the journal locked and opened (resume: the identity checked) */
 static PetscErrorCode CheckOutputsAndLock(HylcSampler S)
 {
-  char        jpath[PETSC_MAX_PATH_LEN + 16], pfile[PETSC_MAX_PATH_LEN] = "", raw[2][PETSC_MAX_PATH_LEN + 16];
-  PetscBool   haspf = PETSC_FALSE;
-  struct stat st;
+  char            jpath[PETSC_MAX_PATH_LEN + 16], raw[2][PETSC_MAX_PATH_LEN + 16], pfileopt[300];
+  const char     *pfile = "", *prefix = ((PetscObject)S)->prefix;
+  HylcPatternType type;
+  PetscBool       isfile;
+  struct stat     st;
 
   PetscFunctionBegin;
   PetscCall(PetscSNPrintf(jpath, sizeof(jpath), "%s.journal", S->output));
-  PetscCall(PetscOptionsGetString(NULL, NULL, "-pattern_file", pfile, sizeof(pfile), &haspf));
+  PetscCall(HylcPatternGetType(S->pat, &type));
+  PetscCall(PetscStrcmp(type, HYLCPATTERNFILE, &isfile));
+  if (isfile) PetscCall(HylcPatternGetFileName(S->pat, &pfile));
+  PetscCall(PetscSNPrintf(pfileopt, sizeof(pfileopt), "-%spattern_file", prefix ? prefix : ""));
   if (S->rawdir[0]) {
     PetscCheck(stat(S->rawdir, &st) == 0 && S_ISDIR(st.st_mode), PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot write into -sampler_export_raw %s: %s", S->rawdir, stat(S->rawdir, &st) ? "no such directory (create it first)" : "not a directory");
     PetscCall(PetscSNPrintf(raw[0], sizeof(raw[0]), "%s/data.txt", S->rawdir));
@@ -59,7 +64,7 @@ static PetscErrorCode CheckOutputsAndLock(HylcSampler S)
     PetscErrorCode ierr;
     PetscCall(HylcFilesCreate(PETSC_COMM_SELF, &files));
     ierr = HylcFilesAddOptionsFiles(files);
-    if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_INPUT, pfile, "-pattern_file");
+    if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_INPUT, pfile, pfileopt);
     if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, S->output, "-sampler_output");
     if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, jpath, "the journal of -sampler_output");
     if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, S->refout, "-reference_output");

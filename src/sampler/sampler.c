@@ -1,6 +1,39 @@
 /* HylcSampler: lifecycle, sub-objects, View (include/hylc/sampler.h). */
 #include "samplerimpl.h"
 
+PetscClassId  HYLC_SAMPLER_CLASSID;
+PetscLogEvent HYLC_SamplerRun;
+
+static PetscBool HylcSamplerPackageInitialized = PETSC_FALSE;
+
+static PetscErrorCode HylcSamplerFinalizePackage(void)
+{
+  PetscFunctionBegin;
+  HylcSamplerPackageInitialized = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcSamplerInitializePackage - Registers the class id HylcSampler and its log events (SAMPLER_Run). Called by
+  HylcSamplerCreate() and by HylcInitializePackage(); idempotent.
+
+  Not collective
+
+  Level: developer
+
+.seealso: HylcInitializePackage()
+@*/
+PetscErrorCode HylcSamplerInitializePackage(void)
+{
+  PetscFunctionBegin;
+  if (HylcSamplerPackageInitialized) PetscFunctionReturn(PETSC_SUCCESS);
+  HylcSamplerPackageInitialized = PETSC_TRUE;
+  PetscCall(PetscClassIdRegister("HylcSampler", &HYLC_SAMPLER_CLASSID));
+  PetscCall(PetscLogEventRegister("SAMPLER_Run", HYLC_SAMPLER_CLASSID, &HYLC_SamplerRun));
+  PetscCall(PetscRegisterFinalize(HylcSamplerFinalizePackage));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /*@C
   HylcSamplerCreate - Creates the sampling job: output samples.h5, the woven family's ranges, every term
   with 150 samples per 1D term and 50 per axis of a 2D term, batches of 1, progress every 5 s, the
@@ -25,7 +58,7 @@ PetscErrorCode HylcSamplerCreate(MPI_Comm comm, HylcSampler *s)
   PetscFunctionBegin;
   PetscValidPointer(s, 2);
   *s = NULL;
-  PetscCall(HylcInitializePackage());
+  PetscCall(HylcSamplerInitializePackage());
   PetscCall(PetscHeaderCreate(S, HYLC_SAMPLER_CLASSID, "HylcSampler", "Sampling job", "Sampler", comm, HylcSamplerDestroy, HylcSamplerView));
   PetscCallMPI(MPI_Comm_rank(comm, &S->rank));
   PetscCallMPI(MPI_Comm_size(comm, &S->size));
@@ -78,8 +111,9 @@ PetscErrorCode HylcSamplerDestroy(HylcSampler *s)
 }
 
 /*@C
-  HylcSamplerSetOptionsPrefix - Sets the prefix of the sampler's own options (-<prefix>sampler_*,
-  -<prefix>sampler_view).
+  HylcSamplerSetOptionsPrefix - Sets the prefix of the sampler's options and of its sub-objects'
+  (-<prefix>sampler_*, -<prefix>pattern_*, -<prefix>yarn_*, -<prefix>reference_*, -<prefix>micro_* with the
+  solver's tile -<prefix>periodic_*, -<prefix>macro_*).
 
   Not collective
 
@@ -96,11 +130,13 @@ PetscErrorCode HylcSamplerSetOptionsPrefix(HylcSampler S, const char prefix[])
   PetscFunctionBegin;
   PetscValidHeaderSpecific(S, HYLC_SAMPLER_CLASSID, 1);
   PetscCall(PetscObjectSetOptionsPrefix((PetscObject)S, prefix));
+  if (S->pat) PetscCall(HylcPatternSetOptionsPrefix(S->pat, prefix));
+  if (S->micro) PetscCall(HylcMicroSetOptionsPrefix(S->micro, prefix));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /*@C
-  HylcSamplerGetPattern - The sampler's pattern, created (unset) on first use; HylcSamplerSetFromOptions()
+  HylcSamplerGetPattern - The sampler's pattern, created (unset, with the sampler's prefix) on first use; HylcSamplerSetFromOptions()
   reads its options and HylcSamplerSetUp() loads or generates it (and may replace it by its reference
   state). Borrowed: do not destroy it.
 
@@ -121,13 +157,16 @@ PetscErrorCode HylcSamplerGetPattern(HylcSampler S, HylcPattern *pat)
   PetscFunctionBegin;
   PetscValidHeaderSpecific(S, HYLC_SAMPLER_CLASSID, 1);
   PetscValidPointer(pat, 2);
-  if (!S->pat) PetscCall(HylcPatternCreate(PetscObjectComm((PetscObject)S), &S->pat));
+  if (!S->pat) {
+    PetscCall(HylcPatternCreate(PetscObjectComm((PetscObject)S), &S->pat));
+    PetscCall(HylcPatternSetOptionsPrefix(S->pat, ((PetscObject)S)->prefix));
+  }
   *pat = S->pat;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /*@C
-  HylcSamplerGetMicro - The solver of this rank's samples (on PETSC_COMM_SELF), created on first use;
+  HylcSamplerGetMicro - The solver of this rank's samples (on PETSC_COMM_SELF), created with the sampler's prefix on first use;
   HylcSamplerSetFromOptions() reads its options and HylcSamplerSetUp() gives it the pattern and sets it up.
   Borrowed: do not destroy it.
 
@@ -148,7 +187,10 @@ PetscErrorCode HylcSamplerGetMicro(HylcSampler S, HylcMicro *micro)
   PetscFunctionBegin;
   PetscValidHeaderSpecific(S, HYLC_SAMPLER_CLASSID, 1);
   PetscValidPointer(micro, 2);
-  if (!S->micro) PetscCall(HylcMicroCreate(PETSC_COMM_SELF, &S->micro));
+  if (!S->micro) {
+    PetscCall(HylcMicroCreate(PETSC_COMM_SELF, &S->micro));
+    PetscCall(HylcMicroSetOptionsPrefix(S->micro, ((PetscObject)S)->prefix));
+  }
   *micro = S->micro;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

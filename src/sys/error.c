@@ -165,6 +165,21 @@ static PetscErrorCode HylcErrorHandler(MPI_Comm comm, int line, const char *fun,
   return n;
 }
 
+/*@C
+  HylcPushErrorHandler - Pushes hylc's error handler: errors of user input, files and ranges
+  (PETSC_ERR_USER_INPUT, PETSC_ERR_FILE_*, PETSC_ERR_ARG_OUTOFRANGE, ...) are reported as one line
+  "hylc: error: <message>" on rank 0 of the communicator the error was raised on, other errors with PETSc's
+  full traceback. Call right after PetscInitialize() (HylcInitialize() does).
+
+  Not collective
+
+  Options Database Key:
+. -hylc_traceback - keep PETSc's handler for all errors
+
+  Level: developer
+
+.seealso: HylcInitialize(), HylcMainFinalize()
+@*/
 PetscErrorCode HylcPushErrorHandler(void)
 {
   PetscBool tb = PETSC_FALSE;

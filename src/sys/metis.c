@@ -1,6 +1,6 @@
 /* The fill-reducing ordering "metisnd" (MATORDERINGMETISND): METIS 5 nested dissection (METIS_NodeND)
    of the symmetrized adjacency graph of a sequential matrix, registered with MatOrderingRegister() by
-   HylcInitializePackage() because Debian's PETSc is built without METIS. Usable wherever PETSc takes an
+   HylcSysInitializePackage() because Debian's PETSc is built without METIS. Usable wherever PETSc takes an
    ordering: MatGetOrdering(), -pc_factor_mat_ordering_type metisnd, PCFactorSetMatOrderingType().
 
    Options (global, no prefix; read at each call, and checked and listed by -help in HylcMetisSetFromOptions()):
@@ -173,7 +173,7 @@ PetscErrorCode HylcMetisNodeND(PetscInt n, const PetscInt xadj[], const PetscInt
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Registers "metisnd" with PETSc (called by HylcInitializePackage()). Not collective. */
+/* Registers "metisnd" with PETSc (called by HylcSysInitializePackage()). Not collective. */
 PetscErrorCode HylcMetisRegister(void)
 {
   PetscFunctionBegin;

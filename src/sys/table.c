@@ -11,8 +11,6 @@
 #include <string.h>
 #include <strings.h>
 
-const char *const HylcTableStrainNames[7] = {"sx", "sa", "sy", "II00", "II01", "II11", "psi"};
-
 /* " (-option)" or "" */
 static void OptionText(const char option[], char buf[], size_t len)
 {

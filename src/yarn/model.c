@@ -5,6 +5,20 @@
 static const char *const ContactTypes[]   = {"quadrature", "closest", "HylcContactType", "HYLC_CONTACT_", NULL};
 static const char *const CurvatureTypes[] = {"averaged", "per_edge", "HylcRodCurvatureVariant", "HYLC_ROD_CURVATURE_", NULL};
 
+/*@C
+  HylcYarnModelDefault - The default yarn model (docs/method.md §11): E = 1e6 Pa, Es = E, G = E/2.5,
+  kc = 0.7 E r, the pattern's radius, the quadrature contact with 4 points per segment, an exclusion arc of
+  3 r, the averaged-frame curvature.
+
+  Not collective
+
+  Output Parameter:
+. m - the model
+
+  Level: beginner
+
+.seealso: HylcYarnModelSetFromOptions(), HylcYarnModelGetConstants()
+@*/
 PetscErrorCode HylcYarnModelDefault(HylcYarnModel *m)
 {
   PetscFunctionBegin;
@@ -22,9 +36,18 @@ PetscErrorCode HylcYarnModelDefault(HylcYarnModel *m)
 }
 
 /*@C
-  HylcYarnModelSetFromOptions - Reads the yarn model options. Collective.
+  HylcYarnModelSetFromOptions - Reads the yarn model options after the given options prefix.
 
-  Options:
+  Collective
+
+  Input Parameters:
++ comm   - the communicator the options are read on
+- prefix - the options prefix (NULL: none): -<prefix>yarn_*
+
+  Input/Output Parameter:
+. m - the model: its values are the defaults of the options, replaced by those given
+
+  Options Database Keys:
 + -yarn_E <1e6>                  - bending Young's modulus (Pa); B = E pi r^4/4
 . -yarn_Es <E>                   - stretching modulus (Pa); k_s = Es pi r^2
 . -yarn_G <E/2.5>                - shear modulus (Pa); beta = G pi r^4/2
@@ -34,6 +57,10 @@ PetscErrorCode HylcYarnModelDefault(HylcYarnModel *m)
 . -yarn_contact_type <quadrature> - quadrature or closest
 . -yarn_exclude_arc <3>          - same-yarn segment pairs closer than this rest arc length (units of r) do not interact
 - -yarn_curvature <averaged>     - averaged or per_edge material curvature
+
+  Level: beginner
+
+.seealso: HylcYarnModelDefault(), HylcYarnModelView()
 @*/
 PetscErrorCode HylcYarnModelSetFromOptions(MPI_Comm comm, const char prefix[], HylcYarnModel *m)
 {
@@ -60,6 +87,24 @@ PetscErrorCode HylcYarnModelSetFromOptions(MPI_Comm comm, const char prefix[], H
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcYarnModelGetConstants - The constants of the model for a yarn of the pattern's radius: the radius (the
+  model's override if set), the moduli with their defaults resolved, k_s = Es pi r^2, B = E pi r^4/4,
+  beta = G pi r^4/2 and kc.
+
+  Not collective
+
+  Input Parameters:
++ m             - the model
+- patternRadius - the pattern's yarn radius (m)
+
+  Output Parameter:
+. c - the constants
+
+  Level: intermediate
+
+.seealso: HylcYarnModelDefault(), HylcYarnModelView()
+@*/
 PetscErrorCode HylcYarnModelGetConstants(const HylcYarnModel *m, PetscReal patternRadius, HylcYarnConstants *c)
 {
   PetscFunctionBegin;
@@ -74,6 +119,20 @@ PetscErrorCode HylcYarnModelGetConstants(const HylcYarnModel *m, PetscReal patte
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcYarnModelView - Prints the model's constants for a yarn of the pattern's radius (two lines).
+
+  Collective on the viewer
+
+  Input Parameters:
++ m             - the model
+. patternRadius - the pattern's yarn radius (m)
+- viewer        - an ASCII viewer
+
+  Level: intermediate
+
+.seealso: HylcYarnModelGetConstants()
+@*/
 PetscErrorCode HylcYarnModelView(const HylcYarnModel *m, PetscReal patternRadius, PetscViewer viewer)
 {
   HylcYarnConstants c;

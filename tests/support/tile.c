@@ -1,5 +1,6 @@
 /* HylcTile: energy, gradient and Hessian of a translation-periodic yarn tile (see tests/support/tile.h). */
 #include "tile.h"
+#include <hylc/periodic.h> /* the log event TILE_Evaluate */
 #include <hylc/contact.h>
 #include <hylc/geom.h>
 #include <hylc/rod.h>
@@ -59,6 +60,7 @@ PetscErrorCode HylcTileCreate(HylcPattern pat, const HylcYarnModel *model, HylcT
   HylcTile T;
 
   PetscFunctionBegin;
+  PetscCall(HylcPeriodicInitializePackage()); /* TILE_Evaluate is registered with the periodic tile's events */
   PetscCall(PetscNew(&T));
   PetscCall(PetscObjectReference((PetscObject)pat));
   T->pat   = pat;

@@ -58,7 +58,7 @@ static PetscBool NearKnot(HylcMaterial m, const double s[6], double d)
   PetscBool           near = PETSC_FALSE;
   HylcSpline1D const *s1;
   HylcSpline2D const *s2;
-  const PetscInt(*pairs)[2] = HylcMaterialPairs;
+  const int(*pairs)[2] = HylcMaterialPairs;
 
   Scales(m, sc);
   for (int k = 0; k < 3; k++) X[k] = s[k] / sc[k];

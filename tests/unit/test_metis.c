@@ -1,4 +1,4 @@
-/* The ordering "metisnd" (METIS_NodeND, registered by HylcInitializePackage()):
+/* The ordering "metisnd" (METIS_NodeND, registered by HylcSysInitializePackage()):
    - it returns a valid permutation, equal for rows and columns, for a 2D 5-point Laplacian, a structurally
      unsymmetric matrix, a matrix with disconnected blocks, a diagonal, a 1x1 and an empty matrix, and the
      reduced Hessian H_y of a bent stockinette tile (HylcPeriodic) shifted to K = H_y + |H_y|_inf I (SPD

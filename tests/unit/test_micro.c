@@ -442,7 +442,7 @@ static PetscErrorCode ViewToTempFile(PetscObject obj, char path[])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* the object: default prefix micro_, setters (and their refusal of bad values), a changed prefix reaches
+/* the object: no default prefix (keys -micro_*), setters (and their refusal of bad values), a changed prefix reaches
    the options, HylcMicroView prints what was set, the removed -<prefix>factor_type is an error naming its
    replacement, and the factorization PC chosen through HylcMicroGetFactorPC gives the same psi (1e-9) */
 static PetscErrorCode TestObject(void)
@@ -463,8 +463,7 @@ static PetscErrorCode TestObject(void)
   PetscCall(HylcYarnModelDefault(&m));
   PetscCall(HylcMicroCreate(PETSC_COMM_SELF, &M));
   PetscCall(PetscObjectGetOptionsPrefix((PetscObject)M, &prefix));
-  PetscCall(PetscStrcmp(prefix, "micro_", &eq));
-  HYLC_CHECK(eq, "default prefix %s, expected micro_", prefix);
+  HYLC_CHECK(!prefix, "default prefix %s, expected none (the keys are -micro_*)", prefix);
   /* bad values are refused with PETSC_ERR_USER_INPUT */
   PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
   ierr = HylcMicroSetTolerances(M, -1, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT);
@@ -473,18 +472,39 @@ static PetscErrorCode TestObject(void)
   PetscCall(HylcMicroSetTolerances(M, 1e-5, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT)); /* restore */
   /* a changed prefix: its options are read, the setters' values are viewed */
   PetscCall(HylcMicroSetOptionsPrefix(M, "other_"));
-  PetscCall(PetscOptionsSetValue(NULL, "-other_ls_max", "17"));
+  PetscCall(PetscObjectGetOptionsPrefix((PetscObject)M, &prefix));
+  PetscCall(PetscStrcmp(prefix, "other_", &eq));
+  HYLC_CHECK(eq, "prefix %s, expected other_", prefix);
+  PetscCall(PetscOptionsSetValue(NULL, "-other_micro_ls_max", "17"));
+  PetscCall(PetscOptionsSetValue(NULL, "-other_periodic_pair_margin", "1.06"));
   PetscCall(HylcMicroSetStepLimit(M, 0.07, PETSC_DEFAULT));
   PetscCall(HylcMicroSetPattern(M, p, &m));
   PetscCall(HylcMicroSetFromOptions(M));
   PetscCall(HylcMicroSetUp(M));
   PetscCall(ViewToTempFile((PetscObject)M, path));
-  HYLC_CHECK(FileHas(path, "17 trials") && FileHas(path, "step limit (0.07 +") && FileHas(path, "(other_)") && FileHas(path, "solver type hylc (-other_factor_pc_factor_mat_solver_type)") && FileHas(path, "(other_factor_)"), "HylcMicroView (%s) lacks the prefix, a setter's or an option's value", path);
+  HYLC_CHECK(FileHas(path, "17 trials") && FileHas(path, "step limit (0.07 +") && FileHas(path, "(other_)") && FileHas(path, "solver type hylc (-other_micro_factor_pc_factor_mat_solver_type)") && FileHas(path, "(other_micro_factor_)"), "HylcMicroView (%s) lacks the prefix, a setter's or an option's value", path);
   remove(path);
-  PetscCall(PetscOptionsClearValue(NULL, "-other_ls_max"));
+  {
+    HylcPeriodic P;
+    SNES         snes;
+    PetscCall(HylcMicroGetPeriodic(M, &P));
+    PetscCall(PetscObjectGetOptionsPrefix((PetscObject)P, &prefix));
+    PetscCall(PetscStrcmp(prefix, "other_", &eq));
+    HYLC_CHECK(eq, "the tile's prefix %s, expected other_ (the solver's)", prefix);
+    PetscCall(HylcMicroGetSNES(M, &snes));
+    PetscCall(PetscObjectGetOptionsPrefix((PetscObject)snes, &prefix));
+    PetscCall(PetscStrcmp(prefix, "other_micro_", &eq));
+    HYLC_CHECK(eq, "the SNES's prefix %s, expected other_micro_", prefix);
+    char path2[] = "/tmp/hylc_test_micro_viewXXXXXX";
+    PetscCall(ViewToTempFile((PetscObject)P, path2));
+    HYLC_CHECK(FileHas(path2, "pair margin 1.06") && FileHas(path2, "(other_)"), "-other_periodic_pair_margin 1.06 was not read by the tile, or its prefix is not other_ (%s)", path2);
+    remove(path2);
+  }
+  PetscCall(PetscOptionsClearValue(NULL, "-other_micro_ls_max"));
+  PetscCall(PetscOptionsClearValue(NULL, "-other_periodic_pair_margin"));
   PetscCall(HylcMicroSolve(M, z, &r1));
   /* the removed -factor_type */
-  PetscCall(CheckOptionRefused(M, "-other_factor_type", "petsc"));
+  PetscCall(CheckOptionRefused(M, "-other_micro_factor_type", "petsc"));
   PetscCall(HylcMicroDestroy(&M));
   /* PETSc's Cholesky chosen through the getter */
   PetscCall(HylcMicroCreate(PETSC_COMM_SELF, &M));

@@ -1,5 +1,5 @@
 #pragma once
-/* The one private HDF5 helper layer (src/sys/h5util.c) of the samples writer (src/sampler/h5samples.c),
+/* The one private HDF5 helper layer (src/sys/h5util.c) of the samples writer (src/samples/h5samples.c),
    the material writer (src/material/h5.c) and hylcmat's material reader (src/hylcmat/h5.c). The
    functions are plain C99 and HDF5 only (hylcmat is built without PETSc): each returns HDF5's negative
    value on failure and leaves HDF5's error stack for HylcH5ErrorText(). The error-wrapping macros turn

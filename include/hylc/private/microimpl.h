@@ -4,6 +4,7 @@
      src/micro/opts.c   the parameters: setters, SetFromOptions, View;
      src/micro/kkt.c    the KKT preconditioner (S22): a PCSHELL around PCCHOLESKY and its Schur complement;
      src/micro/snes.c   the SNES callbacks: objective, residual, Jacobian, line search, convergence test;
+     src/micro/regularization.c the schedule of alpha (paper, adaptive, hybrid, x 10 retries, fallback);
      src/micro/saddle.c the second-order test of a converged state and the escape from saddle points. */
 #include <hylc/micro.h>
 #include <petsc/private/petscimpl.h>
@@ -39,35 +40,29 @@ struct _HylcMicroOps {
   PetscErrorCode (*view)(HylcMicro, PetscViewer);
 };
 
-struct _p_HylcMicro {
-  PETSCHEADER(struct _HylcMicroOps);
-  HylcMicroParams par;
-  HylcPattern     pat;
-  HylcYarnModel   model;
-  HylcPeriodic    P;           /* created by HylcMicroGetPeriodic(); given the pattern by HylcMicroSetPattern() */
-  PetscBool       setupcalled; /* the matrices, vectors and KKT buffers of the current pattern are built */
-  PetscInt        ny, m;       /* unknowns, constraint rows */
-  PetscReal       mu, r, ks;   /* twist scale, yarn radius, stretching stiffness k_s */
-  SNES            snes;        /* created and configured by HylcMicroGetSNES(); reset (SNESReset) for a new pattern */
-  Mat             K;
-  Vec             X, mvec;
-  PetscReal      *yw, *gw; /* work: unscaled unknowns and gradient */
-  PC              inner;   /* PCCHOLESKY of K (prefix <micro_>factor_; solver type hylc by default) */
-  PetscBool       cholmod; /* the solver type is CHOLMOD (its not-positive-definite error is a failed factorization) */
-  Mat             Bd, Zd;  /* dense n x m: the Schur right-hand sides M A^T and Z = K^-1 M A^T (on Bw, Z) */
-  PetscReal      *Bw;
-  /* KKT data */
-  const PetscReal *A, *dL, *AAtinv;
+/* the factorization of K and the KKT data (S22) of the current pattern and strain (kkt.c) */
+typedef struct {
+  PC               inner;   /* PCCHOLESKY of K (prefix <prefix>micro_factor_; solver type hylc by default) */
+  PetscBool        cholmod; /* the solver type is CHOLMOD (its not-positive-definite error is a failed factorization) */
+  Mat              Bd, Zd;  /* dense n x m: the Schur right-hand sides M A^T and Z = K^-1 M A^T (on Bw, Z) */
+  PetscReal       *Bw;
+  const PetscReal *A, *dL, *AAtinv; /* the tile's constraints (borrowed) */
   PetscReal       *c, *Z, *S, *Sinv, *wl, *tmp;
-  PetscReal        alpha;
-  PetscReal        gmax;       /* ||M g||_inf of the iterate the Newton matrix was formed at */
-  PetscReal        ahat;       /* adaptive schedule: alpha^ of the next Newton matrix */
-  PetscReal        gmax0;      /* ||M g||_inf at the first iteration of the solve */
-  PetscBool        adapting;   /* alpha^ follows the adaptive logic in this iteration (adaptive, or hybrid after its switch) */
-  PetscBool        reverted;   /* hybrid: negative curvature after the switch sent this solve back to the paper's schedule */
-  PetscInt         projNeg;    /* negative eigenvalues of K on the constraints' tangent space (when counted) */
-  PetscInt         retriesJac; /* retries before this Newton matrix was formed */
-  /* state of a solve */
+} HylcMicroKKT;
+
+/* the state of one solve: zeroed at its start by HylcMicroResetSolveState_Private() (status converged, no
+   energy yet); everything the method changes while it runs */
+typedef struct {
+  /* the regularization (regularization.c) */
+  PetscReal alpha;
+  PetscReal gmax;       /* ||M g||_inf of the iterate the Newton matrix was formed at */
+  PetscReal ahat;       /* adaptive schedule: alpha^ of the next Newton matrix */
+  PetscReal gmax0;      /* ||M g||_inf at the first iteration of the solve */
+  PetscBool adapting;   /* alpha^ follows the adaptive logic in this iteration (adaptive, or hybrid after its switch) */
+  PetscBool reverted;   /* hybrid: negative curvature after the switch sent this solve back to the paper's schedule */
+  PetscInt  projNeg;    /* negative eigenvalues of K on the constraints' tangent space (when counted) */
+  PetscInt  retriesJac; /* retries before this Newton matrix was formed */
+  /* the iteration */
   PetscBool       haveH; /* K holds the unscaled H_y of the state in X */
   PetscReal       E0;    /* energy of the current iterate */
   PetscReal       parts[4];
@@ -80,25 +75,48 @@ struct _p_HylcMicro {
   PetscBool       statusSet;
   PetscBool       resolved;     /* a rejected step whose first-order decrease is below the energy's rounding: converged as far as E can tell */
   PetscBool       factorFailed; /* the Newton matrix could not be factored after every alpha increase */
-  PetscBool       inject;       /* this solve raises the injected error (HYLC_INJECT_ERROR) */
-  PetscInt        injectAt;     /* the value of HYLC_INJECT_ERROR of this solve (for the message) */
   PetscInt        itBase;       /* Newton iterations of this solve before the current SNESSolve (restarts after saddle escapes) */
   PetscBool       restart;      /* the current SNESSolve continues the solve after a saddle escape */
   PetscInt        escapes;      /* saddle escapes of this solve */
-  PetscInt        nhist, caphist;
-  PetscReal      *hist;
-  PetscReal      *uinit;     /* HylcMicroSetInitialState(): the fluctuation u~ = y - y0 (twists included) of a state */
-  PetscInt        nuinit;    /* its length (the tile's ny when it was set) */
-  PetscBool       haveInit;  /* the next solve starts from y0 + uinit (used once) */
-  PetscBool       continued; /* the last solve started from a state given by HylcMicroSetInitialState() */
+  PetscInt        nhist;        /* energies in the history (hist) */
+  PetscBool       continued;    /* this solve started from a state given by HylcMicroSetInitialState() */
+} HylcMicroSolveState;
+
+/* HylcMicro: the parameters (par: what the setters and options set), the pattern's matrices and vectors,
+   the factorization (kkt) and the state of one solve (st) */
+struct _p_HylcMicro {
+  PETSCHEADER(struct _HylcMicroOps);
+  HylcMicroParams     par;
+  HylcPattern         pat;
+  HylcYarnModel       model;
+  HylcPeriodic        P;           /* created by HylcMicroGetPeriodic(); given the pattern by HylcMicroSetPattern() */
+  PetscBool           setupcalled; /* the matrices, vectors and KKT buffers of the current pattern are built */
+  PetscInt            ny, m;       /* unknowns, constraint rows */
+  PetscReal           mu, r, ks;   /* twist scale, yarn radius, stretching stiffness k_s */
+  SNES                snes;        /* created and configured by HylcMicroGetSNES(); reset (SNESReset) for a new pattern */
+  Mat                 K;
+  Vec                 X, mvec;
+  PetscReal          *yw, *gw; /* work: unscaled unknowns and gradient */
+  PetscInt            caphist;
+  PetscReal          *hist; /* the energy history of the last solve (st.nhist values) */
+  HylcMicroKKT        kkt;
+  HylcMicroSolveState st;
+  /* inputs of the next solve */
+  PetscReal *uinit;    /* HylcMicroSetInitialState(): the fluctuation u~ = y - y0 (twists included) of a state */
+  PetscInt   nuinit;   /* its length (the tile's ny when it was set) */
+  PetscBool  haveInit; /* the next solve starts from y0 + uinit (used once) */
+  PetscBool  inject;   /* this solve raises the injected error (HYLC_INJECT_ERROR) */
+  PetscInt   injectAt; /* the value of HYLC_INJECT_ERROR of this solve (for the message) */
 };
 
-/* the prefix of the options, for messages */
+/* the object's options prefix ("" if none), for messages: "-%smicro_alpha_start" */
 static inline const char *HylcMicroPrefix_Private(HylcMicro M)
 {
   return ((PetscObject)M)->prefix ? ((PetscObject)M)->prefix : "";
 }
 
+/* micro.c */
+PETSC_INTERN PetscErrorCode HylcMicroResetSolveState_Private(HylcMicro);
 /* kkt.c */
 PETSC_INTERN PetscErrorCode HylcMicroKKTFactor_Private(HylcMicro, PetscBool *);
 PETSC_INTERN PetscErrorCode HylcMicroKKTSolve_Private(HylcMicro, Vec, Vec);
@@ -110,10 +128,16 @@ PETSC_INTERN PetscErrorCode HylcMicroDestroyKKT_Private(HylcMicro);
 PETSC_INTERN PetscErrorCode HylcMicroCreateSNES_Private(HylcMicro);
 PETSC_INTERN PetscErrorCode HylcMicroSetUpSNES_Private(HylcMicro);
 PETSC_INTERN PetscErrorCode HylcMicroToY_Private(HylcMicro, Vec, PetscReal[]);
-PETSC_INTERN PetscReal      HylcMicroPaperAlphaHat_Private(HylcMicro, PetscInt);
 PETSC_INTERN PetscErrorCode HylcMicroSafeEnergy_Private(HylcMicro, Vec, PetscReal *, PetscReal[4]);
 PETSC_INTERN PetscErrorCode HylcMicroProjectedGradientNorm_Private(HylcMicro, const PetscReal[], PetscReal *);
 PETSC_INTERN PetscErrorCode HylcMicroStepLimit_Private(HylcMicro, Vec, PetscReal *);
 PETSC_INTERN PetscErrorCode HylcMicroPushEnergy_Private(HylcMicro, PetscReal);
+/* regularization.c: the schedule of alpha */
+PETSC_INTERN PetscReal      HylcMicroPaperAlphaHat_Private(HylcMicro, PetscInt);
+PETSC_INTERN PetscErrorCode HylcMicroRegularizationAlpha_Private(HylcMicro, PetscInt, PetscReal);
+PETSC_INTERN PetscErrorCode HylcMicroRegularizationAdapt_Private(HylcMicro, PetscBool, PetscBool, PetscReal, PetscReal, PetscReal);
+PETSC_INTERN PetscErrorCode HylcMicroRegularizationIncrease_Private(HylcMicro, PetscBool *);
+PETSC_INTERN PetscErrorCode HylcMicroRegularizationRevert_Private(HylcMicro, PetscBool *);
+PETSC_INTERN PetscBool      HylcMicroRegularizationFallback_Private(HylcMicro, HylcMicroStatus);
 /* saddle.c */
 PETSC_INTERN PetscErrorCode HylcMicroSaddle_Private(HylcMicro, PetscBool, PetscInt *, PetscBool *);

@@ -40,9 +40,18 @@ PETSC_INTERN PetscErrorCode HylcPatternBuildLoops_Private(HylcPattern);
 PETSC_INTERN PetscErrorCode HylcPatternReset_Private(HylcPattern);
 /* Allocates the data arrays for nv vertices. */
 PETSC_INTERN PetscErrorCode HylcPatternAllocate_Private(HylcPattern, PetscInt);
-/* Generators */
-PETSC_INTERN PetscErrorCode HylcPatternGenerateWoven_Private(HylcPattern, HylcPatternType, const HylcPatternGenParams *);
-PETSC_INTERN PetscErrorCode HylcPatternGenerateKnit_Private(HylcPattern, HylcPatternType, const HylcPatternGenParams *);
+/* The built-in generators (generate.c: wovens; knitgen.c: knits), registered by HylcPatternRegisterAll() */
+PETSC_INTERN PetscErrorCode HylcPatternGeneratePlain_Private(HylcPattern, const HylcPatternGenParams *);
+PETSC_INTERN PetscErrorCode HylcPatternGenerateBasket_Private(HylcPattern, const HylcPatternGenParams *);
+PETSC_INTERN PetscErrorCode HylcPatternGenerateTwill_Private(HylcPattern, const HylcPatternGenParams *);
+PETSC_INTERN PetscErrorCode HylcPatternGenerateSatin_Private(HylcPattern, const HylcPatternGenParams *);
+PETSC_INTERN PetscErrorCode HylcPatternGenerateStockinette_Private(HylcPattern, const HylcPatternGenParams *);
+PETSC_INTERN PetscErrorCode HylcPatternGenerateRib_Private(HylcPattern, const HylcPatternGenParams *);
+/* The registry (registry.c): the source of a type (NULL if none registered), the registered names joined by
+   sep (trailing: also after the last one), and the list's end at PetscFinalize() */
+PETSC_INTERN PetscErrorCode HylcPatternFindSource_Private(const char[], HylcPatternGenerator *);
+PETSC_INTERN PetscErrorCode HylcPatternSourceNames_Private(const char[], PetscBool, char[], size_t);
+PETSC_INTERN PetscErrorCode HylcPatternRegistryDestroy_Private(void);
 
 /* Rank-0-only work (reading a file, writing one) reported on every rank: push
    HylcPatternKeepMessage_Private with a char[HYLC_PATTERN_MSG_LEN] as context on rank 0, keep the error

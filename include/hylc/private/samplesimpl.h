@@ -1,5 +1,5 @@
 #pragma once
-/* Private to the samples storage (src/sampler/journal.c, src/sampler/h5samples.c). */
+/* Private to the samples storage (src/samples/journal.c, src/samples/h5samples.c). */
 #include <hylc/samples.h>
 #include <string.h>
 

@@ -1,7 +1,7 @@
 /* The journal of a sampling run (include/hylc/samples.h; format in docs/output-format.md): an
    append-only binary file of fixed-size checksummed records that survives SIGKILL at any moment, opened
    under an exclusive flock and tied to the run by its identity (format 2). Plain C stdio + POSIX. The
-   HDF5 samples file is written by src/sampler/h5samples.c. */
+   HDF5 samples file is written by src/samples/h5samples.c. */
 #include <hylc/samples.h>
 #include <hylc/sha256.h>
 #include <hylc/private/samplesimpl.h>
@@ -369,6 +369,22 @@ PetscErrorCode HylcJournalOpen(const char path[], HylcJournalMode mode, long nsa
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcJournalAppend - Appends records to the journal, then flushes and fsyncs it: once it returns, the
+  records survive SIGKILL and power loss. A later record of a sample replaces an earlier one. On a write
+  error (a full disk) a partial record is cut off and the error names the journal.
+
+  Not collective
+
+  Input Parameters:
++ j    - the journal
+. recs - the records (index in [0, nsamples), a valid term and status)
+- n    - their number
+
+  Level: developer
+
+.seealso: HylcJournalOpen(), HylcJournalGetDone(), HylcJournalGetRecords()
+@*/
 PetscErrorCode HylcJournalAppend(HylcJournal j, const HylcSampleRecord recs[], PetscInt n)
 {
   unsigned char *buf;
@@ -403,6 +419,22 @@ PetscErrorCode HylcJournalAppend(HylcJournal j, const HylcSampleRecord recs[], P
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcJournalGetDone - The samples the journal holds a record of.
+
+  Not collective
+
+  Input Parameter:
+. j - the journal
+
+  Output Parameters:
++ ndone - the number of samples with a record (may be NULL)
+- done  - per sample 1 if it has a record, else 0 (length nsamples, owned by the journal; may be NULL)
+
+  Level: developer
+
+.seealso: HylcJournalGetRecords(), HylcJournalGetInfo()
+@*/
 PetscErrorCode HylcJournalGetDone(HylcJournal j, PetscInt *ndone, const unsigned char **done)
 {
   PetscFunctionBegin;
@@ -412,6 +444,21 @@ PetscErrorCode HylcJournalGetDone(HylcJournal j, PetscInt *ndone, const unsigned
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcJournalGetRecords - The records of the journal, indexed by sample.
+
+  Not collective
+
+  Input Parameter:
+. j - the journal
+
+  Output Parameter:
+. recs - the records (length nsamples, valid where HylcJournalGetDone() says done; owned by the journal)
+
+  Level: developer
+
+.seealso: HylcJournalGetDone(), HylcJournalAppend()
+@*/
 PetscErrorCode HylcJournalGetRecords(HylcJournal j, const HylcSampleRecord **recs)
 {
   PetscFunctionBegin;
@@ -421,6 +468,22 @@ PetscErrorCode HylcJournalGetRecords(HylcJournal j, const HylcSampleRecord **rec
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcJournalGetInfo - The size of the run the journal belongs to and what its opening dropped.
+
+  Not collective
+
+  Input Parameter:
+. j - the journal
+
+  Output Parameters:
++ nsamples - the number of samples of the run (may be NULL)
+- ndropped - the records dropped from a torn tail when the journal was opened (may be NULL)
+
+  Level: developer
+
+.seealso: HylcJournalOpen(), HylcJournalGetDone()
+@*/
 PetscErrorCode HylcJournalGetInfo(HylcJournal j, long *nsamples, PetscInt *ndropped)
 {
   PetscFunctionBegin;
@@ -430,6 +493,19 @@ PetscErrorCode HylcJournalGetInfo(HylcJournal j, long *nsamples, PetscInt *ndrop
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcJournalClose - Closes the journal's file (the journal stays on disk), releases its lock and frees the
+  object; accepts NULL and sets the handle to NULL.
+
+  Not collective
+
+  Input Parameter:
+. journal - the journal
+
+  Level: developer
+
+.seealso: HylcJournalOpen()
+@*/
 PetscErrorCode HylcJournalClose(HylcJournal *journal)
 {
   HylcJournal j;

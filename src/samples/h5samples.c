@@ -1,6 +1,6 @@
 /* The HDF5 samples file (include/hylc/samples.h; schema in docs/output-format.md): built in memory
    through the private HDF5 helper layer (include/hylc/private/h5util.h) and written atomically; and its
-   reader. The journal is src/sampler/journal.c. */
+   reader. The journal is src/samples/journal.c. */
 #include <hylc/samples.h>
 #include <hylc/private/samplesimpl.h>
 #include <hylc/private/h5util.h>

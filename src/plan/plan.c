@@ -3,20 +3,23 @@
 #include <math.h>
 #include <string.h>
 
-static const char *const TermNames[HYLC_PLAN_NTERM] = {"zero", "sx", "sa", "sy", "II00", "II11", "sx-sa", "sx-sy", "sx-II00", "sx-II11", "sa-sy", "sa-II00", "sa-II11", "sy-II00", "sy-II11"};
-
-const char *HylcPlanTermName(int t) { return t >= 0 && t < HYLC_PLAN_NTERM ? TermNames[t] : "unknown"; }
-
-static const int PairI[9] = {0, 0, 0, 0, 1, 1, 1, 2, 2};
-static const int PairJ[9] = {1, 2, 3, 4, 2, 3, 4, 3, 4};
+/* the terms are the shared vocabulary's (include/hylc/strain.h) after the zero sample: 1..5 its coordinates,
+   6..14 its pairs */
+const char *HylcPlanTermName(int t)
+{
+  if (t == 0) return "zero";
+  if (t >= 1 && t <= HYLC_NCOORD) return HylcCoordNames[t - 1];
+  if (t > HYLC_NCOORD && t < HYLC_PLAN_NTERM) return HylcPairNames[t - 1 - HYLC_NCOORD];
+  return "unknown";
+}
 
 void HylcPlanPair(int t, int *ci, int *cj)
 {
-  *ci = PairI[t - 6];
-  *cj = PairJ[t - 6];
+  *ci = HylcPairCoords[t - 1 - HYLC_NCOORD][0];
+  *cj = HylcPairCoords[t - 1 - HYLC_NCOORD][1];
 }
 
-int HylcPlanStrainIndex(int c) { return c < 4 ? c : 5; }
+int HylcPlanStrainIndex(int c) { return HylcCoordStrain[c]; }
 
 int HylcSampleRange(int c, double zmin, double zmax, int N, double Z[])
 {

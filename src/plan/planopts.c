@@ -1,6 +1,6 @@
 /* The sampling plan's options, shared by hylc-sample and hylc-calibrate (one spelling, one check). */
 #include <hylc/options.h>
-#include <hylc/sampler.h>
+#include <hylc/plan.h>
 #include <string.h>
 
 const char *const HylcPlanFamilies[] = {"woven", "stockinette", "honeycomb", "rib", "HylcPlanFamily", "", NULL};
@@ -27,9 +27,9 @@ const char *const HylcPlanFamilies[] = {"woven", "stockinette", "honeycomb", "ri
 @*/
 PetscErrorCode HylcPlanRangesFromOptions(PetscOptionItems *PetscOptionsObject, MPI_Comm comm, const char man[], HylcPlanRanges *ranges)
 {
-  const char *cn[HYLC_PLAN_NCOORD] = {"sx", "sa", "sy", "II00", "II11"};
-  PetscEnum   fam                  = (PetscEnum)ranges->family;
-  HylcPlan    p;
+  const char *const *cn  = HylcCoordNames;
+  PetscEnum          fam = (PetscEnum)ranges->family;
+  HylcPlan           p;
 
   PetscFunctionBegin;
   PetscCall(PetscOptionsEnum("-sampler_family", "Default sampling ranges of docs/method.md §8 (II scaled by 1 mm / r)", man, HylcPlanFamilies, fam, &fam, NULL));
@@ -72,8 +72,8 @@ PetscErrorCode HylcPlanRangesFromOptions(PetscOptionItems *PetscOptionsObject, M
 @*/
 PetscErrorCode HylcPlanRangesApply(MPI_Comm comm, const HylcPlanRanges *ranges, PetscReal radius, HylcPlan *plan)
 {
-  const char *cn[HYLC_PLAN_NCOORD] = {"sx", "sa", "sy", "II00", "II11"};
-  HylcPlan    p                    = *plan;
+  const char *const *cn = HylcCoordNames;
+  HylcPlan           p  = *plan;
 
   PetscFunctionBegin;
   PetscCheck(ranges->family >= 0 && ranges->family < 4 && !HylcPlanDefaults(HylcPlanFamilies[ranges->family], 1e-3 / radius, &p), comm, PETSC_ERR_USER_INPUT, "Unknown sampling family");

@@ -5,6 +5,21 @@
 const char *const        HylcReferenceModes[] = {"auto", "compute", "none", "relax", "HylcReferenceMode", "HYLC_REFERENCE_", NULL};
 static const char *const Kinds[]              = {"auto", "knit", "woven", "HylcReferenceKind", "", NULL};
 
+/*@C
+  HylcReferenceParamsDefault - The default parameters of the reference state (Algorithm C1): the
+  stress-free relaxation to E < 1e-10 J in at most 30 rounds, the tension factors of the pattern's kind
+  (auto), the in-plane minimum over sx, sy in [-0.4, 0.2] (Nelder-Mead, 1e-4, at most 80 solves), no options
+  prefix.
+
+  Not collective
+
+  Output Parameter:
+. p - the parameters
+
+  Level: intermediate
+
+.seealso: HylcReferenceParamsSetFromOptions(), HylcReferenceStateCompute()
+@*/
 PetscErrorCode HylcReferenceParamsDefault(HylcReferenceParams *p)
 {
   PetscFunctionBegin;
@@ -18,18 +33,51 @@ PetscErrorCode HylcReferenceParamsDefault(HylcReferenceParams *p)
   p->hi         = 0.2;
   p->xtol       = 1e-4;
   p->maxEvals   = 80;
+  p->prefix[0]  = 0;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode HylcReferenceParamsSetFromOptions(MPI_Comm comm, HylcReferenceParams *p)
+/*@C
+  HylcReferenceParamsSetFromOptions - Reads the options of the reference state after the given options
+  prefix, which the parameters keep for the solvers HylcReferenceStateCompute() creates (-<prefix>micro_*).
+
+  Collective
+
+  Input Parameters:
++ comm   - the communicator the options are read on
+- prefix - the options prefix (NULL: none), at most 255 characters
+
+  Input/Output Parameter:
+. p - the parameters: their values are the defaults of the options, replaced by those given
+
+  Options Database Keys:
++ -reference_etol <1e-10> - stress-free relaxation: stop when the energy is below this (J)
+. -reference_max_rounds <30> - stress-free relaxation: at most this many rounds
+. -reference_kind <auto> - tension factors: auto, knit or woven
+. -reference_stress_free <true> - reset the rest values to the geometry and relax
+. -reference_tension <true> - apply the tension factors
+. -reference_minimum <true> - find the in-plane minimum over the periods
+. -reference_bounds <-0.4,0.2> - bounds lo,hi of sx and sy in the minimum (-1 < lo < 0 < hi)
+. -reference_xtol <1e-4> - Nelder-Mead simplex size tolerance (strain)
+- -reference_max_evals <80> - at most this many solves in the minimum
+
+  Level: intermediate
+
+.seealso: HylcReferenceParamsDefault(), HylcReferenceStateCompute()
+@*/
+PetscErrorCode HylcReferenceParamsSetFromOptions(MPI_Comm comm, const char prefix[], HylcReferenceParams *p)
 {
   PetscEnum kind = (PetscEnum)p->kind;
   PetscReal b[2] = {p->lo, p->hi};
   PetscInt  nb   = 2;
   PetscBool set;
+  size_t    len;
 
   PetscFunctionBegin;
-  PetscOptionsBegin(comm, NULL, "Reference state (Algorithm C1)", "HylcReferenceState");
+  PetscCall(PetscStrlen(prefix, &len));
+  PetscCheck(len < sizeof(p->prefix), comm, PETSC_ERR_ARG_SIZ, "Options prefix %s is longer than %d characters", prefix, (int)sizeof(p->prefix) - 1);
+  PetscCall(PetscStrncpy(p->prefix, prefix ? prefix : "", sizeof(p->prefix)));
+  PetscOptionsBegin(comm, prefix, "Reference state (Algorithm C1)", "HylcReferenceState");
   PetscCall(HylcOptionsReal("-reference_etol", "Stress-free relaxation: stop when the energy is below this (J)", "HylcReferenceStateCompute", p->etol, &p->etol, NULL));
   PetscCall(PetscOptionsInt("-reference_max_rounds", "Stress-free relaxation: at most this many reset-and-relax rounds", "HylcReferenceStateCompute", p->maxRounds, &p->maxRounds, NULL));
   PetscCall(PetscOptionsEnum("-reference_kind", "Tension factors: knit (rest lengths x 0.9, curvatures x 0.8) or woven (curvatures x 0.9); auto: knit if every yarn runs along x", "HylcReferenceStateCompute", Kinds, kind, &kind, NULL));
@@ -40,7 +88,7 @@ PetscErrorCode HylcReferenceParamsSetFromOptions(MPI_Comm comm, HylcReferencePar
   PetscCall(HylcOptionsReal("-reference_xtol", "In-plane minimum: Nelder-Mead simplex size tolerance (strain)", "HylcReferenceStateCompute", p->xtol, &p->xtol, NULL));
   PetscCall(PetscOptionsInt("-reference_max_evals", "In-plane minimum: at most this many solves", "HylcReferenceStateCompute", p->maxEvals, &p->maxEvals, NULL));
   PetscOptionsEnd();
-  PetscCheck(!set || (nb == 2 && b[0] < 0 && b[1] > 0 && b[0] > -1), comm, PETSC_ERR_USER_INPUT, "-reference_bounds needs lo,hi with -1 < lo < 0 < hi");
+  PetscCheck(!set || (nb == 2 && b[0] < 0 && b[1] > 0 && b[0] > -1), comm, PETSC_ERR_USER_INPUT, "-%sreference_bounds needs lo,hi with -1 < lo < 0 < hi", p->prefix);
   p->lo   = b[0];
   p->hi   = b[1];
   p->kind = (PetscInt)kind;
@@ -129,7 +177,7 @@ static PetscErrorCode InPlaneMinimum(HylcMicro M, const HylcReferenceParams *par
 }
 
 /* the equilibrium of pattern p at in-plane strain (sx, sy) as a new pattern */
-static PetscErrorCode Relaxed(HylcPattern p, const HylcYarnModel *model, PetscReal sx, PetscReal sy, HylcPattern *out, PetscReal *E, HylcMicroStatus *status)
+static PetscErrorCode Relaxed(HylcPattern p, const HylcYarnModel *model, const HylcReferenceParams *par, PetscReal sx, PetscReal sy, HylcPattern *out, PetscReal *E, HylcMicroStatus *status)
 {
   HylcMicro       M;
   HylcMicroResult r;
@@ -138,6 +186,7 @@ static PetscErrorCode Relaxed(HylcPattern p, const HylcYarnModel *model, PetscRe
 
   PetscFunctionBegin;
   PetscCall(HylcMicroCreate(PETSC_COMM_SELF, &M));
+  if (par->prefix[0]) PetscCall(HylcMicroSetOptionsPrefix(M, par->prefix));
   PetscCall(HylcMicroSetPattern(M, p, model));
   PetscCall(HylcMicroSetFromOptions(M));
   PetscCall(HylcMicroSolve(M, z, &r));
@@ -167,7 +216,7 @@ PetscErrorCode HylcReferenceStateCompute(HylcPattern in, const HylcYarnModel *mo
   PetscBool stuck = PETSC_FALSE;
   for (round = 0; par->stressFree && round < par->maxRounds; round++) {
     PetscCall(HylcPatternSetRestFromGeometry(p));
-    PetscCall(Relaxed(p, model, 0, 0, &q, &E, &st));
+    PetscCall(Relaxed(p, model, par, 0, 0, &q, &E, &st));
     PetscCall(HylcPatternDestroy(&p));
     p = q;
     if (v) PetscCall(PetscViewerASCIIPrintf(v, "[reference] stress-free round %d: E = %.6e J (%s)\n", (int)round, (double)E, HylcMicroStatuses[st]));
@@ -201,12 +250,13 @@ PetscErrorCode HylcReferenceStateCompute(HylcPattern in, const HylcYarnModel *mo
   if (par->minimum) {
     HylcMicro M;
     PetscCall(HylcMicroCreate(PETSC_COMM_SELF, &M));
+    if (par->prefix[0]) PetscCall(HylcMicroSetOptionsPrefix(M, par->prefix));
     PetscCall(HylcMicroSetPattern(M, p, model));
     PetscCall(HylcMicroSetFromOptions(M));
     PetscCall(InPlaneMinimum(M, par, v, best, &Eb));
     PetscCall(HylcMicroDestroy(&M));
   }
-  PetscCall(Relaxed(p, model, best[0], best[1], &q, &E, &st));
+  PetscCall(Relaxed(p, model, par, best[0], best[1], &q, &E, &st));
   PetscCheck(st == HYLC_MICRO_CONVERGED, PetscObjectComm((PetscObject)in), PETSC_ERR_NOT_CONVERGED, "The equilibrium at the in-plane minimum did not converge (%s)", HylcMicroStatuses[st]);
   PetscCall(HylcPatternDestroy(&p));
   /* 4. recentre */
