@@ -78,5 +78,10 @@ PETSC_EXTERN PetscErrorCode HylcShareError(MPI_Comm, PetscErrorCode);
 /* A uniaxial curve as CSV (docs/fabric-uniaxial.md): the header strain,T_N_per_m,lateral_strain_sa,lateral_strain_s2
    and one row per point (s2: sy for a test along x, sx along y), written atomically. Not collective. */
 PETSC_EXTERN PetscErrorCode HylcWriteUniaxialCSV(const char[], PetscInt, const PetscReal[], const PetscReal[], const PetscReal[], const PetscReal[]);
-/* Refuses options nothing has read (before any work). Collective. */
+/* Refuses options nothing has read (before any work), except the options of other hylc programs' stages
+   (HylcOptionIsOtherStage()): every program accepts the whole study's options file. Collective. */
 PETSC_EXTERN PetscErrorCode HylcCheckOptionsUsed(MPI_Comm);
+/* The running program (argv[0], recorded by HylcInitialize()) and whether an option (with or without its
+   dash) is read by the stages of other hylc programs only (src/sys/programs.c). Not collective. */
+PETSC_EXTERN PetscErrorCode HylcSetProgramName(const char[]);
+PETSC_EXTERN PetscErrorCode HylcOptionIsOtherStage(const char[], PetscBool *);
