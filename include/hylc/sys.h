@@ -7,6 +7,10 @@
 #endif
 
 #define HYLC_VERSION_STRING "0.1.0"
+/* The git revision of the build ("unknown" outside a checkout), and what -version prints: the program,
+   hylc's version and revision, PETSc's, HDF5's and MPI's versions (src/sys/version.c). */
+PETSC_EXTERN const char    *HylcGetRevision(void);
+PETSC_EXTERN PetscErrorCode HylcVersionView(const char[]);
 
 /* Class ids and log events, registered by HylcInitializePackage(). */
 PETSC_EXTERN PetscClassId  HYLC_PATTERN_CLASSID;

@@ -1,5 +1,5 @@
 /* Concise error reports for user-input errors in hylc programs. */
-#include <hylc/sys.h>
+#include <hylc/private/sysimpl.h>
 #include <hylc/files.h>
 #include <unistd.h>
 #include <ctype.h>
@@ -189,6 +189,7 @@ static int HylcAllRanksFailed(void)
 int HylcMainFinalize(PetscErrorCode ierr)
 {
   PetscMPIInt size = 1;
+  HylcHelpFlush(); /* -help: hylc's options, then PETSc's */
   if (ierr) {
     /* An error raised on every rank (bad input, checked collectively) ends the job normally, so that the
        message printed by rank 0 is never cut off by an abort from another rank. An error on some ranks
@@ -673,7 +674,9 @@ static int HylcCheckOptionsFiles(int argc, char **argv, char msg[], size_t len)
   a missing file, a directory or a malformed YAML file (a .yaml/.yml file outside the subset of YAML that
   option files use: "key: value" lines, comments, "key:" blocks) ends the program with one line
   "hylc: error: file:line: problem" and exit status PETSC_ERR_USER_INPUT (PETSc's own reader would
-  report neither file nor line). Collective on MPI_COMM_WORLD (as PetscInitialize()).
+  report neither file nor line). -version prints HylcVersionView() and ends the program; -help is
+  printed sorted, hylc's options before PETSc's (src/sys/help.c). Collective on MPI_COMM_WORLD (as
+  PetscInitialize()).
   Programs write:  PetscCall(HylcInitialize(&argc, &argv, NULL, help));
 @*/
 PetscErrorCode HylcInitialize(int *argc, char ***argv, const char file[], const char help[])
@@ -687,7 +690,23 @@ PetscErrorCode HylcInitialize(int *argc, char ***argv, const char file[], const 
     }
     exit(PETSC_ERR_USER_INPUT);
   }
+  PetscBool version = PETSC_FALSE;
+  if (argc && argv) { /* -version: hylc's, not only PETSc's (which PETSc would print and go on) */
+    for (int i = 1; i < *argc; i++)
+      if (!strcmp((*argv)[i], "-version")) {
+        version = PETSC_TRUE;
+        for (int j = i; j + 1 < *argc; j++) (*argv)[j] = (*argv)[j + 1];
+        (*argc)--;
+        i--;
+      }
+  }
+  if (argc && argv && !version) HylcHelpCapture(*argc, *argv);
   PetscCall(PetscInitialize(argc, argv, file, help));
+  if (version) {
+    PetscErrorCode ierr = HylcVersionView(argc && *argc > 0 ? (*argv)[0] : NULL);
+    PetscFinalize();
+    exit(ierr ? (int)ierr : 0);
+  }
   PetscCall(HylcSetProgramName(argc && argv && *argc > 0 ? (*argv)[0] : NULL));
   PetscCallMPI(MPI_Comm_dup(PETSC_COMM_WORLD, &HylcErrorComm));
   PetscCall(HylcPushErrorHandler());

@@ -5,7 +5,7 @@
 
    A new option of a stage is added to its group below; tests/regression/options_stages.sh checks that
    every hylc option a program lists in -help is known here and accepted by every other program. */
-#include <hylc/sys.h>
+#include <hylc/private/sysimpl.h>
 #include <string.h>
 #include <strings.h>
 
@@ -309,4 +309,14 @@ PetscErrorCode HylcOptionIsOtherStage(const char name[], PetscBool *other)
     if (!strcmp(HylcProgram, HylcPrograms[i].program)) own = HylcPrograms[i].groups;
   *other = (PetscBool)(g && !(g & own));
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+int HylcOptionIsHylc_Private(const char name[])
+{
+  for (size_t i = 0; i < sizeof(HylcStageOptions) / sizeof(HylcStageOptions[0]); i++) {
+    const char  *e = HylcStageOptions[i].name;
+    const size_t n = strlen(e);
+    if (e[n - 1] != '*' && !strcasecmp(name, e)) return 1;
+  }
+  return 0;
 }
