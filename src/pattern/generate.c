@@ -229,6 +229,7 @@ PetscErrorCode HylcPatternGenerate(HylcPattern p, HylcPatternType type, const Hy
   else
     PetscCall(HylcPatternGenerateWoven_Private(p, t, g));
   p->filename[0] = 0;
+  p->state       = HYLC_PATTERN_STATE_GENERATED;
   PetscCall(PetscLogEventEnd(HYLC_PatternGenerate, p, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
