@@ -285,9 +285,8 @@ PetscErrorCode HylcReferenceStateForMode(HylcPattern in, HylcReferenceMode mode,
   if (v) { /* which it does, and why */
     HylcPatternState state;
     PetscCall(HylcPatternGetState(in, &state));
-    if (mode == HYLC_REFERENCE_NONE)
-      PetscCall(PetscViewerASCIIPrintf(v, "[reference] none asked for: the pattern as given\n"));
-    else if (!needed && state == HYLC_PATTERN_STATE_REFERENCE)
+    if (mode == HYLC_REFERENCE_NONE) { /* asked for: nothing to say */
+    } else if (!needed && state == HYLC_PATTERN_STATE_REFERENCE)
       PetscCall(PetscViewerASCIIPrintf(v, "[reference] the pattern file records a reference state: used as given\n"));
     else if (!needed)
       PetscCall(PetscViewerASCIIPrintf(v, "[reference] the pattern file does not record its state (as the paper's): taken as its own reference state\n"));

@@ -48,8 +48,13 @@ cmp -s check.json a/model.json || die "a refused run changed a/model.json"
 setsid $tool -o b -no_plots tiny.yaml >b1.txt 2>&1 &
 pid=$!
 for _ in $(seq 600); do [ "$(stat -c %s b/samples.h5.journal 2>/dev/null || echo 0)" -gt 3000 ] && break; sleep 0.05; done
+# the job's processes, by id (mpiexec's ranks need not be in its process group), then SIGKILL to all
+tree() { local c; for c in $(ps -o pid= --ppid "$1" 2>/dev/null); do echo "$c"; tree "$c"; done; }
+pids="$pid $(tree $pid)"
 kill -KILL -- -$pid 2>/dev/null
+kill -KILL $pids 2>/dev/null
 wait $pid 2>/dev/null
+for _ in $(seq 100); do ps -o pid= -p "$(echo $pids | tr ' ' ,)" >/dev/null 2>&1 || break; sleep 0.1; done
 [ -f b/samples.h5.journal ] || { cat b1.txt; die "the job was killed before its journal existed"; }
 [ ! -f b/model.json ] || die "the job ended before it was killed (the plan is too small for this machine)"
 $tool -o b -no_plots tiny.yaml >b2.txt 2>&1 || { cat b2.txt; die "the rerun after the kill failed"; }

@@ -51,7 +51,7 @@ has e.txt 'state: not recorded in the file (taken as its own reference state)'
 head -n 1 old2.pyp | grep -q 'hylc state: reference$' || die "a file without the record is not rewritten as a reference state"
 # -sampler_reference still decides when given
 run f.txt $B/hylc-sample -pattern_file p.pyp -sampler_reference none -sampler_terms zero -sampler_output f.h5
-has f.txt '[reference] none asked for: the pattern as given'
+hasnt f.txt '[reference]'
 # hylc-solve's solved tile is an equilibrium, not a reference state
 run g.txt $B/hylc-solve -pattern_file ra.pyp -strain 0.02,0,0,0,0,0 -solve_output eq.pyp
 head -n 1 eq.pyp | grep -q 'hylc state: equilibrium' || { head -n 1 eq.pyp; die "the solved tile does not record 'equilibrium'"; }
