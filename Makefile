@@ -98,6 +98,9 @@ ifeq ($(filter clean help,$(MAKECMDGOALS)),)
 endif
 $(OBJ)/src/samples/identity.o: CFLAGS += -DHYLC_BUILD_ID='"$(HYLC_BUILD_ID)"'
 $(OBJ)/src/samples/identity.o: $(BUILD_ID_FILE)
+# and in -version of every program (src/sys/version.c)
+$(OBJ)/src/sys/version.o: CFLAGS += -DHYLC_BUILD_ID='"$(HYLC_BUILD_ID)"'
+$(OBJ)/src/sys/version.o: $(BUILD_ID_FILE)
 
 # the Cholesky kernels and solves: GCC's -O2 vectorizes only loops it needs no run-time alias check for;
 # the dynamic cost model lets it version the solves' loops (about 2x on them, results bitwise unchanged:

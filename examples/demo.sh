@@ -2,11 +2,12 @@
 # make demo: the whole pipeline on a built-in default, outputs in out/demo/:
 #   1. a generated stockinette tile (pattern tool: summary, .pyp, 3x3 tiled VTK polylines for ParaView);
 #   2. one microscale sample of a generated plain weave (hylc-solve);
-#   3. the sampling job of config/demo.yaml on 2 MPI ranks (reference state, 4351 samples, HDF5);
-#   4. the fit of those samples (hylc-fit: HDF5 and ARCSim-HYLC JSON tables);
-#   5. the fitted energy and its derivatives at one strain (hylc-eval), and PNG plots of the fit when
-#      python3-matplotlib is installed (examples/plot_fit.py);
-#   6. a calibration (hylc-calibrate): the yarn parameters recovered from about 70 of those samples, starting
+#   3. the pipeline of config/demo.yaml on 2 MPI ranks (tools/hylc-material): the reference state, 4351
+#      samples (HDF5), the fit (HDF5 and ARCSim-HYLC JSON tables, the family from the samples), PNG plots
+#      of the fit when python3-matplotlib is installed (examples/plot_fit.py) and out/demo/report.md;
+#      run again, it skips what is current;
+#   4. the fitted energy and its derivatives at one strain (hylc-eval);
+#   5. a calibration (hylc-calibrate): the yarn parameters recovered from about 70 of those samples, starting
 #      from wrong values (E x 2, Es / 2, kc / 2.5), with plots (examples/plot_calibrate.py).
 set -eu
 cd "$(dirname "$0")/.."
@@ -23,26 +24,19 @@ echo
 echo "== one microscale sample: the plain weave stretched by 10 % along x"
 build/bin/hylc-solve -pattern_type plain -yarn_kc 50 -strain 0.1,0,0,0,0,0 -solve_vtk "$out/plain_sx0.1.vtk"
 echo
-echo "== the sampling job on 2 MPI ranks: config/demo.yaml (reference state, then 4351 samples)"
-rm -f "$out/samples.h5" "$out/samples.h5.journal"
-mpiexec --oversubscribe -n 2 build/bin/hylc-sample -options_file config/demo.yaml
+echo "== the pipeline on 2 MPI ranks: config/demo.yaml -> reference state, 4351 samples, fit, plots, report (tools/hylc-material)"
+# samples of a demo from before the pipeline (no stamps): start over
+[ -f "$out/.hylc-material/sample" ] || rm -f "$out/samples.h5" "$out/samples.h5.journal"
+MPIEXEC="mpiexec --oversubscribe" tools/hylc-material -np 2 -o "$out" config/demo.yaml
 if command -v h5dump >/dev/null; then
   echo "psi (J/m^2) of the first samples (the zero sample, then the sx term):"
   h5dump -d /samples/psi -c 8 "$out/samples.h5" | awk '/DATA {/{f=1} f{print} f&&/}/{exit}'
 fi
 echo
-echo "== the fit: spline tables of the homogenized material (docs/fit.md)"
-build/bin/hylc-fit -fit_input "$out/samples.h5" -fit_output "$out/model.h5" -fit_json "$out/model.json"
-echo
+plots=""
+[ -f "$out/plots/index.txt" ] && plots=", $out/plots/*.png (fit plots)"
 echo "== the fitted energy density at sx = 0.1, sa = 0.2, II00 = 20 1/m (hylc-eval)"
 build/bin/hylc-eval -material "$out/model.json" -strain 0.1,0.2,0,20,0,0 -derivatives
-plots=""
-if /usr/bin/python3 -c 'import h5py, matplotlib' 2>/dev/null; then
-  echo
-  echo "== plots of every term (examples/plot_fit.py)"
-  /usr/bin/python3 examples/plot_fit.py "$out/samples.h5" "$out/model.h5" "$out/plots"
-  plots=", $out/plots/*.png (fit plots)"
-fi
 echo
 echo "== calibration: E, Es, kc recovered from about 70 of the samples (-calibrate_max_samples 60), starting from E x 2, Es / 2, kc / 2.5 (hylc-calibrate)"
 mpiexec --oversubscribe -n 2 build/bin/hylc-calibrate -pattern_file "$out/reference.pyp" -calibrate_target "$out/samples.h5" \
@@ -56,5 +50,5 @@ fi
 echo
 echo "demo outputs: $out/stockinette.pyp (pattern), $out/stockinette.vtk and $out/plain_sx0.1.vtk (ParaView),"
 echo "              $out/reference.pyp (reference state), $out/samples.h5 (HDF5 samples, docs/output-format.md),"
-echo "              $out/model.h5 and $out/model.json (fitted material, docs/material.md),"
+echo "              $out/model.h5 and $out/model.json (fitted material, docs/material.md), $out/report.md,"
 echo "              $out/calibrated.yaml and $out/calibrate.csv (calibration, docs/calibrate.md)$plots"

@@ -5,7 +5,9 @@
    - HylcOptionsRealArray, HylcOptionsIntArray: at most *n values (PETSc drops the extra ones), each real
      value finite.
    A refused value is one PETSC_ERR_USER_INPUT error "Option -name value: ..." naming the option as the
-   user wrote it (with the object's prefix). -help lists the options as PETSc's readers do. */
+   user wrote it (with the object's prefix). -help lists the options as PETSc's readers do, a list
+   option with every value of its default ("-sampler_range_sx <-0.6,0.6>", trailing zeros of a list
+   longer than 6 dropped). */
 #include <hylc/sys.h>
 
 #define HylcOptionsReal(opt, text, man, cur, val, set)  HylcOptionsReal_Private(PetscOptionsObject, opt, text, man, cur, val, set)

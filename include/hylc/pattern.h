@@ -80,11 +80,27 @@ PETSC_EXTERN PetscErrorCode HylcPatternViewFromOptions(HylcPattern, PetscObject,
 /* Source selection, used by HylcPatternSetUp(). */
 PETSC_EXTERN PetscErrorCode HylcPatternSetType(HylcPattern, HylcPatternType);
 PETSC_EXTERN PetscErrorCode HylcPatternGetType(HylcPattern, HylcPatternType *);
-PETSC_EXTERN PetscErrorCode HylcPatternSetFileName(HylcPattern, const char[]);
-PETSC_EXTERN PetscErrorCode HylcPatternGetFileName(HylcPattern, const char *[]);
-PETSC_EXTERN PetscErrorCode HylcPatternSetGenParams(HylcPattern, const HylcPatternGenParams *);
-PETSC_EXTERN PetscErrorCode HylcPatternGetGenParams(HylcPattern, HylcPatternGenParams *);
-PETSC_EXTERN PetscErrorCode HylcPatternGenParamsDefault(HylcPatternGenParams *);
+
+/* What the tile is (issue 33), recorded in the .pyp files hylc writes ("hylc state: <name>" in the comment
+   of the *pattern header, which every reader skips): REFERENCE, a reference state (Algorithm C1's, or a
+   pattern taken as one); GENERATED, a generator's tile (not relaxed); EQUILIBRIUM, a solved tile under a
+   strain (hylc-solve -solve_output); UNRECORDED, a file without the record (the paper's .pyp files), taken
+   as its own reference state as before. A job in the auto reference mode computes the reference state of
+   every pattern but a REFERENCE or UNRECORDED one (HylcReferenceStateNeeded()). */
+typedef enum {
+  HYLC_PATTERN_STATE_UNRECORDED  = 0,
+  HYLC_PATTERN_STATE_REFERENCE   = 1,
+  HYLC_PATTERN_STATE_GENERATED   = 2,
+  HYLC_PATTERN_STATE_EQUILIBRIUM = 3
+} HylcPatternState;
+PETSC_EXTERN const char *const HylcPatternStates[];
+PETSC_EXTERN PetscErrorCode    HylcPatternGetState(HylcPattern, HylcPatternState *);
+PETSC_EXTERN PetscErrorCode    HylcPatternSetState(HylcPattern, HylcPatternState);
+PETSC_EXTERN PetscErrorCode    HylcPatternSetFileName(HylcPattern, const char[]);
+PETSC_EXTERN PetscErrorCode    HylcPatternGetFileName(HylcPattern, const char *[]);
+PETSC_EXTERN PetscErrorCode    HylcPatternSetGenParams(HylcPattern, const HylcPatternGenParams *);
+PETSC_EXTERN PetscErrorCode    HylcPatternGetGenParams(HylcPattern, HylcPatternGenParams *);
+PETSC_EXTERN PetscErrorCode    HylcPatternGenParamsDefault(HylcPatternGenParams *);
 
 /* Direct construction. Collective. */
 PETSC_EXTERN PetscErrorCode HylcPatternLoad(HylcPattern, const char[]);

@@ -41,4 +41,7 @@ PETSC_EXTERN PetscErrorCode HylcReferenceParamsSetFromOptions(MPI_Comm, const ch
 PETSC_EXTERN PetscErrorCode HylcReferenceStateCompute(HylcPattern, const HylcYarnModel *, const HylcReferenceParams *, PetscViewer, HylcPattern *);
 /* The reference state a job's mode asks for, or NULL when it asks for none (auto: a generated pattern's
    reference state, none for a file; relax: the parameters with only the in-plane minimum). Collective. */
+/* Whether the mode computes a reference state for the pattern (auto: a generated pattern, or a file that
+   records another state than a reference one; src/sampler/reference.c). Not collective. */
+PETSC_EXTERN PetscErrorCode HylcReferenceStateNeeded(HylcPattern, HylcReferenceMode, PetscBool *);
 PETSC_EXTERN PetscErrorCode HylcReferenceStateForMode(HylcPattern, HylcReferenceMode, const HylcYarnModel *, const HylcReferenceParams *, PetscViewer, HylcPattern *);

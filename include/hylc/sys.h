@@ -7,6 +7,10 @@
 #endif
 
 #define HYLC_VERSION_STRING "0.1.0"
+/* The git revision of the build ("unknown" outside a checkout), and what -version prints: the program,
+   hylc's version and revision, PETSc's, HDF5's and MPI's versions (src/sys/version.c). */
+PETSC_EXTERN const char    *HylcGetRevision(void);
+PETSC_EXTERN PetscErrorCode HylcVersionView(const char[]);
 
 /* The fill-reducing ordering used for the Newton factorization unless -micro_factor_pc_factor_mat_ordering_type says otherwise. */
 PETSC_EXTERN const char *HylcDefaultOrdering(void);
@@ -77,5 +81,10 @@ PETSC_EXTERN PetscErrorCode HylcShareError(MPI_Comm, PetscErrorCode);
 /* A uniaxial curve as CSV (docs/fabric-uniaxial.md): the header strain,T_N_per_m,lateral_strain_sa,lateral_strain_s2
    and one row per point (s2: sy for a test along x, sx along y), written atomically. Not collective. */
 PETSC_EXTERN PetscErrorCode HylcWriteUniaxialCSV(const char[], PetscInt, const PetscReal[], const PetscReal[], const PetscReal[], const PetscReal[]);
-/* Refuses options nothing has read (before any work). Collective. */
+/* Refuses options nothing has read (before any work), except the options of other hylc programs' stages
+   (HylcOptionIsOtherStage()): every program accepts the whole study's options file. Collective. */
 PETSC_EXTERN PetscErrorCode HylcCheckOptionsUsed(MPI_Comm);
+/* The running program (argv[0], recorded by HylcInitialize()) and whether an option (with or without its
+   dash) is read by the stages of other hylc programs only (src/sys/programs.c). Not collective. */
+PETSC_EXTERN PetscErrorCode HylcSetProgramName(const char[]);
+PETSC_EXTERN PetscErrorCode HylcOptionIsOtherStage(const char[], PetscBool *);

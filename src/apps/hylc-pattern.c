@@ -23,6 +23,12 @@ static PetscErrorCode RunPattern(HylcPattern pat)
   PetscOptionsEnd();
   PetscCheck(!flg || (nt == 2 && tiles[0] >= 1 && tiles[1] >= 1), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-pattern_vtk_tiles needs two positive integers nx,ny");
   PetscCheck((double)tiles[0] * tiles[1] <= 1e6, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-pattern_vtk_tiles %" PetscInt_FMT ",%" PetscInt_FMT ": at most 1e6 tile copies", tiles[0], tiles[1]);
+  {
+    PetscBool help_only;
+    PetscCall(PetscOptionsHasHelp(NULL, &help_only));
+    if (help_only) PetscFunctionReturn(PETSC_SUCCESS); /* -help: every option has been listed; do no work */
+  }
+  PetscCall(HylcCheckOptionsUsed(PETSC_COMM_WORLD)); /* a misspelt option is an error, another stage's is not */
   /* every file before any work (include/hylc/files.h): the pattern file and the options files read, the
      outputs writable and within the path limits, never an input or each other */
   {

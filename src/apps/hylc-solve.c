@@ -103,6 +103,13 @@ static PetscErrorCode Solve(HylcPattern pat, HylcMicro micro)
     PetscCheck(!out[0] && !vtk[0], PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-solve_output and -solve_vtk are not available with -solve_uniaxial (write the curve with -solve_uniaxial_csv)");
     for (PetscInt i = 0; i < nu; i++) PetscCheck(ustrain[i] >= 0 && ustrain[i] < 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-solve_uniaxial_strains: stretch %g is outside [0, 1) (a uniaxial state is a tension test within the sampled stretches; a compressed strip buckles)", (double)ustrain[i]);
   }
+  PetscCall(HylcMicroSetFromOptions(micro)); /* only reads options; the pattern is given below */
+  {
+    PetscBool help_only;
+    PetscCall(PetscOptionsHasHelp(NULL, &help_only));
+    if (help_only) PetscFunctionReturn(PETSC_SUCCESS); /* -help: every option has been listed; do no work */
+  }
+  PetscCall(HylcCheckOptionsUsed(PETSC_COMM_SELF)); /* a misspelt option is an error, another stage's is not */
   /* every file before any work (include/hylc/files.h): the pattern file and the options files read, the
      outputs writable and within the path limits, never an input or each other */
   {
@@ -130,12 +137,10 @@ static PetscErrorCode Solve(HylcPattern pat, HylcMicro micro)
     PetscBool isx;
     PetscCall(PetscStrcmp(udir, "x", &isx));
     PetscCall(HylcMicroSetPattern(micro, pat, &model));
-    PetscCall(HylcMicroSetFromOptions(micro));
     PetscCall(SolveUniaxial(micro, isx ? HYLC_UNIAXIAL_X : HYLC_UNIAXIAL_Y, nu, ustrain, csv));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscCall(HylcMicroSetPattern(micro, pat, &model));
-  PetscCall(HylcMicroSetFromOptions(micro));
   {
     HylcPeriodic P;
     PetscCall(HylcMicroGetPeriodic(micro, &P));

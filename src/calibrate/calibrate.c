@@ -363,7 +363,7 @@ PetscErrorCode HylcCalibrateSetUp(HylcCalibrate C)
     PetscBool   asks;
     PetscCall(HylcPatternGetType(C->pat, &type));
     PetscCall(PetscStrcmp(type, HYLCPATTERNFILE, &isfile));
-    asks = (PetscBool)(C->refmode == HYLC_REFERENCE_COMPUTE || C->refmode == HYLC_REFERENCE_RELAX || (C->refmode == HYLC_REFERENCE_AUTO && !isfile));
+    PetscCall(HylcReferenceStateNeeded(C->pat, C->refmode, &asks));
     if (asks) PetscCall(PetscPrintf(comm, "[calibrate] reference state (%s) of the %s pattern with the initial parameters (kept fixed)\n", HylcReferenceModes[C->refmode], C->patLabel));
     PetscCall(HylcReferenceStateForMode(C->pat, C->refmode, &C->model, &C->refpar, C->rank ? NULL : PETSC_VIEWER_STDOUT_SELF, &ref));
     if (ref) {

@@ -3,8 +3,32 @@
 #include <hylc/private/fitimpl.h>
 #include <stdarg.h>
 #include <stdio.h>
+#include <string.h>
+#include <strings.h>
 
 const char *const HylcFitFamilies[] = {"woven", "knit", "stockinette", "HylcFitFamily", "HYLC_FIT_FAMILY_", NULL};
+
+/* -fit_family speaks -sampler_family's names (src/sampler/planopts.c); "knit", the fit's former name of
+   every knit but the stockinette, is accepted */
+static const struct {
+  const char   *name;
+  HylcFitFamily family;
+} FamilyNames[] = {
+    {"woven", HYLC_FIT_FAMILY_WOVEN},
+    {"stockinette", HYLC_FIT_FAMILY_STOCKINETTE},
+    {"honeycomb", HYLC_FIT_FAMILY_KNIT},
+    {"rib", HYLC_FIT_FAMILY_KNIT},
+    {"knit", HYLC_FIT_FAMILY_KNIT}};
+
+static PetscBool FamilyByName(const char name[], HylcFitFamily *family)
+{
+  for (size_t i = 0; i < sizeof(FamilyNames) / sizeof(FamilyNames[0]); i++)
+    if (!strcasecmp(name, FamilyNames[i].name)) {
+      *family = FamilyNames[i].family;
+      return PETSC_TRUE;
+    }
+  return PETSC_FALSE;
+}
 
 /* the family's constants (docs/method.md §9, §S3.4): everything but the stockinette shares one set; the
    family is the object's type name */
@@ -21,6 +45,8 @@ static PetscErrorCode FamilyDefaults(HylcFit fit, HylcFitFamily family)
   fit->kBendSym[0]     = stock ? 3 : 5;
   fit->kBendSym[1]     = stock ? 3 : 5;
   PetscCall(PetscObjectChangeTypeName((PetscObject)fit, HylcFitFamilies[family]));
+  PetscCall(PetscStrncpy(fit->familyName, HylcFitFamilies[family], sizeof(fit->familyName)));
+  PetscCall(PetscStrncpy(fit->familySource, "HylcFitSetFamily()", sizeof(fit->familySource)));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -105,7 +131,8 @@ PetscErrorCode HylcFitCreate(MPI_Comm comm, HylcFit *out)
   fit->terms           = (1 << HYLC_PLAN_NTERM) - 2; /* every term but the zero sample */
   fit->rhoA            = -1;
   PetscCall(FamilyDefaults(fit, HYLC_FIT_FAMILY_WOVEN));
-  *out = fit;
+  fit->familySource[0] = 0; /* the default */
+  *out                 = fit;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -341,7 +368,9 @@ static PetscErrorCode KnotPairOption(PetscOptionItems *PetscOptionsObject, HylcF
 + -fit_input <file|dir>            - samples HDF5 file, raw data.txt, or a directory with data.txt, info.txt
 . -fit_output <model.h5>           - HDF5 material file written by HylcFitRun
 . -fit_json <model.json>           - ARCSim-HYLC JSON written by HylcFitRun
-. -fit_family <woven>              - woven, knit (the same constants) or stockinette (sets the next two groups)
+. -fit_family <woven>              - woven, stockinette, honeycomb or rib (-sampler_family's names; knit, the
+                                     former name of honeycomb and rib, is accepted); default the family of the
+                                     samples file's provenance; stockinette sets the next two groups
 . -fit_reg <1e-3>                  - quasiconvex marching p^x_min (stockinette 1e-2)
 . -fit_knots2d_bend_factor, -fit_knots2d_bend_stretch, -fit_knots2d_bend_symmetric - 2D bending-pair knots
 . -fit_compat <paper>              - paper or authors (the two departures of docs/method.md §9.1)
@@ -359,10 +388,11 @@ static PetscErrorCode KnotPairOption(PetscOptionItems *PetscOptionsObject, HylcF
 @*/
 PetscErrorCode HylcFitSetFromOptions(HylcFit fit)
 {
-  PetscEnum family = (PetscEnum)fit->family, compat = (PetscEnum)fit->compat, rule = (PetscEnum)fit->rule;
-  PetscBool set;
-  char      terms[512] = "all", input[PETSC_MAX_PATH_LEN];
-  MPI_Comm  comm       = PetscObjectComm((PetscObject)fit);
+  PetscEnum     compat = (PetscEnum)fit->compat, rule = (PetscEnum)fit->rule;
+  PetscBool     set, fromFile = PETSC_FALSE, known = PETSC_TRUE;
+  char          terms[512] = "all", input[PETSC_MAX_PATH_LEN], family[32], recorded[32] = "";
+  HylcFitFamily fam  = fit->family;
+  MPI_Comm      comm = PetscObjectComm((PetscObject)fit);
 
   PetscFunctionBegin;
   PetscValidHeaderSpecific(fit, HYLC_FIT_CLASSID, 1);
@@ -371,8 +401,24 @@ PetscErrorCode HylcFitSetFromOptions(HylcFit fit)
   PetscCall(PetscOptionsString("-fit_input", "Samples: HDF5 file of hylc-sample (status 0 rows), the paper's raw data.txt, or a directory with data.txt and info.txt", "HylcFitSetInput", input, input, sizeof(input), NULL));
   PetscCall(PetscOptionsString("-fit_output", "HDF5 material file to write (docs/material.md)", "HylcFitSetOutputs", fit->output, fit->output, sizeof(fit->output), NULL));
   PetscCall(PetscOptionsString("-fit_json", "ARCSim-HYLC JSON material file to write", "HylcFitSetOutputs", fit->json, fit->json, sizeof(fit->json), NULL));
-  PetscCall(PetscOptionsEnum("-fit_family", "Pattern family: woven and knit share the constants; stockinette: -fit_reg 1e-2 and coarse 2D bending knots (factor 0.3, 2+4 and 3+3)", "HylcFitSetFamily", HylcFitFamilies, family, &family, &set));
-  if (set) PetscCall(FamilyDefaults(fit, (HylcFitFamily)family));
+  /* the family: given, else the one the samples were computed for (their provenance) */
+  if (input[0]) PetscCall(HylcFitInputFamily_Private(input, recorded, sizeof(recorded), &fromFile));
+  PetscCall(PetscStrncpy(family, fromFile ? recorded : fit->familyName, sizeof(family)));
+  PetscCall(PetscOptionsString("-fit_family", "Pattern family, as -sampler_family: woven, stockinette, honeycomb or rib (knit: the former name of honeycomb and rib); default the samples file's (its provenance), else woven. All but the stockinette share the constants; stockinette: -fit_reg 1e-2 and coarse 2D bending knots (factor 0.3, 2+4 and 3+3)", "HylcFitSetFamily", family, family, sizeof(family), &set));
+  if (set || fromFile) {
+    known = FamilyByName(family, &fam);
+    if (known) {
+      PetscCall(FamilyDefaults(fit, fam)); /* before the options it sets defaults for */
+      PetscCall(PetscStrncpy(fit->familyName, family, sizeof(fit->familyName)));
+      PetscCall(PetscObjectChangeTypeName((PetscObject)fit, family));
+      if (set && fromFile && strcasecmp(family, recorded))
+        PetscCall(PetscSNPrintf(fit->familySource, sizeof(fit->familySource), "-fit_family; the samples were computed with -sampler_family %s", recorded));
+      else if (set)
+        PetscCall(PetscStrncpy(fit->familySource, "-fit_family", sizeof(fit->familySource)));
+      else
+        PetscCall(PetscSNPrintf(fit->familySource, sizeof(fit->familySource), "the samples' provenance: -sampler_family %s", recorded));
+    }
+  }
   PetscCall(HylcOptionsReal("-fit_reg", "Quasiconvex marching: minimum outward slope p^x_min in J/m^2 per normalised unit (S28)", "HylcFitSetFromOptions", fit->reg, &fit->reg, NULL));
   PetscCall(PetscOptionsBool("-fit_quasiconvex", "Apply the quasiconvex marching (false: the unregularized fits, like rib1_noreg)", "HylcFitSetFromOptions", fit->quasiconvex, &fit->quasiconvex, NULL));
   PetscCall(PetscOptionsEnum("-fit_compat", "paper, or authors: the authors' code's two departures (S42 x-clamp dropped; mv <= -reg on the minimum's row)", "HylcFitSetFromOptions", HylcFitCompats, compat, &compat, NULL));
@@ -411,6 +457,7 @@ PetscErrorCode HylcFitSetFromOptions(HylcFit fit)
   PetscCall(PetscOptionsInt("-fit_min_samples_2d", "A 2D term with fewer samples (but some) is an error", "HylcFitSetFromOptions", fit->min2, &fit->min2, NULL));
   PetscCall(PetscOptionsString("-fit_terms", "Terms to fit: all, or a comma list of sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11", "HylcFitSetFromOptions", terms, terms, sizeof(terms), NULL));
   PetscOptionsEnd();
+  PetscCheck(known, comm, set ? PETSC_ERR_USER_INPUT : PETSC_ERR_FILE_UNEXPECTED, "%s %s: unknown family (woven, stockinette, honeycomb or rib; knit is the former name of honeycomb and rib)", set ? "-fit_family" : "the samples' -sampler_family", family);
   fit->compat = (HylcFitCompat)compat;
   PetscCheck(!(fit->compat == HYLC_FIT_COMPAT_AUTHORS && fit->knotsSet && fit->knots != HYLC_FIT_KNOTS_PAPER), comm, PETSC_ERR_USER_INPUT, "-fit_compat authors reproduces the authors' fits, whose knots are the paper's layout: drop -fit_knots %s", HylcFitKnotLayouts[fit->knots]);
   if (fit->compat == HYLC_FIT_COMPAT_AUTHORS) fit->knots = HYLC_FIT_KNOTS_PAPER;
@@ -813,6 +860,7 @@ PetscErrorCode HylcFitView(HylcFit fit, PetscViewer viewer)
   PetscCall(PetscObjectPrintClassNamePrefixType((PetscObject)fit, viewer));
   PetscCall(PetscViewerASCIIPushTab(viewer));
   PetscCall(Line(viewer, "input: %s\n", fit->source[0] ? fit->source : (fit->input[0] ? fit->input : "(none)")));
+  PetscCall(Line(viewer, "family: %s (%s)\n", fit->familyName, fit->familySource[0] ? fit->familySource : "the default"));
   PetscCall(Line(viewer, "reg %g%s, compat %s, MLS kernel %g of the span (sigma = kernel/%g), FD width %g of the knot spacing\n", (double)fit->reg, fit->quasiconvex ? "" : " (marching off)", HylcFitCompats[fit->compat], (double)fit->kernel, (double)fit->truncation, (double)fit->fdEps));
   if (fit->knots == HYLC_FIT_KNOTS_REFINED)
     PetscCall(Line(viewer, "1D knots: the paper's, refined towards 0 by %" PetscInt_FMT " more on each side (h/2 ... h/%d), their MLS kernels %g x the distance from 0, at least %" PetscInt_FMT " samples, at most the paper's\n", fit->refine, 1 << (int)fit->refine, (double)fit->kernelSpacing, fit->kernelMin));

@@ -3,10 +3,12 @@
 #include <hylc/private/fitimpl.h>
 #include <hylc/samples.h>
 #include <hylc/table.h>
+#include <hylc/private/h5util.h>
 #include <hdf5.h>
 #include <sys/stat.h>
 #include <stdio.h>
 #include <string.h>
+#include <stdlib.h>
 #include <errno.h>
 #include <stdint.h>
 
@@ -74,6 +76,40 @@ static PetscErrorCode ReadReference(HylcFit fit, const char path[])
     H5Fclose(file);
   }
   H5Eset_auto2(H5E_DEFAULT, efunc, edata);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* the family of the sampling run (docs/output-format.md: /provenance/identity holds "option -<name>
+   <value>" for every option that changes a result; -sampler_family absent: the sampler's default) */
+PetscErrorCode HylcFitInputFamily_Private(const char path[], char family[], size_t len, PetscBool *found)
+{
+  HylcH5Quiet q;
+  hid_t       file;
+  char       *text = NULL;
+  struct stat st;
+
+  PetscFunctionBegin;
+  *found    = PETSC_FALSE;
+  family[0] = 0;
+  if (stat(path, &st) || !S_ISREG(st.st_mode)) PetscFunctionReturn(PETSC_SUCCESS);
+  HylcH5QuietBegin(&q);
+  file = H5Fis_hdf5(path) > 0 ? H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT) : -1;
+  if (file >= 0) {
+    if (H5Lexists(file, "provenance", H5P_DEFAULT) > 0 && H5Lexists(file, "provenance/identity", H5P_DEFAULT) > 0 && HylcH5ReadString(file, "provenance/identity", &text) >= 0 && text) {
+      const char *key = "option -sampler_family ", *line = text;
+      *found = PETSC_TRUE;
+      snprintf(family, len, "woven"); /* the sampler's default */
+      for (; line && *line; line = strchr(line, '\n') ? strchr(line, '\n') + 1 : NULL) {
+        if (strncmp(line, key, strlen(key))) continue;
+        line += strlen(key);
+        snprintf(family, len, "%.*s", (int)strcspn(line, " \n"), line);
+        break;
+      }
+    }
+    free(text);
+    H5Fclose(file);
+  }
+  HylcH5QuietEnd(&q);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

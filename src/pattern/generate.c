@@ -245,6 +245,7 @@ PetscErrorCode HylcPatternGenerate(HylcPattern p, HylcPatternType type, const Hy
   p->gen = *g;
   PetscCall((*generator)(p, g));
   p->filename[0] = 0;
+  p->state       = HYLC_PATTERN_STATE_GENERATED;
   PetscCall(PetscLogEventEnd(HYLC_PatternGenerate, p, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -374,7 +374,7 @@ PetscErrorCode HylcPatternSetFromOptions(HylcPattern p)
   PetscCall(HylcOptionsReal("-pattern_depth", "Knits: z amplitude of the loops (m); 0 = default", "HylcPatternGenerate", p->gen.depth, &p->gen.depth, &set[5]));
   PetscCall(HylcOptionsReal("-pattern_seglen", "Generators: target edge length (m); 0 = r", "HylcPatternGenerate", p->gen.seglen, &p->gen.seglen, &set[6]));
   n = 2;
-  PetscCall(PetscOptionsIntArray("-pattern_size", "Generators: tile size nx,ny (each 1 to " HYLC_STR(HYLC_PATTERN_MAX_SIZE) ") in threads (wovens) or wales,courses (knits); default the smallest repeat", "HylcPatternGenerate", p->gen.size, &n, &flg));
+  PetscCall(HylcOptionsIntArray("-pattern_size", "Generators: tile size nx,ny (each 1 to " HYLC_STR(HYLC_PATTERN_MAX_SIZE) ") in threads (wovens) or wales,courses (knits); default the smallest repeat", "HylcPatternGenerate", p->gen.size, &n, &flg));
   nsize   = n;
   sizeset = flg;
   PetscCall(HylcOptionsReal("-pattern_density", "Volumetric yarn density for the summary's area density (kg/m^3); 0 = 0.12 kg/m^2 / r (120 kg/m^3 at r = 1 mm), the rule of hylc-fit, hylc-sample's raw export and the paper's tables", "HylcPatternGetAreaDensity", p->viewDensity, &p->viewDensity, &set[7]));
@@ -680,6 +680,7 @@ PetscErrorCode HylcPatternDuplicate(HylcPattern p, HylcPattern *newp)
   (*newp)->gen            = p->gen;
   (*newp)->viewDensity    = p->viewDensity;
   (*newp)->viewExcludeArc = p->viewExcludeArc;
+  (*newp)->state          = p->state;
   PetscCall(PetscStrncpy((*newp)->filename, p->filename, sizeof(p->filename)));
   PetscCall(PetscObjectChangeTypeName((PetscObject)*newp, ((PetscObject)p)->type_name));
   if (p->hasdata) {
@@ -756,7 +757,53 @@ PetscErrorCode HylcPatternCreateSupercell(HylcPattern p, PetscInt nx, PetscInt n
       }
   PetscCall(HylcPatternCreate(PetscObjectComm((PetscObject)p), sp));
   PetscCall(HylcPatternSetData(*sp, M, nx * p->px, ny * p->py, p->radius, X, th, next, shift, RL, RK, RT, D1, RefT));
+  (*sp)->state = p->state;
   PetscCall(PetscFree7(X, th, RL, RK, RT, D1, RefT));
   PetscCall(PetscFree2(next, shift));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+const char *const HylcPatternStates[] = {"unrecorded", "reference", "generated", "equilibrium", "HylcPatternState", "HYLC_PATTERN_STATE_", NULL};
+
+/*@C
+  HylcPatternGetState - What the tile is: a reference state, a generator's tile, a solved tile under a
+  strain, or a file without the record (include/hylc/pattern.h). Not collective.
+
+  Input Parameter:
+. p - the pattern
+
+  Output Parameter:
+. state - the state
+
+  Level: intermediate
+
+.seealso: HylcPatternSetState(), HylcReferenceStateNeeded()
+@*/
+PetscErrorCode HylcPatternGetState(HylcPattern p, HylcPatternState *state)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
+  *state = p->state;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcPatternSetState - Sets what the tile is (written to .pyp files by HylcPatternWrite()). Not
+  collective.
+
+  Input Parameters:
++ p     - the pattern
+- state - the state
+
+  Level: intermediate
+
+.seealso: HylcPatternGetState()
+@*/
+PetscErrorCode HylcPatternSetState(HylcPattern p, HylcPatternState state)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
+  PetscCheck(state >= HYLC_PATTERN_STATE_UNRECORDED && state <= HYLC_PATTERN_STATE_EQUILIBRIUM, PetscObjectComm((PetscObject)p), PETSC_ERR_ARG_OUTOFRANGE, "Unknown pattern state %d", (int)state);
+  p->state = state;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

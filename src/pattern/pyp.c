@@ -71,7 +71,17 @@ static PetscErrorCode PypParse(HylcPattern p, const char fname[], char *text, Py
     char *eol = strchr(s, '\n'), *c;
     if (eol) *eol = 0;
     lineno++;
-    if ((c = strchr(s, '#'))) *c = 0; /* comment */
+    if ((c = strchr(s, '#'))) { /* a comment; the *pattern header's may record the tile's state */
+      const char *rec = strstr(c + 1, "hylc state: ");
+      *c              = 0;
+      if (rec && !strncmp(s + strspn(s, " \t"), "*pattern", 8)) {
+        rec += 12;
+        for (int k = 1; k <= HYLC_PATTERN_STATE_EQUILIBRIUM; k++) {
+          const size_t n = strlen(HylcPatternStates[k]);
+          if (!strncmp(rec, HylcPatternStates[k], n) && !isalnum((unsigned char)rec[n])) p->state = (HylcPatternState)k;
+        }
+      }
+    }
     while (isspace((unsigned char)*s)) s++;
     if (*s == '*') { /* block header */
       char   name[32];
@@ -240,7 +250,8 @@ static PetscErrorCode HylcPatternParse_Private(HylcPattern p, const char fname[]
 
   PetscFunctionBegin;
   PetscCall(PetscMemzero(blk, sizeof(blk)));
-  ierr = PypParse(p, fname, text, blk, &erow);
+  p->state = HYLC_PATTERN_STATE_UNRECORDED; /* unless the file records it */
+  ierr     = PypParse(p, fname, text, blk, &erow);
   PetscCall(PetscFree(erow));
   for (int b = 0; b < NBLK; b++) PetscCall(PetscFree2(blk[b].val, blk[b].line));
   PetscCall(ierr);
@@ -394,7 +405,11 @@ PetscErrorCode HylcPatternWrite(HylcPattern p, const char fname[])
     PetscCall(PetscPushErrorHandler(HylcPatternKeepMessage_Private, msg));
     code = HylcFileOpenTemp(fname, tmp, sizeof(tmp), &fp);
     if (!code) {
-      fprintf(fp, "*pattern # px py radius num_vertedges\n%.17g %.17g %.17g %d\n\n", (double)p->px, (double)p->py, (double)p->radius, (int)n);
+      /* the tile's state in the header's comment, which every reader skips; a pattern read without the
+         record was taken as its own reference state, and is written as one */
+      fprintf(fp, "*pattern # px py radius num_vertedges; hylc state: %s\n%.17g %.17g %.17g %d\n\n", p->state == HYLC_PATTERN_STATE_GENERATED ? "generated (not a reference state: hylc-sample computes one)" : p->state == HYLC_PATTERN_STATE_EQUILIBRIUM ? "equilibrium (a solved tile under a strain, not a reference state)"
+                                                                                                                                                                                                                                                           : "reference",
+              (double)p->px, (double)p->py, (double)p->radius, (int)n);
       fprintf(fp, "*Q # dofs: x y z t\n");
       for (PetscInt v = 0; v < n; v++) fprintf(fp, "%.17g %.17g %.17g %.17g\n", (double)p->X[3 * v], (double)p->X[3 * v + 1], (double)p->X[3 * v + 2], (double)p->theta[v]);
       fprintf(fp, "\n*E # edges: v0 v1 dx dy\n");

@@ -25,6 +25,9 @@ PetscErrorCode HylcPatternView(HylcPattern p, PetscViewer viewer)
   PetscCall(PetscObjectPrintClassNamePrefixType((PetscObject)p, viewer));
   PetscCall(PetscViewerASCIIPushTab(viewer));
   if (p->filename[0]) PetscCall(PetscViewerASCIIPrintf(viewer, "file: %s\n", p->filename));
+  if (p->hasdata)
+    PetscCall(PetscViewerASCIIPrintf(viewer, "state: %s\n", p->state == HYLC_PATTERN_STATE_UNRECORDED ? "not recorded in the file (taken as its own reference state)" : p->state == HYLC_PATTERN_STATE_GENERATED ? "generated (not a reference state)"
+                                                                                                                                                                                                                 : HylcPatternStates[p->state]));
   if (!p->hasdata) {
     PetscCall(PetscViewerASCIIPrintf(viewer, "(no data: not set up)\n"));
     PetscCall(PetscViewerASCIIPopTab(viewer));

@@ -38,6 +38,7 @@ PetscErrorCode HylcPeriodicCreateStatePattern(HylcPeriodic P, HylcPattern *out)
   }
   PetscCall(HylcPatternCreate(PETSC_COMM_SELF, out));
   PetscCall(HylcPatternSetData(*out, N, (1 + P->z[0]) * P->D.px, (1 + P->z[2]) * P->D.py, P->D.radius, X, th, P->D.next, P->D.shift, P->D.restLength, P->D.restKappa, P->D.restTwist, D1, RefT));
+  PetscCall(HylcPatternSetState(*out, HYLC_PATTERN_STATE_EQUILIBRIUM));
   PetscCall(PetscFree4(X, th, D1, RefT));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -261,15 +261,47 @@ PetscErrorCode HylcReferenceStateCompute(HylcPattern in, const HylcYarnModel *mo
   PetscCall(HylcPatternDestroy(&p));
   /* 4. recentre */
   PetscCall(HylcPatternRecentre(q));
+  PetscCall(HylcPatternSetState(q, HYLC_PATTERN_STATE_REFERENCE));
   if (v) PetscCall(PetscViewerASCIIPrintf(v, "[reference] reference state: periods scaled by (%.6f, %.6f), E = %.6e J\n", (double)(1 + best[0]), (double)(1 + best[1]), (double)E));
   *out = q;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /*@C
+  HylcReferenceStateNeeded - Whether a job's reference mode computes a reference state for this pattern:
+  compute and relax always, none never, auto for a generated pattern and for a file unless it is a
+  reference state (its record says reference, or it has no record, as the paper's files:
+  HylcPatternGetState()). Not collective.
+
+  Input Parameters:
++ in   - the pattern, set up
+- mode - the mode
+
+  Output Parameter:
+. needed - PETSC_TRUE if HylcReferenceStateForMode() computes one
+
+  Level: intermediate
+
+.seealso: HylcReferenceStateForMode(), HylcPatternGetState()
+@*/
+PetscErrorCode HylcReferenceStateNeeded(HylcPattern in, HylcReferenceMode mode, PetscBool *needed)
+{
+  HylcPatternState state;
+  HylcPatternType  type;
+  PetscBool        isfile;
+
+  PetscFunctionBegin;
+  PetscCall(HylcPatternGetState(in, &state));
+  PetscCall(HylcPatternGetType(in, &type));
+  PetscCall(PetscStrcmp(type, HYLCPATTERNFILE, &isfile));
+  *needed = (PetscBool)(mode == HYLC_REFERENCE_COMPUTE || mode == HYLC_REFERENCE_RELAX || (mode == HYLC_REFERENCE_AUTO && (!isfile || (state != HYLC_PATTERN_STATE_REFERENCE && state != HYLC_PATTERN_STATE_UNRECORDED))));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
   HylcReferenceStateForMode - The reference state a job's -sampler_reference or -calibrate_reference mode
-  asks for: compute (Algorithm C1), auto (C1 for a generated pattern, none for a pattern read from a file,
-  which is its own reference state), none, or relax (the pattern's rest data kept, no tension: only the
+  asks for: compute (Algorithm C1), auto (C1 unless the pattern is a reference state: a file that records
+  one, or records nothing, as the paper's files, HylcReferenceStateNeeded()), none, or relax (the pattern's rest data kept, no tension: only the
   in-plane minimum over the periods and the recentring, so that the stored tile under the configured yarn
   becomes a minimum of the model). *out is NULL when the mode asks for none.
 
@@ -292,14 +324,28 @@ PetscErrorCode HylcReferenceStateCompute(HylcPattern in, const HylcYarnModel *mo
 PetscErrorCode HylcReferenceStateForMode(HylcPattern in, HylcReferenceMode mode, const HylcYarnModel *model, const HylcReferenceParams *par, PetscViewer v, HylcPattern *out)
 {
   HylcPatternType     type;
-  PetscBool           isfile;
+  PetscBool           isfile, needed;
   HylcReferenceParams p = *par;
 
   PetscFunctionBegin;
   *out = NULL;
   PetscCall(HylcPatternGetType(in, &type));
   PetscCall(PetscStrcmp(type, HYLCPATTERNFILE, &isfile));
-  if (mode == HYLC_REFERENCE_NONE || (mode == HYLC_REFERENCE_AUTO && isfile)) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(HylcReferenceStateNeeded(in, mode, &needed));
+  if (v) { /* which it does, and why */
+    HylcPatternState state;
+    PetscCall(HylcPatternGetState(in, &state));
+    if (mode == HYLC_REFERENCE_NONE) { /* asked for: nothing to say */
+    } else if (!needed && state == HYLC_PATTERN_STATE_REFERENCE)
+      PetscCall(PetscViewerASCIIPrintf(v, "[reference] the pattern file records a reference state: used as given\n"));
+    else if (!needed)
+      PetscCall(PetscViewerASCIIPrintf(v, "[reference] the pattern file does not record its state (as the paper's): taken as its own reference state\n"));
+    else if (mode == HYLC_REFERENCE_AUTO && isfile)
+      PetscCall(PetscViewerASCIIPrintf(v, "[reference] the pattern file is not a reference state (%s): computing it (Algorithm C1)\n", HylcPatternStates[state]));
+    else if (mode == HYLC_REFERENCE_AUTO)
+      PetscCall(PetscViewerASCIIPrintf(v, "[reference] a generated pattern: computing its reference state (Algorithm C1)\n"));
+  }
+  if (!needed) PetscFunctionReturn(PETSC_SUCCESS);
   if (mode == HYLC_REFERENCE_RELAX) {
     p.stressFree = PETSC_FALSE;
     p.tension    = PETSC_FALSE;

@@ -1,5 +1,5 @@
 /* Concise error reports for user-input errors in hylc programs. */
-#include <hylc/sys.h>
+#include <hylc/private/sysimpl.h>
 #include <hylc/files.h>
 #include <hylc/private/yamlcheck.h>
 #include <unistd.h>
@@ -12,83 +12,65 @@
 
 static int HylcIsSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
 
-static int HylcEndsWith(const char s[], const char suffix[])
-{
-  size_t n = strlen(s), m = strlen(suffix);
-  return n >= m && !strcmp(s + n - m, suffix);
-}
+static void HylcOptionSource(const char name[], char where[], size_t len);
 
-/* Where option -name was set: "file:line" of the first options file on the command line that sets it
-   (YAML "name:" or plain "-name"), or "" (the command line, or not found). */
-static void HylcOptionSource(const char name[], char where[], size_t len)
-{
-  int    argc = 0;
-  char **args = NULL;
-
-  where[0] = 0;
-  if (PetscGetArgs(&argc, &args) || !args) return;
-  for (int i = 1; i < argc; i++)
-    if (args[i][0] == '-' && !strcmp(args[i] + 1, name)) return; /* given on the command line (last wins) */
-  for (int i = 1; i + 1 < argc; i++) {
-    if (strcmp(args[i], "-options_file") && strcmp(args[i], "-options_file_yaml")) continue;
-    const char  *f    = args[i + 1];
-    const int    yaml = !strcmp(args[i], "-options_file_yaml") || HylcEndsWith(f, ".yaml") || HylcEndsWith(f, ".yml");
-    FILE        *fp   = fopen(f, "r");
-    char         line[4096];
-    int          lineno = 0, found = 0;
-    const size_t n = strlen(name);
-    if (!fp) continue;
-    while (!found && fgets(line, sizeof(line), fp)) {
-      const char *s = line;
-      lineno++;
-      while (*s == ' ' || *s == '\t') s++;
-      if (yaml && !strncmp(s, name, n) && s[n] == ':') found = 1;
-      if (!yaml && s[0] == '-' && !strncmp(s + 1, name, n) && (HylcIsSpace(s[n + 1]) || !s[n + 1])) found = 1;
-    }
-    fclose(fp);
-    if (found) {
-      snprintf(where, len, "%s:%d: ", f, lineno);
-      return;
-    }
-  }
-}
-
-/* The options (up to three, "-a, -b") whose value is x or has x as one comma-separated element. */
+/* The options (up to three, "-a, -b") whose value is x or has x as one comma-separated element (each
+   value as the database holds it, so that a value with blanks, "1e6 Pa", is found too). */
 static int HylcOptionsWithValue(const char x[], char names[], size_t len, char first[], size_t flen)
 {
-  char *all = NULL, *tok, *save = NULL, *prev = NULL;
+  char *all = NULL, *tok, *save = NULL;
   int   count = 0;
 
   names[0] = first[0] = 0;
   if (!x || !x[0] || PetscOptionsGetAll(NULL, &all) || !all) return 0;
   for (tok = strtok_r(all, " ", &save); tok; tok = strtok_r(NULL, " ", &save)) {
-    const int isname = tok[0] == '-' && (isalpha((unsigned char)tok[1]) || tok[1] == '_');
-    if (isname) {
-      prev = tok;
-      continue;
-    }
-    if (!prev) continue;
-    /* tok is the value of prev: compare as a whole and element by element */
-    int          hit = !strcmp(tok, x);
-    const char  *e   = tok;
+    const char *val = NULL;
+    PetscBool   set = PETSC_FALSE;
+    if (!(tok[0] == '-' && (isalpha((unsigned char)tok[1]) || tok[1] == '_'))) continue;
+    if (PetscOptionsFindPair(NULL, NULL, tok, &val, &set) || !set || !val) continue;
+    /* compare as a whole and element by element */
+    int          hit = !strcmp(val, x);
+    const char  *e   = val;
     const size_t m   = strlen(x);
     while (!hit && e) {
       if (!strncmp(e, x, m) && (e[m] == ',' || e[m] == 0)) hit = 1;
       e = strchr(e, ',');
       if (e) e++;
     }
-    if (hit) {
-      if (!count) snprintf(first, flen, "%s", prev + 1);
+    if (hit && !strstr(names, tok)) {
+      if (!count) snprintf(first, flen, "%s", tok + 1);
       if (count < 3) {
         if (count) strncat(names, " or ", len - strlen(names) - 1);
-        strncat(names, prev, len - strlen(names) - 1);
+        strncat(names, tok, len - strlen(names) - 1);
       }
       count++;
     }
-    prev = NULL;
   }
   PetscFree(all);
   return count;
+}
+
+/* The first option the message names ("-name" after a blank, '(' or a quote, or at its start) that is
+   set, and where an options file sets it ("file:line: "); returns 1 if one is found in a file. */
+static int HylcMessageOptionSource(const char mess[], char where[], size_t len)
+{
+  where[0] = 0;
+  for (const char *c = mess; c && *c; c++) {
+    char      name[256];
+    size_t    n = 0;
+    PetscBool set;
+    if (*c != '-' || !(c == mess || HylcIsSpace(c[-1]) || c[-1] == '(' || c[-1] == '\'' || c[-1] == '"' || c[-1] == '`')) continue;
+    if (!(isalpha((unsigned char)c[1]) || c[1] == '_')) continue;
+    while (n + 1 < sizeof(name) && (isalnum((unsigned char)c[n]) || c[n] == '_' || (n == 0 && c[n] == '-'))) {
+      name[n] = c[n];
+      n++;
+    }
+    name[n] = 0;
+    if (PetscOptionsHasName(NULL, NULL, name, &set) || !set) continue;
+    HylcOptionSource(name, where, len);
+    return where[0] != 0;
+  }
+  return 0;
 }
 
 /* Rewrites PETSc's messages about an option's value so that they name the option (and the options file
@@ -144,7 +126,16 @@ static PetscErrorCode HylcErrorHandler(MPI_Comm comm, int line, const char *fun,
   const PetscBool user = (PetscBool)(n == PETSC_ERR_USER_INPUT || n == PETSC_ERR_USER || n == PETSC_ERR_ARG_UNKNOWN_TYPE || n == PETSC_ERR_MISSING_FACTOR || n == PETSC_ERR_FILE_OPEN || n == PETSC_ERR_FILE_READ || n == PETSC_ERR_FILE_WRITE || n == PETSC_ERR_FILE_UNEXPECTED || n == PETSC_ERR_ARG_OUTOFRANGE || n == PETSC_ERR_ARG_WRONG || n == PETSC_ERR_ARG_INCOMP || n == PETSC_ERR_NOT_CONVERGED);
   char            better[PETSC_MAX_PATH_LEN + 512];
   if (!user) return PetscTraceBackErrorHandler(comm, line, fun, file, n, p, mess, NULL);
-  if (p == PETSC_ERROR_INITIAL && HylcDescribeOptionError(n, mess, better, sizeof(better))) mess = better;
+  if (p == PETSC_ERROR_INITIAL && HylcDescribeOptionError(n, mess, better, sizeof(better)))
+    mess = better;
+  else if (p == PETSC_ERROR_INITIAL && mess && strncmp(mess, "Cannot open options file", 24)) {
+    /* a message about an option set in an options file names the file and line first */
+    char where[PETSC_MAX_PATH_LEN + 32];
+    if (HylcMessageOptionSource(mess, where, sizeof(where)) && strncmp(mess, where, strlen(where))) {
+      snprintf(better, sizeof(better), "%s%s", where, mess);
+      mess = better;
+    }
+  }
   if (p == PETSC_ERROR_INITIAL) {
     PetscMPIInt rank = 0, size = 1, wsize = 1, wrank = 0;
     if (comm != MPI_COMM_NULL) {
@@ -214,6 +205,7 @@ static int HylcAllRanksFailed(void)
 int HylcMainFinalize(PetscErrorCode ierr)
 {
   PetscMPIInt size = 1;
+  HylcHelpFlush(); /* -help: hylc's options, then PETSc's */
   if (ierr) {
     /* An error raised on every rank (bad input, checked collectively) ends the job normally, so that the
        message printed by rank 0 is never cut off by an abort from another rank. An error on some ranks
@@ -225,16 +217,27 @@ int HylcMainFinalize(PetscErrorCode ierr)
     return (int)ierr;
   }
   if (HylcErrorComm != MPI_COMM_NULL) MPI_Comm_free(&HylcErrorComm);
-  /* misspelt options must not pass silently */
-  PetscInt n     = 0;
-  char   **names = NULL, **values = NULL;
+  /* misspelt options must not pass silently: every program refuses them before its work
+     (HylcCheckOptionsUsed()); one still unread at the end (-help lists without reading all) is an error
+     too, except with -help */
+  PetscInt  n = 0, bad = 0;
+  char    **names = NULL, **values = NULL;
+  PetscBool help = PETSC_FALSE;
+  PetscOptionsHasHelp(NULL, &help);
   if (!PetscOptionsLeftGet(NULL, &n, &names, &values)) {
     PetscMPIInt rank = 0;
     MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
-    for (PetscInt i = 0; i < n && !rank; i++) fprintf(stderr, "hylc: warning: option -%s%s%s was not used (misspelt, or not for this program?)\n", names[i], values[i] ? " " : "", values[i] ? values[i] : "");
+    for (PetscInt i = 0; i < n; i++) {
+      PetscBool other = PETSC_FALSE;
+      if (!HylcOptionIsOtherStage(names[i], &other) && other) continue;
+      bad++;
+      if (!rank) fprintf(stderr, "hylc: %s: option -%s%s%s was not used (misspelt, or not for this program; -help lists the options)\n", help ? "warning" : "error", names[i], values[i] ? " " : "", values[i] ? values[i] : "");
+    }
     PetscOptionsLeftRestore(NULL, &n, &names, &values);
   }
-  return (int)PetscFinalize();
+  ierr = PetscFinalize();
+  if (ierr) return (int)ierr;
+  return bad && !help ? (int)PETSC_ERR_USER_INPUT : 0;
 }
 
 /*@C
@@ -271,23 +274,34 @@ PetscErrorCode HylcShareError(MPI_Comm comm, PetscErrorCode ierr)
 
 /*@C
   HylcCheckOptionsUsed - Refuses options that nothing has read (misspelt or not for this program), before
-  any work is done. Collective.
+  any work is done; the options of other hylc programs' stages only (HylcOptionIsOtherStage()) are
+  ignored, so that every program reads the whole study's options file. A viewer option (a name ending in
+  _view, read when its object is viewed) is left to HylcMainFinalize(), which refuses what is still
+  unread at the end. Collective.
 @*/
 PetscErrorCode HylcCheckOptionsUsed(MPI_Comm comm)
 {
-  PetscInt n = 0, shown = 0;
+  PetscInt n = 0, shown = 0, nbad = 0;
   char   **names = NULL, **values = NULL, list[1024] = "";
 
   PetscFunctionBegin;
   PetscCall(PetscOptionsLeftGet(NULL, &n, &names, &values));
-  /* as many names as fit, then how many more (PETSc 3.18's PetscStrlcat writes past a nearly full buffer) */
+  /* as many names as fit, then how many more (PETSc 3.18's PetscStrlcat writes past a nearly full buffer);
+     the options of other programs' stages only are not this program's to refuse (HylcOptionIsOtherStage()) */
   for (PetscInt i = 0; i < n; i++) {
     const size_t used = strlen(list), need = strlen(names[i]) + 2;
-    if (used + need + 32 >= sizeof(list)) break;
+    PetscBool    other;
+    PetscCall(HylcOptionIsOtherStage(names[i], &other));
+    if (other) continue;
+    /* a viewer option (-mat_view, -micro_snes_view) is read when its object is viewed, during the work:
+       HylcMainFinalize() refuses it if it is still unread at the end */
+    if (strlen(names[i]) > 5 && !strcmp(names[i] + strlen(names[i]) - 5, "_view")) continue;
+    nbad++;
+    if (used + need + 32 >= sizeof(list)) continue;
     snprintf(list + used, sizeof(list) - used, " -%s", names[i]);
     shown++;
   }
-  if (shown < n) snprintf(list + strlen(list), sizeof(list) - strlen(list), " and %" PetscInt_FMT " more", n - shown);
+  if (shown < nbad) snprintf(list + strlen(list), sizeof(list) - strlen(list), " and %" PetscInt_FMT " more", nbad - shown);
   PetscCall(PetscOptionsLeftRestore(NULL, &n, &names, &values));
   PetscCheck(!list[0], comm, PETSC_ERR_USER_INPUT, "Unknown option(s):%s (misspelt, or not for this program; -help lists the options)", list);
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -363,23 +377,23 @@ static void HylcCountArgs(OptionsScan *o, int n, char **args, const char where[]
     if (HylcValidKey(args[i])) HylcCountKey(o, args[i], strlen(args[i]), where);
 }
 
-/* the keys of a plain options file (one "-key value" per line) or a YAML one ("key: value", nested keys
-   joined with '_' as PETSc does) */
-static void HylcCountFile(OptionsScan *o, const char path[], int yaml)
+/* Calls fn(key, n, path, lineno, ctx) for each option key of a plain options file (one "-key value" per
+   line; key with its dash) or a YAML one ("key: value", nested keys joined with '_' as PETSc does; key
+   without a dash), in file order, until fn returns non-zero. */
+static void HylcWalkFileKeys(const char path[], int yaml, int (*fn)(const char *, size_t, const char[], int, void *), void *ctx)
 {
   FILE   *fp   = fopen(path, "r");
-  char   *line = NULL, where[PETSC_MAX_PATH_LEN + 32];
+  char   *line = NULL;
   size_t  cap  = 0;
   ssize_t len;
-  int     lineno = 0, depth = 0, indent[64];
+  int     lineno = 0, depth = 0, indent[64], stop = 0;
   char    stack[64][128];
 
   if (!fp) return;
-  while (!o->bad && (len = getline(&line, &cap, fp)) >= 0) {
+  while (!stop && (len = getline(&line, &cap, fp)) >= 0) {
     char *s   = line, *c;
     int   ind = 0;
     lineno++;
-    snprintf(where, sizeof(where), "%s:%d", path, lineno);
     if (!yaml) {
       if ((c = strchr(s, '#'))) *c = 0;
       while (HylcIsSpace(*s)) s++;
@@ -388,7 +402,7 @@ static void HylcCountFile(OptionsScan *o, const char path[], int yaml)
       if (c > s && *s == '-') {
         char k = *c;
         *c     = 0;
-        if (HylcValidKey(s)) HylcCountKey(o, s, strlen(s), where);
+        if (HylcValidKey(s)) stop = fn(s, strlen(s), path, lineno, ctx);
         *c = k;
       }
       continue;
@@ -412,12 +426,66 @@ static void HylcCountFile(OptionsScan *o, const char path[], int yaml)
         char full[256] = "";
         for (int i = 0; i < depth; i++) snprintf(full + strlen(full), sizeof(full) - strlen(full), "%.127s_", stack[i]);
         snprintf(full + strlen(full), sizeof(full) - strlen(full), "%.*s", (int)(c - s), s);
-        HylcCountKey(o, full, strlen(full), where);
+        stop = fn(full, strlen(full), path, lineno, ctx);
       }
     }
   }
   free(line);
   fclose(fp);
+}
+
+static int HylcCountFileKey(const char *key, size_t n, const char path[], int lineno, void *ctx)
+{
+  char where[PETSC_MAX_PATH_LEN + 32];
+  snprintf(where, sizeof(where), "%s:%d", path, lineno);
+  HylcCountKey((OptionsScan *)ctx, key, n, where);
+  return ((OptionsScan *)ctx)->bad;
+}
+
+/* the keys of a plain or YAML options file */
+static void HylcCountFile(OptionsScan *o, const char path[], int yaml)
+{
+  HylcWalkFileKeys(path, yaml, HylcCountFileKey, o);
+}
+
+/* ---- where an option was set ---- */
+
+typedef struct {
+  const char *name; /* without its dash */
+  char       *where;
+  size_t      len;
+} OptionSource;
+
+static int HylcSourceKey(const char *key, size_t n, const char path[], int lineno, void *ctx)
+{
+  OptionSource *o = (OptionSource *)ctx;
+  while (n && *key == '-') key++, n--;
+  if (n == strlen(o->name) && !strncasecmp(key, o->name, n)) snprintf(o->where, o->len, "%s:%d: ", path, lineno); /* the last one wins */
+  return 0;
+}
+
+static void HylcSourceFile(const char path[], const char what[], int yaml, void *ctx)
+{
+  (void)what;
+  HylcWalkFileKeys(path, yaml, HylcSourceKey, ctx);
+}
+
+/* Where option -name was set: "file:line: " of the options file that sets it last (a YAML "name:", with
+   nested keys joined by '_', or a plain "-name"; every options file the program read, nested ones too),
+   or "" when the command line sets it or no file does. */
+static void HylcOptionSource(const char name[], char where[], size_t len)
+{
+  int          argc = 0;
+  char       **args = NULL;
+  OptionSource o    = {name, where, len};
+
+  where[0] = 0;
+  while (*name == '-') name++;
+  o.name = name;
+  if (PetscGetArgs(&argc, &args) || !args) return;
+  for (int i = 1; i < argc; i++)
+    if (args[i][0] == '-' && !strcasecmp(args[i] + 1, name)) return; /* given on the command line */
+  HylcOptionsFilesForEach(argc, args, HylcSourceFile, &o);
 }
 
 /* each options file: it must exist and not be a directory, a YAML file must be well formed; its keys
@@ -473,7 +541,9 @@ static int HylcCheckOptionsFiles(int argc, char **argv, char msg[], size_t len)
   a missing file, a directory or a malformed YAML file (a .yaml/.yml file outside the subset of YAML that
   option files use: "key: value" lines, comments, "key:" blocks) ends the program with one line
   "hylc: error: file:line: problem" and exit status PETSC_ERR_USER_INPUT (PETSc's own reader would
-  report neither file nor line). Collective on MPI_COMM_WORLD (as PetscInitialize()).
+  report neither file nor line). -version prints HylcVersionView() and ends the program; -help is
+  printed sorted, hylc's options before PETSc's (src/sys/help.c). Collective on MPI_COMM_WORLD (as
+  PetscInitialize()).
   Programs write:  PetscCall(HylcInitialize(&argc, &argv, NULL, help));
 @*/
 PetscErrorCode HylcInitialize(int *argc, char ***argv, const char file[], const char help[])
@@ -487,7 +557,24 @@ PetscErrorCode HylcInitialize(int *argc, char ***argv, const char file[], const 
     }
     exit(PETSC_ERR_USER_INPUT);
   }
+  PetscBool version = PETSC_FALSE;
+  if (argc && argv) { /* -version: hylc's, not only PETSc's (which PETSc would print and go on) */
+    for (int i = 1; i < *argc; i++)
+      if (!strcmp((*argv)[i], "-version")) {
+        version = PETSC_TRUE;
+        for (int j = i; j + 1 < *argc; j++) (*argv)[j] = (*argv)[j + 1];
+        (*argc)--;
+        i--;
+      }
+  }
+  if (argc && argv && !version) HylcHelpCapture(*argc, *argv);
   PetscCall(PetscInitialize(argc, argv, file, help));
+  if (version) {
+    PetscErrorCode ierr = HylcVersionView(argc && *argc > 0 ? (*argv)[0] : NULL);
+    PetscFinalize();
+    exit(ierr ? (int)ierr : 0);
+  }
+  PetscCall(HylcSetProgramName(argc && argv && *argc > 0 ? (*argv)[0] : NULL));
   PetscCallMPI(MPI_Comm_dup(PETSC_COMM_WORLD, &HylcErrorComm));
   PetscCall(HylcPushErrorHandler());
   return PETSC_SUCCESS;

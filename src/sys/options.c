@@ -1,6 +1,8 @@
 /* Option readers that refuse non-finite reals and extra list values (include/hylc/options.h). */
 #include <hylc/options.h>
 #include <math.h>
+#include <stdio.h>
+#include <string.h>
 
 /* the option as the user wrote it (with the prefix) and its value as given */
 static PetscErrorCode OptionText(PetscOptionItems *items, const char opt[], char key[], size_t klen, const char **value)
@@ -60,6 +62,38 @@ static PetscErrorCode CheckCount(PetscOptionItems *items, const char opt[], Pets
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* -help of a list option: every value ("-sampler_range_sx <-0.6,0.6>"; PETSc's readers show the first
+   only), the given ones too when the option is set ("<now -0.1,0.1 : formerly -0.6,0.6>"). A list of at
+   most 6 values shows them all; a longer one (a capacity, -solve_uniaxial_strains) without its trailing
+   zeros. */
+static PetscBool HelpWanted(PetscOptionItems *items) { return (PetscBool)(items->printhelp && items->count == 1 && !items->alreadyprinted); }
+
+static void FormatList(char buf[], size_t len, PetscInt n, const PetscReal *r, const PetscInt *iv)
+{
+  PetscInt m = n;
+  if (n > 6)
+    while (m > 1 && (r ? r[m - 1] == 0 : iv[m - 1] == 0)) m--;
+  buf[0] = 0;
+  for (PetscInt i = 0; i < m; i++) {
+    size_t used = strlen(buf);
+    if (used + 32 >= len) break;
+    if (r)
+      snprintf(buf + used, len - used, "%s%g", i ? "," : "", (double)r[i]);
+    else
+      snprintf(buf + used, len - used, "%s%" PetscInt_FMT, i ? "," : "", iv[i]);
+  }
+}
+
+static PetscErrorCode HelpLine(PetscOptionItems *items, const char opt[], const char text[], const char man[], const char defaults[], const char now[])
+{
+  PetscFunctionBegin;
+  if (now)
+    PetscCall((*PetscHelpPrintf)(items->comm, "  -%s%s <now %s : formerly %s>: %s (%s)\n", items->prefix ? items->prefix : "", opt + 1, now, defaults, text, man));
+  else
+    PetscCall((*PetscHelpPrintf)(items->comm, "  -%s%s <%s>: %s (%s)\n", items->prefix ? items->prefix : "", opt + 1, defaults, text, man));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /*@C
   HylcOptionsRealArray_Private - PetscOptionsRealArray() that refuses more than *n values and values that
   are not finite (use the macro HylcOptionsRealArray()).
@@ -68,11 +102,20 @@ static PetscErrorCode CheckCount(PetscOptionItems *items, const char opt[], Pets
 @*/
 PetscErrorCode HylcOptionsRealArray_Private(PetscOptionItems *items, const char opt[], const char text[], const char man[], PetscReal v[], PetscInt *n, PetscBool *set)
 {
-  const PetscInt max = *n;
-  PetscBool      flg = PETSC_FALSE;
+  const PetscInt  max           = *n;
+  PetscBool       flg           = PETSC_FALSE;
+  const PetscBool help          = HelpWanted(items);
+  char            defaults[512] = "", now[512];
 
   PetscFunctionBegin;
+  if (help) FormatList(defaults, sizeof(defaults), max, v, NULL);
+  items->printhelp = (PetscBool)(items->printhelp && !help); /* this reader prints the line */
   PetscCall(PetscOptionsRealArray_Private(items, opt, text, man, v, n, &flg));
+  items->printhelp = (PetscBool)(items->printhelp || help);
+  if (help) {
+    if (flg) FormatList(now, sizeof(now), *n, v, NULL);
+    PetscCall(HelpLine(items, opt, text, man, defaults, flg ? now : NULL));
+  }
   if (set) *set = flg;
   if (!flg) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(CheckCount(items, opt, max, PETSC_TRUE));
@@ -94,11 +137,20 @@ PetscErrorCode HylcOptionsRealArray_Private(PetscOptionItems *items, const char 
 @*/
 PetscErrorCode HylcOptionsIntArray_Private(PetscOptionItems *items, const char opt[], const char text[], const char man[], PetscInt v[], PetscInt *n, PetscBool *set)
 {
-  const PetscInt max = *n;
-  PetscBool      flg = PETSC_FALSE;
+  const PetscInt  max           = *n;
+  PetscBool       flg           = PETSC_FALSE;
+  const PetscBool help          = HelpWanted(items);
+  char            defaults[512] = "", now[512];
 
   PetscFunctionBegin;
+  if (help) FormatList(defaults, sizeof(defaults), max, NULL, v);
+  items->printhelp = (PetscBool)(items->printhelp && !help); /* this reader prints the line */
   PetscCall(PetscOptionsIntArray_Private(items, opt, text, man, v, n, &flg));
+  items->printhelp = (PetscBool)(items->printhelp || help);
+  if (help) {
+    if (flg) FormatList(now, sizeof(now), *n, NULL, v);
+    PetscCall(HelpLine(items, opt, text, man, defaults, flg ? now : NULL));
+  }
   if (set) *set = flg;
   if (flg) PetscCall(CheckCount(items, opt, max, PETSC_FALSE));
   PetscFunctionReturn(PETSC_SUCCESS);

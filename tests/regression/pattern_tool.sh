@@ -32,8 +32,9 @@ for opt in -pattern_file -pattern_type -pattern_radius -pattern_spacing -pattern
 done
 
 # a misspelt option is reported, not silently ignored
-$tool -pattern_type plain -pattern_radus 2e-3 >typo.txt 2>&1 || { cat typo.txt; die "typo run failed"; }
-grep -q 'pattern_radus' typo.txt || { cat typo.txt; die "unused option not reported"; }
+$tool -pattern_type plain -pattern_radus 2e-3 -pattern_output typo.pyp >typo.txt 2>&1 && { cat typo.txt; die "a misspelt option was accepted"; }
+grep -q '^hylc: error: Unknown option(s): -pattern_radus ' typo.txt || { cat typo.txt; die "the misspelt option is not named"; }
+[ ! -e typo.pyp ] || die "a pattern was written despite the misspelt option"
 
 # bad option values give clear errors
 $tool -pattern_type satin -pattern_size 4,5 >bad.txt 2>&1 && die "satin with size 4,5 accepted"

@@ -41,7 +41,7 @@ expect_fail '^hylc: error: Too many options: -pattern_type \(PETSC_OPTIONS\) is 
 # list cut with "and N more": it overflowed a stack buffer before, found by this case under ASan, since
 # PETSc 3.18's PetscStrlcat writes past a nearly full buffer)
 head -n 510 o512.txt >o510.txt
-expect_fail '^hylc: error: Unknown option\(s\): -zz_opt.* and [0-9]+ more \(misspelt' env PETSC_OPTIONS= "$B/hylc-calibrate" -options_file o510.txt -pattern_type plain -calibrate_target t.csv
+expect_fail '^hylc: error: o510.txt:1: Unknown option\(s\): -zz_opt.* and [0-9]+ more \(misspelt' env PETSC_OPTIONS= "$B/hylc-calibrate" -options_file o510.txt -pattern_type plain -calibrate_target t.csv
 # paths over the limits: refused before any work, naming the option
 long=$(printf 'd%.0s' $(seq 1 200))
 dir=$long; for i in $(seq 2 21); do dir=$dir/$long; done

@@ -8,7 +8,7 @@ P=$HYLC_BIN/hylc-pattern
 refused negative-size "^hylc: error: Option -pattern_size -4,4: sizes must be integers from 1 to 1000" $P -pattern_type plain -pattern_size -4,4
 refused zero-size "^hylc: error: Option -pattern_size 0,4: sizes must be" $P -pattern_type twill -pattern_size 0,4
 refused huge-size "^hylc: error: Option -pattern_size 100000,4: sizes must be" $P -pattern_type plain -pattern_size 100000,4
-refused three-values "^hylc: error: Option -pattern_size 4,4,4: needs two integers nx,ny" $P -pattern_type plain -pattern_size 4,4,4
+refused three-values "^hylc: error: Option -pattern_size 4,4,4: more than 2 values$" $P -pattern_type plain -pattern_size 4,4,4
 refused one-value "^hylc: error: Option -pattern_size 4: needs two integers nx,ny" $P -pattern_type stockinette -pattern_size 4
 refused negative-radius "^hylc: error: Option -pattern_radius -1e-3: must be positive" $P -pattern_type plain -pattern_radius -1e-3
 refused inf-radius "^hylc: error: Option -pattern_radius inf: not a finite number" $P -pattern_type rib -pattern_radius inf

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Probe 4.8 (options files and values): a malformed YAML options file used to give PETSc's "YAML parser
 # loading error" with neither file nor line, and a non-numeric value "Input string abc has no integer
-# value" naming neither option nor file. Now one line naming the file, line, option and value. Since
-# issue 33 the file is parsed by libyaml (src/sys/yamlcheck.c), whose messages give line and column.
+# value" naming neither option nor file. Now one line naming the file, line, option and value (issue 33:
+# any error about an option set in a file, values with blanks and nested YAML keys too). Since issue 33
+# the file is parsed by libyaml (src/sys/yamlcheck.c), whose messages give line and column.
 set -u
 . "$(dirname "$0")/probe_common.inc"
 cd "$HYLC_TMP"
@@ -32,6 +33,24 @@ printf 'pattern_type: plain\n# the sampling plan\nsampler_n1: abc\n' >n1.yaml
 refused yaml-integer "^hylc: error: n1.yaml:3: option -sampler_n1: 'abc' is not an integer$" "$HYLC_BIN/hylc-sample" -options_file n1.yaml -sampler_output s.h5
 refused cmdline-real "^hylc: error: option -strain: 'a' is not a number$" "$HYLC_BIN/hylc-solve" -pattern_type plain -strain a,0,0,0,0,0
 refused cmdline-int "^hylc: error: option -pattern_size: 'x' is not an integer$" $P -pattern_type plain -pattern_size x,4
+# issue 33: a value with a unit, a nested key, a finite-number check, a range check, a bad choice, a
+# plain options file, the last of two files: each names the file, the line and the option
+printf 'pattern_type: plain\nyarn_E: 1e6 Pa\n' >unit.yaml
+refused yaml-unit "^hylc: error: unit.yaml:2: option -yarn_E: '1e6 Pa' is not a number$" "$HYLC_BIN/hylc-solve" -options_file unit.yaml -strain 0,0,0,0,0,0
+printf 'pattern_type: plain\nmicro:\n  # the Newton solver\n  rtol: abc\n' >nested.yaml
+refused yaml-nested "^hylc: error: nested.yaml:4: option -micro_rtol: 'abc' is not a number$" "$HYLC_BIN/hylc-solve" -options_file nested.yaml -strain 0,0,0,0,0,0
+printf 'pattern_type: plain\n\nyarn_E: inf\n' >inf.yaml
+refused yaml-finite "^hylc: error: inf.yaml:3: Option -yarn_E inf: not a finite number$" "$HYLC_BIN/hylc-solve" -options_file inf.yaml -strain 0,0,0,0,0,0
+printf 'pattern_type: plain\nyarn_E: -5\n' >neg.yaml
+refused yaml-check "^hylc: error: neg.yaml:2: -yarn_E must be positive" "$HYLC_BIN/hylc-solve" -options_file neg.yaml -strain 0,0,0,0,0,0
+printf 'pattern_type: plain\nsampler_family: silk\n' >family.yaml
+refused yaml-choice "^hylc: error: family.yaml:2: Unknown option silk for -sampler_family" "$HYLC_BIN/hylc-sample" -options_file family.yaml -sampler_output s.h5
+printf -- '-pattern_type plain\n\n-yarn_kc 5x\n' >plain.txt
+refused plain-file "^hylc: error: plain.txt:3: option -yarn_kc: '5x' is not a number$" "$HYLC_BIN/hylc-solve" -options_file plain.txt -strain 0,0,0,0,0,0
+printf 'yarn_kc: 5\n' >first.yaml
+printf '# second\nyarn_kc: 5 N/m\n' >second.yaml
+refused last-file "^hylc: error: second.yaml:2: option -yarn_kc: '5 N/m' is not a number$" "$HYLC_BIN/hylc-solve" -pattern_type plain -options_file first.yaml -options_file second.yaml -strain 0,0,0,0,0,0
+refused cmdline-wins "^hylc: error: option -yarn_kc: '7x' is not a number$" "$HYLC_BIN/hylc-solve" -pattern_type plain -options_file first.yaml -yarn_kc 7x -strain 0,0,0,0,0,0
 # a well-formed file with comments, blank lines and a block still loads
 printf -- '---\n# a comment\npattern_type: plain   # trailing comment\n\npattern_radius: 1.0e-3\n' >good.yaml
 $P -options_file good.yaml >good.txt 2>&1 || { cat good.txt; echo "FAIL: a well-formed YAML file is refused"; exit 1; }

@@ -41,11 +41,13 @@ struct _p_HylcFit {
   PetscInt          terms;                                                           /* bit t: fit term t */
   /* data: the rows used (status 0), in file order */
   PetscInt   n;
-  PetscReal *z, *psi;                             /* n x 6, n */
-  PetscInt  *term, *row;                          /* term, row in the file */
-  PetscReal  rhoA;                                /* resolved area density (kg/m^2), <= 0 unknown */
-  char       rhoSource[PETSC_MAX_PATH_LEN + 256]; /* how rhoA was obtained */
-  PetscReal  radius, restLength, px, py;          /* from the samples file's /reference (0 if absent) */
+  PetscReal *z, *psi;                               /* n x 6, n */
+  PetscInt  *term, *row;                            /* term, row in the file */
+  PetscReal  rhoA;                                  /* resolved area density (kg/m^2), <= 0 unknown */
+  char       rhoSource[PETSC_MAX_PATH_LEN + 256];   /* how rhoA was obtained */
+  char       familyName[32];                        /* the family as named (-sampler_family's spelling) */
+  char       familySource[PETSC_MAX_PATH_LEN + 64]; /* where the family came from */
+  PetscReal  radius, restLength, px, py;            /* from the samples file's /reference (0 if absent) */
   char       source[PETSC_MAX_PATH_LEN + 64];
   PetscInt   nrows, nskipped; /* rows in the input, rows not used (status != 0) */
   PetscReal  zabsmax[6];      /* max |strain| over every computed row, converged or not (the plan's range) */
@@ -64,5 +66,8 @@ struct _p_HylcFit {
 
 /* input.c: reads fit->input into the data arrays (rank-local). */
 PETSC_INTERN PetscErrorCode HylcFitReadInput_Private(HylcFit);
+/* the sampling family recorded in a samples file's provenance (-sampler_family, woven when the run did not
+   set it); *found false for a file without provenance (or not an HDF5 samples file). Not collective. */
+PETSC_INTERN PetscErrorCode HylcFitInputFamily_Private(const char[], char[], size_t, PetscBool *);
 /* fit.c: frees the results */
 PETSC_INTERN PetscErrorCode HylcFitResetResults_Private(HylcFit);

@@ -17,6 +17,7 @@ struct _p_HylcPattern {
   PetscReal            viewDensity;       /* volumetric density used by the summary (kg/m^3) */
   PetscReal            viewExcludeArc;    /* same-yarn exclusion arc for the summary's distance (units of r) */
   PetscBool            consistentPeriods; /* loader: replace the stored periods by those the periodic edges' rest lengths imply */
+  HylcPatternState     state;             /* reference, generated, equilibrium, or unrecorded (a file without the record) */
   /* data */
   PetscInt   nv;
   PetscReal  px, py, radius;
