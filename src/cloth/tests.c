@@ -1,0 +1,267 @@
+/* The virtual standard tests of HylcCloth (docs/fabric.md): strip tensile, the table's homogeneous
+   uniaxial curve, and the helpers they share (the specimen strip, the central zone, clamps by region). */
+#include <hylc/private/clothimpl.h>
+
+/* the vertices of the rest mesh inside the box [x0, x1] x [y0, y1] (any z) */
+PetscErrorCode HylcClothVerticesInBox_Private(HylcCloth c, PetscReal x0, PetscReal x1, PetscReal y0, PetscReal y1, PetscInt *n, PetscInt **v)
+{
+  PetscFunctionBegin;
+  *n = 0;
+  PetscCall(PetscMalloc1(c->nv, v));
+  for (PetscInt i = 0; i < c->nv; i++) {
+    const PetscReal *p = c->X + 3 * i;
+    if (p[0] >= x0 && p[0] <= x1 && p[1] >= y0 && p[1] <= y1) (*v)[(*n)++] = i;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* a strip specimen [x0, x0 + L] x [0, W], material x at angle (degrees) to the length, face down or up;
+   the clamps are reset */
+PetscErrorCode HylcClothStrip_Private(HylcCloth c, PetscReal x0, PetscReal L, PetscReal W, PetscReal h, PetscReal angle, PetscBool faceDown)
+{
+  PetscFunctionBegin;
+  PetscCall(HylcClothSolverReset_Private(c));
+  PetscCall(HylcClothClampsReset_Private(c));
+  PetscCall(HylcClothMeshStrip_Private(c, x0, L, W, h));
+  PetscCall(HylcClothMeshMaterial_Private(c, angle * PETSC_PI / 180, faceDown));
+  c->nsupport = 0;
+  c->load     = 0;
+  c->gscale   = 1;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* lays out the mesh over the ranks and sets the tolerances that depend on its size; x = rest */
+PetscErrorCode HylcClothPrepare_Private(HylcCloth c)
+{
+  PetscReal W = c->rhoA * c->gravity * c->area;
+
+  PetscFunctionBegin;
+  PetscCall(HylcClothBuild_Private(c));
+  c->Escale = PetscMax(W * PetscSqrtReal(c->area), hylcmat_constant(c->hm) * c->area);
+  if (c->atol < 0)
+    c->atolUsed = PetscMax(1e-14 * W, 1e-16);
+  else
+    c->atolUsed = c->atol;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* area-weighted mean strains of the triangles whose rest centroids lie in the box */
+PetscErrorCode HylcClothZoneMean_Private(HylcCloth c, const PetscReal *z, PetscReal x0, PetscReal x1, PetscReal y0, PetscReal y1, PetscReal mean[6])
+{
+  PetscReal A = 0;
+
+  PetscFunctionBegin;
+  for (int k = 0; k < 6; k++) mean[k] = 0;
+  for (PetscInt t = 0; t < c->nt; t++) {
+    const PetscInt  *v  = c->tri + 3 * t;
+    PetscReal        cx = (c->X[3 * v[0]] + c->X[3 * v[1]] + c->X[3 * v[2]]) / 3, cy = (c->X[3 * v[0] + 1] + c->X[3 * v[1] + 1] + c->X[3 * v[2] + 1]) / 3;
+    const PetscReal *u = c->uv + 6 * t;
+    PetscReal        a = 0.5 * ((u[2] - u[0]) * (u[5] - u[1]) - (u[4] - u[0]) * (u[3] - u[1]));
+    if (cx < x0 || cx > x1 || cy < y0 || cy > y1) continue;
+    for (int k = 0; k < 6; k++) mean[k] += a * z[6 * t + k];
+    A += a;
+  }
+  PetscCheck(A > 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "the central zone holds no triangle");
+  for (int k = 0; k < 6; k++) mean[k] /= A;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* y(x) at x by linear interpolation in the table (xs increasing) */
+static PetscReal Interp(PetscInt n, const PetscReal *xs, const PetscReal *ys, PetscReal x)
+{
+  if (n == 1) return ys[0];
+  for (PetscInt i = 0; i + 1 < n; i++)
+    if (x <= xs[i + 1] || i + 2 == n) return ys[i] + (ys[i + 1] - ys[i]) * (x - xs[i]) / (xs[i + 1] - xs[i]);
+  return ys[n - 1];
+}
+
+/* the derivative dy/dx at x from the table (central difference of the neighbouring points) */
+static PetscReal Slope(PetscInt n, const PetscReal *xs, const PetscReal *ys, PetscReal x)
+{
+  PetscReal h = n > 1 ? xs[1] - xs[0] : 1;
+  return (Interp(n, xs, ys, x + h) - Interp(n, xs, ys, x - h)) / (2 * h);
+}
+
+static PetscErrorCode DirectionList(HylcCloth c, PetscInt *n, PetscInt dirs[2])
+{
+  PetscFunctionBegin;
+  *n = 0;
+  if (c->direction != HYLC_CLOTH_DIR_Y) dirs[(*n)++] = 0;
+  if (c->direction != HYLC_CLOTH_DIR_X) dirs[(*n)++] = 1;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*
+  Strip tensile (ISO 13934-1, docs/fabric.md): a strip of -cloth_length (gauge, 0.2 m) by -cloth_width
+  (0.05 m), material x along its length (direction x) or across it (y), gripped over the full width at
+  both ends; the right grip moves to each nominal strain. Per step: T = the grip's force / width (N/m),
+  the central zone's strains (middle fifth of the length, middle half of the width), its Poisson ratio,
+  and the table's homogeneous uniaxial state at the central zone's strain (HylcClothUniaxial): T_table and
+  the lateral strain. CSV columns: direction, face, step, strain, T, central_strain, lateral_strain,
+  poisson, T_table, lateral_table, T_rel_diff, newton_its.
+*/
+PetscErrorCode HylcClothRunTensile_Private(HylcCloth c)
+{
+  MPI_Comm      comm = CLOTH_COMM_PRIVATE(c);
+  PetscInt      ndir, dirs[2];
+  HylcClothText csv = {0};
+  char          path[PETSC_MAX_PATH_LEN + 64];
+  PetscReal     L = c->length, W = c->width;
+
+  PetscFunctionBegin;
+  PetscCall(DirectionList(c, &ndir, dirs));
+  PetscCall(HylcClothTextAppend_Private(&csv, "direction,face,step,strain,T_N_per_m,central_strain,lateral_strain,poisson,T_table,lateral_table,T_rel_diff,newton_its\n"));
+  for (PetscInt id = 0; id < ndir; id++) {
+    PetscInt   d = dirs[id], n, *v, ns = c->strainSteps;
+    PetscReal  angle = c->angle > -360 ? c->angle : (d ? 90.0 : 0.0), disp[3] = {c->strainMax * L, 0, 0}, *z, *eps, *T, *lat, maxrel = 0, maxdlat = 0;
+    PetscBool  faceDown = c->face == HYLC_CLOTH_FACE_DOWN ? PETSC_TRUE : PETSC_FALSE;
+    const char dn[2][2] = {"x", "y"}, *fn = faceDown ? "down" : "up";
+    char       name[64];
+
+    PetscCall(HylcClothStrip_Private(c, 0, L, W, c->h, angle, faceDown));
+    PetscCall(HylcClothVerticesInBox_Private(c, -1, 1e-9 * L, -1, 2 * W, &n, &v));
+    PetscCall(HylcClothAddClamp_Private(c, n, v, NULL, PETSC_FALSE));
+    PetscCall(PetscFree(v));
+    PetscCall(HylcClothVerticesInBox_Private(c, L * (1 - 1e-9), 2 * L, -1, 2 * W, &n, &v));
+    PetscCall(HylcClothAddClamp_Private(c, n, v, disp, PETSC_FALSE));
+    PetscCall(PetscFree(v));
+    PetscCall(HylcClothPrepare_Private(c));
+    PetscCall(PetscPrintf(comm, "tensile %s (material angle %g deg, face %s): %" PetscInt_FMT " vertices, %" PetscInt_FMT " triangles, %g x %g m\n", dn[d], (double)angle, fn, c->nv, c->nt, (double)L, (double)W));
+    PetscCall(PetscMalloc4(6 * c->nt, &z, ns + 1, &eps, ns + 1, &T, ns + 1, &lat));
+    eps[0] = T[0] = lat[0] = 0;
+    if (c->gravity > 0) { /* the strip's own weight first */
+      PetscBool ok;
+      c->gscale = 0;
+      PetscCall(HylcClothLoadPath_Private(c, 0, 1, c->loadSteps > 0 ? c->loadSteps : 4, &ok));
+      PetscCheck(ok, comm, PETSC_ERR_NOT_CONVERGED, "tensile %s: no equilibrium under gravity", dn[d]);
+    }
+    for (PetscInt k = 1; k <= ns; k++) {
+      PetscReal F[3], zc[6], Tt = 0, lt = 0, sa, rel;
+      PetscBool ok;
+      PetscInt  its0 = c->newtonIts, dm = ((PetscInt)PetscFloorReal(angle / 90 + 0.5) % 2 + 2) % 2;
+      int       rc;
+      PetscCall(HylcClothLoadPath_Private(c, (PetscReal)k / ns, 1, 1, &ok));
+      PetscCheck(ok, comm, PETSC_ERR_NOT_CONVERGED, "tensile %s: no equilibrium at strain %g (step %" PetscInt_FMT "; try more -cloth_strain_steps)", dn[d], (double)(c->strainMax * k / ns), k);
+      PetscCall(HylcClothReaction_Private(c, c->x, 1, F));
+      PetscCall(HylcClothStrains_Private(c, c->x, z));
+      PetscCall(HylcClothZoneMean_Private(c, z, 0.4 * L, 0.6 * L, 0.25 * W, 0.75 * W, zc));
+      eps[k] = c->strainMax * k / ns;
+      T[k]   = F[0] / W;
+      lat[k] = zc[dm ? 0 : 2];
+      rc     = HylcClothUniaxial(c->hm, (int)dm, zc[dm ? 2 : 0], &Tt, &lt, &sa, NULL);
+      PetscCheck(rc == 0 || rc == -1, comm, PETSC_ERR_LIB, "uniaxial state of the table: %s", hylcmat_strerror(rc));
+      rel = PetscAbsReal(T[k] - Tt) / PetscMax(PetscAbsReal(Tt), 1e-300);
+      if (eps[k] >= 0.01 - 1e-12) {
+        maxrel  = PetscMax(maxrel, rel);
+        maxdlat = PetscMax(maxdlat, PetscAbsReal(lat[k] - lt));
+      }
+      PetscCall(HylcClothTextAppend_Private(&csv, "%s,%s,%" PetscInt_FMT ",%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.6g,%" PetscInt_FMT "\n", dn[d], fn, k, (double)eps[k], (double)T[k], (double)zc[dm ? 2 : 0], (double)lat[k], (double)(-lat[k] / zc[dm ? 2 : 0]), (double)Tt, (double)lt, (double)rel, c->newtonIts - its0));
+      if (c->monitor) PetscCall(PetscPrintf(comm, "  strain %.4g: T %.6g N/m (table %.6g, %.3g %%), lateral %.6g (table %.6g)\n", (double)eps[k], (double)T[k], (double)Tt, (double)(100 * rel), (double)lat[k], (double)lt));
+      PetscCall(PetscSNPrintf(name, sizeof(name), "tensile_%s_%04d.vtk", dn[d], (int)k));
+      PetscCall(HylcClothOutputName_Private(c, name, path, sizeof(path)));
+      PetscCall(HylcClothWriteVTK_Private(c, path));
+    }
+    {
+      PetscReal nu[64];
+      PetscInt  m = PetscMin(ns + 1, 64);
+      char      r[32];
+      for (PetscInt k = 0; k < m; k++) nu[k] = k ? -lat[k] / eps[k] : 0;
+      PetscCall(PetscSNPrintf(r, sizeof(r), "T5_%s", dn[d]));
+      PetscCall(HylcClothResult_Private(c, r, Interp(ns + 1, eps, T, 0.05)));
+      PetscCall(PetscSNPrintf(r, sizeof(r), "T10_%s", dn[d]));
+      PetscCall(HylcClothResult_Private(c, r, Interp(ns + 1, eps, T, 0.10)));
+      PetscCall(PetscSNPrintf(r, sizeof(r), "k5_%s", dn[d]));
+      PetscCall(HylcClothResult_Private(c, r, Slope(ns + 1, eps, T, 0.05)));
+      PetscCall(PetscSNPrintf(r, sizeof(r), "k10_%s", dn[d]));
+      PetscCall(HylcClothResult_Private(c, r, Slope(ns + 1, eps, T, 0.10)));
+      PetscCall(PetscSNPrintf(r, sizeof(r), "nu5_%s", dn[d]));
+      PetscCall(HylcClothResult_Private(c, r, Interp(m, eps, nu, 0.05)));
+      PetscCall(PetscSNPrintf(r, sizeof(r), "table_rel_%s", dn[d]));
+      PetscCall(HylcClothResult_Private(c, r, maxrel));
+      PetscCall(PetscSNPrintf(r, sizeof(r), "table_dlat_%s", dn[d]));
+      PetscCall(HylcClothResult_Private(c, r, maxdlat));
+      PetscCall(PetscPrintf(comm, "  T(5%%) %.6g N/m, T(10%%) %.6g N/m, dT/de(5%%) %.6g N/m, Poisson(5%%) %.4g; central zone vs the table: T within %.3g %%, lateral strain within %.3g\n", (double)Interp(ns + 1, eps, T, 0.05), (double)Interp(ns + 1, eps, T, 0.10), (double)Slope(ns + 1, eps, T, 0.05), (double)Interp(m, eps, nu, 0.05), (double)(100 * maxrel), (double)maxdlat));
+    }
+    PetscCall(PetscFree4(z, eps, T, lat));
+  }
+  PetscCall(PetscPrintf(comm, "Newton iterations: %" PetscInt_FMT " (%" PetscInt_FMT " exact, %" PetscInt_FMT " projected Hessians), line-search failures %" PetscInt_FMT "\n", c->newtonIts, c->hessExact, c->hessProj, c->lsFails));
+  PetscCall(HylcClothOutputName_Private(c, "tensile.csv", path, sizeof(path)));
+  PetscCall(HylcClothTextWrite_Private(c, &csv, path));
+  PetscCall(HylcClothPlot_Private(c, "tensile", path));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*
+  The table's homogeneous uniaxial curves (no mesh): for each direction and strain, Psi minimized over
+  sa and the lateral strain (HylcClothUniaxial). The CSV is the uniaxial-curve format of docs/fabric.md:
+  direction, strain, T_N_per_m, lateral_strain, sa, psi.
+*/
+PetscErrorCode HylcClothRunUniaxial_Private(HylcCloth c)
+{
+  MPI_Comm      comm = CLOTH_COMM_PRIVATE(c);
+  PetscInt      ndir, dirs[2], ns = c->strainSteps;
+  HylcClothText csv = {0};
+  char          path[PETSC_MAX_PATH_LEN + 64];
+
+  PetscFunctionBegin;
+  PetscCall(DirectionList(c, &ndir, dirs));
+  PetscCall(HylcClothTextAppend_Private(&csv, "# hylc uniaxial curve: source table %s\ndirection,strain,T_N_per_m,lateral_strain,sa,psi\n", c->materialFile[0] ? c->materialFile : "(in memory)"));
+  for (PetscInt id = 0; id < ndir; id++) {
+    PetscInt   d = dirs[id];
+    PetscReal *eps, *T, *lat;
+    char       r[32];
+    PetscCall(PetscMalloc3(ns + 1, &eps, ns + 1, &T, ns + 1, &lat));
+    for (PetscInt k = 0; k <= ns; k++) {
+      double Tt, lt, sa, psi;
+      int    rc = HylcClothUniaxial(c->hm, (int)d, c->strainMax * k / ns, &Tt, &lt, &sa, &psi);
+      PetscCheck(rc == 0 || rc == -1, comm, PETSC_ERR_LIB, "uniaxial state of the table at strain %g: %s", (double)(c->strainMax * k / ns), hylcmat_strerror(rc));
+      eps[k] = c->strainMax * k / ns;
+      T[k]   = Tt;
+      lat[k] = k ? -lt / eps[k] : 0;
+      PetscCall(HylcClothTextAppend_Private(&csv, "%s,%.10g,%.10g,%.10g,%.10g,%.10g\n", d ? "y" : "x", (double)eps[k], Tt, lt, sa, psi));
+    }
+    PetscCall(PetscSNPrintf(r, sizeof(r), "T5_%s", d ? "y" : "x"));
+    PetscCall(HylcClothResult_Private(c, r, Interp(ns + 1, eps, T, 0.05)));
+    PetscCall(PetscSNPrintf(r, sizeof(r), "T10_%s", d ? "y" : "x"));
+    PetscCall(HylcClothResult_Private(c, r, Interp(ns + 1, eps, T, 0.10)));
+    PetscCall(PetscSNPrintf(r, sizeof(r), "nu5_%s", d ? "y" : "x"));
+    PetscCall(HylcClothResult_Private(c, r, Interp(ns + 1, eps, lat, 0.05)));
+    PetscCall(PetscPrintf(comm, "uniaxial %s (table): T(5%%) %.6g N/m, T(10%%) %.6g N/m, Poisson(5%%) %.4g\n", d ? "y" : "x", (double)Interp(ns + 1, eps, T, 0.05), (double)Interp(ns + 1, eps, T, 0.10), (double)Interp(ns + 1, eps, lat, 0.05)));
+    PetscCall(PetscFree3(eps, T, lat));
+  }
+  PetscCall(HylcClothOutputName_Private(c, "uniaxial.csv", path, sizeof(path)));
+  PetscCall(HylcClothTextWrite_Private(c, &csv, path));
+  PetscCall(HylcClothPlot_Private(c, "uniaxial", path));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HylcClothRunBias_Private(HylcCloth c)
+{
+  PetscFunctionBegin;
+  SETERRQ(CLOTH_COMM_PRIVATE(c), PETSC_ERR_SUP, "bias: not yet");
+}
+PetscErrorCode HylcClothRunCantilever_Private(HylcCloth c)
+{
+  PetscFunctionBegin;
+  SETERRQ(CLOTH_COMM_PRIVATE(c), PETSC_ERR_SUP, "cantilever: not yet");
+}
+PetscErrorCode HylcClothRunDrape_Private(HylcCloth c)
+{
+  PetscFunctionBegin;
+  SETERRQ(CLOTH_COMM_PRIVATE(c), PETSC_ERR_SUP, "drape: not yet");
+}
+PetscErrorCode HylcClothRunScene_Private(HylcCloth c)
+{
+  PetscFunctionBegin;
+  SETERRQ(CLOTH_COMM_PRIVATE(c), PETSC_ERR_SUP, "scene: not yet");
+}
+PetscErrorCode HylcClothRunCurl_Private(HylcCloth c)
+{
+  PetscFunctionBegin;
+  SETERRQ(CLOTH_COMM_PRIVATE(c), PETSC_ERR_SUP, "curl: not yet");
+}
+PetscErrorCode HylcClothDynamic_Private(HylcCloth c, PetscErrorCode (*monitor)(HylcCloth, PetscInt, PetscReal, void *), void *ctx, PetscBool *rest)
+{
+  PetscFunctionBegin;
+  SETERRQ(CLOTH_COMM_PRIVATE(c), PETSC_ERR_SUP, "dynamic: not yet");
+}
