@@ -72,17 +72,18 @@ PetscErrorCode HylcClothCreate(MPI_Comm comm, HylcCloth *out)
   c->width        = -1;
   c->h            = -1;
   c->meshScale    = 1;
-  c->strainMax    = 0.2;
-  c->strainSteps  = 20;
+  c->strainMax    = 0.1;
+  c->strainSteps  = 10;
   c->gravity      = -1;
   c->planar       = PETSC_FALSE;
+  c->planarDefault = PETSC_TRUE;
   c->vtk          = PETSC_TRUE;
   c->plot         = PETSC_TRUE;
   c->solver       = HYLC_CLOTH_SOLVER_NEWTON;
   c->hessian      = HYLC_CLOTH_HESSIAN_AUTO;
   c->rtol         = 1e-10;
   c->atol         = -1;
-  c->maxit        = 100;
+  c->maxit        = 50;
   c->loadSteps    = -1;
   c->cantAngle    = 41.5;
   c->cantWidth    = 0.025;
@@ -357,7 +358,8 @@ PetscErrorCode HylcClothSetPlanar(HylcCloth c, PetscBool planar)
 {
   PetscFunctionBegin;
   CLOTH_CHECK(c);
-  c->planar = planar;
+  c->planar        = planar;
+  c->planarDefault = PETSC_FALSE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -551,7 +553,7 @@ PetscErrorCode HylcClothSetBarrier(HylcCloth c, PetscReal dist, PetscReal stiff)
 PetscErrorCode HylcClothSetFromOptions(HylcCloth c)
 {
   PetscEnum test = (PetscEnum)c->test, face = (PetscEnum)c->face, dir = (PetscEnum)c->direction, solver = (PetscEnum)c->solver, hess = (PetscEnum)c->hessian;
-  PetscBool set, set2;
+  PetscBool set, set2, b2;
   char      path[PETSC_MAX_PATH_LEN];
   PetscReal a, b, v3[3];
   PetscInt  n, corners[4];
@@ -590,7 +592,8 @@ PetscErrorCode HylcClothSetFromOptions(HylcCloth c)
   if (set || set2) PetscCall(HylcClothSetStrains(c, a, n));
   PetscCall(PetscOptionsReal("-cloth_gravity", "Gravity (m/s^2) along -z; default 9.81, 0 for tensile and bias", "HylcClothSetGravity", c->gravity, &a, &set));
   if (set) PetscCall(HylcClothSetGravity(c, a));
-  PetscCall(PetscOptionsBool("-cloth_planar", "Hold every vertex in the plane z = 0 (in-plane test: no curl, no wrinkles)", "HylcClothSetPlanar", c->planar, &c->planar, NULL));
+  PetscCall(PetscOptionsBool("-cloth_planar", "Hold every vertex in the plane z = 0 (in-plane test: no curl, no wrinkles; default for tensile and bias)", "HylcClothSetPlanar", c->planar, &b2, &set));
+  if (set) PetscCall(HylcClothSetPlanar(c, b2));
   PetscCall(PetscOptionsEnum("-cloth_solver", "Equilibrium solver: newton (SNES newtonls, energy line search) or trust (TAO ntr)", "HylcClothSetSolver", HylcClothSolvers, solver, &solver, &set));
   PetscCall(PetscOptionsEnum("-cloth_hessian", "Hessian: projected (every element's PSD), exact, auto (exact unless its factorization has negative pivots)", "HylcClothSetSolver", HylcClothHessians, hess, &hess, &set2));
   if (set || set2) PetscCall(HylcClothSetSolver(c, (HylcClothSolver)solver, (HylcClothHessian)hess));
@@ -674,6 +677,7 @@ PetscErrorCode HylcClothSetUp(HylcCloth c)
   if (c->gravity < 0) c->gravity = (c->test == HYLC_CLOTH_TEST_TENSILE || c->test == HYLC_CLOTH_TEST_BIAS || c->test == HYLC_CLOTH_TEST_CURL) ? 0 : 9.81;
   c->g[0] = c->g[1] = 0;
   c->g[2]           = -c->gravity;
+  if (c->planarDefault) c->planar = (c->test == HYLC_CLOTH_TEST_TENSILE || c->test == HYLC_CLOTH_TEST_BIAS) ? PETSC_TRUE : PETSC_FALSE;
   if (c->faceDefault) c->face = c->test == HYLC_CLOTH_TEST_CANTILEVER ? HYLC_CLOTH_FACE_BOTH : HYLC_CLOTH_FACE_UP;
   if (c->length < 0) {
     switch (c->test) {

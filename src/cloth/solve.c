@@ -16,24 +16,26 @@
    -cloth_tao_monitor, ... */
 #include <hylc/private/clothimpl.h>
 #include <petscmat.h>
+#include <petsc/private/matimpl.h>
+#include <hylc/chol.h>
 
-/* the inertia of the last factorization when the PC is MUMPS' Cholesky, else -1 */
+/* the number of negative pivots of the last factorization (MatGetInertia: hylc's and MUMPS' Cholesky),
+   or -1 when the preconditioner does not tell */
 static PetscErrorCode NegativePivots(KSP ksp, PetscInt *nneg)
 {
-  PC            pc;
-  Mat           F;
-  PetscBool     isfactor;
-  MatSolverType type;
+  PC        pc;
+  Mat       F;
+  PetscBool isfactor;
+  PetscInt  nzero, npos;
 
   PetscFunctionBegin;
   *nneg = -1;
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCCHOLESKY, &isfactor));
   if (!isfactor) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(PCFactorGetMatSolverType(pc, &type));
-  if (!type || strcmp(type, MATSOLVERMUMPS)) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PCFactorGetMatrix(pc, &F));
-  PetscCall(MatMumpsGetInfog(F, 12, nneg));
+  if (!F || !F->ops->getinertia) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(MatGetInertia(F, nneg, &nzero, &npos));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -166,16 +168,19 @@ static PetscErrorCode FormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* the direct solver of the Newton systems: Cholesky (LDL^T) by MUMPS on any number of ranks */
+/* the direct solver of the Newton systems: a signed Cholesky factorization that counts the negative
+   pivots, hylc's supernodal one on one rank (MATSOLVERHYLC, METIS ordering), MUMPS' LDL^T on several */
 PetscErrorCode HylcClothDefaultKSP_Private(KSP ksp, PetscBool preonly)
 {
-  PC pc;
+  PC          pc;
+  PetscMPIInt size;
 
   PetscFunctionBegin;
   if (preonly) PetscCall(KSPSetType(ksp, KSPPREONLY));
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(PCSetType(pc, PCCHOLESKY));
-  PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  PetscCallMPI(MPI_Comm_size(PetscObjectComm((PetscObject)ksp), &size));
+  PetscCall(PCFactorSetMatSolverType(pc, size == 1 ? MATSOLVERHYLC : MATSOLVERMUMPS));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -47,7 +47,7 @@ struct _p_HylcCloth {
   PetscReal          strainMax;
   PetscInt           strainSteps;
   PetscReal          gravity; /* m/s^2; < 0: the test's default */
-  PetscBool          planar;
+  PetscBool          planar, planarDefault;
   char               output[PETSC_MAX_PATH_LEN];
   PetscBool          vtk, plot;
   char               plotScript[PETSC_MAX_PATH_LEN];
