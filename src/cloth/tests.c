@@ -1,6 +1,7 @@
 /* The virtual standard tests of HylcCloth (docs/fabric.md): strip tensile, the table's homogeneous
    uniaxial curve, and the helpers they share (the specimen strip, the central zone, clamps by region). */
 #include <hylc/private/clothimpl.h>
+#include <math.h>
 
 /* the vertices of the rest mesh inside the box [x0, x1] x [y0, y1] (any z) */
 PetscErrorCode HylcClothVerticesInBox_Private(HylcCloth c, PetscReal x0, PetscReal x1, PetscReal y0, PetscReal y1, PetscInt *n, PetscInt **v)
@@ -69,7 +70,7 @@ PetscErrorCode HylcClothZoneMean_Private(HylcCloth c, const PetscReal *z, PetscR
 /* y(x) at x by linear interpolation in the table (xs increasing) */
 static PetscReal Interp(PetscInt n, const PetscReal *xs, const PetscReal *ys, PetscReal x)
 {
-  if (n < 2 || x < xs[0] - 1e-12 || x > xs[n - 1] + 1e-12) return PETSC_NAN; /* no extrapolation */
+  if (n < 2 || x < xs[0] - 1e-12 || x > xs[n - 1] + 1e-12) return (PetscReal)NAN; /* no extrapolation */
   for (PetscInt i = 0; i + 1 < n; i++)
     if (x <= xs[i + 1] || i + 2 == n) return ys[i] + (ys[i + 1] - ys[i]) * (x - xs[i]) / (xs[i + 1] - xs[i]);
   return ys[n - 1];
