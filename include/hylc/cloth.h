@@ -129,6 +129,10 @@ PETSC_EXTERN PetscErrorCode HylcClothGetMesh(HylcCloth, PetscInt *nv, PetscInt *
    success, else a hylcmat error code or -1 (no convergence). */
 PETSC_EXTERN int HylcClothUniaxial(const hylcmat *m, int dir, double s, double *T, double *lateral, double *sa, double *psi);
 
+/* The table's free curl: II00 and II11 (1/m, II01 = 0, in-plane strains 0) that minimize Psi; II > 0
+   bends toward n (the paper's stock1: II00 < 0, II11 > 0). 0 on success. */
+PETSC_EXTERN int HylcClothTableCurl(const hylcmat *m, double *II00, double *II11, double *psi);
+
 /* Moment per unit width M(kappa) >= 0 for a curvature kappa >= 0 of the bending away from the upper
    face: the callback's contract for the elastica below. */
 typedef int (*HylcClothMomentFn)(void *ctx, double kappa, double *M, double *dMdk);

@@ -83,7 +83,7 @@ PetscErrorCode HylcClothCreate(MPI_Comm comm, HylcCloth *out)
   c->hessian      = HYLC_CLOTH_HESSIAN_AUTO;
   c->rtol         = 1e-10;
   c->atol         = -1;
-  c->maxit        = 50;
+  c->maxit        = 25;
   c->loadSteps    = -1;
   c->cantAngle    = 41.5;
   c->cantWidth    = 0.025;

@@ -3,39 +3,46 @@
 #include <hylc/private/clothimpl.h>
 #include <math.h>
 
-/* Psi and its gradient and Hessian in the two free strains (sa and the lateral one) */
-static int Uniaxial2(const hylcmat *m, int dir, double s, const double y[2], double *psi, double g[2], double H[4])
-{
-  double z[6] = {0, 0, 0, 0, 0, 0}, gr[6], he[36];
-  int    lat  = dir ? 0 : 2, rc;
+/* Psi over two free strains z[i[0]], z[i[1]] of z0 (the others fixed) */
+typedef struct {
+  const hylcmat *m;
+  double         z0[6];
+  int            i[2];
+  int            cosine; /* the first free strain is the cosine sa: keep |y0| < 0.99 */
+} Pair;
 
-  z[dir ? 2 : 0] = s;
-  z[1]           = y[0];
-  z[lat]         = y[1];
-  rc             = hylcmat_eval(m, z, psi, g ? gr : NULL, H ? he : NULL);
+static int PairEval(const Pair *p, const double y[2], double *psi, double g[2], double H[4])
+{
+  double z[6], gr[6], he[36];
+  int    rc;
+
+  for (int k = 0; k < 6; k++) z[k] = p->z0[k];
+  z[p->i[0]] = y[0];
+  z[p->i[1]] = y[1];
+  rc         = hylcmat_eval(p->m, z, psi, g ? gr : NULL, H ? he : NULL);
   if (rc) return rc;
   if (g) {
-    g[0] = gr[1];
-    g[1] = gr[lat];
+    g[0] = gr[p->i[0]];
+    g[1] = gr[p->i[1]];
   }
   if (H) {
-    H[0] = he[1 * 6 + 1];
-    H[1] = he[1 * 6 + lat];
-    H[2] = he[lat * 6 + 1];
-    H[3] = he[lat * 6 + lat];
+    H[0] = he[p->i[0] * 6 + p->i[0]];
+    H[1] = he[p->i[0] * 6 + p->i[1]];
+    H[2] = he[p->i[1] * 6 + p->i[0]];
+    H[3] = he[p->i[1] * 6 + p->i[1]];
   }
   return 0;
 }
 
 /* damped Newton on the two free strains from y, the 2x2 Hessian's eigenvalues raised to a floor (a
    descent direction always); at a stationary point with negative curvature, a step along it */
-static int UniaxialNewton(const hylcmat *m, int dir, double s, double y[2], double *fout, int *conv)
+static int PairNewton(const Pair *p, double y[2], double *fout, int *conv)
 {
   double f, g[2], H[4];
   int    rc, it;
 
   *conv = 0;
-  if ((rc = Uniaxial2(m, dir, s, y, &f, g, H))) return rc;
+  if ((rc = PairEval(p, y, &f, g, H))) return rc;
   for (it = 0; it < 300; it++) {
     double a = H[0], b = 0.5 * (H[1] + H[2]), c = H[3], d[2], gnorm = fabs(g[0]) + fabs(g[1]), t = 1, slope;
     double tr = 0.5 * (a + c), df = sqrt(0.25 * (a - c) * (a - c) + b * b), l1 = tr + df, l2 = tr - df, fl = 1e-8 * (fabs(l1) + 1e-12);
@@ -66,14 +73,13 @@ static int UniaxialNewton(const hylcmat *m, int dir, double s, double y[2], doub
         for (int sg = -1; sg <= 1; sg += 2)
           for (double h = 1e-4; h < 1; h *= 2) {
             double yt[2] = {y[0] + sg * h * v2[0], y[1] + sg * h * v2[1]}, ft;
-            if (fabs(yt[0]) >= 0.99) break;
-            if ((rc = Uniaxial2(m, dir, s, yt, &ft, NULL, NULL))) return rc;
+            if (p->cosine && fabs(yt[0]) >= 0.99) break;
+            if ((rc = PairEval(p, yt, &ft, NULL, NULL))) return rc;
             if (ft < best) {
               best  = ft;
               yb[0] = yt[0];
               yb[1] = yt[1];
-            } else if (ft > best)
-              break;
+            } else if (ft > best) break;
           }
         if (best >= f) {
           *conv = 1; /* flat to rounding */
@@ -81,7 +87,7 @@ static int UniaxialNewton(const hylcmat *m, int dir, double s, double y[2], doub
         }
         y[0] = yb[0];
         y[1] = yb[1];
-        if ((rc = Uniaxial2(m, dir, s, y, &f, g, H))) return rc;
+        if ((rc = PairEval(p, y, &f, g, H))) return rc;
         continue;
       }
     }
@@ -92,11 +98,12 @@ static int UniaxialNewton(const hylcmat *m, int dir, double s, double y[2], doub
       d[0] = -(p1 * v1[0] + p2 * v2[0]);
       d[1] = -(p1 * v1[1] + p2 * v2[1]);
     }
-    while (fabs(y[0] + t * d[0]) >= 0.99) t *= 0.5; /* keep the cosine sa inside (-1, 1) */
+    if (p->cosine)
+      while (fabs(y[0] + t * d[0]) >= 0.99) t *= 0.5; /* keep the cosine sa inside (-1, 1) */
     slope = g[0] * d[0] + g[1] * d[1];
     for (;;) {
       double yt[2] = {y[0] + t * d[0], y[1] + t * d[1]}, ft;
-      if ((rc = Uniaxial2(m, dir, s, yt, &ft, NULL, NULL))) return rc;
+      if ((rc = PairEval(p, yt, &ft, NULL, NULL))) return rc;
       if (ft <= f + 1e-4 * t * slope || t < 1e-12) {
         if (t >= 1e-12) {
           y[0] = yt[0];
@@ -110,7 +117,7 @@ static int UniaxialNewton(const hylcmat *m, int dir, double s, double y[2], doub
       *conv = gnorm < 1e-8 * (1 + fabs(f));
       break;
     }
-    if ((rc = Uniaxial2(m, dir, s, y, &f, g, H))) return rc;
+    if ((rc = PairEval(p, y, &f, g, H))) return rc;
   }
   *fout = f;
   return 0;
@@ -118,20 +125,22 @@ static int UniaxialNewton(const hylcmat *m, int dir, double s, double y[2], doub
 
 int HylcClothUniaxial(const hylcmat *m, int dir, double s, double *T, double *lateral, double *sa, double *psi)
 {
+  Pair   p    = {m, {0, 0, 0, 0, 0, 0}, {1, dir ? 0 : 2}, 1};
   double y[2] = {0, 0}, f = 0, best = INFINITY, z[6] = {0, 0, 0, 0, 0, 0}, gr[6];
   int    rc, conv = 0;
 
+  p.z0[dir ? 2 : 0] = s;
   /* the table need not be convex in the lateral strain (the paper's satin1 is not beyond sx = 0.065):
      start Newton from the best of a scan of the lateral strain at sa = 0 */
   for (int i = -60; i <= 60; i++) {
     double yt[2] = {0, 0.01 * i}, ft;
-    if ((rc = Uniaxial2(m, dir, s, yt, &ft, NULL, NULL))) return rc;
+    if ((rc = PairEval(&p, yt, &ft, NULL, NULL))) return rc;
     if (ft < best) {
       best = ft;
       y[1] = yt[1];
     }
   }
-  if ((rc = UniaxialNewton(m, dir, s, y, &f, &conv))) return rc;
+  if ((rc = PairNewton(&p, y, &f, &conv))) return rc;
   z[dir ? 2 : 0] = s;
   z[1]           = y[0];
   z[dir ? 0 : 2] = y[1];
@@ -139,6 +148,30 @@ int HylcClothUniaxial(const hylcmat *m, int dir, double s, double *T, double *la
   if (T) *T = gr[dir ? 2 : 0];
   if (sa) *sa = y[0];
   if (lateral) *lateral = y[1];
+  if (psi) *psi = f;
+  return conv ? 0 : -1;
+}
+
+int HylcClothTableCurl(const hylcmat *m, double *II00, double *II11, double *psi)
+{
+  Pair   p    = {m, {0, 0, 0, 0, 0, 0}, {3, 5}, 0};
+  double y[2] = {0, 0}, f, best = INFINITY;
+  int    rc, conv;
+
+  /* the bending terms need not be convex either: the best start of a coarse grid (1/m) */
+  for (int i = -20; i <= 20; i++)
+    for (int j = -20; j <= 20; j++) {
+      double yt[2] = {25.0 * i, 25.0 * j}, ft;
+      if ((rc = PairEval(&p, yt, &ft, NULL, NULL))) return rc;
+      if (ft < best) {
+        best = ft;
+        y[0] = yt[0];
+        y[1] = yt[1];
+      }
+    }
+  if ((rc = PairNewton(&p, y, &f, &conv))) return rc;
+  *II00 = y[0];
+  *II11 = y[1];
   if (psi) *psi = f;
   return conv ? 0 : -1;
 }

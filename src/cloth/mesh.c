@@ -69,20 +69,17 @@ static PetscErrorCode Areas(HylcCloth c)
 }
 
 /*
-  The strip [x0, x0 + L] x [0, W] in the plane z = 0: ny rows of height W / ny (about h sqrt(3) / 2),
-  nx spacings of L / nx along them; the shifted rows get extra vertices at both ends so that the ends
-  x = x0 and x = x0 + L are straight.
+  The strip [x0, x0 + L] x [0, W] in the plane z = 0: ny rows of height W / ny, nx spacings of L / nx
+  along them (an affine image of the equilateral lattice); the shifted rows get extra vertices at both
+  ends so that the ends x = x0 and x = x0 + L are straight.
 */
-PetscErrorCode HylcClothMeshStrip_Private(HylcCloth c, PetscReal x0, PetscReal L, PetscReal W, PetscReal h)
+PetscErrorCode HylcClothMeshStripN_Private(HylcCloth c, PetscReal x0, PetscReal L, PetscReal W, PetscInt nx, PetscInt ny)
 {
-  PetscInt  ny = PetscMax(1, (PetscInt)PetscFloorReal(W / (h * PetscSqrtReal(3.0) / 2) + 0.5)), nx, nv = 0, nt = 0, *row, *rowlen;
-  PetscReal hy = W / ny, dx;
+  PetscInt  nv = 0, nt = 0, *row, *rowlen;
+  PetscReal hy = W / ny, dx = L / nx;
 
   PetscFunctionBegin;
   PetscCall(HylcClothMeshReset_Private(c));
-  dx = 2 * hy / PetscSqrtReal(3.0);
-  nx = PetscMax(1, (PetscInt)PetscFloorReal(L / dx + 0.5));
-  dx = L / nx;
   PetscCall(PetscMalloc1(3 * ((ny + 1) * (nx + 2)), &c->X));
   PetscCall(PetscMalloc2((ny + 1) * (nx + 2), &row, ny + 1, &rowlen));
   for (PetscInt j = 0; j <= ny; j++) {
@@ -96,8 +93,7 @@ PetscErrorCode HylcClothMeshStrip_Private(HylcCloth c, PetscReal x0, PetscReal L
       }
     else
       for (PetscInt i = -1; i <= nx; i++) {
-        c->X[3 * nv + 0]        = i < 0 ? x0 : i == nx ? x0 + L
-                                                       : x0 + (i + 0.5) * dx;
+        c->X[3 * nv + 0]        = i < 0 ? x0 : i == nx ? x0 + L : x0 + (i + 0.5) * dx;
         c->X[3 * nv + 1]        = j * hy;
         c->X[3 * nv + 2]        = 0;
         row[j * (nx + 2) + n++] = nv++;
@@ -109,6 +105,19 @@ PetscErrorCode HylcClothMeshStrip_Private(HylcCloth c, PetscReal x0, PetscReal L
   PetscCall(PetscFree2(row, rowlen));
   c->nv = nv;
   c->nt = nt;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* the strip with rows about h sqrt(3) / 2 apart and the spacing along them as close to h as the length
+   allows: nearly equilateral triangles */
+PetscErrorCode HylcClothMeshStrip_Private(HylcCloth c, PetscReal x0, PetscReal L, PetscReal W, PetscReal h)
+{
+  PetscInt  ny = PetscMax(1, (PetscInt)PetscFloorReal(W / (h * PetscSqrtReal(3.0) / 2) + 0.5)), nx;
+  PetscReal dx = 2 * (W / ny) / PetscSqrtReal(3.0);
+
+  PetscFunctionBegin;
+  nx = PetscMax(1, (PetscInt)PetscFloorReal(L / dx + 0.5));
+  PetscCall(HylcClothMeshStripN_Private(c, x0, L, W, nx, ny));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

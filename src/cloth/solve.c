@@ -430,8 +430,19 @@ static PetscErrorCode TangentPredictor(HylcCloth c, PetscReal t1, PetscReal g1)
     PetscCall(TaoGetKSP(c->tao, &ksp));
   PetscCall(KSPSetOperators(ksp, c->H, c->H));
   PetscCall(KSPSolve(ksp, R, dx));
-  PetscCall(VecAXPY(c->x, 1.0, D));
-  PetscCall(VecAXPY(c->x, -1.0, dx));
+  {
+    /* a linear response larger than a tenth of the specimen (a cantilever's first load step: linear
+       theory deflects it by more than its length) is only a direction: scaled down to that */
+    PetscReal mx = 0, cap = 0.1 * PetscSqrtReal(c->area), sc = 1;
+    const PetscScalar *a;
+    PetscCall(VecGetArrayRead(dx, &a));
+    for (PetscInt i = 0; i < nown; i++) mx = PetscMax(mx, PetscSqrtReal(a[3 * i] * a[3 * i] + a[3 * i + 1] * a[3 * i + 1] + a[3 * i + 2] * a[3 * i + 2]));
+    PetscCall(VecRestoreArrayRead(dx, &a));
+    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &mx, 1, MPIU_REAL, MPIU_MAX, PetscObjectComm((PetscObject)c)));
+    if (mx > cap) sc = cap / mx;
+    PetscCall(VecAXPY(c->x, 1.0, D));
+    PetscCall(VecAXPY(c->x, -sc, dx));
+  }
   PetscCall(VecDestroy(&D));
   PetscCall(VecDestroy(&R));
   PetscCall(VecDestroy(&dx));

@@ -246,11 +246,6 @@ PetscErrorCode HylcClothRunBias_Private(HylcCloth c)
   PetscFunctionBegin;
   SETERRQ(CLOTH_COMM_PRIVATE(c), PETSC_ERR_SUP, "bias: not yet");
 }
-PetscErrorCode HylcClothRunCantilever_Private(HylcCloth c)
-{
-  PetscFunctionBegin;
-  SETERRQ(CLOTH_COMM_PRIVATE(c), PETSC_ERR_SUP, "cantilever: not yet");
-}
 PetscErrorCode HylcClothRunDrape_Private(HylcCloth c)
 {
   PetscFunctionBegin;
