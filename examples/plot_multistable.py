@@ -84,7 +84,7 @@ def main():
     sm = matplotlib.cm.ScalarMappable(norm=matplotlib.colors.Normalize(-3, 0), cmap="viridis")
     fig.colorbar(sm, ax=axes.ravel().tolist(), shrink=0.5, label="log10 |Psi_cold - Psi_cont| / max |Psi|")
     fig.suptitle("%s: cold and continued starts (2D panels: log10 relative difference where > tolerance)" % title, fontsize=10)
-    fig.savefig(out, dpi=110)
+    fig.savefig(out, dpi=90)
     print("wrote %s" % out)
     return 0
 

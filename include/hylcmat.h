@@ -23,7 +23,7 @@ extern "C" {
 #endif
 
 #define HYLCMAT_VERSION_MAJOR 1
-#define HYLCMAT_VERSION_MINOR 1
+#define HYLCMAT_VERSION_MINOR 2
 
 enum {
   HYLCMAT_OK          = 0,
@@ -44,7 +44,8 @@ enum {
   HYLCMAT_ERR_NONFINITE  = 12, /* a NaN or infinite deformed coordinate */
   HYLCMAT_ERR_DEGENERATE = 13, /* a deformed triangle or neighbour face of zero area, or a zero-length
                                   material axis: the strains are undefined */
-  HYLCMAT_ERR_RANGE = 14       /* a result beyond the double range (outputs set to 0) */
+  HYLCMAT_ERR_RANGE  = 14,     /* a result beyond the double range (outputs set to 0) */
+  HYLCMAT_ERR_NOCONV = 15      /* an iterative method (hylcmat_uniaxial) did not converge */
 };
 
 #define HYLCMAT_N1D 5 /* 1D terms k = 0 sx, 1 sa, 2 sy, 3 x-bending (II00), 4 y-bending (II11) */
@@ -209,6 +210,36 @@ int hylcmat_mesh_strains(const hylcmat_mesh *mesh, const double *x, double *z, c
    error (as hylcmat_shell_eval; the message names the triangle) the outputs are 0. Serial (one
    thread); no allocation. */
 int hylcmat_mesh_eval(const hylcmat_mesh *mesh, const hylcmat *m, const double *x, int flags, double *E, double *grad, double *hval, char *err, size_t errlen);
+
+/* ---- the homogeneous uniaxial tension state --------------------------------------------------------
+   A strip of the material stretched along its material x axis (dir 0: sx = s; sa and sy free) or y axis
+   (dir 1: sy = s; sa and sx free), bending zero, the lateral strains free to contract: they minimize Psi
+   at the fixed s, so the lateral stresses vanish, and T = dPsi/ds there is the force per unit width of
+   the strip's homogeneous central zone (N/m). This is the state a strip tensile test (ISO 13934-1) has
+   away from its grips, and what hylc-solve -solve_uniaxial computes from the yarn tile directly
+   (docs/fabric-uniaxial.md). */
+typedef struct {
+  double s;          /* the prescribed stretch (0 at rest) */
+  double T;          /* dPsi/ds at the state (N/m) */
+  double lateral[2]; /* the free strains: (sa, sy) for dir 0, (sa, sx) for dir 1 */
+  double psi;        /* Psi there (J/m^2) */
+  double grad[2];    /* dPsi/d(lateral) there (N/m; 0 up to rounding) */
+  double step;       /* the last Newton step (max norm, strain) */
+  int    iterations; /* Newton iterations */
+} hylcmat_uniaxial_state;
+
+/* The uniaxial state at the stretch s along dir (0 x, 1 y): Newton's method in the two lateral strains
+   with the table's exact Hessian (made positive definite where it is not), steps of at most 0.1 and a
+   backtracking line search on Psi, to a Newton step below 1e-11, then probes around the point (a lower
+   one restarts Newton: tables have stationary lines on the axes). It starts from guess (the lateral
+   strains, e.g. the state of a nearby s along a loading path: the local minimum reached from it), or
+   with guess NULL from the lowest point of the grid |sa|, |s2| <= 0.5 in steps of 0.02 (tables can
+   have several lateral minima; our stockinette at s = 0.2 along x: sy = +0.003 and -0.119). Errors (with a message in err): HYLCMAT_ERR_ARG for a NULL
+   argument, dir not 0 or 1, s outside [0, 1) or outside the table's range of the stretch's 1D term (its
+   knots times its strain scale), or a bad guess; HYLCMAT_ERR_NOCONV if the minimization does not
+   converge in 200 iterations (st holds the last iterate); an evaluation's error. No allocation;
+   thread-safe. */
+int hylcmat_uniaxial(const hylcmat *m, int dir, double s, const double guess[2], hylcmat_uniaxial_state *st, char *err, size_t errlen);
 
 /* ---- names -------------------------------------------------------------------------------------- */
 /* (k0, k1) of 2D term q (0..8), in the order of the JSON tables */

@@ -45,11 +45,24 @@ install)
   put 755 "$BUILD/libhylcmat.so.$HYLCMAT_SOVERSION" "$LIBDIR"
   link "libhylcmat.so.$HYLCMAT_SOVERSION" "$LIBDIR" libhylcmat.so
   for b in "$BUILD"/bin/*; do put 755 "$b" "$BINDIR"; done
+  # a .pc variable is split at blanks by pkg-config when used in Cflags or Libs: escape blanks, quotes and
+  # backslashes (and write '$' as '$$'), so that a prefix with a space gives -I/opt/my\ dir/include, which
+  # make and 'eval' pass on as one argument
+  pcesc() {
+    local s=$1
+    s=${s//\\/\\\\}
+    s=${s//\$/\$\$}
+    s=${s// /\\ }
+    s=${s//$'\t'/\\$'\t'}
+    s=${s//\"/\\\"}
+    s=${s//\'/\\\'}
+    printf '%s' "$s"
+  }
   pc=$(mktemp -d)
   cat >"$pc/hylc.pc" <<PC
-prefix=$PREFIX
-libdir=$LIBDIR
-includedir=$INCDIR
+prefix=$(pcesc "$PREFIX")
+libdir=$(pcesc "$LIBDIR")
+includedir=$(pcesc "$INCDIR")
 
 Name: hylc
 Description: homogenized yarn-level cloth: sampling, fitting and evaluation of cloth material models (PETSc, MPI, HDF5)
@@ -60,9 +73,9 @@ Libs.private: $PC_LIBS_PRIVATE
 Cflags: -I\${includedir}
 PC
   cat >"$pc/hylcmat.pc" <<PC
-prefix=$PREFIX
-libdir=$LIBDIR
-includedir=$INCDIR
+prefix=$(pcesc "$PREFIX")
+libdir=$(pcesc "$LIBDIR")
+includedir=$(pcesc "$INCDIR")
 
 Name: hylcmat
 Description: the hylc cloth material model (JSON tables; Psi, gradient, Hessian), C99 with libc and libm only
@@ -93,9 +106,12 @@ uninstall)
     [ "$kind" = f ] || continue
     if [ -e "$DESTDIR$path" ] || [ -L "$DESTDIR$path" ]; then rm -f "$DESTDIR$path" && n=$((n + 1)); fi
   done <"$man"
+  # the directories install created, deepest first, one per line (a path may hold blanks)
   dirs=$(sed -n 's/^d //p' "$man" | sort -r)
   rm -f "$man"
-  for d in $dirs; do rmdir "$DESTDIR$d" 2>/dev/null || true; done
+  while IFS= read -r d; do
+    [ -n "$d" ] && { rmdir "$DESTDIR$d" 2>/dev/null || true; }
+  done <<<"$dirs"
   echo "removed $n files from $DESTDIR$PREFIX"
   ;;
 *) echo "usage: $0 install|uninstall" >&2; exit 2 ;;

@@ -30,6 +30,18 @@ typedef enum {
 } HylcFitFamily;
 PETSC_EXTERN const char *const HylcFitFamilies[];
 
+/* The knots of the 1D terms (-fit_knots, docs/fit.md): PAPER, the authors' uniform layout (11 knots over
+   0.95 x the data's range, shifted so that 0 is a knot; -fit_compat authors implies it); REFINED (hylc's
+   default), the paper's layout with -fit_knots_refine more knots at h/2, h/4, ... of the first interval on
+   each side of 0, their MLS kernels following the local knot spacing, so that the first few per cent of
+   strain, where cloth lives, are resolved (issue 30) while the rest stays the paper's. The 2D terms keep
+   the paper's layout. */
+typedef enum {
+  HYLC_FIT_KNOTS_PAPER   = 0,
+  HYLC_FIT_KNOTS_REFINED = 1
+} HylcFitKnotLayout;
+PETSC_EXTERN const char *const HylcFitKnotLayouts[];
+
 PETSC_EXTERN PetscErrorCode HylcFitCreate(MPI_Comm, HylcFit *);
 PETSC_EXTERN PetscErrorCode HylcFitDestroy(HylcFit *);
 PETSC_EXTERN PetscErrorCode HylcFitSetOptionsPrefix(HylcFit, const char[]);
@@ -74,6 +86,13 @@ PETSC_EXTERN PetscErrorCode HylcFitEvaluateAxes(HylcFit, const PetscReal z[6], P
 /* Per-term statistics of the fit against its data: number of samples used, RMS of (model - data) in
    J/m^2 and the max |data - f0| of the term (0 for a term not fitted); t = 1..14 as in plan.h. */
 PETSC_EXTERN PetscErrorCode HylcFitGetTermStats(HylcFit, PetscInt t, PetscInt *n, PetscReal *rms, PetscReal *range);
+/* The fit's relative error against its data in strain bands, where cloth lives and beyond (issue 30): a
+   sample is in band 0 if every strain of its term is small (|s| <= 5 % for sx, sa, sy; |II| <= 20 1/m),
+   band 1 if none is beyond 20 % (80 1/m), else band 2; per band the number of samples and the RMS of
+   (model - data) divided by the RMS of (data - f0) there (0 where the band is empty). */
+#define HYLC_FIT_NBAND 3
+PETSC_EXTERN const PetscReal HylcFitBandLimits[2][2]; /* [stretch or shear, curvature (1/m)][upper limit of band 0, 1] */
+PETSC_EXTERN PetscErrorCode  HylcFitGetTermBandStats(HylcFit, PetscInt t, PetscInt n[HYLC_FIT_NBAND], PetscReal rel[HYLC_FIT_NBAND]);
 
 /* ---- Plain C kernels of the pipeline (no PETSc objects; used by HylcFitCompute, tested alone) ---- */
 
@@ -92,6 +111,11 @@ PETSC_EXTERN int HylcMLS2D(PetscInt n, const PetscReal x[], const PetscReal y[],
 /* 1D knots (§9.1): linspace(factor min, factor max, n), shifted by the knot closest to 0 so that 0 is a
    knot (spacing kept). Returns the index of the 0 knot, -1 for invalid input (n < 2, min >= max). */
 PETSC_EXTERN int HylcFitKnots1D(PetscReal min, PetscReal max, PetscReal factor, PetscInt n, PetscReal t[]);
+/* 1D knots refined towards 0: the paper's knots (HylcFitKnots1D()) and, in the first interval on each side
+   of 0 (h its length), levels more at h/2, h/4, ..., h/2^levels, so that the first few per cent of strain
+   are resolved while the rest of the layout stays the paper's. t needs n + 2 levels entries; *nt gets the
+   count. Returns the index of the 0 knot, -1 for invalid input. */
+PETSC_EXTERN int HylcFitKnots1DRefined(PetscReal min, PetscReal max, PetscReal factor, PetscInt n, PetscInt levels, PetscReal t[], PetscInt *nt);
 /* 2D knots of one axis (§9): linspace(factor min, 0, nl) and linspace(0, factor max, nr) joined at 0
    (nl + nr - 1 knots; a side with factor*min >= 0 or factor*max <= 0 contributes only the 0). Writes
    *nt knots (at most nl + nr - 1) and returns the index of the 0 knot, -1 for invalid input. */

@@ -60,6 +60,9 @@ PETSC_EXTERN PetscErrorCode HylcMaterialGet2D(HylcMaterial, PetscInt k0, PetscIn
    symmetric). Exact limits at equal eigenvalues of II (finite and continuous where the model is):
    see docs/material.md. Not collective; thread-safe; no allocation. */
 PETSC_EXTERN PetscErrorCode HylcMaterialEvaluate(HylcMaterial, const PetscReal s[6], PetscReal *psi, PetscReal grad[6], PetscReal hess[36]);
+/* The homogeneous uniaxial tension state (hylcmat_uniaxial(), docs/fabric-uniaxial.md): stretch s along
+   x (dir 0) or y (dir 1), the lateral strains minimizing Psi; T = dPsi/ds (N/m). Not collective. */
+PETSC_EXTERN PetscErrorCode HylcMaterialUniaxial(HylcMaterial, PetscInt dir, PetscReal s, const PetscReal guess[2], PetscReal *T, PetscReal lateral[2], PetscReal *psi, PetscBool *converged);
 
 /* Names of the terms, as the sampling plan's (HylcPlanTermName): 1D "sx" "sa" "sy" "II00" "II11"; 2D
    "sx-sa" "sx-sy" "sx-II00" "sx-II11" "sa-sy" "sa-II00" "sa-II11" "sy-II00" "sy-II11". */

@@ -62,6 +62,42 @@ typedef struct {
   PetscLogDouble  tAssembly, tContact, tFactor, tLineSearch; /* parts of it (s) */
 } HylcMicroResult;
 
+/* the homogeneous uniaxial tension state of the tile (HylcMicroSolveUniaxial(), docs/fabric-uniaxial.md): the
+   stretch s prescribed along the material x axis (sx = s; sa, sy free) or y axis (sy = s; sx, sa free),
+   bending zero, Psi minimized over the two free (lateral) strains */
+typedef enum {
+  HYLC_UNIAXIAL_X = 0,
+  HYLC_UNIAXIAL_Y = 1
+} HylcUniaxialDirection;
+PETSC_EXTERN const char *const HylcUniaxialDirections[];
+
+/* how HylcMicroSolveUniaxial() gets dPsi/dz: the envelope theorem at each equilibrium
+   (HylcMicroGetStrainGradient(), one solve per point) or central differences of Psi over continued solves
+   (six more solves per point; for checks) */
+typedef enum {
+  HYLC_MICRO_UNIAXIAL_ENVELOPE = 0,
+  HYLC_MICRO_UNIAXIAL_FD       = 1
+} HylcMicroUniaxialGradient;
+PETSC_EXTERN const char *const HylcMicroUniaxialGradients[];
+
+typedef struct {
+  HylcUniaxialDirection dir;
+  PetscReal             s;               /* the prescribed stretch */
+  PetscReal             z[6];            /* the strain of the state returned: z[0] (x) or z[2] (y) = s, II = 0 */
+  PetscReal             lateral[2];      /* the free strains there: (sa, sy) for x, (sa, sx) for y */
+  PetscReal             psi;             /* Psi (J/m^2) */
+  PetscReal             T;               /* dPsi/ds, the force per unit width of a strip (N/m) */
+  PetscReal             grad[3];         /* dPsi/d(sx, sa, sy) (N/m) */
+  PetscReal             step;            /* the Newton step to the minimizer predicted at the state returned, max norm (strain) */
+  PetscBool             converged;       /* step <= xtol, or a line search failed with |lateral gradient| <= gtol |T| (gradientStop); the state's solve converged */
+  PetscBool             gradientStop;    /* converged by the gradient test after a failed line search (Psi's noise, nearby equilibria) */
+  PetscInt              iterations;      /* accepted Newton steps in the lateral strains */
+  PetscInt              solves;          /* microscale solves (HylcMicroSolve) */
+  PetscInt              microIterations; /* their Newton iterations, summed */
+  PetscInt              failedSolves;    /* solves that did not converge (continued and cold) */
+  PetscLogDouble        time;            /* wall time (s) */
+} HylcMicroUniaxialResult;
+
 PETSC_EXTERN PetscErrorCode HylcMicroCreate(MPI_Comm, HylcMicro *);
 PETSC_EXTERN PetscErrorCode HylcMicroDestroy(HylcMicro *);
 PETSC_EXTERN PetscErrorCode HylcMicroSetPattern(HylcMicro, HylcPattern, const HylcYarnModel *);
@@ -93,3 +129,8 @@ PETSC_EXTERN PetscErrorCode HylcMicroSolveContinued(HylcMicro, const PetscReal[6
 PETSC_EXTERN PetscErrorCode HylcMicroGetContinued(HylcMicro, PetscBool *);
 PETSC_EXTERN PetscErrorCode HylcMicroGetEnergyHistory(HylcMicro, PetscInt *, const PetscReal **);
 PETSC_EXTERN PetscErrorCode HylcMicroResultView(const HylcMicroResult *, PetscViewer);
+PETSC_EXTERN PetscErrorCode HylcMicroGetStrainGradient(HylcMicro, PetscReal[3]);
+PETSC_EXTERN PetscErrorCode HylcMicroSetUniaxial(HylcMicro, HylcMicroUniaxialGradient, PetscReal, PetscInt, PetscReal, PetscReal);
+PETSC_EXTERN PetscErrorCode HylcMicroSetUniaxialTolerances(HylcMicro, PetscReal, PetscReal);
+PETSC_EXTERN PetscErrorCode HylcMicroSolveUniaxial(HylcMicro, HylcUniaxialDirection, PetscReal, const PetscReal[2], const PetscReal[], HylcMicroUniaxialResult *, PetscReal[]);
+PETSC_EXTERN PetscErrorCode HylcMicroUniaxialResultView(const HylcMicroUniaxialResult *, PetscViewer);

@@ -90,5 +90,10 @@ PETSC_EXTERN PetscErrorCode HylcSamplesWriteHDF5(const char path[], long nsample
 PETSC_EXTERN PetscErrorCode HylcSamplesWriteHDF5WithIdentity(const char path[], long nsamples, const HylcSampleRecord recs[], const unsigned char done[], HylcPattern reference, const HylcYarnModel *model, const char optionsText[], const char identity[]);
 /* Reads /samples of a file written by HylcSamplesWriteHDF5: the sample count, records (indexed by
    sample) and done flags (status >= 0), allocated with PetscMalloc (free with PetscFree); optionsText
-   (may be NULL) receives the /options text (PetscFree). Not collective. */
+   (may be NULL) receives the /options text (PetscFree). Every dataset is checked first as by
+   HylcSamplesCheckHDF5() (values are not: a sample not computed holds NaN). Not collective. */
 PETSC_EXTERN PetscErrorCode HylcSamplesReadHDF5(const char path[], long *nsamples, HylcSampleRecord **recs, unsigned char **done, char **optionsText);
+/* Checks the datasets of /samples (each present, a dataset of the format's class and shape with one row
+   per sample, storing the values it declares; include/hylc/table.h) without reading them: a problem is
+   one PETSC_ERR_FILE_UNEXPECTED error "path (option): ..." naming the dataset. Not collective. */
+PETSC_EXTERN PetscErrorCode HylcSamplesCheckHDF5(const char path[], const char option[]);

@@ -63,14 +63,20 @@ PETSC_EXTERN void HylcSyncParentDirectory(const char path[]);
 /* Path checks made before any work (src/sys/file.c). Not collective; errors on comm.
    HylcFileCheckInput: an existing readable regular file (a directory is refused as such).
    HylcFileCheckOutput: not a directory, parent directory exists and is writable.
-   HylcFileCheckDistinct: the output is not the input (same device and inode). */
+   A program checks all its files together with the registry of include/hylc/files.h (which uses these,
+   and refuses an output that is an input or another output). */
 PETSC_EXTERN PetscErrorCode HylcFileCheckInput(MPI_Comm, const char[], const char[]);
 PETSC_EXTERN PetscErrorCode HylcFileCheckOutput(MPI_Comm, const char[], const char[]);
-PETSC_EXTERN PetscErrorCode HylcFileCheckDistinct(MPI_Comm, const char[], const char[], const char[], const char[]);
 /* Atomic text output: write to a unique temporary beside path, then HylcFileCommitTemp() (fsync, rename,
    fsync of the directory) or HylcFileAbortTemp() on an error path. A full disk leaves path untouched. */
 PETSC_EXTERN PetscErrorCode HylcFileOpenTemp(const char[], char[], size_t, FILE **);
 PETSC_EXTERN PetscErrorCode HylcFileCommitTemp(FILE **, const char[], const char[]);
 PETSC_EXTERN void           HylcFileAbortTemp(FILE **, const char[]);
+/* Raises on every rank of comm the error (code and message) that rank 0 met in work done alone with
+   PetscReturnErrorHandler pushed (ierr: rank 0's code; ignored elsewhere). Collective. */
+PETSC_EXTERN PetscErrorCode HylcShareError(MPI_Comm, PetscErrorCode);
+/* A uniaxial curve as CSV (docs/fabric-uniaxial.md): the header strain,T_N_per_m,lateral_strain_sa,lateral_strain_s2
+   and one row per point (s2: sy for a test along x, sx along y), written atomically. Not collective. */
+PETSC_EXTERN PetscErrorCode HylcWriteUniaxialCSV(const char[], PetscInt, const PetscReal[], const PetscReal[], const PetscReal[], const PetscReal[]);
 /* Refuses options nothing has read (before any work). Collective. */
 PETSC_EXTERN PetscErrorCode HylcCheckOptionsUsed(MPI_Comm);

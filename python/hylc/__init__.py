@@ -160,8 +160,10 @@ class Material:
             _check(_lib.hylcmat_load(self.path.encode(), ctypes.byref(self._h), err, len(err)), err)
 
     def _from_h5(self, path):
-        """builds the table from an HDF5 material read with h5py (libhylcmat validates every value)"""
+        """builds the table from an HDF5 material read with h5py: every array's length is checked here
+        (libhylcmat gets bare pointers and lengths), libhylcmat validates every value"""
         d = read_material_h5(path)
+        _check_material_shapes(path, d)
         err = ctypes.create_string_buffer(1024)
         _check(_lib.hylcmat_create(ctypes.byref(self._h)))
         _check(_lib.hylcmat_set_density(self._h, d["density"], err, len(err)), err)
@@ -373,10 +375,66 @@ def _attr(v):
     return v
 
 
+def _shape_error(path, msg):
+    return HylcError(4, "%s: %s" % (path, msg))
+
+
+def _check_material_shapes(path, d):
+    """the lengths of the arrays of a material read by read_material_h5 (the shape checks of the one table
+    reader, src/sys/table.c, on the Python side): a scalar density and constant, 5 strain scales (and
+    shifts), a 1D term's t, p, m of one length n >= 2, a 2D term's p, mu, mv, muv of len(tu) x len(tv)
+    with len(tu), len(tv) >= 2; a HylcError naming the dataset otherwise"""
+    for name in ("density", "constant"):
+        if np.size(d[name]) != 1:
+            raise _shape_error(path, "/%s has %d values, expected one" % (name, np.size(d[name])))
+    for name in ("strain_scale", "strain_shift"):
+        if name in d and len(d[name]) != 5:
+            raise _shape_error(path, "/%s has %d values, expected 5 (sx, sa, sy, II00, II11)" % (name, len(d[name])))
+    for term, g in d["1D"].items():
+        n = len(g["t"])
+        if n < 2:
+            raise _shape_error(path, "/1D/%s/t has %d knots, expected at least 2" % (term, n))
+        for k in ("p", "m"):
+            if len(g[k]) != n:
+                raise _shape_error(path, "/1D/%s/%s has %d values, expected %d (the length of /1D/%s/t)" % (term, k, len(g[k]), n, term))
+    for term, g in d["2D"].items():
+        nu, nv = len(g["tu"]), len(g["tv"])
+        for k, n in (("tu", nu), ("tv", nv)):
+            if n < 2:
+                raise _shape_error(path, "/2D/%s/%s has %d knots, expected at least 2" % (term, k, n))
+        for k in ("p", "mu", "mv", "muv"):
+            if len(g[k]) != nu * nv:
+                raise _shape_error(path, "/2D/%s/%s has %d values, expected %d x %d = %d (the lengths of /2D/%s/tu and /2D/%s/tv)" % (term, k, len(g[k]), nu, nv, nu * nv, term, term))
+
+
+def _numbers(path, node, name):
+    """the dataset name of the group node as a flat float array; a HylcError naming it when it is
+    missing, a group, or not numbers"""
+    import h5py
+    full = (node.name.rstrip("/") + "/" + name) if node.name != "/" else "/" + name
+    if name not in node:
+        raise _shape_error(path, "no dataset %s" % full)
+    obj = node[name]
+    if not isinstance(obj, h5py.Dataset):
+        raise _shape_error(path, "%s is a group, not a dataset" % full)
+    if obj.dtype.kind not in "fiu":
+        raise _shape_error(path, "dataset %s holds %s, expected numbers" % (full, obj.dtype))
+    return np.asarray(obj[()], float).ravel()
+
+
+def _int_attr(path, node, name):
+    """the integer attribute name of node; a HylcError naming it when it is missing or not one integer"""
+    v = node.attrs.get(name)
+    if v is None or np.size(v) != 1 or np.asarray(v).dtype.kind not in "iu":
+        raise _shape_error(path, "%s@%s: %s" % (node.name, name, "missing" if v is None else "not one integer"))
+    return int(np.asarray(v).ravel()[0])
+
+
 def read_material_h5(path):
     """The hylc HDF5 material file (docs/material.md) as a dict: density, constant, strain_scale,
     strain_shift, root attributes under 'attrs', and '1D' / '2D' {term name: {k or k0, k1, ext, t, p, m
-    or tu, tv, p, mu, mv, muv (node arrays flattened, iv * len(tu) + iu)}}."""
+    or tu, tv, p, mu, mv, muv (node arrays flattened, iv * len(tu) + iu)}}. A missing or misshapen
+    dataset or attribute is a HylcError naming it."""
     import h5py
     d = {"1D": {}, "2D": {}}
     with h5py.File(path, "r") as f:
@@ -384,16 +442,24 @@ def read_material_h5(path):
         if fmt != "hylc-material":
             raise HylcError(4, "%s: an HDF5 file of format '%s', not a hylc material file ('hylc-material')" % (path, fmt))
         d["attrs"] = {k: _attr(v) for k, v in f.attrs.items()}
-        d["density"] = float(f["density"][()])
-        d["constant"] = float(f["constant"][()])
-        d["strain_scale"] = np.asarray(f["strain_scale"][()], float).ravel()
+        for name in ("density", "constant"):
+            v = _numbers(path, f, name)
+            if v.size != 1:
+                raise _shape_error(path, "/%s has %d values, expected one" % (name, v.size))
+            d[name] = float(v[0])
+        d["strain_scale"] = _numbers(path, f, "strain_scale")
         if "strain_shift" in f:
-            d["strain_shift"] = np.asarray(f["strain_shift"][()]).ravel().astype(int)
-        for name, g in f.get("1D", {}).items():
-            d["1D"][name] = {"k": int(g.attrs["k"]), "ext": int(g.attrs["ext"]), **{k: np.asarray(g[k][()], float).ravel() for k in ("t", "p", "m")}}
-        for name, g in f.get("2D", {}).items():
-            d["2D"][name] = {"k0": int(g.attrs["k0"]), "k1": int(g.attrs["k1"]), "ext": int(g.attrs["ext"]),
-                             **{k: np.asarray(g[k][()], float).ravel() for k in ("tu", "tv", "p", "mu", "mv", "muv")}}
+            d["strain_shift"] = _numbers(path, f, "strain_shift").astype(int)
+        for dim, keys in (("1D", ("t", "p", "m")), ("2D", ("tu", "tv", "p", "mu", "mv", "muv"))):
+            if dim not in f:
+                continue
+            if not isinstance(f[dim], h5py.Group):
+                raise _shape_error(path, "/%s is a dataset, not a group" % dim)
+            for name, g in f[dim].items():
+                if not isinstance(g, h5py.Group):
+                    raise _shape_error(path, "/%s/%s is a dataset, not a group" % (dim, name))
+                idx = {"k": _int_attr(path, g, "k")} if dim == "1D" else {"k0": _int_attr(path, g, "k0"), "k1": _int_attr(path, g, "k1")}
+                d[dim][name] = {**idx, "ext": _int_attr(path, g, "ext"), **{k: _numbers(path, g, k) for k in keys}}
     return d
 
 

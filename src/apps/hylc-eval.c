@@ -2,13 +2,18 @@ static const char help[] = "hylc-eval: the homogenized material model Psi(s) and
                            "  hylc-eval -material stock1.json -strain 0.1,0,0,0,0,0\n"
                            "  hylc-eval -material model.h5 -strain 0,0.2,0,50,10,-20 -derivatives\n"
                            "  hylc-eval -material stock1.json -eval_hdf5 stock1.h5     (convert; also -eval_json)\n"
-                           "  hylc-eval -material stock1.json -eval_input strains.txt -eval_output out.txt [-derivatives]\n\n"
+                           "  hylc-eval -material stock1.json -eval_input strains.txt -eval_output out.txt [-derivatives]\n"
+                           "  hylc-eval -material stock1.json -eval_uniaxial x -eval_uniaxial_strains 0.05,0.1,0.2 -eval_uniaxial_csv x.csv\n\n"
                            "The material is an ARCSim-HYLC JSON table or a hylc HDF5 file (docs/material.md), recognized by\n"
                            "content. The strain is s = (sx, sa, sy, II00, II01, II11): stretches and shear (1), the second\n"
                            "fundamental form (1/m). Prints 'psi: <J/m^2>' and, with -derivatives, 'grad:' (dPsi/ds, 6 numbers)\n"
-                           "and 'hessian:' (6 lines of 6).\n\n";
+                           "and 'hessian:' (6 lines of 6). With -eval_uniaxial x|y: the homogeneous uniaxial tension state at each\n"
+                           "stretch (Psi minimized over the two free strains; T = dPsi/ds in N/m; docs/fabric-uniaxial.md).\n\n";
 
 #include <hylc/material.h>
+#include <hylc/files.h>
+#include <hylc/options.h>
+#include <hylc/table.h>
 #include <hdf5.h>
 #include <errno.h>
 #include <math.h>
@@ -63,98 +68,6 @@ static PetscErrorCode PrintNumbers(const char label[], int n, const PetscReal v[
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Batch mode: the strains of -eval_input (text: 6 numbers per line, separated by blanks or commas, '#'
-   comments and blank lines skipped; HDF5: the dataset /strain or /samples/strain of shape (N, 6)) */
-static PetscErrorCode ReadStrains(const char path[], PetscInt *n, PetscReal **z)
-{
-  FILE      *fp;
-  char       head[8] = {0};
-  size_t     got;
-  PetscInt   cap = 1024, k = 0, line = 0;
-  char       buf[4096];
-  PetscReal *v;
-
-  PetscFunctionBegin;
-  fp = fopen(path, "rb");
-  PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot open -eval_input %s: %s", path, strerror(errno));
-  got = fread(head, 1, 8, fp);
-  if (got == 8 && !memcmp(head, "\211HDF\r\n\032\n", 8)) {
-    hid_t   f, d, sp;
-    hsize_t dims[2] = {0, 0};
-    int     r;
-    fclose(fp);
-    f = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
-    PetscCheck(f >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_READ, "-eval_input %s: cannot open as HDF5", path);
-    d = H5Lexists(f, "strain", H5P_DEFAULT) > 0 ? H5Dopen2(f, "strain", H5P_DEFAULT) : (H5Lexists(f, "samples", H5P_DEFAULT) > 0 && H5Lexists(f, "samples/strain", H5P_DEFAULT) > 0 ? H5Dopen2(f, "samples/strain", H5P_DEFAULT) : -1);
-    if (d < 0) H5Fclose(f);
-    PetscCheck(d >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-eval_input %s: no dataset /strain or /samples/strain", path);
-    sp = H5Dget_space(d);
-    r  = H5Sget_simple_extent_ndims(sp);
-    if (r == 2) H5Sget_simple_extent_dims(sp, dims, NULL);
-    if (r != 2 || dims[1] != 6) {
-      H5Sclose(sp);
-      H5Dclose(d);
-      H5Fclose(f);
-      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "-eval_input %s: the strain dataset must have shape (N, 6)", path);
-    }
-    PetscCall(PetscMalloc1(6 * dims[0] + 6, &v));
-    r = (int)H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v);
-    H5Sclose(sp);
-    H5Dclose(d);
-    H5Fclose(f);
-    if (r < 0) PetscCall(PetscFree(v));
-    PetscCheck(r >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_READ, "-eval_input %s: cannot read the strain dataset", path);
-    for (hsize_t i = 0; i < 6 * dims[0]; i++)
-      if (!isfinite(v[i])) {
-        PetscCall(PetscFree(v));
-        SETERRQ(PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-eval_input %s: strain %llu, component %llu is not finite", path, (unsigned long long)(i / 6), (unsigned long long)(i % 6));
-      }
-    *n = (PetscInt)dims[0];
-    *z = v;
-    PetscFunctionReturn(PETSC_SUCCESS);
-  }
-  rewind(fp);
-  PetscCall(PetscMalloc1(6 * cap, &v));
-  while (fgets(buf, sizeof(buf), fp)) {
-    char *c = buf, *end;
-    int   m = 0;
-    line++;
-    for (char *h = buf; *h; h++)
-      if (*h == '#' || *h == '\n' || *h == '\r') *h = 0;
-    for (char *h = buf; *h; h++)
-      if (*h == ',' || *h == '\t') *h = ' ';
-    while (*c == ' ') c++;
-    if (!*c) continue;
-    if (k == cap) {
-      cap *= 2;
-      PetscCall(PetscRealloc(sizeof(PetscReal) * 6 * cap, &v));
-    }
-    for (; *c; m++) {
-      double x;
-      errno = 0;
-      x     = strtod(c, &end);
-      if (end == c || !isfinite(x) || m >= 6) {
-        fclose(fp);
-        PetscCall(PetscFree(v));
-        SETERRQ(PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-eval_input %s:%" PetscInt_FMT ": expected 6 finite numbers sx sa sy II00 II01 II11", path, line);
-      }
-      v[6 * k + m] = x;
-      c            = end;
-      while (*c == ' ') c++;
-    }
-    if (m != 6) {
-      fclose(fp);
-      PetscCall(PetscFree(v));
-      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-eval_input %s:%" PetscInt_FMT ": expected 6 numbers sx sa sy II00 II01 II11, got %d", path, line, m);
-    }
-    k++;
-  }
-  fclose(fp);
-  *n = k;
-  *z = v;
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 /* writes psi (n), and with deriv grad (n x 6), hess (n x 36): text (one line per strain: psi, 6 grad,
    36 Hessian numbers in %.17g) or HDF5 (datasets strain, psi, grad, hessian), chosen by the suffix .h5 */
 static PetscErrorCode WriteResults(const char path[], PetscInt n, const PetscReal *z, const PetscReal *psi, const PetscReal *grad, const PetscReal *hess)
@@ -163,12 +76,17 @@ static PetscErrorCode WriteResults(const char path[], PetscInt n, const PetscRea
 
   PetscFunctionBegin;
   if (l > 3 && (!strcmp(path + l - 3, ".h5") || (l > 5 && !strcmp(path + l - 5, ".hdf5")))) {
-    char    tmp[PETSC_MAX_PATH_LEN + 16];
-    hid_t   f;
-    herr_t  e     = 0;
-    hsize_t d1[1] = {(hsize_t)n}, d2[2] = {(hsize_t)n, 6}, d3[3] = {(hsize_t)n, 6, 6};
+    char        tmp[PETSC_MAX_PATH_LEN + 16];
+    hid_t       f;
+    herr_t      e     = 0;
+    hsize_t     d1[1] = {(hsize_t)n}, d2[2] = {(hsize_t)n, 6}, d3[3] = {(hsize_t)n, 6, 6};
+    H5E_auto2_t efunc;
+    void       *edata;
     snprintf(tmp, sizeof(tmp), "%s.tmp%d", path, (int)getpid());
+    H5Eget_auto2(H5E_DEFAULT, &efunc, &edata); /* HDF5 prints nothing: a failure is the one line below */
+    H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
     f = H5Fcreate(tmp, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+    if (f < 0) H5Eset_auto2(H5E_DEFAULT, efunc, edata);
     PetscCheck(f >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot create -eval_output %s", path);
     {
       const struct {
@@ -194,6 +112,7 @@ static PetscErrorCode WriteResults(const char path[], PetscInt n, const PetscRea
     if (H5Fclose(f) < 0) e = -1;
     if (e >= 0 && rename(tmp, path)) e = -1;
     if (e < 0) remove(tmp);
+    H5Eset_auto2(H5E_DEFAULT, efunc, edata);
     PetscCheck(e >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot write -eval_output %s", path);
   } else {
     FILE *fp;
@@ -211,23 +130,72 @@ static PetscErrorCode WriteResults(const char path[], PetscInt n, const PetscRea
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* psi (and with deriv grad, hess) at the n strains z, written by rank 0 */
+static PetscErrorCode EvalStrains(HylcMaterial mat, PetscInt n, const PetscReal *z, const char out[], PetscBool deriv)
+{
+  PetscReal     *psi, *grad = NULL, *hess = NULL;
+  PetscMPIInt    rank;
+  PetscErrorCode ierr = PETSC_SUCCESS;
+
+  PetscFunctionBegin;
+  PetscCall(PetscMalloc1(n + 1, &psi));
+  if (deriv) PetscCall(PetscMalloc2(6 * n + 6, &grad, 36 * n + 36, &hess));
+  for (PetscInt k = 0; k < n && !ierr; k++) ierr = HylcMaterialEvaluate(mat, z + 6 * k, &psi[k], grad ? grad + 6 * k : NULL, hess ? hess + 36 * k : NULL);
+  if (!ierr) ierr = MPI_Comm_rank(PETSC_COMM_WORLD, &rank) ? PETSC_ERR_MPI : PETSC_SUCCESS;
+  if (!ierr && rank == 0) ierr = WriteResults(out, n, z, psi, grad, hess);
+  PetscCall(PetscFree(psi));
+  if (deriv) PetscCall(PetscFree2(grad, hess));
+  PetscCall(ierr);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode EvalBatch(HylcMaterial mat, const char in[], const char out[], PetscBool deriv)
 {
-  PetscInt    n = 0;
-  PetscReal  *z = NULL, *psi, *grad = NULL, *hess = NULL;
+  HylcTable      T;
+  PetscErrorCode ierr;
+
+  PetscFunctionBegin;
+  /* the one reader of strain tables (include/hylc/table.h): text (6 numbers per line, lines of any
+     length) or HDF5 (/strain, /samples/strain); every strain finite and in the domain */
+  PetscCall(HylcTableReadStrainFile(in, "-eval_input", &T));
+  ierr = EvalStrains(mat, T.n, T.v, out, deriv);
+  if (!ierr) ierr = PetscPrintf(PETSC_COMM_WORLD, "evaluated %" PetscInt_FMT " strains from %s, wrote %s\n", T.n, in, out);
+  PetscCall(HylcTableDestroy(&T));
+  PetscCall(ierr);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* -eval_uniaxial: the uniaxial states at the stretches s[0..n), the first from the lowest point of a grid of the
+   lateral strains, each other from the lateral strains of the one before (a loading path) */
+static PetscErrorCode EvalUniaxial(HylcMaterial mat, PetscInt dir, PetscInt n, const PetscReal s[], const char csv[])
+{
+  PetscReal  *T, *sa, *s2, lat[2] = {0, 0};
   PetscMPIInt rank;
 
   PetscFunctionBegin;
-  PetscCall(ReadStrains(in, &n, &z));
-  PetscCall(PetscMalloc1(n + 1, &psi));
-  if (deriv) PetscCall(PetscMalloc2(6 * n + 6, &grad, 36 * n + 36, &hess));
-  for (PetscInt k = 0; k < n; k++) PetscCall(HylcMaterialEvaluate(mat, z + 6 * k, &psi[k], grad ? grad + 6 * k : NULL, hess ? hess + 36 * k : NULL));
+  PetscCall(PetscMalloc3(n, &T, n, &sa, n, &s2));
+  for (PetscInt i = 0; i < n; i++) {
+    PetscReal psi;
+    char      buf[256];
+    PetscCall(HylcMaterialUniaxial(mat, dir, s[i], i ? lat : NULL, &T[i], lat, &psi, NULL));
+    sa[i] = lat[0];
+    s2[i] = lat[1];
+    snprintf(buf, sizeof(buf), "uniaxial %s: s %.6g T %.9e N/m sa %.6e %s %.6e psi %.10e\n", dir ? "y" : "x", (double)s[i], (double)T[i], (double)sa[i], dir ? "sx" : "sy", (double)s2[i], (double)psi);
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s", buf));
+  }
+  for (PetscInt i = 0; i < n; i++)
+    if (s[i] > 0) {
+      char buf[160];
+      snprintf(buf, sizeof(buf), "poisson ratio -%s/s%s at s = %g: %.6g\n", dir ? "sx" : "sy", dir ? "y" : "x", (double)s[i], (double)(-s2[i] / s[i]));
+      PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s", buf));
+      break;
+    }
   PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
-  if (rank == 0) PetscCall(WriteResults(out, n, z, psi, grad, hess));
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "evaluated %" PetscInt_FMT " strains from %s, wrote %s\n", n, in, out));
-  PetscCall(PetscFree(z));
-  PetscCall(PetscFree(psi));
-  if (deriv) PetscCall(PetscFree2(grad, hess));
+  if (csv[0]) {
+    if (rank == 0) PetscCall(HylcWriteUniaxialCSV(csv, n, s, T, sa, s2));
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "wrote %s\n", csv));
+  }
+  PetscCall(PetscFree3(T, sa, s2));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -239,6 +207,10 @@ static PetscErrorCode Eval(HylcMaterial mat)
   char      file[PETSC_MAX_PATH_LEN] = "", strain[512] = "", json[PETSC_MAX_PATH_LEN] = "", h5[PETSC_MAX_PATH_LEN] = "", matFile[PETSC_MAX_PATH_LEN] = "";
   PetscBool hasFile, hasStrain, deriv = PETSC_FALSE, help, hasJson, hasH5, hasMatFile;
   PetscReal s[6], psi, grad[6], hess[36];
+  char      udir[16] = "", ucsv[PETSC_MAX_PATH_LEN] = "";
+  PetscBool hasUni, hasUStrains, hasUCsv;
+  PetscReal ustrain[256] = {0.05, 0.1, 0.2};
+  PetscInt  nu = 256, udirn = 0;
 
   PetscFunctionBeginUser;
   PetscOptionsBegin(PETSC_COMM_WORLD, NULL, "hylc-eval options", "hylc-eval");
@@ -249,7 +221,22 @@ static PetscErrorCode Eval(HylcMaterial mat)
   PetscCall(PetscOptionsString("-eval_hdf5", "Write the material as hylc HDF5 to this file (never the input)", "HylcMaterialWriteHDF5", h5, h5, sizeof(h5), &hasH5));
   PetscCall(PetscOptionsString("-eval_input", "Batch mode: evaluate at the strains of this file (text: 6 numbers per line; HDF5: dataset /strain or /samples/strain, N x 6)", "HylcMaterialEvaluate", bin, bin, sizeof(bin), &hasIn));
   PetscCall(PetscOptionsString("-eval_output", "Batch mode: write psi (and with -derivatives grad, hessian) per strain here: text, or HDF5 if it ends in .h5", "HylcMaterialEvaluate", bout, bout, sizeof(bout), &hasOut));
+  PetscCall(PetscOptionsString("-eval_uniaxial", "Uniaxial tension mode: x or y, the material axis of the prescribed stretch; Psi minimized over the other two in-plane strains, bending zero (docs/fabric-uniaxial.md)", "HylcMaterialUniaxial", udir, udir, sizeof(udir), &hasUni));
+  PetscCall(HylcOptionsRealArray("-eval_uniaxial_strains", "Uniaxial mode: the stretches s in [0, 1) (strain, 0 at rest; default 0.05,0.1,0.2; at most 256), in this order: the first from the lowest point of a grid of the lateral strains, each other from the lateral strains of the one before", "HylcMaterialUniaxial", ustrain, &nu, &hasUStrains));
+  PetscCall(PetscOptionsString("-eval_uniaxial_csv", "Uniaxial mode: write strain,T_N_per_m,lateral_strain_sa,lateral_strain_s2 (T in N/m) to this CSV file", "HylcWriteUniaxialCSV", ucsv, ucsv, sizeof(ucsv), &hasUCsv));
   PetscOptionsEnd();
+  if (!hasUStrains) nu = 3;
+  PetscCheck(hasUni || (!hasUStrains && !hasUCsv), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-eval_uniaxial_strains and -eval_uniaxial_csv need -eval_uniaxial x|y");
+  PetscCheck(!hasUStrains || nu > 0, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-eval_uniaxial_strains: needs at least one stretch");
+  PetscCheck(!hasUCsv || ucsv[0], PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-eval_uniaxial_csv needs a file name");
+  if (hasUni) {
+    PetscBool isx, isy;
+    PetscCall(PetscStrcmp(udir, "x", &isx));
+    PetscCall(PetscStrcmp(udir, "y", &isy));
+    PetscCheck(isx || isy, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-eval_uniaxial %s: unknown direction (x or y, the material axis of the stretch)", udir);
+    udirn = isy ? 1 : 0;
+    for (PetscInt i = 0; i < nu; i++) PetscCheck(ustrain[i] >= 0 && ustrain[i] < 1, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-eval_uniaxial_strains: stretch %g is outside [0, 1) (a uniaxial state is a tension test; a compressed strip buckles)", (double)ustrain[i]);
+  }
   PetscCall(PetscOptionsGetString(NULL, NULL, "-material_file", matFile, sizeof(matFile), &hasMatFile));
   PetscCheck(!(hasFile && hasMatFile), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "Both -material and -material_file were given; use one");
   PetscCall(PetscOptionsHasHelp(NULL, &help));
@@ -266,34 +253,25 @@ static PetscErrorCode Eval(HylcMaterial mat)
   PetscCheck(hasIn == hasOut, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "Batch mode needs both -eval_input strains.txt|.h5 and -eval_output out.txt|.h5");
   PetscCheck(!hasIn || (bin[0] && bout[0]), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-eval_input and -eval_output need file names");
   PetscCheck(!(hasIn && hasStrain), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-strain and -eval_input exclude each other");
-  PetscCheck(hasStrain || hasJson || hasH5 || hasIn, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "Nothing to do: give -strain sx,sa,sy,II00,II01,II11 (or -eval_json / -eval_hdf5 to convert the material)");
+  PetscCheck(hasStrain || hasJson || hasH5 || hasIn || hasUni, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "Nothing to do: give -strain sx,sa,sy,II00,II01,II11 (or -eval_json / -eval_hdf5 to convert the material, -eval_uniaxial x|y for the uniaxial states)");
   PetscCheck(!deriv || hasStrain || hasIn, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-derivatives needs -strain");
   if (hasStrain) PetscCall(ParseStrain(strain, s));
-  /* every path before any work: the input a readable regular file, each output writable, no output
-     the input, and the two outputs not one file */
+  /* every file before any work (include/hylc/files.h): the inputs readable, the outputs writable and
+     within the path limits, no output an input (the options files too) or another output */
   {
-    const char *in = hasFile ? file : matFile, *inopt = hasFile ? "-material" : "-material_file";
-    PetscCall(HylcFileCheckInput(PETSC_COMM_WORLD, in, inopt));
-    if (hasJson) {
-      PetscCall(HylcFileCheckOutput(PETSC_COMM_WORLD, json, "-eval_json"));
-      PetscCall(HylcFileCheckDistinct(PETSC_COMM_WORLD, json, "-eval_json", in, inopt));
-    }
-    if (hasH5) {
-      PetscCall(HylcFileCheckOutput(PETSC_COMM_WORLD, h5, "-eval_hdf5"));
-      PetscCall(HylcFileCheckDistinct(PETSC_COMM_WORLD, h5, "-eval_hdf5", in, inopt));
-    }
-    if (hasIn) {
-      PetscCall(HylcFileCheckInput(PETSC_COMM_WORLD, bin, "-eval_input"));
-      PetscCall(HylcFileCheckOutput(PETSC_COMM_WORLD, bout, "-eval_output"));
-      PetscCall(HylcFileCheckDistinct(PETSC_COMM_WORLD, bout, "-eval_output", in, inopt));
-      PetscCall(HylcFileCheckDistinct(PETSC_COMM_WORLD, bout, "-eval_output", bin, "-eval_input"));
-    }
-    if (hasJson && hasH5) {
-      PetscBool same;
-      PetscCall(PetscStrcmp(json, h5, &same));
-      PetscCheck(!same, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-eval_json and -eval_hdf5 name the same file %s", json);
-      PetscCall(HylcFileCheckDistinct(PETSC_COMM_WORLD, json, "-eval_json", h5, "-eval_hdf5"));
-    }
+    HylcFiles      files;
+    PetscErrorCode ierr;
+    PetscCall(HylcFilesCreate(PETSC_COMM_WORLD, &files));
+    ierr = HylcFilesAddOptionsFiles(files);
+    if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_INPUT, hasFile ? file : matFile, hasFile ? "-material" : "-material_file");
+    if (!ierr && hasIn) ierr = HylcFilesAdd(files, HYLC_FILE_INPUT, bin, "-eval_input");
+    if (!ierr && hasIn) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, bout, "-eval_output");
+    if (!ierr && hasJson) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, json, "-eval_json");
+    if (!ierr && hasH5) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, h5, "-eval_hdf5");
+    if (!ierr && hasUCsv) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, ucsv, "-eval_uniaxial_csv");
+    if (!ierr) ierr = HylcFilesCheck(files);
+    PetscCall(HylcFilesDestroy(&files));
+    PetscCall(ierr);
   }
   PetscCall(HylcMaterialSetFromOptions(mat)); /* -material_file (loads it), -material_view */
   PetscCall(HylcCheckOptionsUsed(PETSC_COMM_WORLD));
@@ -314,6 +292,7 @@ static PetscErrorCode Eval(HylcMaterial mat)
     if (saturated) PetscCall(PetscFPrintf(PETSC_COMM_WORLD, stderr, "hylc: warning: at this strain a value exceeds the double range and is printed as +-%.17g (saturated)\n", (double)PETSC_MAX_REAL));
   }
   if (hasIn) PetscCall(EvalBatch(mat, bin, bout, deriv));
+  if (hasUni) PetscCall(EvalUniaxial(mat, udirn, nu, ustrain, ucsv));
   if (hasJson) {
     PetscCall(HylcMaterialWriteJSON(mat, json));
     PetscCall(PetscPrintf(PETSC_COMM_WORLD, "wrote %s\n", json));

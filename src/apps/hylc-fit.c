@@ -4,56 +4,42 @@ static const char help[] = "hylc-fit: fits the homogenized material model (the s
                            "  hylc-fit -fit_input raw/ -fit_json model.json -fit_family stockinette   (the paper's data.txt, info.txt)\n\n";
 
 #include <hylc/fit.h>
+#include <hylc/files.h>
 #include <string.h>
 #include <sys/stat.h>
 
-/* the paths of the raw layout that -fit_input in names: in/data.txt and in/info.txt for a directory,
-   in and info.txt beside it for a file (n = 2), or in alone (an HDF5 file: n = 1; a missing path: 0) */
-static PetscErrorCode InputPaths(const char in[], char paths[3][PETSC_MAX_PATH_LEN + 16], int *n)
-{
-  struct stat st;
-
-  PetscFunctionBegin;
-  *n = 0;
-  if (!in[0] || stat(in, &st)) PetscFunctionReturn(PETSC_SUCCESS);
-  if (S_ISDIR(st.st_mode)) {
-    PetscCall(PetscSNPrintf(paths[0], sizeof(paths[0]), "%s/data.txt", in));
-    PetscCall(PetscSNPrintf(paths[1], sizeof(paths[1]), "%s/info.txt", in));
-    *n = 2;
-  } else {
-    const char *slash = strrchr(in, '/');
-    PetscCall(PetscStrncpy(paths[0], in, sizeof(paths[0])));
-    if (slash)
-      PetscCall(PetscSNPrintf(paths[1], sizeof(paths[1]), "%.*sinfo.txt", (int)(slash - in + 1), in));
-    else
-      PetscCall(PetscStrncpy(paths[1], "info.txt", sizeof(paths[1])));
-    *n = 2; /* info.txt is read only for raw data, but is never a fit output either */
-  }
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* every output before any work: writable, not a directory, not an input, and -fit_output and -fit_json
-   not the same file */
+/* every file before any work (include/hylc/files.h): the input (a directory: its data.txt and, when
+   there, info.txt; a file: it and the info.txt beside it, which a raw input reads), the options files,
+   the outputs writable and within the path limits, no output an input or the other output */
 static PetscErrorCode CheckPaths(const char in[], const char h5[], const char json[])
 {
-  char        paths[3][PETSC_MAX_PATH_LEN + 16];
-  int         n;
-  const char *outs[2] = {h5, json}, *opts[2] = {"-fit_output", "-fit_json"};
+  char           data[PETSC_MAX_PATH_LEN + 16] = "", info[PETSC_MAX_PATH_LEN + 16] = "";
+  struct stat    st;
+  HylcFiles      files;
+  PetscErrorCode ierr;
 
   PetscFunctionBegin;
-  PetscCall(InputPaths(in, paths, &n));
-  for (int k = 0; k < 2; k++) {
-    if (!outs[k][0]) continue;
-    PetscCall(HylcFileCheckOutput(PETSC_COMM_WORLD, outs[k], opts[k]));
-    PetscCall(HylcFileCheckDistinct(PETSC_COMM_WORLD, outs[k], opts[k], in, "-fit_input"));
-    for (int i = 0; i < n; i++) PetscCall(HylcFileCheckDistinct(PETSC_COMM_WORLD, outs[k], opts[k], paths[i], "-fit_input"));
+  if (in[0] && !stat(in, &st) && S_ISDIR(st.st_mode)) {
+    PetscCall(PetscSNPrintf(data, sizeof(data), "%s/data.txt", in));
+    PetscCall(PetscSNPrintf(info, sizeof(info), "%s/info.txt", in));
+    PetscCheck(!stat(data, &st), PETSC_COMM_WORLD, PETSC_ERR_FILE_OPEN, "-fit_input %s is a directory without data.txt (the paper's raw layout)", in);
+  } else if (in[0]) {
+    const char *slash = strrchr(in, '/');
+    PetscCall(PetscStrncpy(data, in, sizeof(data)));
+    if (slash)
+      PetscCall(PetscSNPrintf(info, sizeof(info), "%.*sinfo.txt", (int)(slash - in + 1), in));
+    else
+      PetscCall(PetscStrncpy(info, "info.txt", sizeof(info)));
   }
-  if (h5[0] && json[0]) {
-    PetscBool same;
-    PetscCall(PetscStrcmp(h5, json, &same));
-    PetscCheck(!same, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-fit_output and -fit_json name the same file %s", h5);
-    PetscCall(HylcFileCheckDistinct(PETSC_COMM_WORLD, json, "-fit_json", h5, "-fit_output"));
-  }
+  PetscCall(HylcFilesCreate(PETSC_COMM_WORLD, &files));
+  ierr = HylcFilesAddOptionsFiles(files);
+  if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_INPUT, data, "-fit_input");
+  if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_INPUT_OPTIONAL, info, "-fit_input");
+  if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, h5, "-fit_output");
+  if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, json, "-fit_json");
+  if (!ierr) ierr = HylcFilesCheck(files);
+  PetscCall(HylcFilesDestroy(&files));
+  PetscCall(ierr);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -3,8 +3,10 @@ static const char help[] = "hylc-pattern: load or generate a periodic yarn patte
                            "  hylc-pattern -pattern_type satin -pattern_output s.pyp   generate and write\n"
                            "  hylc-pattern -pattern_file f.pyp -pattern_vtk f.vtk -pattern_vtk_tiles 3,3\n\n";
 
+#include <hylc/options.h>
 #include <hylc/pattern.h>
 #include <hylc/sys.h>
+#include <hylc/files.h>
 
 static PetscErrorCode RunPattern(HylcPattern pat)
 {
@@ -17,24 +19,29 @@ static PetscErrorCode RunPattern(HylcPattern pat)
   PetscOptionsBegin(PETSC_COMM_WORLD, NULL, "hylc-pattern output options", "hylc-pattern");
   PetscCall(PetscOptionsString("-pattern_output", "Write the pattern to this .pyp file", "HylcPatternWrite", out, out, sizeof(out), NULL));
   PetscCall(PetscOptionsString("-pattern_vtk", "Write the tiled pattern as legacy-VTK polylines to this file", "HylcPatternWriteVTK", vtk, vtk, sizeof(vtk), NULL));
-  PetscCall(PetscOptionsIntArray("-pattern_vtk_tiles", "Number of tile copies nx,ny in the VTK file", "HylcPatternWriteVTK", tiles, &nt, &flg));
+  PetscCall(HylcOptionsIntArray("-pattern_vtk_tiles", "Number of tile copies nx,ny in the VTK file", "HylcPatternWriteVTK", tiles, &nt, &flg));
   PetscOptionsEnd();
   PetscCheck(!flg || (nt == 2 && tiles[0] >= 1 && tiles[1] >= 1), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-pattern_vtk_tiles needs two positive integers nx,ny");
   PetscCheck((double)tiles[0] * tiles[1] <= 1e6, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-pattern_vtk_tiles %" PetscInt_FMT ",%" PetscInt_FMT ": at most 1e6 tile copies", tiles[0], tiles[1]);
-  /* outputs checked before any work, and never onto the input */
-  if (out[0]) PetscCall(HylcFileCheckOutput(PETSC_COMM_WORLD, out, "-pattern_output"));
-  if (vtk[0]) PetscCall(HylcFileCheckOutput(PETSC_COMM_WORLD, vtk, "-pattern_vtk"));
+  /* every file before any work (include/hylc/files.h): the pattern file and the options files read, the
+     outputs writable and within the path limits, never an input or each other */
   {
     HylcPatternType type;
     PetscBool       isfile;
+    char            in[PETSC_MAX_PATH_LEN] = "";
+    HylcFiles       files;
+    PetscErrorCode  ierr;
     PetscCall(HylcPatternGetType(pat, &type));
     PetscCall(PetscStrcmp(type, HYLCPATTERNFILE, &isfile));
-    if (isfile) {
-      char in[PETSC_MAX_PATH_LEN] = "";
-      PetscCall(PetscOptionsGetString(NULL, NULL, "-pattern_file", in, sizeof(in), NULL));
-      PetscCall(HylcFileCheckDistinct(PETSC_COMM_WORLD, out, "-pattern_output", in, "-pattern_file"));
-      PetscCall(HylcFileCheckDistinct(PETSC_COMM_WORLD, vtk, "-pattern_vtk", in, "-pattern_file"));
-    }
+    if (isfile) PetscCall(PetscOptionsGetString(NULL, NULL, "-pattern_file", in, sizeof(in), NULL));
+    PetscCall(HylcFilesCreate(PETSC_COMM_WORLD, &files));
+    ierr = HylcFilesAddOptionsFiles(files);
+    if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_INPUT, in, "-pattern_file");
+    if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, out, "-pattern_output");
+    if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, vtk, "-pattern_vtk");
+    if (!ierr) ierr = HylcFilesCheck(files);
+    PetscCall(HylcFilesDestroy(&files));
+    PetscCall(ierr);
   }
   PetscCall(HylcPatternSetUp(pat));
   PetscCall(HylcPatternView(pat, PETSC_VIEWER_STDOUT_WORLD));

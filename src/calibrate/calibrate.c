@@ -2,6 +2,8 @@
    docs/calibrate.md); the setters and HylcCalibrateSetFromOptions are in opts.c. */
 #include "calibrateimpl.h"
 #include <hylc/sampler.h>
+#include <hylc/files.h>
+#include <sys/stat.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -232,6 +234,45 @@ PetscErrorCode HylcCalibrateSetUpSolver_Private(HylcCalibrate C)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* every file before any work (include/hylc/files.h): the target (a directory: its data.txt), the pattern
+   file and the options files read; the outputs writable and within the path limits, none of them an input
+   or another output */
+static PetscErrorCode CheckFiles(HylcCalibrate C)
+{
+  MPI_Comm        comm = PetscObjectComm((PetscObject)C);
+  char            target[PETSC_MAX_PATH_LEN + 16], pfile[PETSC_MAX_PATH_LEN] = "";
+  HylcPatternType type;
+  PetscBool       isfile;
+  HylcFiles       files;
+  PetscErrorCode  ierr;
+  PetscMPIInt     isdir = 0;
+
+  PetscFunctionBegin;
+  if (!C->rank) {
+    struct stat st;
+    isdir = stat(C->target, &st) == 0 && S_ISDIR(st.st_mode);
+  }
+  PetscCallMPI(MPI_Bcast(&isdir, 1, MPI_INT, 0, comm));
+  if (isdir)
+    PetscCall(PetscSNPrintf(target, sizeof(target), "%s/data.txt", C->target));
+  else
+    PetscCall(PetscStrncpy(target, C->target, sizeof(target)));
+  PetscCall(HylcPatternGetType(C->pat, &type));
+  PetscCall(PetscStrcmp(type, HYLCPATTERNFILE, &isfile));
+  if (isfile) PetscCall(PetscOptionsGetString(NULL, NULL, "-pattern_file", pfile, sizeof(pfile), NULL));
+  PetscCall(HylcFilesCreate(comm, &files));
+  ierr = HylcFilesAddOptionsFiles(files);
+  if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_INPUT, target, "-calibrate_target");
+  if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_INPUT, pfile, "-pattern_file");
+  if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, C->output, "-calibrate_output");
+  if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, C->dump, "-calibrate_dump");
+  if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, C->refout, "-reference_output");
+  if (!ierr) ierr = HylcFilesCheck(files);
+  PetscCall(HylcFilesDestroy(&files));
+  PetscCall(ierr);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /*@C
   HylcCalibrateSetUp - Loads or generates the pattern, resolves the initial values (the yarn model at its
   radius) and the bounds (the initial values must lie within those of the free parameters), resolves the
@@ -262,26 +303,26 @@ PetscErrorCode HylcCalibrateSetUp(HylcCalibrate C)
   if (!C->solverSetUp) PetscCall(HylcCalibrateSetUpSolver_Private(C));
   PetscCall(HylcCheckOptionsUsed(comm));
   PetscCheck(C->target[0], comm, PETSC_ERR_USER_INPUT, "No target: give -calibrate_target <model.json | model.h5 | samples.h5 | data.txt | file.csv>");
-  if (C->output[0]) PetscCall(HylcFileCheckOutput(comm, C->output, "-calibrate_output"));
-  if (C->dump[0]) PetscCall(HylcFileCheckOutput(comm, C->dump, "-calibrate_dump"));
-  if (C->refout[0]) PetscCall(HylcFileCheckOutput(comm, C->refout, "-reference_output"));
-  PetscCall(HylcCalibrateReadTarget_Private(C)); /* checks the target's path and content */
+  PetscCall(CheckFiles(C));
+  PetscCall(HylcCalibrateReadTarget_Private(C)); /* checks the target's content */
   C->continued = (PetscBool)(C->start == HYLC_CALIBRATE_START_CONTINUE || (C->start == HYLC_CALIBRATE_START_AUTO && C->targetResolved == HYLC_CALIB_TARGET_SAMPLES && C->targetContinued));
   PetscCall(HylcCalibrateBuildUnits_Private(C));
-  if (C->output[0]) PetscCall(HylcFileCheckDistinct(comm, C->output, "-calibrate_output", C->target, "-calibrate_target"));
-  if (C->dump[0]) PetscCall(HylcFileCheckDistinct(comm, C->dump, "-calibrate_dump", C->target, "-calibrate_target"));
   PetscCall(PetscMalloc2(C->m * HYLC_CALIB_NRECORD, &C->rec0, C->m * HYLC_CALIB_NRECORD, &C->rec1));
   /* the reference state: a generated pattern's depends on the parameters; it is computed once, with the
      initial values, and kept fixed (docs/calibrate.md) */
-  PetscCall(HylcPatternGetType(C->pat, &type));
-  PetscCall(PetscStrcmp(type, HYLCPATTERNFILE, &isfile));
-  if (C->refmode == HYLC_REFERENCE_COMPUTE || (C->refmode == HYLC_REFERENCE_AUTO && !isfile)) {
+  {
     HylcPattern ref;
-    PetscCall(PetscPrintf(comm, "[calibrate] reference state of the %s pattern with the initial parameters (kept fixed)\n", C->patLabel));
-    PetscCall(HylcReferenceStateCompute(C->pat, &C->model, &C->refpar, C->rank ? NULL : PETSC_VIEWER_STDOUT_SELF, &ref));
-    PetscCall(HylcPatternDestroy(&C->pat));
-    C->pat         = ref;
-    C->refComputed = PETSC_TRUE;
+    PetscBool   asks;
+    PetscCall(HylcPatternGetType(C->pat, &type));
+    PetscCall(PetscStrcmp(type, HYLCPATTERNFILE, &isfile));
+    asks = (PetscBool)(C->refmode == HYLC_REFERENCE_COMPUTE || C->refmode == HYLC_REFERENCE_RELAX || (C->refmode == HYLC_REFERENCE_AUTO && !isfile));
+    if (asks) PetscCall(PetscPrintf(comm, "[calibrate] reference state (%s) of the %s pattern with the initial parameters (kept fixed)\n", HylcReferenceModes[C->refmode], C->patLabel));
+    PetscCall(HylcReferenceStateForMode(C->pat, C->refmode, &C->model, &C->refpar, C->rank ? NULL : PETSC_VIEWER_STDOUT_SELF, &ref));
+    if (ref) {
+      PetscCall(HylcPatternDestroy(&C->pat));
+      C->pat         = ref;
+      C->refComputed = PETSC_TRUE;
+    }
   }
   if (C->refout[0]) PetscCall(HylcPatternWrite(C->pat, C->refout));
   C->setupcalled = PETSC_TRUE;

@@ -83,6 +83,18 @@ PETSC_INTERN PetscErrorCode HylcCalibrateReadTarget_Private(HylcCalibrate);
 /* solve.c: the units of work of the samples (continuation: the half-lines of the 1D terms; otherwise or
    for the other samples, one sample each) */
 PETSC_INTERN PetscErrorCode HylcCalibrateBuildUnits_Private(HylcCalibrate);
+/* target.c: the rows of a file target (rank 0) */
+typedef struct {
+  PetscInt   n, cap;
+  PetscReal *z, *psi; /* 6n, n */
+  PetscInt  *term;    /* the plan's term (HYLC_CALIB_OTHER: off the plan's axes) */
+  PetscInt  *line;    /* the row's line in a text file (1-based), its row in a samples file (0-based) */
+  PetscBool  continued; /* a samples file with continued samples (/samples/start 1 or 2): -calibrate_start auto */
+} HylcCalibRows;
+PETSC_INTERN PetscErrorCode HylcCalibRowsDestroy_Private(HylcCalibRows *);
+/* target.c: rank 0's part of reading a CSV, raw data.txt or samples file target: rows read, checked (values,
+   strains against the tile P unless NULL), the base row and the rows kept in S (not collective) */
+PETSC_INTERN PetscErrorCode HylcCalibrateReadFileTarget_Private(const char path[], HylcCalibTargetType kind, PetscReal radius, PetscInt stride, PetscInt maxSamples, HylcPeriodic P, HylcCalibRows *S, PetscInt *nrows, PetscInt *nskipped);
 /* term name (the plan's names and "other") */
 PETSC_INTERN const char *HylcCalibrateTermName_Private(PetscInt t);
 /* solve.c: one evaluation at explicit p (no ties): the records (m x HYLC_CALIB_NRECORD) on every rank */

@@ -1,4 +1,5 @@
 /* HylcCalibrate: the setters of the options and HylcCalibrateSetFromOptions (docs/calibrate.md). */
+#include <hylc/options.h>
 #include "calibrateimpl.h"
 #include <stdio.h>
 #include <string.h>
@@ -139,7 +140,7 @@ PetscErrorCode HylcCalibrateSetBounds(HylcCalibrate C, PetscInt j, PetscReal lo,
   PetscFunctionBegin;
   PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
   PetscCheck(j >= 0 && j < HYLC_CALIBRATE_NPARAM, PetscObjectComm((PetscObject)C), PETSC_ERR_ARG_OUTOFRANGE, "Parameter index %" PetscInt_FMT " out of range 0..3", j);
-  PetscCheck(lo > 0 && lo <= hi, PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "Bounds of %s must be 0 < lo <= hi, got %g,%g", HylcCalibrateParamNames[j], (double)lo, (double)hi);
+  PetscCheck(lo > 0 && lo <= hi && !PetscIsInfOrNanReal(hi), PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "Bounds of %s must be finite with 0 < lo <= hi, got %g,%g", HylcCalibrateParamNames[j], (double)lo, (double)hi);
   C->blo[j]      = lo;
   C->bhi[j]      = hi;
   C->solverSetUp = PETSC_FALSE;
@@ -368,14 +369,14 @@ PetscErrorCode HylcCalibrateSetTermWeight(HylcCalibrate C, const char term[], Pe
   PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
   PetscCall(PetscStrcmp(term, "zero", &zero));
   if (zero) {
-    PetscCheck(w >= 0, PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "-calibrate_weight_zero must be >= 0, got %g", (double)w);
+    PetscCheck(w >= 0 && !PetscIsInfOrNanReal(w), PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "-calibrate_weight_zero must be finite and >= 0, got %g", (double)w);
     C->wzero = w;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   for (int t = 1; t < HYLC_CALIB_NTERM; t++)
     if (!strcmp(term, HylcCalibrateTermName_Private(t))) found = t;
   PetscCheck(found >= 1, PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "-calibrate_weights: unknown term '%s' (use sx, sa, sy, II00, II11, a 2D term such as sx-sa, or other; the constant's is -calibrate_weight_zero)", term);
-  PetscCheck(w >= 0, PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "-calibrate_weights: the weight of %s must be a number >= 0, got %g", term, (double)w);
+  PetscCheck(w >= 0 && !PetscIsInfOrNanReal(w), PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "-calibrate_weights: the weight of %s must be a finite number >= 0, got %g", term, (double)w);
   C->w[found] = w;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -388,7 +389,7 @@ PetscErrorCode HylcCalibrateSetTermWeight(HylcCalibrate C, const char term[], Pe
 
   Input Parameters:
 + C      - the calibration
-. mode   - HYLC_REFERENCE_AUTO (for a generated pattern), HYLC_REFERENCE_COMPUTE or HYLC_REFERENCE_NONE
+. mode   - HYLC_REFERENCE_AUTO (for a generated pattern), HYLC_REFERENCE_COMPUTE, HYLC_REFERENCE_NONE or HYLC_REFERENCE_RELAX (the in-plane minimum of the pattern as given)
 - output - .pyp file for the reference state (NULL or empty: none)
 
   Level: intermediate
@@ -397,7 +398,7 @@ PetscErrorCode HylcCalibrateSetReference(HylcCalibrate C, HylcReferenceMode mode
 {
   PetscFunctionBegin;
   PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
-  PetscCheck(mode >= HYLC_REFERENCE_AUTO && mode <= HYLC_REFERENCE_NONE, PetscObjectComm((PetscObject)C), PETSC_ERR_ARG_OUTOFRANGE, "Unknown reference mode %d", (int)mode);
+  PetscCheck(mode >= HYLC_REFERENCE_AUTO && mode <= HYLC_REFERENCE_RELAX, PetscObjectComm((PetscObject)C), PETSC_ERR_ARG_OUTOFRANGE, "Unknown reference mode %d", (int)mode);
   C->refmode = mode;
   PetscCall(PetscStrncpy(C->refout, output ? output : "", sizeof(C->refout)));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -514,7 +515,7 @@ PetscErrorCode HylcCalibrateSetFromOptions(HylcCalibrate C)
     PetscInt  n    = 2;
     PetscCall(PetscSNPrintf(opt, sizeof(opt), "-calibrate_bounds_%s", HylcCalibrateParamNames[j]));
     PetscCall(PetscSNPrintf(help, sizeof(help), "Bounds lo,hi of %s (%s; default initial/1000, initial*1000)", HylcCalibrateParamNames[j], j == 3 ? "N/m" : "Pa"));
-    PetscCall(PetscOptionsRealArray(opt, help, "HylcCalibrateSetBounds", v, &n, &set));
+    PetscCall(HylcOptionsRealArray(opt, help, "HylcCalibrateSetBounds", v, &n, &set));
     if (set) {
       PetscCheck(n == 2, comm, PETSC_ERR_USER_INPUT, "%s needs two values lo,hi", opt);
       snprintf(help, sizeof(help), "%g,%g", (double)v[0], (double)v[1]); /* C formatting for the message */
@@ -528,17 +529,17 @@ PetscErrorCode HylcCalibrateSetFromOptions(HylcCalibrate C)
   PetscCall(PetscOptionsInt("-calibrate_n2", "Samples per axis of a 2D term (table target)", "HylcCalibrateSetSampleCounts", n2, &n2, NULL));
   PetscCall(PetscOptionsInt("-calibrate_stride", "File target: keep every stride-th row of each term", "HylcCalibrateSetThinning", stride, &stride, NULL));
   PetscCall(PetscOptionsInt("-calibrate_max_samples", "File target: at most this many rows (thinned evenly within each term; 0: all)", "HylcCalibrateSetThinning", maxSamples, &maxSamples, NULL));
-  PetscCall(PetscOptionsReal("-calibrate_weight_zero", "Weight of the relative error of Psi at the base strain (the constant)", "HylcCalibrateSetTermWeight", wzero, &wzero, NULL));
+  PetscCall(HylcOptionsReal("-calibrate_weight_zero", "Weight of the relative error of Psi at the base strain (the constant)", "HylcCalibrateSetTermWeight", wzero, &wzero, NULL));
   PetscCall(PetscOptionsString("-calibrate_weights", "Weights of terms, a comma list term=weight (e.g. sx=2,sa-sy=0.5; default 1 each; 'other' for file rows off the plan's axes)", "HylcCalibrateSetTermWeight", weights, weights, sizeof(weights), NULL));
   PetscCall(PetscOptionsEnum("-calibrate_start", "How each evaluation's samples are solved: auto (as the target was made: a samples file's own start; cold for a table, raw data or CSV), continue (each 1D term's half-line from zero outward, as hylc-sample) or cold (every sample from the reference state, the paper's procedure)", "HylcCalibrateSetStart", HylcCalibrateStarts, start, &start, NULL));
   PetscCall(PetscOptionsInt("-calibrate_max_it", "Levenberg-Marquardt: at most this many iterations (accepted steps)", "HylcCalibrateSetMaxIterations", maxIt, &maxIt, NULL));
   PetscCall(PetscOptionsInt("-calibrate_max_reject", "Levenberg-Marquardt: stop after this many rejected trial steps in a row", "HylcCalibrateSetLevenbergMarquardt", maxReject, &maxReject, NULL));
-  PetscCall(PetscOptionsReal("-calibrate_lambda", "Levenberg-Marquardt: initial damping (relative to the diagonal of J^T J)", "HylcCalibrateSetLevenbergMarquardt", lambda0, &lambda0, NULL));
-  PetscCall(PetscOptionsReal("-calibrate_xtol", "Stop when an accepted step changes every log parameter by less than this", "HylcCalibrateSetTolerances", xtol, &xtol, NULL));
-  PetscCall(PetscOptionsReal("-calibrate_ftol", "Stop when an accepted step decreases the objective by less than this fraction", "HylcCalibrateSetTolerances", ftol, &ftol, NULL));
-  PetscCall(PetscOptionsReal("-calibrate_fatol", "Stop when the objective is below this", "HylcCalibrateSetTolerances", fatol, &fatol, NULL));
-  PetscCall(PetscOptionsReal("-calibrate_flat_tol", "A direction of the log parameters along which the normalised residuals change by less than this per unit (a singular value of the Jacobian) is flat: its parameter is held and reported", "HylcCalibrateSetTolerances", flatTol, &flatTol, NULL));
-  PetscCall(PetscOptionsEnum("-calibrate_reference", "Reference state: auto (compute it once with the initial parameters for a generated pattern; a .pyp file is its own), compute, none", "HylcCalibrateSetReference", HylcReferenceModes, rm, &rm, NULL));
+  PetscCall(HylcOptionsReal("-calibrate_lambda", "Levenberg-Marquardt: initial damping (relative to the diagonal of J^T J)", "HylcCalibrateSetLevenbergMarquardt", lambda0, &lambda0, NULL));
+  PetscCall(HylcOptionsReal("-calibrate_xtol", "Stop when an accepted step changes every log parameter by less than this", "HylcCalibrateSetTolerances", xtol, &xtol, NULL));
+  PetscCall(HylcOptionsReal("-calibrate_ftol", "Stop when an accepted step decreases the objective by less than this fraction", "HylcCalibrateSetTolerances", ftol, &ftol, NULL));
+  PetscCall(HylcOptionsReal("-calibrate_fatol", "Stop when the objective is below this", "HylcCalibrateSetTolerances", fatol, &fatol, NULL));
+  PetscCall(HylcOptionsReal("-calibrate_flat_tol", "A direction of the log parameters along which the normalised residuals change by less than this per unit (a singular value of the Jacobian) is flat: its parameter is held and reported", "HylcCalibrateSetTolerances", flatTol, &flatTol, NULL));
+  PetscCall(PetscOptionsEnum("-calibrate_reference", "Reference state: auto (compute it once with the initial parameters for a generated pattern; a .pyp file is its own), compute, none, or relax (only the in-plane minimum over the periods of the pattern as given)", "HylcCalibrateSetReference", HylcReferenceModes, rm, &rm, NULL));
   PetscCall(PetscOptionsName("-calibrate_view", "Print the set-up at the end of HylcCalibrateSetUp()", "HylcCalibrateView", NULL));
   PetscOptionsEnd();
   PetscCall(HylcCalibrateSetPlanRanges(C, &ranges));
@@ -583,7 +584,7 @@ PetscErrorCode HylcCalibrateSetFromOptions(HylcCalibrate C)
       PetscCheck(eq, comm, PETSC_ERR_USER_INPUT, "-calibrate_weights: '%s' is not term=weight", tok);
       *eq = 0;
       v   = strtod(eq + 1, &end);
-      PetscCheck(end != eq + 1 && !*end && v >= 0, comm, PETSC_ERR_USER_INPUT, "-calibrate_weights: the weight of %s must be a number >= 0, got '%s'", tok, eq + 1);
+      PetscCheck(end != eq + 1 && !*end && v >= 0 && !PetscIsInfOrNanReal(v), comm, PETSC_ERR_USER_INPUT, "-calibrate_weights: the weight of %s must be a finite number >= 0, got '%s'", tok, eq + 1);
       PetscCheck(strcmp(tok, "zero"), comm, PETSC_ERR_USER_INPUT, "-calibrate_weights: unknown term '%s' (use sx, sa, sy, II00, II11, a 2D term such as sx-sa, or other; the constant's is -calibrate_weight_zero)", tok);
       PetscCall(HylcCalibrateSetTermWeight(C, tok, v));
     }

@@ -2,6 +2,7 @@
    samples.h5, the paper's raw data.txt or a CSV) and the list of samples (docs/calibrate.md). */
 #include "calibrateimpl.h"
 #include <hylc/samples.h>
+#include <hylc/table.h>
 #include <hdf5.h>
 #include <ctype.h>
 #include <errno.h>
@@ -28,193 +29,166 @@ static PetscInt Classify(const PetscReal z[6])
   return HYLC_CALIB_OTHER;
 }
 
-/* growable row arrays (rank 0) */
-typedef struct {
-  PetscInt   n, cap;
-  PetscReal *z, *psi;
-  PetscInt  *term;
-} Rows;
-
-static PetscErrorCode RowsAdd(Rows *R, const PetscReal z[6], PetscReal psi, PetscInt term)
+/* rows of a file target (rank 0): strain, energy, term and where the row is in the file */
+static PetscErrorCode RowsAdd(HylcCalibRows *R, const PetscReal z[6], PetscReal psi, PetscInt term, PetscInt line)
 {
   PetscFunctionBegin;
   if (R->n == R->cap) {
-    PetscInt   cap = R->cap ? 2 * R->cap : 256;
-    PetscReal *nz, *np;
-    PetscInt  *nt;
-    PetscCall(PetscMalloc3(6 * cap, &nz, cap, &np, cap, &nt));
-    if (R->n) {
-      PetscCall(PetscArraycpy(nz, R->z, 6 * R->n));
-      PetscCall(PetscArraycpy(np, R->psi, R->n));
-      PetscCall(PetscArraycpy(nt, R->term, R->n));
-    }
-    PetscCall(PetscFree3(R->z, R->psi, R->term));
-    R->z    = nz;
-    R->psi  = np;
-    R->term = nt;
-    R->cap  = cap;
+    PetscInt cap = R->cap ? 2 * R->cap : 256;
+    PetscCheck(R->cap <= PETSC_MAX_INT / 12, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "More than %" PetscInt_FMT " target rows", R->cap);
+    PetscCall(PetscRealloc(sizeof(PetscReal) * 6 * (size_t)cap, &R->z));
+    PetscCall(PetscRealloc(sizeof(PetscReal) * (size_t)cap, &R->psi));
+    PetscCall(PetscRealloc(sizeof(PetscInt) * (size_t)cap, &R->term));
+    PetscCall(PetscRealloc(sizeof(PetscInt) * (size_t)cap, &R->line));
+    R->cap = cap;
   }
   for (int i = 0; i < 6; i++) R->z[6 * R->n + i] = z[i];
   R->psi[R->n]  = psi;
   R->term[R->n] = term;
+  R->line[R->n] = line;
   R->n++;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static char *Trim(char *s)
+PetscErrorCode HylcCalibRowsDestroy_Private(HylcCalibRows *R)
 {
-  char *e;
-  while (isspace((unsigned char)*s)) s++;
-  e = s + strlen(s);
-  while (e > s && isspace((unsigned char)e[-1])) *--e = 0;
-  return s;
-}
-
-/* the paper's raw data.txt: rows "sx sa sy II00 II01 II11 Psi" */
-static PetscErrorCode ReadRaw(const char path[], Rows *R)
-{
-  FILE *fp = fopen(path, "r");
-  char  line[4096];
-  long  ln = 0;
-
   PetscFunctionBegin;
-  PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot open the target %s: %s", path, strerror(errno));
-  while (fgets(line, sizeof(line), fp)) {
-    char     *s = Trim(line), *end;
-    PetscReal v[7], z[6];
-    int       k = 0;
-    ln++;
-    if (!*s || *s == '#') continue;
-    for (; k < 7; k++) {
-      v[k] = strtod(s, &end);
-      if (end == s) break;
-      s = end;
-    }
-    if (k < 7 || *Trim(s)) {
-      fclose(fp);
-      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_READ, "%s:%ld: expected 7 numbers \"sx sa sy II00 II01 II11 Psi\" (the paper's raw data.txt)", path, ln);
-    }
-    for (int i = 0; i < 6; i++) z[i] = v[i];
-    PetscCall(RowsAdd(R, z, v[6], Classify(z)));
-  }
-  fclose(fp);
+  PetscCall(PetscFree(R->z));
+  PetscCall(PetscFree(R->psi));
+  PetscCall(PetscFree(R->term));
+  PetscCall(PetscFree(R->line));
+  R->n = R->cap = 0;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* a CSV with a header line naming (at least) sx, sa, sy, II00, II01, II11, psi in any order */
-static PetscErrorCode ReadCSV(const char path[], Rows *R)
+/* a CSV with a header line naming (at least) sx, sa, sy, II00, II01, II11, psi in any order, or the paper's
+   raw data.txt (rows "sx sa sy II00 II01 II11 Psi"): the one table reader (include/hylc/table.h) */
+static PetscErrorCode ReadText(const char path[], HylcCalibTargetType kind, HylcCalibRows *R)
 {
-  static const char *names[7] = {"sx", "sa", "sy", "II00", "II01", "II11", "psi"};
-  FILE              *fp       = fopen(path, "r");
-  char               line[8192];
-  long               ln = 0;
-  int                col[7], ncol = 0, header = 0;
+  const HylcTableSpec spec = {kind == HYLC_CALIB_TARGET_CSV ? HYLC_TABLE_CSV : HYLC_TABLE_NUMBERS, 7, HylcTableStrainNames, PETSC_TRUE};
+  HylcTable           T;
+  PetscErrorCode      ierr = PETSC_SUCCESS;
 
   PetscFunctionBegin;
-  PetscCheck(fp, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot open the target %s: %s", path, strerror(errno));
-  for (int i = 0; i < 7; i++) col[i] = -1;
-  while (fgets(line, sizeof(line), fp)) {
-    char *s = Trim(line), *tok, *save = NULL;
-    int   k = 0;
-    ln++;
-    if (!*s || *s == '#') continue;
-    if (!header) {
-      for (tok = strtok_r(s, ",", &save); tok; tok = strtok_r(NULL, ",", &save), k++) {
-        char *name = Trim(tok);
-        for (int i = 0; i < 7; i++)
-          if (!strcasecmp(name, names[i])) col[i] = k;
-      }
-      ncol = k;
-      for (int i = 0; i < 7; i++)
-        if (col[i] < 0) {
-          fclose(fp);
-          SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_READ, "%s:%ld: the header has no column '%s' (needs sx,sa,sy,II00,II01,II11,psi)", path, ln, names[i]);
-        }
-      header = 1;
-      continue;
-    }
-    PetscReal v[7] = {0}, z[6];
-    for (tok = strtok_r(s, ",", &save); tok; tok = strtok_r(NULL, ",", &save), k++) {
-      for (int i = 0; i < 7; i++)
-        if (col[i] == k) {
-          char *t = Trim(tok), *end;
-          v[i]    = strtod(t, &end);
-          if (end == t || *end || PetscIsInfOrNanReal(v[i])) {
-            fclose(fp);
-            SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_READ, "%s:%ld: column %s: '%s' is not a finite number", path, ln, names[i], t);
-          }
-        }
-    }
-    if (k != ncol) {
-      fclose(fp);
-      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_READ, "%s:%ld: %d fields, the header has %d", path, ln, k, ncol);
-    }
-    for (int i = 0; i < 6; i++) z[i] = v[i];
-    PetscCall(RowsAdd(R, z, v[6], Classify(z)));
-  }
-  fclose(fp);
-  PetscCheck(header, PETSC_COMM_SELF, PETSC_ERR_FILE_READ, "%s: empty CSV (needs a header sx,sa,sy,II00,II01,II11,psi and rows)", path);
+  PetscCall(HylcTableReadText(path, "-calibrate_target", &spec, &T));
+  for (PetscInt i = 0; i < T.n && !ierr; i++) ierr = RowsAdd(R, T.v + 7 * i, T.v[7 * i + 6], Classify(T.v + 7 * i), T.line[i]);
+  PetscCall(HylcTableDestroy(&T));
+  PetscCall(ierr);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* samples.h5 of hylc-sample: the converged rows with their terms */
-static PetscErrorCode ReadSamples(const char path[], Rows *R, PetscInt *nskipped, PetscBool *continued)
+/* samples.h5 of hylc-sample: the converged rows with their terms; their strains and energies checked */
+static PetscErrorCode ReadSamples(const char path[], HylcCalibRows *R, PetscInt *nskipped)
 {
   long              n;
   HylcSampleRecord *recs;
   unsigned char    *done;
+  PetscErrorCode    ierr = PETSC_SUCCESS;
 
   PetscFunctionBegin;
+  PetscCall(HylcSamplesCheckHDF5(path, "-calibrate_target"));
   PetscCall(HylcSamplesReadHDF5(path, &n, &recs, &done, NULL));
-  *continued = PETSC_FALSE;
-  for (long k = 0; k < n; k++) {
-    if (done[k] && (recs[k].start == HYLC_SAMPLE_START_CONTINUED || recs[k].start == HYLC_SAMPLE_START_RETRIED)) *continued = PETSC_TRUE;
+  for (long k = 0; k < n; k++)
+    if (done[k] && (recs[k].start == HYLC_SAMPLE_START_CONTINUED || recs[k].start == HYLC_SAMPLE_START_RETRIED)) R->continued = PETSC_TRUE;
+  for (long k = 0; k < n && !ierr; k++) {
+    int         c;
+    const char *why;
     if (!done[k] || recs[k].status != HYLC_MICRO_CONVERGED) {
       (*nskipped)++;
       continue;
     }
-    PetscInt t = recs[k].term >= 0 && recs[k].term < HYLC_PLAN_NTERM ? recs[k].term : Classify(recs[k].z);
-    PetscCall(RowsAdd(R, recs[k].z, recs[k].psi, t));
+    why = HylcStrainDomainError(recs[k].z, &c);
+    if (why) {
+      char num[32]; /* C's %g (PETSc's appends '.' to nan) */
+      snprintf(num, sizeof(num), "%.15g", recs[k].z[c]);
+      ierr = PETSC_ERR_USER_INPUT;
+      (void)PetscError(PETSC_COMM_SELF, __LINE__, PETSC_FUNCTION_NAME, __FILE__, ierr, PETSC_ERROR_INITIAL, "%s: dataset /samples/strain row %ld, column %d (%s) = %s: %s (a converged sample)", path, k, c + 1, HylcTableStrainNames[c], num, why);
+    } else if (PetscIsInfOrNanReal(recs[k].psi)) {
+      char num[32];
+      snprintf(num, sizeof(num), "%g", recs[k].psi);
+      ierr = PETSC_ERR_USER_INPUT;
+      (void)PetscError(PETSC_COMM_SELF, __LINE__, PETSC_FUNCTION_NAME, __FILE__, ierr, PETSC_ERROR_INITIAL, "%s: dataset /samples/psi row %ld: %s is not finite (a converged sample)", path, k, num);
+    } else {
+      PetscInt t = recs[k].term >= 0 && recs[k].term < HYLC_PLAN_NTERM ? recs[k].term : Classify(recs[k].z);
+      PetscCheck(k <= PETSC_MAX_INT, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s: too many rows", path);
+      ierr = RowsAdd(R, recs[k].z, recs[k].psi, t, (PetscInt)k);
+    }
   }
   PetscCall(PetscFree(recs));
   PetscCall(PetscFree(done));
+  PetscCall(ierr);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* rank 0: base row (the first zero strain, else the row nearest 0 in |s|^2 + (r II)^2), then the rows of the
-   terms in file order, thinned */
-static PetscErrorCode SelectRows(HylcCalibrate C, Rows *R, PetscReal radius, Rows *S)
+/* base row (the first zero strain, else the row nearest 0 in |s|^2 + (r II)^2; the first row if every
+   distance overflows), then the rows of the terms in file order, thinned */
+static PetscErrorCode SelectRows(const char path[], HylcCalibRows *R, PetscReal radius, PetscInt stride, PetscInt maxSamples, HylcCalibRows *S, PetscInt *nskipped)
 {
-  PetscInt  base = -1, keep = 0, stride2 = 1, *local;
+  PetscInt  base = -1, keep = 0, stride2 = 1, local[HYLC_CALIB_NTERM];
   PetscReal best = PETSC_MAX_REAL;
 
   PetscFunctionBegin;
-  PetscCheck(R->n > 0, PETSC_COMM_SELF, PETSC_ERR_FILE_READ, "%s: no usable rows (%" PetscInt_FMT " not converged)", C->target, C->nskipped);
+  PetscCheck(R->n > 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s: no usable rows (%" PetscInt_FMT " not converged)", path, *nskipped);
   for (PetscInt i = 0; i < R->n; i++) {
     const PetscReal *z = R->z + 6 * i;
     PetscReal        d = z[0] * z[0] + z[1] * z[1] + z[2] * z[2] + radius * radius * (z[3] * z[3] + 2 * z[4] * z[4] + z[5] * z[5]);
-    if (d < best) {
+    if (base < 0 || d < best) {
       best = d;
       base = i;
     }
   }
-  PetscCall(RowsAdd(S, R->z + 6 * base, R->psi[base], 0));
-  PetscCall(PetscCalloc1(HYLC_CALIB_NTERM, &local));
+  PetscCall(RowsAdd(S, R->z + 6 * base, R->psi[base], 0, R->line[base]));
   for (int pass = 0; pass < 2; pass++) {
     keep = 0;
     for (PetscInt t = 0; t < HYLC_CALIB_NTERM; t++) local[t] = 0;
     for (PetscInt i = 0; i < R->n; i++) {
       if (i == base || R->term[i] == 0) continue;
       const PetscInt j = local[R->term[i]]++;
-      if (j % C->stride || (j / C->stride) % stride2) continue;
-      if (pass) PetscCall(RowsAdd(S, R->z + 6 * i, R->psi[i], R->term[i]));
+      if (j % stride || (j / stride) % stride2) continue;
+      if (pass) PetscCall(RowsAdd(S, R->z + 6 * i, R->psi[i], R->term[i], R->line[i]));
       keep++;
     }
-    if (!pass && C->maxSamples > 0 && keep > C->maxSamples) stride2 = (keep + C->maxSamples - 1) / C->maxSamples;
+    if (!pass && maxSamples > 0 && keep > maxSamples) stride2 = (keep + maxSamples - 1) / maxSamples;
   }
-  PetscCall(PetscFree(local));
-  C->nrows = R->n + C->nskipped;
-  C->nskipped += R->n - 1 - keep;
+  *nskipped += R->n - 1 - keep;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*
+  HylcCalibrateReadFileTarget_Private - rank 0's part of a file target: the rows of a CSV, raw data.txt or
+  samples file (the one table reader: every value finite, strains in the domain), the base row and the
+  rows kept (stride, maxSamples), each selected strain checked against the tile P (NULL: not checked;
+  HylcPeriodicCheckStrain(), the message naming the file and line or row). S holds the selected rows
+  (S->line: the line or row of each); *nrows the usable rows read, *nskipped those not used.
+*/
+PetscErrorCode HylcCalibrateReadFileTarget_Private(const char path[], HylcCalibTargetType kind, PetscReal radius, PetscInt stride, PetscInt maxSamples, HylcPeriodic P, HylcCalibRows *S, PetscInt *nrows, PetscInt *nskipped)
+{
+  HylcCalibRows  R    = {0};
+  PetscErrorCode ierr = PETSC_SUCCESS;
+
+  PetscFunctionBegin;
+  PetscCall(PetscMemzero(S, sizeof(*S)));
+  *nrows = *nskipped = 0;
+  if (kind == HYLC_CALIB_TARGET_SAMPLES)
+    ierr = ReadSamples(path, &R, nskipped);
+  else
+    ierr = ReadText(path, kind, &R);
+  if (!ierr) {
+    *nrows       = R.n + *nskipped;
+    ierr         = SelectRows(path, &R, radius, stride, maxSamples, S, nskipped);
+    S->continued = R.continued;
+  }
+  for (PetscInt i = 0; !ierr && P && i < S->n; i++) {
+    char where[PETSC_MAX_PATH_LEN + 64];
+    if (kind == HYLC_CALIB_TARGET_SAMPLES)
+      snprintf(where, sizeof(where), "%s: dataset /samples/strain row %" PetscInt_FMT, path, S->line[i]);
+    else
+      snprintf(where, sizeof(where), "%s:%" PetscInt_FMT, path, S->line[i]);
+    ierr = HylcPeriodicCheckStrain(P, S->z + 6 * i, where);
+  }
+  PetscCall(HylcCalibRowsDestroy_Private(&R));
+  if (ierr) PetscCall(HylcCalibRowsDestroy_Private(S));
+  PetscCall(ierr);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -353,28 +327,30 @@ PetscErrorCode HylcCalibrateReadTarget_Private(HylcCalibrate C)
   if (kind == HYLC_CALIB_TARGET_TABLE)
     PetscCall(SampleTable(C));
   else {
-    PetscInt head[4] = {0, 0, 0, 0};
+    PetscInt       head[4] = {0, 0, 0, 0};
+    PetscErrorCode ierr    = PETSC_SUCCESS;
     if (!C->rank) {
-      Rows R = {0}, S = {0};
-      if (kind == HYLC_CALIB_TARGET_SAMPLES)
-        PetscCall(ReadSamples(path, &R, &C->nskipped, &C->targetContinued));
-      else if (kind == HYLC_CALIB_TARGET_RAW)
-        PetscCall(ReadRaw(path, &R));
-      else
-        PetscCall(ReadCSV(path, &R));
-      PetscCall(SelectRows(C, &R, radius, &S));
-      PetscCall(PetscFree3(R.z, R.psi, R.term));
-      C->m = S.n;
-      PetscCall(PetscMalloc3(6 * C->m, &C->z, C->m, &C->tpsi, C->m, &C->term));
-      PetscCall(PetscArraycpy(C->z, S.z, 6 * S.n));
-      PetscCall(PetscArraycpy(C->tpsi, S.psi, S.n));
-      PetscCall(PetscArraycpy(C->term, S.term, S.n));
-      PetscCall(PetscFree3(S.z, S.psi, S.term));
-      head[0] = C->m;
-      head[1] = C->nrows;
-      head[2] = C->nskipped;
-      head[3] = C->targetContinued;
+      HylcCalibRows S = {0};
+      HylcPeriodic  P;
+      /* rank 0 reads; its error, if any, is raised on every rank (one line, no rank left waiting) */
+      PetscCall(HylcMicroGetPeriodic(C->micro, &P));
+      PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+      ierr = HylcCalibrateReadFileTarget_Private(path, (HylcCalibTargetType)kind, radius, C->stride, C->maxSamples, P, &S, &C->nrows, &C->nskipped);
+      PetscCall(PetscPopErrorHandler());
+      if (!ierr) {
+        C->m = S.n;
+        PetscCall(PetscMalloc3(6 * C->m, &C->z, C->m, &C->tpsi, C->m, &C->term));
+        PetscCall(PetscArraycpy(C->z, S.z, 6 * S.n));
+        PetscCall(PetscArraycpy(C->tpsi, S.psi, S.n));
+        PetscCall(PetscArraycpy(C->term, S.term, S.n));
+        head[3] = S.continued;
+        PetscCall(HylcCalibRowsDestroy_Private(&S));
+        head[0] = C->m;
+        head[1] = C->nrows;
+        head[2] = C->nskipped;
+      }
     }
+    PetscCall(HylcShareError(comm, ierr));
     PetscCallMPI(MPI_Bcast(head, 4, MPIU_INT, 0, comm));
     C->targetContinued = (PetscBool)head[3];
     if (C->rank) {

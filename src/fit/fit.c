@@ -1,4 +1,5 @@
 /* HylcFit: lifecycle, options, viewer and results of the fitting pipeline (include/hylc/fit.h). */
+#include <hylc/options.h>
 #include <hylc/private/fitimpl.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -22,6 +23,8 @@ static PetscErrorCode FamilyDefaults(HylcFit fit, HylcFitFamily family)
   PetscCall(PetscObjectChangeTypeName((PetscObject)fit, HylcFitFamilies[family]));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+const char *const HylcFitKnotLayouts[] = {"paper", "refined", "HylcFitKnotLayout", "HYLC_FIT_KNOTS_", NULL};
 
 /*@C
   HylcFitCreate - Creates a fit with the constants of method-spec §9.1 (family woven). Not collective.
@@ -47,6 +50,10 @@ PetscErrorCode HylcFitCreate(MPI_Comm comm, HylcFit *out)
   fit->flatTol         = 1e-8;
   fit->endSlope        = 1e-8;
   fit->nk1             = 11;
+  fit->knots           = HYLC_FIT_KNOTS_REFINED;
+  fit->refine          = 3;
+  fit->kernelSpacing   = 1.6;
+  fit->kernelMin       = 6;
   fit->factor1         = 0.95;
   fit->factor2         = 0.9;
   fit->kStretch[0]     = 2;
@@ -153,7 +160,7 @@ static PetscErrorCode KnotPairOption(PetscOptionItems *PetscOptionsObject, HylcF
   PetscBool set;
 
   PetscFunctionBegin;
-  PetscCall(PetscOptionsIntArray(name, help, "HylcFitSetFromOptions", v, &n, &set));
+  PetscCall(HylcOptionsIntArray(name, help, "HylcFitSetFromOptions", v, &n, &set));
   if (set) {
     PetscCheck(n == 2 && v[0] >= 1 && v[1] >= 1 && v[0] + v[1] >= 3, PetscObjectComm((PetscObject)fit), PETSC_ERR_USER_INPUT, "%s needs two knot counts left,right (each >= 1, counting the 0 knot on both sides, at least 2 knots in all)", name);
     k[0] = v[0];
@@ -201,30 +208,38 @@ PetscErrorCode HylcFitSetFromOptions(HylcFit fit)
   PetscCall(PetscOptionsString("-fit_json", "ARCSim-HYLC JSON material file to write", "HylcFitSetOutputs", fit->json, fit->json, sizeof(fit->json), NULL));
   PetscCall(PetscOptionsEnum("-fit_family", "Pattern family: woven and knit share the constants; stockinette: -fit_reg 1e-2 and coarse 2D bending knots (factor 0.3, 2+4 and 3+3)", "HylcFitSetFamily", HylcFitFamilies, family, &family, &set));
   if (set) PetscCall(FamilyDefaults(fit, (HylcFitFamily)family));
-  PetscCall(PetscOptionsReal("-fit_reg", "Quasiconvex marching: minimum outward slope p^x_min in J/m^2 per normalised unit (S28)", "HylcFitSetFromOptions", fit->reg, &fit->reg, NULL));
+  PetscCall(HylcOptionsReal("-fit_reg", "Quasiconvex marching: minimum outward slope p^x_min in J/m^2 per normalised unit (S28)", "HylcFitSetFromOptions", fit->reg, &fit->reg, NULL));
   PetscCall(PetscOptionsBool("-fit_quasiconvex", "Apply the quasiconvex marching (false: the unregularized fits, like rib1_noreg)", "HylcFitSetFromOptions", fit->quasiconvex, &fit->quasiconvex, NULL));
   PetscCall(PetscOptionsEnum("-fit_compat", "paper, or authors: the authors' code's two departures (S42 x-clamp dropped; mv <= -reg on the minimum's row)", "HylcFitSetFromOptions", HylcFitCompats, compat, &compat, NULL));
   PetscCall(PetscOptionsEnum("-fit_monotone_rule", "1D slope limiter: circle (alpha^2 + beta^2 <= 9, the authors') or box (0 <= alpha, beta <= 3)", "HylcFitSetFromOptions", HylcMonotoneRules, rule, &rule, NULL));
-  PetscCall(PetscOptionsReal("-fit_flat_tol", "1D monotone cubic: an interval with |dp| below this gets zero slopes", "HylcFitSetFromOptions", fit->flatTol, &fit->flatTol, NULL));
-  PetscCall(PetscOptionsReal("-fit_end_slope", "Boundary slopes at least this outward (increasing linear extrapolation)", "HylcFitSetFromOptions", fit->endSlope, &fit->endSlope, NULL));
-  PetscCall(PetscOptionsReal("-fit_mls_kernel", "MLS kernel radius as a fraction of the term's data span per axis", "HylcFitSetFromOptions", fit->kernel, &fit->kernel, NULL));
-  PetscCall(PetscOptionsReal("-fit_mls_truncation", "MLS kernel radius / Gaussian sigma (weights are zero beyond the radius)", "HylcFitSetFromOptions", fit->truncation, &fit->truncation, NULL));
-  PetscCall(PetscOptionsReal("-fit_mls_grow", "Where the MLS has too few samples in its kernel (singular), enlarge the kernel by this factor until it has (with a warning); <= 1: error", "HylcFitSetFromOptions", fit->mlsGrow, &fit->mlsGrow, NULL));
+  PetscCall(HylcOptionsReal("-fit_flat_tol", "1D monotone cubic: an interval with |dp| below this gets zero slopes", "HylcFitSetFromOptions", fit->flatTol, &fit->flatTol, NULL));
+  PetscCall(HylcOptionsReal("-fit_end_slope", "Boundary slopes at least this outward (increasing linear extrapolation)", "HylcFitSetFromOptions", fit->endSlope, &fit->endSlope, NULL));
+  PetscCall(HylcOptionsReal("-fit_mls_kernel", "MLS kernel radius as a fraction of the term's data span per axis", "HylcFitSetFromOptions", fit->kernel, &fit->kernel, NULL));
+  PetscCall(HylcOptionsReal("-fit_mls_truncation", "MLS kernel radius / Gaussian sigma (weights are zero beyond the radius)", "HylcFitSetFromOptions", fit->truncation, &fit->truncation, NULL));
+  PetscCall(HylcOptionsReal("-fit_mls_grow", "Where the MLS has too few samples in its kernel (singular), enlarge the kernel by this factor until it has (with a warning); <= 1: error", "HylcFitSetFromOptions", fit->mlsGrow, &fit->mlsGrow, NULL));
   PetscCall(PetscOptionsBool("-fit_symmetrize_sa", "Symmetrize the MLS in sa: g(u) = (g(u) + g(-u)) / 2 in symlog space", "HylcFitSetFromOptions", fit->symmetrize, &fit->symmetrize, NULL));
-  PetscCall(PetscOptionsReal("-fit_fd_eps", "Width of the central differences for the Hermite slopes (points at +-half of it), as a fraction of the smallest knot spacing", "HylcFitSetFromOptions", fit->fdEps, &fit->fdEps, NULL));
-  PetscCall(PetscOptionsInt("-fit_knots1d", "Knots of a 1D term", "HylcFitSetFromOptions", fit->nk1, &fit->nk1, NULL));
-  PetscCall(PetscOptionsReal("-fit_knots1d_factor", "1D knots span factor x [min, max] of the data (then shifted so that 0 is a knot)", "HylcFitSetFromOptions", fit->factor1, &fit->factor1, NULL));
-  PetscCall(PetscOptionsReal("-fit_knots2d_factor", "2D knots span factor x [min, 0] and [0, max] of the data", "HylcFitSetFromOptions", fit->factor2, &fit->factor2, NULL));
+  PetscCall(HylcOptionsReal("-fit_fd_eps", "Width of the central differences for the Hermite slopes (points at +-half of it), as a fraction of the smallest knot spacing", "HylcFitSetFromOptions", fit->fdEps, &fit->fdEps, NULL));
+  {
+    PetscEnum layout = (PetscEnum)fit->knots;
+    PetscCall(PetscOptionsEnum("-fit_knots", "1D knot layout: refined (the paper's, with -fit_knots_refine more knots towards 0 whose MLS kernels follow the knot spacing: resolves small strains) or paper (the authors' uniform layout; implied by -fit_compat authors)", "HylcFitSetFromOptions", HylcFitKnotLayouts, layout, &layout, &fit->knotsSet));
+    fit->knots = (HylcFitKnotLayout)layout;
+  }
+  PetscCall(PetscOptionsInt("-fit_knots_refine", "Refined knots: knots added at h/2, h/4, ... of the first interval on each side of 0", "HylcFitSetFromOptions", fit->refine, &fit->refine, NULL));
+  PetscCall(HylcOptionsReal("-fit_knots_kernel_spacing", "Refined knots: MLS kernel radius of an added knot as a multiple of its distance from 0 (at most -fit_mls_kernel of the span)", "HylcFitSetFromOptions", fit->kernelSpacing, &fit->kernelSpacing, NULL));
+  PetscCall(PetscOptionsInt("-fit_knots_kernel_samples", "Refined knots: the MLS kernel of an added knot is widened until it holds this many samples", "HylcFitSetFromOptions", fit->kernelMin, &fit->kernelMin, NULL));
+  PetscCall(PetscOptionsInt("-fit_knots1d", "Knots of a 1D term in the paper's layout (refined: before the refinement)", "HylcFitSetFromOptions", fit->nk1, &fit->nk1, NULL));
+  PetscCall(HylcOptionsReal("-fit_knots1d_factor", "1D knots span factor x [min, max] of the data (then shifted so that 0 is a knot)", "HylcFitSetFromOptions", fit->factor1, &fit->factor1, NULL));
+  PetscCall(HylcOptionsReal("-fit_knots2d_factor", "2D knots span factor x [min, 0] and [0, max] of the data", "HylcFitSetFromOptions", fit->factor2, &fit->factor2, NULL));
   PetscCall(KnotPairOption(PetscOptionsObject, fit, "-fit_knots2d_stretch", "2D knots of an sx or sy axis left,right of 0 (0 counted in both)", fit->kStretch));
   PetscCall(KnotPairOption(PetscOptionsObject, fit, "-fit_knots2d_poisson", "2D knots of each axis of (sx, sy) left,right of 0", fit->kPoisson));
   PetscCall(KnotPairOption(PetscOptionsObject, fit, "-fit_knots2d_symmetric", "2D knots of an sa or bending axis left,right of 0", fit->kSym));
-  PetscCall(PetscOptionsReal("-fit_knots2d_bend_factor", "2D knots span factor of the pairs with a bending axis (stockinette 0.3)", "HylcFitSetFromOptions", fit->factor2bend, &fit->factor2bend, NULL));
+  PetscCall(HylcOptionsReal("-fit_knots2d_bend_factor", "2D knots span factor of the pairs with a bending axis (stockinette 0.3)", "HylcFitSetFromOptions", fit->factor2bend, &fit->factor2bend, NULL));
   PetscCall(KnotPairOption(PetscOptionsObject, fit, "-fit_knots2d_bend_stretch", "Knots of the sx or sy axis of a bending pair (stockinette 2,4)", fit->kBendStretch));
   PetscCall(KnotPairOption(PetscOptionsObject, fit, "-fit_knots2d_bend_symmetric", "Knots of the sa or bending axis of a bending pair (stockinette 3,3)", fit->kBendSym));
   PetscCall(PetscOptionsBool("-fit_zero_compression", "Zero the 2D residuals where sx or sy < 0 (not (sx, sy))", "HylcFitSetFromOptions", fit->zeroCompression, &fit->zeroCompression, NULL));
   PetscCall(PetscOptionsBool("-fit_zero_compression_strict", "Also zero muv on the axis bordering the compressed nodes, so the residual vanishes on the whole compressed half-plane", "HylcFitSetFromOptions", fit->zeroStrict, &fit->zeroStrict, NULL));
-  PetscCall(PetscOptionsReal("-fit_density", "Area density of the material in kg/m^2 (> 0 overrides the input's)", "HylcFitSetFromOptions", fit->density, &fit->density, NULL));
-  PetscCall(PetscOptionsReal("-fit_yarn_density", "Yarn density in kg/m^3 for the area density rho pi r^2 L / (px py) of a samples file (<= 0: 0.12 kg/m^2 / r, i.e. 120 kg/m^3 at r = 1 mm, the paper's tables)", "HylcFitSetFromOptions", fit->yarnDensity, &fit->yarnDensity, NULL));
+  PetscCall(HylcOptionsReal("-fit_density", "Area density of the material in kg/m^2 (> 0 overrides the input's)", "HylcFitSetFromOptions", fit->density, &fit->density, NULL));
+  PetscCall(HylcOptionsReal("-fit_yarn_density", "Yarn density in kg/m^3 for the area density rho pi r^2 L / (px py) of a samples file (<= 0: 0.12 kg/m^2 / r, i.e. 120 kg/m^3 at r = 1 mm, the paper's tables)", "HylcFitSetFromOptions", fit->yarnDensity, &fit->yarnDensity, NULL));
   PetscCall(PetscOptionsInt("-fit_raw_n1", "Raw data.txt: rows per 1D block (0: the leading run of sx-only rows)", "HylcFitSetFromOptions", fit->rawN1, &fit->rawN1, NULL));
   PetscCall(PetscOptionsInt("-fit_raw_n2", "Raw data.txt: grid size per axis of a 2D block (0: from the row count)", "HylcFitSetFromOptions", fit->rawN2, &fit->rawN2, NULL));
   PetscCall(PetscOptionsInt("-fit_min_samples_1d", "A 1D term with fewer samples (but some) is an error", "HylcFitSetFromOptions", fit->min1, &fit->min1, NULL));
@@ -232,7 +247,11 @@ PetscErrorCode HylcFitSetFromOptions(HylcFit fit)
   PetscCall(PetscOptionsString("-fit_terms", "Terms to fit: all, or a comma list of sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11", "HylcFitSetFromOptions", terms, terms, sizeof(terms), NULL));
   PetscOptionsEnd();
   fit->compat = (HylcFitCompat)compat;
-  fit->rule   = (HylcMonotoneRule)rule;
+  PetscCheck(!(fit->compat == HYLC_FIT_COMPAT_AUTHORS && fit->knotsSet && fit->knots != HYLC_FIT_KNOTS_PAPER), comm, PETSC_ERR_USER_INPUT, "-fit_compat authors reproduces the authors' fits, whose knots are the paper's layout: drop -fit_knots %s", HylcFitKnotLayouts[fit->knots]);
+  if (fit->compat == HYLC_FIT_COMPAT_AUTHORS) fit->knots = HYLC_FIT_KNOTS_PAPER;
+  PetscCheck(fit->refine >= 0 && fit->refine <= 20, comm, PETSC_ERR_USER_INPUT, "-fit_knots_refine %" PetscInt_FMT " must be in 0..20", fit->refine);
+  PetscCheck(fit->kernelSpacing > 0 && fit->kernelMin >= 3, comm, PETSC_ERR_USER_INPUT, "-fit_knots_kernel_spacing must be > 0 and -fit_knots_kernel_samples >= 3");
+  fit->rule = (HylcMonotoneRule)rule;
   PetscCheck(fit->reg >= 0, comm, PETSC_ERR_USER_INPUT, "-fit_reg %g must be >= 0", (double)fit->reg);
   PetscCheck(fit->kernel > 0 && fit->kernel <= 1, comm, PETSC_ERR_USER_INPUT, "-fit_mls_kernel %g must be in (0, 1]", (double)fit->kernel);
   PetscCheck(fit->truncation > 0, comm, PETSC_ERR_USER_INPUT, "-fit_mls_truncation %g must be > 0", (double)fit->truncation);
@@ -416,6 +435,42 @@ PetscErrorCode HylcFitGetTermStats(HylcFit fit, PetscInt t, PetscInt *n, PetscRe
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+const PetscReal HylcFitBandLimits[2][2] = {{0.05, 0.2}, {20, 80}};
+
+/*@C
+  HylcFitGetTermBandStats - The fit's relative error against its data in three strain bands (where cloth
+  lives, moderate, large): a sample is in band 0 if every strain of its term is small (|s| <= 0.05 for sx,
+  sa, sy; |II| <= 20 1/m), in band 1 if none exceeds 0.2 (80 1/m), else in band 2. Per band, the number of
+  samples and the RMS of (model - data) over the RMS of (data - f0) there, so that a term whose energy is
+  small where cloth lives is judged there and not by its largest values.
+
+  Not collective
+
+  Input Parameters:
++ fit - the fit, computed
+- t   - the term (1..14)
+
+  Output Parameters:
++ n   - samples per band (may be NULL)
+- rel - the relative error per band (0 for an empty band; may be NULL)
+
+  Level: intermediate
+
+.seealso: HylcFitGetTermStats()
+@*/
+PetscErrorCode HylcFitGetTermBandStats(HylcFit fit, PetscInt t, PetscInt n[HYLC_FIT_NBAND], PetscReal rel[HYLC_FIT_NBAND])
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(fit, HYLC_FIT_CLASSID, 1);
+  PetscCheck(fit->computed, PetscObjectComm((PetscObject)fit), PETSC_ERR_ARG_WRONGSTATE, "Call HylcFitCompute() first");
+  PetscCheck(t >= 1 && t < HYLC_PLAN_NTERM, PetscObjectComm((PetscObject)fit), PETSC_ERR_ARG_OUTOFRANGE, "term %" PetscInt_FMT " (valid 1..14)", t);
+  for (int b = 0; b < HYLC_FIT_NBAND; b++) {
+    if (n) n[b] = fit->has[t] ? fit->statBandN[t][b] : 0;
+    if (rel) rel[b] = fit->has[t] ? fit->statBandRel[t][b] : 0;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* C-library formatting (PETSc's printf turns %g of 3.0 into "3."): a line on the viewer, a string */
 static PetscErrorCode Line(PetscViewer viewer, const char fmt[], ...)
 {
@@ -443,7 +498,9 @@ static PetscErrorCode Fmt(char buf[], size_t size, const char fmt[], ...)
 
 /*@C
   HylcFitView - Prints the settings and, after HylcFitCompute, f0, the strain scale, the area density
-  and per term: knots, data range, samples and the RMS residual of the model against the data.
+  and per term: knots, data range, samples and the RMS residual of the model against the data, and the
+  relative error by strain band (HylcFitGetTermBandStats(): small |s| <= 5 %, |II| <= 20 1/m; moderate
+  up to 20 %, 80 1/m; large).
   Not collective (prints on the object's communicator).
 @*/
 PetscErrorCode HylcFitView(HylcFit fit, PetscViewer viewer)
@@ -459,6 +516,10 @@ PetscErrorCode HylcFitView(HylcFit fit, PetscViewer viewer)
   PetscCall(PetscViewerASCIIPushTab(viewer));
   PetscCall(Line(viewer, "input: %s\n", fit->source[0] ? fit->source : (fit->input[0] ? fit->input : "(none)")));
   PetscCall(Line(viewer, "reg %g%s, compat %s, MLS kernel %g of the span (sigma = kernel/%g), FD width %g of the knot spacing\n", (double)fit->reg, fit->quasiconvex ? "" : " (marching off)", HylcFitCompats[fit->compat], (double)fit->kernel, (double)fit->truncation, (double)fit->fdEps));
+  if (fit->knots == HYLC_FIT_KNOTS_REFINED)
+    PetscCall(Line(viewer, "1D knots: the paper's, refined towards 0 by %" PetscInt_FMT " more on each side (h/2 ... h/%d), their MLS kernels %g x the distance from 0, at least %" PetscInt_FMT " samples, at most the paper's\n", fit->refine, 1 << (int)fit->refine, (double)fit->kernelSpacing, fit->kernelMin));
+  else
+    PetscCall(Line(viewer, "1D knots: the paper's uniform layout\n"));
   PetscCall(Line(viewer, "knots: 1D %" PetscInt_FMT " x %g; 2D factor %g (bending pairs %g), stretch %" PetscInt_FMT "+%" PetscInt_FMT ", poisson %" PetscInt_FMT "+%" PetscInt_FMT ", symmetric %" PetscInt_FMT "+%" PetscInt_FMT ", bending pairs %" PetscInt_FMT "+%" PetscInt_FMT " / %" PetscInt_FMT "+%" PetscInt_FMT "\n", fit->nk1, (double)fit->factor1, (double)fit->factor2,
                  (double)fit->factor2bend, fit->kStretch[0], fit->kStretch[1], fit->kPoisson[0], fit->kPoisson[1], fit->kSym[0], fit->kSym[1], fit->kBendStretch[0], fit->kBendStretch[1], fit->kBendSym[0], fit->kBendSym[1]));
   if (fit->setupcalled) {
@@ -486,6 +547,16 @@ PetscErrorCode HylcFitView(HylcFit fit, PetscViewer viewer)
         PetscCall(Fmt(range, sizeof(range), "%s in [%.4g, %.4g], %s in [%.4g, %.4g]", HylcPlanTermName(1 + ci), (double)fit->statMin[t][0], (double)fit->statMax[t][0], HylcPlanTermName(1 + cj), (double)fit->statMin[t][1], (double)fit->statMax[t][1]));
       }
       PetscCall(Line(viewer, "%-8s %-11s %5" PetscInt_FMT " samples, %s; RMS residual %.3g J/m^2 (%.3g%% of max |psi - f0| %.3g)\n", HylcPlanTermName(t), knots, fit->statN[t], range, (double)fit->statRms[t], fit->statRange[t] > 0 ? (double)(100 * fit->statRms[t] / fit->statRange[t]) : 0.0, (double)fit->statRange[t]));
+      {
+        char bands[3][48];
+        for (int b = 0; b < HYLC_FIT_NBAND; b++) {
+          if (fit->statBandN[t][b])
+            PetscCall(Fmt(bands[b], sizeof(bands[b]), "%.3g%% (%" PetscInt_FMT ")", (double)(100 * fit->statBandRel[t][b]), fit->statBandN[t][b]));
+          else
+            PetscCall(Fmt(bands[b], sizeof(bands[b]), "-"));
+        }
+        PetscCall(Line(viewer, "%-8s relative error of psi - f0 by band (samples): small %s, moderate %s, large %s\n", "", bands[0], bands[1], bands[2]));
+      }
     }
   }
   PetscCall(PetscViewerASCIIPopTab(viewer));

@@ -2,6 +2,7 @@
    (data.txt, info.txt; ../shared/docs/formats.md §5). */
 #include <hylc/private/fitimpl.h>
 #include <hylc/samples.h>
+#include <hylc/table.h>
 #include <hdf5.h>
 #include <sys/stat.h>
 #include <stdio.h>
@@ -76,83 +77,6 @@ static PetscErrorCode ReadReference(HylcFit fit, const char path[])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The datasets of /samples that HylcSamplesReadHDF5 reads, each checked by name, rank, shape and type
-   before it is read: a missing or misshapen dataset is a one-line error naming the file and the
-   dataset (HDF5's own error stack printing is off around these probes). The row count N is that of
-   /samples/strain (N x 6); every other dataset must have N rows. */
-static PetscErrorCode CheckSamplesDatasets(HylcFit fit, const char path[])
-{
-  static const struct {
-    const char *name;
-    int         cols; /* 0: a vector of N */
-    H5T_class_t cls;
-  } sets[] = {
-      {"strain", 6, H5T_FLOAT},
-      {"psi", 0, H5T_FLOAT},
-      {"energy_parts", 4, H5T_FLOAT},
-      {"residual", 0, H5T_FLOAT},
-      {"constraint_residual", 0, H5T_FLOAT},
-      {"time", 0, H5T_FLOAT},
-      {"term", 0, H5T_INTEGER},
-      {"status", 0, H5T_INTEGER},
-      {"iterations", 0, H5T_INTEGER},
-      {"retries", 0, H5T_INTEGER}};
-  MPI_Comm    comm = PetscObjectComm((PetscObject)fit);
-  H5E_auto2_t efunc;
-  void       *edata;
-  hid_t       file;
-  hsize_t     N                             = 0;
-  char        msg[PETSC_MAX_PATH_LEN + 256] = "";
-
-  PetscFunctionBegin;
-  H5Eget_auto2(H5E_DEFAULT, &efunc, &edata);
-  H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
-  file = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
-  if (file < 0)
-    snprintf(msg, sizeof(msg), "Cannot open the samples file %s (-fit_input) as HDF5", path);
-  else if (H5Lexists(file, "samples", H5P_DEFAULT) <= 0)
-    snprintf(msg, sizeof(msg), "%s (-fit_input): no group /samples (not a samples file of hylc-sample)", path);
-  for (size_t k = 0; file >= 0 && !msg[0] && k < sizeof(sets) / sizeof(sets[0]); k++) {
-    char    name[64];
-    hid_t   d, sp, ty;
-    hsize_t dims[3] = {0, 0, 0};
-    int     rank    = -1;
-    snprintf(name, sizeof(name), "samples/%s", sets[k].name);
-    if (H5Lexists(file, name, H5P_DEFAULT) <= 0) {
-      snprintf(msg, sizeof(msg), "%s (-fit_input): no dataset /%s", path, name);
-      break;
-    }
-    d = H5Dopen2(file, name, H5P_DEFAULT);
-    if (d < 0) {
-      snprintf(msg, sizeof(msg), "%s (-fit_input): /%s is not a dataset", path, name);
-      break;
-    }
-    sp = H5Dget_space(d);
-    ty = H5Dget_type(d);
-    if (sp >= 0) rank = H5Sget_simple_extent_ndims(sp);
-    if (rank >= 1 && rank <= 3) H5Sget_simple_extent_dims(sp, dims, NULL);
-    if (k == 0) N = dims[0];
-    if (rank != (sets[k].cols ? 2 : 1) || dims[0] != N || (sets[k].cols && dims[1] != (hsize_t)sets[k].cols)) {
-      char shape[64] = "";
-      for (int i = 0; i < rank && i < 3; i++) snprintf(shape + strlen(shape), sizeof(shape) - strlen(shape), "%s%llu", i ? " x " : "", (unsigned long long)dims[i]);
-      if (sets[k].cols)
-        snprintf(msg, sizeof(msg), "%s (-fit_input): dataset /%s has shape (%s), expected (N x %d)%s", path, name, rank > 0 ? shape : "scalar", sets[k].cols, k ? " with N the rows of /samples/strain" : "");
-      else
-        snprintf(msg, sizeof(msg), "%s (-fit_input): dataset /%s has shape (%s), expected (%llu): one row per row of /samples/strain", path, name, rank > 0 ? shape : "scalar", (unsigned long long)N);
-    } else if (ty < 0 || H5Tget_class(ty) != sets[k].cls)
-      snprintf(msg, sizeof(msg), "%s (-fit_input): dataset /%s holds %s, expected %s", path, name, ty >= 0 && H5Tget_class(ty) == H5T_INTEGER ? "integers" : ty >= 0 && H5Tget_class(ty) == H5T_FLOAT ? "floating-point numbers"
-                                                                                                                                                                                                      : "values of another type",
-               sets[k].cls == H5T_FLOAT ? "floating-point numbers" : "integers");
-    if (ty >= 0) H5Tclose(ty);
-    if (sp >= 0) H5Sclose(sp);
-    H5Dclose(d);
-  }
-  if (file >= 0) H5Fclose(file);
-  H5Eset_auto2(H5E_DEFAULT, efunc, edata);
-  PetscCheck(!msg[0], comm, PETSC_ERR_FILE_UNEXPECTED, "%s", msg);
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 static PetscErrorCode ReadSamplesHDF5(HylcFit fit, const char path[])
 {
   long              N;
@@ -162,7 +86,8 @@ static PetscErrorCode ReadSamplesHDF5(HylcFit fit, const char path[])
   MPI_Comm          comm = PetscObjectComm((PetscObject)fit);
 
   PetscFunctionBegin;
-  PetscCall(CheckSamplesDatasets(fit, path));
+  /* every dataset checked (kind, class, shape, declared size) before it is read: one line naming it */
+  PetscCall(HylcSamplesCheckHDF5(path, "-fit_input"));
   PetscCall(HylcSamplesReadHDF5(path, &N, &recs, &done, NULL));
   PetscCall(PetscMalloc4(6 * N + 1, &fit->z, N + 1, &fit->psi, N + 1, &fit->term, N + 1, &fit->row));
   fit->nrows = (PetscInt)N;
@@ -175,7 +100,25 @@ static PetscErrorCode ReadSamplesHDF5(HylcFit fit, const char path[])
       fit->nskipped++;
       continue;
     }
-    PetscCheck(r->term >= 0 && r->term < HYLC_PLAN_NTERM, comm, PETSC_ERR_FILE_UNEXPECTED, "%s: /samples/term of row %ld is %d (valid: 0..14)", path, k, r->term);
+    if (!(r->term >= 0 && r->term < HYLC_PLAN_NTERM)) {
+      PetscCall(PetscFree(recs));
+      PetscCall(PetscFree(done));
+      SETERRQ(comm, PETSC_ERR_FILE_UNEXPECTED, "%s: /samples/term of row %ld is %d (valid: 0..14)", path, k, r->term);
+    }
+    {
+      int         c;
+      const char *why = HylcStrainDomainError(r->z, &c);
+      if (why || PetscIsInfOrNanReal(r->psi)) {
+        char text[256]; /* C's %g (PETSc's appends '.' to nan) */
+        if (why)
+          snprintf(text, sizeof(text), "dataset /samples/strain row %ld, column %d (%s) = %.15g: %s", k, c + 1, HylcTableStrainNames[c], (double)r->z[c], why);
+        else
+          snprintf(text, sizeof(text), "dataset /samples/psi row %ld: %g is not finite", k, (double)r->psi);
+        PetscCall(PetscFree(recs));
+        PetscCall(PetscFree(done));
+        SETERRQ(comm, PETSC_ERR_USER_INPUT, "%s: %s (a converged sample, status 0)", path, text);
+      }
+    }
     for (int i = 0; i < 6; i++) fit->z[6 * n + i] = r->z[i];
     fit->psi[n]  = r->psi;
     fit->term[n] = r->term;
@@ -242,66 +185,24 @@ static PetscErrorCode ReadInfo(HylcFit fit, const char path[])
 
 static PetscErrorCode ReadRaw(HylcFit fit, const char data[], const char info[])
 {
-  FILE      *fp   = fopen(data, "r");
-  char      *line = NULL;
-  size_t     cap  = 0;
-  ssize_t    len;
-  PetscInt   n = 0, nalloc = 1024, lineno = 0, *lines;
-  PetscReal *z, *psi;
-  MPI_Comm   comm = PetscObjectComm((PetscObject)fit);
-  PetscInt   n1, n2;
+  PetscInt            n, *lines;
+  PetscReal          *z, *psi;
+  MPI_Comm            comm = PetscObjectComm((PetscObject)fit);
+  PetscInt            n1, n2;
+  HylcTable           T;
+  const HylcTableSpec spec = {HYLC_TABLE_NUMBERS, 7, HylcTableStrainNames, PETSC_TRUE};
 
   PetscFunctionBegin;
-  PetscCheck(fp, comm, PETSC_ERR_FILE_OPEN, "Cannot open %s (-fit_input): %s", data, strerror(errno));
-  PetscCall(PetscMalloc3(6 * nalloc, &z, nalloc, &psi, nalloc, &lines));
-  while ((len = getline(&line, &cap, fp)) >= 0) {
-    double v[8];
-    int    nv = 0;
-    char  *s  = line, *end;
-    lineno++;
-    while (*s == ' ' || *s == '\t') s++;
-    if (*s == '#' || *s == '\n' || *s == '\r' || !*s) continue;
-    for (;;) {
-      while (*s == ' ' || *s == '\t' || *s == ',') s++;
-      if (!*s || *s == '\n' || *s == '\r') break;
-      const double x = strtod(s, &end);
-      if (end == s) {
-        char tok[24];
-        PetscCall(PetscStrncpy(tok, s, sizeof(tok)));
-        tok[strcspn(tok, " \t\r\n")] = 0;
-        fclose(fp);
-        free(line);
-        PetscCall(PetscFree3(z, psi, lines));
-        SETERRQ(comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": not a number: '%s'", data, lineno, tok);
-      }
-      if (nv < 8) v[nv] = x;
-      nv++;
-      s = end;
-    }
-    if (nv != 7) {
-      fclose(fp);
-      free(line);
-      PetscCall(PetscFree3(z, psi, lines));
-      SETERRQ(comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": %d numbers, expected 7 (sx sa sy II00 II01 II11 Psi)", data, lineno, nv);
-    }
-    if (n == nalloc) {
-      PetscReal *z2, *psi2;
-      PetscInt  *l2;
-      PetscCall(PetscMalloc3(12 * nalloc, &z2, 2 * nalloc, &psi2, 2 * nalloc, &l2));
-      PetscCall(PetscArraycpy(z2, z, 6 * n));
-      PetscCall(PetscArraycpy(psi2, psi, n));
-      PetscCall(PetscArraycpy(l2, lines, n));
-      PetscCall(PetscFree3(z, psi, lines));
-      z = z2, psi = psi2, lines = l2;
-      nalloc *= 2;
-    }
-    for (int i = 0; i < 6; i++) z[6 * n + i] = v[i];
-    psi[n]   = v[6];
-    lines[n] = lineno;
-    n++;
+  /* the one table reader: lines of any length, every value a finite number, strains in the domain */
+  PetscCall(HylcTableReadText(data, "-fit_input", &spec, &T));
+  n = T.n;
+  PetscCall(PetscMalloc3(6 * n + 1, &z, n + 1, &psi, n + 1, &lines));
+  for (PetscInt k = 0; k < n; k++) {
+    for (int i = 0; i < 6; i++) z[6 * k + i] = T.v[7 * k + i];
+    psi[k]   = T.v[7 * k + 6];
+    lines[k] = T.line[k];
   }
-  fclose(fp);
-  free(line);
+  PetscCall(HylcTableDestroy(&T));
   /* block sizes: rows = 5 n1 + 9 n2^2, in 64-bit with every product range-checked (an -fit_raw_n2 near
      the int range must not wrap around to a matching count) */
   {

@@ -111,6 +111,26 @@ int HylcFitKnots1D(PetscReal min, PetscReal max, PetscReal factor, PetscInt n, P
   return k;
 }
 
+int HylcFitKnots1DRefined(PetscReal min, PetscReal max, PetscReal factor, PetscInt n, PetscInt levels, PetscReal t[], PetscInt *nt)
+{
+  PetscReal u[1024];
+  PetscInt  m = 0;
+  if (levels < 0 || levels > 20 || n > 1024) return -1;
+  const int k = HylcFitKnots1D(min, max, factor, n, u);
+  if (k < 0) return -1;
+  /* the paper's knots left of 0, the refinement of the first interval on that side, 0, and to the right */
+  for (PetscInt i = 0; i < k; i++) t[m++] = u[i];
+  if (k > 0)
+    for (PetscInt j = 1; j <= levels; j++) t[m++] = u[k - 1] * ldexp(1.0, -(int)j);
+  const int i0 = (int)m;
+  t[m++]       = 0;
+  if (k + 1 < n)
+    for (PetscInt j = levels; j >= 1; j--) t[m++] = u[k + 1] * ldexp(1.0, -(int)j);
+  for (PetscInt i = k + 1; i < n; i++) t[m++] = u[i];
+  *nt = m;
+  return i0;
+}
+
 int HylcFitKnots2D(PetscReal min, PetscReal max, PetscReal factor, PetscInt nl, PetscInt nr, PetscReal t[], PetscInt *nt)
 {
   PetscInt m = 0;

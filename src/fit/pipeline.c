@@ -118,11 +118,12 @@ static void Range(PetscInt n, const PetscReal x[], PetscReal *mn, PetscReal *mx)
 /* Algorithm C6 for the 1D term of coordinate c (term t = 1 + c) */
 static PetscErrorCode Fit1D(HylcFit fit, int c, PetscInt n, const PetscReal u[], const PetscReal l[])
 {
-  const int     t = 1 + c;
-  HylcSpline1D *s = &fit->s1[c];
-  PetscReal     mn, mx, eps, *tk, *p, *m;
-  PetscInt      nk = fit->nk1, i0;
-  GFun          g;
+  const int       t       = 1 + c;
+  HylcSpline1D   *s       = &fit->s1[c];
+  const PetscBool refined = (PetscBool)(fit->knots == HYLC_FIT_KNOTS_REFINED);
+  PetscReal       mn, mx, eps, *tk, *p, *m;
+  PetscInt        nk = fit->nk1 + (refined ? 2 * fit->refine : 0), i0;
+  GFun            g;
 
   PetscFunctionBegin;
   Range(n, u, &mn, &mx);
@@ -130,16 +131,43 @@ static PetscErrorCode Fit1D(HylcFit fit, int c, PetscInt n, const PetscReal u[],
   PetscCall(PetscLogEventBegin(HYLC_FitMLS, fit, 0, 0, 0));
   PetscCall(PetscMalloc3(nk, &tk, nk, &p, nk, &m));
   s->t = tk, s->p = p, s->m = m; /* owned by the fit from here (freed by HylcFitResetResults_Private, also on error) */
-  i0 = HylcFitKnots1D(mn, mx, fit->factor1, nk, tk);
-  PetscCheck(i0 >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "1D knots");
-  eps = fit->fdEps * MinSpacing(nk, tk); /* the width of the central difference: g at t -+ eps/2 */
-  g   = (GFun){n, u, NULL, l, fit->kernel * (mx - mn), 0, fit->truncation, 1, (c == 1 && fit->symmetrize) ? 0 : -1, 0, 1};
+  {
+    PetscReal tp[1024];
+    PetscCheck(fit->nk1 <= 1024, PETSC_COMM_SELF, PETSC_ERR_PLIB, "1D knots");
+    i0 = HylcFitKnots1D(mn, mx, fit->factor1, fit->nk1, tp);
+    PetscCheck(i0 >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "1D knots");
+    eps = fit->fdEps * MinSpacing(fit->nk1, tp); /* the width of the central difference: g at t -+ eps/2 */
+    if (refined) {
+      i0 = HylcFitKnots1DRefined(mn, mx, fit->factor1, fit->nk1, fit->refine, tk, &nk);
+      PetscCheck(i0 >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "1D knots");
+    } else
+      PetscCall(PetscArraycpy(tk, tp, fit->nk1));
+  }
+  g = (GFun){n, u, NULL, l, fit->kernel * (mx - mn), 0, fit->truncation, 1, (c == 1 && fit->symmetrize) ? 0 : -1, 0, 1};
   for (PetscInt i = 0; i < nk; i++) {
-    PetscReal a, b;
+    PetscReal a, b, e = eps;
+    if (refined && PetscAbsInt((int)(i - i0)) <= fit->refine) {
+      /* an added knot or 0: the MLS radius follows the distance from 0 (for 0: of the nearest added knot),
+         widened until it holds kernelMin samples, never wider than the paper's (kernel x the span); the
+         differences for the slope as narrow as the knots around it. The paper's knots keep the paper's
+         kernel and width, so that away from 0 the fit is the paper layout's. */
+      const PetscReal rmax = fit->kernel * (mx - mn);
+      const PetscReal d    = i == i0 ? PetscMax(i0 > 0 ? -tk[i0 - 1] : 0, i0 + 1 < nk ? tk[i0 + 1] : 0) : PetscAbsReal(tk[i]);
+      PetscReal       r    = PetscMin(rmax, fit->kernelSpacing * d);
+      for (;;) {
+        PetscInt cnt = 0;
+        for (PetscInt k = 0; k < n; k++) cnt += PetscAbsReal(u[k] - tk[i]) < r || (c == 1 && fit->symmetrize && PetscAbsReal(u[k] + tk[i]) < r);
+        if (cnt >= fit->kernelMin || r >= rmax) break;
+        r = PetscMin(rmax, 1.25 * r);
+      }
+      g.ku = r;
+      e    = fit->fdEps * PetscMin(i > 0 ? tk[i] - tk[i - 1] : PETSC_MAX_REAL, i + 1 < nk ? tk[i + 1] - tk[i] : PETSC_MAX_REAL);
+    } else
+      g.ku = fit->kernel * (mx - mn);
     PetscCall(G(fit, &g, t, tk[i], 0, &p[i]));
-    PetscCall(G(fit, &g, t, tk[i] + 0.5 * eps, 0, &a));
-    PetscCall(G(fit, &g, t, tk[i] - 0.5 * eps, 0, &b));
-    m[i] = (a - b) / eps;
+    PetscCall(G(fit, &g, t, tk[i] + 0.5 * e, 0, &a));
+    PetscCall(G(fit, &g, t, tk[i] - 0.5 * e, 0, &b));
+    m[i] = (a - b) / e;
   }
   PetscCall(GrowWarning(fit, &g, t, 3 * nk));
   PetscCall(PetscLogEventEnd(HYLC_FitMLS, fit, 0, 0, 0));
@@ -329,10 +357,11 @@ PetscErrorCode HylcFitCompute(HylcFit fit)
   fit->computed = PETSC_TRUE;
   /* statistics of the model against each term's data */
   for (int t = 1; t < HYLC_PLAN_NTERM; t++) {
-    PetscReal ss = 0, rng = 0;
+    PetscReal ss = 0, rng = 0, bss[HYLC_FIT_NBAND] = {0, 0, 0}, bref[HYLC_FIT_NBAND] = {0, 0, 0};
     PetscInt  cnt  = 0;
     int       c[2] = {t - 1, -1};
     if (!fit->has[t]) continue;
+    for (int b = 0; b < HYLC_FIT_NBAND; b++) fit->statBandN[t][b] = 0;
     if (t >= 6) HylcPlanPair(t, &c[0], &c[1]);
     for (int a = 0; a < 2; a++) {
       fit->statMin[t][a] = PETSC_MAX_REAL;
@@ -345,13 +374,20 @@ PetscErrorCode HylcFitCompute(HylcFit fit)
       ss += PetscSqr(f - fit->psi[k]);
       rng = PetscMax(rng, PetscAbsReal(fit->psi[k] - fit->f0));
       cnt++;
+      int band = 0;
       for (int a = 0; a < 2; a++) {
         if (c[a] < 0) continue;
         const PetscReal x  = fit->z[6 * k + HylcPlanStrainIndex(c[a])];
+        const int       kc = c[a] >= 3; /* a curvature */
         fit->statMin[t][a] = PetscMin(fit->statMin[t][a], x);
         fit->statMax[t][a] = PetscMax(fit->statMax[t][a], x);
+        band               = PetscMax(band, PetscAbsReal(x) <= HylcFitBandLimits[kc][0] ? 0 : (PetscAbsReal(x) <= HylcFitBandLimits[kc][1] ? 1 : 2));
       }
+      bss[band] += PetscSqr(f - fit->psi[k]);
+      bref[band] += PetscSqr(fit->psi[k] - fit->f0);
+      fit->statBandN[t][band]++;
     }
+    for (int b = 0; b < HYLC_FIT_NBAND; b++) fit->statBandRel[t][b] = bref[b] > 0 ? PetscSqrtReal(bss[b] / bref[b]) : 0;
     fit->statN[t]     = cnt;
     fit->statRms[t]   = PetscSqrtReal(ss / PetscMax(cnt, 1));
     fit->statRange[t] = rng;

@@ -91,6 +91,8 @@ const char *hylcmat_strerror(int code)
     return "a degenerate deformed triangle or neighbour face (zero area): the strains are undefined";
   case HYLCMAT_ERR_RANGE:
     return "a result beyond the double range";
+  case HYLCMAT_ERR_NOCONV:
+    return "an iterative method did not converge";
   }
   return "unknown error";
 }

@@ -21,3 +21,50 @@ PetscErrorCode HylcMaterialEvaluate(HylcMaterial m, const PetscReal s[6], PetscR
   PetscCheck(!r, PETSC_COMM_SELF, HylcMaterialErrorCode_Private(r), "%s", hylcmat_strerror(r));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+/*@C
+  HylcMaterialUniaxial - The homogeneous uniaxial tension state of the material (hylcmat_uniaxial(),
+  docs/fabric-uniaxial.md): the stretch s along the material x axis (dir 0: sx = s) or y axis (dir 1:
+  sy = s), bending zero, Psi minimized over the two free strains (sa and the other stretch), and
+  T = dPsi/ds there, the force per unit width of a strip in its homogeneous central zone. Not collective;
+  thread-safe; no allocation.
+
+  Input Parameters:
++ m     - the material
+. dir   - 0 (x; HYLC_UNIAXIAL_X of include/hylc/micro.h) or 1 (y)
+. s     - the stretch, in [0, 1) and within the table's range of the stretch's 1D term
+- guess - the starting lateral strains ((sa, sy) for x, (sa, sx) for y), e.g. those of a nearby s on a loading
+          path; NULL: the lowest point of a grid of the lateral strains (hylcmat_uniaxial())
+
+  Output Parameters:
++ T         - dPsi/ds (N/m; may be NULL)
+. lateral   - the lateral strains of the state ((sa, sy) for x, (sa, sx) for y; may be NULL)
+. psi       - Psi there (J/m^2; may be NULL)
+- converged - whether the minimization converged (may be NULL: then not converging is an error,
+              PETSC_ERR_NOT_CONVERGED; otherwise the outputs are the last iterate's)
+
+  Notes:
+  A bad direction or stretch is an error (PETSC_ERR_ARG_OUTOFRANGE) whose message names the value and the
+  allowed range.
+
+  Level: intermediate
+
+.seealso: HylcMaterialEvaluate(), HylcMicroSolveUniaxial()
+@*/
+PetscErrorCode HylcMaterialUniaxial(HylcMaterial m, PetscInt dir, PetscReal s, const PetscReal guess[2], PetscReal *T, PetscReal lateral[2], PetscReal *psi, PetscBool *converged)
+{
+  hylcmat_uniaxial_state st;
+  char                   err[512];
+  int                    r;
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(m, HYLC_MATERIAL_CLASSID, 1);
+  r = hylcmat_uniaxial(m->hm, (int)dir, (double)s, guess, &st, err, sizeof(err));
+  if (converged) *converged = (PetscBool)(r == HYLCMAT_OK);
+  if (r == HYLCMAT_ERR_NOCONV && converged) r = HYLCMAT_OK;
+  PetscCheck(!r, PETSC_COMM_SELF, HylcMaterialErrorCode_Private(r), "%s", err[0] ? err : hylcmat_strerror(r));
+  if (T) *T = st.T;
+  if (lateral) lateral[0] = st.lateral[0], lateral[1] = st.lateral[1];
+  if (psi) *psi = st.psi;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -123,6 +123,8 @@ PetscErrorCode HylcMaterialErrorCode_Private(int code)
     return PETSC_ERR_SUP;
   case HYLCMAT_ERR_HDF5:
     return PETSC_ERR_LIB;
+  case HYLCMAT_ERR_NOCONV:
+    return PETSC_ERR_NOT_CONVERGED;
   default:
     return PETSC_ERR_PLIB;
   }

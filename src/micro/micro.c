@@ -38,6 +38,13 @@ static void ParamsDefault(HylcMicroParams *p)
   p->saddleTest    = PETSC_TRUE;
   p->saddleMax     = 5;
   p->saddleTol     = 1e-6;
+  p->uniGrad       = HYLC_MICRO_UNIAXIAL_ENVELOPE;
+  p->uniXtol       = 1e-5;
+  p->uniMaxIt      = 30;
+  p->uniH          = 1e-4;
+  p->uniMaxStep    = 0.05;
+  p->uniRtol       = 1e-8;
+  p->uniGtol       = 1e-4;
 }
 
 /*@C

@@ -1,5 +1,6 @@
 /* HylcMicro: the parameters, their setters and options (HylcMicroSetFromOptions reads options and builds
    nothing), and the viewer. */
+#include <hylc/options.h>
 #include <hylc/private/microimpl.h>
 
 /*@C
@@ -345,6 +346,101 @@ PetscErrorCode HylcMicroSetSaddleEscape(HylcMicro M, PetscBool test, PetscInt ma
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+const char *const HylcMicroUniaxialGradients[] = {"envelope", "fd", "HylcMicroUniaxialGradient", "HYLC_MICRO_UNIAXIAL_", NULL};
+
+/*@C
+  HylcMicroSetUniaxial - Sets how HylcMicroSolveUniaxial() minimizes Psi over the two free (lateral) strains:
+  a Newton method whose gradient is that of gradient, whose Hessian is the forward difference of the lateral
+  gradient with step h, with steps of at most maxStep in each strain and a backtracking line search on Psi.
+  Not collective.
+
+  Input Parameters:
++ M        - the solver
+. gradient - HYLC_MICRO_UNIAXIAL_ENVELOPE (default: the envelope theorem at each equilibrium,
+             HylcMicroGetStrainGradient()) or HYLC_MICRO_UNIAXIAL_FD (central differences of Psi with step
+             h over continued solves)
+. xtol     - converged when the Newton step to the minimizer predicted at the state is at most xtol in each
+             lateral strain (default 1e-5; PETSC_DEFAULT keeps the value)
+. maxIt    - Newton steps (default 30)
+. h        - difference step, a strain (default 1e-4)
+- maxStep  - largest change of a lateral strain per Newton step (default 0.05)
+
+  Options Database Keys:
++ -micro_uniaxial_gradient <envelope> - envelope or fd
+. -micro_uniaxial_xtol <1e-5> - xtol
+. -micro_uniaxial_max_it <30> - maxIt
+. -micro_uniaxial_fd_step <1e-4> - h
+- -micro_uniaxial_max_step <0.05> - maxStep
+
+  Level: intermediate
+
+.seealso: HylcMicroSolveUniaxial(), HylcMicroGetStrainGradient()
+@*/
+PetscErrorCode HylcMicroSetUniaxial(HylcMicro M, HylcMicroUniaxialGradient gradient, PetscReal xtol, PetscInt maxIt, PetscReal h, PetscReal maxStep)
+{
+  const char *p;
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
+  p = HylcMicroPrefix_Private(M);
+  PetscCheck(gradient == HYLC_MICRO_UNIAXIAL_ENVELOPE || gradient == HYLC_MICRO_UNIAXIAL_FD, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%suniaxial_gradient %d: must be envelope or fd", p, (int)gradient);
+  M->par.uniGrad = gradient;
+  if (xtol != (PetscReal)PETSC_DEFAULT) {
+    PetscCheck(xtol > 0 && xtol < 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%suniaxial_xtol %g: must be in (0, 1)", p, (double)xtol);
+    M->par.uniXtol = xtol;
+  }
+  if (maxIt != PETSC_DEFAULT) {
+    PetscCheck(maxIt >= 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%suniaxial_max_it %" PetscInt_FMT ": must be at least 1", p, maxIt);
+    M->par.uniMaxIt = maxIt;
+  }
+  if (h != (PetscReal)PETSC_DEFAULT) {
+    PetscCheck(h > 0 && h <= 0.01, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%suniaxial_fd_step %g: must be in (0, 0.01]", p, (double)h);
+    M->par.uniH = h;
+  }
+  if (maxStep != (PetscReal)PETSC_DEFAULT) {
+    PetscCheck(maxStep > 0 && maxStep <= 0.5, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%suniaxial_max_step %g: must be in (0, 0.5]", p, (double)maxStep);
+    M->par.uniMaxStep = maxStep;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcMicroSetUniaxialTolerances - Sets the accuracy of HylcMicroSolveUniaxial(): the relative tolerance of its
+  microscale solves (-micro_rtol while it runs; the lateral minimization needs gradients well below the
+  lateral stresses it drives to zero) and the gradient test that ends it when a line search finds no decrease
+  (Psi is then at its noise level: nearby equilibria of the tile differ by about 1e-7 relative). Not collective.
+
+  Input Parameters:
++ M    - the solver
+. rtol - -micro_rtol of the uniaxial solves (default 1e-8; PETSC_DEFAULT keeps the value)
+- gtol - converged after a failed line search if the lateral gradient is at most gtol |T| (default 1e-4)
+
+  Options Database Keys:
++ -micro_uniaxial_rtol <1e-8> - rtol
+- -micro_uniaxial_gtol <1e-4> - gtol
+
+  Level: intermediate
+
+.seealso: HylcMicroSolveUniaxial(), HylcMicroSetUniaxial(), HylcMicroSetTolerances()
+@*/
+PetscErrorCode HylcMicroSetUniaxialTolerances(HylcMicro M, PetscReal rtol, PetscReal gtol)
+{
+  const char *p;
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
+  p = HylcMicroPrefix_Private(M);
+  if (rtol != (PetscReal)PETSC_DEFAULT) {
+    PetscCheck(rtol > 0 && rtol < 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%suniaxial_rtol %g: must be in (0, 1)", p, (double)rtol);
+    M->par.uniRtol = rtol;
+  }
+  if (gtol != (PetscReal)PETSC_DEFAULT) {
+    PetscCheck(gtol >= 0 && gtol < 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%suniaxial_gtol %g: must be in [0, 1)", p, (double)gtol);
+    M->par.uniGtol = gtol;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /*@C
   HylcMicroSetFromOptions - Reads the options of the Newton solver (prefix -micro_ by default) and, as
   SLEPc's EPSSetFromOptions() calls STSetFromOptions(), those of its sub-objects, created on first use
@@ -366,6 +462,8 @@ PetscErrorCode HylcMicroSetSaddleEscape(HylcMicro M, PetscBool test, PetscInt ma
 . -micro_rtol, -micro_atol, -micro_ctol, -micro_max_time - HylcMicroSetTolerances()
 . -micro_factor_indefinite - HylcMicroSetIndefinite()
 . -micro_saddle_test, -micro_saddle_escapes, -micro_saddle_tol - HylcMicroSetSaddleEscape()
+. -micro_uniaxial_gradient, -micro_uniaxial_xtol, -micro_uniaxial_max_it, -micro_uniaxial_fd_step, -micro_uniaxial_max_step - HylcMicroSetUniaxial()
+. -micro_uniaxial_rtol, -micro_uniaxial_gtol - HylcMicroSetUniaxialTolerances()
 . -micro_view - HylcMicroView() at set-up
 . -periodic_*, -macro_* - HylcPeriodicSetFromOptions() of HylcMicroGetPeriodic()
 . -micro_factor_pc_* - PCSetFromOptions() of HylcMicroGetFactorPC()
@@ -393,32 +491,39 @@ PetscErrorCode HylcMicroSetFromOptions(HylcMicro M)
   PetscCall(PetscOptionsHasName(((PetscObject)M)->options, ((PetscObject)M)->prefix, "-factor_type", &flg));
   PetscCheck(!flg, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%sfactor_type was removed: choose the factorization with -%sfactor_pc_factor_mat_solver_type hylc|petsc|cholmod|mumps (hylc is the default; petsc is the former -%sfactor_type petsc)", HylcMicroPrefix_Private(M), HylcMicroPrefix_Private(M), HylcMicroPrefix_Private(M));
   PetscObjectOptionsBegin((PetscObject)M);
-  PetscCall(PetscOptionsReal("-alpha_start", "Regularization schedule: alpha^ at iteration 0", "HylcMicroSetRegularization", p.alphaStart, &p.alphaStart, NULL));
-  PetscCall(PetscOptionsReal("-alpha_end", "Regularization schedule: alpha^ from iteration alpha_its on", "HylcMicroSetRegularization", p.alphaEnd, &p.alphaEnd, NULL));
+  PetscCall(HylcOptionsReal("-alpha_start", "Regularization schedule: alpha^ at iteration 0", "HylcMicroSetRegularization", p.alphaStart, &p.alphaStart, NULL));
+  PetscCall(HylcOptionsReal("-alpha_end", "Regularization schedule: alpha^ from iteration alpha_its on", "HylcMicroSetRegularization", p.alphaEnd, &p.alphaEnd, NULL));
   PetscCall(PetscOptionsInt("-alpha_its", "Regularization schedule: iterations of the geometric decay", "HylcMicroSetRegularization", p.alphaIts, &p.alphaIts, NULL));
   PetscCall(PetscOptionsInt("-alpha_retries", "Retries with alpha x 10 when the Newton matrix is indefinite", "HylcMicroSetRegularization", p.maxRetries, &p.maxRetries, NULL));
   PetscCall(PetscStrncpy(sched, HylcMicroAlphaSchedules[p.alphaSched], sizeof(sched)));
   PetscCall(PetscOptionsString("-alpha_schedule", "Regularization schedule of alpha^: adaptive (trust-region-like: down after good steps, up after poor or rejected ones; the default), paper (the paper's decay over alpha_its iterations) or hybrid (paper until ||M g||_inf <= alpha_switch x its initial value, then adaptive)", "HylcMicroSetRegularizationSchedule", sched, sched, sizeof(sched), &schedSet));
-  PetscCall(PetscOptionsReal("-alpha_factor", "Adaptive regularization: alpha^ / factor after a good step, x factor after a poor one", "HylcMicroSetRegularizationSchedule", p.alphaFact, &p.alphaFact, NULL));
-  PetscCall(PetscOptionsReal("-alpha_min", "Adaptive regularization: smallest alpha^", "HylcMicroSetRegularizationSchedule", p.alphaMin, &p.alphaMin, NULL));
-  PetscCall(PetscOptionsReal("-alpha_max", "Adaptive regularization: largest alpha^", "HylcMicroSetRegularizationSchedule", p.alphaMax, &p.alphaMax, NULL));
-  PetscCall(PetscOptionsReal("-alpha_switch", "Hybrid regularization: adaptive once ||M g||_inf <= alpha_switch x its value at the first iteration", "HylcMicroSetRegularizationSwitch", p.alphaSwitch, &p.alphaSwitch, NULL));
+  PetscCall(HylcOptionsReal("-alpha_factor", "Adaptive regularization: alpha^ / factor after a good step, x factor after a poor one", "HylcMicroSetRegularizationSchedule", p.alphaFact, &p.alphaFact, NULL));
+  PetscCall(HylcOptionsReal("-alpha_min", "Adaptive regularization: smallest alpha^", "HylcMicroSetRegularizationSchedule", p.alphaMin, &p.alphaMin, NULL));
+  PetscCall(HylcOptionsReal("-alpha_max", "Adaptive regularization: largest alpha^", "HylcMicroSetRegularizationSchedule", p.alphaMax, &p.alphaMax, NULL));
+  PetscCall(HylcOptionsReal("-alpha_switch", "Hybrid regularization: adaptive once ||M g||_inf <= alpha_switch x its value at the first iteration", "HylcMicroSetRegularizationSwitch", p.alphaSwitch, &p.alphaSwitch, NULL));
   PetscCall(PetscOptionsBool("-alpha_fallback", "Adaptive and hybrid regularization: a solve that does not converge is repeated from the same start with the paper schedule", "HylcMicroSetRegularizationFallback", p.alphaFallback, &p.alphaFallback, NULL));
-  PetscCall(PetscOptionsReal("-twist_scale", "Scale mu of the twist unknowns, 0 = 1/r", "HylcMicroSetTwistScale", p.twistScale, &p.twistScale, NULL));
-  PetscCall(PetscOptionsReal("-step_p0", "Step limit d_max = (p0 + p1 clamp(lambda_min(I),0,1)) r: p0", "HylcMicroSetStepLimit", p.stepP0, &p.stepP0, NULL));
-  PetscCall(PetscOptionsReal("-step_p1", "Step limit: p1", "HylcMicroSetStepLimit", p.stepP1, &p.stepP1, NULL));
-  PetscCall(PetscOptionsReal("-step_clearance", "Step limit also at most this fraction (< 1/2) of the smallest distance between yarn centerlines that may touch, so that no step crosses two yarns; 0 = off", "HylcMicroSetStepClearance", p.stepClear, &p.stepClear, NULL));
-  PetscCall(PetscOptionsReal("-ls_factor", "Backtracking factor of the line search", "HylcMicroSetLineSearch", p.lsFactor, &p.lsFactor, NULL));
+  PetscCall(HylcOptionsReal("-twist_scale", "Scale mu of the twist unknowns, 0 = 1/r", "HylcMicroSetTwistScale", p.twistScale, &p.twistScale, NULL));
+  PetscCall(HylcOptionsReal("-step_p0", "Step limit d_max = (p0 + p1 clamp(lambda_min(I),0,1)) r: p0", "HylcMicroSetStepLimit", p.stepP0, &p.stepP0, NULL));
+  PetscCall(HylcOptionsReal("-step_p1", "Step limit: p1", "HylcMicroSetStepLimit", p.stepP1, &p.stepP1, NULL));
+  PetscCall(HylcOptionsReal("-step_clearance", "Step limit also at most this fraction (< 1/2) of the smallest distance between yarn centerlines that may touch, so that no step crosses two yarns; 0 = off", "HylcMicroSetStepClearance", p.stepClear, &p.stepClear, NULL));
+  PetscCall(HylcOptionsReal("-ls_factor", "Backtracking factor of the line search", "HylcMicroSetLineSearch", p.lsFactor, &p.lsFactor, NULL));
   PetscCall(PetscOptionsInt("-ls_max", "Line-search trials per iteration", "HylcMicroSetLineSearch", p.lsMax, &p.lsMax, NULL));
   PetscCall(PetscOptionsInt("-max_stalls", "Consecutive line searches without decrease before the solve stops, status stalled", "HylcMicroSetLineSearch", p.maxStalls, &p.maxStalls, NULL));
-  PetscCall(PetscOptionsReal("-rtol", "Convergence: projected gradient |z| < rtol |z0|", "HylcMicroSetTolerances", p.rtol, &p.rtol, NULL));
-  PetscCall(PetscOptionsReal("-atol", "Convergence also when |z| < atol k_s (k_s = Es pi r^2, a force): for tiles already at rest", "HylcMicroSetTolerances", p.atol, &p.atol, NULL));
-  PetscCall(PetscOptionsReal("-ctol", "Convergence: constraint residual |A y - dL| < ctol r", "HylcMicroSetTolerances", p.ctol, &p.ctol, NULL));
-  PetscCall(PetscOptionsReal("-max_time", "Wall-time cap per solve (s); status time_cap", "HylcMicroSetTolerances", p.maxTime, &p.maxTime, NULL));
+  PetscCall(HylcOptionsReal("-rtol", "Convergence: projected gradient |z| < rtol |z0|", "HylcMicroSetTolerances", p.rtol, &p.rtol, NULL));
+  PetscCall(HylcOptionsReal("-atol", "Convergence also when |z| < atol k_s (k_s = Es pi r^2, a force): for tiles already at rest", "HylcMicroSetTolerances", p.atol, &p.atol, NULL));
+  PetscCall(HylcOptionsReal("-ctol", "Convergence: constraint residual |A y - dL| < ctol r", "HylcMicroSetTolerances", p.ctol, &p.ctol, NULL));
+  PetscCall(HylcOptionsReal("-max_time", "Wall-time cap per solve (s); status time_cap", "HylcMicroSetTolerances", p.maxTime, &p.maxTime, NULL));
   PetscCall(PetscOptionsBool("-factor_indefinite", "Accept the factorization of an indefinite Newton matrix if the step descends with positive curvature; false: alpha x 10 at any negative eigenvalue", "HylcMicroSetIndefinite", p.indefinite, &p.indefinite, NULL));
   PetscCall(PetscOptionsBool("-saddle_test", "Second-order test of converged states: count the negative eigenvalues of the Hessian on the constraints' tangent space (implied by -micro_saddle_escapes > 0)", "HylcMicroSetSaddleEscape", p.saddleTest, &p.saddleTest, NULL));
   PetscCall(PetscOptionsInt("-saddle_escapes", "Second-order test: escapes from saddle points (negative curvature on the constraints' tangent space) along negative curvature, per solve", "HylcMicroSetSaddleEscape", p.saddleMax, &p.saddleMax, NULL));
-  PetscCall(PetscOptionsReal("-saddle_tol", "Second-order test: curvature below -saddle_tol x max|diag(M H M)| is negative", "HylcMicroSetSaddleEscape", p.saddleTol, &p.saddleTol, NULL));
+  PetscCall(HylcOptionsReal("-saddle_tol", "Second-order test: curvature below -saddle_tol x max|diag(M H M)| is negative", "HylcMicroSetSaddleEscape", p.saddleTol, &p.saddleTol, NULL));
+  PetscCall(PetscOptionsEnum("-uniaxial_gradient", "Uniaxial state (HylcMicroSolveUniaxial): dPsi/dz by the envelope theorem at each equilibrium, or by central differences of Psi (fd, 6 more solves per point)", "HylcMicroSetUniaxial", HylcMicroUniaxialGradients, (PetscEnum)p.uniGrad, (PetscEnum *)&p.uniGrad, NULL));
+  PetscCall(HylcOptionsReal("-uniaxial_xtol", "Uniaxial state: converged when the predicted Newton step in the lateral strains is at most this (strain, dimensionless)", "HylcMicroSetUniaxial", p.uniXtol, &p.uniXtol, NULL));
+  PetscCall(PetscOptionsInt("-uniaxial_max_it", "Uniaxial state: Newton steps in the lateral strains", "HylcMicroSetUniaxial", p.uniMaxIt, &p.uniMaxIt, NULL));
+  PetscCall(HylcOptionsReal("-uniaxial_fd_step", "Uniaxial state: difference step of the lateral Hessian and of the fd gradient (strain, dimensionless)", "HylcMicroSetUniaxial", p.uniH, &p.uniH, NULL));
+  PetscCall(HylcOptionsReal("-uniaxial_max_step", "Uniaxial state: largest change of a lateral strain per Newton step (strain, dimensionless)", "HylcMicroSetUniaxial", p.uniMaxStep, &p.uniMaxStep, NULL));
+  PetscCall(HylcOptionsReal("-uniaxial_rtol", "Uniaxial state: -micro_rtol of its microscale solves (relative, dimensionless)", "HylcMicroSetUniaxialTolerances", p.uniRtol, &p.uniRtol, NULL));
+  PetscCall(HylcOptionsReal("-uniaxial_gtol", "Uniaxial state: converged after a line search without decrease if |lateral gradient| <= gtol |T| (dimensionless)", "HylcMicroSetUniaxialTolerances", p.uniGtol, &p.uniGtol, NULL));
   PetscCall(PetscOptionsName("-view", "Print the solver at set-up", "HylcMicroView", &flg));
   PetscOptionsEnd();
   if (schedSet) { /* checked after PetscOptionsEnd(), which must run */
@@ -441,6 +546,8 @@ PetscErrorCode HylcMicroSetFromOptions(HylcMicro M)
   PetscCall(HylcMicroSetTolerances(M, p.rtol, p.atol, p.ctol, p.maxTime));
   PetscCall(HylcMicroSetIndefinite(M, p.indefinite));
   PetscCall(HylcMicroSetSaddleEscape(M, p.saddleTest, p.saddleMax, p.saddleTol));
+  PetscCall(HylcMicroSetUniaxial(M, (HylcMicroUniaxialGradient)p.uniGrad, p.uniXtol, p.uniMaxIt, p.uniH, p.uniMaxStep));
+  PetscCall(HylcMicroSetUniaxialTolerances(M, p.uniRtol, p.uniGtol));
   /* the sub-objects, created with their defaults first so that the options override them */
   PetscCall(HylcMicroGetPeriodic(M, &P));
   PetscCall(HylcPeriodicSetFromOptions(P));
@@ -500,6 +607,8 @@ PetscErrorCode HylcMicroView(HylcMicro M, PetscViewer viewer)
     snprintf(buf, sizeof(buf), "second-order test: curvature below -%g max|diag(M H M)| on the tangent space; up to %d saddle escapes per solve\n", (double)p->saddleTol, (int)p->saddleMax);
   else
     snprintf(buf, sizeof(buf), "second-order test: off (converged states may be saddle points)\n");
+  PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
+  snprintf(buf, sizeof(buf), "uniaxial state: gradient %s, Newton in the lateral strains to a predicted step <= %g (or |lateral gradient| <= %g |T| when a line search fails), at most %d steps of <= %g, difference step %g, solves with rtol %g\n", HylcMicroUniaxialGradients[p->uniGrad], (double)p->uniXtol, (double)p->uniGtol, (int)p->uniMaxIt, (double)p->uniMaxStep, (double)p->uniH, (double)p->uniRtol);
   PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
   if (!M->pat)
     PetscCall(PetscViewerASCIIPrintf(viewer, "no pattern set\n"));

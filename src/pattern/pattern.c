@@ -1,4 +1,5 @@
 /* HylcPattern: object lifecycle, options, accessors and yarn-loop extraction. */
+#include <hylc/options.h>
 #include <hylc/private/patternimpl.h>
 
 PetscErrorCode HylcPatternGenParamsDefault(HylcPatternGenParams *g)
@@ -23,7 +24,7 @@ PetscErrorCode HylcPatternCreate(MPI_Comm comm, HylcPattern *pat)
   PetscCall(HylcInitializePackage());
   PetscCall(PetscHeaderCreate(p, HYLC_PATTERN_CLASSID, "HylcPattern", "Periodic yarn pattern", "Pattern", comm, HylcPatternDestroy, HylcPatternView));
   PetscCall(HylcPatternGenParamsDefault(&p->gen));
-  p->viewDensity    = 1200.0;
+  p->viewDensity    = 0; /* the shared default, HylcDefaultYarnDensity(r): what hylc-fit and the JSON use */
   p->viewExcludeArc = 3.0;
   PetscCall(PetscObjectChangeTypeName((PetscObject)p, HYLCPATTERNSTOCKINETTE));
   *pat = p;
@@ -178,7 +179,7 @@ static PetscErrorCode CheckSize(HylcPattern p, const char name[], PetscInt n, co
 . -pattern_seglen <r>              - generators: target edge length (m)
 . -pattern_size <nx,ny>            - generators: tile size in threads or stitches
 . -pattern_consistent_periods      - loader: use the periods implied by the periodic edges' rest lengths
-. -pattern_density <1200>          - volumetric yarn density used by the summary (kg/m^3)
+. -pattern_density <0>             - volumetric yarn density used by the summary (kg/m^3); 0: 0.12 kg/m^2 / r, the rule of hylc-fit and the tables
 - -pattern_exclude_arc <3>         - summary: same-yarn pairs closer than this rest arc (units of r) are not contacts
 @*/
 PetscErrorCode HylcPatternSetFromOptions(HylcPattern p)
@@ -202,19 +203,19 @@ PetscErrorCode HylcPatternSetFromOptions(HylcPattern p)
   if (tflg) PetscCall(HylcPatternSetType(p, types[n]));
   both = (PetscBool)(flg && tflg && n != 0);
   tn   = n;
-  PetscCall(PetscOptionsReal("-pattern_radius", "Generators: yarn radius (m), > 0", "HylcPatternGenerate", p->gen.radius, &p->gen.radius, &set[0]));
-  PetscCall(PetscOptionsReal("-pattern_spacing", "Wovens: distance between neighbouring parallel yarns (m); 0 = 4 r", "HylcPatternGenerate", p->gen.spacing, &p->gen.spacing, &set[1]));
-  PetscCall(PetscOptionsReal("-pattern_gap", "Wovens: clearance at crossings relative to 2r; 0 = 0.1", "HylcPatternGenerate", p->gen.gap, &p->gen.gap, &set[2]));
-  PetscCall(PetscOptionsReal("-pattern_wale", "Knits: stitch width along x (m); 0 = default", "HylcPatternGenerate", p->gen.wale, &p->gen.wale, &set[3]));
-  PetscCall(PetscOptionsReal("-pattern_course", "Knits: course height along y (m); 0 = default", "HylcPatternGenerate", p->gen.course, &p->gen.course, &set[4]));
-  PetscCall(PetscOptionsReal("-pattern_depth", "Knits: z amplitude of the loops (m); 0 = default", "HylcPatternGenerate", p->gen.depth, &p->gen.depth, &set[5]));
-  PetscCall(PetscOptionsReal("-pattern_seglen", "Generators: target edge length (m); 0 = r", "HylcPatternGenerate", p->gen.seglen, &p->gen.seglen, &set[6]));
+  PetscCall(HylcOptionsReal("-pattern_radius", "Generators: yarn radius (m), > 0", "HylcPatternGenerate", p->gen.radius, &p->gen.radius, &set[0]));
+  PetscCall(HylcOptionsReal("-pattern_spacing", "Wovens: distance between neighbouring parallel yarns (m); 0 = 4 r", "HylcPatternGenerate", p->gen.spacing, &p->gen.spacing, &set[1]));
+  PetscCall(HylcOptionsReal("-pattern_gap", "Wovens: clearance at crossings relative to 2r; 0 = 0.1", "HylcPatternGenerate", p->gen.gap, &p->gen.gap, &set[2]));
+  PetscCall(HylcOptionsReal("-pattern_wale", "Knits: stitch width along x (m); 0 = default", "HylcPatternGenerate", p->gen.wale, &p->gen.wale, &set[3]));
+  PetscCall(HylcOptionsReal("-pattern_course", "Knits: course height along y (m); 0 = default", "HylcPatternGenerate", p->gen.course, &p->gen.course, &set[4]));
+  PetscCall(HylcOptionsReal("-pattern_depth", "Knits: z amplitude of the loops (m); 0 = default", "HylcPatternGenerate", p->gen.depth, &p->gen.depth, &set[5]));
+  PetscCall(HylcOptionsReal("-pattern_seglen", "Generators: target edge length (m); 0 = r", "HylcPatternGenerate", p->gen.seglen, &p->gen.seglen, &set[6]));
   n = 2;
   PetscCall(PetscOptionsIntArray("-pattern_size", "Generators: tile size nx,ny (each 1 to " HYLC_STR(HYLC_PATTERN_MAX_SIZE) ") in threads (wovens) or wales,courses (knits); default the smallest repeat", "HylcPatternGenerate", p->gen.size, &n, &flg));
   nsize   = n;
   sizeset = flg;
-  PetscCall(PetscOptionsReal("-pattern_density", "Volumetric yarn density for the summary's area density (kg/m^3); 0 = the yarn model's default", "HylcPatternGetAreaDensity", p->viewDensity, &p->viewDensity, &set[7]));
-  PetscCall(PetscOptionsReal("-pattern_exclude_arc", "Summary: same-yarn segment pairs closer than this rest arc length (units of r) are not contacts", "HylcPatternMinSegmentDistance", p->viewExcludeArc, &p->viewExcludeArc, &set[8]));
+  PetscCall(HylcOptionsReal("-pattern_density", "Volumetric yarn density for the summary's area density (kg/m^3); 0 = 0.12 kg/m^2 / r (120 kg/m^3 at r = 1 mm), the rule of hylc-fit, hylc-sample's raw export and the paper's tables", "HylcPatternGetAreaDensity", p->viewDensity, &p->viewDensity, &set[7]));
+  PetscCall(HylcOptionsReal("-pattern_exclude_arc", "Summary: same-yarn segment pairs closer than this rest arc length (units of r) are not contacts", "HylcPatternMinSegmentDistance", p->viewExcludeArc, &p->viewExcludeArc, &set[8]));
   PetscCall(PetscOptionsBool("-pattern_consistent_periods", "Loader: replace the stored periods by the ones the rest lengths of the periodic edges imply (basket.pyp, method-spec 2.1b)", "HylcPatternLoad", p->consistentPeriods, &p->consistentPeriods, NULL));
   PetscCall(PetscObjectProcessOptionsHandlers((PetscObject)p, PetscOptionsObject));
   PetscOptionsEnd();

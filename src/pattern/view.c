@@ -37,7 +37,7 @@ PetscErrorCode HylcPatternView(HylcPattern p, PetscViewer viewer)
   for (PetscInt l = 0; l < p->nloops; l++)
     PetscCall(PetscViewerASCIIPrintf(viewer, "loop %" PetscInt_FMT ": %" PetscInt_FMT " vertices, winding (%" PetscInt_FMT ", %" PetscInt_FMT "), rest length %.6g m\n", l, p->loopStart[l + 1] - p->loopStart[l], p->winding[2 * l], p->winding[2 * l + 1], (double)p->loopLen[l]));
   PetscCall(PetscViewerASCIIPrintf(viewer, "yarn length: %.6g m (rest %.6g m)\n", (double)L, (double)R));
-  PetscCall(PetscViewerASCIIPrintf(viewer, "area density: %.6g kg/m^2 (volumetric density %.6g kg/m^3)\n", (double)rhoA, (double)p->viewDensity));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "area density: %.6g kg/m^2 (volumetric density %.6g kg/m^3%s)\n", (double)rhoA, (double)(p->viewDensity > 0 ? p->viewDensity : HylcDefaultYarnDensity(p->radius)), p->viewDensity > 0 ? ", -pattern_density" : ": 0.12 kg/m^2 / r, as hylc-fit and the tables"));
   if (dmin < PETSC_INFINITY)
     PetscCall(PetscViewerASCIIPrintf(viewer, "min distance: %.4f r (segments %" PetscInt_FMT " and %" PetscInt_FMT " shifted by (%" PetscInt_FMT ", %" PetscInt_FMT "); same-yarn pairs within %.6g r of rest arc excluded)\n", (double)(dmin / p->radius), pair[0], pair[1], pair[2], pair[3], (double)p->viewExcludeArc));
   else

@@ -77,7 +77,7 @@ static PetscErrorCode ReduceConstraints(HylcPeriodic P, PetscInt *m)
       PetscCall(PetscArraycpy(P->A + kept * n, a, n));
       P->dL[kept] = P->dL[i];
     }
-    kept++;
+    P->crow[kept++] = i;
   }
   PetscCall(PetscFree2(Q, r));
   P->ndropped = m0 - kept;
@@ -85,27 +85,67 @@ static PetscErrorCode ReduceConstraints(HylcPeriodic P, PetscInt *m)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* the slide row of vertex o (before the reduction), its sign, and the reference tangent t = te + tf at o
+   in (xi1, xi2, h) (the sum of the unit vectors of the edges into and out of o) */
+static PetscErrorCode SlideRow(HylcPeriodic P, PetscInt o, const PetscInt fam[], const PetscReal sgn[], PetscInt *row, PetscReal *s, PetscReal t[3])
+{
+  const PetscInt u = P->D.prev[o], w = P->D.next[o];
+  PetscReal      te[3], tf[3];
+  PetscInt       l;
+
+  PetscFunctionBegin;
+  for (int i = 0; i < 3; i++) {
+    te[i] = P->xi[3 * o + i] - P->xi[3 * u + i];
+    tf[i] = P->xi[3 * w + i] - P->xi[3 * o + i];
+  }
+  te[0] += P->D.shift[2 * u] * P->D.px;
+  te[1] += P->D.shift[2 * u + 1] * P->D.py;
+  tf[0] += P->D.shift[2 * o] * P->D.px;
+  tf[1] += P->D.shift[2 * o + 1] * P->D.py;
+  HylcNormalize3(te);
+  HylcNormalize3(tf);
+  for (int i = 0; i < 3; i++) t[i] = te[i] + tf[i];
+  *row = 3;
+  *s   = 1;
+  PetscCall(HylcPatternGetVertexLoop(P->pat, o, &l, NULL));
+  if (P->slide == HYLC_SLIDE_PER_YARN) *row += l;
+  if (P->slide == HYLC_SLIDE_PER_FAMILY) *row += fam[l], *s = sgn[l];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* the families of the slide rows (per_family) and the number of rows before the reduction */
+static PetscErrorCode ConstraintLayout(HylcPeriodic P, PetscInt *nloops, PetscInt **fam, PetscReal **sgn, PetscInt *m)
+{
+  PetscInt nfam = 0;
+
+  PetscFunctionBegin;
+  PetscCall(HylcPatternGetNumLoops(P->pat, nloops));
+  PetscCall(PetscMalloc2(*nloops, fam, *nloops, sgn));
+  if (P->slide == HYLC_SLIDE_PER_FAMILY) PetscCall(SlideFamilies(P->pat, *nloops, *fam, *sgn, &nfam));
+  *m = 3 + (P->slide == HYLC_SLIDE_PER_YARN ? *nloops : P->slide == HYLC_SLIDE_PER_FAMILY ? nfam
+                                                    : P->slide == HYLC_SLIDE_GLOBAL       ? 1
+                                                                                          : 0);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode HylcPeriodicSetUpConstraints_Private(HylcPeriodic P, const PetscReal *x0)
 {
   const PetscInt         N = P->N;
-  PetscInt               nloops, m, nfam = 0, *fam;
+  PetscInt               nloops, m, *fam;
   PetscReal             *sgn;
   const HylcMacroStrain *ms;
 
   PetscFunctionBegin;
-  PetscCall(HylcPatternGetNumLoops(P->pat, &nloops));
-  PetscCall(PetscMalloc2(nloops, &fam, nloops, &sgn));
-  if (P->slide == HYLC_SLIDE_PER_FAMILY) PetscCall(SlideFamilies(P->pat, nloops, fam, sgn, &nfam));
-  m        = 3 + (P->slide == HYLC_SLIDE_PER_YARN ? nloops : P->slide == HYLC_SLIDE_PER_FAMILY ? nfam
-                                                         : P->slide == HYLC_SLIDE_GLOBAL       ? 1
-                                                                                               : 0);
+  PetscCall(ConstraintLayout(P, &nloops, &fam, &sgn, &m));
   P->ncons = m;
   PetscCall(PetscCalloc3(m * 4 * N, &P->A, m, &P->dL, m * m, &P->AAtinv));
+  PetscCall(PetscMalloc1(m, &P->crow));
   PetscCall(HylcMidsurfaceGetStrain(P->ms, &ms));
   for (PetscInt o = 0; o < N; o++) {
-    const PetscInt  u = P->D.prev[o], w = P->D.next[o];
+    const PetscInt  u  = P->D.prev[o];
     const PetscReal wo = 0.5 * (P->D.restLength[u] + P->D.restLength[o]); /* rest Voronoi length */
-    PetscReal       R[9], Rtx[3], tau[3], te[3], tf[3], Rtau[3];
+    PetscReal       R[9], Rtx[3], tau[3], t[3], Rtau[3], s;
+    PetscInt        row;
     PetscCall(HylcMidsurfaceGetRotation(P->ms, P->xi + 3 * o, R));
     MatT3(R, x0 + 3 * o, Rtx);
     for (int i = 0; i < 3; i++) {
@@ -114,27 +154,12 @@ PetscErrorCode HylcPeriodicSetUpConstraints_Private(HylcPeriodic P, const PetscR
     }
     if (P->slide == HYLC_SLIDE_NONE) continue;
     /* reference unit tangent at o in (xi1, xi2, h), deformed in-plane by S3 = [[A, 0], [0, 1]] */
-    for (int i = 0; i < 3; i++) {
-      te[i] = P->xi[3 * o + i] - P->xi[3 * u + i];
-      tf[i] = P->xi[3 * w + i] - P->xi[3 * o + i];
-    }
-    te[0] += P->D.shift[2 * u] * P->D.px;
-    te[1] += P->D.shift[2 * u + 1] * P->D.py;
-    tf[0] += P->D.shift[2 * o] * P->D.px;
-    tf[1] += P->D.shift[2 * o + 1] * P->D.py;
-    HylcNormalize3(te);
-    HylcNormalize3(tf);
-    const PetscReal t0 = te[0] + tf[0], t1 = te[1] + tf[1];
-    tau[0] = ms->A[0] * t0 + ms->A[1] * t1;
-    tau[1] = ms->A[2] * t0 + ms->A[3] * t1;
-    tau[2] = te[2] + tf[2];
+    PetscCall(SlideRow(P, o, fam, sgn, &row, &s, t));
+    tau[0] = ms->A[0] * t[0] + ms->A[1] * t[1];
+    tau[1] = ms->A[2] * t[0] + ms->A[3] * t[1];
+    tau[2] = t[2];
     PetscCheck(HylcNormalize3(tau) > 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "Yarn folds back at vertex %" PetscInt_FMT ": no tangent for the slide constraint", o);
     Mat3(R, tau, Rtau);
-    PetscInt  row = 3, l;
-    PetscReal s   = 1;
-    PetscCall(HylcPatternGetVertexLoop(P->pat, o, &l, NULL));
-    if (P->slide == HYLC_SLIDE_PER_YARN) row += l;
-    if (P->slide == HYLC_SLIDE_PER_FAMILY) row += fam[l], s = sgn[l];
     for (int j = 0; j < 3; j++) P->A[row * 4 * N + 4 * o + j] = s * wo * Rtau[j];
     P->dL[row] += s * wo * HylcDot3(tau, Rtx);
   }
@@ -156,6 +181,58 @@ PetscErrorCode HylcPeriodicSetUpConstraints_Private(HylcPeriodic P, const PetscR
     PetscCall(PetscArraycpy(P->AAtinv, I1, m * m));
     PetscCall(PetscFree2(M, I1));
   }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* dc/dz_j (j = sx, sa, sy) at fixed y of the kept rows, for a flat strain (II = 0: R = I, x0 = (A xi, h) at
+   the originals). Translation rows: c = sum_o w_o (y_o - x0_o), so dc/dz_j = -sum_o w_o dx0_o/dz_j with
+   dx0_o/dz_j = (dA_j xi_o, 0). Slide rows: c = sum_o s w_o tau_o . (y_o - x0_o) with tau_o = v / |v|,
+   v = (A t_xy, t_z), so dc/dz_j = sum_o s w_o [dtau_j . (y_o - x0_o) - tau_o . dx0_o/dz_j] with
+   dtau_j = (I - tau tau^T) (dA_j t_xy, 0) / |v|. */
+PetscErrorCode HylcPeriodicConstraintStrainDerivative_Private(HylcPeriodic P, PetscReal dcdz[])
+{
+  const PetscInt         N = P->N;
+  PetscInt               nloops, m, *fam;
+  PetscReal             *sgn, *full, dA[12];
+  const HylcMacroStrain *ms;
+
+  PetscFunctionBegin;
+  PetscCall(ConstraintLayout(P, &nloops, &fam, &sgn, &m));
+  PetscCall(PetscCalloc1(3 * m, &full));
+  PetscCall(HylcMidsurfaceGetStrain(P->ms, &ms));
+  StretchDerivatives(P->z, dA);
+  for (PetscInt o = 0; o < N; o++) {
+    const PetscInt   u  = P->D.prev[o];
+    const PetscReal  wo = 0.5 * (P->D.restLength[u] + P->D.restLength[o]);
+    const PetscReal *xi = P->xi + 3 * o, *y = P->y + 4 * o, *x0 = P->y0 + 4 * o;
+    PetscReal        dx0[3][3], ut[3];
+    for (int j = 0; j < 3; j++) {
+      dx0[j][0] = dA[4 * j] * xi[0] + dA[4 * j + 1] * xi[1];
+      dx0[j][1] = dA[4 * j + 2] * xi[0] + dA[4 * j + 3] * xi[1];
+      dx0[j][2] = 0;
+      for (int i = 0; i < 3; i++) full[3 * i + j] -= wo * dx0[j][i];
+    }
+    if (P->slide == HYLC_SLIDE_NONE) continue;
+    PetscReal t[3], v[3], s, nv;
+    PetscInt  row;
+    PetscCall(SlideRow(P, o, fam, sgn, &row, &s, t));
+    v[0] = ms->A[0] * t[0] + ms->A[1] * t[1];
+    v[1] = ms->A[2] * t[0] + ms->A[3] * t[1];
+    v[2] = t[2];
+    nv   = HylcNormalize3(v); /* v is tau now */
+    for (int i = 0; i < 3; i++) ut[i] = y[i] - x0[i];
+    for (int j = 0; j < 3; j++) {
+      const PetscReal dv[3] = {dA[4 * j] * t[0] + dA[4 * j + 1] * t[1], dA[4 * j + 2] * t[0] + dA[4 * j + 3] * t[1], 0};
+      const PetscReal tdv   = HylcDot3(v, dv);
+      PetscReal       dtau[3];
+      for (int i = 0; i < 3; i++) dtau[i] = (dv[i] - v[i] * tdv) / nv;
+      full[3 * row + j] += s * wo * (HylcDot3(dtau, ut) - HylcDot3(v, dx0[j]));
+    }
+  }
+  for (PetscInt k = 0; k < P->ncons; k++)
+    for (int j = 0; j < 3; j++) dcdz[3 * k + j] = full[3 * P->crow[k] + j];
+  PetscCall(PetscFree(full));
+  PetscCall(PetscFree2(fam, sgn));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

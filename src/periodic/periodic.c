@@ -1,4 +1,5 @@
 /* HylcPeriodic: lifecycle, options, setters, CheckStrain, GetTimes, View (include/hylc/periodic.h). */
+#include <hylc/options.h>
 #include "periodicimpl.h"
 
 const char *const HylcSlideConstraints[] = {"none", "global", "per_yarn", "per_family", "HylcSlideConstraint", "HYLC_SLIDE_", NULL};
@@ -116,6 +117,7 @@ PetscErrorCode HylcPeriodicReset_Private(HylcPeriodic P)
   PetscCall(PetscFree2(P->mref, P->mref0));
   PetscCall(PetscFree3(P->y, P->y0, P->x));
   PetscCall(PetscFree3(P->A, P->dL, P->AAtinv));
+  PetscCall(PetscFree(P->crow));
   HylcBVHDestroy(&P->bvh);
   PetscCall(PetscFree(P->segx));
   HylcPairListFree(&P->cand);
@@ -221,9 +223,9 @@ PetscErrorCode HylcPeriodicSetFromOptions(HylcPeriodic P)
   crtol        = P->crtol;
   PetscObjectOptionsBegin((PetscObject)P);
   PetscCall(PetscOptionsEnum("-periodic_slide", "Slide constraint: none, global (one row), per_yarn (one row per yarn loop) or per_family (one row per yarn family, each yarn in its canonical direction)", "HylcPeriodicSetSlideConstraint", HylcSlideConstraints, sl, &sl, NULL));
-  PetscCall(PetscOptionsReal("-periodic_pair_margin", "Hessian structure: keep the segment pairs closer than this many 2 r (touching: 2 r), so that it changes rarely", "HylcPeriodicSetPairMargin", pairMargin, &pairMargin, NULL));
-  PetscCall(PetscOptionsReal("-periodic_margin", "Contact ghosts: 0 for every copy of a tile edge in the neighbouring tiles; > 0 for only the copies within max(3 r, margin * min(px, py)) of the tile on the deformed initial guess (misses contacts once yarns move more than about (margin - 2 r) / 2)", "HylcPeriodicSetContactMargin", marginFactor, &marginFactor, NULL));
-  PetscCall(PetscOptionsReal("-periodic_constraint_rtol", "A constraint row whose distance to the span of the rows before it is at most this times its norm is dropped as linearly dependent (straight yarns: the slide row repeats the translation)", "HylcPeriodicSetConstraintTolerance", crtol, &crtol, NULL));
+  PetscCall(HylcOptionsReal("-periodic_pair_margin", "Hessian structure: keep the segment pairs closer than this many 2 r (touching: 2 r), so that it changes rarely", "HylcPeriodicSetPairMargin", pairMargin, &pairMargin, NULL));
+  PetscCall(HylcOptionsReal("-periodic_margin", "Contact ghosts: 0 for every copy of a tile edge in the neighbouring tiles; > 0 for only the copies within max(3 r, margin * min(px, py)) of the tile on the deformed initial guess (misses contacts once yarns move more than about (margin - 2 r) / 2)", "HylcPeriodicSetContactMargin", marginFactor, &marginFactor, NULL));
+  PetscCall(HylcOptionsReal("-periodic_constraint_rtol", "A constraint row whose distance to the span of the rows before it is at most this times its norm is dropped as linearly dependent (straight yarns: the slide row repeats the translation)", "HylcPeriodicSetConstraintTolerance", crtol, &crtol, NULL));
   PetscCall(PetscOptionsName("-periodic_view", "Print the tile after each set-up", "HylcPeriodicView", NULL));
   PetscOptionsEnd();
   PetscCall(HylcPeriodicSetConstraintTolerance(P, crtol));

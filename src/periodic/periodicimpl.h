@@ -62,6 +62,7 @@ struct _p_HylcPeriodic {
   PetscInt   ncons, ndropped; /* independent constraint rows kept, linearly dependent rows dropped */
   PetscReal  crtol;           /* relative tolerance of the dependence test (-periodic_constraint_rtol) */
   PetscReal *A, *dL, *AAtinv;
+  PetscInt  *crow; /* the row (before the reduction) of each kept constraint row */
   /* contact */
   HylcBVH      bvh;
   double      *segx;
@@ -79,6 +80,7 @@ struct _p_HylcPeriodic {
   PetscInt     coonpairs, *coopairs; /* the pairs of the current COO structure, a superset of the touching ones */
   PetscReal   *coopw;                /* their weights */
   Mat          cooMat;
+  PetscReal   *gfull; /* when set, the evaluation also accumulates the gradient per full vertex (3 each) here */
   /* accumulated wall times (s): evaluations with a Hessian, contact (broadphase + pairs), assembly */
   PetscLogDouble tEval, tContact, tAssemble;
 };
@@ -103,7 +105,20 @@ static inline void Mat3(const PetscReal M[9], const PetscReal v[3], PetscReal ou
   for (int i = 0; i < 3; i++) out[i] = M[3 * i] * v[0] + M[3 * i + 1] * v[1] + M[3 * i + 2] * v[2];
 }
 
+/* the derivatives of A = sqrt(I) = [[X, sa Y], [0, sqrt(1 - sa^2) Y]] (row-major, X = 1 + sx, Y = 1 + sy)
+   with respect to sx, sa, sy: dA[4 j .. 4 j + 3] for z_j, j = 0, 1, 2 (method-spec 1.1) */
+static inline void StretchDerivatives(const PetscReal z[6], PetscReal dA[12])
+{
+  const PetscReal Y = 1 + z[2], c = z[1], q = PetscSqrtReal(1 - c * c);
+  dA[0] = 1, dA[1] = 0, dA[2] = 0, dA[3] = 0;
+  dA[4] = 0, dA[5] = Y, dA[6] = 0, dA[7] = -c * Y / q;
+  dA[8] = 0, dA[9] = c, dA[10] = 0, dA[11] = q;
+}
+
 /* frees everything SetUp built (periodic.c) */
 PETSC_INTERN PetscErrorCode HylcPeriodicReset_Private(HylcPeriodic);
 /* the constraint rows A, dL and (A A^T)^-1 at the initial guess x0 (3 per full vertex) (constraints.c) */
 PETSC_INTERN PetscErrorCode HylcPeriodicSetUpConstraints_Private(HylcPeriodic, const PetscReal *);
+/* dc/dz_j at fixed y of the kept constraint rows c = A y - dL for the in-plane strains (II = 0): m x 3,
+   row-major (constraints.c) */
+PETSC_INTERN PetscErrorCode HylcPeriodicConstraintStrainDerivative_Private(HylcPeriodic, PetscReal[]);

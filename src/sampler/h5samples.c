@@ -4,6 +4,7 @@
 #include <hylc/samples.h>
 #include <hylc/private/samplesimpl.h>
 #include <hylc/private/h5util.h>
+#include <hylc/table.h>
 #include <petsc/private/petscimpl.h>
 #include <math.h>
 #include <stdlib.h>
@@ -340,88 +341,93 @@ PetscErrorCode HylcSamplesWriteHDF5(const char path[], long nsamples, const Hylc
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode H5ReadDataset(hid_t file, const char name[], hid_t memtype, hsize_t n, hsize_t cols, void *buf)
-{
-  hid_t   d, s;
-  int     rank;
-  hsize_t dims[2] = {0, 0};
+/* the datasets of /samples that HylcSamplesReadHDF5() reads (start, negcurv, escapes, psi_other,
+   status_other and multistable are newer than the format's first files: optional) */
+static const HylcTableColumn SamplesColumns[] = {
+    {"strain", 6, H5T_FLOAT, PETSC_FALSE},
+    {"psi", 0, H5T_FLOAT, PETSC_FALSE},
+    {"energy_parts", 4, H5T_FLOAT, PETSC_FALSE},
+    {"residual", 0, H5T_FLOAT, PETSC_FALSE},
+    {"constraint_residual", 0, H5T_FLOAT, PETSC_FALSE},
+    {"time", 0, H5T_FLOAT, PETSC_FALSE},
+    {"term", 0, H5T_INTEGER, PETSC_FALSE},
+    {"status", 0, H5T_INTEGER, PETSC_FALSE},
+    {"iterations", 0, H5T_INTEGER, PETSC_FALSE},
+    {"retries", 0, H5T_INTEGER, PETSC_FALSE},
+    {"start", 0, H5T_INTEGER, PETSC_TRUE},
+    {"negcurv", 0, H5T_INTEGER, PETSC_TRUE},
+    {"escapes", 0, H5T_INTEGER, PETSC_TRUE},
+    {"psi_other", 0, H5T_FLOAT, PETSC_TRUE},
+    {"status_other", 0, H5T_INTEGER, PETSC_TRUE},
+    {"multistable", 0, H5T_INTEGER, PETSC_TRUE}};
+#define NSAMPLESCOLUMNS ((int)(sizeof(SamplesColumns) / sizeof(SamplesColumns[0])))
 
+/* whether /samples/name exists (checked by HylcTableCheckHDF5Columns() when it does) */
+static int HasColumn(hid_t file, const char name[])
+{
+  HylcH5Quiet q;
+  char        full[64];
+  htri_t      has;
+
+  snprintf(full, sizeof(full), "samples/%s", name);
+  HylcH5QuietBegin(&q);
+  has = H5Lexists(file, full, H5P_DEFAULT);
+  HylcH5QuietEnd(&q);
+  return has > 0;
+}
+
+/* every column read into the arrays given (allocated for N + 1 rows by the caller) */
+static PetscErrorCode ReadColumns(hid_t file, const char path[], double *strain, double *psi, double *parts, double *res, double *cres, double *tm, int *term, int *status, int *its, int *retries, int *start, int *negcurv, int *escapes, double *psio, int *stato, int *multi)
+{
   PetscFunctionBegin;
-  HylcCallHDF5Id(d, H5Dopen2(file, name, H5P_DEFAULT));
-  HylcCallHDF5Id(s, H5Dget_space(d));
-  HylcCallHDF5Id(rank, H5Sget_simple_extent_ndims(s));
-  HylcCallHDF5(H5Sget_simple_extent_dims(s, dims, NULL));
-  PetscCheck(rank == (cols ? 2 : 1) && dims[0] == n && (!cols || dims[1] == cols), PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s: dataset %s has an unexpected shape", HylcH5Where, name);
-  if (n) HylcCallHDF5(H5Dread(d, memtype, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf));
-  HylcCallHDF5(H5Sclose(s));
-  HylcCallHDF5(H5Dclose(d));
+  PetscCall(HylcTableReadHDF5Column(file, path, "samples/strain", H5T_NATIVE_DOUBLE, strain));
+  PetscCall(HylcTableReadHDF5Column(file, path, "samples/psi", H5T_NATIVE_DOUBLE, psi));
+  PetscCall(HylcTableReadHDF5Column(file, path, "samples/energy_parts", H5T_NATIVE_DOUBLE, parts));
+  PetscCall(HylcTableReadHDF5Column(file, path, "samples/residual", H5T_NATIVE_DOUBLE, res));
+  PetscCall(HylcTableReadHDF5Column(file, path, "samples/constraint_residual", H5T_NATIVE_DOUBLE, cres));
+  PetscCall(HylcTableReadHDF5Column(file, path, "samples/time", H5T_NATIVE_DOUBLE, tm));
+  PetscCall(HylcTableReadHDF5Column(file, path, "samples/term", H5T_NATIVE_INT, term));
+  PetscCall(HylcTableReadHDF5Column(file, path, "samples/status", H5T_NATIVE_INT, status));
+  PetscCall(HylcTableReadHDF5Column(file, path, "samples/iterations", H5T_NATIVE_INT, its));
+  PetscCall(HylcTableReadHDF5Column(file, path, "samples/retries", H5T_NATIVE_INT, retries));
+  /* files before /samples/start: every sample was cold (0); before /samples/negcurv and /samples/escapes:
+     not tested (-1), no escape (0) */
+  if (HasColumn(file, "start")) PetscCall(HylcTableReadHDF5Column(file, path, "samples/start", H5T_NATIVE_INT, start));
+  if (HasColumn(file, "negcurv")) PetscCall(HylcTableReadHDF5Column(file, path, "samples/negcurv", H5T_NATIVE_INT, negcurv));
+  if (HasColumn(file, "escapes")) PetscCall(HylcTableReadHDF5Column(file, path, "samples/escapes", H5T_NATIVE_INT, escapes));
+  /* files before -sampler_start both: not compared (NaN, -1, -1) */
+  if (HasColumn(file, "psi_other")) PetscCall(HylcTableReadHDF5Column(file, path, "samples/psi_other", H5T_NATIVE_DOUBLE, psio));
+  if (HasColumn(file, "status_other")) PetscCall(HylcTableReadHDF5Column(file, path, "samples/status_other", H5T_NATIVE_INT, stato));
+  if (HasColumn(file, "multistable")) PetscCall(HylcTableReadHDF5Column(file, path, "samples/multistable", H5T_NATIVE_INT, multi));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode ReadFile(hid_t file, long *nsamples, HylcSampleRecord **recs_, unsigned char **done_, char **optionsText)
+static PetscErrorCode ReadFile(hid_t file, const char path[], long *nsamples, HylcSampleRecord **recs_, unsigned char **done_, char **optionsText)
 {
-  hid_t             d, s;
-  hsize_t           dims[2];
+  hsize_t           dims;
   long              N;
   double           *strain, *psi, *parts, *res, *cres, *tm;
   int              *term, *status, *its, *retries, *start, *negcurv, *escapes;
-  HylcSampleRecord *recs;
-  unsigned char    *done;
-
-  double *psio;
-  int    *stato, *multi;
+  HylcSampleRecord *recs = NULL;
+  unsigned char    *done = NULL;
+  PetscErrorCode    ierr;
+  double           *psio;
+  int              *stato, *multi;
 
   PetscFunctionBegin;
-  HylcCallHDF5Id(d, H5Dopen2(file, "samples/psi", H5P_DEFAULT));
-  HylcCallHDF5Id(s, H5Dget_space(d));
-  HylcCallHDF5(H5Sget_simple_extent_dims(s, dims, NULL));
-  HylcCallHDF5(H5Sclose(s));
-  HylcCallHDF5(H5Dclose(d));
-  N = (long)dims[0];
+  /* every dataset checked (kind, class, shape, declared size) before anything is allocated */
+  PetscCall(HylcTableCheckHDF5Columns(file, path, NULL, "samples", NSAMPLESCOLUMNS, SamplesColumns, &dims));
+  PetscCheck(dims <= (hsize_t)(PETSC_MAX_INT / 6), PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s: /samples has %llu rows, more than this build reads", path, (unsigned long long)dims);
+  N = (long)dims;
   PetscCall(PetscMalloc6(6 * N + 1, &strain, N + 1, &psi, 4 * N + 1, &parts, N + 1, &res, N + 1, &cres, N + 1, &tm));
   PetscCall(PetscMalloc4(N + 1, &term, N + 1, &status, N + 1, &its, N + 1, &retries));
-  PetscCall(H5ReadDataset(file, "samples/strain", H5T_NATIVE_DOUBLE, N, 6, strain));
-  PetscCall(H5ReadDataset(file, "samples/psi", H5T_NATIVE_DOUBLE, N, 0, psi));
-  PetscCall(H5ReadDataset(file, "samples/energy_parts", H5T_NATIVE_DOUBLE, N, 4, parts));
-  PetscCall(H5ReadDataset(file, "samples/residual", H5T_NATIVE_DOUBLE, N, 0, res));
-  PetscCall(H5ReadDataset(file, "samples/constraint_residual", H5T_NATIVE_DOUBLE, N, 0, cres));
-  PetscCall(H5ReadDataset(file, "samples/time", H5T_NATIVE_DOUBLE, N, 0, tm));
-  PetscCall(H5ReadDataset(file, "samples/term", H5T_NATIVE_INT, N, 0, term));
-  PetscCall(H5ReadDataset(file, "samples/status", H5T_NATIVE_INT, N, 0, status));
-  PetscCall(H5ReadDataset(file, "samples/iterations", H5T_NATIVE_INT, N, 0, its));
-  PetscCall(H5ReadDataset(file, "samples/retries", H5T_NATIVE_INT, N, 0, retries));
-  PetscCall(PetscCalloc1(N + 1, &start)); /* files before /samples/start: every sample was cold (0) */
-  {
-    htri_t has = H5Lexists(file, "samples/start", H5P_DEFAULT);
-    HylcCallHDF5((herr_t)(has < 0 ? -1 : 0));
-    if (has > 0) PetscCall(H5ReadDataset(file, "samples/start", H5T_NATIVE_INT, N, 0, start));
-  }
-  /* files before /samples/negcurv and /samples/escapes: not tested (-1), no escape (0) */
-  PetscCall(PetscCalloc2(N + 1, &negcurv, N + 1, &escapes));
-  for (long k = 0; k < N; k++) negcurv[k] = -1;
-  {
-    htri_t has = H5Lexists(file, "samples/negcurv", H5P_DEFAULT), hase;
-    HylcCallHDF5((herr_t)(has < 0 ? -1 : 0));
-    if (has > 0) PetscCall(H5ReadDataset(file, "samples/negcurv", H5T_NATIVE_INT, N, 0, negcurv));
-    hase = H5Lexists(file, "samples/escapes", H5P_DEFAULT);
-    HylcCallHDF5((herr_t)(hase < 0 ? -1 : 0));
-    if (hase > 0) PetscCall(H5ReadDataset(file, "samples/escapes", H5T_NATIVE_INT, N, 0, escapes));
-  }
-  /* files before /samples/psi_other, status_other, multistable: not compared */
+  PetscCall(PetscCalloc3(N + 1, &start, N + 1, &negcurv, N + 1, &escapes));
   PetscCall(PetscMalloc3(N + 1, &psio, N + 1, &stato, N + 1, &multi));
-  for (long k = 0; k < N; k++) psio[k] = NAN, stato[k] = -1, multi[k] = -1;
-  {
-    htri_t has = H5Lexists(file, "samples/psi_other", H5P_DEFAULT);
-    HylcCallHDF5((herr_t)(has < 0 ? -1 : 0));
-    if (has > 0) {
-      PetscCall(H5ReadDataset(file, "samples/psi_other", H5T_NATIVE_DOUBLE, N, 0, psio));
-      PetscCall(H5ReadDataset(file, "samples/status_other", H5T_NATIVE_INT, N, 0, stato));
-      PetscCall(H5ReadDataset(file, "samples/multistable", H5T_NATIVE_INT, N, 0, multi));
-    }
-  }
-  PetscCall(PetscCalloc1(N + 1, &recs));
-  PetscCall(PetscCalloc1(N + 1, &done));
-  for (long k = 0; k < N; k++) {
+  for (long k = 0; k < N; k++) negcurv[k] = -1, psio[k] = NAN, stato[k] = -1, multi[k] = -1;
+  ierr = ReadColumns(file, path, strain, psi, parts, res, cres, tm, term, status, its, retries, start, negcurv, escapes, psio, stato, multi);
+  if (!ierr) ierr = PetscCalloc1(N + 1, &recs);
+  if (!ierr) ierr = PetscCalloc1(N + 1, &done);
+  for (long k = 0; !ierr && k < N; k++) {
     HylcSampleRecord *r = &recs[k];
     r->index            = k;
     for (int i = 0; i < 6; i++) r->z[i] = strain[6 * k + i];
@@ -445,18 +451,66 @@ static PetscErrorCode ReadFile(hid_t file, long *nsamples, HylcSampleRecord **re
   PetscCall(PetscFree3(psio, stato, multi));
   PetscCall(PetscFree6(strain, psi, parts, res, cres, tm));
   PetscCall(PetscFree4(term, status, its, retries));
-  PetscCall(PetscFree(start));
-  PetscCall(PetscFree2(negcurv, escapes));
+  PetscCall(PetscFree3(start, negcurv, escapes));
+  if (!ierr && optionsText) {
+    char       *text = NULL;
+    HylcH5Quiet q;
+    herr_t      e;
+
+    HylcH5QuietBegin(&q);
+    e = HylcH5ReadString(file, "options", &text);
+    HylcH5QuietEnd(&q);
+    if (e < 0) {
+      free(text);
+      ierr = PETSC_ERR_FILE_READ;
+      (void)PetscError(PETSC_COMM_SELF, __LINE__, PETSC_FUNCTION_NAME, __FILE__, ierr, PETSC_ERROR_INITIAL, "Cannot read dataset /options of %s (the options text)", path);
+    } else {
+      ierr = PetscStrallocpy(text ? text : "", optionsText);
+      free(text);
+    }
+  }
+  if (ierr) {
+    PetscCall(PetscFree(recs));
+    PetscCall(PetscFree(done));
+  }
+  PetscCall(ierr);
   *nsamples = N;
   *recs_    = recs;
   *done_    = done;
-  if (optionsText) {
-    char *text = NULL;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 
-    HylcCallHDF5(HylcH5ReadString(file, "options", &text));
-    PetscCall(PetscStrallocpy(text, optionsText));
-    free(text);
-  }
+/*@C
+  HylcSamplesCheckHDF5 - Checks the datasets of /samples of a samples file (each there, a dataset of the
+  class and shape of the format, one row per sample, storing what it declares) before anything is read:
+  a problem is one PETSC_ERR_FILE_UNEXPECTED error "path (option): ..." naming the dataset, and HDF5
+  prints nothing. HylcSamplesReadHDF5() makes the same checks. Not collective.
+
+  Input Parameters:
++ path   - the file
+- option - the option that named it (for the messages), or NULL
+
+  Level: developer
+@*/
+PetscErrorCode HylcSamplesCheckHDF5(const char path[], const char option[])
+{
+  hid_t          file;
+  HylcH5Quiet    quiet;
+  PetscErrorCode ierr;
+  hsize_t        N;
+  char           msg[256];
+
+  PetscFunctionBegin;
+  HylcH5QuietBegin(&quiet);
+  file = HylcH5FileOpen(path);
+  if (file < 0) HylcH5ErrorText(msg);
+  HylcH5QuietEnd(&quiet);
+  PetscCheck(file >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot open the samples file %s%s%s%s as HDF5%s", path, option ? " (" : "", option ? option : "", option ? ")" : "", msg);
+  ierr = HylcTableCheckHDF5Columns(file, path, option, "samples", NSAMPLESCOLUMNS, SamplesColumns, &N);
+  HylcH5QuietBegin(&quiet);
+  H5Fclose(file);
+  HylcH5QuietEnd(&quiet);
+  PetscCall(ierr);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -483,7 +537,9 @@ PetscErrorCode HylcSamplesReadHDF5(const char path[], long *nsamples, HylcSample
     HylcH5QuietEnd(&quiet);
     SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot open the samples file %s%s", path, msg);
   }
-  ierr = ReadFile(file, nsamples, recs, done, optionsText);
+  HylcH5QuietEnd(&quiet);
+  ierr = ReadFile(file, path, nsamples, recs, done, optionsText);
+  HylcH5QuietBegin(&quiet);
   H5Fclose(file);
   HylcH5QuietEnd(&quiet);
   HylcH5Where = "?";

@@ -1,4 +1,5 @@
 /* HylcSampler: the setters of the options and HylcSamplerSetFromOptions. */
+#include <hylc/options.h>
 #include "samplerimpl.h"
 
 #define SAMPLER_SETTER_BEGIN                            \
@@ -263,7 +264,7 @@ PetscErrorCode HylcSamplerSetExportRaw(HylcSampler S, const char dir[], PetscRea
 
   Input Parameters:
 + S      - the sampler
-. mode   - HYLC_REFERENCE_AUTO (for generated patterns), HYLC_REFERENCE_COMPUTE or HYLC_REFERENCE_NONE
+. mode   - HYLC_REFERENCE_AUTO (for generated patterns), HYLC_REFERENCE_COMPUTE, HYLC_REFERENCE_NONE or HYLC_REFERENCE_RELAX (the in-plane minimum of the pattern as given)
 - output - .pyp file for the reference state (NULL or empty: none)
 
   Level: intermediate
@@ -271,7 +272,7 @@ PetscErrorCode HylcSamplerSetExportRaw(HylcSampler S, const char dir[], PetscRea
 PetscErrorCode HylcSamplerSetReference(HylcSampler S, HylcReferenceMode mode, const char output[])
 {
   SAMPLER_SETTER_BEGIN;
-  PetscCheck(mode >= HYLC_REFERENCE_AUTO && mode <= HYLC_REFERENCE_NONE, PetscObjectComm((PetscObject)S), PETSC_ERR_ARG_OUTOFRANGE, "Unknown reference mode %d", (int)mode);
+  PetscCheck(mode >= HYLC_REFERENCE_AUTO && mode <= HYLC_REFERENCE_RELAX, PetscObjectComm((PetscObject)S), PETSC_ERR_ARG_OUTOFRANGE, "Unknown reference mode %d", (int)mode);
   S->refmode = mode;
   PetscCall(PetscStrncpy(S->refout, output ? output : "", sizeof(S->refout)));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -338,7 +339,7 @@ PetscErrorCode HylcSamplerSetFromOptions(HylcSampler S)
   PetscCall(HylcSamplerSetYarnModel(S, &model));
   PetscCall(HylcReferenceParamsSetFromOptions(comm, &S->refpar));
   PetscObjectOptionsBegin((PetscObject)S);
-  PetscCall(PetscOptionsEnum("-sampler_reference", "Reference state (Algorithm C1): auto (compute for generated patterns, not for files), compute, none", "HylcSamplerSetReference", HylcReferenceModes, mode, &mode, NULL));
+  PetscCall(PetscOptionsEnum("-sampler_reference", "Reference state (Algorithm C1): auto (compute for generated patterns, not for files), compute, none, or relax (only the in-plane minimum over the periods of the pattern as given: a stored tile made a minimum of the configured yarn)", "HylcSamplerSetReference", HylcReferenceModes, mode, &mode, NULL));
   PetscCall(PetscOptionsString("-reference_output", "Write the reference state as .pyp", "HylcSamplerSetReference", refout, refout, sizeof(refout), NULL));
   PetscCall(PetscOptionsString("-sampler_output", "HDF5 output file (the journal is <output>.journal)", "HylcSamplerSetOutput", output, output, sizeof(output), NULL));
   PetscCall(PetscOptionsBool("-sampler_resume", "Continue an interrupted run from its journal <output>.journal (refused, naming the differences, if any setting that changes results differs)", "HylcSamplerSetResume", resume, &resume, NULL));
@@ -349,10 +350,10 @@ PetscErrorCode HylcSamplerSetFromOptions(HylcSampler S)
   PetscCall(PetscOptionsString("-sampler_terms", "Terms to sample: all, or a comma list of zero, sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11", "HylcSamplerSetTerms", terms, terms, sizeof(terms), &tset));
   PetscCall(PetscOptionsInt("-sampler_batch", "Samples per batch (unit of work of a rank)", "HylcSamplerSetBatchSize", batch, &batch, NULL));
   PetscCall(PetscOptionsEnum("-sampler_start", "How each sample's solve starts: continue (half-lines of the plan from the zero strain outward, each sample from its predecessor's equilibrium, retried cold if it does not converge; the unit of work is a half-line), cold (every sample from u~ = 0: the paper's procedure) or both (every sample from both, the lower Psi kept, the other in /samples/psi_other: a map of multistability)", "HylcSamplerSetStart", HylcSamplerStarts, start, &start, NULL));
-  PetscCall(PetscOptionsReal("-sampler_both_rtol", "-sampler_start both: relative difference of the two starts' Psi above which a sample is flagged multistable (1)", "HylcSamplerSetBothTolerance", bothRtol, &bothRtol, NULL));
-  PetscCall(PetscOptionsReal("-sampler_progress", "Seconds between progress lines", "HylcSamplerSetProgressInterval", progress, &progress, NULL));
+  PetscCall(HylcOptionsReal("-sampler_both_rtol", "-sampler_start both: relative difference of the two starts' Psi above which a sample is flagged multistable (1)", "HylcSamplerSetBothTolerance", bothRtol, &bothRtol, NULL));
+  PetscCall(HylcOptionsReal("-sampler_progress", "Seconds between progress lines", "HylcSamplerSetProgressInterval", progress, &progress, NULL));
   PetscCall(PetscOptionsString("-sampler_export_raw", "Also write the paper's raw layout into this directory: data.txt (rows sx sa sy II00 II01 II11 Psi in the order of C4) and info.txt (area, area density)", "HylcSamplerSetExportRaw", rawdir, rawdir, sizeof(rawdir), NULL));
-  PetscCall(PetscOptionsReal("-sampler_density", "Volumetric yarn density for the area density of info.txt (kg/m^3; <= 0: 0.12 kg/m^2 / r, as hylc-fit)", "HylcSamplerSetExportRaw", density, &density, NULL));
+  PetscCall(HylcOptionsReal("-sampler_density", "Volumetric yarn density for the area density of info.txt (kg/m^3; <= 0: 0.12 kg/m^2 / r, as hylc-fit)", "HylcSamplerSetExportRaw", density, &density, NULL));
   PetscCall(PetscOptionsName("-sampler_view", "Print the sampling job after its set-up", "HylcSamplerView", NULL));
   PetscOptionsEnd();
   PetscCall(HylcSamplerSetReference(S, (HylcReferenceMode)mode, refout));

@@ -1,4 +1,5 @@
 /* The sampling plan's options, shared by hylc-sample and hylc-calibrate (one spelling, one check). */
+#include <hylc/options.h>
 #include <hylc/sampler.h>
 #include <string.h>
 
@@ -40,7 +41,7 @@ PetscErrorCode HylcPlanRangesFromOptions(PetscOptionItems *PetscOptionsObject, M
     PetscBool set;
     char      opt[64];
     PetscCall(PetscSNPrintf(opt, sizeof(opt), "-sampler_range_%s", cn[c]));
-    PetscCall(PetscOptionsRealArray(opt, "1D sampling range min,max of this strain (II in 1/m; default the family's, II for r = 1 mm scaled by 1 mm / r); the 2D ranges scale with it", man, v, &n, &set));
+    PetscCall(HylcOptionsRealArray(opt, "1D sampling range min,max of this strain (II in 1/m; default the family's, II for r = 1 mm scaled by 1 mm / r); the 2D ranges scale with it", man, v, &n, &set));
     if (set) {
       PetscCheck(n == 2 && v[0] <= v[1], comm, PETSC_ERR_USER_INPUT, "%s needs two values min,max with min <= max", opt);
       ranges->set[c] = PETSC_TRUE;

@@ -1,21 +1,23 @@
 /* The reference state of Algorithm C1 (include/hylc/reference.h). */
+#include <hylc/options.h>
 #include <hylc/reference.h>
 
-const char *const        HylcReferenceModes[] = {"auto", "compute", "none", "HylcReferenceMode", "HYLC_REFERENCE_", NULL};
+const char *const        HylcReferenceModes[] = {"auto", "compute", "none", "relax", "HylcReferenceMode", "HYLC_REFERENCE_", NULL};
 static const char *const Kinds[]              = {"auto", "knit", "woven", "HylcReferenceKind", "", NULL};
 
 PetscErrorCode HylcReferenceParamsDefault(HylcReferenceParams *p)
 {
   PetscFunctionBegin;
-  p->etol      = 1e-10;
-  p->maxRounds = 30;
-  p->kind      = 0;
-  p->tension   = PETSC_TRUE;
-  p->minimum   = PETSC_TRUE;
-  p->lo        = -0.4;
-  p->hi        = 0.2;
-  p->xtol      = 1e-4;
-  p->maxEvals  = 80;
+  p->etol       = 1e-10;
+  p->maxRounds  = 30;
+  p->kind       = 0;
+  p->stressFree = PETSC_TRUE;
+  p->tension    = PETSC_TRUE;
+  p->minimum    = PETSC_TRUE;
+  p->lo         = -0.4;
+  p->hi         = 0.2;
+  p->xtol       = 1e-4;
+  p->maxEvals   = 80;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -28,13 +30,14 @@ PetscErrorCode HylcReferenceParamsSetFromOptions(MPI_Comm comm, HylcReferencePar
 
   PetscFunctionBegin;
   PetscOptionsBegin(comm, NULL, "Reference state (Algorithm C1)", "HylcReferenceState");
-  PetscCall(PetscOptionsReal("-reference_etol", "Stress-free relaxation: stop when the energy is below this (J)", "HylcReferenceStateCompute", p->etol, &p->etol, NULL));
+  PetscCall(HylcOptionsReal("-reference_etol", "Stress-free relaxation: stop when the energy is below this (J)", "HylcReferenceStateCompute", p->etol, &p->etol, NULL));
   PetscCall(PetscOptionsInt("-reference_max_rounds", "Stress-free relaxation: at most this many reset-and-relax rounds", "HylcReferenceStateCompute", p->maxRounds, &p->maxRounds, NULL));
   PetscCall(PetscOptionsEnum("-reference_kind", "Tension factors: knit (rest lengths x 0.9, curvatures x 0.8) or woven (curvatures x 0.9); auto: knit if every yarn runs along x", "HylcReferenceStateCompute", Kinds, kind, &kind, NULL));
+  PetscCall(PetscOptionsBool("-reference_stress_free", "Reset the rest values to the geometry and relax (false keeps the pattern's rest data)", "HylcReferenceStateCompute", p->stressFree, &p->stressFree, NULL));
   PetscCall(PetscOptionsBool("-reference_tension", "Apply the tension factors", "HylcReferenceStateCompute", p->tension, &p->tension, NULL));
   PetscCall(PetscOptionsBool("-reference_minimum", "Find the in-plane minimum of the energy over the periods", "HylcReferenceStateCompute", p->minimum, &p->minimum, NULL));
-  PetscCall(PetscOptionsRealArray("-reference_bounds", "Bounds lo,hi of sx and sy in the in-plane minimum", "HylcReferenceStateCompute", b, &nb, &set));
-  PetscCall(PetscOptionsReal("-reference_xtol", "In-plane minimum: Nelder-Mead simplex size tolerance (strain)", "HylcReferenceStateCompute", p->xtol, &p->xtol, NULL));
+  PetscCall(HylcOptionsRealArray("-reference_bounds", "Bounds lo,hi of sx and sy in the in-plane minimum", "HylcReferenceStateCompute", b, &nb, &set));
+  PetscCall(HylcOptionsReal("-reference_xtol", "In-plane minimum: Nelder-Mead simplex size tolerance (strain)", "HylcReferenceStateCompute", p->xtol, &p->xtol, NULL));
   PetscCall(PetscOptionsInt("-reference_max_evals", "In-plane minimum: at most this many solves", "HylcReferenceStateCompute", p->maxEvals, &p->maxEvals, NULL));
   PetscOptionsEnd();
   PetscCheck(!set || (nb == 2 && b[0] < 0 && b[1] > 0 && b[0] > -1), comm, PETSC_ERR_USER_INPUT, "-reference_bounds needs lo,hi with -1 < lo < 0 < hi");
@@ -162,7 +165,7 @@ PetscErrorCode HylcReferenceStateCompute(HylcPattern in, const HylcYarnModel *mo
   /* 1. stress free: rest values := current values, relax, repeat */
   PetscReal Eprev = PETSC_INFINITY;
   PetscBool stuck = PETSC_FALSE;
-  for (round = 0; round < par->maxRounds; round++) {
+  for (round = 0; par->stressFree && round < par->maxRounds; round++) {
     PetscCall(HylcPatternSetRestFromGeometry(p));
     PetscCall(Relaxed(p, model, 0, 0, &q, &E, &st));
     PetscCall(HylcPatternDestroy(&p));
@@ -176,8 +179,11 @@ PetscErrorCode HylcReferenceStateCompute(HylcPattern in, const HylcYarnModel *mo
     }
     Eprev = E;
   }
-  if (E >= par->etol && v) PetscCall(PetscViewerASCIIPrintf(v, "[reference] warning: no stress-free state at these periods (E = %.3e J %s); the remaining contact is relaxed by the in-plane minimum\n", (double)E, stuck ? "stopped falling" : "after the last round"));
-  PetscCall(HylcPatternSetRestFromGeometry(p));
+  if (par->stressFree && E >= par->etol && v) PetscCall(PetscViewerASCIIPrintf(v, "[reference] warning: no stress-free state at these periods (E = %.3e J %s); the remaining contact is relaxed by the in-plane minimum\n", (double)E, stuck ? "stopped falling" : "after the last round"));
+  if (par->stressFree)
+    PetscCall(HylcPatternSetRestFromGeometry(p));
+  else if (v)
+    PetscCall(PetscViewerASCIIPrintf(v, "[reference] the pattern's rest data kept (no stress-free relaxation)\n"));
   /* 2. tension */
   PetscCall(HylcPatternGetNumLoops(p, &nloops));
   for (PetscInt l = 0; l < nloops; l++) {
@@ -207,5 +213,49 @@ PetscErrorCode HylcReferenceStateCompute(HylcPattern in, const HylcYarnModel *mo
   PetscCall(HylcPatternRecentre(q));
   if (v) PetscCall(PetscViewerASCIIPrintf(v, "[reference] reference state: periods scaled by (%.6f, %.6f), E = %.6e J\n", (double)(1 + best[0]), (double)(1 + best[1]), (double)E));
   *out = q;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcReferenceStateForMode - The reference state a job's -sampler_reference or -calibrate_reference mode
+  asks for: compute (Algorithm C1), auto (C1 for a generated pattern, none for a pattern read from a file,
+  which is its own reference state), none, or relax (the pattern's rest data kept, no tension: only the
+  in-plane minimum over the periods and the recentring, so that the stored tile under the configured yarn
+  becomes a minimum of the model). *out is NULL when the mode asks for none.
+
+  Collective
+
+  Input Parameters:
++ in    - the pattern, set up
+. mode  - the mode
+. model - the yarn model
+. par   - the parameters of C1 (relax overrides stress-free, tension and minimum)
+- v     - viewer for progress lines (may be NULL)
+
+  Output Parameter:
+. out - the reference state, a new pattern, or NULL
+
+  Level: intermediate
+
+.seealso: HylcReferenceStateCompute()
+@*/
+PetscErrorCode HylcReferenceStateForMode(HylcPattern in, HylcReferenceMode mode, const HylcYarnModel *model, const HylcReferenceParams *par, PetscViewer v, HylcPattern *out)
+{
+  HylcPatternType     type;
+  PetscBool           isfile;
+  HylcReferenceParams p = *par;
+
+  PetscFunctionBegin;
+  *out = NULL;
+  PetscCall(HylcPatternGetType(in, &type));
+  PetscCall(PetscStrcmp(type, HYLCPATTERNFILE, &isfile));
+  if (mode == HYLC_REFERENCE_NONE || (mode == HYLC_REFERENCE_AUTO && isfile)) PetscFunctionReturn(PETSC_SUCCESS);
+  if (mode == HYLC_REFERENCE_RELAX) {
+    p.stressFree = PETSC_FALSE;
+    p.tension    = PETSC_FALSE;
+    p.minimum    = PETSC_TRUE;
+    if (v) PetscCall(PetscViewerASCIIPrintf(v, "[reference] relax: the in-plane minimum of the pattern as given, under the configured yarn\n"));
+  }
+  PetscCall(HylcReferenceStateCompute(in, model, &p, v, out));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

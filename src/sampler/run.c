@@ -1,5 +1,6 @@
 /* HylcSampler: the set-up (pattern, plan, solver, outputs, journal, reference state) and the MPI sampling run. */
 #include "samplerimpl.h"
+#include <hylc/files.h>
 #include <petsctime.h>
 #include <unistd.h>
 #include <string.h>
@@ -45,25 +46,28 @@ static PetscErrorCode CheckOutputsAndLock(HylcSampler S)
   PetscFunctionBegin;
   PetscCall(PetscSNPrintf(jpath, sizeof(jpath), "%s.journal", S->output));
   PetscCall(PetscOptionsGetString(NULL, NULL, "-pattern_file", pfile, sizeof(pfile), &haspf));
-  PetscCall(HylcFileCheckOutput(PETSC_COMM_SELF, S->output, "-sampler_output"));
-  PetscCall(HylcFileCheckOutput(PETSC_COMM_SELF, jpath, "the journal of -sampler_output"));
-  PetscCall(HylcFileCheckDistinct(PETSC_COMM_SELF, S->output, "-sampler_output", pfile, "-pattern_file"));
-  PetscCall(HylcFileCheckDistinct(PETSC_COMM_SELF, jpath, "the journal of -sampler_output", pfile, "-pattern_file"));
-  if (S->refout[0]) {
-    PetscCall(HylcFileCheckOutput(PETSC_COMM_SELF, S->refout, "-reference_output"));
-    PetscCall(HylcFileCheckDistinct(PETSC_COMM_SELF, S->refout, "-reference_output", pfile, "-pattern_file"));
-    PetscCall(HylcFileCheckDistinct(PETSC_COMM_SELF, S->refout, "-reference_output", S->output, "-sampler_output"));
-    PetscCall(HylcFileCheckDistinct(PETSC_COMM_SELF, S->refout, "-reference_output", jpath, "the journal of -sampler_output"));
-    PetscCheck(strcmp(S->refout, S->output) && strcmp(S->refout, jpath), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-reference_output %s is the samples file or its journal", S->refout);
-  }
   if (S->rawdir[0]) {
     PetscCheck(stat(S->rawdir, &st) == 0 && S_ISDIR(st.st_mode), PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot write into -sampler_export_raw %s: %s", S->rawdir, stat(S->rawdir, &st) ? "no such directory (create it first)" : "not a directory");
     PetscCall(PetscSNPrintf(raw[0], sizeof(raw[0]), "%s/data.txt", S->rawdir));
     PetscCall(PetscSNPrintf(raw[1], sizeof(raw[1]), "%s/info.txt", S->rawdir));
-    for (int i = 0; i < 2; i++) {
-      PetscCall(HylcFileCheckOutput(PETSC_COMM_SELF, raw[i], "-sampler_export_raw"));
-      PetscCall(HylcFileCheckDistinct(PETSC_COMM_SELF, raw[i], "-sampler_export_raw", pfile, "-pattern_file"));
-    }
+  }
+  /* every file (include/hylc/files.h): the pattern file and the options files read; the samples file, its
+     journal, the reference state and the raw export writable and within the path limits, none of them
+     an input or another output */
+  {
+    HylcFiles      files;
+    PetscErrorCode ierr;
+    PetscCall(HylcFilesCreate(PETSC_COMM_SELF, &files));
+    ierr = HylcFilesAddOptionsFiles(files);
+    if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_INPUT, pfile, "-pattern_file");
+    if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, S->output, "-sampler_output");
+    if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, jpath, "the journal of -sampler_output");
+    if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, S->refout, "-reference_output");
+    if (!ierr && S->rawdir[0]) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, raw[0], "-sampler_export_raw");
+    if (!ierr && S->rawdir[0]) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, raw[1], "-sampler_export_raw");
+    if (!ierr) ierr = HylcFilesCheck(files);
+    PetscCall(HylcFilesDestroy(&files));
+    PetscCall(ierr);
   }
   if (!S->resume && !S->overwrite) PetscCheck(access(S->output, F_OK) != 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "Output %s exists: start over with -sampler_overwrite, or continue its run with -sampler_resume", S->output);
   if (S->resume) PetscCheck(access(S->output, F_OK) != 0 || access(jpath, F_OK) == 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-sampler_resume: output %s exists but its journal %s does not, so there is no run to continue: start over with -sampler_overwrite", S->output, jpath);
@@ -90,11 +94,9 @@ static PetscErrorCode CheckOutputsAndLock(HylcSampler S)
 @*/
 PetscErrorCode HylcSamplerSetUp(HylcSampler S)
 {
-  MPI_Comm        comm = PetscObjectComm((PetscObject)S);
-  HylcPatternType type;
-  PetscBool       isfile;
-  int             code      = 0;
-  char            msg[2048] = "";
+  MPI_Comm comm      = PetscObjectComm((PetscObject)S);
+  int      code      = 0;
+  char     msg[2048] = "";
 
   PetscFunctionBegin;
   PetscValidHeaderSpecific(S, HYLC_SAMPLER_CLASSID, 1);
@@ -119,14 +121,14 @@ PetscErrorCode HylcSamplerSetUp(HylcSampler S)
     PetscCallMPI(MPI_Bcast(msg, (PetscMPIInt)sizeof(msg), MPI_CHAR, 0, comm));
     SETERRQ(comm, (PetscErrorCode)code, "%s", msg);
   }
-  PetscCall(HylcPatternGetType(S->pat, &type));
-  PetscCall(PetscStrcmp(type, HYLCPATTERNFILE, &isfile));
-  if (S->refmode == HYLC_REFERENCE_COMPUTE || (S->refmode == HYLC_REFERENCE_AUTO && !isfile)) {
+  {
     HylcPattern ref;
-    PetscCall(HylcReferenceStateCompute(S->pat, &S->model, &S->refpar, S->rank ? NULL : PETSC_VIEWER_STDOUT_SELF, &ref));
-    PetscCall(HylcPatternDestroy(&S->pat));
-    S->pat = ref;
-    PetscCall(HylcMicroSetPattern(S->micro, S->pat, &S->model));
+    PetscCall(HylcReferenceStateForMode(S->pat, S->refmode, &S->model, &S->refpar, S->rank ? NULL : PETSC_VIEWER_STDOUT_SELF, &ref));
+    if (ref) {
+      PetscCall(HylcPatternDestroy(&S->pat));
+      S->pat = ref;
+      PetscCall(HylcMicroSetPattern(S->micro, S->pat, &S->model));
+    }
   }
   if (S->refout[0]) PetscCall(HylcPatternWrite(S->pat, S->refout));
   S->setupcalled = PETSC_TRUE;

@@ -1,5 +1,6 @@
 /* Concise error reports for user-input errors in hylc programs. */
 #include <hylc/sys.h>
+#include <hylc/files.h>
 #include <unistd.h>
 #include <ctype.h>
 #include <errno.h>
@@ -221,20 +222,56 @@ int HylcMainFinalize(PetscErrorCode ierr)
 }
 
 /*@C
+  HylcShareError - Raises on every rank of comm the error that rank 0 met in work it did alone. Rank 0
+  runs the work with PetscReturnErrorHandler pushed (so nothing is printed there) and passes its error
+  code; the other ranks pass 0. If rank 0 failed, every rank raises its code with its message, so the
+  program reports it once, in one line, and no rank is left waiting in a collective. Collective.
+
+  Input Parameters:
++ comm - the ranks
+- ierr - rank 0: the work's error code; other ranks: ignored
+
+  Level: developer
+@*/
+PetscErrorCode HylcShareError(MPI_Comm comm, PetscErrorCode ierr)
+{
+  PetscMPIInt rank;
+  int         code      = 0;
+  char        msg[2048] = "";
+
+  PetscFunctionBegin;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (!rank && ierr) {
+    char *text = NULL;
+    code       = (int)ierr;
+    PetscCall(PetscErrorMessage(ierr, NULL, &text));
+    PetscCall(PetscStrncpy(msg, text && text[0] ? text : "an error on rank 0", sizeof(msg)));
+  }
+  PetscCallMPI(MPI_Bcast(&code, 1, MPI_INT, 0, comm));
+  if (!code) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCallMPI(MPI_Bcast(msg, (PetscMPIInt)sizeof(msg), MPI_CHAR, 0, comm));
+  SETERRQ(comm, (PetscErrorCode)code, "%s", msg);
+}
+
+/*@C
   HylcCheckOptionsUsed - Refuses options that nothing has read (misspelt or not for this program), before
   any work is done. Collective.
 @*/
 PetscErrorCode HylcCheckOptionsUsed(MPI_Comm comm)
 {
-  PetscInt n     = 0;
+  PetscInt n = 0, shown = 0;
   char   **names = NULL, **values = NULL, list[1024] = "";
 
   PetscFunctionBegin;
   PetscCall(PetscOptionsLeftGet(NULL, &n, &names, &values));
+  /* as many names as fit, then how many more (PETSc 3.18's PetscStrlcat writes past a nearly full buffer) */
   for (PetscInt i = 0; i < n; i++) {
-    PetscCall(PetscStrlcat(list, " -", sizeof(list)));
-    PetscCall(PetscStrlcat(list, names[i], sizeof(list)));
+    const size_t used = strlen(list), need = strlen(names[i]) + 2;
+    if (used + need + 32 >= sizeof(list)) break;
+    snprintf(list + used, sizeof(list) - used, " -%s", names[i]);
+    shown++;
   }
+  if (shown < n) snprintf(list + strlen(list), sizeof(list) - strlen(list), " and %" PetscInt_FMT " more", n - shown);
   PetscCall(PetscOptionsLeftRestore(NULL, &n, &names, &values));
   PetscCheck(!list[0], comm, PETSC_ERR_USER_INPUT, "Unknown option(s):%s (misspelt, or not for this program; -help lists the options)", list);
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -405,27 +442,162 @@ static int HylcCheckYAMLFile(const char path[], char msg[], size_t len)
   return bad;
 }
 
-/* Checks every options file named on the command line (-options_file F, YAML when F ends in .yaml or
-   .yml; -options_file_yaml F): it must exist and not be a directory, and a YAML file must be well formed.
-   Returns 0 or writes a one-line message and returns 1. */
-static int HylcCheckOptionsFiles(int argc, char **argv, char msg[], size_t len)
+/* ---- every options file checked, and the options counted, before PetscInitialize() ---- */
+
+/* PETSc 3.18 holds at most this many options (MAXOPTIONS of src/sys/objects/options.c); more end
+   PetscInitialize() with a traceback of a thousand lines */
+#define HYLC_MAX_OPTIONS 512
+
+typedef struct {
+  char  *msg;
+  size_t len;
+  int    bad;
+  char  *keys[HYLC_MAX_OPTIONS + 1]; /* distinct option names, lower case */
+  int    nkeys;
+} OptionsScan;
+
+/* PETSc's PetscOptionsValidKey(): "-" or "--", a letter, and not a number ("-inf") */
+static int HylcValidKey(const char *k)
 {
-  for (int i = 1; i + 1 < argc; i++) {
-    const int yaml = !strcmp(argv[i], "-options_file_yaml");
-    if (strcmp(argv[i], "-options_file") && !yaml) continue;
-    const char *f = argv[i + 1];
-    struct stat st;
-    if (yaml || HylcEndsWith(f, ".yaml") || HylcEndsWith(f, ".yml")) {
-      if (HylcCheckYAMLFile(f, msg, len)) return 1;
-    } else if (stat(f, &st) != 0) {
-      snprintf(msg, len, "Cannot open options file %s: %s", f, strerror(errno));
-      return 1;
-    } else if (S_ISDIR(st.st_mode)) {
-      snprintf(msg, len, "Cannot read options file %s: it is a directory", f);
-      return 1;
+  char *end;
+  if (!k || k[0] != '-') return 0;
+  if (k[1] == '-') k++;
+  if (!isalpha((unsigned char)k[1])) return 0;
+  (void)strtod(k, &end);
+  return !(end != k && !(*end == '_' || isalnum((unsigned char)*end)));
+}
+
+/* counts the option key (without its dashes); past the limit, writes the message naming where */
+static void HylcCountKey(OptionsScan *o, const char *key, size_t n, const char where[])
+{
+  char name[256];
+  if (o->bad) return;
+  while (n && *key == '-') key++, n--;
+  if (!n) return;
+  if (n >= sizeof(name)) n = sizeof(name) - 1;
+  for (size_t i = 0; i < n; i++) name[i] = (char)tolower((unsigned char)key[i]);
+  name[n] = 0;
+  /* processed by PETSc's reader, not stored */
+  if (!strcmp(name, "options_file") || !strcmp(name, "options_file_yaml") || !strcmp(name, "prefix_push") || !strcmp(name, "prefix_pop")) return;
+  for (int i = 0; i < o->nkeys; i++)
+    if (!strcmp(o->keys[i], name)) return;
+  if (o->nkeys == HYLC_MAX_OPTIONS) {
+    snprintf(o->msg, o->len, "Too many options: -%s (%s) is the %dth distinct one; PETSc holds at most %d (the command line, PETSC_OPTIONS and the options files together)", name, where, HYLC_MAX_OPTIONS + 1, HYLC_MAX_OPTIONS);
+    o->bad = 1;
+    return;
+  }
+  o->keys[o->nkeys++] = strdup(name);
+}
+
+/* the keys of a list of arguments (the command line, PETSC_OPTIONS) */
+static void HylcCountArgs(OptionsScan *o, int n, char **args, const char where[])
+{
+  for (int i = 0; i < n; i++)
+    if (HylcValidKey(args[i])) HylcCountKey(o, args[i], strlen(args[i]), where);
+}
+
+/* the keys of a plain options file (one "-key value" per line) or a YAML one ("key: value", nested keys
+   joined with '_' as PETSc does) */
+static void HylcCountFile(OptionsScan *o, const char path[], int yaml)
+{
+  FILE   *fp   = fopen(path, "r");
+  char   *line = NULL, where[PETSC_MAX_PATH_LEN + 32];
+  size_t  cap  = 0;
+  ssize_t len;
+  int     lineno = 0, depth = 0, indent[64];
+  char    stack[64][128];
+
+  if (!fp) return;
+  while (!o->bad && (len = getline(&line, &cap, fp)) >= 0) {
+    char *s   = line, *c;
+    int   ind = 0;
+    lineno++;
+    snprintf(where, sizeof(where), "%s:%d", path, lineno);
+    if (!yaml) {
+      if ((c = strchr(s, '#'))) *c = 0;
+      while (HylcIsSpace(*s)) s++;
+      c = s;
+      while (*c && !HylcIsSpace(*c)) c++;
+      if (c > s && *s == '-') {
+        char k = *c;
+        *c     = 0;
+        if (HylcValidKey(s)) HylcCountKey(o, s, strlen(s), where);
+        *c = k;
+      }
+      continue;
+    }
+    while (*s == ' ') s++, ind++;
+    if (*s == '#' || !*s || HylcIsSpace(*s) || (s[0] == '-' && (s[1] == ' ' || !s[1] || s[1] == '\n'))) continue;
+    if (!strncmp(s, "---", 3) || !strncmp(s, "...", 3) || *s == '%') continue;
+    for (c = s; *c && !(*c == ':' && (HylcIsSpace(c[1]) || !c[1])); c++) {}
+    if (!*c) continue;
+    while (depth > 0 && indent[depth - 1] >= ind) depth--;
+    {
+      char *v = c + 1;
+      while (*v == ' ' || *v == '\t') v++;
+      if (!*v || *v == '#' || *v == '\n' || *v == '\r') { /* "key:" opens a block */
+        if (depth < 64) {
+          indent[depth] = ind;
+          snprintf(stack[depth], sizeof(stack[depth]), "%.*s", (int)(c - s), s);
+          depth++;
+        }
+      } else {
+        char full[256] = "";
+        for (int i = 0; i < depth; i++) snprintf(full + strlen(full), sizeof(full) - strlen(full), "%.127s_", stack[i]);
+        snprintf(full + strlen(full), sizeof(full) - strlen(full), "%.*s", (int)(c - s), s);
+        HylcCountKey(o, full, strlen(full), where);
+      }
     }
   }
-  return 0;
+  free(line);
+  fclose(fp);
+}
+
+/* each options file: it must exist and not be a directory, a YAML file must be well formed; its keys
+   are counted */
+static void HylcScanOptionsFile(const char path[], const char what[], int yaml, void *ctx)
+{
+  OptionsScan *o = (OptionsScan *)ctx;
+  struct stat  st;
+
+  if (o->bad) return;
+  if (yaml) {
+    if (HylcCheckYAMLFile(path, o->msg, o->len)) {
+      o->bad = 1;
+      return;
+    }
+  } else if (stat(path, &st) != 0) {
+    snprintf(o->msg, o->len, "Cannot open options file %s (%s): %s", path, what, strerror(errno));
+    o->bad = 1;
+    return;
+  } else if (S_ISDIR(st.st_mode)) {
+    snprintf(o->msg, o->len, "Cannot read options file %s (%s): it is a directory", path, what);
+    o->bad = 1;
+    return;
+  }
+  HylcCountFile(o, path, yaml);
+}
+
+/* Checks every options file the program will read (HylcOptionsFilesForEach(): the command line,
+   PETSC_OPTIONS, nested -options_file, petscrc): it must exist and not be a directory, and a YAML file
+   must be well formed; and counts the distinct options of all sources against PETSc's limit. Returns 0
+   or writes a one-line message and returns 1. */
+static int HylcCheckOptionsFiles(int argc, char **argv, char msg[], size_t len)
+{
+  OptionsScan o;
+  char       *env = getenv("PETSC_OPTIONS") ? strdup(getenv("PETSC_OPTIONS")) : NULL, *eargs[1024], *save = NULL, *t;
+  int         ne = 0;
+
+  memset(&o, 0, sizeof(o));
+  o.msg = msg;
+  o.len = len;
+  HylcOptionsFilesForEach(argc, argv, HylcScanOptionsFile, &o);
+  for (t = env ? strtok_r(env, " \t\r\n", &save) : NULL; t && ne < 1024; t = strtok_r(NULL, " \t\r\n", &save)) eargs[ne++] = t;
+  HylcCountArgs(&o, ne, eargs, "PETSC_OPTIONS");
+  HylcCountArgs(&o, argc - 1, argv + 1, "the command line");
+  free(env);
+  for (int i = 0; i < o.nkeys; i++) free(o.keys[i]);
+  return o.bad;
 }
 
 /*@C

@@ -106,31 +106,6 @@ PetscErrorCode HylcFileCheckOutput(MPI_Comm comm, const char path[], const char 
 }
 
 /*@C
-  HylcFileCheckDistinct - Refuses an output path that names the same file as an input (same device and
-  inode, so links and different spellings are caught). An output that does not exist yet is distinct.
-  Not collective.
-
-  Input Parameters:
-+ comm   - communicator the error is raised on
-. out    - the output path
-. outopt - the option that named the output
-. in     - the input path (NULL or empty: nothing to check)
-- inopt  - the option that named the input
-
-  Level: developer
-@*/
-PetscErrorCode HylcFileCheckDistinct(MPI_Comm comm, const char out[], const char outopt[], const char in[], const char inopt[])
-{
-  struct stat so, si;
-
-  PetscFunctionBegin;
-  if (!out || !out[0] || !in || !in[0]) PetscFunctionReturn(PETSC_SUCCESS);
-  if (stat(out, &so) != 0 || stat(in, &si) != 0) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCheck(!(so.st_dev == si.st_dev && so.st_ino == si.st_ino), comm, PETSC_ERR_USER_INPUT, "Output %s (%s) is the input %s (%s): refusing to overwrite an input", out, outopt ? outopt : "output", in, inopt ? inopt : "input");
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/*@C
   HylcFileOpenTemp - Opens a new temporary file beside path (same directory, unique name), to be
   renamed onto path by HylcFileCommitTemp() once completely written, or removed by HylcFileAbortTemp().
   A crash or a full disk never leaves a partial file at path. Not collective.
@@ -197,4 +172,34 @@ void HylcFileAbortTemp(FILE **fp, const char tmp[])
   if (*fp) fclose(*fp);
   *fp = NULL;
   if (tmp && tmp[0]) unlink(tmp);
+}
+
+/*@C
+  HylcWriteUniaxialCSV - Writes a uniaxial tension curve as CSV (docs/fabric-uniaxial.md): the header line
+  "strain,T_N_per_m,lateral_strain_sa,lateral_strain_s2" and one line per point, 17 significant digits.
+  strain is the prescribed stretch s (0 at rest), T = dPsi/ds the force per unit width (N/m), sa the
+  cosine of the angle between the material axes and s2 the lateral stretch (sy for a test along x, sx
+  along y). Written atomically (HylcFileOpenTemp()). Not collective.
+
+  Input Parameters:
++ path   - the file
+. n      - the number of points
+. strain - the stretches
+. T      - the forces per unit width (N/m)
+. sa     - the shears
+- s2     - the lateral stretches
+
+  Level: intermediate
+@*/
+PetscErrorCode HylcWriteUniaxialCSV(const char path[], PetscInt n, const PetscReal strain[], const PetscReal T[], const PetscReal sa[], const PetscReal s2[])
+{
+  char  tmp[PETSC_MAX_PATH_LEN + 32];
+  FILE *fp;
+
+  PetscFunctionBegin;
+  PetscCall(HylcFileOpenTemp(path, tmp, sizeof(tmp), &fp));
+  fprintf(fp, "strain,T_N_per_m,lateral_strain_sa,lateral_strain_s2\n");
+  for (PetscInt i = 0; i < n; i++) fprintf(fp, "%.17g,%.17g,%.17g,%.17g\n", (double)strain[i], (double)T[i], (double)sa[i], (double)s2[i]);
+  PetscCall(HylcFileCommitTemp(&fp, tmp, path));
+  PetscFunctionReturn(PETSC_SUCCESS);
 }

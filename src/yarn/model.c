@@ -1,4 +1,5 @@
 /* HylcYarnModel: yarn material and contact parameters with options and documented defaults. */
+#include <hylc/options.h>
 #include <hylc/yarn.h>
 
 static const char *const ContactTypes[]   = {"quadrature", "closest", "HylcContactType", "HYLC_CONTACT_", NULL};
@@ -40,14 +41,14 @@ PetscErrorCode HylcYarnModelSetFromOptions(MPI_Comm comm, const char prefix[], H
 
   PetscFunctionBegin;
   PetscOptionsBegin(comm, prefix, "Yarn material and contact model", "HylcYarnModel");
-  PetscCall(PetscOptionsReal("-yarn_E", "Bending Young's modulus (Pa)", "HylcYarnModel", m->E, &m->E, NULL));
-  PetscCall(PetscOptionsReal("-yarn_Es", "Stretching modulus (Pa); 0 = E", "HylcYarnModel", m->Es, &m->Es, NULL));
-  PetscCall(PetscOptionsReal("-yarn_G", "Shear modulus (Pa); 0 = E/2.5", "HylcYarnModel", m->G, &m->G, NULL));
-  PetscCall(PetscOptionsReal("-yarn_kc", "Contact stiffness (N/m); 0 = 0.7 E r", "HylcYarnModel", m->kc, &m->kc, NULL));
-  PetscCall(PetscOptionsReal("-yarn_radius", "Yarn radius override (m); 0 = the pattern's", "HylcYarnModel", m->radius, &m->radius, NULL));
+  PetscCall(HylcOptionsReal("-yarn_E", "Bending Young's modulus (Pa)", "HylcYarnModel", m->E, &m->E, NULL));
+  PetscCall(HylcOptionsReal("-yarn_Es", "Stretching modulus (Pa); 0 = E", "HylcYarnModel", m->Es, &m->Es, NULL));
+  PetscCall(HylcOptionsReal("-yarn_G", "Shear modulus (Pa); 0 = E/2.5", "HylcYarnModel", m->G, &m->G, NULL));
+  PetscCall(HylcOptionsReal("-yarn_kc", "Contact stiffness (N/m); 0 = 0.7 E r", "HylcYarnModel", m->kc, &m->kc, NULL));
+  PetscCall(HylcOptionsReal("-yarn_radius", "Yarn radius override (m); 0 = the pattern's", "HylcYarnModel", m->radius, &m->radius, NULL));
   PetscCall(PetscOptionsInt("-yarn_contact_points", "Gauss points per segment for the quadrature contact", "HylcYarnModel", m->contactPoints, &m->contactPoints, NULL));
   PetscCall(PetscOptionsEnum("-yarn_contact_type", "Contact energy: quadrature (integral over both segments) or closest (one closest-point sample)", "HylcYarnModel", ContactTypes, ct, &ct, NULL));
-  PetscCall(PetscOptionsReal("-yarn_exclude_arc", "Same-yarn pairs closer than this rest arc length (units of r) do not interact", "HylcYarnModel", m->excludeArc, &m->excludeArc, NULL));
+  PetscCall(HylcOptionsReal("-yarn_exclude_arc", "Same-yarn pairs closer than this rest arc length (units of r) do not interact", "HylcYarnModel", m->excludeArc, &m->excludeArc, NULL));
   PetscCall(PetscOptionsEnum("-yarn_curvature", "Material curvature convention", "HylcYarnModel", CurvatureTypes, cv, &cv, NULL));
   PetscOptionsEnd();
   m->contactType = (HylcContactType)ct;

@@ -48,6 +48,20 @@ for h in "$@"; do
           }' "$d/data.txt" >"$out" || { rm -f "$out"; continue; }
         [ -f "$d/info.txt" ] && { printf '%%%%info.txt\n'; cat "$d/info.txt"; } >>"$out"
       done ;;
+    fuzz_calibrate_target | fuzz_eval_input)
+      # every 200th row of the paper's raw data.txt files (in the calibration's layout, and, for hylc-eval's
+      # input, the six strain columns only), and a CSV with the header of the calibration's targets
+      for d in "$ref"/pyhylc/*/; do
+        [ -f "$d/data.txt" ] || continue
+        out=$c/seed-ref-$(basename "$d").txt
+        [ -e "$out" ] && continue
+        if [ $h = fuzz_eval_input ]; then
+          awk 'NR % 200 == 1 { print $1, $2, $3, $4, $5, $6 }' "$d/data.txt" >"$out"
+        else
+          awk 'NR % 200 == 1' "$d/data.txt" >"$out"
+          { echo 'sx,sa,sy,II00,II01,II11,psi'; awk 'NR % 200 == 1 { print $1 "," $2 "," $3 "," $4 "," $5 "," $6 "," $7 }' "$d/data.txt"; } >"${out%.txt}.csv"
+        fi
+      done ;;
   esac
   echo "seeds: $h: $(ls "$c" | wc -l) inputs in $c"
 done

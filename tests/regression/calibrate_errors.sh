@@ -30,7 +30,7 @@ expect "emptydir/data.txt" -calibrate_target emptydir
 expect "No target" -calibrate_params E
 expect "-calibrate_terms: unknown term 'sz'" -calibrate_target ok.csv -calibrate_terms sx,sz
 expect "nocol.csv:1: the header has no column 'II01'" -calibrate_target nocol.csv
-expect "badnum.csv:3: column sy: 'x' is not a finite number" -calibrate_target badnum.csv
+expect "badnum.csv:3: column 3 (sy): 'x' is not a number" -calibrate_target badnum.csv
 expect "-calibrate_output" -calibrate_target ok.csv -calibrate_output nodir/p.yaml
 expect "Unknown option.*-calibrate_paramz" -calibrate_target ok.csv -calibrate_paramz E
 # the tile options (-periodic_*, -macro_*) reach every evaluation's solves (each rebuilds the tile): the

@@ -25,10 +25,19 @@ $tool -fit_input s.h5 -fit_output model.h5 -fit_json model.json -log_view >fit.t
 [ -s model.h5 ] && [ -s model.json ] || die "outputs missing"
 [ -e model.h5.tmp ] || [ -e model.json.tmp ] && die "temporary file left behind"
 for want in 'samples: 4351 used of 4351 rows (0 not converged)' 'f0: 0.1 J/m^2 (row 0' 'strain scale: 1 0.75 1 170 170' \
-            'sx       11 knots      150 samples' 'sx-sa    8x9 knots     400 samples' 'sx-sy    10x10 knots   400 samples' \
+            'sx       17 knots      150 samples' 'sx-sa    8x9 knots     400 samples' 'sx-sy    10x10 knots   400 samples' \
             'sa-II00  9x9 knots     400 samples' 'wrote model.h5' 'wrote model.json' FIT_MLS FIT_Monotone FIT_Term; do
   grep -qF -- "$want" fit.txt || { cat fit.txt; die "summary lacks '$want'"; }
 done
+# the default 1D layout is the paper's 11 knots refined by 3 on each side of 0 (issue 30); -fit_knots paper
+# is the paper's, and -fit_compat authors implies it (an explicit refined layout with it is refused)
+grep -q "1D knots: the paper's, refined towards 0 by 3 more on each side" fit.txt || { cat fit.txt; die "the default 1D layout is not the refined one"; }
+$tool -fit_input s.h5 -fit_knots paper >paper.txt 2>&1 || { cat paper.txt; die "-fit_knots paper failed"; }
+grep -qF 'sx       11 knots      150 samples' paper.txt || { cat paper.txt; die "-fit_knots paper: not 11 knots"; }
+$tool -fit_input s.h5 -fit_compat authors >authors.txt 2>&1 || { cat authors.txt; die "-fit_compat authors failed"; }
+grep -qF 'sx       11 knots      150 samples' authors.txt || { cat authors.txt; die "-fit_compat authors: not the paper's 11 knots"; }
+$tool -fit_input s.h5 -fit_compat authors -fit_knots refined >both.txt 2>&1 && die "-fit_compat authors -fit_knots refined accepted"
+grep -q "fit_compat authors.*drop -fit_knots refined" both.txt || { cat both.txt; die "-fit_compat authors -fit_knots refined: unexpected message"; }
 # every term's RMS residual is below 1 % of its energy range
 awk '/RMS residual/ { v = $0; sub(/.*\(/, "", v); sub(/%.*/, "", v); if (v + 0 >= 1) bad = bad " " $1 } END { if (bad) { print "large residual:" bad; exit 1 } }' fit.txt ||
   die "RMS residual above 1 %"

@@ -30,7 +30,7 @@ case_() { # message-regex command...
   grep -Eq -- "$want" err.txt || { cat err.txt; die "message lacks /$want/: $*"; }
   return 0
 }
-case_ 'bad/data.txt:2: not a number' $fit -fit_input bad -fit_json o.json
+case_ "bad/data.txt:2: column 4 \(II00\): 'x' is not a number" $fit -fit_input bad -fit_json o.json
 case_ 'raw/data.txt: 1 rows do not make' $fit -fit_input raw -fit_json o.json
 case_ 'term sx has only 150 usable samples' $fit -fit_input s.h5 -fit_min_samples_1d 151
 case_ 'Output s.h5 \(-fit_output\) is the input' $fit -fit_input s.h5 -fit_output s.h5

@@ -25,8 +25,8 @@ refuse 0,-1e300,0,0,0,0 '-strain: sa = -1e+300'
 refuse 0,0,0,1e300,0,0 '-strain: II00 = 1e+300: the midsurface would turn by'
 refuse 0,0,0,0,-1e300,0 '-strain: II01 = -1e+300'
 refuse 0,0,0,0,0,1e5 '-strain: II11 = 100000'
-refuse 0,0,0,inf,0,0 '-strain: II00 is not finite'
-refuse nan,0,0,0,0,0 '-strain: sx is not finite'
+refuse 0,0,0,inf,0,0 'Option -strain 0,0,0,inf,0,0: value 4 is not a finite number'
+refuse nan,0,0,0,0,0 'Option -strain nan,0,0,0,0,0: value 1 is not a finite number'
 
 psi0=$($tool -pattern_type plain -strain 0,0,0,0,0,0 | sed -n 's/^psi: //p')
 for z in 1e-320,0,0,0,0,0 0,-1e-320,0,0,0,0 0,0,1e-320,0,0,0 0,0,0,1e-320,0,0 0,0,0,0,0,-1e-320 1e-320,1e-320,1e-320,1e-320,0,1e-320 4.9e-324,0,0,0,0,0; do

@@ -226,14 +226,14 @@ static PetscErrorCode Run(void)
     fputs("0.1 0 0 0 0 0\n", fp);
     fclose(fp);
   }
-  PetscCall(ExpectError("short row", "-fit_input raw", "raw/data.txt:4351: 6 numbers"));
+  PetscCall(ExpectError("short row", "-fit_input raw", "raw/data.txt:4351: 6 fields, expected 7"));
   WriteRaw("raw", n, z, psi, term, "density 0.3\n");
   {
     FILE *fp = fopen("raw/data.txt", "a");
     fputs("0.1 0 0 0 0 0 abc\n", fp);
     fclose(fp);
   }
-  PetscCall(ExpectError("not a number", "-fit_input raw", "raw/data.txt:4351: not a number"));
+  PetscCall(ExpectError("not a number", "-fit_input raw", "raw/data.txt:4351: column 7 (psi): 'abc' is not a number"));
   /* NaN strain in a row */
   {
     PetscReal keep = z[6 * 10];
@@ -241,7 +241,7 @@ static PetscErrorCode Run(void)
     WriteRaw("raw", n, z, psi, term, "density 0.3\n");
     z[6 * 10] = keep;
   }
-  PetscCall(ExpectError("NaN", "-fit_input raw", "non-finite"));
+  PetscCall(ExpectError("NaN", "-fit_input raw", "raw/data.txt:10: column 1 (sx): 'nan' is not a finite number"));
   /* a row order that does not match the layout: swap a sa row into the sx block */
   {
     PetscReal t6[6], tp;

@@ -81,6 +81,24 @@ int main(void)
     HYLC_CHECK_CLOSE(t[0], -0.95, 1e-15);
     HYLC_CHECK(HylcFitKnots1D(1, 1, 0.95, 11, t) == -1, "empty range accepted");
   }
+  /* 1D knots refined towards 0 (issue 30): the paper's knots and h/2, h/4, h/8 of the first interval on each
+     side, increasing; a one-sided range is refined on its side only */
+  {
+    double    t[32], u[11];
+    PetscInt  n;
+    const int i0 = HylcFitKnots1DRefined(-0.625, 1.0, 0.95, 11, 3, t, &n);
+    HYLC_CHECK(n == 17 && i0 == 7 && t[7] == 0, "refined: n %d, zero knot %d", (int)n, i0);
+    HylcFitKnots1D(-0.625, 1.0, 0.95, 11, u);
+    for (int i = 0; i < 4; i++) HYLC_CHECK(t[i] == u[i], "refined: the paper's knot %d moved", i);
+    for (int i = 5; i < 11; i++) HYLC_CHECK(t[i + 6] == u[i], "refined: the paper's knot %d moved", i);
+    HYLC_CHECK_CLOSE(t[8], 0.154375 / 8, 1e-12);
+    HYLC_CHECK_CLOSE(t[9], 0.154375 / 4, 1e-12);
+    HYLC_CHECK_CLOSE(t[10], 0.154375 / 2, 1e-12);
+    HYLC_CHECK_CLOSE(t[6], -0.154375 / 8, 1e-12);
+    for (int i = 0; i + 1 < (int)n; i++) HYLC_CHECK(t[i] < t[i + 1], "refined: knots not increasing at %d", i);
+    HYLC_CHECK(HylcFitKnots1DRefined(0, 1, 0.95, 11, 2, t, &n) == 0 && n == 13 && t[0] == 0 && t[1] > 0, "one-sided: n %d", (int)n);
+    HYLC_CHECK(HylcFitKnots1DRefined(1, 1, 0.95, 11, 3, t, &n) == -1, "refined: empty range accepted");
+  }
   /* 2D knots: basket (sx, sa) u: sx in [-0.1, 0.84] -> 2+7; stock bending pair: 0.3, 2+4 */
   {
     double   t[32];

@@ -13,27 +13,32 @@ struct _p_HylcFit {
   /* files */
   char input[PETSC_MAX_PATH_LEN], output[PETSC_MAX_PATH_LEN], json[PETSC_MAX_PATH_LEN];
   /* constants (docs/fit.md) */
-  HylcFitFamily    family;
-  PetscReal        reg;                                                             /* quasiconvex marching p^x_min */
-  HylcFitCompat    compat;                                                          /* paper or authors (method-spec §9.1) */
-  HylcMonotoneRule rule;                                                            /* 1D slope limiter */
-  PetscBool        quasiconvex;                                                     /* marching on (off: the "noreg" fits) */
-  PetscBool        symmetrize;                                                      /* symmetrize in sa */
-  PetscBool        zeroCompression;                                                 /* zero-compression rule */
-  PetscBool        zeroStrict;                                                      /* ... also muv on the bordering axis line */
-  PetscReal        kernel, truncation;                                              /* MLS kernel (fraction of the span), kernel / sigma */
-  PetscReal        mlsGrow;                                                         /* kernel growth factor where the MLS is singular (<= 1: error) */
-  PetscReal        fdEps;                                                           /* FD width (fraction of the smallest knot spacing) */
-  PetscReal        flatTol;                                                         /* 1D: |dp| below this -> flat interval */
-  PetscReal        endSlope;                                                        /* boundary slopes at least this, outward */
-  PetscInt         nk1;                                                             /* 1D knots */
-  PetscReal        factor1;                                                         /* 1D knot range factor */
-  PetscReal        factor2, factor2bend;                                            /* 2D knot range factors (bending pairs: factor2bend) */
-  PetscInt         kStretch[2], kPoisson[2], kSym[2], kBendStretch[2], kBendSym[2]; /* knots left, right of 0 */
-  PetscReal        density, yarnDensity;                                            /* kg/m^2 override; kg/m^3 (<= 0: the rule 0.12 kg/m^2 / r) */
-  PetscInt         rawN1, rawN2;                                                    /* raw data.txt block sizes (0: infer) */
-  PetscInt         min1, min2;                                                      /* minimum samples per 1D, 2D term */
-  PetscInt         terms;                                                           /* bit t: fit term t */
+  HylcFitFamily     family;
+  PetscReal         reg;                                                             /* quasiconvex marching p^x_min */
+  HylcFitCompat     compat;                                                          /* paper or authors (method-spec §9.1) */
+  HylcMonotoneRule  rule;                                                            /* 1D slope limiter */
+  PetscBool         quasiconvex;                                                     /* marching on (off: the "noreg" fits) */
+  PetscBool         symmetrize;                                                      /* symmetrize in sa */
+  PetscBool         zeroCompression;                                                 /* zero-compression rule */
+  PetscBool         zeroStrict;                                                      /* ... also muv on the bordering axis line */
+  PetscReal         kernel, truncation;                                              /* MLS kernel (fraction of the span), kernel / sigma */
+  PetscReal         mlsGrow;                                                         /* kernel growth factor where the MLS is singular (<= 1: error) */
+  PetscReal         fdEps;                                                           /* FD width (fraction of the smallest knot spacing) */
+  PetscReal         flatTol;                                                         /* 1D: |dp| below this -> flat interval */
+  PetscReal         endSlope;                                                        /* boundary slopes at least this, outward */
+  PetscInt          nk1;                                                             /* 1D knots of the paper's layout */
+  HylcFitKnotLayout knots;                                                           /* 1D knot layout */
+  PetscBool         knotsSet;                                                        /* -fit_knots given */
+  PetscInt          refine;                                                          /* refined: knots added on each side of 0 */
+  PetscReal         kernelSpacing;                                                   /* refined: MLS radius / the added knot's distance from 0 */
+  PetscInt          kernelMin;                                                       /* refined: samples the local kernel must hold */
+  PetscReal         factor1;                                                         /* 1D knot range factor */
+  PetscReal         factor2, factor2bend;                                            /* 2D knot range factors (bending pairs: factor2bend) */
+  PetscInt          kStretch[2], kPoisson[2], kSym[2], kBendStretch[2], kBendSym[2]; /* knots left, right of 0 */
+  PetscReal         density, yarnDensity;                                            /* kg/m^2 override; kg/m^3 (<= 0: the rule 0.12 kg/m^2 / r) */
+  PetscInt          rawN1, rawN2;                                                    /* raw data.txt block sizes (0: infer) */
+  PetscInt          min1, min2;                                                      /* minimum samples per 1D, 2D term */
+  PetscInt          terms;                                                           /* bit t: fit term t */
   /* data: the rows used (status 0), in file order */
   PetscInt   n;
   PetscReal *z, *psi;                             /* n x 6, n */
@@ -53,6 +58,8 @@ struct _p_HylcFit {
   HylcSpline2D s2[9];
   PetscInt     statN[HYLC_PLAN_NTERM];
   PetscReal    statRms[HYLC_PLAN_NTERM], statRange[HYLC_PLAN_NTERM], statMin[HYLC_PLAN_NTERM][2], statMax[HYLC_PLAN_NTERM][2];
+  PetscInt     statBandN[HYLC_PLAN_NTERM][HYLC_FIT_NBAND];   /* samples per strain band (HylcFitGetTermBandStats) */
+  PetscReal    statBandRel[HYLC_PLAN_NTERM][HYLC_FIT_NBAND]; /* RMS(model - data) / RMS(data - f0) per band */
 };
 
 /* input.c: reads fit->input into the data arrays (rank-local). */

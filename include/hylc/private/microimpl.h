@@ -26,6 +26,13 @@ typedef struct {
   PetscBool saddleTest;         /* second-order test of a converged state */
   PetscInt  saddleMax;          /* escapes from saddle points per solve */
   PetscReal saddleTol;          /* negative curvature below -saddleTol max|diag(M H M)| makes a saddle */
+  PetscInt  uniGrad;            /* HylcMicroUniaxialGradient of HylcMicroSolveUniaxial() */
+  PetscReal uniXtol;            /* uniaxial: converged when the predicted Newton step in the lateral strains is at most this */
+  PetscInt  uniMaxIt;           /* uniaxial: Newton steps */
+  PetscReal uniH;               /* uniaxial: difference step (strain) of the lateral Hessian (and of the fd gradient) */
+  PetscReal uniMaxStep;         /* uniaxial: largest change of a lateral strain per Newton step */
+  PetscReal uniRtol;            /* uniaxial: -micro_rtol of its solves (the gradients' accuracy) */
+  PetscReal uniGtol;            /* uniaxial: converged also when a line search fails with |lateral gradient| <= gtol |T| */
 } HylcMicroParams;
 
 struct _HylcMicroOps {
