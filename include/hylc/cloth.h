@@ -123,11 +123,7 @@ PETSC_EXTERN PetscErrorCode HylcClothGetMesh(HylcCloth, PetscInt *nv, PetscInt *
 
 /* ---- Plain C kernels (no PETSc objects; tested alone) ---- */
 
-/* The homogeneous uniaxial state of a table: with the strain s along the material direction dir
-   (0: sx, 1: sy) fixed and II = 0, minimizes Psi over sa and the lateral strain. Returns T = dPsi/ds
-   (N/m: force per unit reference width), the lateral strain and sa at the minimum, and Psi. 0 on
-   success, else a hylcmat error code or -1 (no convergence). */
-PETSC_EXTERN int HylcClothUniaxial(const hylcmat *m, int dir, double s, double *T, double *lateral, double *sa, double *psi);
+/* The homogeneous uniaxial state of a table is hylcmat_uniaxial() (include/hylcmat.h). */
 
 /* The table's free curl: II00 and II11 (1/m, II01 = 0, in-plane strains 0) that minimize Psi; II > 0
    bends toward n (the paper's stock1: II00 < 0, II11 > 0). 0 on success. */

@@ -79,7 +79,8 @@ static int PairNewton(const Pair *p, double y[2], double *fout, int *conv)
               best  = ft;
               yb[0] = yt[0];
               yb[1] = yt[1];
-            } else if (ft > best) break;
+            } else if (ft > best)
+              break;
           }
         if (best >= f) {
           *conv = 1; /* flat to rounding */
@@ -121,35 +122,6 @@ static int PairNewton(const Pair *p, double y[2], double *fout, int *conv)
   }
   *fout = f;
   return 0;
-}
-
-int HylcClothUniaxial(const hylcmat *m, int dir, double s, double *T, double *lateral, double *sa, double *psi)
-{
-  Pair   p    = {m, {0, 0, 0, 0, 0, 0}, {1, dir ? 0 : 2}, 1};
-  double y[2] = {0, 0}, f = 0, best = INFINITY, z[6] = {0, 0, 0, 0, 0, 0}, gr[6];
-  int    rc, conv = 0;
-
-  p.z0[dir ? 2 : 0] = s;
-  /* the table need not be convex in the lateral strain (the paper's satin1 is not beyond sx = 0.065):
-     start Newton from the best of a scan of the lateral strain at sa = 0 */
-  for (int i = -60; i <= 60; i++) {
-    double yt[2] = {0, 0.01 * i}, ft;
-    if ((rc = PairEval(&p, yt, &ft, NULL, NULL))) return rc;
-    if (ft < best) {
-      best = ft;
-      y[1] = yt[1];
-    }
-  }
-  if ((rc = PairNewton(&p, y, &f, &conv))) return rc;
-  z[dir ? 2 : 0] = s;
-  z[1]           = y[0];
-  z[dir ? 0 : 2] = y[1];
-  if ((rc = hylcmat_eval(m, z, &f, gr, NULL))) return rc;
-  if (T) *T = gr[dir ? 2 : 0];
-  if (sa) *sa = y[0];
-  if (lateral) *lateral = y[1];
-  if (psi) *psi = f;
-  return conv ? 0 : -1;
 }
 
 int HylcClothTableCurl(const hylcmat *m, double *II00, double *II11, double *psi)

@@ -93,7 +93,8 @@ PetscErrorCode HylcClothMeshStripN_Private(HylcCloth c, PetscReal x0, PetscReal 
       }
     else
       for (PetscInt i = -1; i <= nx; i++) {
-        c->X[3 * nv + 0]        = i < 0 ? x0 : i == nx ? x0 + L : x0 + (i + 0.5) * dx;
+        c->X[3 * nv + 0]        = i < 0 ? x0 : i == nx ? x0 + L
+                                                       : x0 + (i + 0.5) * dx;
         c->X[3 * nv + 1]        = j * hy;
         c->X[3 * nv + 2]        = 0;
         row[j * (nx + 2) + n++] = nv++;

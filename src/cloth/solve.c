@@ -159,12 +159,40 @@ PetscErrorCode HylcClothFormHessian_Private(HylcCloth c, Vec X, Mat H)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* MUMPS counts the negative pivots of the whole matrix only with ICNTL(13) = 1 (no ScaLAPACK on the
+   root node): set on its factor before the first factorization (the user's -mat_mumps_icntl_13 is read
+   afterwards and wins) */
+PetscErrorCode HylcClothMumpsInertia_Private(KSP ksp)
+{
+  PC            pc;
+  Mat           F;
+  PetscBool     isch, ismumps, pset;
+  MatSolverType st;
+
+  PetscFunctionBegin;
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCCHOLESKY, &isch));
+  if (!isch) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PCFactorGetMatSolverType(pc, &st));
+  PetscCall(PetscStrcmp(st, MATSOLVERMUMPS, &ismumps));
+  PetscCall(PCGetOperatorsSet(pc, NULL, &pset));
+  if (!ismumps || !pset) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PCFactorSetUpMatSolverType(pc));
+  PetscCall(PCFactorGetMatrix(pc, &F));
+  PetscCall(MatMumpsSetIcntl(F, 13, 1));
+  PetscCall(MatMumpsSetIcntl(F, 24, 1)); /* MatGetInertia counts the null pivots too: their detection */
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode FormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx)
 {
+  KSP ksp;
+
   PetscFunctionBegin;
-  (void)snes;
   (void)P;
   PetscCall(HylcClothFormHessian_Private((HylcCloth)ctx, X, J));
+  PetscCall(SNESGetKSP(snes, &ksp));
+  PetscCall(HylcClothMumpsInertia_Private(ksp));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -433,7 +461,7 @@ static PetscErrorCode TangentPredictor(HylcCloth c, PetscReal t1, PetscReal g1)
   {
     /* a linear response larger than a tenth of the specimen (a cantilever's first load step: linear
        theory deflects it by more than its length) is only a direction: scaled down to that */
-    PetscReal mx = 0, cap = 0.1 * PetscSqrtReal(c->area), sc = 1;
+    PetscReal          mx = 0, cap = 0.1 * PetscSqrtReal(c->area), sc = 1;
     const PetscScalar *a;
     PetscCall(VecGetArrayRead(dx, &a));
     for (PetscInt i = 0; i < nown; i++) mx = PetscMax(mx, PetscSqrtReal(a[3 * i] * a[3 * i] + a[3 * i + 1] * a[3 * i + 1] + a[3 * i + 2] * a[3 * i + 2]));

@@ -97,7 +97,7 @@ static PetscErrorCode DirectionList(HylcCloth c, PetscInt *n, PetscInt dirs[2])
   (0.05 m), material x along its length (direction x) or across it (y), gripped over the full width at
   both ends; the right grip moves to each nominal strain. Per step: T = the grip's force / width (N/m),
   the central zone's strains (middle fifth of the length, middle half of the width), its Poisson ratio,
-  and the table's homogeneous uniaxial state at the central zone's strain (HylcClothUniaxial): T_table and
+  and the table's homogeneous uniaxial state at the central zone's strain (hylcmat_uniaxial): T_table and
   the lateral strain. CSV columns: direction, face, step, strain, T, central_strain, lateral_strain,
   poisson, T_table, lateral_table, T_rel_diff, newton_its.
 */
@@ -137,7 +137,7 @@ PetscErrorCode HylcClothRunTensile_Private(HylcCloth c)
       PetscCheck(ok, comm, PETSC_ERR_NOT_CONVERGED, "tensile %s: no equilibrium under gravity", dn[d]);
     }
     for (PetscInt k = 1; k <= ns; k++) {
-      PetscReal F[3], zc[6], Tt = 0, lt = 0, sa, rel;
+      PetscReal F[3], zc[6], Tt = 0, lt = 0, rel;
       PetscBool ok;
       PetscInt  its0 = c->newtonIts, dm = ((PetscInt)PetscFloorReal(angle / 90 + 0.5) % 2 + 2) % 2;
       int       rc;
@@ -153,8 +153,16 @@ PetscErrorCode HylcClothRunTensile_Private(HylcCloth c)
       eps[k] = c->strainMax * k / ns;
       T[k]   = F[0] / W;
       lat[k] = zc[dm ? 0 : 2];
-      rc     = HylcClothUniaxial(c->hm, (int)dm, zc[dm ? 2 : 0], &Tt, &lt, &sa, NULL);
-      PetscCheck(rc == 0 || rc == -1, comm, PETSC_ERR_LIB, "uniaxial state of the table: %s", hylcmat_strerror(rc));
+      { /* the table's uniaxial state (hylcmat_uniaxial) at the zone's stretch, from the zone's lateral
+           strains: the local minimum the strip is in (tables can have several) */
+        hylcmat_uniaxial_state st;
+        double                 guess[2] = {zc[1], zc[dm ? 0 : 2]};
+        char                   err[256];
+        rc = hylcmat_uniaxial(c->hm, (int)dm, zc[dm ? 2 : 0], guess, &st, err, sizeof(err));
+        PetscCheck(rc == 0, comm, PETSC_ERR_LIB, "uniaxial state of the table at strain %g: %s", (double)zc[dm ? 2 : 0], err);
+        Tt = st.T;
+        lt = st.lateral[1];
+      }
       rel = PetscAbsReal(T[k] - Tt) / PetscMax(PetscAbsReal(Tt), 1e-300);
       if (eps[k] >= 0.01 - 1e-12) {
         maxrel  = PetscMax(maxrel, rel);
@@ -199,7 +207,7 @@ PetscErrorCode HylcClothRunTensile_Private(HylcCloth c)
 
 /*
   The table's homogeneous uniaxial curves (no mesh): for each direction and strain, Psi minimized over
-  sa and the lateral strain (HylcClothUniaxial). The CSV is the uniaxial-curve format of docs/fabric.md:
+  sa and the lateral strain (hylcmat_uniaxial). The CSV is the uniaxial-curve format of docs/fabric.md:
   direction, strain, T_N_per_m, lateral_strain, sa, psi.
 */
 PetscErrorCode HylcClothRunUniaxial_Private(HylcCloth c)
@@ -217,10 +225,16 @@ PetscErrorCode HylcClothRunUniaxial_Private(HylcCloth c)
     PetscReal *eps, *T, *lat;
     char       r[32];
     PetscCall(PetscMalloc3(ns + 1, &eps, ns + 1, &T, ns + 1, &lat));
-    for (PetscInt k = 0; k <= ns; k++) {
+    hylcmat_uniaxial_state st = {0};
+    for (PetscInt k = 0; k <= ns; k++) { /* along the loading path: each state from the previous one */
       double Tt, lt, sa, psi;
-      int    rc = HylcClothUniaxial(c->hm, (int)d, c->strainMax * k / ns, &Tt, &lt, &sa, &psi);
-      PetscCheck(rc == 0 || rc == -1, comm, PETSC_ERR_LIB, "uniaxial state of the table at strain %g: %s", (double)(c->strainMax * k / ns), hylcmat_strerror(rc));
+      char   err[256];
+      int    rc = hylcmat_uniaxial(c->hm, (int)d, c->strainMax * k / ns, k ? st.lateral : NULL, &st, err, sizeof(err));
+      PetscCheck(rc == 0, comm, PETSC_ERR_LIB, "uniaxial state of the table at strain %g: %s", (double)(c->strainMax * k / ns), err);
+      Tt     = st.T;
+      lt     = st.lateral[1];
+      sa     = st.lateral[0];
+      psi    = st.psi;
       eps[k] = c->strainMax * k / ns;
       T[k]   = Tt;
       lat[k] = k ? -lt / eps[k] : 0;
