@@ -6,7 +6,7 @@
 /* the chord angle (radians below the horizontal) of a cantilever of overhang l clamped at x = 0; the
    mesh: nx = cantN spacings over the overhang and two behind the root (clamped, with every vertex at
    x <= 0), rows as close to equilateral as the width allows */
-static PetscErrorCode CantileverAngle(HylcCloth c, PetscReal l, PetscReal angle, PetscBool faceDown, PetscReal *phi, PetscBool *ok, PetscReal curl[2], PetscReal *lprev, PetscReal **xprev)
+static PetscErrorCode CantileverAngle(HylcCloth c, PetscReal l, PetscReal angle, PetscBool faceDown, PetscReal *phi, PetscBool *ok, PetscReal curl[2], PetscReal *lprev, PetscReal **xprev, PetscInt *nvprev)
 {
   PetscReal dx = l / c->cantN, W = c->cantWidth, tip[2] = {0, 0}, tipl[3] = {0, 0, 0};
   PetscInt  ny = PetscMax(1, (PetscInt)PetscFloorReal(W / (dx * PetscSqrtReal(3.0) / 2) + 0.5)), n, *v;
@@ -23,7 +23,8 @@ static PetscErrorCode CantileverAngle(HylcCloth c, PetscReal l, PetscReal angle,
   PetscCall(PetscFree(v));
   PetscCall(HylcClothPrepare_Private(c));
   *ok = PETSC_FALSE;
-  if (*xprev) { /* the equilibrium of the previous overhang, scaled: the same mesh topology */
+  if (*xprev && *nvprev != c->nv) PetscCall(PetscFree(*xprev)); /* the rows across changed with the spacing */
+  if (*xprev) {                                                 /* the equilibrium of the previous overhang, scaled: the same mesh topology */
     PetscScalar *x;
     PetscReal    s = l / *lprev;
     PetscCall(VecGetArray(c->x, &x));
@@ -42,7 +43,8 @@ static PetscErrorCode CantileverAngle(HylcCloth c, PetscReal l, PetscReal angle,
   PetscCall(HylcClothGather_Private(c, c->x));
   if (!*xprev) PetscCall(PetscMalloc1(3 * c->nv, xprev));
   PetscCall(PetscArraycpy(*xprev, c->xgather, 3 * c->nv));
-  *lprev = l;
+  *lprev  = l;
+  *nvprev = c->nv;
   /* the tip: the mean of the vertices of the free end */
   {
     const PetscScalar *x;
@@ -116,17 +118,18 @@ PetscErrorCode HylcClothRunCantilever_Private(HylcCloth c)
       double             le;
       int                rc;
       PetscReal         *xprev = NULL, lprev = 0;
+      PetscInt           nvprev = 0;
 
-      rc = HylcClothElasticaOverhang(HylcClothTableMoment, &mctx, w, target, 4000, &le);
+      rc = HylcClothElasticaOverhang(HylcClothTableMoment, &mctx, w, target, 400, &le);
       if (!rc) lel = le;
       /* the shell: start at the elastica's overhang (or 2 cm), then secant steps on the chord angle */
       l0 = PetscIsNormalReal(lel) ? lel : 0.02;
-      PetscCall(CantileverAngle(c, l0, angle, down, &f0, &ok, NULL, &lprev, &xprev));
+      PetscCall(CantileverAngle(c, l0, angle, down, &f0, &ok, NULL, &lprev, &xprev, &nvprev));
       PetscCheck(ok, comm, PETSC_ERR_NOT_CONVERGED, "cantilever %s, face %s: no equilibrium at overhang %g m", dn, fn, (double)l0);
       l1 = l0 * PetscPowReal(target / PetscMax(f0, 1e-3), 1.0 / 3.0);
       for (PetscInt it = 0; it < 12; it++) {
         PetscReal ln;
-        PetscCall(CantileverAngle(c, l1, angle, down, &f1, &ok, curl, &lprev, &xprev));
+        PetscCall(CantileverAngle(c, l1, angle, down, &f1, &ok, curl, &lprev, &xprev, &nvprev));
         PetscCheck(ok, comm, PETSC_ERR_NOT_CONVERGED, "cantilever %s, face %s: no equilibrium at overhang %g m", dn, fn, (double)l1);
         if (c->monitor) PetscCall(PetscPrintf(comm, "  overhang %.8g m: chord %.6g deg\n", (double)l1, (double)(f1 * 180 / PETSC_PI)));
         if (PetscAbsReal(f1 - target) < 1e-6) {

@@ -162,17 +162,20 @@ int HylcClothTableMoment(void *vctx, double kappa, double *M, double *dMdk)
   return 0;
 }
 
-/* kappa with M(kappa) = target, by bisection and Newton on a bracket (M increasing) */
+/* kappa >= 0 with M(kappa) = target (M increasing): a bracket grown from the guess *kappa (the value
+   at a nearby point of the strip), then Newton's method safeguarded by bisection. -1 if M stays below
+   the target (the table's bending term flat beyond its knots) */
 static int InverseMoment(HylcClothMomentFn M, void *ctx, double target, double *kappa)
 {
-  double lo = 0, hi = 1, Mlo, Mhi, k, Mk, dM;
+  double lo = 0, hi, Mlo, Mhi, k, Mk, dM;
   int    rc;
 
-  if ((rc = M(ctx, lo, &Mlo, NULL))) return rc;
+  if ((rc = M(ctx, 0, &Mlo, NULL))) return rc;
   if (target <= Mlo) {
     *kappa = 0;
     return 0;
   }
+  hi = *kappa > 0 ? *kappa : 1;
   for (;;) {
     if ((rc = M(ctx, hi, &Mhi, NULL))) return rc;
     if (Mhi >= target) break;
@@ -181,7 +184,19 @@ static int InverseMoment(HylcClothMomentFn M, void *ctx, double target, double *
     hi *= 2;
     if (hi > 1e8) return -1;
   }
-  k = *kappa > lo && *kappa < hi ? *kappa : 0.5 * (lo + hi);
+  if (lo == 0 && *kappa > 0) { /* the guess was above: tighten the bracket from below */
+    for (double t = 0.5 * hi; t > 1e-3 * hi; t *= 0.5) {
+      if ((rc = M(ctx, t, &Mk, NULL))) return rc;
+      if (Mk >= target) {
+        hi = t;
+        continue;
+      }
+      lo = t;
+      break;
+    }
+  }
+  k = 0.5 * (lo + hi);
+  if (*kappa > lo && *kappa < hi) k = *kappa;
   for (int it = 0; it < 200; it++) {
     double kn;
     if ((rc = M(ctx, k, &Mk, &dM))) return rc;
@@ -236,52 +251,116 @@ static int Shoot(HylcClothMomentFn Mf, void *ctx, double w, double l, int n, dou
   return 0;
 }
 
+/* the root of f on [a, b] with f(a) < 0 <= f(b) by the Illinois method; f returns a hylcmat error
+   (> 0, passed on), 0, or -1 for a point outside f's domain, which lies beyond the root (treated as
+   f > 0 with a bisection step). Stops when the bracket is below rtol * b or |f| <= ftol. */
+typedef int (*RootFn)(void *ctx, double t, double *f);
+static int Illinois(RootFn f, void *ctx, double a, double fa, double b, double rtol, double ftol, double *root)
+{
+  double fb;
+  int    rc, side = 0, bad;
+
+  rc = f(ctx, b, &fb);
+  if (rc > 0) return rc;
+  bad = rc < 0;
+  for (int it = 0; it < 300; it++) {
+    double t, ft;
+    if (bad)
+      t = 0.5 * (a + b);
+    else
+      t = (a * fb - b * fa) / (fb - fa);
+    if (!(t > a && t < b)) t = 0.5 * (a + b);
+    rc = f(ctx, t, &ft);
+    if (rc > 0) return rc;
+    if (rc < 0) { /* beyond the domain: the root is below */
+      b   = t;
+      bad = 1;
+    } else if (ft >= 0) {
+      b   = t;
+      fb  = ft;
+      bad = 0;
+      if (side == 1) fa *= 0.5;
+      side = 1;
+    } else {
+      a  = t;
+      fa = ft;
+      if (side == -1 && !bad) fb *= 0.5;
+      side = -1;
+    }
+    if (b - a <= rtol * b || (rc == 0 && fabs(ft) <= ftol)) {
+      *root = rc == 0 ? t : a;
+      return 0;
+    }
+  }
+  *root = 0.5 * (a + b);
+  return 0;
+}
+
+typedef struct {
+  HylcClothMomentFn Mf;
+  void             *ctx;
+  double            w, l, angle, x, y;
+  int               n;
+} Elastica;
+
+static int TipMoment(void *vctx, double M0, double *f)
+{
+  Elastica *e = (Elastica *)vctx;
+  return Shoot(e->Mf, e->ctx, e->w, e->l, e->n, M0, f, &e->x, &e->y);
+}
+
 int HylcClothElasticaTip(HylcClothMomentFn Mf, void *ctx, double w, double l, int n, double *xtip, double *ytip)
 {
-  /* the root moment lies between 0 and that of the straight strip, w l^2 / 2 */
-  double lo = 0, hi = 0.5 * w * l * l * 1.000001, Ml, x, y;
-  int    rc;
+  /* the root moment lies between 0 (the tip moment then -w l^2 / 2 cos.. < 0) and that of the straight
+     strip, w l^2 / 2 (the tip moment then >= 0) */
+  Elastica e = {Mf, ctx, w, l, 0, 0, 0, n};
+  double   f0, M0;
+  int      rc;
 
-  if ((rc = Shoot(Mf, ctx, w, l, n, hi, &Ml, &x, &y))) return rc;
-  if (Ml < 0) return -1;
-  for (int it = 0; it < 200; it++) {
-    double mid = 0.5 * (lo + hi);
-    if ((rc = Shoot(Mf, ctx, w, l, n, mid, &Ml, &x, &y))) return rc;
-    if (Ml > 0)
-      hi = mid;
-    else
-      lo = mid;
-    if (hi - lo <= 1e-15 * hi) break;
-  }
-  if ((rc = Shoot(Mf, ctx, w, l, n, 0.5 * (lo + hi), &Ml, &x, &y))) return rc;
-  *xtip = x;
-  *ytip = y;
+  if ((rc = TipMoment(&e, 0, &f0))) return rc;
+  if (f0 >= 0) return -1;
+  if ((rc = Illinois(TipMoment, &e, 0, f0, 0.5 * w * l * l * 1.000001, 1e-15, 1e-15 * w * l * l, &M0))) return rc;
+  if ((rc = TipMoment(&e, M0, &f0))) return rc;
+  if (fabs(f0) > 1e-9 * w * l * l) return -1; /* the table's range ends before the root moment */
+  *xtip = e.x;
+  *ytip = e.y;
+  return 0;
+}
+
+static int ChordAngle(void *vctx, double l, double *f)
+{
+  Elastica *e = (Elastica *)vctx;
+  double    x, y;
+  int       rc = HylcClothElasticaTip(e->Mf, e->ctx, e->w, l, e->n, &x, &y);
+  if (rc) return rc;
+  *f = atan2(-y, x) - e->angle;
   return 0;
 }
 
 int HylcClothElasticaOverhang(HylcClothMomentFn Mf, void *ctx, double w, double angle, int n, double *lout)
 {
-  double lo = 1e-4, hi = 1e-2, x, y;
-  int    rc;
+  Elastica e  = {Mf, ctx, w, 0, angle, 0, 0, n};
+  double   lo = 1e-4, hi = 1e-2, flo, fhi, l;
+  int      rc;
 
-  /* the chord angle grows with l: bracket, then bisect */
+  /* the chord angle grows with l: a bracket, then the Illinois method. An overhang whose root moment
+     the table's bending term does not reach (flat beyond its knots) counts as too long; the overhang
+     found must have its tip within the table */
+  if ((rc = ChordAngle(&e, lo, &flo))) return rc < 0 ? -1 : rc;
+  if (flo >= 0) return -1;
   for (;;) {
-    if ((rc = HylcClothElasticaTip(Mf, ctx, w, hi, n, &x, &y))) return rc;
-    if (atan2(-y, x) >= angle) break;
-    lo = hi;
+    rc = ChordAngle(&e, hi, &fhi);
+    if (rc > 0) return rc;
+    if (rc < 0 || fhi >= 0) break;
+    lo  = hi;
+    flo = fhi;
     hi *= 2;
     if (hi > 100) return -1;
   }
-  for (int it = 0; it < 100; it++) {
-    double mid = 0.5 * (lo + hi);
-    if ((rc = HylcClothElasticaTip(Mf, ctx, w, mid, n, &x, &y))) return rc;
-    if (atan2(-y, x) >= angle)
-      hi = mid;
-    else
-      lo = mid;
-    if (hi - lo <= 1e-12 * hi) break;
-  }
-  *lout = 0.5 * (lo + hi);
+  if ((rc = Illinois(ChordAngle, &e, lo, flo, hi, 1e-13, 1e-13 * angle, &l))) return rc;
+  if ((rc = ChordAngle(&e, l, &fhi))) return -1;
+  if (fabs(fhi) > 1e-8 * angle) return -1; /* the table's range ends before the angle */
+  *lout = l;
   return 0;
 }
 
