@@ -255,10 +255,81 @@ PetscErrorCode HylcClothRunUniaxial_Private(HylcCloth c)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*
+  Bias extension (docs/fabric.md): a strip of -cloth_length (0.15 m) by -cloth_width (0.05 m) with the
+  material x axis at -cloth_angle (45 degrees) to its length, gripped over the full width at both ends;
+  the right grip moves to each nominal strain (extension / length). Per step: the grip's force F (N) and
+  F / width (N/m); the central zone's (the middle fifth of the length, the middle half of the width)
+  shear angle gamma = asin(|sa|) (degrees: how far the angle between the deformed material axes is from
+  90, either way) and its
+  strains along the axes; for reference the shear angle of the pin-jointed (inextensible yarn) kinematics
+  of the central region, gamma = 90 - 2 acos((D + d) / (sqrt(2) D)) with D = length - width. CSV columns:
+  step, strain, extension_m, force_N, F_per_width_N_per_m, shear_deg, shear_kinematic_deg, sx, sy,
+  newton_its.
+*/
 PetscErrorCode HylcClothRunBias_Private(HylcCloth c)
 {
+  MPI_Comm      comm = CLOTH_COMM_PRIVATE(c);
+  HylcClothText csv  = {0};
+  char          path[PETSC_MAX_PATH_LEN + 64], name[64];
+  PetscReal     L = c->length, W = c->width, angle = c->angle > -360 ? c->angle : 45.0, disp[3] = {c->strainMax * L, 0, 0}, *z, *eps, *F, *gam, D = L - W;
+  PetscInt      n, *v, ns = c->strainSteps;
+  PetscBool     faceDown = c->face == HYLC_CLOTH_FACE_DOWN ? PETSC_TRUE : PETSC_FALSE;
+
   PetscFunctionBegin;
-  SETERRQ(CLOTH_COMM_PRIVATE(c), PETSC_ERR_SUP, "bias: not yet");
+  PetscCheck(L > W, comm, PETSC_ERR_USER_INPUT, "bias: -cloth_length %g m must exceed -cloth_width %g m (the central zone of pure shear)", (double)L, (double)W);
+  PetscCall(HylcClothStrip_Private(c, 0, L, W, c->h, angle, faceDown));
+  PetscCall(HylcClothVerticesInBox_Private(c, -1, 1e-9 * L, -1, 2 * W, &n, &v));
+  PetscCall(HylcClothAddClamp_Private(c, n, v, NULL, PETSC_FALSE));
+  PetscCall(PetscFree(v));
+  PetscCall(HylcClothVerticesInBox_Private(c, L * (1 - 1e-9), 2 * L, -1, 2 * W, &n, &v));
+  PetscCall(HylcClothAddClamp_Private(c, n, v, disp, PETSC_FALSE));
+  PetscCall(PetscFree(v));
+  PetscCall(HylcClothPrepare_Private(c));
+  PetscCall(PetscPrintf(comm, "bias (material angle %g deg, face %s): %" PetscInt_FMT " vertices, %" PetscInt_FMT " triangles, %g x %g m\n", (double)angle, faceDown ? "down" : "up", c->nv, c->nt, (double)L, (double)W));
+  PetscCall(HylcClothTextAppend_Private(&csv, "step,strain,extension_m,force_N,F_per_width_N_per_m,shear_deg,shear_kinematic_deg,sx,sy,newton_its\n"));
+  PetscCall(PetscMalloc4(6 * c->nt, &z, ns + 1, &eps, ns + 1, &F, ns + 1, &gam));
+  eps[0] = F[0] = gam[0] = 0;
+  if (c->gravity > 0) {
+    PetscBool ok;
+    c->gscale = 0;
+    PetscCall(HylcClothLoadPath_Private(c, 0, 1, c->loadSteps > 0 ? c->loadSteps : 4, &ok));
+    PetscCheck(ok, comm, PETSC_ERR_NOT_CONVERGED, "bias: no equilibrium under gravity");
+  }
+  for (PetscInt k = 1; k <= ns; k++) {
+    PetscReal Fr[3], zc[6], e = c->strainMax * k / ns, r = (D + e * L) / (PetscSqrtReal(2.0) * D), gk;
+    PetscBool ok;
+    PetscInt  its0 = c->newtonIts;
+    PetscCall(HylcClothLoadPath_Private(c, (PetscReal)k / ns, 1, 1, &ok));
+    if (!ok) {
+      PetscCall(PetscPrintf(comm, "  no equilibrium found at strain %g: the curve ends at %g\n", (double)e, (double)eps[k - 1]));
+      ns = k - 1;
+      break;
+    }
+    PetscCall(HylcClothReaction_Private(c, c->x, 1, Fr));
+    PetscCall(HylcClothStrains_Private(c, c->x, z));
+    PetscCall(HylcClothZoneMean_Private(c, z, 0.4 * L, 0.6 * L, 0.25 * W, 0.75 * W, zc));
+    eps[k] = e;
+    F[k]   = Fr[0];
+    gam[k] = PetscAsinReal(PetscMin(PetscAbsReal(zc[1]), 1.0)) * 180 / PETSC_PI;
+    gk     = r < 1 ? 90 - 2 * PetscAcosReal(r) * 180 / PETSC_PI : (PetscReal)NAN; /* beyond: no pin-jointed state */
+    PetscCall(HylcClothTextAppend_Private(&csv, "%" PetscInt_FMT ",%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%" PetscInt_FMT "\n", k, (double)e, (double)(e * L), (double)F[k], (double)(F[k] / W), (double)gam[k], (double)gk, (double)zc[0], (double)zc[2], c->newtonIts - its0));
+    if (c->monitor) PetscCall(PetscPrintf(comm, "  strain %.4g: F %.6g N, shear angle %.4g deg (kinematic %.4g)\n", (double)e, (double)F[k], (double)gam[k], (double)gk));
+    PetscCall(PetscSNPrintf(name, sizeof(name), "bias_%04d.vtk", (int)k));
+    PetscCall(HylcClothOutputName_Private(c, name, path, sizeof(path)));
+    PetscCall(HylcClothWriteVTK_Private(c, path));
+  }
+  PetscCheck(ns >= 1, comm, PETSC_ERR_NOT_CONVERGED, "bias: no equilibrium at the first strain step %g", (double)(c->strainMax / c->strainSteps));
+  PetscCall(HylcClothResult_Private(c, "bias_F5", Interp(ns + 1, eps, F, 0.05)));
+  PetscCall(HylcClothResult_Private(c, "bias_F_end", F[ns]));
+  PetscCall(HylcClothResult_Private(c, "bias_shear_end", gam[ns]));
+  PetscCall(PetscPrintf(comm, "  F(5%%) %.6g N (%.6g N/m), at strain %.4g: F %.6g N, central shear angle %.4g deg\n", (double)Interp(ns + 1, eps, F, 0.05), (double)(Interp(ns + 1, eps, F, 0.05) / W), (double)eps[ns], (double)F[ns], (double)gam[ns]));
+  PetscCall(PetscPrintf(comm, "Newton iterations: %" PetscInt_FMT " (%" PetscInt_FMT " exact, %" PetscInt_FMT " projected Hessians), line-search failures %" PetscInt_FMT "\n", c->newtonIts, c->hessExact, c->hessProj, c->lsFails));
+  PetscCall(PetscFree4(z, eps, F, gam));
+  PetscCall(HylcClothOutputName_Private(c, "bias.csv", path, sizeof(path)));
+  PetscCall(HylcClothTextWrite_Private(c, &csv, path));
+  PetscCall(HylcClothPlot_Private(c, "bias", path));
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 PetscErrorCode HylcClothRunDrape_Private(HylcCloth c)
 {
