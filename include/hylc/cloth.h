@@ -16,6 +16,7 @@
    n (docs/library.md). Lengths in m, forces in N, energies in J. */
 #include <hylc/sys.h>
 #include <hylc/material.h>
+#include <hylc/files.h>
 #include <petscviewer.h>
 #include <petscvec.h>
 #include <hylcmat.h>
@@ -108,6 +109,9 @@ PETSC_EXTERN PetscErrorCode HylcClothSetDrape(HylcCloth, PetscReal specimenDiame
 PETSC_EXTERN PetscErrorCode HylcClothSetDynamics(HylcCloth, PetscReal dt, PetscReal tmax, PetscReal damping);
 PETSC_EXTERN PetscErrorCode HylcClothSetScene(HylcCloth, PetscReal clampLength, PetscInt ncorners, const PetscInt corners[]);
 PETSC_EXTERN PetscErrorCode HylcClothSetBarrier(HylcCloth, PetscReal distance, PetscReal stiffness);
+
+/* Lists the material and mesh files (inputs) and the test's CSV (output) in a file registry. */
+PETSC_EXTERN PetscErrorCode HylcClothAddFiles(HylcCloth, HylcFiles);
 
 /* Runs the selected test (SetUp if needed): solves, writes the CSV, VTK and PNG outputs of the
    -cloth_output prefix, prints a summary and stores the scalar results. Collective. */

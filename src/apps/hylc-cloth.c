@@ -16,6 +16,16 @@ static PetscErrorCode Work(HylcCloth c)
   PetscCall(PetscOptionsHasHelp(NULL, &help_only));
   if (help_only) PetscFunctionReturn(PETSC_SUCCESS); /* -help: every option has been listed; do no work */
   PetscCall(HylcCheckOptionsUsed(PETSC_COMM_WORLD));
+  { /* every input and output checked before any work (a missing table, an output over an input) */
+    HylcFiles      files;
+    PetscErrorCode ierr;
+    PetscCall(HylcFilesCreate(PETSC_COMM_WORLD, &files));
+    ierr = HylcFilesAddOptionsFiles(files);
+    if (!ierr) ierr = HylcClothAddFiles(c, files);
+    if (!ierr) ierr = HylcFilesCheck(files);
+    PetscCall(HylcFilesDestroy(&files));
+    PetscCall(ierr);
+  }
   PetscCall(HylcClothSetUp(c));
   PetscCall(HylcClothRun(c));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -631,6 +631,7 @@ PetscErrorCode HylcClothSetFromOptions(HylcCloth c)
   PetscCheck(c->restTol > 0, CLOTH_COMM(c), PETSC_ERR_USER_INPUT, "-cloth_rest_speed %g must be > 0", (double)c->restTol);
   a = c->sceneClamp;
   n = 4;
+  for (PetscInt i = 0; i < 4; i++) corners[i] = i < c->ncorners ? c->corners[i] : 0; /* -help shows the first */
   PetscCall(PetscOptionsReal("-cloth_scene_clamp", "Scene: clamped length (m) of the end x = 0, centred (0: none)", "HylcClothSetScene", c->sceneClamp, &a, &set));
   PetscCall(PetscOptionsIntArray("-cloth_scene_corners", "Scene: pinned corners, a list of 0 (0,0) 1 (L,0) 2 (L,W) 3 (0,W)", "HylcClothSetScene", corners, &n, &set2));
   if (set || set2) PetscCall(HylcClothSetScene(c, a, set2 ? n : c->ncorners, set2 ? corners : c->corners));
@@ -877,5 +878,28 @@ PetscErrorCode HylcClothRun(HylcCloth c)
     PetscCall(HylcClothRunCurl_Private(c));
     break;
   }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcClothAddFiles - Lists the cloth's files in a registry (include/hylc/files.h) for its checks before
+  any work: the material table and the .obj mesh as inputs, the CSV of the selected test as an output
+  (the VTK and PNG files beside it share its prefix, -cloth_output). Call after HylcClothSetFromOptions().
+  Collective.
+
+  Level: intermediate
+@*/
+PetscErrorCode HylcClothAddFiles(HylcCloth c, HylcFiles files)
+{
+  char        path[PETSC_MAX_PATH_LEN + 64], csv[64];
+  const char *name[] = {"tensile", "bias", "cantilever", "drape", "scene", "uniaxial", "curl"};
+
+  PetscFunctionBegin;
+  CLOTH_CHECK(c);
+  if (c->materialFile[0]) PetscCall(HylcFilesAdd(files, HYLC_FILE_INPUT, c->materialFile, "-cloth_material"));
+  if (c->meshFile[0]) PetscCall(HylcFilesAdd(files, HYLC_FILE_INPUT, c->meshFile, "-cloth_mesh_file"));
+  PetscCall(PetscSNPrintf(csv, sizeof(csv), "%s.csv", name[c->test]));
+  PetscCall(HylcClothOutputName_Private(c, csv, path, sizeof(path)));
+  if (path[0]) PetscCall(HylcFilesAdd(files, HYLC_FILE_OUTPUT, path, "-cloth_output"));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
