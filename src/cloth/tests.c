@@ -331,10 +331,107 @@ PetscErrorCode HylcClothRunBias_Private(HylcCloth c)
   PetscCall(HylcClothPlot_Private(c, "bias", path));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+/* the shadow of the cloth seen from above: the largest radius of the vertices' projections in each of
+   nb angular bins (rmax, nb entries), its area sum(r^2 / 2) dtheta, and the nodes: the local maxima of
+   rmax smoothed over 5 bins that stand out of their neighbourhood (+-nb/16 bins) by more than 2 % of the
+   radius */
+static PetscErrorCode DrapeShadow(HylcCloth c, PetscInt nb, PetscReal *rmax, PetscReal *area, PetscInt *nodes)
+{
+  PetscReal *sm;
+
+  PetscFunctionBegin;
+  PetscCall(HylcClothGather_Private(c, c->x));
+  for (PetscInt b = 0; b < nb; b++) rmax[b] = 0;
+  for (PetscInt i = 0; i < c->nv; i++) {
+    const PetscReal *p = c->xgather + 3 * i;
+    PetscReal        r = PetscSqrtReal(p[0] * p[0] + p[1] * p[1]), th = PetscAtan2Real(p[1], p[0]);
+    PetscInt         b = ((PetscInt)PetscFloorReal((th + PETSC_PI) / (2 * PETSC_PI) * nb) % nb + nb) % nb;
+    rmax[b]            = PetscMax(rmax[b], r);
+  }
+  for (PetscInt b = 0; b < nb; b++) /* an empty bin (a coarse mesh): its neighbours' */
+    if (rmax[b] == 0) rmax[b] = PetscMax(rmax[(b + nb - 1) % nb], rmax[(b + 1) % nb]);
+  *area = 0;
+  for (PetscInt b = 0; b < nb; b++) *area += 0.5 * rmax[b] * rmax[b] * 2 * PETSC_PI / nb;
+  PetscCall(PetscMalloc1(nb, &sm));
+  for (PetscInt b = 0; b < nb; b++) {
+    sm[b] = 0;
+    for (PetscInt k = -2; k <= 2; k++) sm[b] += rmax[(b + k + nb) % nb] / 5;
+  }
+  *nodes = 0;
+  for (PetscInt b = 0; b < nb; b++) {
+    PetscBool top = PETSC_TRUE;
+    PetscReal lo  = sm[b];
+    for (PetscInt k = -nb / 16; k <= nb / 16; k++) {
+      PetscReal v = sm[(b + k + nb) % nb];
+      if (v > sm[b] || (v == sm[b] && k < 0)) top = PETSC_FALSE;
+      lo = PetscMin(lo, v);
+    }
+    if (top && sm[b] - lo > 0.02 * sm[b]) (*nodes)++;
+  }
+  PetscCall(PetscFree(sm));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*
+  Cusick drape, static (docs/fabric.md): a disc specimen of -cloth_drape_diameter (0.3 m) centred on a
+  support disc of -cloth_drape_disc (0.18 m); the part over the support is clamped flat (the
+  drapemeter's two discs hold it), the pedestal below it is a rigid support with frictionless barrier
+  contact (rounded rim, -cloth_rim_radius); gravity is applied in -cloth_load_steps steps (default 8).
+  The drape coefficient DC = (A_shadow - A_disc) / (A_specimen - A_disc) (the nominal areas pi R^2 of the
+  specimen and the disc) from the shadow seen from above
+  (the largest radius in each of 360 one-degree sectors), and the number of nodes (folds) of its
+  outline. Symmetry is broken only by the lattice (hexagonal) and rounding: the nodes a perfectly
+  symmetric specimen picks are those of the mesh. CSV: sector_deg, r_m (the outline), then the summary
+  in comment lines; results DC and nodes.
+*/
 PetscErrorCode HylcClothRunDrape_Private(HylcCloth c)
 {
+  MPI_Comm      comm = CLOTH_COMM_PRIVATE(c);
+  HylcClothText csv  = {0};
+  char          path[PETSC_MAX_PATH_LEN + 64];
+  PetscReal     R = c->drapeD / 2, Rd = c->discD / 2, h = c->h, rmax[360], area = 0, DC, A0 = PETSC_PI * R * R, Ad = PETSC_PI * Rd * Rd;
+  PetscInt      n, *v, nodes = 0, nb = 360;
+  PetscBool     ok;
+
   PetscFunctionBegin;
-  SETERRQ(CLOTH_COMM_PRIVATE(c), PETSC_ERR_SUP, "drape: not yet");
+  PetscCheck(R > Rd && Rd > 0, comm, PETSC_ERR_USER_INPUT, "drape: -cloth_drape_diameter %g m must exceed -cloth_drape_disc %g m > 0", (double)c->drapeD, (double)c->discD);
+  PetscCall(HylcClothSolverReset_Private(c));
+  PetscCall(HylcClothClampsReset_Private(c));
+  PetscCall(HylcClothMeshDisc_Private(c, R, Rd, h));
+  PetscCall(HylcClothMeshMaterial_Private(c, (c->angle > -360 ? c->angle : 0.0) * PETSC_PI / 180, c->face == HYLC_CLOTH_FACE_DOWN ? PETSC_TRUE : PETSC_FALSE));
+  c->load   = 0;
+  c->gscale = 0;
+  /* the clamped centre: every vertex within the support's radius */
+  PetscCall(PetscMalloc1(c->nv, &v));
+  n = 0;
+  for (PetscInt i = 0; i < c->nv; i++)
+    if (PetscSqrtReal(c->X[3 * i] * c->X[3 * i] + c->X[3 * i + 1] * c->X[3 * i + 1]) <= Rd * (1 + 1e-9)) v[n++] = i;
+  PetscCall(HylcClothAddClamp_Private(c, n, v, NULL, PETSC_FALSE));
+  PetscCall(PetscFree(v));
+  /* the pedestal below, its top a barrier distance under the cloth */
+  c->nsupport       = 1;
+  c->support[0].kind = 1;
+  c->support[0].cx = c->support[0].cy = 0;
+  c->support[0].R                     = Rd;
+  c->support[0].rho                   = PetscMin(c->rimRadius, 0.5 * Rd);
+  c->support[0].z0                    = -0.5 * c->barrierDist;
+  PetscCall(HylcClothPrepare_Private(c));
+  PetscCall(PetscPrintf(comm, "drape (static, face %s): specimen %g m on a %g m disc, %" PetscInt_FMT " vertices, %" PetscInt_FMT " triangles (h %g m)\n", c->face == HYLC_CLOTH_FACE_DOWN ? "down" : "up", (double)c->drapeD, (double)c->discD, c->nv, c->nt, (double)h));
+  PetscCall(HylcClothLoadPath_Private(c, 0, 1, c->loadSteps > 0 ? c->loadSteps : 8, &ok));
+  PetscCheck(ok, comm, PETSC_ERR_NOT_CONVERGED, "drape: no static equilibrium under gravity (try more -cloth_load_steps)");
+  PetscCall(DrapeShadow(c, nb, rmax, &area, &nodes));
+  DC = (area - Ad) / (A0 - Ad);
+  PetscCall(HylcClothResult_Private(c, "DC", DC));
+  PetscCall(HylcClothResult_Private(c, "nodes", (PetscReal)nodes));
+  PetscCall(PetscPrintf(comm, "  drape coefficient %.4f (shadow %.6g m^2, specimen %.6g m^2, disc %.6g m^2), %" PetscInt_FMT " nodes; Newton iterations %" PetscInt_FMT " (%" PetscInt_FMT " exact, %" PetscInt_FMT " projected Hessians)\n", (double)DC, (double)area, (double)A0, (double)Ad, nodes, c->newtonIts, c->hessExact, c->hessProj));
+  PetscCall(HylcClothTextAppend_Private(&csv, "# drape coefficient %.8g, nodes %" PetscInt_FMT ", shadow %.8g m^2, specimen %.8g m^2, disc %.8g m^2\nsector_deg,r_m\n", (double)DC, nodes, (double)area, (double)A0, (double)Ad));
+  for (PetscInt b = 0; b < nb; b++) PetscCall(HylcClothTextAppend_Private(&csv, "%.1f,%.10g\n", (double)(-180.0 + (b + 0.5) * 360.0 / nb), (double)rmax[b]));
+  PetscCall(HylcClothOutputName_Private(c, "drape.vtk", path, sizeof(path)));
+  PetscCall(HylcClothWriteVTK_Private(c, path));
+  PetscCall(HylcClothOutputName_Private(c, "drape.csv", path, sizeof(path)));
+  PetscCall(HylcClothTextWrite_Private(c, &csv, path));
+  PetscCall(HylcClothPlot_Private(c, "drape", path));
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 PetscErrorCode HylcClothRunScene_Private(HylcCloth c)
 {
