@@ -331,8 +331,8 @@ PetscErrorCode HylcClothRunBias_Private(HylcCloth c)
   PetscCall(HylcClothPlot_Private(c, "bias", path));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
-/* the shadow of the cloth seen from above: the largest radius of the vertices' projections in each of
-   nb angular bins (rmax, nb entries), its area sum(r^2 / 2) dtheta, and the nodes: the local maxima of
+/* the shadow of the cloth seen from above: the largest radius of the projected edges (sampled at a
+   quarter of a bin's arc) in each of nb angular bins (rmax, nb entries), its area sum(r^2 / 2) dtheta, and the nodes: the local maxima of
    rmax smoothed over 5 bins that stand out of their neighbourhood (+-nb/16 bins) by more than 2 % of the
    radius */
 static PetscErrorCode DrapeShadow(HylcCloth c, PetscInt nb, PetscReal *rmax, PetscReal *area, PetscInt *nodes)
@@ -342,12 +342,17 @@ static PetscErrorCode DrapeShadow(HylcCloth c, PetscInt nb, PetscReal *rmax, Pet
   PetscFunctionBegin;
   PetscCall(HylcClothGather_Private(c, c->x));
   for (PetscInt b = 0; b < nb; b++) rmax[b] = 0;
-  for (PetscInt i = 0; i < c->nv; i++) {
-    const PetscReal *p = c->xgather + 3 * i;
-    PetscReal        r = PetscSqrtReal(p[0] * p[0] + p[1] * p[1]), th = PetscAtan2Real(p[1], p[0]);
-    PetscInt         b = ((PetscInt)PetscFloorReal((th + PETSC_PI) / (2 * PETSC_PI) * nb) % nb + nb) % nb;
-    rmax[b]            = PetscMax(rmax[b], r);
-  }
+  for (PetscInt t = 0; t < c->nt; t++) /* points along every edge: the outline of the shadow is made of edges */
+    for (int e = 0; e < 3; e++) {
+      const PetscReal *p = c->xgather + 3 * c->tri[3 * t + e], *q = c->xgather + 3 * c->tri[3 * t + (e + 1) % 3];
+      PetscReal        len = PetscSqrtReal((q[0] - p[0]) * (q[0] - p[0]) + (q[1] - p[1]) * (q[1] - p[1])), rr = PetscMax(PetscSqrtReal(p[0] * p[0] + p[1] * p[1]), 1e-3);
+      PetscInt         m = 1 + (PetscInt)PetscCeilReal(4 * len / (rr * 2 * PETSC_PI / nb));
+      for (PetscInt k = 0; k <= m; k++) {
+        PetscReal s = (PetscReal)k / m, x = p[0] + s * (q[0] - p[0]), y = p[1] + s * (q[1] - p[1]), r = PetscSqrtReal(x * x + y * y), th = PetscAtan2Real(y, x);
+        PetscInt  b = ((PetscInt)PetscFloorReal((th + PETSC_PI) / (2 * PETSC_PI) * nb) % nb + nb) % nb;
+        rmax[b]     = PetscMax(rmax[b], r);
+      }
+    }
   for (PetscInt b = 0; b < nb; b++) /* an empty bin (a coarse mesh): its neighbours' */
     if (rmax[b] == 0) rmax[b] = PetscMax(rmax[(b + nb - 1) % nb], rmax[(b + 1) % nb]);
   *area = 0;
@@ -409,7 +414,7 @@ PetscErrorCode HylcClothRunDrape_Private(HylcCloth c)
   PetscCall(HylcClothAddClamp_Private(c, n, v, NULL, PETSC_FALSE));
   PetscCall(PetscFree(v));
   /* the pedestal below, its top a barrier distance under the cloth */
-  c->nsupport       = 1;
+  c->nsupport        = 1;
   c->support[0].kind = 1;
   c->support[0].cx = c->support[0].cy = 0;
   c->support[0].R                     = Rd;
