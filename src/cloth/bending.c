@@ -5,13 +5,17 @@
 
 /* the chord angle (radians below the horizontal) of a cantilever of overhang l clamped at x = 0; the
    mesh: nx = cantN spacings over the overhang and two behind the root (clamped, with every vertex at
-   x <= 0), rows as close to equilateral as the width allows */
-static PetscErrorCode CantileverAngle(HylcCloth c, PetscReal l, PetscReal angle, PetscBool faceDown, PetscReal *phi, PetscBool *ok, PetscReal curl[2], PetscReal *lprev, PetscReal **xprev, PetscInt *nvprev)
+   x <= 0), ny rows across */
+static PetscErrorCode CantileverAngle(HylcCloth c, PetscReal l, PetscReal angle, PetscBool faceDown, PetscReal *phi, PetscBool *ok, PetscReal curl[2], PetscReal *lprev, PetscReal **xprev, PetscInt *nvprev, PetscInt *nyfix)
 {
   PetscReal dx = l / c->cantN, W = c->cantWidth, tip[2] = {0, 0}, tipl[3] = {0, 0, 0};
-  PetscInt  ny = PetscMax(1, (PetscInt)PetscFloorReal(W / (dx * PetscSqrtReal(3.0) / 2) + 0.5)), n, *v;
+  PetscInt  ny, n, *v;
 
   PetscFunctionBegin;
+  /* the rows across: as close to equilateral as the width allows at the first overhang, then kept (the
+     chord angle stays a continuous function of the overhang for the secant iteration) */
+  if (*nyfix <= 0) *nyfix = PetscMax(1, (PetscInt)PetscFloorReal(W / (dx * PetscSqrtReal(3.0) / 2) + 0.5));
+  ny = *nyfix;
   PetscCall(HylcClothSolverReset_Private(c));
   PetscCall(HylcClothClampsReset_Private(c));
   PetscCall(HylcClothMeshStripN_Private(c, -2 * dx, l + 2 * dx, W, c->cantN + 2, ny));
@@ -118,18 +122,18 @@ PetscErrorCode HylcClothRunCantilever_Private(HylcCloth c)
       double             le;
       int                rc;
       PetscReal         *xprev = NULL, lprev = 0;
-      PetscInt           nvprev = 0;
+      PetscInt           nvprev = 0, nyfix = 0;
 
       rc = HylcClothElasticaOverhang(HylcClothTableMoment, &mctx, w, target, 400, &le);
       if (!rc) lel = le;
       /* the shell: start at the elastica's overhang (or 2 cm), then secant steps on the chord angle */
       l0 = PetscIsNormalReal(lel) ? lel : 0.02;
-      PetscCall(CantileverAngle(c, l0, angle, down, &f0, &ok, NULL, &lprev, &xprev, &nvprev));
+      PetscCall(CantileverAngle(c, l0, angle, down, &f0, &ok, NULL, &lprev, &xprev, &nvprev, &nyfix));
       PetscCheck(ok, comm, PETSC_ERR_NOT_CONVERGED, "cantilever %s, face %s: no equilibrium at overhang %g m", dn, fn, (double)l0);
       l1 = l0 * PetscPowReal(target / PetscMax(f0, 1e-3), 1.0 / 3.0);
       for (PetscInt it = 0; it < 12; it++) {
         PetscReal ln;
-        PetscCall(CantileverAngle(c, l1, angle, down, &f1, &ok, curl, &lprev, &xprev, &nvprev));
+        PetscCall(CantileverAngle(c, l1, angle, down, &f1, &ok, curl, &lprev, &xprev, &nvprev, &nyfix));
         PetscCheck(ok, comm, PETSC_ERR_NOT_CONVERGED, "cantilever %s, face %s: no equilibrium at overhang %g m", dn, fn, (double)l1);
         if (c->monitor) PetscCall(PetscPrintf(comm, "  overhang %.8g m: chord %.6g deg\n", (double)l1, (double)(f1 * 180 / PETSC_PI)));
         if (PetscAbsReal(f1 - target) < 1e-6) {

@@ -4,6 +4,7 @@
 # line search (CLOTH_LineSearch) of
 # - strip tensile (stock1 and satin1, x and y, h = 5 mm, 10 steps to 10 %) on 1 and 2 ranks,
 # - bias extension (satin1, 45 degrees, h = 5 mm, 10 steps to 10 %),
+# - Cusick drape, static (satin1, h = 1 cm: 847 vertices) on 1 and 2 ranks,
 # - cantilever bending length (satin1, x and y, face up, 1 cm wide, 16 spacings over the overhang),
 # with the measured results each prints (T(5%), the central zone against the table, c against the
 # elastica). Skipped when the paper's tables are absent. HYLC_BENCH_CLOTH_NP (default 2) ranks for the
@@ -40,7 +41,7 @@ run() {
   ev=$(awk '$1 == "CLOTH_Assemble" { a = $4 } $1 == "CLOTH_Solve" { s = $4 } $1 == "CLOTH_LineSearch" { l = $4 } $1 == "MatCholFctrNum" || $1 == "MatCholFctrSym" || $1 == "MatLUFactorNum" || $1 == "MatLUFactorSym" { f += $4 }
             END { printf "Newton solves %.2f s: assembly %.2f s (energy, gradient, Hessian), factorization %.2f s, line search %.2f s", s, a, f, l }' "$tmp/$name.logview")
   printf '%-24s %d rank(s): %6.1f s wall (load %s); %s\n' "$name" "$n" "$(awk -v a="$t0" -v b="$t1" 'BEGIN{print b-a}')" "$load" "$ev"
-  grep -E '^  T\(5%\)|^  F\(5%\)|^cantilever|^Newton iterations' "$log" | sed 's/^/    /'
+  grep -E '^  T\(5%\)|^  F\(5%\)|^  drape coefficient|^cantilever|^Newton iterations' "$log" | sed 's/^/    /'
 }
 
 echo "== hylc-cloth: strip tensile, bias extension, cantilever (the paper's tables)"
@@ -49,5 +50,7 @@ for m in stock1 satin1; do
 done
 run "tensile_stock1_np$np" "$np" -cloth_material "$ref/materials/stock1.json" -cloth_test tensile -cloth_h 0.005
 run "bias_satin1" 1 -cloth_material "$ref/materials/satin1.json" -cloth_test bias -cloth_h 0.005
+run "drape_satin1_h10mm" 1 -cloth_material "$ref/materials/satin1.json" -cloth_test drape -cloth_h 0.01
+run "drape_satin1_h10mm_np$np" "$np" -cloth_material "$ref/materials/satin1.json" -cloth_test drape -cloth_h 0.01
 run "cantilever_satin1" 1 -cloth_material "$ref/materials/satin1.json" -cloth_test cantilever -cloth_face up -cloth_cantilever_width 0.01 -cloth_cantilever_n 16
 exit $st
