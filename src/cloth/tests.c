@@ -438,10 +438,82 @@ PetscErrorCode HylcClothRunDrape_Private(HylcCloth c)
   PetscCall(HylcClothPlot_Private(c, "drape", path));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+/*
+  A generic static scene (docs/fabric.md): the rectangle [0, L] x [0, W] (-cloth_length, -cloth_width,
+  mesh -cloth_h, material x at -cloth_angle to its length, -cloth_face) or an .obj mesh
+  (-cloth_mesh_file), clamped along a centred length -cloth_scene_clamp of its end x = 0 and/or pinned
+  at the vertices nearest the corners -cloth_scene_corners (0 (0,0), 1 (L,0), 2 (L,W), 3 (0,W)), under
+  gravity in -cloth_load_steps (8) steps. The equilibrium's coordinates are written (CSV: vertex, X, Y,
+  Z rest, x, y, z) with the VTK; results: the lowest z and the largest displacement.
+*/
 PetscErrorCode HylcClothRunScene_Private(HylcCloth c)
 {
+  MPI_Comm      comm = CLOTH_COMM_PRIVATE(c);
+  HylcClothText csv  = {0};
+  char          path[PETSC_MAX_PATH_LEN + 64];
+  PetscReal     L = c->length, W = c->width, zmin = PETSC_MAX_REAL, dmax = 0, lo[3] = {PETSC_MAX_REAL, PETSC_MAX_REAL, PETSC_MAX_REAL}, hi[3] = {-PETSC_MAX_REAL, -PETSC_MAX_REAL, -PETSC_MAX_REAL};
+  PetscInt      n, *v;
+  PetscBool     ok;
+
   PetscFunctionBegin;
-  SETERRQ(CLOTH_COMM_PRIVATE(c), PETSC_ERR_SUP, "scene: not yet");
+  PetscCheck(c->sceneClamp > 0 || c->ncorners > 0, comm, PETSC_ERR_USER_INPUT, "scene: nothing holds the cloth: give -cloth_scene_clamp (m) or -cloth_scene_corners");
+  PetscCall(HylcClothSolverReset_Private(c));
+  PetscCall(HylcClothClampsReset_Private(c));
+  if (c->meshFile[0])
+    PetscCall(HylcClothMeshReadOBJ_Private(c, c->meshFile, c->meshScale));
+  else
+    PetscCall(HylcClothMeshStrip_Private(c, 0, L, W, c->h));
+  PetscCall(HylcClothMeshMaterial_Private(c, (c->angle > -360 ? c->angle : 0.0) * PETSC_PI / 180, c->face == HYLC_CLOTH_FACE_DOWN ? PETSC_TRUE : PETSC_FALSE));
+  for (PetscInt i = 0; i < c->nv; i++)
+    for (int k = 0; k < 3; k++) {
+      lo[k] = PetscMin(lo[k], c->X[3 * i + k]);
+      hi[k] = PetscMax(hi[k], c->X[3 * i + k]);
+    }
+  c->nsupport = 0;
+  c->load     = 0;
+  c->gscale   = 0;
+  if (c->sceneClamp > 0) {
+    PetscReal yc = 0.5 * (lo[1] + hi[1]), tol = 1e-9 * (hi[0] - lo[0]);
+    PetscCheck(c->sceneClamp <= (hi[1] - lo[1]) * (1 + 1e-9), comm, PETSC_ERR_USER_INPUT, "-cloth_scene_clamp %g m is outside the mesh: its end x = %g is %g m wide", (double)c->sceneClamp, (double)lo[0], (double)(hi[1] - lo[1]));
+    PetscCall(HylcClothVerticesInBox_Private(c, lo[0] - 1, lo[0] + tol, yc - 0.5 * c->sceneClamp - tol, yc + 0.5 * c->sceneClamp + tol, &n, &v));
+    PetscCheck(n > 0, comm, PETSC_ERR_USER_INPUT, "-cloth_scene_clamp %g m holds no vertex of the end x = %g", (double)c->sceneClamp, (double)lo[0]);
+    PetscCall(HylcClothAddClamp_Private(c, n, v, NULL, PETSC_FALSE));
+    PetscCall(PetscFree(v));
+  }
+  if (c->ncorners > 0) {
+    PetscInt pins[4];
+    for (PetscInt k = 0; k < c->ncorners; k++) {
+      PetscReal cx = (c->corners[k] == 1 || c->corners[k] == 2) ? hi[0] : lo[0], cy = c->corners[k] >= 2 ? hi[1] : lo[1], best = PETSC_MAX_REAL;
+      for (PetscInt i = 0; i < c->nv; i++) {
+        PetscReal d = PetscSqr(c->X[3 * i] - cx) + PetscSqr(c->X[3 * i + 1] - cy);
+        if (d < best) {
+          best    = d;
+          pins[k] = i;
+        }
+      }
+    }
+    PetscCall(HylcClothAddClamp_Private(c, c->ncorners, pins, NULL, PETSC_FALSE));
+  }
+  PetscCall(HylcClothPrepare_Private(c));
+  PetscCall(PetscPrintf(comm, "scene: %s, %" PetscInt_FMT " vertices, %" PetscInt_FMT " triangles; clamp %g m, %" PetscInt_FMT " pinned corners, gravity %g m/s^2\n", c->meshFile[0] ? c->meshFile : "rectangle", c->nv, c->nt, (double)c->sceneClamp, c->ncorners, (double)c->gravity));
+  PetscCall(HylcClothLoadPath_Private(c, 0, 1, c->loadSteps > 0 ? c->loadSteps : 8, &ok));
+  PetscCheck(ok, comm, PETSC_ERR_NOT_CONVERGED, "scene: no static equilibrium under gravity (try more -cloth_load_steps)");
+  PetscCall(HylcClothGather_Private(c, c->x));
+  PetscCall(HylcClothTextAppend_Private(&csv, "vertex,X,Y,Z,x,y,z\n"));
+  for (PetscInt i = 0; i < c->nv; i++) {
+    const PetscReal *X = c->X + 3 * i, *x = c->xgather + 3 * i;
+    zmin = PetscMin(zmin, x[2]);
+    dmax = PetscMax(dmax, PetscSqrtReal(PetscSqr(x[0] - X[0]) + PetscSqr(x[1] - X[1]) + PetscSqr(x[2] - X[2])));
+    PetscCall(HylcClothTextAppend_Private(&csv, "%" PetscInt_FMT ",%.10g,%.10g,%.10g,%.12g,%.12g,%.12g\n", i, (double)X[0], (double)X[1], (double)X[2], (double)x[0], (double)x[1], (double)x[2]));
+  }
+  PetscCall(HylcClothResult_Private(c, "zmin", zmin));
+  PetscCall(HylcClothResult_Private(c, "max_displacement", dmax));
+  PetscCall(PetscPrintf(comm, "  lowest z %.6g m, largest displacement %.6g m; Newton iterations %" PetscInt_FMT " (%" PetscInt_FMT " exact, %" PetscInt_FMT " projected Hessians)\n", (double)zmin, (double)dmax, c->newtonIts, c->hessExact, c->hessProj));
+  PetscCall(HylcClothOutputName_Private(c, "scene.vtk", path, sizeof(path)));
+  PetscCall(HylcClothWriteVTK_Private(c, path));
+  PetscCall(HylcClothOutputName_Private(c, "scene.csv", path, sizeof(path)));
+  PetscCall(HylcClothTextWrite_Private(c, &csv, path));
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 PetscErrorCode HylcClothRunCurl_Private(HylcCloth c)
 {
