@@ -691,8 +691,8 @@ PetscErrorCode HylcClothSetUp(HylcCloth c)
       c->width  = 0.05;
       break;
     case HYLC_CLOTH_TEST_CURL:
-      c->length = 0.1;
-      c->width  = 0.05;
+      c->length = 0.03;
+      c->width  = 0.02;
       break;
     default:
       c->length = 0.5;

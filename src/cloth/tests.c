@@ -515,10 +515,66 @@ PetscErrorCode HylcClothRunScene_Private(HylcCloth c)
   PetscCall(HylcClothTextWrite_Private(c, &csv, path));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+/*
+  The free curl of a strip (docs/fabric.md): a strip of -cloth_length by -cloth_width (0.03 x 0.02 m: less
+  than a turn at the paper's stock1 curl), no gravity, held only against rigid motion (the vertex nearest
+  the centre and its neighbour along x fixed, the neighbour along y fixed in z), relaxes from flat to the
+  table's preferred curvature. Reports the central zone's (the middle half in both directions) II00,
+  II11 (1/m) beside the table's free curl (HylcClothTableCurl). The cloth does not collide with itself:
+  a strip longer than a turn passes through itself. CSV: II00_zone, II11_zone, II00_table, II11_table.
+*/
 PetscErrorCode HylcClothRunCurl_Private(HylcCloth c)
 {
+  MPI_Comm      comm = CLOTH_COMM_PRIVATE(c);
+  HylcClothText csv  = {0};
+  char          path[PETSC_MAX_PATH_LEN + 64];
+  PetscReal     L = c->length, W = c->width, *z, zc[6], best[3] = {PETSC_MAX_REAL, PETSC_MAX_REAL, PETSC_MAX_REAL};
+  PetscInt      v3[3] = {-1, -1, -1};
+  PetscBool     ok;
+  double        k0 = NAN, k1 = NAN;
+
   PetscFunctionBegin;
-  SETERRQ(CLOTH_COMM_PRIVATE(c), PETSC_ERR_SUP, "curl: not yet");
+  PetscCall(HylcClothStrip_Private(c, 0, L, W, c->h, c->angle > -360 ? c->angle : 0.0, c->face == HYLC_CLOTH_FACE_DOWN ? PETSC_TRUE : PETSC_FALSE));
+  for (PetscInt i = 0; i < c->nv; i++) { /* the centre */
+    PetscReal d = PetscSqr(c->X[3 * i] - L / 2) + PetscSqr(c->X[3 * i + 1] - W / 2);
+    if (d < best[0]) best[0] = d, v3[0] = i;
+  }
+  for (PetscInt i = 0; i < c->nv; i++) { /* its nearest neighbours along x and along y */
+    PetscReal dx = c->X[3 * i] - c->X[3 * v3[0]], dy = c->X[3 * i + 1] - c->X[3 * v3[0] + 1], d = dx * dx + dy * dy;
+    if (i == v3[0]) continue;
+    if (PetscAbsReal(dy) < 1e-9 * W && dx > 0 && d < best[1]) best[1] = d, v3[1] = i;
+    if (PetscAbsReal(dy) > 0.5 * PetscAbsReal(dx) && dy > 0 && d < best[2]) best[2] = d, v3[2] = i;
+  }
+  PetscCheck(v3[1] >= 0 && v3[2] >= 0, comm, PETSC_ERR_USER_INPUT, "curl: the strip %g x %g m with h %g m has no interior vertex to hold", (double)L, (double)W, (double)c->h);
+  PetscCall(HylcClothAddClamp_Private(c, 2, v3, NULL, PETSC_FALSE));
+  PetscCall(HylcClothAddClamp_Private(c, 1, v3 + 2, NULL, PETSC_TRUE));
+  PetscCall(HylcClothPrepare_Private(c));
+  c->gscale = 0;
+  PetscCall(PetscPrintf(comm, "curl (free strip, face %s): %g x %g m, %" PetscInt_FMT " vertices, %" PetscInt_FMT " triangles\n", c->face == HYLC_CLOTH_FACE_DOWN ? "down" : "up", (double)L, (double)W, c->nv, c->nt));
+  { /* from flat to a curled strip in one solve: rotations of order one need more than the load step's
+       Newton iterations */
+    PetscInt maxit = c->maxit;
+    c->maxit       = PetscMax(c->maxit, 300);
+    PetscCall(HylcClothSolverReset_Private(c));
+    PetscCall(HylcClothSolveStatic_Private(c, &ok));
+    c->maxit = maxit;
+    PetscCall(HylcClothSolverReset_Private(c));
+  }
+  PetscCheck(ok, comm, PETSC_ERR_NOT_CONVERGED, "curl: no equilibrium of the free strip");
+  PetscCall(PetscMalloc1(6 * c->nt, &z));
+  PetscCall(HylcClothStrains_Private(c, c->x, z));
+  PetscCall(HylcClothZoneMean_Private(c, z, 0.25 * L, 0.75 * L, 0.25 * W, 0.75 * W, zc));
+  PetscCall(PetscFree(z));
+  (void)HylcClothTableCurl(c->hm, &k0, &k1, NULL);
+  PetscCall(HylcClothResult_Private(c, "curl_II00", zc[3]));
+  PetscCall(HylcClothResult_Private(c, "curl_II11", zc[5]));
+  PetscCall(PetscPrintf(comm, "  central zone: II00 %.5g 1/m, II11 %.5g 1/m; the table's free curl: II00 %.5g 1/m, II11 %.5g 1/m; Newton iterations %" PetscInt_FMT "\n", (double)zc[3], (double)zc[5], k0, k1, c->newtonIts));
+  PetscCall(HylcClothTextAppend_Private(&csv, "II00_zone,II11_zone,II00_table,II11_table\n%.10g,%.10g,%.10g,%.10g\n", (double)zc[3], (double)zc[5], k0, k1));
+  PetscCall(HylcClothOutputName_Private(c, "curl.vtk", path, sizeof(path)));
+  PetscCall(HylcClothWriteVTK_Private(c, path));
+  PetscCall(HylcClothOutputName_Private(c, "curl.csv", path, sizeof(path)));
+  PetscCall(HylcClothTextWrite_Private(c, &csv, path));
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 PetscErrorCode HylcClothDynamic_Private(HylcCloth c, PetscErrorCode (*monitor)(HylcCloth, PetscInt, PetscReal, void *), void *ctx, PetscBool *rest)
 {
