@@ -478,8 +478,9 @@ PetscErrorCode HylcClothSetDrape(HylcCloth c, PetscReal D, PetscReal d)
 }
 
 /*@C
-  HylcClothSetDynamics - The dynamic mode's time step (s), end time (s) and damping rate (1/s)
-  (-cloth_dt, -cloth_tmax, -cloth_damping). Logically collective.
+  HylcClothSetDynamics - The dynamic mode's time step (s), end time (s) and damping rate (1/s), stored
+  for a dynamic (TS) mode that is not implemented yet: no test uses them and no option sets them.
+  Logically collective.
 
   Level: intermediate
 @*/
@@ -543,7 +544,7 @@ PetscErrorCode HylcClothSetBarrier(HylcCloth c, PetscReal dist, PetscReal stiff)
 . -cloth_strain_max, -cloth_strain_steps, -cloth_gravity, -cloth_planar - loads
 . -cloth_solver, -cloth_hessian, -cloth_rtol, -cloth_atol, -cloth_max_it, -cloth_load_steps - the solver
 . -cloth_cantilever_angle, -cloth_cantilever_width, -cloth_cantilever_n - the cantilever
-. -cloth_drape_diameter, -cloth_drape_disc, -cloth_dt, -cloth_tmax, -cloth_damping, -cloth_rest_speed - the drape
+. -cloth_drape_diameter, -cloth_drape_disc, -cloth_rim_radius - the drape
 . -cloth_scene_clamp, -cloth_scene_corners - the scene's supports
 . -cloth_barrier_distance, -cloth_barrier_stiffness, -cloth_rim_radius - contact
 - -cloth_output, -cloth_vtk, -cloth_plot, -cloth_plot_script, -cloth_monitor, -cloth_view - output
@@ -555,7 +556,7 @@ PetscErrorCode HylcClothSetFromOptions(HylcCloth c)
   PetscEnum test = (PetscEnum)c->test, face = (PetscEnum)c->face, dir = (PetscEnum)c->direction, solver = (PetscEnum)c->solver, hess = (PetscEnum)c->hessian;
   PetscBool set, set2, b2;
   char      path[PETSC_MAX_PATH_LEN];
-  PetscReal a, b, v3[3];
+  PetscReal a, b;
   PetscInt  n, corners[4];
 
   PetscFunctionBegin;
@@ -619,16 +620,7 @@ PetscErrorCode HylcClothSetFromOptions(HylcCloth c)
   if (set || set2) PetscCall(HylcClothSetDrape(c, a, b));
   PetscCall(PetscOptionsReal("-cloth_rim_radius", "Drape: rounding radius of the support disc's rim (m)", "HylcClothSetDrape", c->rimRadius, &c->rimRadius, NULL));
   PetscCheck(c->rimRadius > 0 && c->rimRadius < 0.5 * c->discD, CLOTH_COMM(c), PETSC_ERR_USER_INPUT, "-cloth_rim_radius %g must be in (0, disc radius)", (double)c->rimRadius);
-  v3[0] = c->dt;
-  v3[1] = c->tmax;
-  v3[2] = c->damping;
-  PetscCall(PetscOptionsReal("-cloth_dt", "Dynamic mode: time step (s)", "HylcClothSetDynamics", c->dt, &v3[0], &set));
-  PetscCall(PetscOptionsReal("-cloth_tmax", "Dynamic mode: longest simulated time (s)", "HylcClothSetDynamics", c->tmax, &v3[1], &set2));
-  set = (PetscBool)(set || set2);
-  PetscCall(PetscOptionsReal("-cloth_damping", "Dynamic mode: damping rate c of M a = f - c M v (1/s)", "HylcClothSetDynamics", c->damping, &v3[2], &set2));
-  if (set || set2) PetscCall(HylcClothSetDynamics(c, v3[0], v3[1], v3[2]));
-  PetscCall(PetscOptionsReal("-cloth_rest_speed", "Dynamic mode: at rest when every vertex is slower than this (m/s)", "HylcClothSetDynamics", c->restTol, &c->restTol, NULL));
-  PetscCheck(c->restTol > 0, CLOTH_COMM(c), PETSC_ERR_USER_INPUT, "-cloth_rest_speed %g must be > 0", (double)c->restTol);
+  /* the dynamic mode (HylcClothSetDynamics) is not implemented: its options are not offered */
   a = c->sceneClamp;
   n = 4;
   for (PetscInt i = 0; i < 4; i++) corners[i] = i < c->ncorners ? c->corners[i] : 0; /* -help shows the first */
@@ -746,7 +738,7 @@ PetscErrorCode HylcClothView(HylcCloth c, PetscViewer viewer)
   if (c->nv) PetscCall(PetscViewerASCIIPrintf(viewer, "mesh: %" PetscInt_FMT " vertices, %" PetscInt_FMT " triangles, area %g m^2, on %d ranks\n", c->nv, c->nt, (double)c->area, (int)c->size));
   PetscCall(PetscViewerASCIIPrintf(viewer, "solver: %s, Hessian %s, rtol %g, max_it %" PetscInt_FMT "\n", HylcClothSolvers[c->solver], HylcClothHessians[c->hessian], (double)c->rtol, c->maxit));
   PetscCall(PetscViewerASCIIPrintf(viewer, "contact barrier: distance %g m, stiffness %g J/m^4\n", (double)c->barrierDist, (double)c->kappaB));
-  if (c->test == HYLC_CLOTH_TEST_DRAPE) PetscCall(PetscViewerASCIIPrintf(viewer, "drape: specimen %g m on a disc of %g m (rim radius %g m); dt %g s, damping %g 1/s, up to %g s\n", (double)c->drapeD, (double)c->discD, (double)c->rimRadius, (double)c->dt, (double)c->damping, (double)c->tmax));
+  if (c->test == HYLC_CLOTH_TEST_DRAPE) PetscCall(PetscViewerASCIIPrintf(viewer, "drape (static): specimen %g m on a disc of %g m (rim radius %g m)\n", (double)c->drapeD, (double)c->discD, (double)c->rimRadius));
   if (c->test == HYLC_CLOTH_TEST_CANTILEVER) PetscCall(PetscViewerASCIIPrintf(viewer, "cantilever: tip angle %g deg, width %g m, %" PetscInt_FMT " spacings along the overhang\n", (double)c->cantAngle, (double)c->cantWidth, c->cantN));
   PetscCall(PetscViewerASCIIPrintf(viewer, "output: %s\n", c->output[0] ? c->output : "(none)"));
   for (PetscInt i = 0; i < c->nresults; i++) PetscCall(PetscViewerASCIIPrintf(viewer, "%s = %.6g\n", c->rname[i], (double)c->rvalue[i]));

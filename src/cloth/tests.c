@@ -576,11 +576,3 @@ PetscErrorCode HylcClothRunCurl_Private(HylcCloth c)
   PetscCall(HylcClothTextWrite_Private(c, &csv, path));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
-PetscErrorCode HylcClothDynamic_Private(HylcCloth c, PetscErrorCode (*monitor)(HylcCloth, PetscInt, PetscReal, void *), void *ctx, PetscBool *rest)
-{
-  PetscFunctionBegin;
-  (void)monitor;
-  (void)ctx;
-  (void)rest;
-  SETERRQ(CLOTH_COMM_PRIVATE(c), PETSC_ERR_SUP, "dynamic: not yet");
-}

@@ -152,7 +152,6 @@ PETSC_INTERN PetscErrorCode HylcClothBacktrack_Private(HylcCloth, Vec X, PetscRe
 PETSC_INTERN PetscErrorCode HylcClothFormHessian_Private(HylcCloth, Vec X, Mat H);
 PETSC_INTERN PetscErrorCode HylcClothDefaultKSP_Private(KSP, PetscBool preonly);
 /* dynamic.c */
-PETSC_INTERN PetscErrorCode HylcClothDynamic_Private(HylcCloth, PetscErrorCode (*monitor)(HylcCloth, PetscInt, PetscReal, void *), void *, PetscBool *rest);
 /* output.c */
 PETSC_INTERN PetscErrorCode HylcClothWriteVTK_Private(HylcCloth, const char path[]);
 PETSC_INTERN PetscErrorCode HylcClothOutputName_Private(HylcCloth, const char suffix[], char path[], size_t len);
