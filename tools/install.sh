@@ -94,6 +94,8 @@ PC
     # pip install PREFIX/share/hylc/python: setup.py copies PREFIX/lib/libhylcmat.so into the package
     for f in python/pyproject.toml python/setup.py python/README.md; do put 644 "$f" "$DATADIR/hylc/python"; done
   fi
+  # hylc-cloth's plots (src/cloth/output.c looks for PREFIX/share/hylc/plot_cloth.py beside PREFIX/bin)
+  put 755 examples/plot_cloth.py "$DATADIR/hylc"
   mkd "$(dirname "$MANIFEST")"
   sort -u "$tmpman" >"$man"
   echo "installed $(grep -c '^f ' "$man") files under $DESTDIR$PREFIX (manifest: $man)"

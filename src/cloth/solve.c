@@ -16,7 +16,10 @@
    -cloth_tao_monitor, ... */
 #include <hylc/private/clothimpl.h>
 #include <petscmat.h>
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-parameter"
 #include <petsc/private/matimpl.h>
+#pragma GCC diagnostic pop
 #include <hylc/chol.h>
 
 /* the number of negative pivots of the last factorization (MatGetInertia: hylc's and MUMPS' Cholesky),
@@ -252,7 +255,7 @@ static PetscErrorCode TaoUpdate(Tao tao, PetscInt it, void *ctx)
 
 /*
   Reads the options of the embedded solvers (-cloth_snes_*, -cloth_ksp_*, -cloth_pc_*, -cloth_tao_*,
-  -cloth_dyn_ts_*, -cloth_dyn_snes_*, ...) so that -help lists them and the check of unused options
+...) so that -help lists them and the check of unused options
   accepts them: the solvers themselves are made per mesh, with the same prefixes. Collective.
 */
 PetscErrorCode HylcClothSolverOptions_Private(HylcCloth c)
@@ -261,7 +264,6 @@ PetscErrorCode HylcClothSolverOptions_Private(HylcCloth c)
   const char *prefix;
   SNES        snes;
   Tao         tao;
-  TS          ts;
   KSP         ksp;
 
   PetscFunctionBegin;
@@ -280,12 +282,6 @@ PetscErrorCode HylcClothSolverOptions_Private(HylcCloth c)
   PetscCall(TaoSetType(tao, TAONTR));
   PetscCall(TaoSetFromOptions(tao));
   PetscCall(TaoDestroy(&tao));
-  PetscCall(TSCreate(comm, &ts));
-  PetscCall(TSSetOptionsPrefix(ts, prefix));
-  PetscCall(TSAppendOptionsPrefix(ts, "cloth_dyn_"));
-  PetscCall(TSSetType(ts, TSBEULER));
-  PetscCall(TSSetFromOptions(ts));
-  PetscCall(TSDestroy(&ts));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -68,6 +68,14 @@ PetscErrorCode HylcClothZoneMean_Private(HylcCloth c, const PetscReal *z, PetscR
 }
 
 /* y(x) at x by linear interpolation in the table (xs increasing) */
+/* a figure of the summary, or "not reached" where the curve ends before its strain (no NaN printed) */
+static const char *Fig(char buf[48], PetscReal v, const char unit[])
+{
+  if (PetscIsInfOrNanReal(v)) return "not reached";
+  snprintf(buf, 48, "%.6g%s%s", (double)v, unit[0] ? " " : "", unit);
+  return buf;
+}
+
 static PetscReal Interp(PetscInt n, const PetscReal *xs, const PetscReal *ys, PetscReal x)
 {
   if (n < 2 || x < xs[0] - 1e-12 || x > xs[n - 1] + 1e-12) return (PetscReal)NAN; /* no extrapolation */
@@ -194,7 +202,10 @@ PetscErrorCode HylcClothRunTensile_Private(HylcCloth c)
       PetscCall(HylcClothResult_Private(c, r, maxrel));
       PetscCall(PetscSNPrintf(r, sizeof(r), "table_dlat_%s", dn[d]));
       PetscCall(HylcClothResult_Private(c, r, maxdlat));
-      PetscCall(PetscPrintf(comm, "  T(5%%) %.6g N/m, T(10%%) %.6g N/m, dT/de(5%%) %.6g N/m, Poisson(5%%) %.4g; central zone vs the table: T within %.3g %%, lateral strain within %.3g\n", (double)Interp(ns + 1, eps, T, 0.05), (double)Interp(ns + 1, eps, T, 0.10), (double)Slope(ns + 1, eps, T, 0.05), (double)Interp(m, eps, nu, 0.05), (double)(100 * maxrel), (double)maxdlat));
+      {
+        char b[4][48];
+        PetscCall(PetscPrintf(comm, "  T(5%%) %s, T(10%%) %s, dT/de(5%%) %s, Poisson(5%%) %s; central zone vs the table: T within %.3g %%, lateral strain within %.3g\n", Fig(b[0], Interp(ns + 1, eps, T, 0.05), "N/m"), Fig(b[1], Interp(ns + 1, eps, T, 0.10), "N/m"), Fig(b[2], Slope(ns + 1, eps, T, 0.05), "N/m"), Fig(b[3], Interp(m, eps, nu, 0.05), ""), (double)(100 * maxrel), (double)maxdlat));
+      }
     }
     PetscCall(PetscFree4(z, eps, T, lat));
   }
@@ -246,7 +257,10 @@ PetscErrorCode HylcClothRunUniaxial_Private(HylcCloth c)
     PetscCall(HylcClothResult_Private(c, r, Interp(ns + 1, eps, T, 0.10)));
     PetscCall(PetscSNPrintf(r, sizeof(r), "nu5_%s", d ? "y" : "x"));
     PetscCall(HylcClothResult_Private(c, r, Interp(ns + 1, eps, lat, 0.05)));
-    PetscCall(PetscPrintf(comm, "uniaxial %s (table): T(5%%) %.6g N/m, T(10%%) %.6g N/m, Poisson(5%%) %.4g\n", d ? "y" : "x", (double)Interp(ns + 1, eps, T, 0.05), (double)Interp(ns + 1, eps, T, 0.10), (double)Interp(ns + 1, eps, lat, 0.05)));
+    {
+      char b[3][48];
+      PetscCall(PetscPrintf(comm, "uniaxial %s (table): T(5%%) %s, T(10%%) %s, Poisson(5%%) %s\n", d ? "y" : "x", Fig(b[0], Interp(ns + 1, eps, T, 0.05), "N/m"), Fig(b[1], Interp(ns + 1, eps, T, 0.10), "N/m"), Fig(b[2], Interp(ns + 1, eps, lat, 0.05), "")));
+    }
     PetscCall(PetscFree3(eps, T, lat));
   }
   PetscCall(HylcClothOutputName_Private(c, "uniaxial.csv", path, sizeof(path)));

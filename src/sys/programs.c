@@ -20,7 +20,8 @@ enum {
   G_SOLVE     = 1 << 7, /* hylc-solve's strain and outputs */
   G_FIT       = 1 << 8, /* HylcFitSetFromOptions() */
   G_EVAL      = 1 << 9, /* hylc-eval and HylcMaterialSetFromOptions() */
-  G_CALIBRATE = 1 << 10 /* HylcCalibrateSetFromOptions() */
+  G_CALIBRATE = 1 << 10, /* HylcCalibrateSetFromOptions() */
+  G_CLOTH     = 1 << 11  /* HylcClothSetFromOptions(): the cloth and its PETSc solvers */
 };
 
 /* an option name, or a prefix when it ends with '*' (the PETSc solvers a stage embeds) */
@@ -228,6 +229,48 @@ static const HylcStageOption HylcStageOptions[] = {
     {"calibrate_weight_zero", G_CALIBRATE},
     {"calibrate_weights", G_CALIBRATE},
     {"calibrate_xtol", G_CALIBRATE},
+    /* the cloth (hylc-cloth) and its embedded solvers */
+    {"cloth_angle", G_CLOTH},
+    {"cloth_atol", G_CLOTH},
+    {"cloth_barrier_distance", G_CLOTH},
+    {"cloth_barrier_stiffness", G_CLOTH},
+    {"cloth_cantilever_angle", G_CLOTH},
+    {"cloth_cantilever_n", G_CLOTH},
+    {"cloth_cantilever_width", G_CLOTH},
+    {"cloth_direction", G_CLOTH},
+    {"cloth_drape_diameter", G_CLOTH},
+    {"cloth_drape_disc", G_CLOTH},
+    {"cloth_face", G_CLOTH},
+    {"cloth_gravity", G_CLOTH},
+    {"cloth_h", G_CLOTH},
+    {"cloth_hessian", G_CLOTH},
+    {"cloth_length", G_CLOTH},
+    {"cloth_linesearch_monitor", G_CLOTH},
+    {"cloth_load_steps", G_CLOTH},
+    {"cloth_material", G_CLOTH},
+    {"cloth_max_it", G_CLOTH},
+    {"cloth_mesh_file", G_CLOTH},
+    {"cloth_mesh_scale", G_CLOTH},
+    {"cloth_monitor", G_CLOTH},
+    {"cloth_output", G_CLOTH},
+    {"cloth_planar", G_CLOTH},
+    {"cloth_plot", G_CLOTH},
+    {"cloth_plot_script", G_CLOTH},
+    {"cloth_rim_radius", G_CLOTH},
+    {"cloth_rtol", G_CLOTH},
+    {"cloth_scene_clamp", G_CLOTH},
+    {"cloth_scene_corners", G_CLOTH},
+    {"cloth_solver", G_CLOTH},
+    {"cloth_strain_max", G_CLOTH},
+    {"cloth_strain_steps", G_CLOTH},
+    {"cloth_test", G_CLOTH},
+    {"cloth_view", G_CLOTH},
+    {"cloth_vtk", G_CLOTH},
+    {"cloth_width", G_CLOTH},
+    {"cloth_snes_*", G_CLOTH},
+    {"cloth_ksp_*", G_CLOTH},
+    {"cloth_pc_*", G_CLOTH},
+    {"cloth_tao_*", G_CLOTH},
 };
 
 /* the stages each program reads */
@@ -241,6 +284,7 @@ static const struct {
     {"hylc-fit", G_FIT},
     {"hylc-eval", G_EVAL},
     {"hylc-calibrate", G_PATTERN | G_YARN | G_MICRO | G_REFERENCE | G_PLAN | G_CALIBRATE},
+    {"hylc-cloth", G_CLOTH},
 };
 
 static char HylcProgram[64] = "";

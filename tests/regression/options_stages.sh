@@ -10,8 +10,8 @@ cd "$(dirname "$0")/../.."
 B=$HYLC_BIN
 T=$HYLC_TMP
 die() { echo "FAIL: $*"; exit 1; }
-progs="pattern solve sample fit eval calibrate"
-hylc_re='^ +-(pattern_|yarn_|micro_|periodic_|macro_|hylc_metis_|reference_|sampler_|solve_|strain|fit_|material|eval_|derivatives|calibrate_)[A-Za-z0-9_]*'
+progs="pattern solve sample fit eval calibrate cloth"
+hylc_re='^ +-(pattern_|yarn_|micro_|periodic_|macro_|hylc_metis_|reference_|sampler_|solve_|strain|fit_|material|eval_|derivatives|calibrate_|cloth_)[A-Za-z0-9_]*'
 
 # each program's options, from its -help
 for p in $progs; do
@@ -24,6 +24,13 @@ for p in $progs; do
   grep -qE '^-micro_snes_' "$T/$p.opts" || continue
   sed -i -E '/^-micro_(snes|ksp|pc|factor_pc|factor_mat)_/d' "$T/$p.opts"
   printf '%s\n' -micro_snes_monitor -micro_ksp_type -micro_pc_type -micro_factor_pc_factor_mat_solver_type -micro_factor_mat_factor_view >>"$T/$p.opts"
+  sort -u -o "$T/$p.opts" "$T/$p.opts"
+done
+# and the cloth's (hylc-cloth: SNES, KSP, PC, TAO)
+for p in $progs; do
+  grep -qE '^-cloth_snes_' "$T/$p.opts" || continue
+  sed -i -E '/^-cloth_(snes|ksp|pc|tao)_/d' "$T/$p.opts"
+  printf '%s\n' -cloth_snes_monitor -cloth_ksp_type -cloth_pc_type -cloth_tao_monitor >>"$T/$p.opts"
   sort -u -o "$T/$p.opts" "$T/$p.opts"
 done
 cat "$T"/*.opts | sort -u >"$T/all.opts"
@@ -55,6 +62,7 @@ run sample 0 '' -pattern_type plain -sampler_terms zero -sampler_output s.h5 -sa
 run fit 65 'Cannot open nosuch.h5 \(-fit_input\)' -fit_input nosuch.h5
 run eval 65 'Cannot open nosuch.json \(-material\)' -material nosuch.json -strain 0,0,0,0,0,0
 run calibrate 65 'nosuch.csv' -pattern_type plain -calibrate_target nosuch.csv
+run cloth 65 'nosuch.json' -cloth_material nosuch.json -cloth_test tensile -cloth_plot 0
 
 # a misspelt option is an error in every program, named, before any work; in an options file too
 misspelt() { # program option args...
@@ -74,6 +82,7 @@ misspelt fit -fit_jsn -fit_input nosuch.h5
 : >"$T/empty.json" # exists: the files are checked before the options, the material read after
 misspelt eval -eval_jsn -material empty.json -strain 0,0,0,0,0,0
 misspelt calibrate -calibrate_paramz -pattern_type plain -calibrate_target nosuch.csv
+misspelt cloth -cloth_tset -cloth_material empty.json -cloth_test tensile
 # one of another stage's names misspelt, in the study's file: still an error
 sed 's/^sampler_family:/sampler_familly:/' config/satin.yaml >"$T/typo.yaml"
 (cd "$T" && "$B/hylc-fit" -options_file typo.yaml -fit_input nosuch.h5 >fit.out 2>fit.err) && die "hylc-fit accepts sampler_familly"
