@@ -10,16 +10,16 @@
 #include <strings.h>
 
 enum {
-  G_PATTERN   = 1 << 0, /* HylcPatternSetFromOptions() */
-  G_PATTOOL   = 1 << 1, /* hylc-pattern's outputs */
-  G_YARN      = 1 << 2, /* HylcYarnModelSetFromOptions() */
-  G_MICRO     = 1 << 3, /* HylcMicroSetFromOptions(): the solver, its SNES/KSP/PC, the periodic tile, METIS */
-  G_REFERENCE = 1 << 4, /* the reference state (hylc-sample, hylc-calibrate) */
-  G_PLAN      = 1 << 5, /* the sampling plan's family and ranges (hylc-sample, hylc-calibrate) */
-  G_SAMPLER   = 1 << 6, /* the sampling job (hylc-sample) */
-  G_SOLVE     = 1 << 7, /* hylc-solve's strain and outputs */
-  G_FIT       = 1 << 8, /* HylcFitSetFromOptions() */
-  G_EVAL      = 1 << 9, /* hylc-eval and HylcMaterialSetFromOptions() */
+  G_PATTERN   = 1 << 0,  /* HylcPatternSetFromOptions() */
+  G_PATTOOL   = 1 << 1,  /* hylc-pattern's outputs */
+  G_YARN      = 1 << 2,  /* HylcYarnModelSetFromOptions() */
+  G_MICRO     = 1 << 3,  /* HylcMicroSetFromOptions(): the solver, its SNES/KSP/PC, the periodic tile, METIS */
+  G_REFERENCE = 1 << 4,  /* the reference state (hylc-sample, hylc-calibrate) */
+  G_PLAN      = 1 << 5,  /* the sampling plan's family and ranges (hylc-sample, hylc-calibrate) */
+  G_SAMPLER   = 1 << 6,  /* the sampling job (hylc-sample) */
+  G_SOLVE     = 1 << 7,  /* hylc-solve's strain and outputs */
+  G_FIT       = 1 << 8,  /* HylcFitSetFromOptions() */
+  G_EVAL      = 1 << 9,  /* hylc-eval and HylcMaterialSetFromOptions() */
   G_CALIBRATE = 1 << 10, /* HylcCalibrateSetFromOptions() */
   G_CLOTH     = 1 << 11  /* HylcClothSetFromOptions(): the cloth and its PETSc solvers */
 };
