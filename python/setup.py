@@ -3,7 +3,7 @@
 The module loads libhylcmat through ctypes. So that an installed package works on its own, the build puts
 hylc/libhylcmat.so into the package, taken from (first found):
   1. $HYLCMAT_LIB (a libhylcmat.so built elsewhere);
-  2. the sources of a checkout (../src/hylcmat, ../src/sys/json.c), compiled here with the system C
+  2. the sources of a checkout (../src/hylcmat, ../src/sys/json.c and strain.c), compiled here with the system C
      compiler ($CC, default cc) and the flags of the Makefile's `hylcmat` target: C99, libc and libm only;
   3. an installed prefix (this directory is PREFIX/share/hylc/python after `make install`):
      PREFIX/lib/libhylcmat.so.
@@ -31,14 +31,15 @@ def compile_library(dest, workdir):
     """compiles libhylcmat from the checkout's sources into dest; False if there are none"""
     sources = sorted(glob.glob(os.path.join(TOP, "src", "hylcmat", "*.c")))
     json_c = os.path.join(TOP, "src", "sys", "json.c")
-    if not sources or not os.path.exists(json_c):
+    strain_c = os.path.join(TOP, "src", "sys", "strain.c")  # the names of strains and terms (include/hylc/strain.h)
+    if not sources or not os.path.exists(json_c) or not os.path.exists(strain_c):
         return False
     cc = os.environ.get("CC", "cc")
     common = ["-std=c99", "-D_POSIX_C_SOURCE=200809L", "-g", "-fPIC", "-fvisibility=default", "-I", os.path.join(TOP, "include")]
     objects = []
-    for src in sources + [json_c]:
+    for src in sources + [json_c, strain_c]:
         obj = os.path.join(workdir, "%d-%s.o" % (len(objects), os.path.basename(src)[:-2]))
-        opt = "-O3" if os.path.basename(src) in FAST and src != json_c else "-O2"
+        opt = "-O3" if os.path.basename(src) in FAST and src not in (json_c, strain_c) else "-O2"
         cmd = [cc, opt] + common + ["-c", src, "-o", obj]
         print(" ".join(cmd))
         subprocess.check_call(cmd)
