@@ -429,38 +429,52 @@ static PetscErrorCode ParseParamList(MPI_Comm comm, const char opt[], const char
 
 /* the optimizer's options: hylc's (-calibrate_max_it, -calibrate_lambda) as TAO's defaults, then TAO's own
    (-calibrate_tao_*), which override them. PETSc 3.18's TAOBRGN needs three things done by hand: its
-   subsolver's options prefix ignores the TAO's (it is set here to <prefix>calibrate_tao_brgn_subsolver_),
-   and its regularization and its subsolver's line search are set only through the options database, so
-   hylc's defaults are entered there when absent: Levenberg-Marquardt damping
-   (-calibrate_tao_brgn_regularization_type lm) and an Armijo line search
-   (-calibrate_tao_brgn_subsolver_tao_ls_type armijo; BRGN's own unit step accepts a step that raises the
-   objective, which the hand-written LM rejected: measured on calibrate_recovery, docs/calibrate.md). */
+   subsolver's options prefix ignores the TAO's (it is set here to <prefix>calibrate_tao_brgn_subsolver_);
+   its subsolver's line search is Armijo unless -calibrate_tao_brgn_subsolver_tao_ls_type says otherwise
+   (BRGN's own unit step takes a step that raises the objective, which the hand-written LM rejected:
+   measured on calibrate_recovery, docs/calibrate.md); and its regularization can be chosen only through
+   an options database: unless -calibrate_tao_brgn_regularization_type is given, the TAO reads once from a
+   database of its own that holds only "lm" (Levenberg-Marquardt damping). Entering that default into the
+   global database instead would take one of PETSc's 512 option slots, which are the user's. */
 PetscErrorCode HylcCalibrateTaoSetFromOptions_Private(HylcCalibrate C)
 {
-  Tao         tao, sub;
-  PetscBool   isbrgn, set;
-  const char *prefix;
-  char        opt[256];
+  Tao           tao, sub;
+  TaoLineSearch ls;
+  PetscBool     isbrgn, set;
+  const char   *prefix;
+  char          opt[256];
+  PetscOptions  lm;
 
   PetscFunctionBegin;
   PetscCall(HylcCalibrateGetTao(C, &tao));
   PetscCall(TaoSetMaximumIterations(tao, C->maxIt));
+  PetscCall(PetscObjectTypeCompare((PetscObject)tao, TAOBRGN, &isbrgn));
+  if (isbrgn) PetscCall(TaoBRGNSetRegularizerWeight(tao, C->lambda));
   PetscCall(TaoSetFromOptions(tao));
   PetscCall(TaoGetOptionsPrefix(tao, &prefix));
   PetscCall(PetscOptionsHasName(NULL, prefix, "-tao_view", &set)); /* read by TaoSolve(), after hylc's check for unknown options */
   PetscCall(PetscObjectTypeCompare((PetscObject)tao, TAOBRGN, &isbrgn));
-  if (isbrgn) {
-    PetscCall(TaoBRGNGetSubsolver(tao, &sub));
-    PetscCall(TaoSetOptionsPrefix(sub, prefix));
-    PetscCall(TaoAppendOptionsPrefix(sub, "tao_brgn_subsolver_"));
-    PetscCall(PetscOptionsHasName(NULL, prefix, "-tao_brgn_regularization_type", &set));
+  if (!isbrgn) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(TaoBRGNGetSubsolver(tao, &sub));
+  PetscCall(TaoSetOptionsPrefix(sub, prefix));
+  PetscCall(TaoAppendOptionsPrefix(sub, "tao_brgn_subsolver_"));
+  PetscCall(TaoSetFromOptions(tao)); /* the subsolver's options under their right names; the weight again */
+  PetscCall(PetscOptionsHasName(NULL, prefix, "-tao_brgn_regularization_type", &set));
+  if (!set) {
     PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%stao_brgn_regularization_type", prefix ? prefix : ""));
-    if (!set) PetscCall(PetscOptionsSetValue(NULL, opt, "lm"));
-    PetscCall(PetscOptionsHasName(NULL, prefix, "-tao_brgn_subsolver_tao_ls_type", &set));
-    PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%stao_brgn_subsolver_tao_ls_type", prefix ? prefix : ""));
-    if (!set) PetscCall(PetscOptionsSetValue(NULL, opt, TAOLINESEARCHARMIJO));
-    PetscCall(TaoBRGNSetRegularizerWeight(tao, C->lambda));
-    PetscCall(TaoSetFromOptions(tao));
+    PetscCall(PetscOptionsCreate(&lm));
+    PetscCall(PetscOptionsSetValue(lm, opt, "lm"));
+    PetscCall(PetscObjectSetOptions((PetscObject)tao, lm));
+    PetscCall(TaoSetFromOptions(tao)); /* an option absent from lm keeps its value */
+    PetscCall(PetscObjectSetOptions((PetscObject)tao, NULL));
+    PetscCall(PetscOptionsDestroy(&lm));
+  }
+  /* after BRGN's options, which make the line search of lm a unit step */
+  PetscCall(TaoGetOptionsPrefix(sub, &prefix));
+  PetscCall(PetscOptionsHasName(NULL, prefix, "-tao_ls_type", &set));
+  if (!set) {
+    PetscCall(TaoGetLineSearch(sub, &ls));
+    PetscCall(TaoLineSearchSetType(ls, TAOLINESEARCHARMIJO));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
