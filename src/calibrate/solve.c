@@ -464,9 +464,9 @@ static PetscErrorCode ConvergenceTest(Tao tao, void *ctx)
     PetscBool left;
     if (c->f <= C->fatol)
       why = "objective below -calibrate_fatol";
-    else if (it > 0 && step < C->xtol)
+    else if (it > 0 && step > 0 && step < C->xtol) /* step 0: a trust-region method's rejected step */
       why = "step below -calibrate_xtol";
-    else if (it > 0 && c->fprev - c->f < C->ftol * c->fprev)
+    else if (it > 0 && step > 0 && c->fprev - c->f < C->ftol * c->fprev)
       why = "relative decrease below -calibrate_ftol";
     else {
       PetscCall(HoldFlat(c, &left));
