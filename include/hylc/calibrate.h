@@ -7,7 +7,8 @@
      f(p) = w_0 ((Psi(z_b) - Psi_T(z_b)) / |Psi_T(z_b)|)^2
           + sum_t w_t (1/n_t) sum_{i in t} ((dPsi(z_i) - dPsi_T(z_i)) / R_t)^2,
    dPsi(z) = Psi(z) - Psi(z_b), z_b the base strain (0, or the target's row nearest to it), R_t the
-   largest |dPsi_T| of term t. Parameters are optimised in log space by Levenberg-Marquardt; the
+   largest |dPsi_T| of term t. Parameters are optimised in log space by PETSc's TAO (TAOBRGN with
+   Levenberg-Marquardt damping by default, options -calibrate_tao_*; HylcCalibrateGetTao()); the
    Jacobian needs no extra solves: the tile energy is linear in Es (stretch), E (bend), G (twist) and
    kc (contact), so at an equilibrium dPsi/dlog p = (matching energy part) / area (envelope theorem).
    The samples of one evaluation are spread over the ranks of the object's communicator (each solved on
@@ -16,6 +17,7 @@
 #include <hylc/plan.h>
 #include <hylc/material.h>
 #include <hylc/reference.h>
+#include <petsctao.h>
 
 typedef struct _p_HylcCalibrate *HylcCalibrate;
 
@@ -74,14 +76,17 @@ typedef enum {
 } HylcCalibrateStart;
 PETSC_EXTERN const char *const HylcCalibrateStarts[];
 PETSC_EXTERN PetscErrorCode    HylcCalibrateSetStart(HylcCalibrate, HylcCalibrateStart);
-PETSC_EXTERN PetscErrorCode    HylcCalibrateSetLevenbergMarquardt(HylcCalibrate, PetscInt maxReject, PetscReal lambda);
-PETSC_EXTERN PetscErrorCode    HylcCalibrateSetTolerances(HylcCalibrate, PetscReal xtol, PetscReal ftol, PetscReal fatol, PetscReal flatTol);
-PETSC_EXTERN PetscErrorCode    HylcCalibrateSetPlanRanges(HylcCalibrate, const HylcPlanRanges *);
-PETSC_EXTERN PetscErrorCode    HylcCalibrateSetTerms(HylcCalibrate, PetscInt terms);
-PETSC_EXTERN PetscErrorCode    HylcCalibrateSetSampleCounts(HylcCalibrate, PetscInt n1, PetscInt n2);
-PETSC_EXTERN PetscErrorCode    HylcCalibrateSetThinning(HylcCalibrate, PetscInt stride, PetscInt maxSamples);
-PETSC_EXTERN PetscErrorCode    HylcCalibrateSetTermWeight(HylcCalibrate, const char term[], PetscReal w);
-PETSC_EXTERN PetscErrorCode    HylcCalibrateSetReference(HylcCalibrate, HylcReferenceMode, const char output[]);
+/* the Levenberg-Marquardt damping of TAOBRGN (its regularizer weight, relative to diag J^T J) */
+PETSC_EXTERN PetscErrorCode HylcCalibrateSetDamping(HylcCalibrate, PetscReal lambda);
+/* the optimizer (TAO, options prefix calibrate_), owned by the calibration */
+PETSC_EXTERN PetscErrorCode HylcCalibrateGetTao(HylcCalibrate, Tao *);
+PETSC_EXTERN PetscErrorCode HylcCalibrateSetTolerances(HylcCalibrate, PetscReal xtol, PetscReal ftol, PetscReal fatol, PetscReal flatTol);
+PETSC_EXTERN PetscErrorCode HylcCalibrateSetPlanRanges(HylcCalibrate, const HylcPlanRanges *);
+PETSC_EXTERN PetscErrorCode HylcCalibrateSetTerms(HylcCalibrate, PetscInt terms);
+PETSC_EXTERN PetscErrorCode HylcCalibrateSetSampleCounts(HylcCalibrate, PetscInt n1, PetscInt n2);
+PETSC_EXTERN PetscErrorCode HylcCalibrateSetThinning(HylcCalibrate, PetscInt stride, PetscInt maxSamples);
+PETSC_EXTERN PetscErrorCode HylcCalibrateSetTermWeight(HylcCalibrate, const char term[], PetscReal w);
+PETSC_EXTERN PetscErrorCode HylcCalibrateSetReference(HylcCalibrate, HylcReferenceMode, const char output[]);
 
 /* The objective f at explicit parameter values p = (E, Es, G, kc) (no ties applied) and its gradient
    grad[j] = df / dlog p_j by the envelope theorem (may be NULL); one solve per sample. *nfailed (may be

@@ -1,5 +1,6 @@
 static const char help[] = "hylc-calibrate: yarn parameters (E, Es, G, kc) that best reproduce a target energy response\n"
-                           "(a material table, or strain-energy pairs); Levenberg-Marquardt in log parameters with the\n"
+                           "(a material table, or strain-energy pairs); PETSc's TAO (TAOBRGN, Levenberg-Marquardt damping;\n"
+                           "-calibrate_tao_*) in log parameters within bounds, with the\n"
                            "envelope-theorem Jacobian (one solve per sample per iteration), samples spread over MPI ranks.\n"
                            "docs/calibrate.md.\n\n"
                            "  mpirun -n 2 hylc-calibrate -options_file config/satin_small.yaml -calibrate_target satin01.json \\\n"

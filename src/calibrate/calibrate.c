@@ -89,15 +89,14 @@ PetscErrorCode HylcCalibrateCreate(MPI_Comm comm, HylcCalibrate *out)
   C->maxSamples = 0;
   C->wzero      = 1;
   for (int t = 0; t < HYLC_CALIB_NTERM; t++) C->w[t] = 1;
-  C->maxIt     = 30;
-  C->maxReject = 8;
-  C->lambda0   = 1e-3;
-  C->xtol      = 1e-6;
-  C->ftol      = 1e-10;
-  C->fatol     = 1e-20;
-  C->flatTol   = 1e-4;
-  C->start     = HYLC_CALIBRATE_START_AUTO;
-  *out         = C;
+  C->maxIt   = 30;
+  C->lambda  = 1e-3;
+  C->xtol    = 1e-6;
+  C->ftol    = 1e-10;
+  C->fatol   = 1e-20;
+  C->flatTol = 1e-4;
+  C->start   = HYLC_CALIBRATE_START_AUTO;
+  *out       = C;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -140,6 +139,7 @@ PetscErrorCode HylcCalibrateDestroy(HylcCalibrate *C)
   PetscCall(HylcCalibrateResetSamples_Private(*C));
   PetscCall(HylcMicroDestroy(&(*C)->micro));
   PetscCall(HylcPatternDestroy(&(*C)->pat));
+  PetscCall(TaoDestroy(&(*C)->tao));
   PetscCall(PetscHeaderDestroy(C));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -165,6 +165,47 @@ PetscErrorCode HylcCalibrateSetOptionsPrefix(HylcCalibrate C, const char prefix[
   PetscCall(PetscObjectSetOptionsPrefix((PetscObject)C, prefix));
   if (C->pat) PetscCall(HylcPatternSetOptionsPrefix(C->pat, prefix));
   if (C->micro) PetscCall(HylcMicroSetOptionsPrefix(C->micro, prefix));
+  if (C->tao) {
+    PetscCall(TaoSetOptionsPrefix(C->tao, prefix));
+    PetscCall(TaoAppendOptionsPrefix(C->tao, "calibrate_"));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcCalibrateGetTao - The calibration's optimizer, a TAO created on first use: TAOBRGN (bounded
+  Gauss-Newton; HylcCalibrateSetFromOptions() gives it Levenberg-Marquardt damping) with the options prefix
+  <prefix>calibrate_, so -calibrate_tao_type, -calibrate_tao_monitor, -calibrate_tao_brgn_* reach it.
+  It lives on PETSC_COMM_SELF: every rank runs the same iterations on the gathered residuals, while the
+  evaluations inside them are spread over the ranks. The calibration owns it (do not destroy it).
+
+  Not collective
+
+  Input Parameter:
+. C - the calibration
+
+  Output Parameter:
+. tao - the optimizer
+
+  Level: intermediate
+
+.seealso: HylcCalibrateSolve(), HylcCalibrateSetFromOptions()
+@*/
+PetscErrorCode HylcCalibrateGetTao(HylcCalibrate C, Tao *tao)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
+  PetscValidPointer(tao, 2);
+  if (!C->tao) {
+    const char *prefix;
+    PetscCall(TaoCreate(PETSC_COMM_SELF, &C->tao));
+    PetscCall(PetscObjectGetOptionsPrefix((PetscObject)C, &prefix));
+    PetscCall(TaoSetOptionsPrefix(C->tao, prefix));
+    PetscCall(TaoAppendOptionsPrefix(C->tao, "calibrate_"));
+    PetscCall(TaoSetType(C->tao, TAOBRGN));
+    C->taoUsed = PETSC_FALSE;
+  }
+  *tao = C->tao;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -417,7 +458,7 @@ PetscErrorCode HylcCalibrateGetParameters(HylcCalibrate C, PetscReal initial[], 
   Output Parameters:
 + f0  - before
 . f1  - after
-- its - Levenberg-Marquardt iterations
+- its - iterations of the optimizer (TAO)
 
   Level: intermediate
 @*/

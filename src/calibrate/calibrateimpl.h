@@ -2,6 +2,7 @@
 /* Private definition of HylcCalibrate (src/calibrate/ only). */
 #include <hylc/calibrate.h>
 #include <petsc/private/petscimpl.h>
+#include <petsctao.h>
 
 #define HYLC_CALIB_NTERM   (HYLC_PLAN_NTERM + 1) /* the plan's 15 terms and "other" (rows of a file off the plan's axes) */
 #define HYLC_CALIB_OTHER   HYLC_PLAN_NTERM
@@ -50,9 +51,13 @@ struct _p_HylcCalibrate {
   PetscInt stride, maxSamples;
   /* objective */
   PetscReal wzero, w[HYLC_CALIB_NTERM];
-  /* Levenberg-Marquardt */
-  PetscInt  maxIt, maxReject;
-  PetscReal lambda0, xtol, ftol, fatol, flatTol;
+  /* the optimizer: TAO (options prefix calibrate_), created by HylcCalibrateGetTao(), and the options it
+     is given before TaoSetFromOptions() (the -calibrate_tao_* options override them) and the tests hylc
+     adds to TAO's (held flat directions, -calibrate_xtol, -calibrate_ftol, -calibrate_fatol) */
+  Tao       tao;
+  PetscBool taoUsed; /* TaoSolve() ran on it: HylcCalibrateSolve() replaces it by a fresh one */
+  PetscInt  maxIt;
+  PetscReal lambda, xtol, ftol, fatol, flatTol;
   /* the samples: 0 is the base strain z_b */
   HylcCalibrateStart start;    /* -calibrate_start */
   PetscBool  targetContinued;  /* a samples target with continued samples (read by HylcCalibrateReadTarget_Private) */
@@ -77,6 +82,8 @@ struct _p_HylcCalibrate {
 PETSC_INTERN PetscErrorCode HylcCalibrateResetSamples_Private(HylcCalibrate);
 /* calibrate.c: the pattern set up, the initial values and bounds resolved, the plan resolved, the solver set up */
 PETSC_INTERN PetscErrorCode HylcCalibrateSetUpSolver_Private(HylcCalibrate);
+/* opts.c: the optimizer's options (hylc's as TAO's defaults, then -calibrate_tao_*) */
+PETSC_INTERN PetscErrorCode HylcCalibrateTaoSetFromOptions_Private(HylcCalibrate);
 /* target.c: reads the target and fills z, target, term, nt, range (collective) */
 PETSC_INTERN PetscErrorCode HylcCalibrateReadTarget_Private(HylcCalibrate);
 /* solve.c: the units of work of the samples (continuation: the half-lines of the 1D terms; otherwise or

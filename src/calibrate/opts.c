@@ -148,7 +148,8 @@ PetscErrorCode HylcCalibrateSetBounds(HylcCalibrate C, PetscInt j, PetscReal lo,
 }
 
 /*@C
-  HylcCalibrateSetMaxIterations - Levenberg-Marquardt: at most this many accepted steps (option -calibrate_max_it).
+  HylcCalibrateSetMaxIterations - At most this many iterations of the optimizer (option -calibrate_max_it;
+  TAO's maximum iterations, which -calibrate_tao_max_it overrides).
 
   Not collective
 
@@ -162,7 +163,7 @@ PetscErrorCode HylcCalibrateSetMaxIterations(HylcCalibrate C, PetscInt n)
 {
   PetscFunctionBegin;
   PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
-  PetscCheck(n >= 0, PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "-calibrate_max_it must be >= 0 and -calibrate_max_reject >= 1");
+  PetscCheck(n >= 0, PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "-calibrate_max_it must be >= 0");
   C->maxIt = n;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -201,26 +202,26 @@ PetscErrorCode HylcCalibrateSetStart(HylcCalibrate C, HylcCalibrateStart start)
 }
 
 /*@C
-  HylcCalibrateSetLevenbergMarquardt - Rejected trial steps in a row before stopping, and the initial
-  damping relative to the diagonal of J^T J (options -calibrate_max_reject, -calibrate_lambda).
+  HylcCalibrateSetDamping - The Levenberg-Marquardt damping of TAOBRGN (option -calibrate_lambda): its
+  regularizer weight lambda, the step solving (J^T J + lambda diag J^T J) d = -J^T r; -calibrate_tao_brgn_regularizer_weight
+  overrides it.
 
   Not collective
 
   Input Parameters:
-+ C         - the calibration
-. maxReject - >= 1
-- lambda    - > 0
++ C      - the calibration
+- lambda - > 0
 
   Level: advanced
+
+.seealso: HylcCalibrateGetTao(), TaoBRGNSetRegularizerWeight()
 @*/
-PetscErrorCode HylcCalibrateSetLevenbergMarquardt(HylcCalibrate C, PetscInt maxReject, PetscReal lambda)
+PetscErrorCode HylcCalibrateSetDamping(HylcCalibrate C, PetscReal lambda)
 {
   PetscFunctionBegin;
   PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
-  PetscCheck(maxReject >= 1, PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "-calibrate_max_it must be >= 0 and -calibrate_max_reject >= 1");
-  PetscCheck(lambda > 0, PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "-calibrate_lambda must be > 0 and -calibrate_xtol, -calibrate_ftol, -calibrate_fatol, -calibrate_flat_tol >= 0");
-  C->maxReject = maxReject;
-  C->lambda0   = lambda;
+  PetscCheck(lambda > 0, PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "-calibrate_lambda must be > 0, got %g", (double)lambda);
+  C->lambda = lambda;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -232,9 +233,10 @@ PetscErrorCode HylcCalibrateSetLevenbergMarquardt(HylcCalibrate C, PetscInt maxR
 
   Input Parameters:
 + C       - the calibration
-. xtol    - stop when an accepted step changes every log parameter by less than this
-. ftol    - stop when an accepted step decreases the objective by less than this fraction
+. xtol    - stop when an iteration changes every log parameter by less than this
+. ftol    - stop when an iteration decreases the objective by less than this fraction
 . fatol   - stop when the objective is below this
+  (tests hylc adds to TAO's own, -calibrate_tao_gatol, -calibrate_tao_grtol, -calibrate_tao_gttol)
 - flatTol - a singular value of the Jacobian below this marks a flat direction (its parameter is held)
 
   Level: advanced
@@ -243,7 +245,7 @@ PetscErrorCode HylcCalibrateSetTolerances(HylcCalibrate C, PetscReal xtol, Petsc
 {
   PetscFunctionBegin;
   PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
-  PetscCheck(xtol >= 0 && ftol >= 0 && fatol >= 0 && flatTol >= 0, PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "-calibrate_lambda must be > 0 and -calibrate_xtol, -calibrate_ftol, -calibrate_fatol, -calibrate_flat_tol >= 0");
+  PetscCheck(xtol >= 0 && ftol >= 0 && fatol >= 0 && flatTol >= 0, PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "-calibrate_xtol, -calibrate_ftol, -calibrate_fatol, -calibrate_flat_tol must be >= 0");
   C->xtol    = xtol;
   C->ftol    = ftol;
   C->fatol   = fatol;
@@ -425,6 +427,58 @@ static PetscErrorCode ParseParamList(MPI_Comm comm, const char opt[], const char
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* the optimizer's options: hylc's (-calibrate_max_it, -calibrate_lambda) as TAO's defaults, then TAO's own
+   (-calibrate_tao_*), which override them. PETSc 3.18's TAOBRGN needs three things done by hand: its
+   subsolver's options prefix ignores the TAO's (it is set here to <prefix>calibrate_tao_brgn_subsolver_);
+   its subsolver's line search is Armijo unless -calibrate_tao_brgn_subsolver_tao_ls_type says otherwise
+   (BRGN's own unit step takes a step that raises the objective, which the hand-written LM rejected:
+   measured on calibrate_recovery, docs/calibrate.md); and its regularization can be chosen only through
+   an options database: unless -calibrate_tao_brgn_regularization_type is given, the TAO reads once from a
+   database of its own that holds only "lm" (Levenberg-Marquardt damping). Entering that default into the
+   global database instead would take one of PETSc's 512 option slots, which are the user's. */
+PetscErrorCode HylcCalibrateTaoSetFromOptions_Private(HylcCalibrate C)
+{
+  Tao           tao, sub;
+  TaoLineSearch ls;
+  PetscBool     isbrgn, set;
+  const char   *prefix;
+  char          opt[256];
+  PetscOptions  lm;
+
+  PetscFunctionBegin;
+  PetscCall(HylcCalibrateGetTao(C, &tao));
+  PetscCall(TaoSetMaximumIterations(tao, C->maxIt));
+  PetscCall(PetscObjectTypeCompare((PetscObject)tao, TAOBRGN, &isbrgn));
+  if (isbrgn) PetscCall(TaoBRGNSetRegularizerWeight(tao, C->lambda));
+  PetscCall(TaoSetFromOptions(tao));
+  PetscCall(TaoGetOptionsPrefix(tao, &prefix));
+  PetscCall(PetscOptionsHasName(NULL, prefix, "-tao_view", &set)); /* read by TaoSolve(), after hylc's check for unknown options */
+  PetscCall(PetscObjectTypeCompare((PetscObject)tao, TAOBRGN, &isbrgn));
+  if (!isbrgn) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(TaoBRGNGetSubsolver(tao, &sub));
+  PetscCall(TaoSetOptionsPrefix(sub, prefix));
+  PetscCall(TaoAppendOptionsPrefix(sub, "tao_brgn_subsolver_"));
+  PetscCall(TaoSetFromOptions(tao)); /* the subsolver's options under their right names; the weight again */
+  PetscCall(PetscOptionsHasName(NULL, prefix, "-tao_brgn_regularization_type", &set));
+  if (!set) {
+    PetscCall(PetscSNPrintf(opt, sizeof(opt), "-%stao_brgn_regularization_type", prefix ? prefix : ""));
+    PetscCall(PetscOptionsCreate(&lm));
+    PetscCall(PetscOptionsSetValue(lm, opt, "lm"));
+    PetscCall(PetscObjectSetOptions((PetscObject)tao, lm));
+    PetscCall(TaoSetFromOptions(tao)); /* an option absent from lm keeps its value */
+    PetscCall(PetscObjectSetOptions((PetscObject)tao, NULL));
+    PetscCall(PetscOptionsDestroy(&lm));
+  }
+  /* after BRGN's options, which make the line search of lm a unit step */
+  PetscCall(TaoGetOptionsPrefix(sub, &prefix));
+  PetscCall(PetscOptionsHasName(NULL, prefix, "-tao_ls_type", &set));
+  if (!set) {
+    PetscCall(TaoGetLineSearch(sub, &ls));
+    PetscCall(TaoLineSearchSetType(ls, TAOLINESEARCHARMIJO));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /*@C
   HylcCalibrateSetFromOptions - Reads the calibration's options (docs/calibrate.md has the table) and those
   of its pattern (-pattern_*), yarn model (-yarn_*, the initial values), reference state (-reference_*),
@@ -453,8 +507,9 @@ static PetscErrorCode ParseParamList(MPI_Comm comm, const char opt[], const char
 . -calibrate_stride <1>, -calibrate_max_samples <0> - thinning of a file target (HylcCalibrateSetThinning())
 . -calibrate_weight_zero <1>, -calibrate_weights <t=w,...> - weights of Psi(z_b) and of the terms (HylcCalibrateSetTermWeight())
 . -calibrate_start <auto>          - auto (as the target was made), continue (each 1D term's half-line from zero outward) or cold (HylcCalibrateSetStart())
-. -calibrate_max_it <30>            - Levenberg-Marquardt iterations (HylcCalibrateSetMaxIterations())
-. -calibrate_max_reject <8>, -calibrate_lambda <1e-3> - Levenberg-Marquardt (HylcCalibrateSetLevenbergMarquardt())
+. -calibrate_max_it <30>            - iterations of the optimizer (TAO's maximum; HylcCalibrateSetMaxIterations())
+. -calibrate_lambda <1e-3>          - Levenberg-Marquardt damping of TAOBRGN (HylcCalibrateSetDamping())
+. -calibrate_tao_*                  - the optimizer's options (HylcCalibrateGetTao(): TAOBRGN, -calibrate_tao_brgn_regularization_type lm by default)
 . -calibrate_xtol <1e-6>, -calibrate_ftol <1e-10>, -calibrate_fatol <1e-20>, -calibrate_flat_tol <1e-4> - stopping tests, flat directions (HylcCalibrateSetTolerances())
 . -calibrate_reference <auto>, -reference_output <f.pyp> - reference state: auto (compute for a generated pattern), compute, none (HylcCalibrateSetReference())
 - -calibrate_view                   - print the set-up at the end of HylcCalibrateSetUp() (HylcCalibrateView())
@@ -469,8 +524,8 @@ PetscErrorCode HylcCalibrateSetFromOptions(HylcCalibrate C)
   char           params[256] = "", tie[256] = "G", terms[512] = "", weights[1024] = "", target[PETSC_MAX_PATH_LEN], output[PETSC_MAX_PATH_LEN], dump[PETSC_MAX_PATH_LEN], refout[PETSC_MAX_PATH_LEN];
   PetscBool      set, pset, tset, ttset;
   PetscEnum      tt = (PetscEnum)C->targetType, rm = (PetscEnum)C->refmode, start = (PetscEnum)C->start;
-  PetscInt       n1 = C->n1, n2 = C->n2, stride = C->stride, maxSamples = C->maxSamples, maxIt = C->maxIt, maxReject = C->maxReject;
-  PetscReal      wzero = C->wzero, lambda0 = C->lambda0, xtol = C->xtol, ftol = C->ftol, fatol = C->fatol, flatTol = C->flatTol;
+  PetscInt       n1 = C->n1, n2 = C->n2, stride = C->stride, maxSamples = C->maxSamples, maxIt = C->maxIt;
+  PetscReal      wzero = C->wzero, lambda = C->lambda, xtol = C->xtol, ftol = C->ftol, fatol = C->fatol, flatTol = C->flatTol;
   HylcPlanRanges ranges = C->ranges;
   HylcPattern    pat;
   HylcMicro      micro;
@@ -502,6 +557,10 @@ PetscErrorCode HylcCalibrateSetFromOptions(HylcCalibrate C)
   PetscCall(PetscOptionsString("-reference_output", "Write the reference state as .pyp", "HylcCalibrateSetReference", refout, refout, sizeof(refout), NULL));
   PetscOptionsEnd();
 
+  /* the hand-written Levenberg-Marquardt's rejection limit has no counterpart in TAO (issue 33) */
+  PetscCall(PetscOptionsHasName(NULL, ((PetscObject)C)->prefix, "-calibrate_max_reject", &set));
+  PetscCheck(!set, comm, PETSC_ERR_USER_INPUT, "-calibrate_max_reject no longer applies: the calibration's optimizer is TAO (docs/calibrate.md); limit its evaluations with -calibrate_tao_max_funcs");
+
   PetscObjectOptionsBegin((PetscObject)C);
   PetscCall(PetscOptionsString("-calibrate_target", "Target: a material table (.json or model .h5), a samples .h5 of hylc-sample, the paper's raw data.txt (or its directory), or a .csv with a header naming sx,sa,sy,II00,II01,II11,psi", "HylcCalibrateSetTarget", target, target, sizeof(target), NULL));
   PetscCall(PetscOptionsEnum("-calibrate_target_type", "Kind of target: auto (by extension and content), table, samples, raw, csv", "HylcCalibrateSetTargetType", HylcCalibTargetTypes, tt, &tt, &ttset));
@@ -532,11 +591,10 @@ PetscErrorCode HylcCalibrateSetFromOptions(HylcCalibrate C)
   PetscCall(HylcOptionsReal("-calibrate_weight_zero", "Weight of the relative error of Psi at the base strain (the constant)", "HylcCalibrateSetTermWeight", wzero, &wzero, NULL));
   PetscCall(PetscOptionsString("-calibrate_weights", "Weights of terms, a comma list term=weight (e.g. sx=2,sa-sy=0.5; default 1 each; 'other' for file rows off the plan's axes)", "HylcCalibrateSetTermWeight", weights, weights, sizeof(weights), NULL));
   PetscCall(PetscOptionsEnum("-calibrate_start", "How each evaluation's samples are solved: auto (as the target was made: a samples file's own start; cold for a table, raw data or CSV), continue (each 1D term's half-line from zero outward, as hylc-sample) or cold (every sample from the reference state, the paper's procedure)", "HylcCalibrateSetStart", HylcCalibrateStarts, start, &start, NULL));
-  PetscCall(PetscOptionsInt("-calibrate_max_it", "Levenberg-Marquardt: at most this many iterations (accepted steps)", "HylcCalibrateSetMaxIterations", maxIt, &maxIt, NULL));
-  PetscCall(PetscOptionsInt("-calibrate_max_reject", "Levenberg-Marquardt: stop after this many rejected trial steps in a row", "HylcCalibrateSetLevenbergMarquardt", maxReject, &maxReject, NULL));
-  PetscCall(HylcOptionsReal("-calibrate_lambda", "Levenberg-Marquardt: initial damping (relative to the diagonal of J^T J)", "HylcCalibrateSetLevenbergMarquardt", lambda0, &lambda0, NULL));
-  PetscCall(HylcOptionsReal("-calibrate_xtol", "Stop when an accepted step changes every log parameter by less than this", "HylcCalibrateSetTolerances", xtol, &xtol, NULL));
-  PetscCall(HylcOptionsReal("-calibrate_ftol", "Stop when an accepted step decreases the objective by less than this fraction", "HylcCalibrateSetTolerances", ftol, &ftol, NULL));
+  PetscCall(PetscOptionsInt("-calibrate_max_it", "Optimizer (TAO): at most this many iterations (-calibrate_tao_max_it overrides it)", "HylcCalibrateSetMaxIterations", maxIt, &maxIt, NULL));
+  PetscCall(HylcOptionsReal("-calibrate_lambda", "Optimizer (TAOBRGN): Levenberg-Marquardt damping relative to the diagonal of J^T J (-calibrate_tao_brgn_regularizer_weight overrides it)", "HylcCalibrateSetDamping", lambda, &lambda, NULL));
+  PetscCall(HylcOptionsReal("-calibrate_xtol", "Stop when an iteration changes every log parameter by less than this (with TAO's own tests, -calibrate_tao_gatol ...)", "HylcCalibrateSetTolerances", xtol, &xtol, NULL));
+  PetscCall(HylcOptionsReal("-calibrate_ftol", "Stop when an iteration decreases the objective by less than this fraction", "HylcCalibrateSetTolerances", ftol, &ftol, NULL));
   PetscCall(HylcOptionsReal("-calibrate_fatol", "Stop when the objective is below this", "HylcCalibrateSetTolerances", fatol, &fatol, NULL));
   PetscCall(HylcOptionsReal("-calibrate_flat_tol", "A direction of the log parameters along which the normalised residuals change by less than this per unit (a singular value of the Jacobian) is flat: its parameter is held and reported", "HylcCalibrateSetTolerances", flatTol, &flatTol, NULL));
   PetscCall(PetscOptionsEnum("-calibrate_reference", "Reference state: auto (compute it once with the initial parameters for a generated pattern; a .pyp file is its own), compute, none, or relax (only the in-plane minimum over the periods of the pattern as given)", "HylcCalibrateSetReference", HylcReferenceModes, rm, &rm, NULL));
@@ -589,10 +647,10 @@ PetscErrorCode HylcCalibrateSetFromOptions(HylcCalibrate C)
       PetscCall(HylcCalibrateSetTermWeight(C, tok, v));
     }
   }
-  PetscCheck(maxIt >= 0 && maxReject >= 1, comm, PETSC_ERR_USER_INPUT, "-calibrate_max_it must be >= 0 and -calibrate_max_reject >= 1");
   PetscCall(HylcCalibrateSetMaxIterations(C, maxIt));
-  PetscCall(HylcCalibrateSetLevenbergMarquardt(C, maxReject, lambda0));
+  PetscCall(HylcCalibrateSetDamping(C, lambda));
   PetscCall(HylcCalibrateSetTolerances(C, xtol, ftol, fatol, flatTol));
+  PetscCall(HylcCalibrateTaoSetFromOptions_Private(C));
   PetscCall(HylcCalibrateSetStart(C, (HylcCalibrateStart)start));
   PetscCall(HylcCalibrateResetSamples_Private(C));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -1,5 +1,6 @@
 /* HylcCalibrate: evaluation of the samples over the ranks, the objective with its envelope-theorem
-   Jacobian, Levenberg-Marquardt in log parameters, and the outputs (docs/calibrate.md). */
+   Jacobian, its minimisation in log parameters by TAO (held flat directions, hylc's stopping tests), and
+   the outputs (docs/calibrate.md). */
 #include "calibrateimpl.h"
 #include <petsctime.h>
 #include <stdio.h>
@@ -249,37 +250,6 @@ static void SymEig(int n, const PetscReal A0[], PetscReal ev[], PetscReal V[])
       }
 }
 
-/* solves the n x n system M d = b (n <= 4) by Gaussian elimination with partial pivoting; -1 if singular */
-static int Solve4(int n, PetscReal M[], PetscReal b[])
-{
-  for (int k = 0; k < n; k++) {
-    int piv = k;
-    for (int i = k + 1; i < n; i++)
-      if (PetscAbsReal(M[i * n + k]) > PetscAbsReal(M[piv * n + k])) piv = i;
-    if (M[piv * n + k] == 0) return -1;
-    if (piv != k) {
-      for (int j = 0; j < n; j++) {
-        PetscReal t    = M[k * n + j];
-        M[k * n + j]   = M[piv * n + j];
-        M[piv * n + j] = t;
-      }
-      PetscReal t = b[k];
-      b[k]        = b[piv];
-      b[piv]      = t;
-    }
-    for (int i = k + 1; i < n; i++) {
-      const PetscReal l = M[i * n + k] / M[k * n + k];
-      for (int j = k; j < n; j++) M[i * n + j] -= l * M[k * n + j];
-      b[i] -= l * b[k];
-    }
-  }
-  for (int i = n - 1; i >= 0; i--) {
-    for (int j = i + 1; j < n; j++) b[i] -= M[i * n + j] * b[j];
-    b[i] /= M[i * n + i];
-  }
-  return 0;
-}
-
 /* columns of the active parameters (E's column also carries the tied parameters) */
 static void ActiveJacobian(HylcCalibrate C, const PetscReal J[], const int act[], int na, PetscReal Jc[])
 {
@@ -294,21 +264,221 @@ static void ActiveJacobian(HylcCalibrate C, const PetscReal J[], const int act[]
     }
 }
 
-static PetscErrorCode PrintLine(HylcCalibrate C, const char what[], PetscInt it, PetscReal f, const PetscReal p[], PetscReal step, PetscReal lambda, PetscInt nfailed, PetscLogDouble dt)
+/* the line of iteration it (step < 0: none, the initial point) */
+static PetscErrorCode PrintLine(HylcCalibrate C, PetscInt it, PetscReal f, const PetscReal p[], PetscReal step, PetscInt nfailed, PetscLogDouble dt)
 {
   char buf[512];
   int  len;
 
   PetscFunctionBegin;
   if (f < PETSC_INFINITY)
-    len = snprintf(buf, sizeof(buf), "[calibrate] %-6s %3d  f %.6e", what, (int)it, (double)f);
+    len = snprintf(buf, sizeof(buf), "[calibrate] it %3d  f %.6e", (int)it, (double)f);
   else
-    len = snprintf(buf, sizeof(buf), "[calibrate] %-6s %3d  f inf (the base sample did not converge)", what, (int)it);
+    len = snprintf(buf, sizeof(buf), "[calibrate] it %3d  f inf (the base sample did not converge)", (int)it);
   len += snprintf(buf + len, sizeof(buf) - len, "  E %.6g  Es %.6g  G %.6g  kc %.6g", (double)p[0], (double)p[1], (double)p[2], (double)p[3]);
-  if (step >= 0) len += snprintf(buf + len, sizeof(buf) - len, "  step %.2e  lambda %.1e", (double)step, (double)lambda);
+  if (step >= 0) len += snprintf(buf + len, sizeof(buf) - len, "  step %.2e", (double)step);
   if (nfailed && f < PETSC_INFINITY) len += snprintf(buf + len, sizeof(buf) - len, "  (%d samples not converged, left out)", (int)nfailed);
   snprintf(buf + len, sizeof(buf) - len, "  %.1f s\n", dt);
   PetscCall(PetscPrintf(PetscObjectComm((PetscObject)C), "%s", buf));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* the state of one HylcCalibrateSolve(): TAO's variables are the log values of the free parameters */
+typedef struct {
+  HylcCalibrate  C;
+  int            act[HYLC_CALIBRATE_NPARAM], na; /* the free parameters, in the order of TAO's variables */
+  PetscReal     *rec, *r, *J, *Jc;               /* the evaluation at xc: records, residuals, Jacobian (m x 4), active columns */
+  PetscReal      xc[HYLC_CALIBRATE_NPARAM], f;   /* its point (log values of all four) and objective */
+  PetscInt       nfailed;
+  PetscBool      cached;
+  PetscLogDouble dt;                                  /* the time of that evaluation */
+  PetscReal      xprev[HYLC_CALIBRATE_NPARAM], fprev; /* the previous iterate */
+  Vec            XL, XU;                              /* TAO's bounds: those of a held parameter collapse to its value */
+  const char    *reason;                              /* the test of hylc that stopped TAO */
+} CalibTao;
+
+/* r, J and f at TAO's point X, solved unless X is the point of the last evaluation (TAO asks for the
+   residual and the Jacobian of a point separately: one solve of the samples serves both) */
+static PetscErrorCode EvalAt(CalibTao *c, Vec X)
+{
+  HylcCalibrate      C = c->C;
+  const PetscScalar *x;
+  PetscReal          lx[HYLC_CALIBRATE_NPARAM], p[HYLC_CALIBRATE_NPARAM];
+  PetscBool          same = c->cached;
+  PetscLogDouble     t0, t1;
+
+  PetscFunctionBegin;
+  for (int j = 0; j < HYLC_CALIBRATE_NPARAM; j++) lx[j] = PetscLogReal(C->p0[j]);
+  PetscCall(VecGetArrayRead(X, &x));
+  for (int a = 0; a < c->na; a++) lx[c->act[a]] = PetscRealPart(x[a]);
+  PetscCall(VecRestoreArrayRead(X, &x));
+  for (int a = 0; a < c->na; a++) same = (PetscBool)(same && lx[c->act[a]] == c->xc[c->act[a]]);
+  if (same) PetscFunctionReturn(PETSC_SUCCESS);
+  Expand(C, lx, p);
+  PetscCall(PetscTime(&t0));
+  PetscCall(HylcCalibrateSolveSamples_Private(C, p, c->rec));
+  PetscCall(HylcCalibrateResiduals_Private(C, c->rec, c->r, c->J, &c->f, &c->nfailed));
+  PetscCall(PetscTime(&t1));
+  C->nevals++;
+  c->dt = t1 - t0;
+  for (int j = 0; j < HYLC_CALIBRATE_NPARAM; j++) c->xc[j] = lx[j];
+  c->cached = PETSC_TRUE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* TAO's residual: the normalised residuals; all infinite where the base sample did not converge (f = inf,
+   which TAO's line search rejects) */
+static PetscErrorCode FormResidual(Tao tao, Vec X, Vec F, void *ctx)
+{
+  CalibTao    *c = (CalibTao *)ctx;
+  PetscScalar *f;
+
+  PetscFunctionBegin;
+  (void)tao;
+  PetscCall(EvalAt(c, X));
+  PetscCall(VecGetArrayWrite(F, &f));
+  for (PetscInt i = 0; i < c->C->m; i++) f[i] = c->f < PETSC_INFINITY ? c->r[i] : PETSC_INFINITY;
+  PetscCall(VecRestoreArrayWrite(F, &f));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* TAO's Jacobian (dense, m x na): the free parameters' columns (E's with the tied ones'), zero for a held
+   parameter, so that it does not move (its bounds are collapsed as well) */
+static PetscErrorCode FormJacobian(Tao tao, Vec X, Mat Jm, Mat Jpre, void *ctx)
+{
+  CalibTao     *c = (CalibTao *)ctx;
+  HylcCalibrate C = c->C;
+  PetscScalar  *v;
+  PetscInt      lda;
+
+  PetscFunctionBegin;
+  (void)tao;
+  (void)Jpre;
+  PetscCall(EvalAt(c, X));
+  ActiveJacobian(C, c->J, c->act, c->na, c->Jc);
+  PetscCall(MatDenseGetLDA(Jm, &lda));
+  PetscCall(MatDenseGetArrayWrite(Jm, &v));
+  for (int a = 0; a < c->na; a++)
+    for (PetscInt i = 0; i < C->m; i++) v[i + a * lda] = C->held[c->act[a]] ? 0 : c->Jc[i * c->na + a];
+  PetscCall(MatDenseRestoreArrayWrite(Jm, &v));
+  PetscCall(MatAssemblyBegin(Jm, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(Jm, MAT_FINAL_ASSEMBLY));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* objective and gradient for TAO types that are not least-squares ones (-calibrate_tao_type blmvm, ...):
+   (1/2) |r|^2, as TAOBRGN's, and J^T r */
+static PetscErrorCode FormObjectiveGradient(Tao tao, Vec X, PetscReal *f, Vec G, void *ctx)
+{
+  CalibTao     *c = (CalibTao *)ctx;
+  HylcCalibrate C = c->C;
+  PetscScalar  *g;
+
+  PetscFunctionBegin;
+  (void)tao;
+  PetscCall(EvalAt(c, X));
+  ActiveJacobian(C, c->J, c->act, c->na, c->Jc);
+  *f = 0.5 * c->f;
+  PetscCall(VecGetArrayWrite(G, &g));
+  for (int a = 0; a < c->na; a++) {
+    g[a] = 0;
+    if (!C->held[c->act[a]])
+      for (PetscInt i = 0; i < C->m; i++) g[a] += c->Jc[i * c->na + a] * c->r[i];
+  }
+  PetscCall(VecRestoreArrayWrite(G, &g));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* holds the free parameters along flat directions of the Jacobian at the current point (singular value
+   below -calibrate_flat_tol: the one with the largest component in it), at their current values;
+   *left: some free parameter is not held */
+static PetscErrorCode HoldFlat(CalibTao *c, PetscBool *left)
+{
+  HylcCalibrate C = c->C;
+
+  PetscFunctionBegin;
+  *left = PETSC_TRUE;
+  for (;;) {
+    int       act[HYLC_CALIBRATE_NPARAM], na = 0, worst = 0, j;
+    PetscReal A[16], ev[4], V[16];
+
+    for (int a = 0; a < c->na; a++)
+      if (!C->held[c->act[a]]) act[na++] = c->act[a];
+    if (!na) {
+      *left = PETSC_FALSE;
+      break;
+    }
+    ActiveJacobian(C, c->J, act, na, c->Jc);
+    for (int a = 0; a < na; a++)
+      for (int b = 0; b < na; b++) {
+        A[a * na + b] = 0;
+        for (PetscInt i = 0; i < C->m; i++) A[a * na + b] += c->Jc[i * na + a] * c->Jc[i * na + b];
+      }
+    SymEig(na, A, ev, V);
+    if (PetscSqrtReal(PetscMax(ev[0], 0)) >= C->flatTol) break;
+    for (int a = 1; a < na; a++)
+      if (PetscAbsReal(V[a * na + 0]) > PetscAbsReal(V[worst * na + 0])) worst = a;
+    j          = act[worst];
+    C->held[j] = PETSC_TRUE;
+    for (int a = 0; a < c->na; a++) /* TAO keeps it where it is */
+      if (c->act[a] == j) {
+        PetscCall(VecSetValue(c->XL, a, c->xc[j], INSERT_VALUES));
+        PetscCall(VecSetValue(c->XU, a, c->xc[j], INSERT_VALUES));
+      }
+    PetscCall(VecAssemblyBegin(c->XL));
+    PetscCall(VecAssemblyEnd(c->XL));
+    PetscCall(VecAssemblyBegin(c->XU));
+    PetscCall(VecAssemblyEnd(c->XU));
+    PetscCall(PetscPrintf(PetscObjectComm((PetscObject)C), "[calibrate] %s is not determined by the data (singular value %.2e of the Jacobian < -calibrate_flat_tol %g): held at %g\n", HylcCalibrateParamNames[j], (double)PetscSqrtReal(PetscMax(ev[0], 0)), (double)C->flatTol, (double)PetscExpReal(c->xc[j])));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* TAO's convergence test, called after each iteration (and at the start) by the TAO that iterates (TAOBRGN's
+   subsolver): TAO's own tests (-calibrate_tao_gatol, ..., the iteration and evaluation limits), then the
+   iteration's line, hylc's tests (-calibrate_fatol, -calibrate_xtol, -calibrate_ftol) and the flat
+   directions of the Jacobian at the new point, held before the next step */
+static PetscErrorCode ConvergenceTest(Tao tao, void *ctx)
+{
+  CalibTao          *c = (CalibTao *)ctx;
+  HylcCalibrate      C = c->C;
+  PetscInt           it;
+  Vec                X;
+  PetscReal          p[HYLC_CALIBRATE_NPARAM], step = 0;
+  TaoConvergedReason reason;
+  const char        *why = NULL;
+
+  PetscFunctionBegin;
+  PetscCall(TaoDefaultConvergenceTest(tao, NULL));
+  PetscCall(TaoGetIterationNumber(tao, &it));
+  PetscCall(TaoGetSolution(tao, &X));
+  PetscCall(EvalAt(c, X)); /* the point TAO accepted: normally its last evaluation */
+  PetscCall(TaoGetConvergedReason(tao, &reason));
+  for (int a = 0; a < c->na; a++) step = PetscMax(step, PetscAbsReal(c->xc[c->act[a]] - c->xprev[c->act[a]]));
+  if (it > 0) {
+    Expand(C, c->xc, p);
+    PetscCall(PrintLine(C, it, c->f, p, step, c->nfailed, c->dt));
+  }
+  C->its = it;
+  if (reason == TAO_CONTINUE_ITERATING) {
+    PetscBool left;
+    if (c->f <= C->fatol)
+      why = "objective below -calibrate_fatol";
+    else if (it > 0 && step > 0 && step < C->xtol) /* step 0: a trust-region method's rejected step */
+      why = "step below -calibrate_xtol";
+    else if (it > 0 && step > 0 && c->fprev - c->f < C->ftol * c->fprev)
+      why = "relative decrease below -calibrate_ftol";
+    else {
+      PetscCall(HoldFlat(c, &left));
+      if (!left) why = "no parameter left to fit";
+    }
+    if (why) {
+      c->reason = why;
+      PetscCall(TaoSetConvergedReason(tao, TAO_CONVERGED_USER));
+    }
+  }
+  for (int j = 0; j < HYLC_CALIBRATE_NPARAM; j++) c->xprev[j] = c->xc[j];
+  c->fprev = c->f;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -359,10 +529,12 @@ static PetscErrorCode WriteDump(HylcCalibrate C)
 }
 
 /*@C
-  HylcCalibrateSolve - Levenberg-Marquardt on the normalised residuals in log parameters (docs/calibrate.md):
-  one solve per sample per trial point; the Jacobian comes with it (envelope theorem). Prints a line per
-  iteration, holds parameters along flat directions, flags parameters at a bound, and writes
-  -calibrate_output and -calibrate_dump. Calls HylcCalibrateSetUp() first if needed.
+  HylcCalibrateSolve - Minimises the objective over the log values of the free parameters, within their
+  bounds, with the calibration's TAO (HylcCalibrateGetTao(): TAOBRGN with Levenberg-Marquardt damping unless
+  -calibrate_tao_type says otherwise; docs/calibrate.md): one solve per sample per point TAO evaluates, the
+  Jacobian with it (envelope theorem). Prints a line per iteration, holds parameters along flat
+  directions, flags parameters at a bound, and writes -calibrate_output and -calibrate_dump. Calls
+  HylcCalibrateSetUp() first if needed.
 
   Collective
 
@@ -370,39 +542,41 @@ static PetscErrorCode WriteDump(HylcCalibrate C)
 . C - the calibration
 
   Level: beginner
+
+.seealso: HylcCalibrateGetTao(), HylcCalibrateSetTolerances(), HylcCalibrateSetMaxIterations()
 @*/
 PetscErrorCode HylcCalibrateSolve(HylcCalibrate C)
 {
-  MPI_Comm       comm = PetscObjectComm((PetscObject)C);
-  const PetscInt NP   = HYLC_CALIBRATE_NPARAM;
-  PetscInt       m;
-  PetscReal     *rec, *r, *J, *rect, *rt, *Jt, *Jc;
-  PetscReal      x[HYLC_CALIBRATE_NPARAM], p[HYLC_CALIBRATE_NPARAM], xlo[HYLC_CALIBRATE_NPARAM], xhi[HYLC_CALIBRATE_NPARAM];
-  PetscReal      f, ft, lambda         = C->lambda0;
-  PetscInt       nfailed, nft, rejects = 0;
-  PetscLogDouble t0, t1, ts;
-  const char    *reason = "iteration limit (-calibrate_max_it)";
+  MPI_Comm           comm = PetscObjectComm((PetscObject)C);
+  const PetscInt     NP   = HYLC_CALIBRATE_NPARAM;
+  PetscInt           m;
+  CalibTao           c;
+  Tao                tao, inner;
+  Vec                X, F;
+  Mat                Jm;
+  PetscBool          isbrgn;
+  PetscReal          p[HYLC_CALIBRATE_NPARAM];
+  PetscLogDouble     t1, ts;
+  TaoConvergedReason treason;
+  char               reason[128];
 
   PetscFunctionBegin;
   PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
   PetscCall(HylcCalibrateSetUp(C));
-  m = C->m; /* known after the set-up */
+  m = C->m;                                       /* known after the set-up */
+  if (C->taoUsed) PetscCall(TaoDestroy(&C->tao)); /* a TAO is set up for one problem size: a fresh one */
+  PetscCall(HylcCalibrateTaoSetFromOptions_Private(C));
+  PetscCall(HylcCalibrateGetTao(C, &tao));
   PetscCall(PetscLogEventBegin(HYLC_CalibrateSolve, C, 0, 0, 0));
   PetscCall(PetscTime(&ts));
-  /* separate allocations: the current and trial arrays are swapped on acceptance */
-  PetscCall(PetscMalloc1(m * HYLC_CALIB_NRECORD, &rec));
-  PetscCall(PetscMalloc1(m * HYLC_CALIB_NRECORD, &rect));
-  PetscCall(PetscMalloc1(m, &r));
-  PetscCall(PetscMalloc1(m, &rt));
-  PetscCall(PetscMalloc1(m * NP, &J));
-  PetscCall(PetscMalloc1(m * NP, &Jt));
-  PetscCall(PetscMalloc1(m * NP, &Jc));
+  PetscCall(PetscMemzero(&c, sizeof(c)));
+  c.C       = C;
+  C->nevals = 0;
   for (int j = 0; j < NP; j++) {
-    x[j]       = PetscLogReal(C->p0[j]);
-    xlo[j]     = PetscLogReal(C->lo[j]);
-    xhi[j]     = PetscLogReal(C->hi[j]);
     C->held[j] = C->bound[j] = PETSC_FALSE;
+    if (C->role[j] == HYLC_CALIBRATE_FREE) c.act[c.na++] = j;
   }
+  PetscCall(PetscMalloc4(m * HYLC_CALIB_NRECORD, &c.rec, m, &c.r, m * NP, &c.J, m * NP, &c.Jc));
   {
     char line[256] = "";
     for (int j = 0; j < NP; j++) {
@@ -412,132 +586,83 @@ PetscErrorCode HylcCalibrateSolve(HylcCalibrate C)
                                                                                                                    : " fixed",
                              sizeof(line)));
     }
-    PetscCall(PetscPrintf(comm, "[calibrate] %" PetscInt_FMT " samples (target %s, %s) on %d ranks; %s\n", m, C->target, HylcCalibTargetTypes[C->targetResolved], (int)C->size, line));
+    PetscCall(PetscPrintf(comm, "[calibrate] %" PetscInt_FMT " samples (target %s, %s) on %d ranks; %s; TAO %s\n", m, C->target, HylcCalibTargetTypes[C->targetResolved], (int)C->size, line, ((PetscObject)tao)->type_name));
   }
   if (C->z[0] != 0 || C->z[1] != 0 || C->z[2] != 0 || C->z[3] != 0 || C->z[4] != 0 || C->z[5] != 0)
     PetscCall(PetscPrintf(comm, "[calibrate] the target has no zero strain: base strain z_b = (%g, %g, %g, %g, %g, %g), the row nearest to it; dPsi = Psi(z) - Psi(z_b)\n", (double)C->z[0], (double)C->z[1], (double)C->z[2], (double)C->z[3], (double)C->z[4], (double)C->z[5]));
-  Expand(C, x, p);
-  PetscCall(PetscTime(&t0));
-  PetscCall(HylcCalibrateSolveSamples_Private(C, p, rec));
-  PetscCall(HylcCalibrateResiduals_Private(C, rec, r, J, &f, &nfailed));
-  PetscCall(PetscTime(&t1));
-  C->nevals = 1;
-  PetscCheck(f < PETSC_INFINITY, comm, PETSC_ERR_NOT_CONVERGED, "The base sample (strain %g %g %g %g %g %g) did not converge with the initial parameters; check -yarn_* and -micro_*", (double)C->z[0], (double)C->z[1], (double)C->z[2], (double)C->z[3], (double)C->z[4], (double)C->z[5]);
-  PetscCall(PetscArraycpy(C->rec0, rec, m * HYLC_CALIB_NRECORD));
-  C->f0 = f;
-  PetscCall(PrintLine(C, "it", 0, f, p, -1, 0, nfailed, t1 - t0));
-  C->its = 0;
-  while (C->its < C->maxIt) {
-    int       act[HYLC_CALIBRATE_NPARAM], na = 0, pin[HYLC_CALIBRATE_NPARAM];
-    PetscReal A[16], g[4], d[4], M[16], ev[4], V[16], xt[HYLC_CALIBRATE_NPARAM], step = 0;
 
-    if (f <= C->fatol) {
-      reason = "objective below -calibrate_fatol";
-      break;
-    }
-    /* active parameters; hold those along a flat direction of the Jacobian */
-    for (;;) {
-      na = 0;
-      for (int j = 0; j < NP; j++)
-        if (C->role[j] == HYLC_CALIBRATE_FREE && !C->held[j]) act[na++] = j;
-      if (!na) break;
-      ActiveJacobian(C, J, act, na, Jc);
-      for (int a = 0; a < na; a++)
-        for (int b = 0; b < na; b++) {
-          A[a * na + b] = 0;
-          for (PetscInt i = 0; i < m; i++) A[a * na + b] += Jc[i * na + a] * Jc[i * na + b];
-        }
-      SymEig(na, A, ev, V);
-      if (PetscSqrtReal(PetscMax(ev[0], 0)) >= C->flatTol) break;
-      {
-        int worst = 0;
-        for (int a = 1; a < na; a++)
-          if (PetscAbsReal(V[a * na + 0]) > PetscAbsReal(V[worst * na + 0])) worst = a;
-        C->held[act[worst]] = PETSC_TRUE;
-        PetscCall(PetscPrintf(comm, "[calibrate] %s is not determined by the data (singular value %.2e of the Jacobian < -calibrate_flat_tol %g): held at %g\n", HylcCalibrateParamNames[act[worst]], (double)PetscSqrtReal(PetscMax(ev[0], 0)), (double)C->flatTol, (double)PetscExpReal(x[act[worst]])));
-      }
-    }
-    if (!na) {
-      reason = "no parameter left to fit";
-      break;
-    }
-    for (int a = 0; a < na; a++) {
-      g[a] = 0;
-      for (PetscInt i = 0; i < m; i++) g[a] += Jc[i * na + a] * r[i];
-      /* a parameter at a bound whose descent direction points outward stays there for this step */
-      pin[a] = (x[act[a]] <= xlo[act[a]] && g[a] > 0) || (x[act[a]] >= xhi[act[a]] && g[a] < 0);
-    }
-    for (int a = 0; a < na; a++)
-      for (int b = 0; b < na; b++) {
-        M[a * na + b] = (pin[a] || pin[b]) ? (a == b) : A[a * na + b] + (a == b ? lambda * A[a * na + a] : 0);
-      }
-    for (int a = 0; a < na; a++) d[a] = pin[a] ? 0 : -g[a];
-    if (Solve4(na, M, d)) {
-      reason = "singular Levenberg-Marquardt system";
-      break;
-    }
-    for (int j = 0; j < NP; j++) xt[j] = x[j];
-    for (int a = 0; a < na; a++) {
-      const int j = act[a];
-      xt[j]       = PetscMin(PetscMax(x[j] + d[a], xlo[j]), xhi[j]);
-      step        = PetscMax(step, PetscAbsReal(xt[j] - x[j]));
-    }
-    Expand(C, xt, p);
-    PetscCall(PetscTime(&t0));
-    PetscCall(HylcCalibrateSolveSamples_Private(C, p, rect));
-    PetscCall(HylcCalibrateResiduals_Private(C, rect, rt, Jt, &ft, &nft));
-    PetscCall(PetscTime(&t1));
-    C->nevals++;
-    if (ft < f) {
-      const PetscReal df = f - ft;
-      PetscReal      *sw;
-      for (int j = 0; j < NP; j++) x[j] = xt[j];
-      f  = ft;
-      sw = rec, rec = rect, rect = sw;
-      sw = r, r = rt, rt = sw;
-      sw = J, J = Jt, Jt = sw;
-      nfailed = nft;
-      lambda  = PetscMax(lambda / 3, 1e-12);
-      rejects = 0;
-      C->its++;
-      PetscCall(PrintLine(C, "it", C->its, f, p, step, lambda, nfailed, t1 - t0));
-      if (step < C->xtol) {
-        reason = "step below -calibrate_xtol";
-        break;
-      }
-      if (df < C->ftol * (f + df)) {
-        reason = "relative decrease below -calibrate_ftol";
-        break;
-      }
-    } else {
-      PetscCall(PrintLine(C, "reject", C->its + 1, ft, p, step, lambda, nft, t1 - t0));
-      lambda *= 4;
-      if (++rejects >= C->maxReject) {
-        reason = "no further decrease (-calibrate_max_reject trial steps rejected)";
-        break;
-      }
-      if (step < C->xtol) {
-        reason = "step below -calibrate_xtol";
-        break;
-      }
-    }
+  /* TAO's problem: the log values of the free parameters within the log bounds (every rank the same) */
+  PetscCall(VecCreateSeq(PETSC_COMM_SELF, c.na, &X));
+  PetscCall(VecDuplicate(X, &c.XL));
+  PetscCall(VecDuplicate(X, &c.XU));
+  for (int a = 0; a < c.na; a++) {
+    const int j = c.act[a];
+    PetscCall(VecSetValue(X, a, PetscLogReal(C->p0[j]), INSERT_VALUES));
+    PetscCall(VecSetValue(c.XL, a, PetscLogReal(C->lo[j]), INSERT_VALUES));
+    PetscCall(VecSetValue(c.XU, a, PetscLogReal(C->hi[j]), INSERT_VALUES));
   }
-  Expand(C, x, C->p);
-  for (int j = 0; j < NP; j++)
-    if (C->role[j] == HYLC_CALIBRATE_FREE && !C->held[j]) C->bound[j] = (x[j] <= xlo[j] + 1e-9) || (x[j] >= xhi[j] - 1e-9);
-  C->f1 = f;
-  PetscCall(PetscArraycpy(C->rec1, rec, m * HYLC_CALIB_NRECORD));
+  PetscCall(VecAssemblyBegin(X));
+  PetscCall(VecAssemblyEnd(X));
+  PetscCall(VecAssemblyBegin(c.XL));
+  PetscCall(VecAssemblyEnd(c.XL));
+  PetscCall(VecAssemblyBegin(c.XU));
+  PetscCall(VecAssemblyEnd(c.XU));
+  PetscCall(VecCreateSeq(PETSC_COMM_SELF, m, &F));
+  PetscCall(MatCreateSeqDense(PETSC_COMM_SELF, m, c.na, NULL, &Jm));
+  PetscCall(TaoSetSolution(tao, X));
+  PetscCall(TaoSetVariableBounds(tao, c.XL, c.XU));
+  PetscCall(TaoSetResidualRoutine(tao, F, FormResidual, &c));
+  PetscCall(TaoSetJacobianResidualRoutine(tao, Jm, Jm, FormJacobian, &c));
+  PetscCall(TaoSetObjectiveAndGradient(tao, NULL, FormObjectiveGradient, &c));
+  PetscCall(PetscObjectTypeCompare((PetscObject)tao, TAOBRGN, &isbrgn));
+  inner = tao;
+  if (isbrgn) PetscCall(TaoBRGNGetSubsolver(tao, &inner)); /* it iterates, with its own convergence test */
+  PetscCall(TaoSetConvergenceTest(inner, ConvergenceTest, &c));
+
+  /* the initial point: its evaluation (TAO's first, from the cache) and line */
+  PetscCall(EvalAt(&c, X));
+  PetscCheck(c.f < PETSC_INFINITY, comm, PETSC_ERR_NOT_CONVERGED, "The base sample (strain %g %g %g %g %g %g) did not converge with the initial parameters; check -yarn_* and -micro_*", (double)C->z[0], (double)C->z[1], (double)C->z[2], (double)C->z[3], (double)C->z[4], (double)C->z[5]);
+  PetscCall(PetscArraycpy(C->rec0, c.rec, m * HYLC_CALIB_NRECORD));
+  C->f0  = c.f;
+  C->its = 0;
+  Expand(C, c.xc, p);
+  PetscCall(PrintLine(C, 0, c.f, p, -1, c.nfailed, c.dt));
+  for (int j = 0; j < NP; j++) c.xprev[j] = c.xc[j];
+  c.fprev = c.f;
+
+  C->taoUsed = PETSC_TRUE;
+  PetscCall(TaoSolve(tao));
+  PetscCall(TaoGetConvergedReason(tao, &treason));
+  if (treason == TAO_CONVERGED_USER && c.reason)
+    PetscCall(PetscStrncpy(reason, c.reason, sizeof(reason)));
+  else if (treason == TAO_DIVERGED_MAXITS)
+    PetscCall(PetscStrncpy(reason, "iteration limit (-calibrate_max_it)", sizeof(reason)));
+  else if (treason == TAO_CONVERGED_GATOL || treason == TAO_CONVERGED_GRTOL || treason == TAO_CONVERGED_GTTOL)
+    PetscCall(PetscSNPrintf(reason, sizeof(reason), "TAO's gradient test (%s; -calibrate_tao_gatol, -calibrate_tao_grtol, -calibrate_tao_gttol)", TaoConvergedReasons[treason]));
+  else
+    PetscCall(PetscSNPrintf(reason, sizeof(reason), "TAO %s", TaoConvergedReasons[treason]));
+
+  /* the final point (TAO's solution; normally the last evaluation) */
+  PetscCall(TaoGetSolution(tao, &X));
+  PetscCall(EvalAt(&c, X));
+  Expand(C, c.xc, C->p);
+  for (int a = 0; a < c.na; a++) {
+    const int j = c.act[a];
+    if (!C->held[j]) C->bound[j] = (PetscBool)((c.xc[j] <= PetscLogReal(C->lo[j]) + 1e-9) || (c.xc[j] >= PetscLogReal(C->hi[j]) - 1e-9));
+  }
+  C->f1 = c.f;
+  PetscCall(PetscArraycpy(C->rec1, c.rec, m * HYLC_CALIB_NRECORD));
   PetscCall(PetscTime(&t1));
   C->tsolve = t1 - ts;
   C->solved = PETSC_TRUE;
-  PetscCall(PetscPrintf(comm, "[calibrate] stopped: %s\n", reason));
+  PetscCall(PetscPrintf(comm, "[calibrate] stopped: %s (%" PetscInt_FMT " evaluations)\n", reason, C->nevals));
   for (int j = 0; j < NP; j++)
     if (C->bound[j]) PetscCall(PetscPrintf(comm, "[calibrate] warning: %s = %g ends at a bound of -calibrate_bounds_%s [%g, %g]\n", HylcCalibrateParamNames[j], (double)C->p[j], HylcCalibrateParamNames[j], (double)C->lo[j], (double)C->hi[j]));
-  if (nfailed) {
+  if (c.nfailed) {
     PetscInt shown = 0;
-    PetscCall(PetscPrintf(comm, "[calibrate] %" PetscInt_FMT " samples did not converge with the final parameters and were left out:\n", nfailed));
+    PetscCall(PetscPrintf(comm, "[calibrate] %" PetscInt_FMT " samples did not converge with the final parameters and were left out:\n", c.nfailed));
     for (PetscInt i = 0; i < m && shown < 10; i++) {
-      const PetscReal *o = rec + i * HYLC_CALIB_NRECORD, *z = C->z + 6 * i;
+      const PetscReal *o = c.rec + i * HYLC_CALIB_NRECORD, *z = C->z + 6 * i;
       if (o[5] == 0) continue;
       shown++;
       PetscCall(PetscPrintf(comm, "  sample %" PetscInt_FMT " (%s) strain %g %g %g %g %g %g: %s after %d iterations\n", i, HylcCalibrateTermName_Private(C->term[i]), (double)z[0], (double)z[1], (double)z[2], (double)z[3], (double)z[4], (double)z[5], HylcMicroStatuses[(int)o[5]], (int)o[6]));
@@ -545,13 +670,12 @@ PetscErrorCode HylcCalibrateSolve(HylcCalibrate C)
   }
   PetscCall(WriteYAML(C));
   PetscCall(WriteDump(C));
-  PetscCall(PetscFree(rec));
-  PetscCall(PetscFree(rect));
-  PetscCall(PetscFree(r));
-  PetscCall(PetscFree(rt));
-  PetscCall(PetscFree(J));
-  PetscCall(PetscFree(Jt));
-  PetscCall(PetscFree(Jc));
+  PetscCall(VecDestroy(&X));
+  PetscCall(VecDestroy(&F));
+  PetscCall(VecDestroy(&c.XL));
+  PetscCall(VecDestroy(&c.XU));
+  PetscCall(MatDestroy(&Jm));
+  PetscCall(PetscFree4(c.rec, c.r, c.J, c.Jc));
   PetscCall(PetscLogEventEnd(HYLC_CalibrateSolve, C, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
