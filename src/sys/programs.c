@@ -212,7 +212,8 @@ static const HylcStageOption HylcStageOptions[] = {
     {"calibrate_ftol", G_CALIBRATE},
     {"calibrate_lambda", G_CALIBRATE},
     {"calibrate_max_it", G_CALIBRATE},
-    {"calibrate_max_reject", G_CALIBRATE},
+    {"calibrate_max_reject", G_CALIBRATE}, /* removed: an error naming its replacement (TAO) */
+    {"calibrate_tao_*", G_CALIBRATE},
     {"calibrate_max_samples", G_CALIBRATE},
     {"calibrate_n", G_CALIBRATE},
     {"calibrate_n2", G_CALIBRATE},
