@@ -13,9 +13,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-enum { N  = 4,
-       NV = (N + 1) * (N + 1),
-       NT = 2 * N * N };
+enum { N = 4, NV = (N + 1) * (N + 1), NT = 2 * N * N };
 
 int main(int argc, char **argv)
 {

@@ -52,11 +52,7 @@ enum {
 #define HYLCMAT_N2D 9 /* 2D terms (k0, k1): (0,1) (0,2) (0,3) (0,4) (1,2) (1,3) (1,4) (2,3) (2,4) */
 
 /* extrapolation modes (the JSON key "ext") */
-enum {
-  HYLCMAT_EXT_LINEAR   = 0,
-  HYLCMAT_EXT_CONSTANT = 1,
-  HYLCMAT_EXT_ZERO     = 2
-};
+enum { HYLCMAT_EXT_LINEAR = 0, HYLCMAT_EXT_CONSTANT = 1, HYLCMAT_EXT_ZERO = 2 };
 
 typedef struct hylcmat hylcmat;
 

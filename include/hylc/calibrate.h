@@ -69,11 +69,7 @@ PETSC_EXTERN PetscErrorCode HylcCalibrateSetBounds(HylcCalibrate, PetscInt j, Pe
 PETSC_EXTERN PetscErrorCode HylcCalibrateSetMaxIterations(HylcCalibrate, PetscInt);
 /* -calibrate_start: how each evaluation's samples are solved: auto (the way the target was made: a samples
    file's own start, cold for a table, raw data or CSV, as the paper's were computed), cold, or continue */
-typedef enum {
-  HYLC_CALIBRATE_START_AUTO     = 0,
-  HYLC_CALIBRATE_START_COLD     = 1,
-  HYLC_CALIBRATE_START_CONTINUE = 2
-} HylcCalibrateStart;
+typedef enum { HYLC_CALIBRATE_START_AUTO = 0, HYLC_CALIBRATE_START_COLD = 1, HYLC_CALIBRATE_START_CONTINUE = 2 } HylcCalibrateStart;
 PETSC_EXTERN const char *const HylcCalibrateStarts[];
 PETSC_EXTERN PetscErrorCode    HylcCalibrateSetStart(HylcCalibrate, HylcCalibrateStart);
 /* the Levenberg-Marquardt damping of TAOBRGN (its regularizer weight, relative to diag J^T J) */

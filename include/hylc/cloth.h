@@ -30,50 +30,27 @@ PETSC_EXTERN PetscErrorCode HylcClothInitializePackage(void);
 
 /* The virtual tests (-cloth_test). UNIAXIAL is the homogeneous uniaxial curve of the table alone
    (no mesh): the reference of the strip's central zone. */
-typedef enum {
-  HYLC_CLOTH_TEST_TENSILE    = 0,
-  HYLC_CLOTH_TEST_BIAS       = 1,
-  HYLC_CLOTH_TEST_CANTILEVER = 2,
-  HYLC_CLOTH_TEST_DRAPE      = 3,
-  HYLC_CLOTH_TEST_SCENE      = 4,
-  HYLC_CLOTH_TEST_UNIAXIAL   = 5,
-  HYLC_CLOTH_TEST_CURL       = 6
-} HylcClothTest;
+typedef enum { HYLC_CLOTH_TEST_TENSILE = 0, HYLC_CLOTH_TEST_BIAS = 1, HYLC_CLOTH_TEST_CANTILEVER = 2, HYLC_CLOTH_TEST_DRAPE = 3, HYLC_CLOTH_TEST_SCENE = 4, HYLC_CLOTH_TEST_UNIAXIAL = 5, HYLC_CLOTH_TEST_CURL = 6 } HylcClothTest;
 PETSC_EXTERN const char *const HylcClothTests[];
 
 /* Which fabric face is up: n = +z (UP) or n = -z (DOWN); BOTH runs the cantilever with each. */
-typedef enum {
-  HYLC_CLOTH_FACE_UP   = 0,
-  HYLC_CLOTH_FACE_DOWN = 1,
-  HYLC_CLOTH_FACE_BOTH = 2
-} HylcClothFace;
+typedef enum { HYLC_CLOTH_FACE_UP = 0, HYLC_CLOTH_FACE_DOWN = 1, HYLC_CLOTH_FACE_BOTH = 2 } HylcClothFace;
 PETSC_EXTERN const char *const HylcClothFaces[];
 
 /* The material direction along the specimen's length (tensile, cantilever): material x (courses of a
    knit, warp of a woven) or y; both runs both. */
-typedef enum {
-  HYLC_CLOTH_DIR_X    = 0,
-  HYLC_CLOTH_DIR_Y    = 1,
-  HYLC_CLOTH_DIR_BOTH = 2
-} HylcClothDirection;
+typedef enum { HYLC_CLOTH_DIR_X = 0, HYLC_CLOTH_DIR_Y = 1, HYLC_CLOTH_DIR_BOTH = 2 } HylcClothDirection;
 PETSC_EXTERN const char *const HylcClothDirections[];
 
 /* Equilibrium solver: NEWTON = SNES newtonls with the energy line search; TRUST = TAO's trust-region
    Newton (TAONTR, Steihaug CG preconditioned by the factorized projected Hessian). */
-typedef enum {
-  HYLC_CLOTH_SOLVER_NEWTON = 0,
-  HYLC_CLOTH_SOLVER_TRUST  = 1
-} HylcClothSolver;
+typedef enum { HYLC_CLOTH_SOLVER_NEWTON = 0, HYLC_CLOTH_SOLVER_TRUST = 1 } HylcClothSolver;
 PETSC_EXTERN const char *const HylcClothSolvers[];
 
 /* Hessian used by the Newton solver: every element Hessian projected to PSD (PROJECTED); the exact
    Hessian (EXACT); or the exact one whenever its factorization shows no negative pivot and the projected
    one otherwise (AUTO). */
-typedef enum {
-  HYLC_CLOTH_HESSIAN_PROJECTED = 0,
-  HYLC_CLOTH_HESSIAN_EXACT     = 1,
-  HYLC_CLOTH_HESSIAN_AUTO      = 2
-} HylcClothHessian;
+typedef enum { HYLC_CLOTH_HESSIAN_PROJECTED = 0, HYLC_CLOTH_HESSIAN_EXACT = 1, HYLC_CLOTH_HESSIAN_AUTO = 2 } HylcClothHessian;
 PETSC_EXTERN const char *const HylcClothHessians[];
 
 PETSC_EXTERN PetscErrorCode HylcClothCreate(MPI_Comm, HylcCloth *);

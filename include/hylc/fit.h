@@ -28,11 +28,7 @@ PETSC_EXTERN PetscErrorCode HylcFitInitializePackage(void);
 /* Pattern families with their own fitting constants (docs/method.md §9, §S3.4): WOVEN and KNIT share the
    constants of every pattern but the stockinette; STOCKINETTE has reg 1e-2 and coarse 2D bending knots
    (factor 0.3, 2+4 and 3+3). The family is the object's type name. */
-typedef enum {
-  HYLC_FIT_FAMILY_WOVEN       = 0,
-  HYLC_FIT_FAMILY_KNIT        = 1,
-  HYLC_FIT_FAMILY_STOCKINETTE = 2
-} HylcFitFamily;
+typedef enum { HYLC_FIT_FAMILY_WOVEN = 0, HYLC_FIT_FAMILY_KNIT = 1, HYLC_FIT_FAMILY_STOCKINETTE = 2 } HylcFitFamily;
 PETSC_EXTERN const char *const HylcFitFamilies[];
 
 /* The knots of the 1D terms (-fit_knots, docs/fit.md): PAPER, the authors' uniform layout (11 knots over
@@ -41,10 +37,7 @@ PETSC_EXTERN const char *const HylcFitFamilies[];
    each side of 0, their MLS kernels following the local knot spacing, so that the first few per cent of
    strain, where cloth lives, are resolved (issue 30) while the rest stays the paper's. The 2D terms keep
    the paper's layout. */
-typedef enum {
-  HYLC_FIT_KNOTS_PAPER   = 0,
-  HYLC_FIT_KNOTS_REFINED = 1
-} HylcFitKnotLayout;
+typedef enum { HYLC_FIT_KNOTS_PAPER = 0, HYLC_FIT_KNOTS_REFINED = 1 } HylcFitKnotLayout;
 PETSC_EXTERN const char *const HylcFitKnotLayouts[];
 
 PETSC_EXTERN PetscErrorCode HylcFitCreate(MPI_Comm, HylcFit *);

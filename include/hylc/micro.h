@@ -70,19 +70,13 @@ typedef struct {
 /* the homogeneous uniaxial tension state of the tile (HylcMicroSolveUniaxial(), docs/fabric-uniaxial.md): the
    stretch s prescribed along the material x axis (sx = s; sa, sy free) or y axis (sy = s; sx, sa free),
    bending zero, Psi minimized over the two free (lateral) strains */
-typedef enum {
-  HYLC_UNIAXIAL_X = 0,
-  HYLC_UNIAXIAL_Y = 1
-} HylcUniaxialDirection;
+typedef enum { HYLC_UNIAXIAL_X = 0, HYLC_UNIAXIAL_Y = 1 } HylcUniaxialDirection;
 PETSC_EXTERN const char *const HylcUniaxialDirections[];
 
 /* how HylcMicroSolveUniaxial() gets dPsi/dz: the envelope theorem at each equilibrium
    (HylcMicroGetStrainGradient(), one solve per point) or central differences of Psi over continued solves
    (six more solves per point; for checks) */
-typedef enum {
-  HYLC_MICRO_UNIAXIAL_ENVELOPE = 0,
-  HYLC_MICRO_UNIAXIAL_FD       = 1
-} HylcMicroUniaxialGradient;
+typedef enum { HYLC_MICRO_UNIAXIAL_ENVELOPE = 0, HYLC_MICRO_UNIAXIAL_FD = 1 } HylcMicroUniaxialGradient;
 PETSC_EXTERN const char *const HylcMicroUniaxialGradients[];
 
 typedef struct {

@@ -10,20 +10,14 @@
 /* How the 1D slopes are limited on an interval with secant d != 0, alpha = m_i/d, beta = m_{i+1}/d:
    CIRCLE: alpha^2 + beta^2 <= 9 (Fritsch-Carlson, the authors' code); BOX: 0 <= alpha, beta <= 3
    (consistent with (S36)). Negative alpha or beta are set to 0 first in both cases. */
-typedef enum {
-  HYLC_MONOTONE_CIRCLE = 0,
-  HYLC_MONOTONE_BOX    = 1
-} HylcMonotoneRule;
+typedef enum { HYLC_MONOTONE_CIRCLE = 0, HYLC_MONOTONE_BOX = 1 } HylcMonotoneRule;
 PETSC_EXTERN const char *const HylcMonotoneRules[];
 
 /* Which variant of the two places where the authors' code departs from the paper (docs/method.md §9.1):
    PAPER: the S42 mixed-derivative clamps of both directions are applied, and in the 2D marching the
    slopes on the minimum's own row/column are not sign-clamped; AUTHORS: as their code (only the
    transposed S42 clamp reaches the output; mv <= -reg on the minimum's row). */
-typedef enum {
-  HYLC_FIT_COMPAT_PAPER   = 0,
-  HYLC_FIT_COMPAT_AUTHORS = 1
-} HylcFitCompat;
+typedef enum { HYLC_FIT_COMPAT_PAPER = 0, HYLC_FIT_COMPAT_AUTHORS = 1 } HylcFitCompat;
 PETSC_EXTERN const char *const HylcFitCompats[];
 
 /* Fritsch-Carlson monotone slopes, in place on m[0..n-1]: m_i = 0 where the neighbouring secants change

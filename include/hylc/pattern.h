@@ -87,12 +87,7 @@ PETSC_EXTERN PetscErrorCode HylcPatternGetType(HylcPattern, HylcPatternType *);
    strain (hylc-solve -solve_output); UNRECORDED, a file without the record (the paper's .pyp files), taken
    as its own reference state as before. A job in the auto reference mode computes the reference state of
    every pattern but a REFERENCE or UNRECORDED one (HylcReferenceStateNeeded()). */
-typedef enum {
-  HYLC_PATTERN_STATE_UNRECORDED  = 0,
-  HYLC_PATTERN_STATE_REFERENCE   = 1,
-  HYLC_PATTERN_STATE_GENERATED   = 2,
-  HYLC_PATTERN_STATE_EQUILIBRIUM = 3
-} HylcPatternState;
+typedef enum { HYLC_PATTERN_STATE_UNRECORDED = 0, HYLC_PATTERN_STATE_REFERENCE = 1, HYLC_PATTERN_STATE_GENERATED = 2, HYLC_PATTERN_STATE_EQUILIBRIUM = 3 } HylcPatternState;
 PETSC_EXTERN const char *const HylcPatternStates[];
 PETSC_EXTERN PetscErrorCode    HylcPatternGetState(HylcPattern, HylcPatternState *);
 PETSC_EXTERN PetscErrorCode    HylcPatternSetState(HylcPattern, HylcPatternState);
@@ -106,7 +101,8 @@ PETSC_EXTERN PetscErrorCode    HylcPatternGenParamsDefault(HylcPatternGenParams 
 PETSC_EXTERN PetscErrorCode HylcPatternLoad(HylcPattern, const char[]);
 PETSC_EXTERN PetscErrorCode HylcPatternLoadFromString(HylcPattern, const char[], const char[]);
 PETSC_EXTERN PetscErrorCode HylcPatternGenerate(HylcPattern, HylcPatternType, const HylcPatternGenParams *);
-PETSC_EXTERN PetscErrorCode HylcPatternSetData(HylcPattern, PetscInt, PetscReal, PetscReal, PetscReal, const PetscReal[], const PetscReal[], const PetscInt[], const PetscInt[], const PetscReal[], const PetscReal[], const PetscReal[], const PetscReal[], const PetscReal[]);
+PETSC_EXTERN PetscErrorCode HylcPatternSetData(HylcPattern, PetscInt, PetscReal, PetscReal, PetscReal, const PetscReal[], const PetscReal[], const PetscInt[], const PetscInt[], const PetscReal[], const PetscReal[], const PetscReal[],
+                                               const PetscReal[], const PetscReal[]);
 PETSC_EXTERN PetscErrorCode HylcPatternSetFromCurves(HylcPattern, PetscReal, PetscReal, PetscReal, PetscInt, const PetscInt[], const PetscInt[], const PetscReal[]);
 PETSC_EXTERN PetscErrorCode HylcPatternDuplicate(HylcPattern, HylcPattern *);
 PETSC_EXTERN PetscErrorCode HylcPatternSetRestFromGeometry(HylcPattern);

@@ -22,12 +22,7 @@ typedef struct {
    generated pattern; a .pyp file is its own reference state), compute, none, or relax: only the in-plane
    minimum over the periods and the recentring (C1's last steps), with the pattern's rest data as stored,
    so that a stored tile under the configured yarn becomes a minimum of the model (issue 30). */
-typedef enum {
-  HYLC_REFERENCE_AUTO    = 0,
-  HYLC_REFERENCE_COMPUTE = 1,
-  HYLC_REFERENCE_NONE    = 2,
-  HYLC_REFERENCE_RELAX   = 3
-} HylcReferenceMode;
+typedef enum { HYLC_REFERENCE_AUTO = 0, HYLC_REFERENCE_COMPUTE = 1, HYLC_REFERENCE_NONE = 2, HYLC_REFERENCE_RELAX = 3 } HylcReferenceMode;
 PETSC_EXTERN const char *const HylcReferenceModes[];
 
 PETSC_EXTERN PetscErrorCode HylcReferenceParamsDefault(HylcReferenceParams *);

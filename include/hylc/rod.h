@@ -36,17 +36,10 @@ double HylcRodStretchEnergy(const double x[6], double lbar, double ks, double w)
    kappa0[2..3] for f),  E_bend = w B/(4 lbar) sum_j |kappa^(j) - kappa0^(j)|^2.
    Twist: tau = m + theta^f - theta^e,  E_twist = w beta/(2 lbar) (tau - tau0)^2.
    kappa and tau are integrated (dimensionless) quantities; lbar = (lbar_e + lbar_f)/2. */
-typedef enum {
-  HYLC_ROD_CURVATURE_AVERAGED = 0,
-  HYLC_ROD_CURVATURE_PER_EDGE = 1
-} HylcRodCurvatureVariant;
+typedef enum { HYLC_ROD_CURVATURE_AVERAGED = 0, HYLC_ROD_CURVATURE_PER_EDGE = 1 } HylcRodCurvatureVariant;
 
 /* which terms enter g and H (the energies of both terms are always reported) */
-enum {
-  HYLC_ROD_BEND      = 1,
-  HYLC_ROD_TWIST     = 2,
-  HYLC_ROD_BENDTWIST = 3
-};
+enum { HYLC_ROD_BEND = 1, HYLC_ROD_TWIST = 2, HYLC_ROD_BENDTWIST = 3 };
 
 typedef struct {
   double te[3], d1e[3]; /* incoming edge: stored unit tangent and reference director (made orthonormal internally) */

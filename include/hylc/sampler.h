@@ -44,11 +44,7 @@ PETSC_EXTERN PetscErrorCode HylcSamplerSetBatchSize(HylcSampler, PetscInt);
 /* -sampler_start: cold (every sample from u~ = 0), continue (half-lines from the zero strain outward, each
    sample from its predecessor's equilibrium; HylcPlanUnits) or both (every sample from both starts, the
    lower Psi kept, the other recorded: a map of where the tile is multistable) */
-typedef enum {
-  HYLC_SAMPLER_START_COLD     = 0,
-  HYLC_SAMPLER_START_CONTINUE = 1,
-  HYLC_SAMPLER_START_BOTH     = 2
-} HylcSamplerStart;
+typedef enum { HYLC_SAMPLER_START_COLD = 0, HYLC_SAMPLER_START_CONTINUE = 1, HYLC_SAMPLER_START_BOTH = 2 } HylcSamplerStart;
 PETSC_EXTERN const char *const HylcSamplerStarts[];
 PETSC_EXTERN PetscErrorCode    HylcSamplerSetStart(HylcSampler, HylcSamplerStart);
 PETSC_EXTERN PetscErrorCode    HylcSamplerSetBothTolerance(HylcSampler, PetscReal);

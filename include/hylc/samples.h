@@ -26,11 +26,7 @@ typedef struct {
 } HylcSampleRecord;
 
 /* how a sample's solve started (/samples/start) */
-typedef enum {
-  HYLC_SAMPLE_START_COLD      = 0,
-  HYLC_SAMPLE_START_CONTINUED = 1,
-  HYLC_SAMPLE_START_RETRIED   = 2
-} HylcSampleStart;
+typedef enum { HYLC_SAMPLE_START_COLD = 0, HYLC_SAMPLE_START_CONTINUED = 1, HYLC_SAMPLE_START_RETRIED = 2 } HylcSampleStart;
 
 typedef struct _n_HylcJournal *HylcJournal;
 
@@ -87,7 +83,8 @@ PETSC_EXTERN PetscBool      HylcSamplesOptionIsNeutral(const char[]);
    reference and model may be NULL (the groups are then omitted). Not collective (call on rank 0). */
 PETSC_EXTERN PetscErrorCode HylcSamplesWriteHDF5(const char path[], long nsamples, const HylcSampleRecord recs[], const unsigned char done[], HylcPattern reference, const HylcYarnModel *model, const char optionsText[]);
 /* The same, and /provenance from the run's identity text (HylcSamplesIdentity; NULL: no /provenance). */
-PETSC_EXTERN PetscErrorCode HylcSamplesWriteHDF5WithIdentity(const char path[], long nsamples, const HylcSampleRecord recs[], const unsigned char done[], HylcPattern reference, const HylcYarnModel *model, const char optionsText[], const char identity[]);
+PETSC_EXTERN PetscErrorCode HylcSamplesWriteHDF5WithIdentity(const char path[], long nsamples, const HylcSampleRecord recs[], const unsigned char done[], HylcPattern reference, const HylcYarnModel *model, const char optionsText[],
+                                                             const char identity[]);
 /* Reads /samples of a file written by HylcSamplesWriteHDF5: the sample count, records (indexed by
    sample) and done flags (status >= 0), allocated with PetscMalloc (free with PetscFree); optionsText
    (may be NULL) receives the /options text (PetscFree). Every dataset is checked first as by

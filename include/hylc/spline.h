@@ -18,11 +18,7 @@
 #include <petscsys.h>
 
 /* Extrapolation modes (the values of the JSON key "ext"). */
-typedef enum {
-  HYLC_EXT_LINEAR   = 0,
-  HYLC_EXT_CONSTANT = 1,
-  HYLC_EXT_ZERO     = 2
-} HylcSplineExt;
+typedef enum { HYLC_EXT_LINEAR = 0, HYLC_EXT_CONSTANT = 1, HYLC_EXT_ZERO = 2 } HylcSplineExt;
 
 /* One-dimensional term f_k(x) of the material: k = 0 sx, 1 sa, 2 sy, 3 x-bending, 4 y-bending. */
 typedef struct {
@@ -59,7 +55,8 @@ PETSC_EXTERN PetscReal HylcSpline2DEval(const HylcSpline2D *, PetscReal u, Petsc
 
 /* Raw-array forms of the same evaluations (for the fitting kernels, which work on bare arrays). */
 PETSC_EXTERN PetscReal HylcHermite1DEval(PetscInt n, const PetscReal t[], const PetscReal p[], const PetscReal m[], HylcSplineExt ext, PetscReal x, PetscReal *d1, PetscReal *d2);
-PETSC_EXTERN PetscReal HylcHermite2DEval(PetscInt nu, PetscInt nv, const PetscReal tu[], const PetscReal tv[], const PetscReal p[], const PetscReal mu[], const PetscReal mv[], const PetscReal muv[], HylcSplineExt ext, PetscReal u, PetscReal v, PetscReal g[2], PetscReal H[3]);
+PETSC_EXTERN PetscReal HylcHermite2DEval(PetscInt nu, PetscInt nv, const PetscReal tu[], const PetscReal tv[], const PetscReal p[], const PetscReal mu[], const PetscReal mv[], const PetscReal muv[], HylcSplineExt ext, PetscReal u, PetscReal v,
+                                         PetscReal g[2], PetscReal H[3]);
 
 /* Local polynomial form of the pieces of a 1D Hermite spline (for the exact divided differences of the
    material evaluator). Piece i is the cubic (or, extrapolating, linear/constant/zero) polynomial the
@@ -77,4 +74,5 @@ PETSC_EXTERN void HylcHermite1DKnotJump(PetscInt n, const PetscReal t[], const P
 /* The restriction v -> f(u, v) of a 2D spline at fixed u is the 1D Hermite spline on tv (same extrapolation
    mode) with node values P[j] and slopes M[j] = df/dv; this returns them for the v-nodes j = j0..j1 (into
    P[j - j0], M[j - j0]) and, where Pu/Mu and Puu/Muu are not NULL, their first and second u-derivatives. */
-PETSC_EXTERN void HylcHermite2DSliceV(PetscInt nu, PetscInt nv, const PetscReal tu[], const PetscReal p[], const PetscReal mu[], const PetscReal mv[], const PetscReal muv[], HylcSplineExt ext, PetscReal u, PetscInt j0, PetscInt j1, PetscReal P[], PetscReal M[], PetscReal Pu[], PetscReal Mu[], PetscReal Puu[], PetscReal Muu[]);
+PETSC_EXTERN void HylcHermite2DSliceV(PetscInt nu, PetscInt nv, const PetscReal tu[], const PetscReal p[], const PetscReal mu[], const PetscReal mv[], const PetscReal muv[], HylcSplineExt ext, PetscReal u, PetscInt j0, PetscInt j1, PetscReal P[],
+                                      PetscReal M[], PetscReal Pu[], PetscReal Mu[], PetscReal Puu[], PetscReal Muu[]);

@@ -37,10 +37,4 @@ PETSC_EXTERN PetscErrorCode HylcYarnModelView(const HylcYarnModel *, PetscReal, 
 
 /* the energy parts of a yarn tile (stretch, bend, twist, contact), also a mask of the terms to evaluate
    (HylcPeriodicEvaluate; the reference HylcTile of tests/support) */
-enum {
-  HYLC_TERM_STRETCH = 1,
-  HYLC_TERM_BEND    = 2,
-  HYLC_TERM_TWIST   = 4,
-  HYLC_TERM_CONTACT = 8,
-  HYLC_TERM_ALL     = 15
-};
+enum { HYLC_TERM_STRETCH = 1, HYLC_TERM_BEND = 2, HYLC_TERM_TWIST = 4, HYLC_TERM_CONTACT = 8, HYLC_TERM_ALL = 15 };

@@ -74,11 +74,7 @@ static PetscErrorCode WriteResults(const char path[], PetscInt n, const PetscRea
 
   PetscFunctionBegin;
   if (l > 3 && (!strcmp(path + l - 3, ".h5") || (l > 5 && !strcmp(path + l - 5, ".hdf5")))) {
-    const HylcFileH5Doubles ds[4] = {
-        {"strain", 2, {(size_t)n, 6}, z},
-        {"psi", 1, {(size_t)n}, psi},
-        {"grad", 2, {(size_t)n, 6}, grad},
-        {"hessian", 3, {(size_t)n, 6, 6}, hess}};
+    const HylcFileH5Doubles ds[4] = {{"strain", 2, {(size_t)n, 6}, z}, {"psi", 1, {(size_t)n}, psi}, {"grad", 2, {(size_t)n, 6}, grad}, {"hessian", 3, {(size_t)n, 6, 6}, hess}};
     PetscCall(HylcFileWriteHDF5(path, "-eval_output", 4, ds));
   } else {
     FILE *fp;
@@ -187,8 +183,12 @@ static PetscErrorCode Eval(HylcMaterial mat)
   PetscCall(PetscOptionsString("-eval_hdf5", "Write the material as hylc HDF5 to this file (never the input)", "HylcMaterialWriteHDF5", h5, h5, sizeof(h5), &hasH5));
   PetscCall(PetscOptionsString("-eval_input", "Batch mode: evaluate at the strains of this file (text: 6 numbers per line; HDF5: dataset /strain or /samples/strain, N x 6)", "HylcMaterialEvaluate", bin, bin, sizeof(bin), &hasIn));
   PetscCall(PetscOptionsString("-eval_output", "Batch mode: write psi (and with -derivatives grad, hessian) per strain here: text, or HDF5 if it ends in .h5", "HylcMaterialEvaluate", bout, bout, sizeof(bout), &hasOut));
-  PetscCall(PetscOptionsString("-eval_uniaxial", "Uniaxial tension mode: x or y, the material axis of the prescribed stretch; Psi minimized over the other two in-plane strains, bending zero (docs/fabric-uniaxial.md)", "HylcMaterialUniaxial", udir, udir, sizeof(udir), &hasUni));
-  PetscCall(HylcOptionsRealArray("-eval_uniaxial_strains", "Uniaxial mode: the stretches s in [0, 1) (strain, 0 at rest; default 0.05,0.1,0.2; at most 256), in this order: the first from the lowest point of a grid of the lateral strains, each other from the lateral strains of the one before", "HylcMaterialUniaxial", ustrain, &nu, &hasUStrains));
+  PetscCall(PetscOptionsString("-eval_uniaxial", "Uniaxial tension mode: x or y, the material axis of the prescribed stretch; Psi minimized over the other two in-plane strains, bending zero (docs/fabric-uniaxial.md)", "HylcMaterialUniaxial", udir,
+                               udir, sizeof(udir), &hasUni));
+  PetscCall(HylcOptionsRealArray(
+      "-eval_uniaxial_strains",
+      "Uniaxial mode: the stretches s in [0, 1) (strain, 0 at rest; default 0.05,0.1,0.2; at most 256), in this order: the first from the lowest point of a grid of the lateral strains, each other from the lateral strains of the one before",
+      "HylcMaterialUniaxial", ustrain, &nu, &hasUStrains));
   PetscCall(PetscOptionsString("-eval_uniaxial_csv", "Uniaxial mode: write strain,T_N_per_m,lateral_strain_sa,lateral_strain_s2 (T in N/m) to this CSV file", "HylcWriteUniaxialCSV", ucsv, ucsv, sizeof(ucsv), &hasUCsv));
   PetscOptionsEnd();
   if (!hasUStrains) nu = 3;
@@ -201,7 +201,8 @@ static PetscErrorCode Eval(HylcMaterial mat)
     PetscCall(PetscStrcmp(udir, "y", &isy));
     PetscCheck(isx || isy, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-eval_uniaxial %s: unknown direction (x or y, the material axis of the stretch)", udir);
     udirn = isy ? 1 : 0;
-    for (PetscInt i = 0; i < nu; i++) PetscCheck(ustrain[i] >= 0 && ustrain[i] < 1, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-eval_uniaxial_strains: stretch %g is outside [0, 1) (a uniaxial state is a tension test; a compressed strip buckles)", (double)ustrain[i]);
+    for (PetscInt i = 0; i < nu; i++)
+      PetscCheck(ustrain[i] >= 0 && ustrain[i] < 1, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-eval_uniaxial_strains: stretch %g is outside [0, 1) (a uniaxial state is a tension test; a compressed strip buckles)", (double)ustrain[i]);
   }
   PetscCall(HylcMaterialGetOptionsFile(mat, matFile, sizeof(matFile), &hasMatFile));
   PetscCheck(!(hasFile && hasMatFile), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "Both -material and -material_file were given; use one");
@@ -219,7 +220,8 @@ static PetscErrorCode Eval(HylcMaterial mat)
   PetscCheck(hasIn == hasOut, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "Batch mode needs both -eval_input strains.txt|.h5 and -eval_output out.txt|.h5");
   PetscCheck(!hasIn || (bin[0] && bout[0]), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-eval_input and -eval_output need file names");
   PetscCheck(!(hasIn && hasStrain), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-strain and -eval_input exclude each other");
-  PetscCheck(hasStrain || hasJson || hasH5 || hasIn || hasUni, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "Nothing to do: give -strain sx,sa,sy,II00,II01,II11 (or -eval_json / -eval_hdf5 to convert the material, -eval_uniaxial x|y for the uniaxial states)");
+  PetscCheck(hasStrain || hasJson || hasH5 || hasIn || hasUni, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT,
+             "Nothing to do: give -strain sx,sa,sy,II00,II01,II11 (or -eval_json / -eval_hdf5 to convert the material, -eval_uniaxial x|y for the uniaxial states)");
   PetscCheck(!deriv || hasStrain || hasIn, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-derivatives needs -strain");
   if (hasStrain) PetscCall(ParseStrain(strain, s));
   /* every file before any work (include/hylc/files.h): the inputs readable, the outputs writable and

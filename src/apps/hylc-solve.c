@@ -87,8 +87,10 @@ static PetscErrorCode Solve(HylcPattern pat, HylcMicro micro)
   PetscCall(PetscOptionsString("-solve_vtk", "Write the equilibrium, tiled, as legacy-VTK polylines", "hylc-solve", vtk, vtk, sizeof(vtk), NULL));
   nt = 2;
   PetscCall(HylcOptionsIntArray("-solve_vtk_tiles", "Tile copies nx,ny in the VTK file", "hylc-solve", tiles, &nt, NULL));
-  PetscCall(PetscOptionsString("-solve_uniaxial", "Uniaxial tension mode: x or y, the material axis of the prescribed stretch; the other two in-plane strains free, bending zero (docs/fabric-uniaxial.md)", "HylcMicroSolveUniaxial", udir, udir, sizeof(udir), &uni));
-  PetscCall(HylcOptionsRealArray("-solve_uniaxial_strains", "Uniaxial mode: the stretches s in [0, 1) (strain, 0 at rest; default 0.05,0.1,0.2), solved in this order, each continued from the one before (at most 64)", "HylcMicroSolveUniaxial", ustrain, &nu, &hasStrains));
+  PetscCall(PetscOptionsString("-solve_uniaxial", "Uniaxial tension mode: x or y, the material axis of the prescribed stretch; the other two in-plane strains free, bending zero (docs/fabric-uniaxial.md)", "HylcMicroSolveUniaxial", udir, udir,
+                               sizeof(udir), &uni));
+  PetscCall(HylcOptionsRealArray("-solve_uniaxial_strains", "Uniaxial mode: the stretches s in [0, 1) (strain, 0 at rest; default 0.05,0.1,0.2), solved in this order, each continued from the one before (at most 64)", "HylcMicroSolveUniaxial",
+                                 ustrain, &nu, &hasStrains));
   PetscCall(PetscOptionsString("-solve_uniaxial_csv", "Uniaxial mode: write strain,T_N_per_m,lateral_strain_sa,lateral_strain_s2 (T in N/m) to this CSV file", "HylcWriteUniaxialCSV", csv, csv, sizeof(csv), &hasCsv));
   PetscOptionsEnd();
   if (!hasStrains) nu = 3;
@@ -101,7 +103,9 @@ static PetscErrorCode Solve(HylcPattern pat, HylcMicro micro)
     PetscCheck(isx || isy, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-solve_uniaxial %s: unknown direction (x or y, the material axis of the stretch)", udir);
     PetscCheck(!flg, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-strain cannot be combined with -solve_uniaxial: the uniaxial mode chooses the strains itself (-solve_uniaxial_strains sets the stretches)");
     PetscCheck(!out[0] && !vtk[0], PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-solve_output and -solve_vtk are not available with -solve_uniaxial (write the curve with -solve_uniaxial_csv)");
-    for (PetscInt i = 0; i < nu; i++) PetscCheck(ustrain[i] >= 0 && ustrain[i] < 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-solve_uniaxial_strains: stretch %g is outside [0, 1) (a uniaxial state is a tension test within the sampled stretches; a compressed strip buckles)", (double)ustrain[i]);
+    for (PetscInt i = 0; i < nu; i++)
+      PetscCheck(ustrain[i] >= 0 && ustrain[i] < 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-solve_uniaxial_strains: stretch %g is outside [0, 1) (a uniaxial state is a tension test within the sampled stretches; a compressed strip buckles)",
+                 (double)ustrain[i]);
   }
   PetscCall(HylcMicroSetFromOptions(micro)); /* only reads options; the pattern is given below */
   {

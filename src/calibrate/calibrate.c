@@ -537,8 +537,10 @@ PetscErrorCode HylcCalibrateView(HylcCalibrate C, PetscViewer viewer)
   if (!viewer) PetscCall(PetscViewerASCIIGetStdout(PetscObjectComm((PetscObject)C), &viewer));
   PetscCall(PetscObjectTypeCompare((PetscObject)viewer, PETSCVIEWERASCII, &isascii));
   if (!isascii) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(PetscViewerASCIIPrintf(viewer, "calibration: pattern %s%s, target %s (%s), %" PetscInt_FMT " samples\n", C->patLabel, C->refComputed ? " (reference state computed with the initial parameters)" : "", C->target, HylcCalibTargetTypes[C->targetResolved], C->m));
-  PetscCall(PetscViewerASCIIPrintf(viewer, "samples solved %s (-calibrate_start %s; %" PetscInt_FMT " units of work)\n", C->continued ? "by continuation along each 1D term's half-line from zero outward" : "cold, each from the reference state", HylcCalibrateStarts[C->start], C->nunits));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "calibration: pattern %s%s, target %s (%s), %" PetscInt_FMT " samples\n", C->patLabel, C->refComputed ? " (reference state computed with the initial parameters)" : "", C->target,
+                                   HylcCalibTargetTypes[C->targetResolved], C->m));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "samples solved %s (-calibrate_start %s; %" PetscInt_FMT " units of work)\n", C->continued ? "by continuation along each 1D term's half-line from zero outward" : "cold, each from the reference state",
+                                   HylcCalibrateStarts[C->start], C->nunits));
   for (int j = 0; j < HYLC_CALIBRATE_NPARAM; j++) {
     const char *flag = "";
     if (C->solved && C->held[j])
@@ -572,7 +574,8 @@ PetscErrorCode HylcCalibrateView(HylcCalibrate C, PetscViewer viewer)
     if (!C->nt[t]) continue;
     TermStats(C, C->rec0, t, &r0, &s0, &n0);
     TermStats(C, C->rec1, t, &r1, &s1, &n1);
-    snprintf(buf, sizeof(buf), "%-8s %4d   %8.3f%% -> %8.3f%%                    %8.4f -> %8.4f%s\n", HylcCalibrateTermName_Private(t), (int)C->nt[t], (double)(100 * r0), (double)(100 * r1), (double)s0, (double)s1, n1 < C->nt[t] ? "  (some samples not converged)" : "");
+    snprintf(buf, sizeof(buf), "%-8s %4d   %8.3f%% -> %8.3f%%                    %8.4f -> %8.4f%s\n", HylcCalibrateTermName_Private(t), (int)C->nt[t], (double)(100 * r0), (double)(100 * r1), (double)s0, (double)s1,
+             n1 < C->nt[t] ? "  (some samples not converged)" : "");
     PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
   }
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -562,7 +562,8 @@ PetscErrorCode HylcCalibrateSetFromOptions(HylcCalibrate C)
   PetscCheck(!set, comm, PETSC_ERR_USER_INPUT, "-calibrate_max_reject no longer applies: the calibration's optimizer is TAO (docs/calibrate.md); limit its evaluations with -calibrate_tao_max_funcs");
 
   PetscObjectOptionsBegin((PetscObject)C);
-  PetscCall(PetscOptionsString("-calibrate_target", "Target: a material table (.json or model .h5), a samples .h5 of hylc-sample, the paper's raw data.txt (or its directory), or a .csv with a header naming sx,sa,sy,II00,II01,II11,psi", "HylcCalibrateSetTarget", target, target, sizeof(target), NULL));
+  PetscCall(PetscOptionsString("-calibrate_target", "Target: a material table (.json or model .h5), a samples .h5 of hylc-sample, the paper's raw data.txt (or its directory), or a .csv with a header naming sx,sa,sy,II00,II01,II11,psi",
+                               "HylcCalibrateSetTarget", target, target, sizeof(target), NULL));
   PetscCall(PetscOptionsEnum("-calibrate_target_type", "Kind of target: auto (by extension and content), table, samples, raw, csv", "HylcCalibrateSetTargetType", HylcCalibTargetTypes, tt, &tt, &ttset));
   PetscCall(PetscOptionsString("-calibrate_output", "Write the calibrated values as a YAML options file (yarn_E, yarn_Es, yarn_G, yarn_kc; a drop-in for config/)", "HylcCalibrateSetOutputs", output, output, sizeof(output), NULL));
   PetscCall(PetscOptionsString("-calibrate_dump", "Write per sample the strain, term, target, initial and calibrated Psi as CSV (examples/plot_calibrate.py)", "HylcCalibrateSetOutputs", dump, dump, sizeof(dump), NULL));
@@ -583,21 +584,30 @@ PetscErrorCode HylcCalibrateSetFromOptions(HylcCalibrate C)
       PetscCall(HylcCalibrateSetBounds(C, j, v[0], v[1]));
     }
   }
-  PetscCall(PetscOptionsString("-calibrate_terms", "Terms sampled for a table target: a comma list of zero, sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11, or all, or 1d (default zero,sx,sa,sy,II00,II11)", "HylcCalibrateSetTerms", terms, terms, sizeof(terms), NULL));
+  PetscCall(PetscOptionsString("-calibrate_terms",
+                               "Terms sampled for a table target: a comma list of zero, sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11, or all, or 1d (default zero,sx,sa,sy,II00,II11)",
+                               "HylcCalibrateSetTerms", terms, terms, sizeof(terms), NULL));
   PetscCall(PetscOptionsInt("-calibrate_n", "Samples per 1D term (table target)", "HylcCalibrateSetSampleCounts", n1, &n1, NULL));
   PetscCall(PetscOptionsInt("-calibrate_n2", "Samples per axis of a 2D term (table target)", "HylcCalibrateSetSampleCounts", n2, &n2, NULL));
   PetscCall(PetscOptionsInt("-calibrate_stride", "File target: keep every stride-th row of each term", "HylcCalibrateSetThinning", stride, &stride, NULL));
   PetscCall(PetscOptionsInt("-calibrate_max_samples", "File target: at most this many rows (thinned evenly within each term; 0: all)", "HylcCalibrateSetThinning", maxSamples, &maxSamples, NULL));
   PetscCall(HylcOptionsReal("-calibrate_weight_zero", "Weight of the relative error of Psi at the base strain (the constant)", "HylcCalibrateSetTermWeight", wzero, &wzero, NULL));
-  PetscCall(PetscOptionsString("-calibrate_weights", "Weights of terms, a comma list term=weight (e.g. sx=2,sa-sy=0.5; default 1 each; 'other' for file rows off the plan's axes)", "HylcCalibrateSetTermWeight", weights, weights, sizeof(weights), NULL));
-  PetscCall(PetscOptionsEnum("-calibrate_start", "How each evaluation's samples are solved: auto (as the target was made: a samples file's own start; cold for a table, raw data or CSV), continue (each 1D term's half-line from zero outward, as hylc-sample) or cold (every sample from the reference state, the paper's procedure)", "HylcCalibrateSetStart", HylcCalibrateStarts, start, &start, NULL));
+  PetscCall(
+      PetscOptionsString("-calibrate_weights", "Weights of terms, a comma list term=weight (e.g. sx=2,sa-sy=0.5; default 1 each; 'other' for file rows off the plan's axes)", "HylcCalibrateSetTermWeight", weights, weights, sizeof(weights), NULL));
+  PetscCall(PetscOptionsEnum("-calibrate_start",
+                             "How each evaluation's samples are solved: auto (as the target was made: a samples file's own start; cold for a table, raw data or CSV), continue (each 1D term's half-line from zero outward, as hylc-sample) or cold "
+                             "(every sample from the reference state, the paper's procedure)",
+                             "HylcCalibrateSetStart", HylcCalibrateStarts, start, &start, NULL));
   PetscCall(PetscOptionsInt("-calibrate_max_it", "Optimizer (TAO): at most this many iterations (-calibrate_tao_max_it overrides it)", "HylcCalibrateSetMaxIterations", maxIt, &maxIt, NULL));
   PetscCall(HylcOptionsReal("-calibrate_lambda", "Optimizer (TAOBRGN): Levenberg-Marquardt damping relative to the diagonal of J^T J (-calibrate_tao_brgn_regularizer_weight overrides it)", "HylcCalibrateSetDamping", lambda, &lambda, NULL));
   PetscCall(HylcOptionsReal("-calibrate_xtol", "Stop when an iteration changes every log parameter by less than this (with TAO's own tests, -calibrate_tao_gatol ...)", "HylcCalibrateSetTolerances", xtol, &xtol, NULL));
   PetscCall(HylcOptionsReal("-calibrate_ftol", "Stop when an iteration decreases the objective by less than this fraction", "HylcCalibrateSetTolerances", ftol, &ftol, NULL));
   PetscCall(HylcOptionsReal("-calibrate_fatol", "Stop when the objective is below this", "HylcCalibrateSetTolerances", fatol, &fatol, NULL));
-  PetscCall(HylcOptionsReal("-calibrate_flat_tol", "A direction of the log parameters along which the normalised residuals change by less than this per unit (a singular value of the Jacobian) is flat: its parameter is held and reported", "HylcCalibrateSetTolerances", flatTol, &flatTol, NULL));
-  PetscCall(PetscOptionsEnum("-calibrate_reference", "Reference state: auto (compute it once with the initial parameters for a generated pattern; a .pyp file is its own), compute, none, or relax (only the in-plane minimum over the periods of the pattern as given)", "HylcCalibrateSetReference", HylcReferenceModes, rm, &rm, NULL));
+  PetscCall(HylcOptionsReal("-calibrate_flat_tol", "A direction of the log parameters along which the normalised residuals change by less than this per unit (a singular value of the Jacobian) is flat: its parameter is held and reported",
+                            "HylcCalibrateSetTolerances", flatTol, &flatTol, NULL));
+  PetscCall(PetscOptionsEnum("-calibrate_reference",
+                             "Reference state: auto (compute it once with the initial parameters for a generated pattern; a .pyp file is its own), compute, none, or relax (only the in-plane minimum over the periods of the pattern as given)",
+                             "HylcCalibrateSetReference", HylcReferenceModes, rm, &rm, NULL));
   PetscCall(PetscOptionsName("-calibrate_view", "Print the set-up at the end of HylcCalibrateSetUp()", "HylcCalibrateView", NULL));
   PetscOptionsEnd();
   PetscCall(HylcCalibrateSetPlanRanges(C, &ranges));

@@ -429,7 +429,8 @@ static PetscErrorCode HoldFlat(CalibTao *c, PetscBool *left)
     PetscCall(VecAssemblyEnd(c->XL));
     PetscCall(VecAssemblyBegin(c->XU));
     PetscCall(VecAssemblyEnd(c->XU));
-    PetscCall(PetscPrintf(PetscObjectComm((PetscObject)C), "[calibrate] %s is not determined by the data (singular value %.2e of the Jacobian < -calibrate_flat_tol %g): held at %g\n", HylcCalibrateParamNames[j], (double)PetscSqrtReal(PetscMax(ev[0], 0)), (double)C->flatTol, (double)PetscExpReal(c->xc[j])));
+    PetscCall(PetscPrintf(PetscObjectComm((PetscObject)C), "[calibrate] %s is not determined by the data (singular value %.2e of the Jacobian < -calibrate_flat_tol %g): held at %g\n", HylcCalibrateParamNames[j],
+                          (double)PetscSqrtReal(PetscMax(ev[0], 0)), (double)C->flatTol, (double)PetscExpReal(c->xc[j])));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -498,8 +499,7 @@ static PetscErrorCode WriteYAML(HylcCalibrate C)
   fprintf(fp, "# pattern: %s%s\n", C->patLabel, C->refComputed ? " (its reference state computed with the initial parameters, kept fixed)" : "");
   fprintf(fp, "# target: %s (%s), %d samples\n", C->target, HylcCalibTargetTypes[C->targetResolved], (int)C->m);
   fprintf(fp, "# objective: %.6e -> %.6e in %d iterations\n", (double)C->f0, (double)C->f1, (int)C->its);
-  for (int j = 0; j < HYLC_CALIBRATE_NPARAM; j++)
-    fprintf(fp, "# %-2s %-9s initial %.9g%s%s\n", HylcCalibrateParamNames[j], roles[C->role[j]], (double)C->p0[j], C->held[j] ? " HELD (not determined by the data)" : "", C->bound[j] ? " AT BOUND" : "");
+  for (int j = 0; j < HYLC_CALIBRATE_NPARAM; j++) fprintf(fp, "# %-2s %-9s initial %.9g%s%s\n", HylcCalibrateParamNames[j], roles[C->role[j]], (double)C->p0[j], C->held[j] ? " HELD (not determined by the data)" : "", C->bound[j] ? " AT BOUND" : "");
   fprintf(fp, "# use after the pattern's options: -options_file config/<p>.yaml -options_file %s\n", C->output);
   fprintf(fp, "yarn_E:  %.9g   # bending Young's modulus (Pa)\n", (double)C->p[0]);
   fprintf(fp, "yarn_Es: %.9g   # stretching modulus (Pa)\n", (double)C->p[1]);
@@ -521,7 +521,8 @@ static PetscErrorCode WriteDump(HylcCalibrate C)
   fprintf(fp, "index,term,sx,sa,sy,II00,II01,II11,target,initial,calibrated,status_initial,status_calibrated\n");
   for (PetscInt i = 0; i < C->m; i++) {
     const PetscReal *z = C->z + 6 * i;
-    fprintf(fp, "%d,%s,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%d\n", (int)i, HylcCalibrateTermName_Private(C->term[i]), z[0], z[1], z[2], z[3], z[4], z[5], (double)C->tpsi[i], (double)C->rec0[i * HYLC_CALIB_NRECORD], (double)C->rec1[i * HYLC_CALIB_NRECORD], (int)C->rec0[i * HYLC_CALIB_NRECORD + 5], (int)C->rec1[i * HYLC_CALIB_NRECORD + 5]);
+    fprintf(fp, "%d,%s,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%d\n", (int)i, HylcCalibrateTermName_Private(C->term[i]), z[0], z[1], z[2], z[3], z[4], z[5], (double)C->tpsi[i], (double)C->rec0[i * HYLC_CALIB_NRECORD],
+            (double)C->rec1[i * HYLC_CALIB_NRECORD], (int)C->rec0[i * HYLC_CALIB_NRECORD + 5], (int)C->rec1[i * HYLC_CALIB_NRECORD + 5]);
   }
   PetscCall(HylcFileCommitTemp(&fp, tmp, C->dump));
   PetscCall(PetscPrintf(PETSC_COMM_SELF, "[calibrate] wrote %s\n", C->dump));
@@ -582,14 +583,13 @@ PetscErrorCode HylcCalibrateSolve(HylcCalibrate C)
     for (int j = 0; j < NP; j++) {
       PetscCall(PetscStrlcat(line, j ? ", " : "", sizeof(line)));
       PetscCall(PetscStrlcat(line, HylcCalibrateParamNames[j], sizeof(line)));
-      PetscCall(PetscStrlcat(line, C->role[j] == HYLC_CALIBRATE_FREE ? " free" : C->role[j] == HYLC_CALIBRATE_TIED ? " tied to E"
-                                                                                                                   : " fixed",
-                             sizeof(line)));
+      PetscCall(PetscStrlcat(line, C->role[j] == HYLC_CALIBRATE_FREE ? " free" : C->role[j] == HYLC_CALIBRATE_TIED ? " tied to E" : " fixed", sizeof(line)));
     }
     PetscCall(PetscPrintf(comm, "[calibrate] %" PetscInt_FMT " samples (target %s, %s) on %d ranks; %s; TAO %s\n", m, C->target, HylcCalibTargetTypes[C->targetResolved], (int)C->size, line, ((PetscObject)tao)->type_name));
   }
   if (C->z[0] != 0 || C->z[1] != 0 || C->z[2] != 0 || C->z[3] != 0 || C->z[4] != 0 || C->z[5] != 0)
-    PetscCall(PetscPrintf(comm, "[calibrate] the target has no zero strain: base strain z_b = (%g, %g, %g, %g, %g, %g), the row nearest to it; dPsi = Psi(z) - Psi(z_b)\n", (double)C->z[0], (double)C->z[1], (double)C->z[2], (double)C->z[3], (double)C->z[4], (double)C->z[5]));
+    PetscCall(PetscPrintf(comm, "[calibrate] the target has no zero strain: base strain z_b = (%g, %g, %g, %g, %g, %g), the row nearest to it; dPsi = Psi(z) - Psi(z_b)\n", (double)C->z[0], (double)C->z[1], (double)C->z[2], (double)C->z[3],
+                          (double)C->z[4], (double)C->z[5]));
 
   /* TAO's problem: the log values of the free parameters within the log bounds (every rank the same) */
   PetscCall(VecCreateSeq(PETSC_COMM_SELF, c.na, &X));
@@ -621,7 +621,8 @@ PetscErrorCode HylcCalibrateSolve(HylcCalibrate C)
 
   /* the initial point: its evaluation (TAO's first, from the cache) and line */
   PetscCall(EvalAt(&c, X));
-  PetscCheck(c.f < PETSC_INFINITY, comm, PETSC_ERR_NOT_CONVERGED, "The base sample (strain %g %g %g %g %g %g) did not converge with the initial parameters; check -yarn_* and -micro_*", (double)C->z[0], (double)C->z[1], (double)C->z[2], (double)C->z[3], (double)C->z[4], (double)C->z[5]);
+  PetscCheck(c.f < PETSC_INFINITY, comm, PETSC_ERR_NOT_CONVERGED, "The base sample (strain %g %g %g %g %g %g) did not converge with the initial parameters; check -yarn_* and -micro_*", (double)C->z[0], (double)C->z[1], (double)C->z[2],
+             (double)C->z[3], (double)C->z[4], (double)C->z[5]);
   PetscCall(PetscArraycpy(C->rec0, c.rec, m * HYLC_CALIB_NRECORD));
   C->f0  = c.f;
   C->its = 0;
@@ -665,7 +666,8 @@ PetscErrorCode HylcCalibrateSolve(HylcCalibrate C)
       const PetscReal *o = c.rec + i * HYLC_CALIB_NRECORD, *z = C->z + 6 * i;
       if (o[5] == 0) continue;
       shown++;
-      PetscCall(PetscPrintf(comm, "  sample %" PetscInt_FMT " (%s) strain %g %g %g %g %g %g: %s after %d iterations\n", i, HylcCalibrateTermName_Private(C->term[i]), (double)z[0], (double)z[1], (double)z[2], (double)z[3], (double)z[4], (double)z[5], HylcMicroStatuses[(int)o[5]], (int)o[6]));
+      PetscCall(PetscPrintf(comm, "  sample %" PetscInt_FMT " (%s) strain %g %g %g %g %g %g: %s after %d iterations\n", i, HylcCalibrateTermName_Private(C->term[i]), (double)z[0], (double)z[1], (double)z[2], (double)z[3], (double)z[4], (double)z[5],
+                            HylcMicroStatuses[(int)o[5]], (int)o[6]));
     }
   }
   PetscCall(WriteYAML(C));

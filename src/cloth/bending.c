@@ -107,7 +107,8 @@ PetscErrorCode HylcClothRunCantilever_Private(HylcCloth c)
   if (c->face != HYLC_CLOTH_FACE_DOWN) faces[nface++] = 0;
   if (c->face != HYLC_CLOTH_FACE_UP) faces[nface++] = 1;
   if (!HylcClothTableCurl(c->hm, &k0, &k1, NULL)) {
-    PetscCall(PetscPrintf(comm, "the table's free curl (Psi minimal over II00, II11; in-plane strains 0): II00 %.4g 1/m, II11 %.4g 1/m (radii %.3g mm, %.3g mm; > 0 bends toward n)\n", k0, k1, k0 != 0 ? 1000 / PetscAbsReal(k0) : (double)INFINITY, k1 != 0 ? 1000 / PetscAbsReal(k1) : (double)INFINITY));
+    PetscCall(PetscPrintf(comm, "the table's free curl (Psi minimal over II00, II11; in-plane strains 0): II00 %.4g 1/m, II11 %.4g 1/m (radii %.3g mm, %.3g mm; > 0 bends toward n)\n", k0, k1, k0 != 0 ? 1000 / PetscAbsReal(k0) : (double)INFINITY,
+                          k1 != 0 ? 1000 / PetscAbsReal(k1) : (double)INFINITY));
     PetscCall(HylcClothResult_Private(c, "free_curl_II00", k0));
     PetscCall(HylcClothResult_Private(c, "free_curl_II11", k1));
   }
@@ -152,8 +153,10 @@ PetscErrorCode HylcClothRunCantilever_Private(HylcCloth c)
       cb  = lc / 2;
       G   = w * cb * cb * cb;
       rel = PetscIsNormalReal(lel) ? (cb - lel / 2) / (lel / 2) : NAN;
-      PetscCall(PetscPrintf(comm, "cantilever %s, face %s%s: overhang %.6g mm, bending length c %.6g mm, G = W c^3 %.6g uN m; elastica of the table's bending term: c %.6g mm (shell %+.3g %%); curvature along %.4g 1/m, across %.4g 1/m%s\n", dn, fn, down ? " (n = -z)" : " (n = +z)", (double)(1000 * lc), (double)(1000 * cb), (double)(1e6 * G), (double)(500 * lel), (double)(100 * rel), (double)curl[0], (double)curl[1], conv ? "" : " [secant not converged]"));
-      PetscCall(HylcClothTextAppend_Private(&csv, "%s,%s,%.10g,%.10g,%.10g,%.10g,%.6g,%.8g,%.8g,%" PetscInt_FMT "\n", dn, fn, (double)lc, (double)(1000 * cb), (double)(1e6 * G), (double)(500 * lel), (double)rel, (double)curl[0], (double)curl[1], c->newtonIts - its0));
+      PetscCall(PetscPrintf(comm, "cantilever %s, face %s%s: overhang %.6g mm, bending length c %.6g mm, G = W c^3 %.6g uN m; elastica of the table's bending term: c %.6g mm (shell %+.3g %%); curvature along %.4g 1/m, across %.4g 1/m%s\n", dn, fn,
+                            down ? " (n = -z)" : " (n = +z)", (double)(1000 * lc), (double)(1000 * cb), (double)(1e6 * G), (double)(500 * lel), (double)(100 * rel), (double)curl[0], (double)curl[1], conv ? "" : " [secant not converged]"));
+      PetscCall(HylcClothTextAppend_Private(&csv, "%s,%s,%.10g,%.10g,%.10g,%.10g,%.6g,%.8g,%.8g,%" PetscInt_FMT "\n", dn, fn, (double)lc, (double)(1000 * cb), (double)(1e6 * G), (double)(500 * lel), (double)rel, (double)curl[0], (double)curl[1],
+                                            c->newtonIts - its0));
       PetscCall(PetscSNPrintf(name, sizeof(name), "c_%s_%s", dn, fn));
       PetscCall(HylcClothResult_Private(c, name, cb));
       PetscCall(PetscSNPrintf(name, sizeof(name), "G_%s_%s", dn, fn));

@@ -564,7 +564,10 @@ PetscErrorCode HylcClothSetFromOptions(HylcCloth c)
   PetscObjectOptionsBegin((PetscObject)c);
   PetscCall(PetscOptionsString("-cloth_material", "Material table: JSON (ARCSim-HYLC layout, the paper's tables) or HDF5 (docs/material.md)", "HylcClothSetMaterialFile", c->materialFile, path, sizeof(path), &set));
   if (set) PetscCall(HylcClothSetMaterialFile(c, path));
-  PetscCall(PetscOptionsEnum("-cloth_test", "Virtual test: tensile (strip, ISO 13934-1), bias (45 deg extension), cantilever (ASTM D1388 A), drape (Cusick), scene (rectangle or .obj under gravity), uniaxial (the table's homogeneous uniaxial curve, no mesh), curl (free strip)", "HylcClothSetTest", HylcClothTests, test, &test, &set));
+  PetscCall(PetscOptionsEnum(
+      "-cloth_test",
+      "Virtual test: tensile (strip, ISO 13934-1), bias (45 deg extension), cantilever (ASTM D1388 A), drape (Cusick), scene (rectangle or .obj under gravity), uniaxial (the table's homogeneous uniaxial curve, no mesh), curl (free strip)",
+      "HylcClothSetTest", HylcClothTests, test, &test, &set));
   if (set) PetscCall(HylcClothSetTest(c, (HylcClothTest)test));
   PetscCall(PetscOptionsEnum("-cloth_face", "Fabric face up: up (n = +z), down (n = -z), both (the cantilever's default; other tests: up)", "HylcClothSetFace", HylcClothFaces, face, &face, &set));
   if (set) PetscCall(HylcClothSetFace(c, (HylcClothFace)face));
@@ -665,7 +668,8 @@ PetscErrorCode HylcClothSetUp(HylcCloth c)
   }
   c->hm   = c->material->hm;
   c->rhoA = hylcmat_density(c->hm);
-  PetscCheck(c->rhoA > 0 || c->test == HYLC_CLOTH_TEST_TENSILE || c->test == HYLC_CLOTH_TEST_BIAS || c->test == HYLC_CLOTH_TEST_UNIAXIAL || c->test == HYLC_CLOTH_TEST_CURL, comm, PETSC_ERR_USER_INPUT, "%s: the table's density is %g kg/m^2; the %s test needs its weight", c->materialFile[0] ? c->materialFile : "material", (double)c->rhoA, HylcClothTests[c->test]);
+  PetscCheck(c->rhoA > 0 || c->test == HYLC_CLOTH_TEST_TENSILE || c->test == HYLC_CLOTH_TEST_BIAS || c->test == HYLC_CLOTH_TEST_UNIAXIAL || c->test == HYLC_CLOTH_TEST_CURL, comm, PETSC_ERR_USER_INPUT,
+             "%s: the table's density is %g kg/m^2; the %s test needs its weight", c->materialFile[0] ? c->materialFile : "material", (double)c->rhoA, HylcClothTests[c->test]);
   /* the test's defaults */
   if (c->gravity < 0) c->gravity = (c->test == HYLC_CLOTH_TEST_TENSILE || c->test == HYLC_CLOTH_TEST_BIAS || c->test == HYLC_CLOTH_TEST_CURL) ? 0 : 9.81;
   c->g[0] = c->g[1] = 0;

@@ -226,11 +226,7 @@ static int Shoot(HylcClothMomentFn Mf, void *ctx, double w, double l, int n, dou
   for (int i = 0; i < n; i++) {
     double s = i * h, k[4][4], st[4] = {th, M, x, y};
     for (int q = 0; q < 4; q++) {
-      double ss = s + (q == 0 ? 0 : q == 3 ? h
-                                           : 0.5 * h),
-             a  = q == 0 ? 0 : q == 3 ? 1
-                                      : 0.5,
-             tq, Mq, kap = kg;
+      double ss = s + (q == 0 ? 0 : q == 3 ? h : 0.5 * h), a = q == 0 ? 0 : q == 3 ? 1 : 0.5, tq, Mq, kap = kg;
       tq = st[0] + (q ? a * h * k[q - 1][0] : 0);
       Mq = st[1] + (q ? a * h * k[q - 1][1] : 0);
       if ((rc = InverseMoment(Mf, ctx, Mq, &kap))) return rc;

@@ -93,8 +93,7 @@ PetscErrorCode HylcClothMeshStripN_Private(HylcCloth c, PetscReal x0, PetscReal 
       }
     else
       for (PetscInt i = -1; i <= nx; i++) {
-        c->X[3 * nv + 0]        = i < 0 ? x0 : i == nx ? x0 + L
-                                                       : x0 + (i + 0.5) * dx;
+        c->X[3 * nv + 0]        = i < 0 ? x0 : i == nx ? x0 + L : x0 + (i + 0.5) * dx;
         c->X[3 * nv + 1]        = j * hy;
         c->X[3 * nv + 2]        = 0;
         row[j * (nx + 2) + n++] = nv++;
@@ -442,7 +441,8 @@ PetscErrorCode HylcClothMeshMaterial_Private(HylcCloth c, PetscReal theta, Petsc
     for (int k = 0; k < 6; k++) c->uv[6 * t + k] = u[k];
     {
       PetscReal A = 0.5 * ((u[2] - u[0]) * (u[5] - u[1]) - (u[4] - u[0]) * (u[3] - u[1]));
-      PetscCheck(A > 0, PetscObjectComm((PetscObject)c), PETSC_ERR_USER_INPUT, "mesh: triangle %" PetscInt_FMT " (vertices %" PetscInt_FMT " %" PetscInt_FMT " %" PetscInt_FMT ") is %s in its material coordinates", t, v[0], v[1], v[2], A == 0 ? "degenerate" : "clockwise");
+      PetscCheck(A > 0, PetscObjectComm((PetscObject)c), PETSC_ERR_USER_INPUT, "mesh: triangle %" PetscInt_FMT " (vertices %" PetscInt_FMT " %" PetscInt_FMT " %" PetscInt_FMT ") is %s in its material coordinates", t, v[0], v[1], v[2],
+                 A == 0 ? "degenerate" : "clockwise");
     }
   }
   PetscCall(Areas(c));

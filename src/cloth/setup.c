@@ -54,7 +54,8 @@ PetscErrorCode HylcClothAddClamp_Private(HylcCloth c, PetscInt n, const PetscInt
   PetscFunctionBegin;
   PetscCheck(c->nclamp < HYLC_CLOTH_MAX_CLAMPS, PetscObjectComm((PetscObject)c), PETSC_ERR_SUP, "at most %d clamps", HYLC_CLOTH_MAX_CLAMPS);
   PetscCheck(n > 0, PetscObjectComm((PetscObject)c), PETSC_ERR_USER_INPUT, "clamp %" PetscInt_FMT ": no vertex of the mesh lies in it (outside the mesh)", c->nclamp);
-  for (PetscInt i = 0; i < n; i++) PetscCheck(v[i] >= 0 && v[i] < c->nv, PetscObjectComm((PetscObject)c), PETSC_ERR_USER_INPUT, "clamp %" PetscInt_FMT ": vertex %" PetscInt_FMT " is outside the mesh (%" PetscInt_FMT " vertices)", c->nclamp, v[i], c->nv);
+  for (PetscInt i = 0; i < n; i++)
+    PetscCheck(v[i] >= 0 && v[i] < c->nv, PetscObjectComm((PetscObject)c), PETSC_ERR_USER_INPUT, "clamp %" PetscInt_FMT ": vertex %" PetscInt_FMT " is outside the mesh (%" PetscInt_FMT " vertices)", c->nclamp, v[i], c->nv);
   k = &c->clamp[c->nclamp++];
   PetscCall(PetscMalloc1(n, &k->v));
   PetscCall(PetscArraycpy(k->v, v, n));

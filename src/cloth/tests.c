@@ -176,7 +176,8 @@ PetscErrorCode HylcClothRunTensile_Private(HylcCloth c)
         maxrel  = PetscMax(maxrel, rel);
         maxdlat = PetscMax(maxdlat, PetscAbsReal(lat[k] - lt));
       }
-      PetscCall(HylcClothTextAppend_Private(&csv, "%s,%s,%" PetscInt_FMT ",%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.6g,%" PetscInt_FMT "\n", dn[d], fn, k, (double)eps[k], (double)T[k], (double)zc[dm ? 2 : 0], (double)lat[k], (double)(-lat[k] / zc[dm ? 2 : 0]), (double)Tt, (double)lt, (double)rel, c->newtonIts - its0));
+      PetscCall(HylcClothTextAppend_Private(&csv, "%s,%s,%" PetscInt_FMT ",%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.6g,%" PetscInt_FMT "\n", dn[d], fn, k, (double)eps[k], (double)T[k], (double)zc[dm ? 2 : 0], (double)lat[k],
+                                            (double)(-lat[k] / zc[dm ? 2 : 0]), (double)Tt, (double)lt, (double)rel, c->newtonIts - its0));
       if (c->monitor) PetscCall(PetscPrintf(comm, "  strain %.4g: T %.6g N/m (table %.6g, %.3g %%), lateral %.6g (table %.6g)\n", (double)eps[k], (double)T[k], (double)Tt, (double)(100 * rel), (double)lat[k], (double)lt));
       PetscCall(PetscSNPrintf(name, sizeof(name), "tensile_%s_%04d.vtk", dn[d], (int)k));
       PetscCall(HylcClothOutputName_Private(c, name, path, sizeof(path)));
@@ -204,7 +205,8 @@ PetscErrorCode HylcClothRunTensile_Private(HylcCloth c)
       PetscCall(HylcClothResult_Private(c, r, maxdlat));
       {
         char b[4][48];
-        PetscCall(PetscPrintf(comm, "  T(5%%) %s, T(10%%) %s, dT/de(5%%) %s, Poisson(5%%) %s; central zone vs the table: T within %.3g %%, lateral strain within %.3g\n", Fig(b[0], Interp(ns + 1, eps, T, 0.05), "N/m"), Fig(b[1], Interp(ns + 1, eps, T, 0.10), "N/m"), Fig(b[2], Slope(ns + 1, eps, T, 0.05), "N/m"), Fig(b[3], Interp(m, eps, nu, 0.05), ""), (double)(100 * maxrel), (double)maxdlat));
+        PetscCall(PetscPrintf(comm, "  T(5%%) %s, T(10%%) %s, dT/de(5%%) %s, Poisson(5%%) %s; central zone vs the table: T within %.3g %%, lateral strain within %.3g\n", Fig(b[0], Interp(ns + 1, eps, T, 0.05), "N/m"),
+                              Fig(b[1], Interp(ns + 1, eps, T, 0.10), "N/m"), Fig(b[2], Slope(ns + 1, eps, T, 0.05), "N/m"), Fig(b[3], Interp(m, eps, nu, 0.05), ""), (double)(100 * maxrel), (double)maxdlat));
       }
     }
     PetscCall(PetscFree4(z, eps, T, lat));
@@ -259,7 +261,8 @@ PetscErrorCode HylcClothRunUniaxial_Private(HylcCloth c)
     PetscCall(HylcClothResult_Private(c, r, Interp(ns + 1, eps, lat, 0.05)));
     {
       char b[3][48];
-      PetscCall(PetscPrintf(comm, "uniaxial %s (table): T(5%%) %s, T(10%%) %s, Poisson(5%%) %s\n", d ? "y" : "x", Fig(b[0], Interp(ns + 1, eps, T, 0.05), "N/m"), Fig(b[1], Interp(ns + 1, eps, T, 0.10), "N/m"), Fig(b[2], Interp(ns + 1, eps, lat, 0.05), "")));
+      PetscCall(PetscPrintf(comm, "uniaxial %s (table): T(5%%) %s, T(10%%) %s, Poisson(5%%) %s\n", d ? "y" : "x", Fig(b[0], Interp(ns + 1, eps, T, 0.05), "N/m"), Fig(b[1], Interp(ns + 1, eps, T, 0.10), "N/m"),
+                            Fig(b[2], Interp(ns + 1, eps, lat, 0.05), "")));
     }
     PetscCall(PetscFree3(eps, T, lat));
   }
@@ -327,7 +330,8 @@ PetscErrorCode HylcClothRunBias_Private(HylcCloth c)
     F[k]   = Fr[0];
     gam[k] = PetscAsinReal(PetscMin(PetscAbsReal(zc[1]), 1.0)) * 180 / PETSC_PI;
     gk     = r < 1 ? 90 - 2 * PetscAcosReal(r) * 180 / PETSC_PI : (PetscReal)NAN; /* beyond: no pin-jointed state */
-    PetscCall(HylcClothTextAppend_Private(&csv, "%" PetscInt_FMT ",%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%" PetscInt_FMT "\n", k, (double)e, (double)(e * L), (double)F[k], (double)(F[k] / W), (double)gam[k], (double)gk, (double)zc[0], (double)zc[2], c->newtonIts - its0));
+    PetscCall(HylcClothTextAppend_Private(&csv, "%" PetscInt_FMT ",%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%" PetscInt_FMT "\n", k, (double)e, (double)(e * L), (double)F[k], (double)(F[k] / W), (double)gam[k], (double)gk, (double)zc[0],
+                                          (double)zc[2], c->newtonIts - its0));
     if (c->monitor) PetscCall(PetscPrintf(comm, "  strain %.4g: F %.6g N, shear angle %.4g deg (kinematic %.4g)\n", (double)e, (double)F[k], (double)gam[k], (double)gk));
     PetscCall(PetscSNPrintf(name, sizeof(name), "bias_%04d.vtk", (int)k));
     PetscCall(HylcClothOutputName_Private(c, name, path, sizeof(path)));
@@ -435,14 +439,16 @@ PetscErrorCode HylcClothRunDrape_Private(HylcCloth c)
   c->support[0].rho                   = PetscMin(c->rimRadius, 0.5 * Rd);
   c->support[0].z0                    = -0.5 * c->barrierDist;
   PetscCall(HylcClothPrepare_Private(c));
-  PetscCall(PetscPrintf(comm, "drape (static, face %s): specimen %g m on a %g m disc, %" PetscInt_FMT " vertices, %" PetscInt_FMT " triangles (h %g m)\n", c->face == HYLC_CLOTH_FACE_DOWN ? "down" : "up", (double)c->drapeD, (double)c->discD, c->nv, c->nt, (double)h));
+  PetscCall(PetscPrintf(comm, "drape (static, face %s): specimen %g m on a %g m disc, %" PetscInt_FMT " vertices, %" PetscInt_FMT " triangles (h %g m)\n", c->face == HYLC_CLOTH_FACE_DOWN ? "down" : "up", (double)c->drapeD, (double)c->discD, c->nv,
+                        c->nt, (double)h));
   PetscCall(HylcClothLoadPath_Private(c, 0, 1, c->loadSteps > 0 ? c->loadSteps : 8, &ok));
   PetscCheck(ok, comm, PETSC_ERR_NOT_CONVERGED, "drape: no static equilibrium under gravity (try more -cloth_load_steps)");
   PetscCall(DrapeShadow(c, nb, rmax, &area, &nodes));
   DC = (area - Ad) / (A0 - Ad);
   PetscCall(HylcClothResult_Private(c, "DC", DC));
   PetscCall(HylcClothResult_Private(c, "nodes", (PetscReal)nodes));
-  PetscCall(PetscPrintf(comm, "  drape coefficient %.4f (shadow %.6g m^2, specimen %.6g m^2, disc %.6g m^2), %" PetscInt_FMT " nodes; Newton iterations %" PetscInt_FMT " (%" PetscInt_FMT " exact, %" PetscInt_FMT " projected Hessians)\n", (double)DC, (double)area, (double)A0, (double)Ad, nodes, c->newtonIts, c->hessExact, c->hessProj));
+  PetscCall(PetscPrintf(comm, "  drape coefficient %.4f (shadow %.6g m^2, specimen %.6g m^2, disc %.6g m^2), %" PetscInt_FMT " nodes; Newton iterations %" PetscInt_FMT " (%" PetscInt_FMT " exact, %" PetscInt_FMT " projected Hessians)\n", (double)DC,
+                        (double)area, (double)A0, (double)Ad, nodes, c->newtonIts, c->hessExact, c->hessProj));
   PetscCall(HylcClothTextAppend_Private(&csv, "# drape coefficient %.8g, nodes %" PetscInt_FMT ", shadow %.8g m^2, specimen %.8g m^2, disc %.8g m^2\nsector_deg,r_m\n", (double)DC, nodes, (double)area, (double)A0, (double)Ad));
   for (PetscInt b = 0; b < nb; b++) PetscCall(HylcClothTextAppend_Private(&csv, "%.1f,%.10g\n", (double)(-180.0 + (b + 0.5) * 360.0 / nb), (double)rmax[b]));
   PetscCall(HylcClothOutputName_Private(c, "drape.vtk", path, sizeof(path)));
@@ -509,7 +515,8 @@ PetscErrorCode HylcClothRunScene_Private(HylcCloth c)
     PetscCall(HylcClothAddClamp_Private(c, c->ncorners, pins, NULL, PETSC_FALSE));
   }
   PetscCall(HylcClothPrepare_Private(c));
-  PetscCall(PetscPrintf(comm, "scene: %s, %" PetscInt_FMT " vertices, %" PetscInt_FMT " triangles; clamp %g m, %" PetscInt_FMT " pinned corners, gravity %g m/s^2\n", c->meshFile[0] ? c->meshFile : "rectangle", c->nv, c->nt, (double)c->sceneClamp, c->ncorners, (double)c->gravity));
+  PetscCall(PetscPrintf(comm, "scene: %s, %" PetscInt_FMT " vertices, %" PetscInt_FMT " triangles; clamp %g m, %" PetscInt_FMT " pinned corners, gravity %g m/s^2\n", c->meshFile[0] ? c->meshFile : "rectangle", c->nv, c->nt, (double)c->sceneClamp,
+                        c->ncorners, (double)c->gravity));
   PetscCall(HylcClothLoadPath_Private(c, 0, 1, c->loadSteps > 0 ? c->loadSteps : 8, &ok));
   PetscCheck(ok, comm, PETSC_ERR_NOT_CONVERGED, "scene: no static equilibrium under gravity (try more -cloth_load_steps)");
   PetscCall(HylcClothGather_Private(c, c->x));
@@ -522,7 +529,8 @@ PetscErrorCode HylcClothRunScene_Private(HylcCloth c)
   }
   PetscCall(HylcClothResult_Private(c, "zmin", zmin));
   PetscCall(HylcClothResult_Private(c, "max_displacement", dmax));
-  PetscCall(PetscPrintf(comm, "  lowest z %.6g m, largest displacement %.6g m; Newton iterations %" PetscInt_FMT " (%" PetscInt_FMT " exact, %" PetscInt_FMT " projected Hessians)\n", (double)zmin, (double)dmax, c->newtonIts, c->hessExact, c->hessProj));
+  PetscCall(
+      PetscPrintf(comm, "  lowest z %.6g m, largest displacement %.6g m; Newton iterations %" PetscInt_FMT " (%" PetscInt_FMT " exact, %" PetscInt_FMT " projected Hessians)\n", (double)zmin, (double)dmax, c->newtonIts, c->hessExact, c->hessProj));
   PetscCall(HylcClothOutputName_Private(c, "scene.vtk", path, sizeof(path)));
   PetscCall(HylcClothWriteVTK_Private(c, path));
   PetscCall(HylcClothOutputName_Private(c, "scene.csv", path, sizeof(path)));

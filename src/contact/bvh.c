@@ -110,15 +110,9 @@ static inline void SegmentBox(const double *x, const int *edges, int i, double m
   }
 }
 
-static inline int BoxOverlap(const double *a, const double *b)
-{
-  return a[0] <= b[3] && b[0] <= a[3] && a[1] <= b[4] && b[1] <= a[4] && a[2] <= b[5] && b[2] <= a[5];
-}
+static inline int BoxOverlap(const double *a, const double *b) { return a[0] <= b[3] && b[0] <= a[3] && a[1] <= b[4] && b[1] <= a[4] && a[2] <= b[5] && b[2] <= a[5]; }
 
-static inline int NodeOverlap(const BVHNode *a, const BVHNode *b)
-{
-  return a->lo[0] <= b->hi[0] && b->lo[0] <= a->hi[0] && a->lo[1] <= b->hi[1] && b->lo[1] <= a->hi[1] && a->lo[2] <= b->hi[2] && b->lo[2] <= a->hi[2];
-}
+static inline int NodeOverlap(const BVHNode *a, const BVHNode *b) { return a->lo[0] <= b->hi[0] && b->lo[0] <= a->hi[0] && a->lo[1] <= b->hi[1] && b->lo[1] <= a->hi[1] && a->lo[2] <= b->hi[2] && b->lo[2] <= a->hi[2]; }
 
 static void NodeBoxFromSegments(HylcBVH bvh, BVHNode *nd)
 {

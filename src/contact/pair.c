@@ -96,10 +96,7 @@ static inline void SymAxpy(double a, const double S[6], double T[6])
 /* H[block (I,J)] += alpha * S (3x3 symmetric), and the transposed block (J,I) when I != J. */
 static inline void AddBlockSym(double H[144], int I, int J, double alpha, const double S[6])
 {
-  const double M[3][3] = {
-      {S[0], S[3], S[4]},
-      {S[3], S[1], S[5]},
-      {S[4], S[5], S[2]}};
+  const double M[3][3] = {{S[0], S[3], S[4]}, {S[3], S[1], S[5]}, {S[4], S[5], S[2]}};
   for (int i = 0; i < 3; i++)
     for (int j = 0; j < 3; j++) {
       H[(3 * I + i) * 12 + 3 * J + j] += alpha * M[i][j];
@@ -283,9 +280,7 @@ double HylcContactClosestPoint(const double a0[3], const double a1[3], const dou
       }
     }
     const double aa = HylcDot3(ea, ea), bb = HylcDot3(eb, eb), ab = HylcDot3(ea, eb);
-    double       Ginv[2][2] = {
-              {0, 0},
-              {0, 0}};
+    double       Ginv[2][2] = {{0, 0}, {0, 0}};
     if (nu == 1) {
       Ginv[0][0] = 1.0 / (which[0] == 0 ? aa : bb);
     } else if (nu == 2) {

@@ -13,12 +13,7 @@ const char *const HylcFitFamilies[] = {"woven", "knit", "stockinette", "HylcFitF
 static const struct {
   const char   *name;
   HylcFitFamily family;
-} FamilyNames[] = {
-    {"woven", HYLC_FIT_FAMILY_WOVEN},
-    {"stockinette", HYLC_FIT_FAMILY_STOCKINETTE},
-    {"honeycomb", HYLC_FIT_FAMILY_KNIT},
-    {"rib", HYLC_FIT_FAMILY_KNIT},
-    {"knit", HYLC_FIT_FAMILY_KNIT}};
+} FamilyNames[] = {{"woven", HYLC_FIT_FAMILY_WOVEN}, {"stockinette", HYLC_FIT_FAMILY_STOCKINETTE}, {"honeycomb", HYLC_FIT_FAMILY_KNIT}, {"rib", HYLC_FIT_FAMILY_KNIT}, {"knit", HYLC_FIT_FAMILY_KNIT}};
 
 static PetscBool FamilyByName(const char name[], HylcFitFamily *family)
 {
@@ -404,7 +399,10 @@ PetscErrorCode HylcFitSetFromOptions(HylcFit fit)
   /* the family: given, else the one the samples were computed for (their provenance) */
   if (input[0]) PetscCall(HylcFitInputFamily_Private(input, recorded, sizeof(recorded), &fromFile));
   PetscCall(PetscStrncpy(family, fromFile ? recorded : fit->familyName, sizeof(family)));
-  PetscCall(PetscOptionsString("-fit_family", "Pattern family, as -sampler_family: woven, stockinette, honeycomb or rib (knit: the former name of honeycomb and rib); default the samples file's (its provenance), else woven. All but the stockinette share the constants; stockinette: -fit_reg 1e-2 and coarse 2D bending knots (factor 0.3, 2+4 and 3+3)", "HylcFitSetFamily", family, family, sizeof(family), &set));
+  PetscCall(PetscOptionsString("-fit_family",
+                               "Pattern family, as -sampler_family: woven, stockinette, honeycomb or rib (knit: the former name of honeycomb and rib); default the samples file's (its provenance), else woven. All but the stockinette share the "
+                               "constants; stockinette: -fit_reg 1e-2 and coarse 2D bending knots (factor 0.3, 2+4 and 3+3)",
+                               "HylcFitSetFamily", family, family, sizeof(family), &set));
   if (set || fromFile) {
     known = FamilyByName(family, &fam);
     if (known) {
@@ -432,11 +430,14 @@ PetscErrorCode HylcFitSetFromOptions(HylcFit fit)
   PetscCall(HylcOptionsReal("-fit_fd_eps", "Width of the central differences for the Hermite slopes (points at +-half of it), as a fraction of the smallest knot spacing", "HylcFitSetFromOptions", fit->fdEps, &fit->fdEps, NULL));
   {
     PetscEnum layout = (PetscEnum)fit->knots;
-    PetscCall(PetscOptionsEnum("-fit_knots", "1D knot layout: refined (the paper's, with -fit_knots_refine more knots towards 0 whose MLS kernels follow the knot spacing: resolves small strains) or paper (the authors' uniform layout; implied by -fit_compat authors)", "HylcFitSetFromOptions", HylcFitKnotLayouts, layout, &layout, &fit->knotsSet));
+    PetscCall(PetscOptionsEnum(
+        "-fit_knots", "1D knot layout: refined (the paper's, with -fit_knots_refine more knots towards 0 whose MLS kernels follow the knot spacing: resolves small strains) or paper (the authors' uniform layout; implied by -fit_compat authors)",
+        "HylcFitSetFromOptions", HylcFitKnotLayouts, layout, &layout, &fit->knotsSet));
     fit->knots = (HylcFitKnotLayout)layout;
   }
   PetscCall(PetscOptionsInt("-fit_knots_refine", "Refined knots: knots added at h/2, h/4, ... of the first interval on each side of 0", "HylcFitSetFromOptions", fit->refine, &fit->refine, NULL));
-  PetscCall(HylcOptionsReal("-fit_knots_kernel_spacing", "Refined knots: MLS kernel radius of an added knot as a multiple of its distance from 0 (at most -fit_mls_kernel of the span)", "HylcFitSetFromOptions", fit->kernelSpacing, &fit->kernelSpacing, NULL));
+  PetscCall(HylcOptionsReal("-fit_knots_kernel_spacing", "Refined knots: MLS kernel radius of an added knot as a multiple of its distance from 0 (at most -fit_mls_kernel of the span)", "HylcFitSetFromOptions", fit->kernelSpacing, &fit->kernelSpacing,
+                            NULL));
   PetscCall(PetscOptionsInt("-fit_knots_kernel_samples", "Refined knots: the MLS kernel of an added knot is widened until it holds this many samples", "HylcFitSetFromOptions", fit->kernelMin, &fit->kernelMin, NULL));
   PetscCall(PetscOptionsInt("-fit_knots1d", "Knots of a 1D term in the paper's layout (refined: before the refinement)", "HylcFitSetFromOptions", fit->nk1, &fit->nk1, NULL));
   PetscCall(HylcOptionsReal("-fit_knots1d_factor", "1D knots span factor x [min, max] of the data (then shifted so that 0 is a knot)", "HylcFitSetFromOptions", fit->factor1, &fit->factor1, NULL));
@@ -450,16 +451,19 @@ PetscErrorCode HylcFitSetFromOptions(HylcFit fit)
   PetscCall(PetscOptionsBool("-fit_zero_compression", "Zero the 2D residuals where sx or sy < 0 (not (sx, sy))", "HylcFitSetFromOptions", fit->zeroCompression, &fit->zeroCompression, NULL));
   PetscCall(PetscOptionsBool("-fit_zero_compression_strict", "Also zero muv on the axis bordering the compressed nodes, so the residual vanishes on the whole compressed half-plane", "HylcFitSetFromOptions", fit->zeroStrict, &fit->zeroStrict, NULL));
   PetscCall(HylcOptionsReal("-fit_density", "Area density of the material in kg/m^2 (> 0 overrides the input's)", "HylcFitSetFromOptions", fit->density, &fit->density, NULL));
-  PetscCall(HylcOptionsReal("-fit_yarn_density", "Yarn density in kg/m^3 for the area density rho pi r^2 L / (px py) of a samples file (<= 0: 0.12 kg/m^2 / r, i.e. 120 kg/m^3 at r = 1 mm, the paper's tables)", "HylcFitSetFromOptions", fit->yarnDensity, &fit->yarnDensity, NULL));
+  PetscCall(HylcOptionsReal("-fit_yarn_density", "Yarn density in kg/m^3 for the area density rho pi r^2 L / (px py) of a samples file (<= 0: 0.12 kg/m^2 / r, i.e. 120 kg/m^3 at r = 1 mm, the paper's tables)", "HylcFitSetFromOptions",
+                            fit->yarnDensity, &fit->yarnDensity, NULL));
   PetscCall(PetscOptionsInt("-fit_raw_n1", "Raw data.txt: rows per 1D block (0: the leading run of sx-only rows)", "HylcFitSetFromOptions", fit->rawN1, &fit->rawN1, NULL));
   PetscCall(PetscOptionsInt("-fit_raw_n2", "Raw data.txt: grid size per axis of a 2D block (0: from the row count)", "HylcFitSetFromOptions", fit->rawN2, &fit->rawN2, NULL));
   PetscCall(PetscOptionsInt("-fit_min_samples_1d", "A 1D term with fewer samples (but some) is an error", "HylcFitSetFromOptions", fit->min1, &fit->min1, NULL));
   PetscCall(PetscOptionsInt("-fit_min_samples_2d", "A 2D term with fewer samples (but some) is an error", "HylcFitSetFromOptions", fit->min2, &fit->min2, NULL));
   PetscCall(PetscOptionsString("-fit_terms", "Terms to fit: all, or a comma list of sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11", "HylcFitSetFromOptions", terms, terms, sizeof(terms), NULL));
   PetscOptionsEnd();
-  PetscCheck(known, comm, set ? PETSC_ERR_USER_INPUT : PETSC_ERR_FILE_UNEXPECTED, "%s %s: unknown family (woven, stockinette, honeycomb or rib; knit is the former name of honeycomb and rib)", set ? "-fit_family" : "the samples' -sampler_family", family);
+  PetscCheck(known, comm, set ? PETSC_ERR_USER_INPUT : PETSC_ERR_FILE_UNEXPECTED, "%s %s: unknown family (woven, stockinette, honeycomb or rib; knit is the former name of honeycomb and rib)", set ? "-fit_family" : "the samples' -sampler_family",
+             family);
   fit->compat = (HylcFitCompat)compat;
-  PetscCheck(!(fit->compat == HYLC_FIT_COMPAT_AUTHORS && fit->knotsSet && fit->knots != HYLC_FIT_KNOTS_PAPER), comm, PETSC_ERR_USER_INPUT, "-fit_compat authors reproduces the authors' fits, whose knots are the paper's layout: drop -fit_knots %s", HylcFitKnotLayouts[fit->knots]);
+  PetscCheck(!(fit->compat == HYLC_FIT_COMPAT_AUTHORS && fit->knotsSet && fit->knots != HYLC_FIT_KNOTS_PAPER), comm, PETSC_ERR_USER_INPUT, "-fit_compat authors reproduces the authors' fits, whose knots are the paper's layout: drop -fit_knots %s",
+             HylcFitKnotLayouts[fit->knots]);
   if (fit->compat == HYLC_FIT_COMPAT_AUTHORS) fit->knots = HYLC_FIT_KNOTS_PAPER;
   PetscCheck(fit->refine >= 0 && fit->refine <= 20, comm, PETSC_ERR_USER_INPUT, "-fit_knots_refine %" PetscInt_FMT " must be in 0..20", fit->refine);
   PetscCheck(fit->kernelSpacing > 0 && fit->kernelMin >= 3, comm, PETSC_ERR_USER_INPUT, "-fit_knots_kernel_spacing must be > 0 and -fit_knots_kernel_samples >= 3");
@@ -567,8 +571,8 @@ PetscErrorCode HylcFitSetUp(HylcFit fit)
     PetscBool finite = PetscIsInfOrNanReal(fit->psi[k]) ? PETSC_FALSE : PETSC_TRUE;
     for (int i = 0; i < 6; i++)
       if (PetscIsInfOrNanReal(fit->z[6 * k + i])) finite = PETSC_FALSE;
-    PetscCheck(finite, comm, PETSC_ERR_USER_INPUT, "%s: row %" PetscInt_FMT " (term %s) has a non-finite strain or energy: (%g, %g, %g, %g, %g, %g) psi %g", fit->source, fit->row[k], HylcPlanTermName((int)fit->term[k]), (double)fit->z[6 * k], (double)fit->z[6 * k + 1], (double)fit->z[6 * k + 2], (double)fit->z[6 * k + 3], (double)fit->z[6 * k + 4],
-               (double)fit->z[6 * k + 5], (double)fit->psi[k]);
+    PetscCheck(finite, comm, PETSC_ERR_USER_INPUT, "%s: row %" PetscInt_FMT " (term %s) has a non-finite strain or energy: (%g, %g, %g, %g, %g, %g) psi %g", fit->source, fit->row[k], HylcPlanTermName((int)fit->term[k]), (double)fit->z[6 * k],
+               (double)fit->z[6 * k + 1], (double)fit->z[6 * k + 2], (double)fit->z[6 * k + 3], (double)fit->z[6 * k + 4], (double)fit->z[6 * k + 5], (double)fit->psi[k]);
   }
   PetscCheck(fit->n > 0, comm, PETSC_ERR_USER_INPUT, "%s: no usable samples (%" PetscInt_FMT " rows, %" PetscInt_FMT " not converged)", fit->source, fit->nrows, fit->nskipped);
   /* the area density */
@@ -861,13 +865,18 @@ PetscErrorCode HylcFitView(HylcFit fit, PetscViewer viewer)
   PetscCall(PetscViewerASCIIPushTab(viewer));
   PetscCall(Line(viewer, "input: %s\n", fit->source[0] ? fit->source : (fit->input[0] ? fit->input : "(none)")));
   PetscCall(Line(viewer, "family: %s (%s)\n", fit->familyName, fit->familySource[0] ? fit->familySource : "the default"));
-  PetscCall(Line(viewer, "reg %g%s, compat %s, MLS kernel %g of the span (sigma = kernel/%g), FD width %g of the knot spacing\n", (double)fit->reg, fit->quasiconvex ? "" : " (marching off)", HylcFitCompats[fit->compat], (double)fit->kernel, (double)fit->truncation, (double)fit->fdEps));
+  PetscCall(Line(viewer, "reg %g%s, compat %s, MLS kernel %g of the span (sigma = kernel/%g), FD width %g of the knot spacing\n", (double)fit->reg, fit->quasiconvex ? "" : " (marching off)", HylcFitCompats[fit->compat], (double)fit->kernel,
+                 (double)fit->truncation, (double)fit->fdEps));
   if (fit->knots == HYLC_FIT_KNOTS_REFINED)
-    PetscCall(Line(viewer, "1D knots: the paper's, refined towards 0 by %" PetscInt_FMT " more on each side (h/2 ... h/%d), their MLS kernels %g x the distance from 0, at least %" PetscInt_FMT " samples, at most the paper's\n", fit->refine, 1 << (int)fit->refine, (double)fit->kernelSpacing, fit->kernelMin));
+    PetscCall(Line(viewer, "1D knots: the paper's, refined towards 0 by %" PetscInt_FMT " more on each side (h/2 ... h/%d), their MLS kernels %g x the distance from 0, at least %" PetscInt_FMT " samples, at most the paper's\n", fit->refine,
+                   1 << (int)fit->refine, (double)fit->kernelSpacing, fit->kernelMin));
   else
     PetscCall(Line(viewer, "1D knots: the paper's uniform layout\n"));
-  PetscCall(Line(viewer, "knots: 1D %" PetscInt_FMT " x %g; 2D factor %g (bending pairs %g), stretch %" PetscInt_FMT "+%" PetscInt_FMT ", poisson %" PetscInt_FMT "+%" PetscInt_FMT ", symmetric %" PetscInt_FMT "+%" PetscInt_FMT ", bending pairs %" PetscInt_FMT "+%" PetscInt_FMT " / %" PetscInt_FMT "+%" PetscInt_FMT "\n", fit->nk1, (double)fit->factor1, (double)fit->factor2,
-                 (double)fit->factor2bend, fit->kStretch[0], fit->kStretch[1], fit->kPoisson[0], fit->kPoisson[1], fit->kSym[0], fit->kSym[1], fit->kBendStretch[0], fit->kBendStretch[1], fit->kBendSym[0], fit->kBendSym[1]));
+  PetscCall(Line(viewer,
+                 "knots: 1D %" PetscInt_FMT " x %g; 2D factor %g (bending pairs %g), stretch %" PetscInt_FMT "+%" PetscInt_FMT ", poisson %" PetscInt_FMT "+%" PetscInt_FMT ", symmetric %" PetscInt_FMT "+%" PetscInt_FMT
+                 ", bending pairs %" PetscInt_FMT "+%" PetscInt_FMT " / %" PetscInt_FMT "+%" PetscInt_FMT "\n",
+                 fit->nk1, (double)fit->factor1, (double)fit->factor2, (double)fit->factor2bend, fit->kStretch[0], fit->kStretch[1], fit->kPoisson[0], fit->kPoisson[1], fit->kSym[0], fit->kSym[1], fit->kBendStretch[0], fit->kBendStretch[1],
+                 fit->kBendSym[0], fit->kBendSym[1]));
   if (fit->setupcalled) {
     PetscCall(Line(viewer, "samples: %" PetscInt_FMT " used of %" PetscInt_FMT " rows (%" PetscInt_FMT " not converged)\n", fit->n, fit->nrows, fit->nskipped));
     PetscCall(Line(viewer, "area density: %.6g kg/m^2 (%s)\n", (double)fit->rhoA, fit->rhoSource));
@@ -890,9 +899,11 @@ PetscErrorCode HylcFitView(HylcFit fit, PetscViewer viewer)
         int ci, cj;
         HylcPlanPair(t, &ci, &cj);
         PetscCall(Fmt(knots, sizeof(knots), "%" PetscInt_FMT "x%" PetscInt_FMT " knots", fit->s2[t - 6].nu, fit->s2[t - 6].nv));
-        PetscCall(Fmt(range, sizeof(range), "%s in [%.4g, %.4g], %s in [%.4g, %.4g]", HylcPlanTermName(1 + ci), (double)fit->statMin[t][0], (double)fit->statMax[t][0], HylcPlanTermName(1 + cj), (double)fit->statMin[t][1], (double)fit->statMax[t][1]));
+        PetscCall(
+            Fmt(range, sizeof(range), "%s in [%.4g, %.4g], %s in [%.4g, %.4g]", HylcPlanTermName(1 + ci), (double)fit->statMin[t][0], (double)fit->statMax[t][0], HylcPlanTermName(1 + cj), (double)fit->statMin[t][1], (double)fit->statMax[t][1]));
       }
-      PetscCall(Line(viewer, "%-8s %-11s %5" PetscInt_FMT " samples, %s; RMS residual %.3g J/m^2 (%.3g%% of max |psi - f0| %.3g)\n", HylcPlanTermName(t), knots, fit->statN[t], range, (double)fit->statRms[t], fit->statRange[t] > 0 ? (double)(100 * fit->statRms[t] / fit->statRange[t]) : 0.0, (double)fit->statRange[t]));
+      PetscCall(Line(viewer, "%-8s %-11s %5" PetscInt_FMT " samples, %s; RMS residual %.3g J/m^2 (%.3g%% of max |psi - f0| %.3g)\n", HylcPlanTermName(t), knots, fit->statN[t], range, (double)fit->statRms[t],
+                     fit->statRange[t] > 0 ? (double)(100 * fit->statRms[t] / fit->statRange[t]) : 0.0, (double)fit->statRange[t]));
       {
         char bands[3][48];
         for (int b = 0; b < HYLC_FIT_NBAND; b++) {

@@ -170,7 +170,8 @@ static PetscErrorCode ReadSamplesHDF5(HylcFit fit, const char path[])
   if (fit->radius > 0 && fit->restLength > 0 && fit->px > 0 && fit->py > 0) {
     const PetscReal rho = fit->yarnDensity > 0 ? fit->yarnDensity : HylcDefaultYarnDensity(fit->radius);
     fit->rhoA           = rho * PETSC_PI * fit->radius * fit->radius * fit->restLength / (fit->px * fit->py);
-    snprintf(fit->rhoSource, sizeof(fit->rhoSource), "yarn density %g kg/m^3%s x pi r^2 L / (px py) with r = %g m, L = %g m, px py = %g m^2 of %s/reference", (double)rho, fit->yarnDensity > 0 ? " (-fit_yarn_density)" : " (0.12 kg/m^2 / r)", (double)fit->radius, (double)fit->restLength, (double)(fit->px * fit->py), path);
+    snprintf(fit->rhoSource, sizeof(fit->rhoSource), "yarn density %g kg/m^3%s x pi r^2 L / (px py) with r = %g m, L = %g m, px py = %g m^2 of %s/reference", (double)rho, fit->yarnDensity > 0 ? " (-fit_yarn_density)" : " (0.12 kg/m^2 / r)",
+             (double)fit->radius, (double)fit->restLength, (double)(fit->px * fit->py), path);
   } else {
     fit->rhoA = -1;
     PetscCall(PetscSNPrintf(fit->rhoSource, sizeof(fit->rhoSource), "%s has no /reference pattern", path));
@@ -263,7 +264,9 @@ static PetscErrorCode ReadRaw(HylcFit fit, const char data[], const char info[])
     ok = (PetscBool)(a1 > 0 && a2 >= 0 && a2 * a2 <= N && 5 * a1 + 9 * a2 * a2 == N);
     if (!ok) {
       PetscCall(PetscFree3(z, psi, lines));
-      SETERRQ(comm, PETSC_ERR_USER_INPUT, "%s: %" PetscInt_FMT " rows do not make 5 1D blocks of n1 = %" PetscInt64_FMT " rows and 9 2D blocks of n2 x n2 = %" PetscInt64_FMT " x %" PetscInt64_FMT " rows (formats.md §5: 5 n1 + 9 n2^2 rows); give -fit_raw_n1 and -fit_raw_n2", data, n, (PetscInt64)a1, (PetscInt64)a2, (PetscInt64)a2);
+      SETERRQ(comm, PETSC_ERR_USER_INPUT,
+              "%s: %" PetscInt_FMT " rows do not make 5 1D blocks of n1 = %" PetscInt64_FMT " rows and 9 2D blocks of n2 x n2 = %" PetscInt64_FMT " x %" PetscInt64_FMT " rows (formats.md §5: 5 n1 + 9 n2^2 rows); give -fit_raw_n1 and -fit_raw_n2",
+              data, n, (PetscInt64)a1, (PetscInt64)a2, (PetscInt64)a2);
     }
     n1 = (PetscInt)a1;
     n2 = (PetscInt)a2;
@@ -287,7 +290,8 @@ static PetscErrorCode ReadRaw(HylcFit fit, const char data[], const char info[])
       if (v != 0 && !PetscIsInfOrNanReal(v)) {
         const PetscInt ln = lines[k];
         PetscCall(PetscFree3(z, psi, lines));
-        SETERRQ(comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": the row belongs to term %s by row order (n1 = %" PetscInt_FMT ", n2 = %" PetscInt_FMT ") but its %s is %g, not 0; give -fit_raw_n1 and -fit_raw_n2", data, ln, HylcPlanTermName((int)t), n1, n2, HylcPlanTermName(1 + cc), (double)v);
+        SETERRQ(comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": the row belongs to term %s by row order (n1 = %" PetscInt_FMT ", n2 = %" PetscInt_FMT ") but its %s is %g, not 0; give -fit_raw_n1 and -fit_raw_n2", data, ln,
+                HylcPlanTermName((int)t), n1, n2, HylcPlanTermName(1 + cc), (double)v);
       }
     }
     for (int i = 0; i < 6; i++) fit->z[6 * k + i] = z[6 * k + i];

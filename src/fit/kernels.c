@@ -3,10 +3,8 @@
 #include <hylc/fit.h>
 #include <math.h>
 
-PetscReal HylcSymlog(PetscReal x) { return x > 0 ? log1p(x) : x < 0 ? -log1p(-x)
-                                                                    : 0; }
-PetscReal HylcSymexp(PetscReal y) { return y > 0 ? expm1(y) : y < 0 ? -expm1(-y)
-                                                                    : 0; }
+PetscReal HylcSymlog(PetscReal x) { return x > 0 ? log1p(x) : x < 0 ? -log1p(-x) : 0; }
+PetscReal HylcSymexp(PetscReal y) { return y > 0 ? expm1(y) : y < 0 ? -expm1(-y) : 0; }
 
 /* Solves the n x n system A x = b (row-major, n <= 8) by Gaussian elimination with partial pivoting, in
    place (b becomes x). Returns -1 when a pivot is below 1e-13 of the largest entry of A. */

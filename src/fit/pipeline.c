@@ -12,10 +12,7 @@ typedef struct {
   PetscReal        growMax;  /* the largest kernel factor used */
 } GFun;
 
-static int GMls(const GFun *g, PetscReal x, PetscReal y, PetscReal *val)
-{
-  return g->dim == 1 ? HylcMLS1D(g->n, g->u, g->l, g->ku, g->truncation, x, val) : HylcMLS2D(g->n, g->u, g->v, g->l, g->ku, g->kv, g->truncation, x, y, val);
-}
+static int GMls(const GFun *g, PetscReal x, PetscReal y, PetscReal *val) { return g->dim == 1 ? HylcMLS1D(g->n, g->u, g->l, g->ku, g->truncation, x, val) : HylcMLS2D(g->n, g->u, g->v, g->l, g->ku, g->kv, g->truncation, x, y, val); }
 
 /* g(x, y) with the kernel radii scaled by f; returns -1 when the MLS system at (x, y) (or its mirror)
    is singular */
@@ -57,10 +54,13 @@ static PetscErrorCode G(HylcFit fit, GFun *g, int t, PetscReal x, PetscReal y, P
     for (PetscInt i = 0; i < g->n; i++)
       if (PetscAbsReal(g->u[i] - x) < g->ku && (g->dim == 1 || PetscAbsReal(g->v[i] - y) < g->kv)) cnt++;
     if (g->dim == 1)
-      SETERRQ(PetscObjectComm((PetscObject)fit), PETSC_ERR_USER_INPUT, "%s: term %s: the MLS at x = %g (normalised) is singular: %" PetscInt_FMT " samples within the kernel radius %g (the quadratic basis needs 3 distinct ones)%s; the term's %" PetscInt_FMT " samples are too sparse for -fit_mls_kernel %g", fit->source, HylcPlanTermName(t), (double)x, cnt, (double)g->ku,
-              fit->mlsGrow > 1 ? ", also with the kernel enlarged to the whole range" : " (-fit_mls_grow 1.5 would enlarge it)", g->n, (double)fit->kernel);
-    SETERRQ(PetscObjectComm((PetscObject)fit), PETSC_ERR_USER_INPUT, "%s: term %s: the MLS at (u, v) = (%g, %g) (normalised) is singular: %" PetscInt_FMT " samples within the kernel box %g x %g (the basis needs 8 in general position)%s; the term's %" PetscInt_FMT " samples are too sparse for -fit_mls_kernel %g", fit->source, HylcPlanTermName(t), (double)x, (double)y, cnt, (double)g->ku, (double)g->kv,
-            fit->mlsGrow > 1 ? ", also with the kernel enlarged to the whole range" : " (-fit_mls_grow 1.5 would enlarge it)", g->n, (double)fit->kernel);
+      SETERRQ(PetscObjectComm((PetscObject)fit), PETSC_ERR_USER_INPUT,
+              "%s: term %s: the MLS at x = %g (normalised) is singular: %" PetscInt_FMT " samples within the kernel radius %g (the quadratic basis needs 3 distinct ones)%s; the term's %" PetscInt_FMT " samples are too sparse for -fit_mls_kernel %g",
+              fit->source, HylcPlanTermName(t), (double)x, cnt, (double)g->ku, fit->mlsGrow > 1 ? ", also with the kernel enlarged to the whole range" : " (-fit_mls_grow 1.5 would enlarge it)", g->n, (double)fit->kernel);
+    SETERRQ(PetscObjectComm((PetscObject)fit), PETSC_ERR_USER_INPUT,
+            "%s: term %s: the MLS at (u, v) = (%g, %g) (normalised) is singular: %" PetscInt_FMT " samples within the kernel box %g x %g (the basis needs 8 in general position)%s; the term's %" PetscInt_FMT
+            " samples are too sparse for -fit_mls_kernel %g",
+            fit->source, HylcPlanTermName(t), (double)x, (double)y, cnt, (double)g->ku, (double)g->kv, fit->mlsGrow > 1 ? ", also with the kernel enlarged to the whole range" : " (-fit_mls_grow 1.5 would enlarge it)", g->n, (double)fit->kernel);
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -69,7 +69,10 @@ static PetscErrorCode G(HylcFit fit, GFun *g, int t, PetscReal x, PetscReal y, P
 static PetscErrorCode GrowWarning(HylcFit fit, const GFun *g, int t, PetscInt evals)
 {
   PetscFunctionBegin;
-  if (g->grown) PetscCall(PetscFPrintf(PetscObjectComm((PetscObject)fit), PETSC_STDERR, "[fit] warning: term %s: too few samples within the MLS kernel at %" PetscInt_FMT " of %" PetscInt_FMT " evaluation points; the kernel was enlarged there (up to %g x -fit_mls_kernel)\n", HylcPlanTermName(t), g->grown, evals, (double)g->growMax));
+  if (g->grown)
+    PetscCall(PetscFPrintf(PetscObjectComm((PetscObject)fit), PETSC_STDERR,
+                           "[fit] warning: term %s: too few samples within the MLS kernel at %" PetscInt_FMT " of %" PetscInt_FMT " evaluation points; the kernel was enlarged there (up to %g x -fit_mls_kernel)\n", HylcPlanTermName(t), g->grown,
+                           evals, (double)g->growMax));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -127,7 +130,8 @@ static PetscErrorCode Fit1D(HylcFit fit, int c, PetscInt n, const PetscReal u[],
 
   PetscFunctionBegin;
   Range(n, u, &mn, &mx);
-  PetscCheck(mn < mx, PetscObjectComm((PetscObject)fit), PETSC_ERR_USER_INPUT, "%s: term %s: all %" PetscInt_FMT " samples have the same %s = %g", fit->source, HylcPlanTermName(t), n, HylcPlanTermName(t), (double)(mn * fit->scale[HylcPlanStrainIndex(c)]));
+  PetscCheck(mn < mx, PetscObjectComm((PetscObject)fit), PETSC_ERR_USER_INPUT, "%s: term %s: all %" PetscInt_FMT " samples have the same %s = %g", fit->source, HylcPlanTermName(t), n, HylcPlanTermName(t),
+             (double)(mn * fit->scale[HylcPlanStrainIndex(c)]));
   PetscCall(PetscLogEventBegin(HYLC_FitMLS, fit, 0, 0, 0));
   PetscCall(PetscMalloc3(nk, &tk, nk, &p, nk, &m));
   s->t = tk, s->p = p, s->m = m; /* owned by the fit from here (freed by HylcFitResetResults_Private, also on error) */
@@ -200,8 +204,7 @@ static PetscErrorCode Fit1D(HylcFit fit, int c, PetscInt n, const PetscReal u[],
 static void KnotCounts(HylcFit fit, int ci, int cj, int c, PetscReal *factor, PetscInt k[2])
 {
   const PetscBool bending = cj >= 3, poisson = ci == 0 && cj == 2, stretch = c == 0 || c == 2;
-  const PetscInt *src = poisson ? fit->kPoisson : stretch ? (bending ? fit->kBendStretch : fit->kStretch)
-                                                          : (bending ? fit->kBendSym : fit->kSym);
+  const PetscInt *src = poisson ? fit->kPoisson : stretch ? (bending ? fit->kBendStretch : fit->kStretch) : (bending ? fit->kBendSym : fit->kSym);
   *factor             = bending ? fit->factor2bend : fit->factor2;
   k[0]                = src[0];
   k[1]                = src[1];
@@ -222,7 +225,8 @@ static PetscErrorCode Fit2D(HylcFit fit, int t, PetscInt n, const PetscReal u[],
   HylcPlanPair(t, &ci, &cj);
   Range(n, u, &umn, &umx);
   Range(n, v, &vmn, &vmx);
-  PetscCheck(umn < umx && vmn < vmx, comm, PETSC_ERR_USER_INPUT, "%s: term %s: the %" PetscInt_FMT " samples do not span both coordinates (%s in [%g, %g], %s in [%g, %g], normalised)", fit->source, HylcPlanTermName(t), n, HylcPlanTermName(1 + ci), (double)umn, (double)umx, HylcPlanTermName(1 + cj), (double)vmn, (double)vmx);
+  PetscCheck(umn < umx && vmn < vmx, comm, PETSC_ERR_USER_INPUT, "%s: term %s: the %" PetscInt_FMT " samples do not span both coordinates (%s in [%g, %g], %s in [%g, %g], normalised)", fit->source, HylcPlanTermName(t), n, HylcPlanTermName(1 + ci),
+             (double)umn, (double)umx, HylcPlanTermName(1 + cj), (double)vmn, (double)vmx);
   PetscCall(PetscLogEventBegin(HYLC_FitMLS, fit, 0, 0, 0));
   KnotCounts(fit, ci, cj, ci, &fu, ku);
   KnotCounts(fit, ci, cj, cj, &fv, kv);
@@ -231,7 +235,8 @@ static PetscErrorCode Fit2D(HylcFit fit, int t, PetscInt n, const PetscReal u[],
     PetscCheck(ku[0] + ku[1] < 2048 && kv[0] + kv[1] < 2048, comm, PETSC_ERR_USER_INPUT, "Too many 2D knots");
     i0 = HylcFitKnots2D(umn, umx, fu, ku[0], ku[1], bu, &nu);
     j0 = HylcFitKnots2D(vmn, vmx, fv, kv[0], kv[1], bv, &nv);
-    PetscCheck(i0 >= 0 && j0 >= 0, comm, PETSC_ERR_USER_INPUT, "%s: term %s: fewer than 2 knots on an axis (data %s in [%g, %g], %s in [%g, %g] normalised; the 2D knots span [factor min, 0] and [0, factor max])", fit->source, HylcPlanTermName(t), HylcPlanTermName(1 + ci), (double)umn, (double)umx, HylcPlanTermName(1 + cj), (double)vmn, (double)vmx);
+    PetscCheck(i0 >= 0 && j0 >= 0, comm, PETSC_ERR_USER_INPUT, "%s: term %s: fewer than 2 knots on an axis (data %s in [%g, %g], %s in [%g, %g] normalised; the 2D knots span [factor min, 0] and [0, factor max])", fit->source, HylcPlanTermName(t),
+               HylcPlanTermName(1 + ci), (double)umn, (double)umx, HylcPlanTermName(1 + cj), (double)vmn, (double)vmx);
     PetscCall(PetscMalloc6(nu, &tu, nv, &tv, nu * nv, &p, nu * nv, &mu, nu * nv, &mv, nu * nv, &muv));
     s->tu = tu, s->tv = tv, s->p = p, s->mu = mu, s->mv = mv, s->muv = muv; /* owned by the fit from here */
     PetscCall(PetscArraycpy(tu, bu, nu));
@@ -239,9 +244,7 @@ static PetscErrorCode Fit2D(HylcFit fit, int t, PetscInt n, const PetscReal u[],
   }
   eps = fit->fdEps * PetscMin(MinSpacing(nu, tu), MinSpacing(nv, tv)); /* the width of the differences */
   {
-    const int sym = !fit->symmetrize ? -1 : ci == 1 ? 0
-                                        : cj == 1   ? 1
-                                                    : -1;
+    const int sym = !fit->symmetrize ? -1 : ci == 1 ? 0 : cj == 1 ? 1 : -1;
     g             = (GFun){n, u, v, l, fit->kernel * (umx - umn), fit->kernel * (vmx - vmn), fit->truncation, 2, sym, 0, 1};
   }
   for (PetscInt j = 0; j < nv; j++)
@@ -345,7 +348,8 @@ PetscErrorCode HylcFitCompute(HylcFit fit)
     else {
       const PetscInt need = t <= 5 ? fit->min1 : fit->min2;
       if (n < need) PetscCall(PetscFree3(u, v, l));
-      PetscCheck(n >= need, comm, PETSC_ERR_USER_INPUT, "%s: term %s has only %" PetscInt_FMT " usable samples (at least %" PetscInt_FMT " needed: -fit_min_samples_%s, or leave the term out with -fit_terms)", fit->source, HylcPlanTermName(t), n, need, t <= 5 ? "1d" : "2d");
+      PetscCheck(n >= need, comm, PETSC_ERR_USER_INPUT, "%s: term %s has only %" PetscInt_FMT " usable samples (at least %" PetscInt_FMT " needed: -fit_min_samples_%s, or leave the term out with -fit_terms)", fit->source, HylcPlanTermName(t), n,
+                 need, t <= 5 ? "1d" : "2d");
       PetscErrorCode ierr = t <= 5 ? Fit1D(fit, ci, n, u, l) : Fit2D(fit, t, n, u, v, l);
       if (ierr) PetscCall(PetscFree3(u, v, l));
       PetscCall(ierr);

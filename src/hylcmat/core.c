@@ -28,20 +28,11 @@ void hylcmat_pair(int q, int *k0, int *k1)
   if (k1) *k1 = ok ? HylcmatPairs[q][1] : -1;
 }
 
-int hylcmat_pair_index(int k0, int k1)
-{
-  return HylcPairIndex(k0, k1);
-}
+int hylcmat_pair_index(int k0, int k1) { return HylcPairIndex(k0, k1); }
 
-const char *hylcmat_term1d_name(int k)
-{
-  return k >= 0 && k < HYLCMAT_N1D ? HylcmatNames1D[k] : NULL;
-}
+const char *hylcmat_term1d_name(int k) { return k >= 0 && k < HYLCMAT_N1D ? HylcmatNames1D[k] : NULL; }
 
-const char *hylcmat_term2d_name(int q)
-{
-  return q >= 0 && q < HYLCMAT_N2D ? HylcmatNames2D[q] : NULL;
-}
+const char *hylcmat_term2d_name(int q) { return q >= 0 && q < HYLCMAT_N2D ? HylcmatNames2D[q] : NULL; }
 
 const char *hylcmat_strerror(int code)
 {
@@ -197,15 +188,9 @@ void hylcmat_set_strain_shift(hylcmat *m, const int shift[5])
     for (int k = 0; k < 5; k++) m->shift[k] = shift[k];
 }
 
-double hylcmat_density(const hylcmat *m)
-{
-  return m ? m->density : 0;
-}
+double hylcmat_density(const hylcmat *m) { return m ? m->density : 0; }
 
-double hylcmat_constant(const hylcmat *m)
-{
-  return m ? m->C0 : 0;
-}
+double hylcmat_constant(const hylcmat *m) { return m ? m->C0 : 0; }
 
 void hylcmat_strain_scale(const hylcmat *m, double scale[5])
 {
@@ -244,7 +229,8 @@ static int CheckKnots(hm_err *E, const char what[], const char name[], int n, co
     HM_CHECK(i == 0 || t[i] > t[i - 1], E, HYLCMAT_ERR_FORMAT, "%s: knots %s must be strictly increasing, but %s[%d] = %s <= %s[%d] = %s", what, name, name, i, G(b0, t[i]), name, i - 1, G(b1, t[i - 1]));
     if (i > 0) { /* the evaluator divides by the spacing (docs/material.md, "Range") */
       const double h = t[i] - t[i - 1];
-      HM_CHECK(isfinite(h) && isfinite(1 / h), E, HYLCMAT_ERR_FORMAT, "%s: the spacing %s[%d] - %s[%d] = %s - %s %s (knot spacings h must have h and 1/h finite)", what, name, i, name, i - 1, G(b0, t[i]), G(b1, t[i - 1]), isfinite(h) ? "is too small" : "overflows");
+      HM_CHECK(isfinite(h) && isfinite(1 / h), E, HYLCMAT_ERR_FORMAT, "%s: the spacing %s[%d] - %s[%d] = %s - %s %s (knot spacings h must have h and 1/h finite)", what, name, i, name, i - 1, G(b0, t[i]), G(b1, t[i - 1]),
+               isfinite(h) ? "is too small" : "overflows");
     }
   }
   return HYLCMAT_OK;
@@ -488,7 +474,4 @@ int hylcmat_load(const char *path, hylcmat **m, char *err, size_t errlen)
   return r;
 }
 
-const char *hylcmat_format_double(double x, char buf[32])
-{
-  return HylcJsonFormatDouble(x, buf);
-}
+const char *hylcmat_format_double(double x, char buf[32]) { return HylcJsonFormatDouble(x, buf); }

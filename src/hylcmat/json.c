@@ -73,8 +73,8 @@ static int GetKnots(const hm_doc *d, const HylcJson *v, const char path[], doubl
              hylcmat_format_double(v->items[i - 1].num, b1));
   for (int i = 1; i < *n; i++) { /* the evaluator divides by the spacing (docs/material.md, "Range") */
     const double h = v->items[i].num - v->items[i - 1].num;
-    HM_CHECK(isfinite(h) && isfinite(1 / h), d->E, HYLCMAT_ERR_FORMAT, "%s:%d: %s[%d]: the knot spacing %s - %s %s (a spacing h must have h and 1/h finite)", d->name, v->items[i].line, path, i, hylcmat_format_double(v->items[i].num, b0), hylcmat_format_double(v->items[i - 1].num, b1),
-             isfinite(h) ? "is too small" : "overflows");
+    HM_CHECK(isfinite(h) && isfinite(1 / h), d->E, HYLCMAT_ERR_FORMAT, "%s:%d: %s[%d]: the knot spacing %s - %s %s (a spacing h must have h and 1/h finite)", d->name, v->items[i].line, path, i, hylcmat_format_double(v->items[i].num, b0),
+             hylcmat_format_double(v->items[i - 1].num, b1), isfinite(h) ? "is too small" : "overflows");
   }
   HM_CALL(GetNumbers(d, v, path, -1, NULL, out, NULL));
   return HYLCMAT_OK;
@@ -177,7 +177,8 @@ static int ReadDoc(hm_doc *d, const HylcJson *root)
   d->density = v->num;
   v          = HylcJsonMember(root, "strain scale");
   HM_CALL(GetNumbers(d, v, "strain scale", 5, " (sigma of sx, sa, sy, II00, II11)", NULL, NULL));
-  for (int k = 0; k < 5; k++) HM_CHECK(v->items[k].num > 0 && isfinite(1 / v->items[k].num), d->E, HYLCMAT_ERR_FORMAT, "%s:%d: strain scale[%d]: must be positive with a finite inverse, got %s", d->name, v->items[k].line, k, hylcmat_format_double(v->items[k].num, b));
+  for (int k = 0; k < 5; k++)
+    HM_CHECK(v->items[k].num > 0 && isfinite(1 / v->items[k].num), d->E, HYLCMAT_ERR_FORMAT, "%s:%d: strain scale[%d]: must be positive with a finite inverse, got %s", d->name, v->items[k].line, k, hylcmat_format_double(v->items[k].num, b));
   HM_CALL(GetNumbers(d, v, "strain scale", 5, NULL, &buf, NULL));
   for (int k = 0; k < 5; k++) d->scale[k] = buf[k];
   free(buf);
@@ -214,8 +215,8 @@ static int ReadDoc(hm_doc *d, const HylcJson *root)
       snprintf(p, sizeof(p), "coeffs.2D[%d]", (int)i);
       HM_CALL(Read2D(d, &v->items[i], p));
       for (int j = 0; j < d->n2 - 1; j++)
-        HM_CHECK(d->s2[j].k0 != d->s2[d->n2 - 1].k0 || d->s2[j].k1 != d->s2[d->n2 - 1].k1, d->E, HYLCMAT_ERR_FORMAT, "%s:%d: %s: a second term with (k0, k1) = (%d, %d) (the first is coeffs.2D[%d] at line %d)", d->name, v->items[i].line, p, d->s2[j].k0,
-                 d->s2[j].k1, j, v->items[j].line);
+        HM_CHECK(d->s2[j].k0 != d->s2[d->n2 - 1].k0 || d->s2[j].k1 != d->s2[d->n2 - 1].k1, d->E, HYLCMAT_ERR_FORMAT, "%s:%d: %s: a second term with (k0, k1) = (%d, %d) (the first is coeffs.2D[%d] at line %d)", d->name, v->items[i].line, p,
+                 d->s2[j].k0, d->s2[j].k1, j, v->items[j].line);
     }
   }
   return HYLCMAT_OK;

@@ -86,7 +86,8 @@ static int Adjacency(hylcmat_mesh *M, const int *tri, hm_err *E)
         return r;
       }
       if (pa == qa) {
-        const int r = hm_fail(E, HYLCMAT_ERR_MESH, "mesh: triangles %d and %d run through their common edge (%d, %d) in the same direction: their orientations (counter-clockwise in material coordinates) disagree", p->t, q->t, pa, tri[3 * p->t + (p->k + 1) % 3]);
+        const int r = hm_fail(E, HYLCMAT_ERR_MESH, "mesh: triangles %d and %d run through their common edge (%d, %d) in the same direction: their orientations (counter-clockwise in material coordinates) disagree", p->t, q->t, pa,
+                              tri[3 * p->t + (p->k + 1) % 3]);
         free(ed);
         return r;
       }
@@ -284,20 +285,11 @@ int hylcmat_mesh_create_uv(int nv, int nt, const int *tri, const double *uv, hyl
   return Create(nv, nt, tri, NULL, NULL, uv, mesh, err, errlen);
 }
 
-int hylcmat_mesh_nv(const hylcmat_mesh *mesh)
-{
-  return mesh ? mesh->nv : 0;
-}
+int hylcmat_mesh_nv(const hylcmat_mesh *mesh) { return mesh ? mesh->nv : 0; }
 
-int hylcmat_mesh_nt(const hylcmat_mesh *mesh)
-{
-  return mesh ? mesh->nt : 0;
-}
+int hylcmat_mesh_nt(const hylcmat_mesh *mesh) { return mesh ? mesh->nt : 0; }
 
-double hylcmat_mesh_area(const hylcmat_mesh *mesh)
-{
-  return mesh ? mesh->area : 0;
-}
+double hylcmat_mesh_area(const hylcmat_mesh *mesh) { return mesh ? mesh->area : 0; }
 
 int hylcmat_mesh_element(const hylcmat_mesh *mesh, int t, int v[6], hylcmat_shell_rest *r)
 {
@@ -308,10 +300,7 @@ int hylcmat_mesh_element(const hylcmat_mesh *mesh, int t, int v[6], hylcmat_shel
   return HYLCMAT_OK;
 }
 
-int64_t hylcmat_mesh_hessian_nnz(const hylcmat_mesh *mesh)
-{
-  return mesh ? mesh->nnz : 0;
-}
+int64_t hylcmat_mesh_hessian_nnz(const hylcmat_mesh *mesh) { return mesh ? mesh->nnz : 0; }
 
 void hylcmat_mesh_hessian_csr(const hylcmat_mesh *mesh, int64_t *rowptr, int *colind)
 {

@@ -30,11 +30,8 @@
 /* a triangle whose sine of an angle is below this is degenerate (deformed) */
 #define DEG_SINE 1e-14
 
-static inline double Dot(const double a[3], const double b[3])
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-static inline void Cross(const double a[3], const double b[3], double c[3])
+static inline double Dot(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+static inline void   Cross(const double a[3], const double b[3], double c[3])
 {
   c[0] = a[1] * b[2] - a[2] * b[1];
   c[1] = a[2] * b[0] - a[0] * b[2];
@@ -176,10 +173,7 @@ static inline void AddOuter(double B[9], double s, const double a[3], const doub
     for (int j = 0; j < 3; j++) B[3 * i + j] += s * a[i] * b[j];
 }
 /* entry (i, j) of the cross-product matrix [a]_x ([a]_x y = a x y) */
-static inline double CrossMat(const double a[3], int i, int j)
-{
-  return i == j ? 0 : (j == (i + 1) % 3 ? -a[3 - i - j] : a[3 - i - j]);
-}
+static inline double CrossMat(const double a[3], int i, int j) { return i == j ? 0 : (j == (i + 1) % 3 ? -a[3 - i - j] : a[3 - i - j]); }
 
 /* The blocks B[0..5] = ee, ef, eg, ff, fg, gg (3 x 3, row-major; the diagonal blocks exactly
    symmetric) of wt d2w~/d(e, f, g)^2 (units of the edge: the caller divides wt by its length):
@@ -207,11 +201,13 @@ static void HingeHess(const Hinge *h, double wt, double B[6][9])
     for (int j = 0; j < 3; j++) {
       const double d = i == j ? 1 : 0;
       if (j >= i) {
-        B[0][3 * i + j] = cK * ((-fp[i] * fp[j] + sig * (fp[i] * e[j] + e[i] * fp[j]) - sig * sig * e[i] * e[j]) * il2 + sig * sig * d) - cY * (V * il * (d - eh[i] * eh[j]) + eh[i] * h->cfg[j] + h->cfg[i] * eh[j]) + cX * (f[i] * g[j] + g[i] * f[j] - 2 * h->fg * d) + ck * h->dkap[i] * h->dkap[j] + A[i] * M[j] + M[i] * A[j];
+        B[0][3 * i + j] = cK * ((-fp[i] * fp[j] + sig * (fp[i] * e[j] + e[i] * fp[j]) - sig * sig * e[i] * e[j]) * il2 + sig * sig * d) - cY * (V * il * (d - eh[i] * eh[j]) + eh[i] * h->cfg[j] + h->cfg[i] * eh[j]) +
+                          cX * (f[i] * g[j] + g[i] * f[j] - 2 * h->fg * d) + ck * h->dkap[i] * h->dkap[j] + A[i] * M[j] + M[i] * A[j];
         B[3][3 * i + j] = cK * (d - eh[i] * eh[j]) + ck * h->dkap[3 + i] * h->dkap[3 + j] + A[3 + i] * M[3 + j] + M[3 + i] * A[3 + j];
         B[5][3 * i + j] = A[6 + i] * M[6 + j] + M[6 + i] * A[6 + j];
       }
-      B[1][3 * i + j] = cK * ((sig * e[i] * e[j] - fp[i] * e[j]) * il2 - sig * d) + cY * (l * Gx[3 * i + j] - eh[i] * h->cge[j]) + cX * (g[i] * e[j] + h->ge * d - 2 * e[i] * g[j]) + ck * h->dkap[i] * h->dkap[3 + j] + A[i] * M[3 + j] + M[i] * A[3 + j];
+      B[1][3 * i + j] =
+          cK * ((sig * e[i] * e[j] - fp[i] * e[j]) * il2 - sig * d) + cY * (l * Gx[3 * i + j] - eh[i] * h->cge[j]) + cX * (g[i] * e[j] + h->ge * d - 2 * e[i] * g[j]) + ck * h->dkap[i] * h->dkap[3 + j] + A[i] * M[3 + j] + M[i] * A[3 + j];
       B[2][3 * i + j] = -cY * (eh[i] * h->N[j] + l * Fx[3 * i + j]) + cX * (f[i] * e[j] + h->fe * d - 2 * e[i] * f[j]) + A[i] * M[6 + j] + M[i] * A[6 + j];
       B[4][3 * i + j] = cY * l * Ex[3 * i + j] + cX * (e[i] * e[j] - h->l2 * d) + A[3 + i] * M[6 + j] + M[3 + i] * A[6 + j];
     }

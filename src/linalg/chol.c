@@ -432,7 +432,8 @@ static inline void BlockUpdateGeneral(PetscInt bs, PetscInt W, PetscInt ld, cons
 /* the update of the block column b (its bs columns) at the row blocks r0 <= r < r1 of a panel: the block of
    row r, a + bs r, lands at tgt + toff(r) (target offsets through pos: bs pos[R[r]] with R, or bs r without);
    with bs = 4, two row blocks at a time, and a no-sign specialization by the compiler */
-static inline __attribute__((always_inline)) void UpdateRows(PetscInt bs, PetscInt r0, PetscInt r1, PetscInt W, PetscInt ld, const PetscReal *a, const PetscReal *b, const PetscReal *sg, PetscReal blk[], PetscReal *tgt, PetscInt ldt, const PetscInt *R, const PetscInt *pos)
+static inline __attribute__((always_inline)) void UpdateRows(PetscInt bs, PetscInt r0, PetscInt r1, PetscInt W, PetscInt ld, const PetscReal *a, const PetscReal *b, const PetscReal *sg, PetscReal blk[], PetscReal *tgt, PetscInt ldt,
+                                                             const PetscInt *R, const PetscInt *pos)
 {
 #define TOFF(r) (R ? bs * pos[R[r]] : bs * (r))
   if (bs == 4) {
@@ -846,7 +847,8 @@ PetscErrorCode HylcCholView(HylcChol C, PetscViewer viewer)
 
   PetscFunctionBegin;
   if (!viewer) PetscCall(PetscViewerASCIIGetStdout(PETSC_COMM_SELF, &viewer));
-  snprintf(buf, sizeof(buf), "HylcChol: order %d, block size %d, ordering %s, %d supernodes, %.0f stored entries of L, %.3g flops per factorization, %d symbolic / %d numeric phases\n", (int)C->info.n, (int)C->info.bs, C->ordering == HYLC_CHOL_ORDERING_METIS ? "metis" : "natural", (int)C->info.nsuper, (double)C->info.nnzL, (double)C->info.flops, (int)C->info.nsymbolic, (int)C->info.nnumeric);
+  snprintf(buf, sizeof(buf), "HylcChol: order %d, block size %d, ordering %s, %d supernodes, %.0f stored entries of L, %.3g flops per factorization, %d symbolic / %d numeric phases\n", (int)C->info.n, (int)C->info.bs,
+           C->ordering == HYLC_CHOL_ORDERING_METIS ? "metis" : "natural", (int)C->info.nsuper, (double)C->info.nnzL, (double)C->info.flops, (int)C->info.nsymbolic, (int)C->info.nnumeric);
   PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

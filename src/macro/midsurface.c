@@ -168,7 +168,8 @@ PetscErrorCode HylcMidsurfaceSetStrain(HylcMidsurface ms, const PetscReal z[6])
   PetscValidHeaderSpecific(ms, HYLC_MIDSURFACE_CLASSID, 1);
   for (int i = 0; i < 6; i++) zd[i] = (double)z[i];
   e = HylcMacroStrainSetUp(zd, 0, &ms->strain);
-  PetscCheck(e == HYLC_MACRO_STRAIN_OK, PetscObjectComm((PetscObject)ms), PETSC_ERR_USER_INPUT, "Invalid macroscopic strain (sx, sa, sy, II00, II01, II11) = (%g, %g, %g, %g, %g, %g): %s", (double)z[0], (double)z[1], (double)z[2], (double)z[3], (double)z[4], (double)z[5], HylcMacroStrainErrorString(e));
+  PetscCheck(e == HYLC_MACRO_STRAIN_OK, PetscObjectComm((PetscObject)ms), PETSC_ERR_USER_INPUT, "Invalid macroscopic strain (sx, sa, sy, II00, II01, II11) = (%g, %g, %g, %g, %g, %g): %s", (double)z[0], (double)z[1], (double)z[2], (double)z[3],
+             (double)z[4], (double)z[5], HylcMacroStrainErrorString(e));
   ms->hasStrain   = PETSC_TRUE;
   ms->setupcalled = PETSC_FALSE;
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -507,8 +508,8 @@ PetscErrorCode HylcMidsurfaceView(HylcMidsurface ms, PetscViewer viewer)
   if (m->curvature == HYLC_MACRO_SINGLY) PetscCall(PetscViewerASCIIPrintf(viewer, "II = H d d^T with H = %g, d = (%g, %g)\n", m->H, m->d[0], m->d[1]));
   PetscCall(PetscViewerASCIIPrintf(viewer, "method: %s%s\n", HylcMidsurfaceTypes[ms->setupcalled ? ms->resolved : ms->type], ms->setupcalled ? "" : " (not set up)"));
   if (ms->setupcalled && ms->resolved == HYLC_MIDSURFACE_POISSON) {
-    PetscCall(PetscViewerASCIIPrintf(viewer, "grid %" PetscInt_FMT " x %" PetscInt_FMT " nodes on [%g, %g] x [%g, %g], %s interpolation, %s normals, %" PetscInt_FMT " KSP iterations\n", ms->M[0], ms->M[1], (double)ms->origin[0], (double)(ms->origin[0] + (ms->M[0] - 1) * ms->h[0]), (double)ms->origin[1],
-                                     (double)(ms->origin[1] + (ms->M[1] - 1) * ms->h[1]), HylcMidsurfaceInterps[ms->interp], HylcMidsurfaceNormals[ms->normal], ms->its));
+    PetscCall(PetscViewerASCIIPrintf(viewer, "grid %" PetscInt_FMT " x %" PetscInt_FMT " nodes on [%g, %g] x [%g, %g], %s interpolation, %s normals, %" PetscInt_FMT " KSP iterations\n", ms->M[0], ms->M[1], (double)ms->origin[0],
+                                     (double)(ms->origin[0] + (ms->M[0] - 1) * ms->h[0]), (double)ms->origin[1], (double)(ms->origin[1] + (ms->M[1] - 1) * ms->h[1]), HylcMidsurfaceInterps[ms->interp], HylcMidsurfaceNormals[ms->normal], ms->its));
     PetscCall(KSPView(ms->ksp, viewer));
   }
   PetscCall(PetscViewerASCIIPopTab(viewer));

@@ -42,7 +42,9 @@ static PetscErrorCode WriteContents(hid_t file, HylcMaterial m, const char optio
   if (!optionsText) PetscCall(PetscOptionsGetAll(NULL, &allopts));
   HylcCallHDF5(HylcH5WriteAttrString(file, "format", HYLC_MATERIAL_FORMAT));
   HylcCallHDF5(HylcH5WriteAttrLong(file, "format_version", HYLC_MATERIAL_FORMAT_VERSION));
-  HylcCallHDF5(HylcH5WriteAttrString(file, "description", "Homogenized yarn-level cloth material: Psi(s) = constant + 1D terms f_k(s_k / sigma_k) + 2D terms f_k0k1(s_k0 / sigma_k0, s_k1 / sigma_k1), cubic/bicubic Hermite splines in normalized strains, bending terms split over the eigenvalues of II (docs/material.md). Equivalent to the ARCSim-HYLC JSON."));
+  HylcCallHDF5(HylcH5WriteAttrString(file, "description",
+                                     "Homogenized yarn-level cloth material: Psi(s) = constant + 1D terms f_k(s_k / sigma_k) + 2D terms f_k0k1(s_k0 / sigma_k0, s_k1 / sigma_k1), cubic/bicubic Hermite splines in normalized strains, bending terms "
+                                     "split over the eigenvalues of II (docs/material.md). Equivalent to the ARCSim-HYLC JSON."));
   HylcCallHDF5(HylcH5WriteAttrString(file, "hylc_version", HYLC_VERSION_STRING));
   HylcCallHDF5(HylcH5WriteAttrString(file, "petsc_version", petscv));
   HylcCallHDF5(HylcH5WriteAttrString(file, "hdf5_version", h5v));
@@ -85,7 +87,9 @@ static PetscErrorCode WriteContents(hid_t file, HylcMaterial m, const char optio
   HylcCallHDF5(H5Gclose(g1));
 
   HylcCallHDF5Id(g2, H5Gcreate2(file, "2D", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
-  HylcCallHDF5(HylcH5WriteAttrString(g2, "description", "two-dimensional terms f_k0k1(u, v), u = s_k0 / sigma_k0, v = s_k1 / sigma_k1, one group per term present: bicubic Hermite spline with knots tu, tv and node arrays of shape (len(tv), len(tu)): p[iv, iu] is the value at (tu[iu], tv[iv])"));
+  HylcCallHDF5(HylcH5WriteAttrString(
+      g2, "description",
+      "two-dimensional terms f_k0k1(u, v), u = s_k0 / sigma_k0, v = s_k1 / sigma_k1, one group per term present: bicubic Hermite spline with knots tu, tv and node arrays of shape (len(tv), len(tu)): p[iv, iu] is the value at (tu[iu], tv[iv])"));
   for (PetscInt q = 0; q < HYLC_MATERIAL_N2D; q++) {
     const HylcSpline2D *s = &m->t2[q];
     hsize_t             nu, nv, dims[2];

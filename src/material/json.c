@@ -9,10 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-const char *HylcFormatDoubleRepr(double x, char buf[32])
-{
-  return HylcJsonFormatDouble(x, buf);
-}
+const char *HylcFormatDoubleRepr(double x, char buf[32]) { return HylcJsonFormatDouble(x, buf); }
 
 /* ------------------------------------------------------------------------------------------------ */
 /* Writer                                                                                             */

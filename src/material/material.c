@@ -9,10 +9,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-PetscInt HylcMaterialPairIndex(PetscInt k0, PetscInt k1)
-{
-  return HylcPairIndex((int)k0, (int)k1);
-}
+PetscInt HylcMaterialPairIndex(PetscInt k0, PetscInt k1) { return HylcPairIndex((int)k0, (int)k1); }
 
 /* a number for messages and views (C printf: PETSc's appends '.' to integral %g values) */
 static const char *G(char buf[32], PetscReal v)
@@ -301,8 +298,8 @@ PetscErrorCode HylcMaterialView(HylcMaterial m, PetscViewer viewer)
       PetscCall(PetscViewerASCIIPrintf(viewer, "2D %-8s absent\n", HylcMaterialTermNames2D[q]));
       continue;
     }
-    PetscCall(PetscViewerASCIIPrintf(viewer, "2D %-8s %2" PetscInt_FMT " x %2" PetscInt_FMT " knots on [%s, %s] x [%s, %s], %s extrapolation\n", HylcMaterialTermNames2D[q], s->nu, s->nv, G(b[0], s->tu[0]), G(b[1], s->tu[s->nu - 1]), G(b[2], s->tv[0]), G(b[3], s->tv[s->nv - 1]),
-                                     ExtNames[s->ext]));
+    PetscCall(PetscViewerASCIIPrintf(viewer, "2D %-8s %2" PetscInt_FMT " x %2" PetscInt_FMT " knots on [%s, %s] x [%s, %s], %s extrapolation\n", HylcMaterialTermNames2D[q], s->nu, s->nv, G(b[0], s->tu[0]), G(b[1], s->tu[s->nu - 1]),
+                                     G(b[2], s->tv[0]), G(b[3], s->tv[s->nv - 1]), ExtNames[s->ext]));
   }
   PetscCall(PetscViewerASCIIPopTab(viewer));
   PetscFunctionReturn(PETSC_SUCCESS);

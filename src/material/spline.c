@@ -78,12 +78,10 @@ PetscReal HylcHermite1DEval(PetscInt n, const PetscReal t[], const PetscReal p[]
   return a[0] * p[i] + a[1] * p[i + 1] + b[0] * m[i] + b[1] * m[i + 1];
 }
 
-PetscReal HylcSpline1DEval(const HylcSpline1D *s, PetscReal x, PetscReal *d1, PetscReal *d2)
-{
-  return HylcHermite1DEval(s->n, s->t, s->p, s->m, s->ext, x, d1, d2);
-}
+PetscReal HylcSpline1DEval(const HylcSpline1D *s, PetscReal x, PetscReal *d1, PetscReal *d2) { return HylcHermite1DEval(s->n, s->t, s->p, s->m, s->ext, x, d1, d2); }
 
-PetscReal HylcHermite2DEval(PetscInt nu, PetscInt nv, const PetscReal tu[], const PetscReal tv[], const PetscReal p[], const PetscReal mu[], const PetscReal mv[], const PetscReal muv[], HylcSplineExt ext, PetscReal u, PetscReal v, PetscReal g[2], PetscReal H[3])
+PetscReal HylcHermite2DEval(PetscInt nu, PetscInt nv, const PetscReal tu[], const PetscReal tv[], const PetscReal p[], const PetscReal mu[], const PetscReal mv[], const PetscReal muv[], HylcSplineExt ext, PetscReal u, PetscReal v, PetscReal g[2],
+                            PetscReal H[3])
 {
   PetscReal      au[2], bu[2], dau[2], dbu[2], ddau[2], ddbu[2];
   PetscReal      av[2], bv[2], dav[2], dbv[2], ddav[2], ddbv[2];
@@ -120,10 +118,7 @@ PetscReal HylcHermite2DEval(PetscInt nu, PetscInt nv, const PetscReal tu[], cons
   return f;
 }
 
-PetscReal HylcSpline2DEval(const HylcSpline2D *s, PetscReal u, PetscReal v, PetscReal g[2], PetscReal H[3])
-{
-  return HylcHermite2DEval(s->nu, s->nv, s->tu, s->tv, s->p, s->mu, s->mv, s->muv, s->ext, u, v, g, H);
-}
+PetscReal HylcSpline2DEval(const HylcSpline2D *s, PetscReal u, PetscReal v, PetscReal g[2], PetscReal H[3]) { return HylcHermite2DEval(s->nu, s->nv, s->tu, s->tv, s->p, s->mu, s->mv, s->muv, s->ext, u, v, g, H); }
 
 /* the piece polynomial about its own origin k: sum c[r] (x - k)^r */
 static void PieceOwn(PetscInt n, const PetscReal t[], const PetscReal p[], const PetscReal m[], PetscInt j0, HylcSplineExt ext, PetscInt i, PetscReal *k, PetscReal c[4])
@@ -180,7 +175,8 @@ void HylcHermite1DKnotJump(PetscInt n, const PetscReal t[], const PetscReal p[],
   }
 }
 
-void HylcHermite2DSliceV(PetscInt nu, PetscInt nv, const PetscReal tu[], const PetscReal p[], const PetscReal mu[], const PetscReal mv[], const PetscReal muv[], HylcSplineExt ext, PetscReal u, PetscInt j0, PetscInt j1, PetscReal P[], PetscReal M[], PetscReal Pu[], PetscReal Mu[], PetscReal Puu[], PetscReal Muu[])
+void HylcHermite2DSliceV(PetscInt nu, PetscInt nv, const PetscReal tu[], const PetscReal p[], const PetscReal mu[], const PetscReal mv[], const PetscReal muv[], HylcSplineExt ext, PetscReal u, PetscInt j0, PetscInt j1, PetscReal P[], PetscReal M[],
+                         PetscReal Pu[], PetscReal Mu[], PetscReal Puu[], PetscReal Muu[])
 {
   PetscReal      a[2], b[2], da[2], db[2], dda[2], ddb[2];
   const PetscInt i = HylcHermiteBasis(nu, tu, ext, u, a, b, da, db, dda, ddb);

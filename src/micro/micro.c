@@ -654,11 +654,7 @@ PetscErrorCode HylcMicroSetInitialFluctuation(HylcMicro M, const PetscReal u[])
 }
 
 /* the order of outcomes: converged, then not converged, then non-finite */
-static int OutcomeRank(const HylcMicroResult *r)
-{
-  return r->status == HYLC_MICRO_CONVERGED ? 0 : r->status == HYLC_MICRO_NONFINITE ? 2
-                                                                                   : 1;
-}
+static int OutcomeRank(const HylcMicroResult *r) { return r->status == HYLC_MICRO_CONVERGED ? 0 : r->status == HYLC_MICRO_NONFINITE ? 2 : 1; }
 
 /*@C
   HylcMicroSolveContinued - One step of a continuation: solves at z from the fluctuation u of an earlier
@@ -769,13 +765,16 @@ PetscErrorCode HylcMicroResultView(const HylcMicroResult *r, PetscViewer viewer)
 
   PetscFunctionBegin;
   /* C formatting: PETSc's printf appends '.' to integral %g values */
-  snprintf(buf, sizeof(buf), "strain: %.9g %.9g %.9g %.9g %.9g %.9g\npsi: %.10e\nenergy_parts: %.10e %.10e %.10e %.10e\n", (double)r->z[0], (double)r->z[1], (double)r->z[2], (double)r->z[3], (double)r->z[4], (double)r->z[5], (double)r->psi, (double)r->parts[0], (double)r->parts[1], (double)r->parts[2], (double)r->parts[3]);
+  snprintf(buf, sizeof(buf), "strain: %.9g %.9g %.9g %.9g %.9g %.9g\npsi: %.10e\nenergy_parts: %.10e %.10e %.10e %.10e\n", (double)r->z[0], (double)r->z[1], (double)r->z[2], (double)r->z[3], (double)r->z[4], (double)r->z[5], (double)r->psi,
+           (double)r->parts[0], (double)r->parts[1], (double)r->parts[2], (double)r->parts[3]);
   PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
   PetscCall(PetscViewerASCIIPrintf(viewer, "status: %s\n", HylcMicroStatuses[r->status]));
   PetscCall(PetscViewerASCIIPrintf(viewer, "iterations: %" PetscInt_FMT "\n", r->iterations));
   if (r->fallback) PetscCall(PetscViewerASCIIPrintf(viewer, "fallback: the adaptive or hybrid schedule did not converge; solved again from the same start with the paper schedule (iterations, retries, stalls and times are the sums of both)\n"));
-  if (r->negcurv >= 0) PetscCall(PetscViewerASCIIPrintf(viewer, "second-order test: %" PetscInt_FMT " negative eigenvalues on the tangent space at the end (%s), %" PetscInt_FMT " saddle escapes\n", r->negcurv, r->negcurv ? "a saddle point" : "a minimum", r->escapes));
-  snprintf(buf, sizeof(buf), "residual: %.3e (projected gradient, relative), constraints %.3e r\nregularization retries: %d, stalled line searches: %d\ntime: %.4f s (assembly %.4f, contact %.4f, factorization %.4f, line search %.4f)\n", (double)r->residual, (double)r->cresidual, (int)r->retries, (int)r->stalls, r->time, r->tAssembly, r->tContact, r->tFactor, r->tLineSearch);
+  if (r->negcurv >= 0)
+    PetscCall(PetscViewerASCIIPrintf(viewer, "second-order test: %" PetscInt_FMT " negative eigenvalues on the tangent space at the end (%s), %" PetscInt_FMT " saddle escapes\n", r->negcurv, r->negcurv ? "a saddle point" : "a minimum", r->escapes));
+  snprintf(buf, sizeof(buf), "residual: %.3e (projected gradient, relative), constraints %.3e r\nregularization retries: %d, stalled line searches: %d\ntime: %.4f s (assembly %.4f, contact %.4f, factorization %.4f, line search %.4f)\n",
+           (double)r->residual, (double)r->cresidual, (int)r->retries, (int)r->stalls, r->time, r->tAssembly, r->tContact, r->tFactor, r->tLineSearch);
   PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

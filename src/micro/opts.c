@@ -33,7 +33,9 @@ PetscErrorCode HylcMicroSetRegularization(HylcMicro M, PetscReal start, PetscRea
   if (end != (PetscReal)PETSC_DEFAULT) M->par.alphaEnd = end;
   if (its != PETSC_DEFAULT) M->par.alphaIts = its;
   if (retries != PETSC_DEFAULT) M->par.maxRetries = retries;
-  PetscCheck(M->par.alphaStart > 0 && M->par.alphaEnd > 0 && M->par.alphaIts >= 1 && M->par.maxRetries >= 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_alpha_start %g, -%smicro_alpha_end %g must be positive, -%smicro_alpha_its %" PetscInt_FMT " at least 1 and -%smicro_alpha_retries %" PetscInt_FMT " non-negative", HylcMicroPrefix_Private(M), (double)M->par.alphaStart, HylcMicroPrefix_Private(M), (double)M->par.alphaEnd, HylcMicroPrefix_Private(M), M->par.alphaIts, HylcMicroPrefix_Private(M), M->par.maxRetries);
+  PetscCheck(M->par.alphaStart > 0 && M->par.alphaEnd > 0 && M->par.alphaIts >= 1 && M->par.maxRetries >= 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+             "-%smicro_alpha_start %g, -%smicro_alpha_end %g must be positive, -%smicro_alpha_its %" PetscInt_FMT " at least 1 and -%smicro_alpha_retries %" PetscInt_FMT " non-negative", HylcMicroPrefix_Private(M), (double)M->par.alphaStart,
+             HylcMicroPrefix_Private(M), (double)M->par.alphaEnd, HylcMicroPrefix_Private(M), M->par.alphaIts, HylcMicroPrefix_Private(M), M->par.maxRetries);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -74,13 +76,16 @@ PetscErrorCode HylcMicroSetRegularizationSchedule(HylcMicro M, HylcMicroAlphaSch
 {
   PetscFunctionBegin;
   PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
-  PetscCheck(schedule == HYLC_MICRO_ALPHA_PAPER || schedule == HYLC_MICRO_ALPHA_ADAPTIVE || schedule == HYLC_MICRO_ALPHA_HYBRID, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_alpha_schedule %d: must be paper, adaptive or hybrid", HylcMicroPrefix_Private(M), (int)schedule);
+  PetscCheck(schedule == HYLC_MICRO_ALPHA_PAPER || schedule == HYLC_MICRO_ALPHA_ADAPTIVE || schedule == HYLC_MICRO_ALPHA_HYBRID, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_alpha_schedule %d: must be paper, adaptive or hybrid",
+             HylcMicroPrefix_Private(M), (int)schedule);
   M->par.alphaSched = schedule;
   if (factor != (PetscReal)PETSC_DEFAULT) M->par.alphaFact = factor;
   if (min != (PetscReal)PETSC_DEFAULT) M->par.alphaMin = min;
   if (max != (PetscReal)PETSC_DEFAULT) M->par.alphaMax = max;
   PetscCheck(M->par.alphaFact > 1 && PetscIsNormalReal(M->par.alphaFact), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_alpha_factor %g: must be finite and greater than 1", HylcMicroPrefix_Private(M), (double)M->par.alphaFact);
-  PetscCheck(M->par.alphaMin > 0 && M->par.alphaMax >= M->par.alphaMin && PetscIsNormalReal(M->par.alphaMax), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_alpha_min %g must be positive and -%smicro_alpha_max %g finite and at least -%smicro_alpha_min", HylcMicroPrefix_Private(M), (double)M->par.alphaMin, HylcMicroPrefix_Private(M), (double)M->par.alphaMax, HylcMicroPrefix_Private(M));
+  PetscCheck(M->par.alphaMin > 0 && M->par.alphaMax >= M->par.alphaMin && PetscIsNormalReal(M->par.alphaMax), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+             "-%smicro_alpha_min %g must be positive and -%smicro_alpha_max %g finite and at least -%smicro_alpha_min", HylcMicroPrefix_Private(M), (double)M->par.alphaMin, HylcMicroPrefix_Private(M), (double)M->par.alphaMax,
+             HylcMicroPrefix_Private(M));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -185,7 +190,8 @@ PetscErrorCode HylcMicroSetStepLimit(HylcMicro M, PetscReal p0, PetscReal p1)
   PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
   if (p0 != (PetscReal)PETSC_DEFAULT) M->par.stepP0 = p0;
   if (p1 != (PetscReal)PETSC_DEFAULT) M->par.stepP1 = p1;
-  PetscCheck(M->par.stepP0 > 0 && M->par.stepP1 >= 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_step_p0 %g must be positive, -%smicro_step_p1 %g non-negative", HylcMicroPrefix_Private(M), (double)M->par.stepP0, HylcMicroPrefix_Private(M), (double)M->par.stepP1);
+  PetscCheck(M->par.stepP0 > 0 && M->par.stepP1 >= 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_step_p0 %g must be positive, -%smicro_step_p1 %g non-negative", HylcMicroPrefix_Private(M), (double)M->par.stepP0, HylcMicroPrefix_Private(M),
+             (double)M->par.stepP1);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -243,7 +249,9 @@ PetscErrorCode HylcMicroSetLineSearch(HylcMicro M, PetscReal factor, PetscInt tr
   if (factor != (PetscReal)PETSC_DEFAULT) M->par.lsFactor = factor;
   if (trials != PETSC_DEFAULT) M->par.lsMax = trials;
   if (maxStalls != PETSC_DEFAULT) M->par.maxStalls = maxStalls;
-  PetscCheck(M->par.lsFactor > 0 && M->par.lsFactor < 1 && M->par.lsMax >= 1 && M->par.maxStalls >= 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_ls_factor %g must be in (0, 1), -%smicro_ls_max %" PetscInt_FMT " and -%smicro_max_stalls %" PetscInt_FMT " at least 1", HylcMicroPrefix_Private(M), (double)M->par.lsFactor, HylcMicroPrefix_Private(M), M->par.lsMax, HylcMicroPrefix_Private(M), M->par.maxStalls);
+  PetscCheck(M->par.lsFactor > 0 && M->par.lsFactor < 1 && M->par.lsMax >= 1 && M->par.maxStalls >= 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+             "-%smicro_ls_factor %g must be in (0, 1), -%smicro_ls_max %" PetscInt_FMT " and -%smicro_max_stalls %" PetscInt_FMT " at least 1", HylcMicroPrefix_Private(M), (double)M->par.lsFactor, HylcMicroPrefix_Private(M), M->par.lsMax,
+             HylcMicroPrefix_Private(M), M->par.maxStalls);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -276,7 +284,8 @@ PetscErrorCode HylcMicroSetTolerances(HylcMicro M, PetscReal rtol, PetscReal ato
   if (atol != (PetscReal)PETSC_DEFAULT) M->par.atol = atol;
   if (ctol != (PetscReal)PETSC_DEFAULT) M->par.ctol = ctol;
   if (maxTime != (PetscReal)PETSC_DEFAULT) M->par.maxTime = maxTime;
-  PetscCheck(M->par.rtol > 0 && M->par.ctol > 0 && M->par.maxTime > 0 && M->par.atol >= 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_rtol %g, -%smicro_ctol %g, -%smicro_max_time %g must be positive, -%smicro_atol %g non-negative", HylcMicroPrefix_Private(M), (double)M->par.rtol, HylcMicroPrefix_Private(M), (double)M->par.ctol, HylcMicroPrefix_Private(M), (double)M->par.maxTime, HylcMicroPrefix_Private(M), (double)M->par.atol);
+  PetscCheck(M->par.rtol > 0 && M->par.ctol > 0 && M->par.maxTime > 0 && M->par.atol >= 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_rtol %g, -%smicro_ctol %g, -%smicro_max_time %g must be positive, -%smicro_atol %g non-negative",
+             HylcMicroPrefix_Private(M), (double)M->par.rtol, HylcMicroPrefix_Private(M), (double)M->par.ctol, HylcMicroPrefix_Private(M), (double)M->par.maxTime, HylcMicroPrefix_Private(M), (double)M->par.atol);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -341,7 +350,8 @@ PetscErrorCode HylcMicroSetSaddleEscape(HylcMicro M, PetscBool test, PetscInt ma
   PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
   if (maxEscapes != PETSC_DEFAULT) M->par.saddleMax = maxEscapes;
   if (tol != (PetscReal)PETSC_DEFAULT) M->par.saddleTol = tol;
-  PetscCheck(M->par.saddleMax >= 0 && M->par.saddleTol > 0 && M->par.saddleTol < 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_saddle_escapes %" PetscInt_FMT " must be non-negative, -%smicro_saddle_tol %g in (0, 1)", HylcMicroPrefix_Private(M), M->par.saddleMax, HylcMicroPrefix_Private(M), (double)M->par.saddleTol);
+  PetscCheck(M->par.saddleMax >= 0 && M->par.saddleTol > 0 && M->par.saddleTol < 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_saddle_escapes %" PetscInt_FMT " must be non-negative, -%smicro_saddle_tol %g in (0, 1)", HylcMicroPrefix_Private(M),
+             M->par.saddleMax, HylcMicroPrefix_Private(M), (double)M->par.saddleTol);
   M->par.saddleTest = (PetscBool)(test || M->par.saddleMax > 0);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -489,23 +499,30 @@ PetscErrorCode HylcMicroSetFromOptions(HylcMicro M)
   PetscFunctionBegin;
   PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
   PetscCall(PetscOptionsHasName(((PetscObject)M)->options, ((PetscObject)M)->prefix, "-micro_factor_type", &flg));
-  PetscCheck(!flg, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_factor_type was removed: choose the factorization with -%smicro_factor_pc_factor_mat_solver_type hylc|petsc|cholmod|mumps (hylc is the default; petsc is the former -%smicro_factor_type petsc)", HylcMicroPrefix_Private(M), HylcMicroPrefix_Private(M), HylcMicroPrefix_Private(M));
+  PetscCheck(!flg, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+             "-%smicro_factor_type was removed: choose the factorization with -%smicro_factor_pc_factor_mat_solver_type hylc|petsc|cholmod|mumps (hylc is the default; petsc is the former -%smicro_factor_type petsc)", HylcMicroPrefix_Private(M),
+             HylcMicroPrefix_Private(M), HylcMicroPrefix_Private(M));
   PetscObjectOptionsBegin((PetscObject)M);
   PetscCall(HylcOptionsReal("-micro_alpha_start", "Regularization schedule: alpha^ at iteration 0", "HylcMicroSetRegularization", p.alphaStart, &p.alphaStart, NULL));
   PetscCall(HylcOptionsReal("-micro_alpha_end", "Regularization schedule: alpha^ from iteration alpha_its on", "HylcMicroSetRegularization", p.alphaEnd, &p.alphaEnd, NULL));
   PetscCall(PetscOptionsInt("-micro_alpha_its", "Regularization schedule: iterations of the geometric decay", "HylcMicroSetRegularization", p.alphaIts, &p.alphaIts, NULL));
   PetscCall(PetscOptionsInt("-micro_alpha_retries", "Retries with alpha x 10 when the Newton matrix is indefinite", "HylcMicroSetRegularization", p.maxRetries, &p.maxRetries, NULL));
   PetscCall(PetscStrncpy(sched, HylcMicroAlphaSchedules[p.alphaSched], sizeof(sched)));
-  PetscCall(PetscOptionsString("-micro_alpha_schedule", "Regularization schedule of alpha^: adaptive (trust-region-like: down after good steps, up after poor or rejected ones; the default), paper (the paper's decay over alpha_its iterations) or hybrid (paper until ||M g||_inf <= alpha_switch x its initial value, then adaptive)", "HylcMicroSetRegularizationSchedule", sched, sched, sizeof(sched), &schedSet));
+  PetscCall(PetscOptionsString("-micro_alpha_schedule",
+                               "Regularization schedule of alpha^: adaptive (trust-region-like: down after good steps, up after poor or rejected ones; the default), paper (the paper's decay over alpha_its iterations) or hybrid (paper until ||M "
+                               "g||_inf <= alpha_switch x its initial value, then adaptive)",
+                               "HylcMicroSetRegularizationSchedule", sched, sched, sizeof(sched), &schedSet));
   PetscCall(HylcOptionsReal("-micro_alpha_factor", "Adaptive regularization: alpha^ / factor after a good step, x factor after a poor one", "HylcMicroSetRegularizationSchedule", p.alphaFact, &p.alphaFact, NULL));
   PetscCall(HylcOptionsReal("-micro_alpha_min", "Adaptive regularization: smallest alpha^", "HylcMicroSetRegularizationSchedule", p.alphaMin, &p.alphaMin, NULL));
   PetscCall(HylcOptionsReal("-micro_alpha_max", "Adaptive regularization: largest alpha^", "HylcMicroSetRegularizationSchedule", p.alphaMax, &p.alphaMax, NULL));
   PetscCall(HylcOptionsReal("-micro_alpha_switch", "Hybrid regularization: adaptive once ||M g||_inf <= alpha_switch x its value at the first iteration", "HylcMicroSetRegularizationSwitch", p.alphaSwitch, &p.alphaSwitch, NULL));
-  PetscCall(PetscOptionsBool("-micro_alpha_fallback", "Adaptive and hybrid regularization: a solve that does not converge is repeated from the same start with the paper schedule", "HylcMicroSetRegularizationFallback", p.alphaFallback, &p.alphaFallback, NULL));
+  PetscCall(PetscOptionsBool("-micro_alpha_fallback", "Adaptive and hybrid regularization: a solve that does not converge is repeated from the same start with the paper schedule", "HylcMicroSetRegularizationFallback", p.alphaFallback,
+                             &p.alphaFallback, NULL));
   PetscCall(HylcOptionsReal("-micro_twist_scale", "Scale mu of the twist unknowns, 0 = 1/r", "HylcMicroSetTwistScale", p.twistScale, &p.twistScale, NULL));
   PetscCall(HylcOptionsReal("-micro_step_p0", "Step limit d_max = (p0 + p1 clamp(lambda_min(I),0,1)) r: p0", "HylcMicroSetStepLimit", p.stepP0, &p.stepP0, NULL));
   PetscCall(HylcOptionsReal("-micro_step_p1", "Step limit: p1", "HylcMicroSetStepLimit", p.stepP1, &p.stepP1, NULL));
-  PetscCall(HylcOptionsReal("-micro_step_clearance", "Step limit also at most this fraction (< 1/2) of the smallest distance between yarn centerlines that may touch, so that no step crosses two yarns; 0 = off", "HylcMicroSetStepClearance", p.stepClear, &p.stepClear, NULL));
+  PetscCall(HylcOptionsReal("-micro_step_clearance", "Step limit also at most this fraction (< 1/2) of the smallest distance between yarn centerlines that may touch, so that no step crosses two yarns; 0 = off", "HylcMicroSetStepClearance",
+                            p.stepClear, &p.stepClear, NULL));
   PetscCall(HylcOptionsReal("-micro_ls_factor", "Backtracking factor of the line search", "HylcMicroSetLineSearch", p.lsFactor, &p.lsFactor, NULL));
   PetscCall(PetscOptionsInt("-micro_ls_max", "Line-search trials per iteration", "HylcMicroSetLineSearch", p.lsMax, &p.lsMax, NULL));
   PetscCall(PetscOptionsInt("-micro_max_stalls", "Consecutive line searches without decrease before the solve stops, status stalled", "HylcMicroSetLineSearch", p.maxStalls, &p.maxStalls, NULL));
@@ -513,11 +530,15 @@ PetscErrorCode HylcMicroSetFromOptions(HylcMicro M)
   PetscCall(HylcOptionsReal("-micro_atol", "Convergence also when |z| < atol k_s (k_s = Es pi r^2, a force): for tiles already at rest", "HylcMicroSetTolerances", p.atol, &p.atol, NULL));
   PetscCall(HylcOptionsReal("-micro_ctol", "Convergence: constraint residual |A y - dL| < ctol r", "HylcMicroSetTolerances", p.ctol, &p.ctol, NULL));
   PetscCall(HylcOptionsReal("-micro_max_time", "Wall-time cap per solve (s); status time_cap", "HylcMicroSetTolerances", p.maxTime, &p.maxTime, NULL));
-  PetscCall(PetscOptionsBool("-micro_factor_indefinite", "Accept the factorization of an indefinite Newton matrix if the step descends with positive curvature; false: alpha x 10 at any negative eigenvalue", "HylcMicroSetIndefinite", p.indefinite, &p.indefinite, NULL));
-  PetscCall(PetscOptionsBool("-micro_saddle_test", "Second-order test of converged states: count the negative eigenvalues of the Hessian on the constraints' tangent space (implied by -micro_saddle_escapes > 0)", "HylcMicroSetSaddleEscape", p.saddleTest, &p.saddleTest, NULL));
-  PetscCall(PetscOptionsInt("-micro_saddle_escapes", "Second-order test: escapes from saddle points (negative curvature on the constraints' tangent space) along negative curvature, per solve", "HylcMicroSetSaddleEscape", p.saddleMax, &p.saddleMax, NULL));
+  PetscCall(PetscOptionsBool("-micro_factor_indefinite", "Accept the factorization of an indefinite Newton matrix if the step descends with positive curvature; false: alpha x 10 at any negative eigenvalue", "HylcMicroSetIndefinite", p.indefinite,
+                             &p.indefinite, NULL));
+  PetscCall(PetscOptionsBool("-micro_saddle_test", "Second-order test of converged states: count the negative eigenvalues of the Hessian on the constraints' tangent space (implied by -micro_saddle_escapes > 0)", "HylcMicroSetSaddleEscape",
+                             p.saddleTest, &p.saddleTest, NULL));
+  PetscCall(
+      PetscOptionsInt("-micro_saddle_escapes", "Second-order test: escapes from saddle points (negative curvature on the constraints' tangent space) along negative curvature, per solve", "HylcMicroSetSaddleEscape", p.saddleMax, &p.saddleMax, NULL));
   PetscCall(HylcOptionsReal("-micro_saddle_tol", "Second-order test: curvature below -saddle_tol x max|diag(M H M)| is negative", "HylcMicroSetSaddleEscape", p.saddleTol, &p.saddleTol, NULL));
-  PetscCall(PetscOptionsEnum("-micro_uniaxial_gradient", "Uniaxial state (HylcMicroSolveUniaxial): dPsi/dz by the envelope theorem at each equilibrium, or by central differences of Psi (fd, 6 more solves per point)", "HylcMicroSetUniaxial", HylcMicroUniaxialGradients, (PetscEnum)p.uniGrad, (PetscEnum *)&p.uniGrad, NULL));
+  PetscCall(PetscOptionsEnum("-micro_uniaxial_gradient", "Uniaxial state (HylcMicroSolveUniaxial): dPsi/dz by the envelope theorem at each equilibrium, or by central differences of Psi (fd, 6 more solves per point)", "HylcMicroSetUniaxial",
+                             HylcMicroUniaxialGradients, (PetscEnum)p.uniGrad, (PetscEnum *)&p.uniGrad, NULL));
   PetscCall(HylcOptionsReal("-micro_uniaxial_xtol", "Uniaxial state: converged when the predicted Newton step in the lateral strains is at most this (strain, dimensionless)", "HylcMicroSetUniaxial", p.uniXtol, &p.uniXtol, NULL));
   PetscCall(PetscOptionsInt("-micro_uniaxial_max_it", "Uniaxial state: Newton steps in the lateral strains", "HylcMicroSetUniaxial", p.uniMaxIt, &p.uniMaxIt, NULL));
   PetscCall(HylcOptionsReal("-micro_uniaxial_fd_step", "Uniaxial state: difference step of the lateral Hessian and of the fd gradient (strain, dimensionless)", "HylcMicroSetUniaxial", p.uniH, &p.uniH, NULL));
@@ -532,8 +553,7 @@ PetscErrorCode HylcMicroSetFromOptions(HylcMicro M)
     PetscCall(PetscStrcmp(sched, "adaptive", &adaptive));
     PetscCall(PetscStrcmp(sched, "hybrid", &hybrid));
     PetscCheck(paper || adaptive || hybrid, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-%smicro_alpha_schedule %s: must be paper, adaptive or hybrid", HylcMicroPrefix_Private(M), sched);
-    p.alphaSched = adaptive ? HYLC_MICRO_ALPHA_ADAPTIVE : hybrid ? HYLC_MICRO_ALPHA_HYBRID
-                                                                 : HYLC_MICRO_ALPHA_PAPER;
+    p.alphaSched = adaptive ? HYLC_MICRO_ALPHA_ADAPTIVE : hybrid ? HYLC_MICRO_ALPHA_HYBRID : HYLC_MICRO_ALPHA_PAPER;
   }
   PetscCall(HylcMicroSetRegularization(M, p.alphaStart, p.alphaEnd, p.alphaIts, p.maxRetries));
   PetscCall(HylcMicroSetRegularizationSchedule(M, (HylcMicroAlphaSchedule)p.alphaSched, p.alphaFact, p.alphaMin, p.alphaMax));
@@ -589,17 +609,25 @@ PetscErrorCode HylcMicroView(HylcMicro M, PetscViewer viewer)
   PetscCall(PetscViewerASCIIPushTab(viewer));
   /* C formatting: PETSc's printf appends '.' to integral %g values */
   if (p->alphaSched == HYLC_MICRO_ALPHA_ADAPTIVE)
-    snprintf(buf, sizeof(buf), "regularization: adaptive, alpha^ from %g, / %g after good steps, x %g after poor ones, within [%g, %g], up to %d retries x 10; factorization of an indefinite K %s\n", (double)p->alphaStart, (double)p->alphaFact, (double)p->alphaFact, (double)p->alphaMin, (double)p->alphaMax, (int)p->maxRetries, "refused");
+    snprintf(buf, sizeof(buf), "regularization: adaptive, alpha^ from %g, / %g after good steps, x %g after poor ones, within [%g, %g], up to %d retries x 10; factorization of an indefinite K %s\n", (double)p->alphaStart, (double)p->alphaFact,
+             (double)p->alphaFact, (double)p->alphaMin, (double)p->alphaMax, (int)p->maxRetries, "refused");
   else if (p->alphaSched == HYLC_MICRO_ALPHA_HYBRID)
-    snprintf(buf, sizeof(buf), "regularization: hybrid, the paper schedule alpha^ %g -> %g over %d iterations (factorization of an indefinite K %s) until ||M g||_inf <= %g x its initial value, then adaptive (/ %g after good steps, x %g after poor ones, within [%g, %g], indefinite K refused); up to %d retries x 10\n", (double)p->alphaStart, (double)p->alphaEnd, (int)p->alphaIts, p->indefinite ? "accepted" : "refused", (double)p->alphaSwitch, (double)p->alphaFact, (double)p->alphaFact, (double)p->alphaMin, (double)p->alphaMax, (int)p->maxRetries);
+    snprintf(buf, sizeof(buf),
+             "regularization: hybrid, the paper schedule alpha^ %g -> %g over %d iterations (factorization of an indefinite K %s) until ||M g||_inf <= %g x its initial value, then adaptive (/ %g after good steps, x %g after poor ones, within [%g, "
+             "%g], indefinite K refused); up to %d retries x 10\n",
+             (double)p->alphaStart, (double)p->alphaEnd, (int)p->alphaIts, p->indefinite ? "accepted" : "refused", (double)p->alphaSwitch, (double)p->alphaFact, (double)p->alphaFact, (double)p->alphaMin, (double)p->alphaMax, (int)p->maxRetries);
   else
-    snprintf(buf, sizeof(buf), "regularization: paper schedule, alpha^ %g -> %g over %d iterations, up to %d retries x 10; factorization of an indefinite K %s\n", (double)p->alphaStart, (double)p->alphaEnd, (int)p->alphaIts, (int)p->maxRetries, p->indefinite ? "accepted" : "refused");
+    snprintf(buf, sizeof(buf), "regularization: paper schedule, alpha^ %g -> %g over %d iterations, up to %d retries x 10; factorization of an indefinite K %s\n", (double)p->alphaStart, (double)p->alphaEnd, (int)p->alphaIts, (int)p->maxRetries,
+             p->indefinite ? "accepted" : "refused");
   PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
-  if (p->alphaSched != HYLC_MICRO_ALPHA_PAPER) PetscCall(PetscViewerASCIIPrintf(viewer, "a solve that does not converge is %s\n", p->alphaFallback ? "repeated from the same start with the paper schedule" : "not repeated (-micro_alpha_fallback false)"));
+  if (p->alphaSched != HYLC_MICRO_ALPHA_PAPER)
+    PetscCall(PetscViewerASCIIPrintf(viewer, "a solve that does not converge is %s\n", p->alphaFallback ? "repeated from the same start with the paper schedule" : "not repeated (-micro_alpha_fallback false)"));
   if (p->stepClear > 0)
-    snprintf(buf, sizeof(buf), "twist scale mu: %s; step limit min((%g + %g clamp(lambda_min, 0, 1)) r, %g x clearance); line search x %g, %d trials, stop after %d stalls\n", p->twistScale > 0 ? "set" : "1/r", (double)p->stepP0, (double)p->stepP1, (double)p->stepClear, (double)p->lsFactor, (int)p->lsMax, (int)p->maxStalls);
+    snprintf(buf, sizeof(buf), "twist scale mu: %s; step limit min((%g + %g clamp(lambda_min, 0, 1)) r, %g x clearance); line search x %g, %d trials, stop after %d stalls\n", p->twistScale > 0 ? "set" : "1/r", (double)p->stepP0, (double)p->stepP1,
+             (double)p->stepClear, (double)p->lsFactor, (int)p->lsMax, (int)p->maxStalls);
   else
-    snprintf(buf, sizeof(buf), "twist scale mu: %s; step limit (%g + %g clamp(lambda_min, 0, 1)) r; line search x %g, %d trials, stop after %d stalls\n", p->twistScale > 0 ? "set" : "1/r", (double)p->stepP0, (double)p->stepP1, (double)p->lsFactor, (int)p->lsMax, (int)p->maxStalls);
+    snprintf(buf, sizeof(buf), "twist scale mu: %s; step limit (%g + %g clamp(lambda_min, 0, 1)) r; line search x %g, %d trials, stop after %d stalls\n", p->twistScale > 0 ? "set" : "1/r", (double)p->stepP0, (double)p->stepP1, (double)p->lsFactor,
+             (int)p->lsMax, (int)p->maxStalls);
   PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
   snprintf(buf, sizeof(buf), "convergence: |z| < %g |z0| or |z| < %g k_s, |A y - dL| < %g r; wall-time cap %g s\n", (double)p->rtol, (double)p->atol, (double)p->ctol, (double)p->maxTime);
   PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
@@ -608,7 +636,8 @@ PetscErrorCode HylcMicroView(HylcMicro M, PetscViewer viewer)
   else
     snprintf(buf, sizeof(buf), "second-order test: off (converged states may be saddle points)\n");
   PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
-  snprintf(buf, sizeof(buf), "uniaxial state: gradient %s, Newton in the lateral strains to a predicted step <= %g (or |lateral gradient| <= %g |T| when a line search fails), at most %d steps of <= %g, difference step %g, solves with rtol %g\n", HylcMicroUniaxialGradients[p->uniGrad], (double)p->uniXtol, (double)p->uniGtol, (int)p->uniMaxIt, (double)p->uniMaxStep, (double)p->uniH, (double)p->uniRtol);
+  snprintf(buf, sizeof(buf), "uniaxial state: gradient %s, Newton in the lateral strains to a predicted step <= %g (or |lateral gradient| <= %g |T| when a line search fails), at most %d steps of <= %g, difference step %g, solves with rtol %g\n",
+           HylcMicroUniaxialGradients[p->uniGrad], (double)p->uniXtol, (double)p->uniGtol, (int)p->uniMaxIt, (double)p->uniMaxStep, (double)p->uniH, (double)p->uniRtol);
   PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
   if (!M->pat)
     PetscCall(PetscViewerASCIIPrintf(viewer, "no pattern set\n"));

@@ -8,10 +8,7 @@
 #include <hylc/private/microimpl.h>
 
 /* the paper's alpha^ at iteration it: alphaStart (alphaEnd/alphaStart)^(min(it, alphaIts)/alphaIts) */
-PetscReal HylcMicroPaperAlphaHat_Private(HylcMicro M, PetscInt it)
-{
-  return M->par.alphaStart * PetscPowReal(M->par.alphaEnd / M->par.alphaStart, (PetscReal)PetscMin(it, M->par.alphaIts) / M->par.alphaIts);
-}
+PetscReal HylcMicroPaperAlphaHat_Private(HylcMicro M, PetscInt it) { return M->par.alphaStart * PetscPowReal(M->par.alphaEnd / M->par.alphaStart, (PetscReal)PetscMin(it, M->par.alphaIts) / M->par.alphaIts); }
 
 /* alpha of the Newton matrix formed at iteration it (of the whole solve) where ||M g||_inf = gmax: the
    schedule's alpha^ times gmax (at least PETSC_SMALL); at iteration 0 the schedule's state starts over */
@@ -70,7 +67,8 @@ PetscErrorCode HylcMicroRegularizationAdapt_Private(HylcMicro M, PetscBool accep
     a = PetscMin(a, HylcMicroPaperAlphaHat_Private(M, M->st.itBase + it + 1));
   }
   M->st.ahat = PetscClipInterval(a, M->par.alphaMin, M->par.alphaMax);
-  PetscCall(PetscInfo(M, "adaptive alpha^ %g -> %g (accepted %d, step limit %s, lambda %g, energy decrease %g, predicted %g)\n", (double)(M->st.alpha / M->st.gmax), (double)M->st.ahat, (int)accepted, clipped ? "active" : "inactive", (double)lambda, (double)actual, (double)pred));
+  PetscCall(PetscInfo(M, "adaptive alpha^ %g -> %g (accepted %d, step limit %s, lambda %g, energy decrease %g, predicted %g)\n", (double)(M->st.alpha / M->st.gmax), (double)M->st.ahat, (int)accepted, clipped ? "active" : "inactive", (double)lambda,
+                      (double)actual, (double)pred));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -113,7 +111,4 @@ PetscErrorCode HylcMicroRegularizationRevert_Private(HylcMicro M, PetscBool *ok)
 
 /* whether a solve that ended with status is repeated from the same start with the paper's schedule: the
    adaptive and hybrid schedules fall back (-micro_alpha_fallback) when they did not converge */
-PetscBool HylcMicroRegularizationFallback_Private(HylcMicro M, HylcMicroStatus status)
-{
-  return (PetscBool)(status != HYLC_MICRO_CONVERGED && M->par.alphaFallback && M->par.alphaSched != HYLC_MICRO_ALPHA_PAPER);
-}
+PetscBool HylcMicroRegularizationFallback_Private(HylcMicro M, HylcMicroStatus status) { return (PetscBool)(status != HYLC_MICRO_CONVERGED && M->par.alphaFallback && M->par.alphaSched != HYLC_MICRO_ALPHA_PAPER); }

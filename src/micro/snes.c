@@ -212,7 +212,8 @@ static PetscErrorCode LineSearch(SNESLineSearch ls, void *ctx)
         M->st.resolved = PETSC_TRUE;
         PetscCall(PetscInfo(M, "rejected step with first-order decrease %g below the energy's rounding (E %g): converged to the energy's resolution\n", (double)PetscRealPart(fy), (double)M->st.E0));
       } else
-        PetscCall(PetscInfo(M, "rejected step with first-order decrease %g below the energy's rounding (E %g), shortened by alpha (%g of the model's curvature along it): a stall\n", (double)PetscRealPart(fy), (double)M->st.E0, (double)(M->st.alpha * PetscRealPart(yy) / PetscRealPart(yky))));
+        PetscCall(PetscInfo(M, "rejected step with first-order decrease %g below the energy's rounding (E %g), shortened by alpha (%g of the model's curvature along it): a stall\n", (double)PetscRealPart(fy), (double)M->st.E0,
+                            (double)(M->st.alpha * PetscRealPart(yy) / PetscRealPart(yky))));
     }
     M->st.stalls++;
     M->st.stallsTotal++;

@@ -207,7 +207,8 @@ static PetscErrorCode SolveUniaxial(HylcMicro M, HylcUniaxialDirection dir, Pets
   PetscValidPointer(res, 6);
   PetscCheck(dir == HYLC_UNIAXIAL_X || dir == HYLC_UNIAXIAL_Y, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "Uniaxial direction %d: must be x (0) or y (1)", (int)dir);
   PetscCheck(s >= 0 && s < 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "Uniaxial stretch %g is outside [0, 1): a uniaxial state is a tension test (a compressed strip buckles) within the sampled stretches", (double)s);
-  PetscCheck(!lat0 || (!PetscIsInfOrNanReal(lat0[0]) && !PetscIsInfOrNanReal(lat0[1]) && PetscAbsReal(lat0[0]) < 0.95 && lat0[1] > -0.95 && lat0[1] < 1e3), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "Uniaxial starting lateral strains (%g, %g): need |sa| < 0.95 and a stretch in (-0.95, 1e3)", lat0 ? (double)lat0[0] : 0.0, lat0 ? (double)lat0[1] : 0.0);
+  PetscCheck(!lat0 || (!PetscIsInfOrNanReal(lat0[0]) && !PetscIsInfOrNanReal(lat0[1]) && PetscAbsReal(lat0[0]) < 0.95 && lat0[1] > -0.95 && lat0[1] < 1e3), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+             "Uniaxial starting lateral strains (%g, %g): need |sa| < 0.95 and a stretch in (-0.95, 1e3)", lat0 ? (double)lat0[0] : 0.0, lat0 ? (double)lat0[1] : 0.0);
   PetscCall(PetscTime(&t0));
   PetscCall(HylcMicroSetUp(M));
   PetscCall(PetscMemzero(res, sizeof(*res)));
@@ -356,7 +357,9 @@ PetscErrorCode HylcMicroUniaxialResultView(const HylcMicroUniaxialResult *r, Pet
   PetscFunctionBegin;
   LateralOf(r->dir, r->grad, gl);
   /* C formatting: PETSc's printf appends '.' to integral %g values */
-  snprintf(buf, sizeof(buf), "uniaxial %s: s %.6g T %.9e N/m sa %.6e %s %.6e psi %.10e lateral gradient %.2e %.2e N/m step %.1e %s; %d Newton steps, %d solves (%d not converged), %d micro iterations, %.2f s\n", HylcUniaxialDirections[r->dir], (double)r->s, (double)r->T, (double)r->lateral[0], r->dir == HYLC_UNIAXIAL_X ? "sy" : "sx", (double)r->lateral[1], (double)r->psi, (double)gl[0], (double)gl[1], (double)r->step, r->converged ? (r->gradientStop ? "converged (gradient test)" : "converged") : "NOT CONVERGED", (int)r->iterations, (int)r->solves, (int)r->failedSolves, (int)r->microIterations, r->time);
+  snprintf(buf, sizeof(buf), "uniaxial %s: s %.6g T %.9e N/m sa %.6e %s %.6e psi %.10e lateral gradient %.2e %.2e N/m step %.1e %s; %d Newton steps, %d solves (%d not converged), %d micro iterations, %.2f s\n", HylcUniaxialDirections[r->dir],
+           (double)r->s, (double)r->T, (double)r->lateral[0], r->dir == HYLC_UNIAXIAL_X ? "sy" : "sx", (double)r->lateral[1], (double)r->psi, (double)gl[0], (double)gl[1], (double)r->step,
+           r->converged ? (r->gradientStop ? "converged (gradient test)" : "converged") : "NOT CONVERGED", (int)r->iterations, (int)r->solves, (int)r->failedSolves, (int)r->microIterations, r->time);
   PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

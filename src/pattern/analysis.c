@@ -125,7 +125,10 @@ PetscErrorCode HylcPatternMinSegmentDistance(HylcPattern p, PetscReal arcFactor,
   const PetscReal rx = PetscCeilReal((hi[0] - lo[0] + cut) / p->px), ry = PetscCeilReal((hi[1] - lo[1] + cut) / p->py);
   if (!(rx <= HYLC_PATTERN_MAX_RINGS && ry <= HYLC_PATTERN_MAX_RINGS && (2 * rx + 1) * (2 * ry + 1) <= HYLC_PATTERN_MAX_IMAGES)) {
     PetscCall(PetscFree(seg));
-    SETERRQ(PetscObjectComm((PetscObject)p), PETSC_ERR_USER_INPUT, "%s%speriods px = %g, py = %g are too small for a tile whose vertices span %g x %g m with contact range 20 r = %g m: %.3g x %.3g periodic images to search (at most %d x %d, %d in all); not a physical tile", p->filename[0] ? p->filename : "", p->filename[0] ? ": " : "pattern: ", (double)p->px, (double)p->py, (double)(hi[0] - lo[0]), (double)(hi[1] - lo[1]), (double)cut, (double)(2 * rx + 1), (double)(2 * ry + 1), 2 * HYLC_PATTERN_MAX_RINGS + 1, 2 * HYLC_PATTERN_MAX_RINGS + 1, HYLC_PATTERN_MAX_IMAGES);
+    SETERRQ(PetscObjectComm((PetscObject)p), PETSC_ERR_USER_INPUT,
+            "%s%speriods px = %g, py = %g are too small for a tile whose vertices span %g x %g m with contact range 20 r = %g m: %.3g x %.3g periodic images to search (at most %d x %d, %d in all); not a physical tile",
+            p->filename[0] ? p->filename : "", p->filename[0] ? ": " : "pattern: ", (double)p->px, (double)p->py, (double)(hi[0] - lo[0]), (double)(hi[1] - lo[1]), (double)cut, (double)(2 * rx + 1), (double)(2 * ry + 1),
+            2 * HYLC_PATTERN_MAX_RINGS + 1, 2 * HYLC_PATTERN_MAX_RINGS + 1, HYLC_PATTERN_MAX_IMAGES);
   }
   const PetscInt mx = (PetscInt)rx, my = (PetscInt)ry;
   for (PetscInt sx = -mx; sx <= mx; sx++) {

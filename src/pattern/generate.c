@@ -142,8 +142,10 @@ static PetscErrorCode GenerateWoven(HylcPattern p, const HylcPatternGenParams *g
   PetscCheck(r > 0, comm, PETSC_ERR_USER_INPUT, "-pattern_radius must be positive, got %g", (double)r);
   PetscCheck(nx % rep == 0 && ny % rep == 0, comm, PETSC_ERR_USER_INPUT, "-pattern_size %" PetscInt_FMT ",%" PetscInt_FMT ": a %s weave repeats every %" PetscInt_FMT " threads; use multiples of %" PetscInt_FMT, nx, ny, type, rep, rep);
   PetscCheck(s >= 2 * r * (1 + gap), comm, PETSC_ERR_USER_INPUT, "-pattern_spacing %g m is below the yarn diameter plus gap, %g m: neighbouring parallel yarns would overlap", (double)s, (double)(2 * r * (1 + gap)));
-  PetscCheck(0.25 * s * s + h * h >= R * R, comm, PETSC_ERR_USER_INPUT, "-pattern_spacing %g m (%.3g r) is too small for crimped crossings with gap %g: need at least %.4g r", (double)s, (double)(s / r), (double)gap, (double)(PetscSqrtReal(3.0) * R / r));
-  PetscCheck(s / sl <= 1e4 && 2.0 * nx * ny * PetscCeilReal(s / sl) <= 1e8, comm, PETSC_ERR_USER_INPUT, "The %s weave of size %" PetscInt_FMT ",%" PetscInt_FMT " with -pattern_seglen %g m would have %.3g vertices (at most 1e8, and at most 1e4 per spacing)", type, nx, ny, (double)sl, 2.0 * nx * ny * PetscCeilReal(s / sl));
+  PetscCheck(0.25 * s * s + h * h >= R * R, comm, PETSC_ERR_USER_INPUT, "-pattern_spacing %g m (%.3g r) is too small for crimped crossings with gap %g: need at least %.4g r", (double)s, (double)(s / r), (double)gap,
+             (double)(PetscSqrtReal(3.0) * R / r));
+  PetscCheck(s / sl <= 1e4 && 2.0 * nx * ny * PetscCeilReal(s / sl) <= 1e8, comm, PETSC_ERR_USER_INPUT,
+             "The %s weave of size %" PetscInt_FMT ",%" PetscInt_FMT " with -pattern_seglen %g m would have %.3g vertices (at most 1e8, and at most 1e4 per spacing)", type, nx, ny, (double)sl, 2.0 * nx * ny * PetscCeilReal(s / sl));
   const PetscInt  m  = PetscMax(2, (PetscInt)PetscCeilReal(s / sl - 1e-9)); /* segments per spacing */
   const PetscReal px = nx * s, py = ny * s;
   PetscInt       *nverts, *winding, *state;
@@ -181,7 +183,8 @@ static PetscErrorCode GenerateWoven(HylcPattern p, const HylcPatternGenParams *g
   {
     PetscReal dmin;
     PetscCall(HylcPatternMinSegmentDistance(p, p->viewExcludeArc, &dmin, NULL));
-    PetscCheck(dmin >= 2 * r, comm, PETSC_ERR_USER_INPUT, "The generated %s weave interpenetrates: minimum distance %.4g r < 2 r; increase -pattern_gap (%g) or -pattern_spacing (%.3g r), or decrease -pattern_seglen", type, (double)(dmin / r), (double)gap, (double)(s / r));
+    PetscCheck(dmin >= 2 * r, comm, PETSC_ERR_USER_INPUT, "The generated %s weave interpenetrates: minimum distance %.4g r < 2 r; increase -pattern_gap (%g) or -pattern_spacing (%.3g r), or decrease -pattern_seglen", type, (double)(dmin / r),
+               (double)gap, (double)(s / r));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -238,7 +241,8 @@ PetscErrorCode HylcPatternGenerate(HylcPattern p, HylcPatternType type, const Hy
     const char     *nam[] = {"spacing", "gap", "wale", "course", "depth", "seglen"};
     PetscCheck(PetscIsNormalReal(g->radius) && g->radius > 0, comm, PETSC_ERR_USER_INPUT, "Generator %s: yarn radius (-pattern_radius) must be positive and finite, got %g", t, (double)g->radius);
     for (int k = 0; k < 6; k++) PetscCheck(len[k] == 0 || (PetscIsNormalReal(len[k]) && len[k] > 0), comm, PETSC_ERR_USER_INPUT, "Generator %s: -pattern_%s must be positive and finite, or 0 for the default; got %g", t, nam[k], (double)len[k]);
-    PetscCheck(g->size[0] >= 0 && g->size[1] >= 0 && g->size[0] <= HYLC_PATTERN_MAX_SIZE && g->size[1] <= HYLC_PATTERN_MAX_SIZE, comm, PETSC_ERR_USER_INPUT, "Generator %s: tile size (-pattern_size) %" PetscInt_FMT ",%" PetscInt_FMT " out of range: integers from 1 to %d (0: the smallest repeat)", t, g->size[0], g->size[1], HYLC_PATTERN_MAX_SIZE);
+    PetscCheck(g->size[0] >= 0 && g->size[1] >= 0 && g->size[0] <= HYLC_PATTERN_MAX_SIZE && g->size[1] <= HYLC_PATTERN_MAX_SIZE, comm, PETSC_ERR_USER_INPUT,
+               "Generator %s: tile size (-pattern_size) %" PetscInt_FMT ",%" PetscInt_FMT " out of range: integers from 1 to %d (0: the smallest repeat)", t, g->size[0], g->size[1], HYLC_PATTERN_MAX_SIZE);
   }
   PetscCall(HylcPatternFindSource_Private(t, &generator));
   PetscCall(PetscLogEventBegin(HYLC_PatternGenerate, p, 0, 0, 0));

@@ -54,8 +54,7 @@ int HylcKnitSample(HylcKnitType type, const HylcKnitParams *p, int *nyarns, int 
   if (errmsg && errlen > 0) errmsg[0] = 0;
   if (!p || !nyarns || !nverts || !pts || !px || !py) return KnitError(errmsg, errlen, "knit: NULL argument");
   if (type != HYLC_KNIT_STOCKINETTE && type != HYLC_KNIT_RIB) return KnitError(errmsg, errlen, "knit: unknown knit type %d", (int)type);
-  if (CheckLength(p->r, "r", errmsg, errlen) || CheckLength(p->wale, "wale", errmsg, errlen) || CheckLength(p->course, "course", errmsg, errlen) ||
-      CheckLength(p->depth, "depth", errmsg, errlen) || CheckLength(p->seglen, "seglen", errmsg, errlen))
+  if (CheckLength(p->r, "r", errmsg, errlen) || CheckLength(p->wale, "wale", errmsg, errlen) || CheckLength(p->course, "course", errmsg, errlen) || CheckLength(p->depth, "depth", errmsg, errlen) || CheckLength(p->seglen, "seglen", errmsg, errlen))
     return 1;
   if (!(p->r > 0)) return KnitError(errmsg, errlen, "knit: yarn radius r = %g must be > 0", p->r);
   if (p->nwales < 1) return KnitError(errmsg, errlen, "knit: nwales = %d must be >= 1", p->nwales);

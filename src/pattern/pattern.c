@@ -377,9 +377,11 @@ PetscErrorCode HylcPatternSetFromOptions(HylcPattern p)
   PetscCall(HylcOptionsIntArray("-pattern_size", "Generators: tile size nx,ny (each 1 to " HYLC_STR(HYLC_PATTERN_MAX_SIZE) ") in threads (wovens) or wales,courses (knits); default the smallest repeat", "HylcPatternGenerate", p->gen.size, &n, &flg));
   nsize   = n;
   sizeset = flg;
-  PetscCall(HylcOptionsReal("-pattern_density", "Volumetric yarn density for the summary's area density (kg/m^3); 0 = 0.12 kg/m^2 / r (120 kg/m^3 at r = 1 mm), the rule of hylc-fit, hylc-sample's raw export and the paper's tables", "HylcPatternGetAreaDensity", p->viewDensity, &p->viewDensity, &set[7]));
+  PetscCall(HylcOptionsReal("-pattern_density", "Volumetric yarn density for the summary's area density (kg/m^3); 0 = 0.12 kg/m^2 / r (120 kg/m^3 at r = 1 mm), the rule of hylc-fit, hylc-sample's raw export and the paper's tables",
+                            "HylcPatternGetAreaDensity", p->viewDensity, &p->viewDensity, &set[7]));
   PetscCall(HylcOptionsReal("-pattern_exclude_arc", "Summary: same-yarn segment pairs closer than this rest arc length (units of r) are not contacts", "HylcPatternMinSegmentDistance", p->viewExcludeArc, &p->viewExcludeArc, &set[8]));
-  PetscCall(PetscOptionsBool("-pattern_consistent_periods", "Loader: replace the stored periods by the ones the rest lengths of the periodic edges imply (basket.pyp, docs/method.md §2.1b)", "HylcPatternLoad", p->consistentPeriods, &p->consistentPeriods, NULL));
+  PetscCall(PetscOptionsBool("-pattern_consistent_periods", "Loader: replace the stored periods by the ones the rest lengths of the periodic edges imply (basket.pyp, docs/method.md §2.1b)", "HylcPatternLoad", p->consistentPeriods,
+                             &p->consistentPeriods, NULL));
   PetscCall(PetscObjectProcessOptionsHandlers((PetscObject)p, PetscOptionsObject));
   PetscOptionsEnd();
   /* checked after PetscOptionsEnd(), so that an error leaves nothing allocated behind */
@@ -695,7 +697,8 @@ PetscErrorCode HylcPatternDuplicate(HylcPattern p, HylcPattern *newp)
   edges are given by next[v] and shift[2v] of the edge leaving each vertex. Validates connectivity,
   but not geometry (the .pyp reader does that). Collective; the same data on every rank.
 @*/
-PetscErrorCode HylcPatternSetData(HylcPattern p, PetscInt nv, PetscReal px, PetscReal py, PetscReal r, const PetscReal X[], const PetscReal theta[], const PetscInt next[], const PetscInt shift[], const PetscReal restLength[], const PetscReal restKappa[], const PetscReal restTwist[], const PetscReal refD1[], const PetscReal refTwist[])
+PetscErrorCode HylcPatternSetData(HylcPattern p, PetscInt nv, PetscReal px, PetscReal py, PetscReal r, const PetscReal X[], const PetscReal theta[], const PetscInt next[], const PetscInt shift[], const PetscReal restLength[],
+                                  const PetscReal restKappa[], const PetscReal restTwist[], const PetscReal refD1[], const PetscReal refTwist[])
 {
   PetscFunctionBegin;
   PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);

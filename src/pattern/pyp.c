@@ -5,15 +5,7 @@
 #include <errno.h>
 #include <stdlib.h>
 
-typedef enum { BLK_PATTERN,
-               BLK_Q,
-               BLK_E,
-               BLK_RL,
-               BLK_RK,
-               BLK_RT,
-               BLK_REFD1,
-               BLK_REFT,
-               NBLK } PypBlock;
+typedef enum { BLK_PATTERN, BLK_Q, BLK_E, BLK_RL, BLK_RK, BLK_RT, BLK_REFD1, BLK_REFT, NBLK } PypBlock;
 
 static const char *const BlockName[NBLK] = {"pattern", "Q", "E", "RL", "RK", "RT", "RefD1", "RefT"};
 static const int         BlockCols[NBLK] = {4, 4, 4, 1, 2, 1, 3, 1};
@@ -140,12 +132,14 @@ static PetscErrorCode PypParse(HylcPattern p, const char fname[], char *text, Py
     PetscCheck(r > 0, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": yarn radius must be positive, got %g", fname, ln, (double)r);
     /* some lattice translate of every yarn is another yarn within max(px, py) of it: a radius that large
        means yarns overlapping their own periodic images by more than a radius */
-    PetscCheck(r < PetscMax(px, py), comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": yarn radius %s is not smaller than the periods (px = %g, py = %g): every yarn would overlap its periodic images; not a physical tile", fname, ln, (snprintf(b0, sizeof(b0), "%.9g", (double)r), b0), (double)px, (double)py);
+    PetscCheck(r < PetscMax(px, py), comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": yarn radius %s is not smaller than the periods (px = %g, py = %g): every yarn would overlap its periodic images; not a physical tile", fname, ln,
+               (snprintf(b0, sizeof(b0), "%.9g", (double)r), b0), (double)px, (double)py);
     PetscCheck(IsIntIn(h[3], 1, PETSC_MAX_INT), comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": num_vertedges must be a positive integer, got %s", fname, ln, Num(b0, h[3]));
     nv = (PetscInt)h[3];
   }
   for (int b = 1; b < NBLK; b++)
-    PetscCheck(blk[b].nrows == nv, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": block *%s has %" PetscInt_FMT " rows, expected %" PetscInt_FMT " (num_vertedges of *pattern at line %" PetscInt_FMT ")", fname, blk[b].header, BlockName[b], blk[b].nrows, nv, blk[BLK_PATTERN].header);
+    PetscCheck(blk[b].nrows == nv, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": block *%s has %" PetscInt_FMT " rows, expected %" PetscInt_FMT " (num_vertedges of *pattern at line %" PetscInt_FMT ")", fname, blk[b].header, BlockName[b],
+               blk[b].nrows, nv, blk[BLK_PATTERN].header);
 
   PetscCall(HylcPatternAllocate_Private(p, nv));
   p->px     = px;
@@ -169,10 +163,13 @@ static PetscErrorCode PypParse(HylcPattern p, const char fname[], char *text, Py
     const PetscReal *e  = blk[BLK_E].val + 4 * k;
     const PetscInt   ln = blk[BLK_E].line[k];
     PetscCheck(IsIntIn(e[0], 0, nv) && IsIntIn(e[1], 0, nv), comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": edge vertex index (%s, %s) out of range: vertices are integers in [0, %" PetscInt_FMT ")", fname, ln, Num(b0, e[0]), Num(b1, e[1]), nv);
-    PetscCheck(e[2] == PetscFloorReal(e[2]) && e[3] == PetscFloorReal(e[3]) && PetscAbsReal(e[2]) < 1e6 && PetscAbsReal(e[3]) < 1e6, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": periodic offsets dx dy must be integers, got (%s, %s)", fname, ln, Num(b0, e[2]), Num(b1, e[3]));
+    PetscCheck(e[2] == PetscFloorReal(e[2]) && e[3] == PetscFloorReal(e[3]) && PetscAbsReal(e[2]) < 1e6 && PetscAbsReal(e[3]) < 1e6, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": periodic offsets dx dy must be integers, got (%s, %s)", fname, ln,
+               Num(b0, e[2]), Num(b1, e[3]));
     const PetscInt v0 = (PetscInt)e[0], v1 = (PetscInt)e[1];
-    PetscCheck(p->next[v0] < 0, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": vertex %" PetscInt_FMT " has a second outgoing edge (the first is at line %" PetscInt_FMT "); every vertex needs exactly one outgoing and one incoming edge", fname, ln, v0, blk[BLK_E].line[erow[v0]]);
-    PetscCheck(p->prev[v1] < 0, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": vertex %" PetscInt_FMT " has a second incoming edge (the first is at line %" PetscInt_FMT "); every vertex needs exactly one outgoing and one incoming edge", fname, ln, v1, blk[BLK_E].line[erow[p->prev[v1]]]);
+    PetscCheck(p->next[v0] < 0, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": vertex %" PetscInt_FMT " has a second outgoing edge (the first is at line %" PetscInt_FMT "); every vertex needs exactly one outgoing and one incoming edge", fname,
+               ln, v0, blk[BLK_E].line[erow[v0]]);
+    PetscCheck(p->prev[v1] < 0, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": vertex %" PetscInt_FMT " has a second incoming edge (the first is at line %" PetscInt_FMT "); every vertex needs exactly one outgoing and one incoming edge", fname,
+               ln, v1, blk[BLK_E].line[erow[p->prev[v1]]]);
     p->next[v0]          = v1;
     p->prev[v1]          = v0;
     p->shift[2 * v0]     = (PetscInt)e[2];
@@ -228,7 +225,8 @@ static PetscErrorCode PypParse(HylcPattern p, const char fname[], char *text, Py
     const PetscReal cosang = PetscAbsReal(HylcDot3(d1, t)) / n1;
     /* re-orthonormalize only what needs it, so that write + read reproduces the numbers exactly */
     const PetscReal perp = (cosang > 1e-10 || PetscAbsReal(n1 - 1) > 1e-10) ? HylcOrthonormalizeDirector(t, d1) : 1.0;
-    PetscCheck(perp >= 0.1, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": reference director of the edge leaving vertex %" PetscInt_FMT " is not perpendicular to its edge (|d1.t|/|d1| = %.4g; its perpendicular part is only %.3g of |d1|)", fname, blk[BLK_REFD1].line[v], v, (double)cosang, (double)perp);
+    PetscCheck(perp >= 0.1, comm, PETSC_ERR_USER_INPUT, "%s:%" PetscInt_FMT ": reference director of the edge leaving vertex %" PetscInt_FMT " is not perpendicular to its edge (|d1.t|/|d1| = %.4g; its perpendicular part is only %.3g of |d1|)", fname,
+               blk[BLK_REFD1].line[v], v, (double)cosang, (double)perp);
     if (cosang > 1e-3) {
       nwarnD1++;
       worstD1 = PetscMax(worstD1, cosang);
@@ -407,8 +405,10 @@ PetscErrorCode HylcPatternWrite(HylcPattern p, const char fname[])
     if (!code) {
       /* the tile's state in the header's comment, which every reader skips; a pattern read without the
          record was taken as its own reference state, and is written as one */
-      fprintf(fp, "*pattern # px py radius num_vertedges; hylc state: %s\n%.17g %.17g %.17g %d\n\n", p->state == HYLC_PATTERN_STATE_GENERATED ? "generated (not a reference state: hylc-sample computes one)" : p->state == HYLC_PATTERN_STATE_EQUILIBRIUM ? "equilibrium (a solved tile under a strain, not a reference state)"
-                                                                                                                                                                                                                                                           : "reference",
+      fprintf(fp, "*pattern # px py radius num_vertedges; hylc state: %s\n%.17g %.17g %.17g %d\n\n",
+              p->state == HYLC_PATTERN_STATE_GENERATED     ? "generated (not a reference state: hylc-sample computes one)"
+              : p->state == HYLC_PATTERN_STATE_EQUILIBRIUM ? "equilibrium (a solved tile under a strain, not a reference state)"
+                                                           : "reference",
               (double)p->px, (double)p->py, (double)p->radius, (int)n);
       fprintf(fp, "*Q # dofs: x y z t\n");
       for (PetscInt v = 0; v < n; v++) fprintf(fp, "%.17g %.17g %.17g %.17g\n", (double)p->X[3 * v], (double)p->X[3 * v + 1], (double)p->X[3 * v + 2], (double)p->theta[v]);

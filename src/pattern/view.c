@@ -26,8 +26,10 @@ PetscErrorCode HylcPatternView(HylcPattern p, PetscViewer viewer)
   PetscCall(PetscViewerASCIIPushTab(viewer));
   if (p->filename[0]) PetscCall(PetscViewerASCIIPrintf(viewer, "file: %s\n", p->filename));
   if (p->hasdata)
-    PetscCall(PetscViewerASCIIPrintf(viewer, "state: %s\n", p->state == HYLC_PATTERN_STATE_UNRECORDED ? "not recorded in the file (taken as its own reference state)" : p->state == HYLC_PATTERN_STATE_GENERATED ? "generated (not a reference state)"
-                                                                                                                                                                                                                 : HylcPatternStates[p->state]));
+    PetscCall(PetscViewerASCIIPrintf(viewer, "state: %s\n",
+                                     p->state == HYLC_PATTERN_STATE_UNRECORDED  ? "not recorded in the file (taken as its own reference state)"
+                                     : p->state == HYLC_PATTERN_STATE_GENERATED ? "generated (not a reference state)"
+                                                                                : HylcPatternStates[p->state]));
   if (!p->hasdata) {
     PetscCall(PetscViewerASCIIPrintf(viewer, "(no data: not set up)\n"));
     PetscCall(PetscViewerASCIIPopTab(viewer));
@@ -38,11 +40,14 @@ PetscErrorCode HylcPatternView(HylcPattern p, PetscViewer viewer)
   PetscCall(PetscViewerASCIIPrintf(viewer, "periods: %.9g %.9g\n", (double)p->px, (double)p->py));
   PetscCall(PetscViewerASCIIPrintf(viewer, "radius: %.9g\n", (double)p->radius));
   for (PetscInt l = 0; l < p->nloops; l++)
-    PetscCall(PetscViewerASCIIPrintf(viewer, "loop %" PetscInt_FMT ": %" PetscInt_FMT " vertices, winding (%" PetscInt_FMT ", %" PetscInt_FMT "), rest length %.6g m\n", l, p->loopStart[l + 1] - p->loopStart[l], p->winding[2 * l], p->winding[2 * l + 1], (double)p->loopLen[l]));
+    PetscCall(PetscViewerASCIIPrintf(viewer, "loop %" PetscInt_FMT ": %" PetscInt_FMT " vertices, winding (%" PetscInt_FMT ", %" PetscInt_FMT "), rest length %.6g m\n", l, p->loopStart[l + 1] - p->loopStart[l], p->winding[2 * l],
+                                     p->winding[2 * l + 1], (double)p->loopLen[l]));
   PetscCall(PetscViewerASCIIPrintf(viewer, "yarn length: %.6g m (rest %.6g m)\n", (double)L, (double)R));
-  PetscCall(PetscViewerASCIIPrintf(viewer, "area density: %.6g kg/m^2 (volumetric density %.6g kg/m^3%s)\n", (double)rhoA, (double)(p->viewDensity > 0 ? p->viewDensity : HylcDefaultYarnDensity(p->radius)), p->viewDensity > 0 ? ", -pattern_density" : ": 0.12 kg/m^2 / r, as hylc-fit and the tables"));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "area density: %.6g kg/m^2 (volumetric density %.6g kg/m^3%s)\n", (double)rhoA, (double)(p->viewDensity > 0 ? p->viewDensity : HylcDefaultYarnDensity(p->radius)),
+                                   p->viewDensity > 0 ? ", -pattern_density" : ": 0.12 kg/m^2 / r, as hylc-fit and the tables"));
   if (dmin < PETSC_INFINITY)
-    PetscCall(PetscViewerASCIIPrintf(viewer, "min distance: %.4f r (segments %" PetscInt_FMT " and %" PetscInt_FMT " shifted by (%" PetscInt_FMT ", %" PetscInt_FMT "); same-yarn pairs within %.6g r of rest arc excluded)\n", (double)(dmin / p->radius), pair[0], pair[1], pair[2], pair[3], (double)p->viewExcludeArc));
+    PetscCall(PetscViewerASCIIPrintf(viewer, "min distance: %.4f r (segments %" PetscInt_FMT " and %" PetscInt_FMT " shifted by (%" PetscInt_FMT ", %" PetscInt_FMT "); same-yarn pairs within %.6g r of rest arc excluded)\n",
+                                     (double)(dmin / p->radius), pair[0], pair[1], pair[2], pair[3], (double)p->viewExcludeArc));
   else
     PetscCall(PetscViewerASCIIPrintf(viewer, "min distance: > 20 r (no segment pair within 20 r)\n"));
   PetscCall(PetscViewerASCIIPopTab(viewer));
@@ -88,7 +93,8 @@ PetscErrorCode HylcPatternWriteVTK(HylcPattern p, const char fname[], PetscInt n
   PetscValidHeaderSpecific(p, HYLC_PATTERN_CLASSID, 1);
   PetscCheck(p->hasdata, comm, PETSC_ERR_ARG_WRONGSTATE, "Pattern has no data to write");
   PetscCheck(ntx >= 1 && nty >= 1, comm, PETSC_ERR_USER_INPUT, "VTK tiling must be at least 1x1, got %" PetscInt_FMT "x%" PetscInt_FMT, ntx, nty);
-  PetscCheck((double)ntx * (double)nty * (double)(p->nv + p->nloops) <= 1e8, comm, PETSC_ERR_USER_INPUT, "VTK tiling %" PetscInt_FMT "x%" PetscInt_FMT " of a %" PetscInt_FMT "-vertex tile gives %.3g points, more than 1e8", ntx, nty, p->nv, (double)ntx * (double)nty * (double)(p->nv + p->nloops));
+  PetscCheck((double)ntx * (double)nty * (double)(p->nv + p->nloops) <= 1e8, comm, PETSC_ERR_USER_INPUT, "VTK tiling %" PetscInt_FMT "x%" PetscInt_FMT " of a %" PetscInt_FMT "-vertex tile gives %.3g points, more than 1e8", ntx, nty, p->nv,
+             (double)ntx * (double)nty * (double)(p->nv + p->nloops));
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (rank == 0) {
     FILE          *fp     = NULL;

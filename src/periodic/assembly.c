@@ -486,8 +486,7 @@ static PetscErrorCode PeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts
   }
   PetscCall(PetscLogEventBegin(HYLC_TileContact, 0, 0, 0, 0));
   PetscCall(PetscTime(&tc0));
-  const PetscInt   np = *bad ? 0 : H ? P->coonpairs
-                                     : P->npairs; /* with a Hessian: every pair of its structure (the others give 0) */
+  const PetscInt   np = *bad ? 0 : H ? P->coonpairs : P->npairs; /* with a Hessian: every pair of its structure (the others give 0) */
   const PetscInt  *pl = H ? P->coopairs : P->pairs;
   const PetscReal *pw = H ? P->coopw : P->pw;
   for (PetscInt p = 0; p < np; p++) {
@@ -629,7 +628,8 @@ PetscErrorCode HylcPeriodicEvaluateStrainDerivative(HylcPeriodic P, int mask, Pe
   PetscFunctionBegin;
   PetscValidHeaderSpecific(P, HYLC_PERIODIC_CLASSID, 1);
   PetscCheck(P->setup, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE, "Call HylcPeriodicSetUp() first");
-  PetscCheck(P->z[3] == 0 && P->z[4] == 0 && P->z[5] == 0, PETSC_COMM_SELF, PETSC_ERR_SUP, "The strain derivative of the tile energy is implemented for in-plane strains only (II = 0), got II = (%g, %g, %g)", (double)P->z[3], (double)P->z[4], (double)P->z[5]);
+  PetscCheck(P->z[3] == 0 && P->z[4] == 0 && P->z[5] == 0, PETSC_COMM_SELF, PETSC_ERR_SUP, "The strain derivative of the tile energy is implemented for in-plane strains only (II = 0), got II = (%g, %g, %g)", (double)P->z[3], (double)P->z[4],
+             (double)P->z[5]);
   PetscCall(PetscCalloc2(3 * P->nfv, &P->gfull, gy ? 0 : 4 * P->N, &gw)); /* the element gradients are formed only with a reduced gradient */
   ierr = PeriodicEvaluate(P, mask, parts, gy ? gy : gw, NULL, &bad, &v);
   if (!ierr && !bad) {

@@ -54,7 +54,8 @@ static PetscErrorCode ReduceConstraints(HylcPeriodic P, PetscInt *m)
     const PetscReal *a  = P->A + i * n;
     PetscReal        a2 = 0, r2 = 0, scale = 0;
     for (PetscInt k = 0; k < n; k++) scale = PetscMax(scale, PetscAbsReal(a[k]));
-    PetscCheck(scale > 0 && !PetscIsInfOrNanReal(scale) && !PetscIsInfOrNanReal(P->dL[i]), PETSC_COMM_SELF, PETSC_ERR_FP, "Constraint row %" PetscInt_FMT " is zero or not finite (|a| max %g, dL %g): is the strain representable?", i, (double)scale, (double)P->dL[i]);
+    PetscCheck(scale > 0 && !PetscIsInfOrNanReal(scale) && !PetscIsInfOrNanReal(P->dL[i]), PETSC_COMM_SELF, PETSC_ERR_FP, "Constraint row %" PetscInt_FMT " is zero or not finite (|a| max %g, dL %g): is the strain representable?", i, (double)scale,
+               (double)P->dL[i]);
     for (PetscInt k = 0; k < n; k++) {
       r[k] = a[k] / scale; /* scaled: no overflow or underflow in the squares */
       a2 += r[k] * r[k];
@@ -122,9 +123,7 @@ static PetscErrorCode ConstraintLayout(HylcPeriodic P, PetscInt *nloops, PetscIn
   PetscCall(HylcPatternGetNumLoops(P->pat, nloops));
   PetscCall(PetscMalloc2(*nloops, fam, *nloops, sgn));
   if (P->slide == HYLC_SLIDE_PER_FAMILY) PetscCall(SlideFamilies(P->pat, *nloops, *fam, *sgn, &nfam));
-  *m = 3 + (P->slide == HYLC_SLIDE_PER_YARN ? *nloops : P->slide == HYLC_SLIDE_PER_FAMILY ? nfam
-                                                    : P->slide == HYLC_SLIDE_GLOBAL       ? 1
-                                                                                          : 0);
+  *m = 3 + (P->slide == HYLC_SLIDE_PER_YARN ? *nloops : P->slide == HYLC_SLIDE_PER_FAMILY ? nfam : P->slide == HYLC_SLIDE_GLOBAL ? 1 : 0);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -260,10 +260,15 @@ PetscErrorCode HylcPeriodicSetFromOptions(HylcPeriodic P)
   marginFactor = P->marginFactor;
   crtol        = P->crtol;
   PetscObjectOptionsBegin((PetscObject)P);
-  PetscCall(PetscOptionsEnum("-periodic_slide", "Slide constraint: none, global (one row), per_yarn (one row per yarn loop) or per_family (one row per yarn family, each yarn in its canonical direction)", "HylcPeriodicSetSlideConstraint", HylcSlideConstraints, sl, &sl, NULL));
+  PetscCall(PetscOptionsEnum("-periodic_slide", "Slide constraint: none, global (one row), per_yarn (one row per yarn loop) or per_family (one row per yarn family, each yarn in its canonical direction)", "HylcPeriodicSetSlideConstraint",
+                             HylcSlideConstraints, sl, &sl, NULL));
   PetscCall(HylcOptionsReal("-periodic_pair_margin", "Hessian structure: keep the segment pairs closer than this many 2 r (touching: 2 r), so that it changes rarely", "HylcPeriodicSetPairMargin", pairMargin, &pairMargin, NULL));
-  PetscCall(HylcOptionsReal("-periodic_margin", "Contact ghosts: 0 for every copy of a tile edge in the neighbouring tiles; > 0 for only the copies within max(3 r, margin * min(px, py)) of the tile on the deformed initial guess (misses contacts once yarns move more than about (margin - 2 r) / 2)", "HylcPeriodicSetContactMargin", marginFactor, &marginFactor, NULL));
-  PetscCall(HylcOptionsReal("-periodic_constraint_rtol", "A constraint row whose distance to the span of the rows before it is at most this times its norm is dropped as linearly dependent (straight yarns: the slide row repeats the translation)", "HylcPeriodicSetConstraintTolerance", crtol, &crtol, NULL));
+  PetscCall(HylcOptionsReal("-periodic_margin",
+                            "Contact ghosts: 0 for every copy of a tile edge in the neighbouring tiles; > 0 for only the copies within max(3 r, margin * min(px, py)) of the tile on the deformed initial guess (misses contacts once yarns move more "
+                            "than about (margin - 2 r) / 2)",
+                            "HylcPeriodicSetContactMargin", marginFactor, &marginFactor, NULL));
+  PetscCall(HylcOptionsReal("-periodic_constraint_rtol", "A constraint row whose distance to the span of the rows before it is at most this times its norm is dropped as linearly dependent (straight yarns: the slide row repeats the translation)",
+                            "HylcPeriodicSetConstraintTolerance", crtol, &crtol, NULL));
   PetscCall(PetscOptionsName("-periodic_view", "Print the tile after each set-up", "HylcPeriodicView", NULL));
   PetscOptionsEnd();
   PetscCall(HylcPeriodicSetConstraintTolerance(P, crtol));
@@ -340,8 +345,7 @@ PetscErrorCode HylcPeriodicCheckStrain(HylcPeriodic P, const PetscReal z[6], con
     for (int i = 0; i < 4; i++) {
       const double a = N[0] * c4[i][0] + N[1] * c4[i][1], b = N[2] * c4[i][0] + N[3] * c4[i][1], ang = PetscSqrtReal(a * a + b * b);
       if (!(ang <= 2 * PETSC_PI)) {
-        const int k = PetscAbsReal(z[3]) >= PetscAbsReal(z[4]) && PetscAbsReal(z[3]) >= PetscAbsReal(z[5]) ? 3 : PetscAbsReal(z[4]) >= PetscAbsReal(z[5]) ? 4
-                                                                                                                                                          : 5;
+        const int k = PetscAbsReal(z[3]) >= PetscAbsReal(z[4]) && PetscAbsReal(z[3]) >= PetscAbsReal(z[5]) ? 3 : PetscAbsReal(z[4]) >= PetscAbsReal(z[5]) ? 4 : 5;
         char      msg[160];
         snprintf(msg, sizeof(msg), "the midsurface would turn by %.3g rad across one period (periods %g m, %g m)", ang, px, py);
         SETERRQ(PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: %s = %s: %s; at most 2 pi (a tile bent further wraps onto itself)", name, comp[k], v[k], msg);
@@ -513,11 +517,15 @@ PetscErrorCode HylcPeriodicView(HylcPeriodic P, PetscViewer viewer)
   }
   PetscCall(PetscViewerASCIIPushTab(viewer));
   if (P->marginFactor > 0)
-    PetscCall(PetscViewerASCIIPrintf(viewer, "slide constraint %s, contact ghosts within margin %g of the initial guess, pair margin %g, constraint rtol %g\n", HylcSlideConstraints[P->slide], (double)P->marginFactor, (double)P->pairMargin, (double)P->crtol));
+    PetscCall(PetscViewerASCIIPrintf(viewer, "slide constraint %s, contact ghosts within margin %g of the initial guess, pair margin %g, constraint rtol %g\n", HylcSlideConstraints[P->slide], (double)P->marginFactor, (double)P->pairMargin,
+                                     (double)P->crtol));
   else
     PetscCall(PetscViewerASCIIPrintf(viewer, "slide constraint %s, contact ghosts: every copy in the neighbouring tiles, pair margin %g, constraint rtol %g\n", HylcSlideConstraints[P->slide], (double)P->pairMargin, (double)P->crtol));
   if (P->setup)
-    PetscCall(PetscViewerASCIIPrintf(viewer, "periodic tile: strain (%g, %g, %g, %g, %g, %g); %" PetscInt_FMT " original and %" PetscInt_FMT " ghost vertices, %" PetscInt_FMT " edges, %" PetscInt_FMT " bend-twist elements, %" PetscInt_FMT " constraints (slide %s; %" PetscInt_FMT " linearly dependent rows dropped)\n", (double)P->z[0], (double)P->z[1], (double)P->z[2], (double)P->z[3], (double)P->z[4], (double)P->z[5], P->N, P->nfv - P->N, P->nfe, P->nbe, P->ncons, HylcSlideConstraints[P->slide], P->ndropped));
+    PetscCall(PetscViewerASCIIPrintf(viewer,
+                                     "periodic tile: strain (%g, %g, %g, %g, %g, %g); %" PetscInt_FMT " original and %" PetscInt_FMT " ghost vertices, %" PetscInt_FMT " edges, %" PetscInt_FMT " bend-twist elements, %" PetscInt_FMT
+                                     " constraints (slide %s; %" PetscInt_FMT " linearly dependent rows dropped)\n",
+                                     (double)P->z[0], (double)P->z[1], (double)P->z[2], (double)P->z[3], (double)P->z[4], (double)P->z[5], P->N, P->nfv - P->N, P->nfe, P->nbe, P->ncons, HylcSlideConstraints[P->slide], P->ndropped));
   else
     PetscCall(PetscViewerASCIIPrintf(viewer, "%s\n", P->pat ? "not set up" : "no pattern"));
   PetscCall(PetscViewerASCIIPopTab(viewer));

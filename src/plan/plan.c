@@ -38,9 +38,7 @@ int HylcSampleRange(int c, double zmin, double zmax, int N, double Z[])
     const double a = -sqrt(fabs(zmin)), b = sqrt(fabs(zmax));
     for (int k = 0; k < N; k++) {
       const double t = N > 1 ? a + (b - a) * k / (N - 1) : a;
-      Z[k]           = (t > 0 ? 1 : t < 0 ? -1
-                                          : 0) *
-             t * t;
+      Z[k]           = (t > 0 ? 1 : t < 0 ? -1 : 0) * t * t;
     }
     Z[0] = zmin; /* exact end points */
     if (N > 1) Z[N - 1] = zmax;

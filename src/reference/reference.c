@@ -228,7 +228,8 @@ PetscErrorCode HylcReferenceStateCompute(HylcPattern in, const HylcYarnModel *mo
     }
     Eprev = E;
   }
-  if (par->stressFree && E >= par->etol && v) PetscCall(PetscViewerASCIIPrintf(v, "[reference] warning: no stress-free state at these periods (E = %.3e J %s); the remaining contact is relaxed by the in-plane minimum\n", (double)E, stuck ? "stopped falling" : "after the last round"));
+  if (par->stressFree && E >= par->etol && v)
+    PetscCall(PetscViewerASCIIPrintf(v, "[reference] warning: no stress-free state at these periods (E = %.3e J %s); the remaining contact is relaxed by the in-plane minimum\n", (double)E, stuck ? "stopped falling" : "after the last round"));
   if (par->stressFree)
     PetscCall(HylcPatternSetRestFromGeometry(p));
   else if (v)

@@ -226,8 +226,7 @@ static void MapTo11(const double g8[8], const double H8[64], double w, double g[
       for (int b = 0; b < 3; b++) {
         const double cee = ce[a] * ce[b], cef = ce[a] * cf[b], cfe = cf[a] * ce[b], cff = cf[a] * cf[b];
         for (int i = 0; i < 3; i++)
-          for (int j = 0; j < 3; j++)
-            H[(xoff[a] + i) * 11 + xoff[b] + j] = w * (cee * H8[i * 8 + j] + cef * H8[i * 8 + 3 + j] + cfe * H8[(3 + i) * 8 + j] + cff * H8[(3 + i) * 8 + 3 + j]);
+          for (int j = 0; j < 3; j++) H[(xoff[a] + i) * 11 + xoff[b] + j] = w * (cee * H8[i * 8 + j] + cef * H8[i * 8 + 3 + j] + cfe * H8[(3 + i) * 8 + j] + cff * H8[(3 + i) * 8 + 3 + j]);
       }
       for (int t = 0; t < 2; t++)
         for (int i = 0; i < 3; i++) {

@@ -75,7 +75,9 @@ static PetscErrorCode CheckOutputsAndLock(HylcSampler S)
     PetscCall(ierr);
   }
   if (!S->resume && !S->overwrite) PetscCheck(access(S->output, F_OK) != 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "Output %s exists: start over with -sampler_overwrite, or continue its run with -sampler_resume", S->output);
-  if (S->resume) PetscCheck(access(S->output, F_OK) != 0 || access(jpath, F_OK) == 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-sampler_resume: output %s exists but its journal %s does not, so there is no run to continue: start over with -sampler_overwrite", S->output, jpath);
+  if (S->resume)
+    PetscCheck(access(S->output, F_OK) != 0 || access(jpath, F_OK) == 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-sampler_resume: output %s exists but its journal %s does not, so there is no run to continue: start over with -sampler_overwrite",
+               S->output, jpath);
   PetscCall(HylcSamplesIdentity(S->pat, &S->identity));
   PetscCall(HylcJournalOpen(jpath, S->resume ? HYLC_JOURNAL_RESUME : (S->overwrite ? HYLC_JOURNAL_OVERWRITE : HYLC_JOURNAL_NEW), S->nsamples, S->identity, &S->journal));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -164,11 +166,7 @@ static void FillRecord(long k, int term, const double z[6], const HylcMicroResul
 }
 
 /* the order of outcomes: converged, then not converged, then non-finite */
-static int OutcomeRank(const HylcMicroResult *r)
-{
-  return r->status == HYLC_MICRO_CONVERGED ? 0 : r->status == HYLC_MICRO_NONFINITE ? 2
-                                                                                   : 1;
-}
+static int OutcomeRank(const HylcMicroResult *r) { return r->status == HYLC_MICRO_CONVERGED ? 0 : r->status == HYLC_MICRO_NONFINITE ? 2 : 1; }
 
 /* sample k; from the fluctuation u (local coordinates, HylcMicroGetFluctuation() of the kept state of the
    sample before it on its half-line) if not NULL. On return the kept result's state is in 'state' (if not
@@ -350,7 +348,8 @@ PetscErrorCode HylcSamplerRun(HylcSampler S)
     PetscCall(PetscArraycpy(done, jd, S->nsamples));
     pg.done = pg.converged0 = nd;
     if (S->start != HYLC_SAMPLER_START_COLD)
-      PetscCall(PetscPrintf(PETSC_COMM_SELF, "[sampler] %ld samples in %ld half-lines (%s) on %d ranks; %ld already done (%s)\n", S->nsamples, HylcPlanUnits(&S->plan, NULL, NULL), S->start == HYLC_SAMPLER_START_BOTH ? "continuation, and every sample also cold" : "continuation", (int)S->size, (long)nd, jpath));
+      PetscCall(PetscPrintf(PETSC_COMM_SELF, "[sampler] %ld samples in %ld half-lines (%s) on %d ranks; %ld already done (%s)\n", S->nsamples, HylcPlanUnits(&S->plan, NULL, NULL),
+                            S->start == HYLC_SAMPLER_START_BOTH ? "continuation, and every sample also cold" : "continuation", (int)S->size, (long)nd, jpath));
     else
       PetscCall(PetscPrintf(PETSC_COMM_SELF, "[sampler] %ld samples in %ld batches on %d ranks; %ld already done (%s)\n", S->nsamples, (S->nsamples + S->batch - 1) / S->batch, (int)S->size, (long)nd, jpath));
   }
@@ -468,7 +467,9 @@ PetscErrorCode HylcSamplerRun(HylcSampler S)
         nmulti += all[k].multistable;
         ncont += all[k].multistable && all[k].start == HYLC_SAMPLE_START_CONTINUED;
       }
-      PetscCall(PetscPrintf(PETSC_COMM_SELF, "[sampler] -sampler_start both: %ld samples converged from both starts, %ld of them (%.1f%%) with Psi differing by more than %g relative (/samples/multistable), the continued start lower in %ld, the cold one in %ld\n", ncmp, nmulti, 100.0 * nmulti / PetscMax(ncmp, 1), (double)S->bothRtol, ncont, nmulti - ncont));
+      PetscCall(PetscPrintf(PETSC_COMM_SELF,
+                            "[sampler] -sampler_start both: %ld samples converged from both starts, %ld of them (%.1f%%) with Psi differing by more than %g relative (/samples/multistable), the continued start lower in %ld, the cold one in %ld\n",
+                            ncmp, nmulti, 100.0 * nmulti / PetscMax(ncmp, 1), (double)S->bothRtol, ncont, nmulti - ncont));
     }
     if (S->rawdir[0]) PetscCall(ExportRaw(S, all, jd));
     PetscCall(HylcJournalClose(&S->journal));

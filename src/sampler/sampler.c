@@ -261,7 +261,8 @@ PetscErrorCode HylcSamplerView(HylcSampler S, PetscViewer viewer)
     PetscCall(PetscViewerASCIIPrintf(viewer, "start: both (units: half-lines from the zero strain outward; every sample also cold, the lower Psi kept, multistable where they differ by more than %g)\n", (double)S->bothRtol));
   else
     PetscCall(PetscViewerASCIIPrintf(viewer, "start: %s%s\n", HylcSamplerStarts[S->start], S->start == HYLC_SAMPLER_START_CONTINUE ? " (units: half-lines from the zero strain outward)" : " (every sample from u~ = 0)"));
-  PetscCall(PetscViewerASCIIPrintf(viewer, "%d ranks, batches of %" PetscInt_FMT ", progress every %g s, reference state %s%s%s\n", (int)S->size, S->batch, (double)S->progress, HylcReferenceModes[S->refmode], S->refout[0] ? " written to " : "", S->refout));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "%d ranks, batches of %" PetscInt_FMT ", progress every %g s, reference state %s%s%s\n", (int)S->size, S->batch, (double)S->progress, HylcReferenceModes[S->refmode], S->refout[0] ? " written to " : "",
+                                   S->refout));
   if (S->rawdir[0]) PetscCall(PetscViewerASCIIPrintf(viewer, "raw layout exported to %s\n", S->rawdir));
   PetscCall(PetscViewerASCIIPopTab(viewer));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -76,18 +76,29 @@ static PetscErrorCode WriteSamplesGroup(hid_t file, long N, const HylcSampleReco
     HylcCallHDF5(HylcH5WriteAttrStrings(g, "term_names", HYLC_PLAN_NTERM, names));
   }
   HylcCallHDF5(HylcH5WriteAttrString(g, "description", "One row per sample of the plan, in plan order (row k = sample k). Samples not computed (interrupted run) have status -1, term/iterations/retries -1 and NaN values."));
-  HylcCallHDF5(HylcH5WriteDataset(g, "strain", 2, (hsize_t[]){(hsize_t)N, 6}, H5T_NATIVE_DOUBLE, strain, "1 for sx, sa, sy; 1/m for II00, II01, II11", "macroscopic strain z = (sx, sa, sy, II00, II01, II11): in-plane stretch/shear and the second fundamental form"));
+  HylcCallHDF5(HylcH5WriteDataset(g, "strain", 2, (hsize_t[]){(hsize_t)N, 6}, H5T_NATIVE_DOUBLE, strain, "1 for sx, sa, sy; 1/m for II00, II01, II11",
+                                  "macroscopic strain z = (sx, sa, sy, II00, II01, II11): in-plane stretch/shear and the second fundamental form"));
   HylcCallHDF5(HylcH5WriteDataset(g, "psi", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_DOUBLE, psi, "J/m^2", "area energy density psi = E / A of the equilibrium (A: reference tile area)"));
   HylcCallHDF5(HylcH5WriteDataset(g, "term", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, term, "1", "term of the sampling plan: 0 zero sample, 1..5 one-dimensional, 6..14 two-dimensional; index into /samples@term_names; -1 not computed"));
-  HylcCallHDF5(HylcH5WriteDataset(g, "status", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, status, "1", "HylcMicroStatus of the Newton solve, index into /samples@status_names (0 converged, 1 iteration_cap, 2 time_cap, 3 stalled, 4 nonfinite; 5 failed is reserved, no longer produced); -1: not computed (the run ended before this sample, all its values are NaN or -1)"));
+  HylcCallHDF5(HylcH5WriteDataset(g, "status", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, status, "1",
+                                  "HylcMicroStatus of the Newton solve, index into /samples@status_names (0 converged, 1 iteration_cap, 2 time_cap, 3 stalled, 4 nonfinite; 5 failed is reserved, no longer produced); -1: not computed (the run ended "
+                                  "before this sample, all its values are NaN or -1)"));
   HylcCallHDF5(HylcH5WriteDataset(g, "iterations", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, its, "1", "Newton iterations; -1 not computed"));
   HylcCallHDF5(HylcH5WriteDataset(g, "retries", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, retries, "1", "regularization increases (alpha x 10 for an indefinite K); -1 not computed"));
-  HylcCallHDF5(HylcH5WriteDataset(g, "start", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, start, "1", "how the kept solve started (-sampler_start): 0 cold (u~ = 0), 1 continued from the equilibrium of the sample before it on its half-line, 2 continued, did not converge, retried cold (the better of the two kept; iterations and time are the sums of both); -1 not computed. With -sampler_start both, 0 or 1 says which start was kept (iterations and time are the sums of both)"));
-  HylcCallHDF5(HylcH5WriteDataset(g, "negcurv", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, negcurv, "1", "second-order test of the final state (-micro_saddle_test): the number of negative eigenvalues of the Hessian on the tangent space of the constraints, 0 a local minimum, > 0 a saddle point (its escapes did not reach a minimum); -1 not tested (test off, solve not converged, or no inertia from the factorization) or not computed"));
+  HylcCallHDF5(HylcH5WriteDataset(g, "start", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, start, "1",
+                                  "how the kept solve started (-sampler_start): 0 cold (u~ = 0), 1 continued from the equilibrium of the sample before it on its half-line, 2 continued, did not converge, retried cold (the better of the two kept; "
+                                  "iterations and time are the sums of both); -1 not computed. With -sampler_start both, 0 or 1 says which start was kept (iterations and time are the sums of both)"));
+  HylcCallHDF5(HylcH5WriteDataset(g, "negcurv", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, negcurv, "1",
+                                  "second-order test of the final state (-micro_saddle_test): the number of negative eigenvalues of the Hessian on the tangent space of the constraints, 0 a local minimum, > 0 a saddle point (its escapes did not "
+                                  "reach a minimum); -1 not tested (test off, solve not converged, or no inertia from the factorization) or not computed"));
   HylcCallHDF5(HylcH5WriteDataset(g, "escapes", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, escapes, "1", "steps along negative curvature that left a saddle point during the kept solve (-micro_saddle_escapes); -1 not computed"));
-  HylcCallHDF5(HylcH5WriteDataset(g, "psi_other", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_DOUBLE, psio, "J/m^2", "-sampler_start both: psi of the start that was not kept (the kept one, in /samples/psi and /samples/start, has the lower psi of the two converged ones); NaN where only one start was solved (other starts; the first sample of a half-line has no continued start)"));
+  HylcCallHDF5(HylcH5WriteDataset(g, "psi_other", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_DOUBLE, psio, "J/m^2",
+                                  "-sampler_start both: psi of the start that was not kept (the kept one, in /samples/psi and /samples/start, has the lower psi of the two converged ones); NaN where only one start was solved (other starts; the first "
+                                  "sample of a half-line has no continued start)"));
   HylcCallHDF5(HylcH5WriteDataset(g, "status_other", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, stato, "1", "-sampler_start both: HylcMicroStatus of the start that was not kept (as /samples/status); -1 not solved"));
-  HylcCallHDF5(HylcH5WriteDataset(g, "multistable", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, multi, "1", "-sampler_start both: 1 where both starts converged and their psi differ by more than -sampler_both_rtol of the larger (two equilibria at one strain: the tile is multistable there), 0 where they agree; -1 not compared"));
+  HylcCallHDF5(
+      HylcH5WriteDataset(g, "multistable", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, multi, "1",
+                         "-sampler_start both: 1 where both starts converged and their psi differ by more than -sampler_both_rtol of the larger (two equilibria at one strain: the tile is multistable there), 0 where they agree; -1 not compared"));
   HylcCallHDF5(HylcH5WriteDataset(g, "energy_parts", 2, (hsize_t[]){(hsize_t)N, 4}, H5T_NATIVE_DOUBLE, parts, "J", "energy of the tile by kind: columns stretch, bend, twist, contact"));
   HylcCallHDF5(HylcH5WriteDataset(g, "residual", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_DOUBLE, res, "1", "final projected-gradient norm relative to the initial one, |z| / |z0|"));
   HylcCallHDF5(HylcH5WriteDataset(g, "constraint_residual", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_DOUBLE, cres, "1 (units of the yarn radius)", "final periodicity-constraint residual |A y - dL| / r"));
@@ -243,7 +254,9 @@ static PetscErrorCode WriteProvenance(hid_t file, const char identity[])
       version[2] = line + 14;
   }
   HylcCallHDF5Id(g, H5Gcreate2(file, "provenance", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
-  HylcCallHDF5(HylcH5WriteAttrString(g, "description", "the identity of the run: everything that can change a sample's result (versions, the pattern bit for bit, every option but the neutral ones of docs/output-format.md); digest = SHA-256 of the identity text, as in the journal"));
+  HylcCallHDF5(HylcH5WriteAttrString(
+      g, "description",
+      "the identity of the run: everything that can change a sample's result (versions, the pattern bit for bit, every option but the neutral ones of docs/output-format.md); digest = SHA-256 of the identity text, as in the journal"));
   HylcCallHDF5(HylcH5WriteAttrString(g, "digest", hex));
   HylcCallHDF5(HylcH5WriteAttrString(g, "digest_algorithm", "sha256"));
   HylcCallHDF5(HylcH5WriteAttrString(g, "hylc_version", version[0]));
@@ -259,7 +272,8 @@ static PetscErrorCode WriteProvenance(hid_t file, const char identity[])
 }
 
 /* builds the whole file in memory (HDF5's core driver, no backing store) and returns its image */
-static PetscErrorCode BuildImage(const char path[], long nsamples, const HylcSampleRecord recs[], const unsigned char done[], HylcPattern reference, const HylcYarnModel *model, const char optionsText[], const char identity[], void **image, size_t *size)
+static PetscErrorCode BuildImage(const char path[], long nsamples, const HylcSampleRecord recs[], const unsigned char done[], HylcPattern reference, const HylcYarnModel *model, const char optionsText[], const char identity[], void **image,
+                                 size_t *size)
 {
   hid_t          file;
   ssize_t        n = 0;
@@ -344,21 +358,9 @@ PetscErrorCode HylcSamplesWriteHDF5(const char path[], long nsamples, const Hylc
 /* the datasets of /samples that HylcSamplesReadHDF5() reads (start, negcurv, escapes, psi_other,
    status_other and multistable are newer than the format's first files: optional) */
 static const HylcTableColumn SamplesColumns[] = {
-    {"strain", 6, H5T_FLOAT, PETSC_FALSE},
-    {"psi", 0, H5T_FLOAT, PETSC_FALSE},
-    {"energy_parts", 4, H5T_FLOAT, PETSC_FALSE},
-    {"residual", 0, H5T_FLOAT, PETSC_FALSE},
-    {"constraint_residual", 0, H5T_FLOAT, PETSC_FALSE},
-    {"time", 0, H5T_FLOAT, PETSC_FALSE},
-    {"term", 0, H5T_INTEGER, PETSC_FALSE},
-    {"status", 0, H5T_INTEGER, PETSC_FALSE},
-    {"iterations", 0, H5T_INTEGER, PETSC_FALSE},
-    {"retries", 0, H5T_INTEGER, PETSC_FALSE},
-    {"start", 0, H5T_INTEGER, PETSC_TRUE},
-    {"negcurv", 0, H5T_INTEGER, PETSC_TRUE},
-    {"escapes", 0, H5T_INTEGER, PETSC_TRUE},
-    {"psi_other", 0, H5T_FLOAT, PETSC_TRUE},
-    {"status_other", 0, H5T_INTEGER, PETSC_TRUE},
+    {"strain", 6, H5T_FLOAT, PETSC_FALSE},      {"psi", 0, H5T_FLOAT, PETSC_FALSE},      {"energy_parts", 4, H5T_FLOAT, PETSC_FALSE}, {"residual", 0, H5T_FLOAT, PETSC_FALSE},     {"constraint_residual", 0, H5T_FLOAT, PETSC_FALSE},
+    {"time", 0, H5T_FLOAT, PETSC_FALSE},        {"term", 0, H5T_INTEGER, PETSC_FALSE},   {"status", 0, H5T_INTEGER, PETSC_FALSE},     {"iterations", 0, H5T_INTEGER, PETSC_FALSE}, {"retries", 0, H5T_INTEGER, PETSC_FALSE},
+    {"start", 0, H5T_INTEGER, PETSC_TRUE},      {"negcurv", 0, H5T_INTEGER, PETSC_TRUE}, {"escapes", 0, H5T_INTEGER, PETSC_TRUE},     {"psi_other", 0, H5T_FLOAT, PETSC_TRUE},     {"status_other", 0, H5T_INTEGER, PETSC_TRUE},
     {"multistable", 0, H5T_INTEGER, PETSC_TRUE}};
 #define NSAMPLESCOLUMNS ((int)(sizeof(SamplesColumns) / sizeof(SamplesColumns[0])))
 
@@ -377,7 +379,8 @@ static int HasColumn(hid_t file, const char name[])
 }
 
 /* every column read into the arrays given (allocated for N + 1 rows by the caller) */
-static PetscErrorCode ReadColumns(hid_t file, const char path[], double *strain, double *psi, double *parts, double *res, double *cres, double *tm, int *term, int *status, int *its, int *retries, int *start, int *negcurv, int *escapes, double *psio, int *stato, int *multi)
+static PetscErrorCode ReadColumns(hid_t file, const char path[], double *strain, double *psi, double *parts, double *res, double *cres, double *tm, int *term, int *status, int *its, int *retries, int *start, int *negcurv, int *escapes, double *psio,
+                                  int *stato, int *multi)
 {
   PetscFunctionBegin;
   PetscCall(HylcTableReadHDF5Column(file, path, "samples/strain", H5T_NATIVE_DOUBLE, strain));

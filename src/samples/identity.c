@@ -24,7 +24,8 @@ static const char *const Neutral[] = {/* output paths */
                                       /* inputs whose content is in the identity (the pattern digests; the options it holds) */
                                       "pattern_file", "options_file*",
                                       /* diagnostics, logging, debugging */
-                                      "help", "h", "version", "info*", "log_*", "malloc*", "memory_view", "options_left", "options_monitor*", "options_view", "hylc_traceback", "no_signal_handler", "on_error_*", "start_in_debugger", "stop_for_debugger", "debugger_*", "display", "petsc_sleep", NULL};
+                                      "help", "h", "version", "info*", "log_*", "malloc*", "memory_view", "options_left", "options_monitor*", "options_view", "hylc_traceback", "no_signal_handler", "on_error_*", "start_in_debugger",
+                                      "stop_for_debugger", "debugger_*", "display", "petsc_sleep", NULL};
 
 /*@C
   HylcSamplesOptionIsNeutral - Whether an option (name with or without the leading dash) is one of the
@@ -180,10 +181,7 @@ PetscErrorCode HylcSamplesIdentity(HylcPattern pattern, char **text)
 /*@C
   HylcSamplesIdentityDigest - SHA-256 of an identity text, as 64 hexadecimal digits. Not collective.
 @*/
-void HylcSamplesIdentityDigest(const char text[], char hex[65])
-{
-  HylcSha256Hex(text, strlen(text), hex);
-}
+void HylcSamplesIdentityDigest(const char text[], char hex[65]) { HylcSha256Hex(text, strlen(text), hex); }
 
 /* the line of 'text' whose first two words are those of 'line' (key), or NULL; *vlen, *v: its value */
 static const char *FindKey(const char *text, const char *key, size_t klen)

@@ -226,12 +226,15 @@ static PetscErrorCode JournalReadHeader(HylcJournal j, long *hsize, PetscBool *s
   PetscCheck(got >= 16 && !memcmp(fixed, JOURNAL_MAGIC, 8), PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s is not a hylc journal (bad magic): remove it or choose another -sampler_output", j->path);
   memcpy(u, fixed + 8, 8);
   PetscCheck(u[0] == JOURNAL_BOM, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "Journal %s was written on a machine of another byte order", j->path);
-  PetscCheck(u[1] >= 2, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "Journal %s was written by an earlier hylc (journal format %u, without the complete run identity) and cannot be resumed safely: start over with -sampler_overwrite", j->path, (unsigned)u[1]);
-  PetscCheck(u[1] != 2, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "Journal %s was written by an earlier hylc (journal format 2, records without the start of each solve, /samples/start) and cannot be resumed: start over with -sampler_overwrite", j->path);
+  PetscCheck(u[1] >= 2, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "Journal %s was written by an earlier hylc (journal format %u, without the complete run identity) and cannot be resumed safely: start over with -sampler_overwrite", j->path,
+             (unsigned)u[1]);
+  PetscCheck(u[1] != 2, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "Journal %s was written by an earlier hylc (journal format 2, records without the start of each solve, /samples/start) and cannot be resumed: start over with -sampler_overwrite",
+             j->path);
   PetscCheck(got == JOURNAL_FIXEDHEAD, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "Journal %s: corrupt header (too short): start over with -sampler_overwrite", j->path);
   memcpy(u, fixed + 8, 16);
   memcpy(&ns, fixed + 24, 8);
-  PetscCheck(u[1] == JOURNAL_VERSION && u[2] == JOURNAL_RECSIZE, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "Journal %s has format version %u (record size %u); this hylc reads version %u (record size %u)", j->path, (unsigned)u[1], (unsigned)u[2], JOURNAL_VERSION, (unsigned)JOURNAL_RECSIZE);
+  PetscCheck(u[1] == JOURNAL_VERSION && u[2] == JOURNAL_RECSIZE, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "Journal %s has format version %u (record size %u); this hylc reads version %u (record size %u)", j->path, (unsigned)u[1], (unsigned)u[2],
+             JOURNAL_VERSION, (unsigned)JOURNAL_RECSIZE);
   PetscCheck(u[3] < JOURNAL_MAXID, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "Journal %s: corrupt header (identity length %u): start over with -sampler_overwrite", j->path, (unsigned)u[3]);
   L = u[3];
   PetscCall(PetscMalloc1(JOURNAL_FIXEDHEAD + L + 1, &head));

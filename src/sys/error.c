@@ -123,7 +123,8 @@ static PetscErrorCode HylcErrorHandler(MPI_Comm comm, int line, const char *fun,
   /* errors in what the user gave: files, options and their values (PETSC_ERR_USER: a bad choice for an
      option, "Unknown option silk for -sampler_family"; PETSC_ERR_ARG_UNKNOWN_TYPE: -micro_snes_type bogus;
      PETSC_ERR_MISSING_FACTOR: a factorization package PETSc does not have, -..._mat_solver_type nosuchsolver) */
-  const PetscBool user = (PetscBool)(n == PETSC_ERR_USER_INPUT || n == PETSC_ERR_USER || n == PETSC_ERR_ARG_UNKNOWN_TYPE || n == PETSC_ERR_MISSING_FACTOR || n == PETSC_ERR_FILE_OPEN || n == PETSC_ERR_FILE_READ || n == PETSC_ERR_FILE_WRITE || n == PETSC_ERR_FILE_UNEXPECTED || n == PETSC_ERR_ARG_OUTOFRANGE || n == PETSC_ERR_ARG_WRONG || n == PETSC_ERR_ARG_INCOMP || n == PETSC_ERR_NOT_CONVERGED);
+  const PetscBool user = (PetscBool)(n == PETSC_ERR_USER_INPUT || n == PETSC_ERR_USER || n == PETSC_ERR_ARG_UNKNOWN_TYPE || n == PETSC_ERR_MISSING_FACTOR || n == PETSC_ERR_FILE_OPEN || n == PETSC_ERR_FILE_READ || n == PETSC_ERR_FILE_WRITE ||
+                                     n == PETSC_ERR_FILE_UNEXPECTED || n == PETSC_ERR_ARG_OUTOFRANGE || n == PETSC_ERR_ARG_WRONG || n == PETSC_ERR_ARG_INCOMP || n == PETSC_ERR_NOT_CONVERGED);
   char            better[PETSC_MAX_PATH_LEN + 512];
   if (!user) return PetscTraceBackErrorHandler(comm, line, fun, file, n, p, mess, NULL);
   if (p == PETSC_ERROR_INITIAL && HylcDescribeOptionError(n, mess, better, sizeof(better)))
@@ -443,10 +444,7 @@ static int HylcCountFileKey(const char *key, size_t n, const char path[], int li
 }
 
 /* the keys of a plain or YAML options file */
-static void HylcCountFile(OptionsScan *o, const char path[], int yaml)
-{
-  HylcWalkFileKeys(path, yaml, HylcCountFileKey, o);
-}
+static void HylcCountFile(OptionsScan *o, const char path[], int yaml) { HylcWalkFileKeys(path, yaml, HylcCountFileKey, o); }
 
 /* ---- where an option was set ---- */
 

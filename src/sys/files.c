@@ -314,12 +314,14 @@ static PetscErrorCode CheckLength(const Entry *e)
     PetscCall(PetscOptionsFindPair(NULL, NULL, e->what, &val, &set));
     if (set && val) len = PetscMax(len, strlen(val));
   }
-  PetscCheck(len + extra < PATH_MAX && len < PETSC_MAX_PATH_LEN, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: the path has %zu characters, over the limit of %d%s", e->what, len, (int)PetscMin(PATH_MAX, PETSC_MAX_PATH_LEN) - 1 - (int)extra, extra ? " for an output (the temporary it is written through adds a suffix)" : "");
+  PetscCheck(len + extra < PATH_MAX && len < PETSC_MAX_PATH_LEN, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: the path has %zu characters, over the limit of %d%s", e->what, len, (int)PetscMin(PATH_MAX, PETSC_MAX_PATH_LEN) - 1 - (int)extra,
+             extra ? " for an output (the temporary it is written through adds a suffix)" : "");
   while (*c) {
     const char  *s    = strchr(c, '/');
     const size_t n    = s ? (size_t)(s - c) : strlen(c);
     const int    last = !s;
-    PetscCheck(n + (last ? extra : 0) <= NAME_MAX, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: the path component '%.24s...' has %zu characters, over the limit of %d%s", e->what, c, n, NAME_MAX - (int)(last ? extra : 0), last && extra ? " for an output's name (the temporary it is written through adds a suffix)" : "");
+    PetscCheck(n + (last ? extra : 0) <= NAME_MAX, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: the path component '%.24s...' has %zu characters, over the limit of %d%s", e->what, c, n, NAME_MAX - (int)(last ? extra : 0),
+               last && extra ? " for an output's name (the temporary it is written through adds a suffix)" : "");
     c += n + (s ? 1 : 0);
   }
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -403,8 +405,6 @@ PetscErrorCode HylcFilesView(HylcFiles files, PetscViewer viewer)
 {
   PetscFunctionBegin;
   if (!viewer) PetscCall(PetscViewerASCIIGetStdout(files->comm, &viewer));
-  for (int i = 0; i < files->n; i++) PetscCall(PetscViewerASCIIPrintf(viewer, "%s %s (%s)\n", files->e[i].role == HYLC_FILE_OUTPUT ? "output" : files->e[i].role == HYLC_FILE_INPUT ? "input"
-                                                                                                                                                                                    : "input (optional)",
-                                                                      files->e[i].path, files->e[i].what));
+  for (int i = 0; i < files->n; i++) PetscCall(PetscViewerASCIIPrintf(viewer, "%s %s (%s)\n", files->e[i].role == HYLC_FILE_OUTPUT ? "output" : files->e[i].role == HYLC_FILE_INPUT ? "input" : "input (optional)", files->e[i].path, files->e[i].what));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -13,10 +13,7 @@ void HylcH5QuietBegin(HylcH5Quiet *q)
   H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
 }
 
-void HylcH5QuietEnd(const HylcH5Quiet *q)
-{
-  H5Eset_auto2(H5E_DEFAULT, q->func, q->data);
-}
+void HylcH5QuietEnd(const HylcH5Quiet *q) { H5Eset_auto2(H5E_DEFAULT, q->func, q->data); }
 
 static herr_t ErrorWalk(unsigned n, const H5E_error2_t *e, void *ctx)
 {
@@ -75,26 +72,14 @@ static herr_t WriteStrings(hid_t loc, const char name[], int isattr, int rank, h
   return 0;
 }
 
-herr_t HylcH5WriteAttrString(hid_t loc, const char name[], const char value[])
-{
-  return WriteStrings(loc, name, 1, 0, 1, &value, NULL);
-}
+herr_t HylcH5WriteAttrString(hid_t loc, const char name[], const char value[]) { return WriteStrings(loc, name, 1, 0, 1, &value, NULL); }
 
-herr_t HylcH5WriteAttrStrings(hid_t loc, const char name[], int n, const char *const values[])
-{
-  return WriteStrings(loc, name, 1, 1, (hsize_t)n, values, NULL);
-}
+herr_t HylcH5WriteAttrStrings(hid_t loc, const char name[], int n, const char *const values[]) { return WriteStrings(loc, name, 1, 1, (hsize_t)n, values, NULL); }
 
-herr_t HylcH5WriteStrings(hid_t loc, const char name[], int rank, hsize_t n, const char *const values[], const char description[])
-{
-  return WriteStrings(loc, name, 0, rank, n, values, description);
-}
+herr_t HylcH5WriteStrings(hid_t loc, const char name[], int rank, hsize_t n, const char *const values[], const char description[]) { return WriteStrings(loc, name, 0, rank, n, values, description); }
 
 /* the stored (little-endian) type of a native memory type */
-static hid_t FileType(hid_t memtype)
-{
-  return memtype == H5T_NATIVE_DOUBLE ? H5T_IEEE_F64LE : (memtype == H5T_NATIVE_LLONG ? H5T_STD_I64LE : H5T_STD_I32LE);
-}
+static hid_t FileType(hid_t memtype) { return memtype == H5T_NATIVE_DOUBLE ? H5T_IEEE_F64LE : (memtype == H5T_NATIVE_LLONG ? H5T_STD_I64LE : H5T_STD_I32LE); }
 
 herr_t HylcH5WriteAttrScalar(hid_t loc, const char name[], hid_t memtype, const void *value)
 {
@@ -108,15 +93,9 @@ herr_t HylcH5WriteAttrScalar(hid_t loc, const char name[], hid_t memtype, const 
   return 0;
 }
 
-herr_t HylcH5WriteAttrDouble(hid_t loc, const char name[], double v)
-{
-  return HylcH5WriteAttrScalar(loc, name, H5T_NATIVE_DOUBLE, &v);
-}
+herr_t HylcH5WriteAttrDouble(hid_t loc, const char name[], double v) { return HylcH5WriteAttrScalar(loc, name, H5T_NATIVE_DOUBLE, &v); }
 
-herr_t HylcH5WriteAttrLong(hid_t loc, const char name[], long long v)
-{
-  return HylcH5WriteAttrScalar(loc, name, H5T_NATIVE_LLONG, &v);
-}
+herr_t HylcH5WriteAttrLong(hid_t loc, const char name[], long long v) { return HylcH5WriteAttrScalar(loc, name, H5T_NATIVE_LLONG, &v); }
 
 herr_t HylcH5WriteDataset(hid_t loc, const char name[], int rank, const hsize_t dims[], hid_t memtype, const void *buf, const char units[], const char description[])
 {
@@ -181,20 +160,11 @@ static hid_t Open(int mode, const char name[], size_t increment, const void *ima
   return file;
 }
 
-hid_t HylcH5ImageCreate(const char name[], size_t increment)
-{
-  return Open(0, name, increment, NULL, 0);
-}
+hid_t HylcH5ImageCreate(const char name[], size_t increment) { return Open(0, name, increment, NULL, 0); }
 
-hid_t HylcH5ImageOpen(const char name[], const void *image, size_t len)
-{
-  return Open(1, name, 1 << 16, image, len);
-}
+hid_t HylcH5ImageOpen(const char name[], const void *image, size_t len) { return Open(1, name, 1 << 16, image, len); }
 
-hid_t HylcH5FileOpen(const char path[])
-{
-  return Open(2, path, 0, NULL, 0);
-}
+hid_t HylcH5FileOpen(const char path[]) { return Open(2, path, 0, NULL, 0); }
 
 ssize_t HylcH5ImageSize(hid_t file)
 {

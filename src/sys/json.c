@@ -156,9 +156,7 @@ static int Hex4(JParser *P, const char *h, unsigned *cp)
   CHECK(h + 4 <= P->end, "%s:%d: incomplete \\u escape in a string", P->name, P->line);
   for (int i = 0; i < 4; i++) {
     const char c = h[i];
-    int        d = (c >= '0' && c <= '9') ? c - '0' : (c >= 'a' && c <= 'f') ? c - 'a' + 10
-                                                  : (c >= 'A' && c <= 'F')   ? c - 'A' + 10
-                                                                             : -1;
+    int        d = (c >= '0' && c <= '9') ? c - '0' : (c >= 'a' && c <= 'f') ? c - 'a' + 10 : (c >= 'A' && c <= 'F') ? c - 'A' + 10 : -1;
     CHECK(d >= 0, "%s:%d: invalid \\u escape in a string (4 hex digits expected)", P->name, P->line);
     *cp = 16 * *cp + (unsigned)d;
   }
@@ -345,8 +343,7 @@ static int ParseValue(JParser *P, HylcJson *v)
   case 'f':
   case 'n': {
     const char *lit[3] = {"true", "false", "null"};
-    int         w      = *P->s == 't' ? 0 : *P->s == 'f' ? 1
-                                                         : 2;
+    int         w      = *P->s == 't' ? 0 : *P->s == 'f' ? 1 : 2;
     size_t      l      = strlen(lit[w]);
     CHECK((size_t)(P->end - P->s) >= l && !strncmp(P->s, lit[w], l), "%s:%d: expected a value, found %s", P->name, P->line, Excerpt(P, ex));
     v->type = w == 2 ? HYLC_JSON_NULL : HYLC_JSON_BOOL;

@@ -305,9 +305,7 @@ PetscErrorCode HylcSetProgramName(const char name[])
   const char *base = name ? strrchr(name, '/') : NULL;
 
   PetscFunctionBegin;
-  PetscCall(PetscStrncpy(HylcProgram, base ? base + 1 : name ? name
-                                                             : "",
-                         sizeof(HylcProgram)));
+  PetscCall(PetscStrncpy(HylcProgram, base ? base + 1 : name ? name : "", sizeof(HylcProgram)));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -8,18 +8,10 @@ const char *const HylcCoordNames[HYLC_NCOORD] = {HYLC_NAME_SX, HYLC_NAME_SA, HYL
 
 const int HylcCoordStrain[HYLC_NCOORD] = {0, 1, 2, 3, 5};
 
-const int HylcPairCoords[HYLC_NPAIR][2] = {
-    {0, 1},
-    {0, 2},
-    {0, 3},
-    {0, 4},
-    {1, 2},
-    {1, 3},
-    {1, 4},
-    {2, 3},
-    {2, 4}};
+const int HylcPairCoords[HYLC_NPAIR][2] = {{0, 1}, {0, 2}, {0, 3}, {0, 4}, {1, 2}, {1, 3}, {1, 4}, {2, 3}, {2, 4}};
 
-const char *const HylcPairNames[HYLC_NPAIR] = {HYLC_NAME_SX "-" HYLC_NAME_SA, HYLC_NAME_SX "-" HYLC_NAME_SY, HYLC_NAME_SX "-" HYLC_NAME_II00, HYLC_NAME_SX "-" HYLC_NAME_II11, HYLC_NAME_SA "-" HYLC_NAME_SY, HYLC_NAME_SA "-" HYLC_NAME_II00, HYLC_NAME_SA "-" HYLC_NAME_II11, HYLC_NAME_SY "-" HYLC_NAME_II00, HYLC_NAME_SY "-" HYLC_NAME_II11};
+const char *const HylcPairNames[HYLC_NPAIR] = {HYLC_NAME_SX "-" HYLC_NAME_SA,   HYLC_NAME_SX "-" HYLC_NAME_SY,   HYLC_NAME_SX "-" HYLC_NAME_II00, HYLC_NAME_SX "-" HYLC_NAME_II11, HYLC_NAME_SA "-" HYLC_NAME_SY,
+                                               HYLC_NAME_SA "-" HYLC_NAME_II00, HYLC_NAME_SA "-" HYLC_NAME_II11, HYLC_NAME_SY "-" HYLC_NAME_II00, HYLC_NAME_SY "-" HYLC_NAME_II11};
 
 int HylcPairIndex(int k0, int k1)
 {

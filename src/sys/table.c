@@ -401,8 +401,7 @@ static void CheckColumn(hid_t file, const char path[], const char w[], const cha
     return;
   }
   if ((kind = ObjectType(file, name)) != H5I_DATASET) {
-    snprintf(msg, len, "%s%s: /%s is %s, not a dataset", path, w, name, kind == H5I_GROUP ? "a group" : kind == H5I_DATATYPE ? "a named type"
-                                                                                                                             : "an object that cannot be opened");
+    snprintf(msg, len, "%s%s: /%s is %s, not a dataset", path, w, name, kind == H5I_GROUP ? "a group" : kind == H5I_DATATYPE ? "a named type" : "an object that cannot be opened");
     return;
   }
   if ((d = H5Dopen2(file, name, H5P_DEFAULT)) < 0 || (sp = H5Dget_space(d)) < 0 || (ty = H5Dget_type(d)) < 0 || (pl = H5Dget_create_plist(d)) < 0) {
@@ -426,8 +425,7 @@ static void CheckColumn(hid_t file, const char path[], const char w[], const cha
   }
   c = H5Tget_class(ty);
   if (cls == H5T_NO_CLASS ? (c != H5T_FLOAT && c != H5T_INTEGER) : c != cls) {
-    snprintf(msg, len, "%s%s: dataset /%s holds %s, expected %s", path, w, name, ClassName(c), cls == H5T_FLOAT ? "floating-point numbers" : cls == H5T_INTEGER ? "integers"
-                                                                                                                                                                : "numbers");
+    snprintf(msg, len, "%s%s: dataset /%s holds %s, expected %s", path, w, name, ClassName(c), cls == H5T_FLOAT ? "floating-point numbers" : cls == H5T_INTEGER ? "integers" : "numbers");
     goto done;
   }
   {

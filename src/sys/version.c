@@ -42,9 +42,7 @@ PetscErrorCode HylcVersionView(const char program[])
   if ((nl = strchr(mpi, '\n'))) *nl = 0; /* the first line */
   if ((nl = strchr(mpi, ','))) *nl = 0;  /* "Open MPI v4.1.4, package: ..." */
   slash = program ? strrchr(program, '/') : NULL;
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s %s (git %s)\n", slash ? slash + 1 : program ? program
-                                                                                          : "hylc",
-                        HYLC_VERSION_STRING, HYLC_BUILD_ID));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s %s (git %s)\n", slash ? slash + 1 : program ? program : "hylc", HYLC_VERSION_STRING, HYLC_BUILD_ID));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "PETSc: %s\n", strncmp(petsc, "Petsc Release Version ", 22) ? petsc : petsc + 22));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "HDF5: %u.%u.%u\n", maj, min, rel));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "MPI: %s\n", mpi));

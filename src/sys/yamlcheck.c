@@ -14,12 +14,7 @@ typedef struct {
   int want_key; /* in a mapping: the next node is a key */
 } Frame;
 
-static const char *NodeKind(yaml_event_type_t t)
-{
-  return t == YAML_MAPPING_START_EVENT ? "a mapping" : t == YAML_SEQUENCE_START_EVENT ? "a list"
-                                                   : t == YAML_ALIAS_EVENT            ? "an alias"
-                                                                                      : "a value";
-}
+static const char *NodeKind(yaml_event_type_t t) { return t == YAML_MAPPING_START_EVENT ? "a mapping" : t == YAML_SEQUENCE_START_EVENT ? "a list" : t == YAML_ALIAS_EVENT ? "an alias" : "a value"; }
 
 static int ValidName(const char *s, size_t n)
 {

@@ -140,6 +140,7 @@ PetscErrorCode HylcYarnModelView(const HylcYarnModel *m, PetscReal patternRadius
   PetscFunctionBegin;
   PetscCall(HylcYarnModelGetConstants(m, patternRadius, &c));
   PetscCall(PetscViewerASCIIPrintf(viewer, "yarn model: r = %g m, E = %g Pa, Es = %g Pa, G = %g Pa, kc = %g N/m\n", (double)c.r, (double)c.E, (double)c.Es, (double)c.G, (double)c.kc));
-  PetscCall(PetscViewerASCIIPrintf(viewer, "  ks = %g N, B = %g N m^2, beta = %g N m^2; contact %s (%" PetscInt_FMT " points), exclusion arc %g r, %s curvature\n", (double)c.ks, (double)c.B, (double)c.beta, ContactTypes[m->contactType], m->contactPoints, (double)m->excludeArc, CurvatureTypes[m->curvature]));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "  ks = %g N, B = %g N m^2, beta = %g N m^2; contact %s (%" PetscInt_FMT " points), exclusion arc %g r, %s curvature\n", (double)c.ks, (double)c.B, (double)c.beta, ContactTypes[m->contactType],
+                                   m->contactPoints, (double)m->excludeArc, CurvatureTypes[m->curvature]));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -154,7 +154,8 @@ static PetscErrorCode Run(void)
     PetscCall(VecGetArrayRead(X, &x));
     Expand(C, c.act, c.na, x, ptao);
     PetscCall(VecRestoreArrayRead(X, &x));
-    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "bare TAO brgn (lm): %" PetscInt_FMT " evaluations, best objective %.6e, %.1f s, %s; E %.4g Es %.4g G %.4g kc %.4g (last point)\n", c.nevals, (double)c.best, t1 - t0, TaoConvergedReasons[reason], (double)ptao[0], (double)ptao[1], (double)ptao[2], (double)ptao[3]));
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "bare TAO brgn (lm): %" PetscInt_FMT " evaluations, best objective %.6e, %.1f s, %s; E %.4g Es %.4g G %.4g kc %.4g (last point)\n", c.nevals, (double)c.best, t1 - t0, TaoConvergedReasons[reason],
+                          (double)ptao[0], (double)ptao[1], (double)ptao[2], (double)ptao[3]));
   }
   PetscCall(HylcCalibrateSolve(C));
   PetscCall(PetscTime(&t2));
@@ -163,7 +164,8 @@ static PetscErrorCode Run(void)
   nlm = C->nevals;
   for (PetscInt k = 0; k < PetscMin(c.nevals, 1000); k++)
     if (reach < 0 && c.hist[k] <= flm * (1 + 1e-3)) reach = k + 1;
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "hylc-calibrate (TAO): %" PetscInt_FMT " evaluations, objective %.6e -> %.6e, %.1f s; E %.4g Es %.4g G %.4g kc %.4g\n", nlm, (double)f0, (double)flm, t2 - t1, (double)plm[0], (double)plm[1], (double)plm[2], (double)plm[3]));
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "hylc-calibrate (TAO): %" PetscInt_FMT " evaluations, objective %.6e -> %.6e, %.1f s; E %.4g Es %.4g G %.4g kc %.4g\n", nlm, (double)f0, (double)flm, t2 - t1, (double)plm[0], (double)plm[1], (double)plm[2],
+                        (double)plm[3]));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "bare TAO objective per evaluation:"));
   for (PetscInt k = 0; k < PetscMin(c.nevals, 1000); k++) PetscCall(PetscPrintf(PETSC_COMM_WORLD, " %.4e", (double)c.hist[k]));
   PetscCall(PetscPrintf(PETSC_COMM_WORLD, "\nTAO within 0.1 %% of hylc-calibrate's objective after: %s%" PetscInt_FMT " evaluations (hylc-calibrate: %" PetscInt_FMT ")\n", reach < 0 ? "never, " : "", reach < 0 ? c.nevals : reach, nlm));

@@ -51,13 +51,7 @@ static void RandomSegments(int nseg, double r, double *x)
 
 static volatile double sink;
 
-typedef enum {
-  Q4_EGH,
-  Q4_E,
-  Q8_EGH,
-  CP_EGH,
-  Q4_REJECT
-} Kernel;
+typedef enum { Q4_EGH, Q4_E, Q8_EGH, CP_EGH, Q4_REJECT } Kernel;
 
 static double TimeKernel(Kernel kern, int npair, const double *x, double r, double tmin)
 {
@@ -176,8 +170,8 @@ int main(int argc, char **argv)
     TIME_MEDIAN(nseg > 2000 ? 5 : k, tbrute, HylcBroadphaseBruteForce(nseg, s, NULL, r, NULL, &bp));
     HylcPairListSort(&tp);
     if (tp.n != bp.n || memcmp(tp.idx, bp.idx, 2 * tp.n * sizeof(int))) printf("  MISMATCH tree/brute force at N = %d\n", nseg);
-    printf("  %6d %8.2f %8.2f %8.3f %8.3f %8.3f %8.3f %10.3f %8.1fx %8.1fx\n", nseg, 2.0 * close / nseg, 2.0 * tp.n / nseg, 1e3 * tbuild, 1e3 * trefit, 1e3 * tquery, 1e3 * (trefit + tquery), 1e3 * tbrute,
-           tbrute / (trefit + tquery), tbrute / (tbuild + tquery));
+    printf("  %6d %8.2f %8.2f %8.3f %8.3f %8.3f %8.3f %10.3f %8.1fx %8.1fx\n", nseg, 2.0 * close / nseg, 2.0 * tp.n / nseg, 1e3 * tbuild, 1e3 * trefit, 1e3 * tquery, 1e3 * (trefit + tquery), 1e3 * tbrute, tbrute / (trefit + tquery),
+           tbrute / (tbuild + tquery));
     HylcBVHDestroy(&bvh);
     HylcPairListFree(&tp);
     HylcPairListFree(&bp);

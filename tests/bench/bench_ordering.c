@@ -213,19 +213,22 @@ static PetscErrorCode Bench(const char *dir, const char *name, const PetscReal z
   PetscCall(MatSetOption(K, MAT_SPD, PETSC_TRUE));
   PetscCall(MatGetInfo(K, MAT_LOCAL, &minfo));
   nzK = 0.5 * (minfo.nz_used + n);
-  PetscCall(PetscPrintf(PETSC_COMM_SELF, "%s, z = (%g, %g, %g, %g, %g, %g): n = %d, nz(K) = %d, alpha = %.0e max|diag|\n", name, (double)z[0], (double)z[1], (double)z[2], (double)z[3], (double)z[4], (double)z[5], (int)n, (int)minfo.nz_used, (double)(alpha / dmax)));
+  PetscCall(PetscPrintf(PETSC_COMM_SELF, "%s, z = (%g, %g, %g, %g, %g, %g): n = %d, nz(K) = %d, alpha = %.0e max|diag|\n", name, (double)z[0], (double)z[1], (double)z[2], (double)z[3], (double)z[4], (double)z[5], (int)n, (int)minfo.nz_used,
+                        (double)(alpha / dmax)));
   PetscCall(PetscPrintf(PETSC_COMM_SELF, "  %-9s %10s %6s %10s %10s %11s %10s %11s %9s\n", "ordering", "nz(U)", "fill", "order ms", "symb ms", "numeric ms", "solve ms", "ord+sym+num", "residual"));
   for (int k = 0; k < NORD; k++) {
     PetscLogDouble tt[4] = {0, 0, 0, 0};
     PetscReal      nzF = 0, res = 0;
     PetscCall(BenchSolver(K, MATSOLVERPETSC, Orderings[k], reps, tt, &nzF, &res));
-    PetscCall(PetscPrintf(PETSC_COMM_SELF, "  %-9s %10.0f %6.2f %10.3f %10.3f %11.3f %10.3f %11.3f %9.1e\n", Orderings[k], (double)nzF, (double)(nzF / nzK), 1e3 * tt[0], 1e3 * tt[1], 1e3 * tt[2], 1e3 * tt[3], 1e3 * (tt[0] + tt[1] + tt[2]), (double)res));
+    PetscCall(
+        PetscPrintf(PETSC_COMM_SELF, "  %-9s %10.0f %6.2f %10.3f %10.3f %11.3f %10.3f %11.3f %9.1e\n", Orderings[k], (double)nzF, (double)(nzF / nzK), 1e3 * tt[0], 1e3 * tt[1], 1e3 * tt[2], 1e3 * tt[3], 1e3 * (tt[0] + tt[1] + tt[2]), (double)res));
   }
   {
     PetscLogDouble tt[4] = {0, 0, 0, 0};
     PetscReal      nzF = 0, res = 0;
     PetscCall(BenchHylcChol(K, reps, tt, &nzF, &res));
-    PetscCall(PetscPrintf(PETSC_COMM_SELF, "  %-9s %10.0f %6.2f %10s %10.3f %11.3f %10.3f %11.3f %9.1e   (HylcChol: stored panel entries; ordering inside symb)\n", "hylcchol", (double)nzF, (double)(nzF / nzK), "-", 1e3 * tt[1], 1e3 * tt[2], 1e3 * tt[3], 1e3 * (tt[1] + tt[2]), (double)res));
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, "  %-9s %10.0f %6.2f %10s %10.3f %11.3f %10.3f %11.3f %9.1e   (HylcChol: stored panel entries; ordering inside symb)\n", "hylcchol", (double)nzF, (double)(nzF / nzK), "-", 1e3 * tt[1], 1e3 * tt[2],
+                          1e3 * tt[3], 1e3 * (tt[1] + tt[2]), (double)res));
   }
   /* the same through MatGetFactor: HylcChol as the solver type hylc, and the external packages CHOLMOD
      and MUMPS, each with its own ordering (inside symb) */

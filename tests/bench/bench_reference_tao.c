@@ -121,8 +121,9 @@ static PetscErrorCode Run(HylcPatternType type)
     PetscReal fb = 1e300, xb[2] = {0, 0};
     for (PetscInt k = 0; k < PetscMin(c.n, 400); k++)
       if (c.fs[k] < fb) fb = c.fs[k], xb[0] = c.xs[k][0], xb[1] = c.xs[k][1];
-    PetscCall(PetscPrintf(PETSC_COMM_SELF, "%-6s hylc NM: %3d solves, minimum at (%.6f, %.6f), E %.9e J | TAONM: %3" PetscInt_FMT " solves, best at (%.6f, %.6f), E %.9e J (ends at %.6f, %.6f); within 1e-4 of hylc's minimum after %s%" PetscInt_FMT " solves\n", type, hn, hx, hy, hE,
-                          c.n, (double)xb[0], (double)xb[1], (double)fb, (double)PetscRealPart(x[0]), (double)PetscRealPart(x[1]), reach < 0 ? "never, " : "", reach < 0 ? c.n : reach));
+    PetscCall(PetscPrintf(PETSC_COMM_SELF,
+                          "%-6s hylc NM: %3d solves, minimum at (%.6f, %.6f), E %.9e J | TAONM: %3" PetscInt_FMT " solves, best at (%.6f, %.6f), E %.9e J (ends at %.6f, %.6f); within 1e-4 of hylc's minimum after %s%" PetscInt_FMT " solves\n", type,
+                          hn, hx, hy, hE, c.n, (double)xb[0], (double)xb[1], (double)fb, (double)PetscRealPart(x[0]), (double)PetscRealPart(x[1]), reach < 0 ? "never, " : "", reach < 0 ? c.n : reach));
   }
   PetscCall(VecRestoreArrayRead(X, &x));
   PetscCall(TaoDestroy(&tao));

@@ -70,10 +70,7 @@ static void Stencil(double kappa, hylcmat_shell_rest *r, double x[18])
     for (int i = 0; i < 3; i++) x[3 * v + i] = Q[3 * i] * y[3 * v] + Q[3 * i + 1] * y[3 * v + 1] + Q[3 * i + 2] * y[3 * v + 2] + 0.3 * i;
 }
 
-static const char *Verdict(double rate, double target)
-{
-  return target <= 0 ? "" : (rate >= target ? "  (target >= %.0e: met)" : "  (target >= %.0e: NOT met)");
-}
+static const char *Verdict(double rate, double target) { return target <= 0 ? "" : (rate >= target ? "  (target >= %.0e: met)" : "  (target >= %.0e: NOT met)"); }
 
 int main(void)
 {

@@ -33,15 +33,7 @@ static PetscErrorCode Run(const char *root, const char *dir, const Case *c)
   HylcPattern     p;
   HylcMicro       M;
   const PetscReal zs[9][6] = {
-      {0, 0, 0, 0, 0, 0},
-      {0.3, 0, 0, 0, 0, 0},
-      {-0.3, 0, 0, 0, 0, 0},
-      {0, 0, 0.3, 0, 0, 0},
-      {0, 0.5, 0, 0, 0, 0},
-      {0, 0, 0, 0.8 * c->sx, 0, 0},
-      {0, 0, 0, -0.8 * c->sx, 0, 0},
-      {0, 0, 0, 0, 0, 0.8 * c->sy},
-      {0, 0, 0, 0, 0, -0.8 * c->sy},
+      {0, 0, 0, 0, 0, 0}, {0.3, 0, 0, 0, 0, 0}, {-0.3, 0, 0, 0, 0, 0}, {0, 0, 0.3, 0, 0, 0}, {0, 0.5, 0, 0, 0, 0}, {0, 0, 0, 0.8 * c->sx, 0, 0}, {0, 0, 0, -0.8 * c->sx, 0, 0}, {0, 0, 0, 0, 0, 0.8 * c->sy}, {0, 0, 0, 0, 0, -0.8 * c->sy},
   };
   const char    *label[9] = {"z = 0", "sx = +0.3", "sx = -0.3", "sy = +0.3", "sa = +0.5", "II00 = +0.8 s", "II00 = -0.8 s", "II11 = +0.8 s", "II11 = -0.8 s"};
   PetscLogDouble total = 0, worst = 0;
@@ -73,9 +65,11 @@ static PetscErrorCode Run(const char *root, const char *dir, const Case *c)
     total += cpu;
     worst = PetscMax(worst, cpu);
     nconv += r.status == HYLC_MICRO_CONVERGED;
-    PetscCall(PetscPrintf(PETSC_COMM_SELF, "  %-14s %5d %-13s %9.3f %7.0f%% %7.0f%% %7.0f%% %7.0f%%  %.10e\n", label[k], (int)r.iterations, HylcMicroStatuses[r.status], cpu, 100 * r.tAssembly / w, 100 * r.tContact / w, 100 * r.tFactor / w, 100 * r.tLineSearch / w, (double)r.psi));
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, "  %-14s %5d %-13s %9.3f %7.0f%% %7.0f%% %7.0f%% %7.0f%%  %.10e\n", label[k], (int)r.iterations, HylcMicroStatuses[r.status], cpu, 100 * r.tAssembly / w, 100 * r.tContact / w, 100 * r.tFactor / w,
+                          100 * r.tLineSearch / w, (double)r.psi));
   }
-  PetscCall(PetscPrintf(PETSC_COMM_SELF, "  %s: %d/9 converged, mean %.3f CPU-s, worst %.3f CPU-s per sample; speed-up over the paper's %.1f CPU-s (best case of Table S1): %.1fx on average, %.1fx worst\n", c->name, (int)nconv, total / 9, worst, (double)PetscMin(c->paper1D, c->paper2D), PetscMin(c->paper1D, c->paper2D) / (total / 9), PetscMin(c->paper1D, c->paper2D) / worst));
+  PetscCall(PetscPrintf(PETSC_COMM_SELF, "  %s: %d/9 converged, mean %.3f CPU-s, worst %.3f CPU-s per sample; speed-up over the paper's %.1f CPU-s (best case of Table S1): %.1fx on average, %.1fx worst\n", c->name, (int)nconv, total / 9, worst,
+                        (double)PetscMin(c->paper1D, c->paper2D), PetscMin(c->paper1D, c->paper2D) / (total / 9), PetscMin(c->paper1D, c->paper2D) / worst));
   PetscCall(HylcMicroDestroy(&M));
   PetscCall(HylcPatternDestroy(&p));
   PetscFunctionReturn(PETSC_SUCCESS);

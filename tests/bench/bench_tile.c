@@ -60,10 +60,8 @@ static PetscErrorCode Bench(const char *dir, const char *name)
         for (PetscInt v = 0; v < N; v++, k++) {
           const PetscInt w = D.next[v];
           for (int d = 0; d < 3; d++) {
-            x[6 * k + d]     = D.X[3 * v + d] + (d == 0 ? s1 * D.px : d == 1 ? s2 * D.py
-                                                                             : 0);
-            x[6 * k + 3 + d] = D.X[3 * w + d] + (d == 0 ? (s1 + D.shift[2 * v]) * D.px : d == 1 ? (s2 + D.shift[2 * v + 1]) * D.py
-                                                                                                : 0);
+            x[6 * k + d]     = D.X[3 * v + d] + (d == 0 ? s1 * D.px : d == 1 ? s2 * D.py : 0);
+            x[6 * k + 3 + d] = D.X[3 * w + d] + (d == 0 ? (s1 + D.shift[2 * v]) * D.px : d == 1 ? (s2 + D.shift[2 * v + 1]) * D.py : 0);
           }
           ghost[k] = (unsigned char)(s1 || s2);
         }

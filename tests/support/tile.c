@@ -492,7 +492,8 @@ PetscErrorCode HylcTileEvaluate(HylcTile T, int mask, PetscReal parts[4], PetscR
     PetscCall(PetscLogEventEnd(HYLC_TileAssemble, 0, 0, 0, 0));
   }
   for (int i = 0; i < 4; i++) parts[i] = E[i];
-  PetscCheck(PetscIsNormalReal(E[0] + E[1] + E[2] + E[3]) || E[0] + E[1] + E[2] + E[3] == 0, PETSC_COMM_SELF, PETSC_ERR_FP, "Tile energy is not finite: stretch %g, bend %g, twist %g, contact %g", (double)E[0], (double)E[1], (double)E[2], (double)E[3]);
+  PetscCheck(PetscIsNormalReal(E[0] + E[1] + E[2] + E[3]) || E[0] + E[1] + E[2] + E[3] == 0, PETSC_COMM_SELF, PETSC_ERR_FP, "Tile energy is not finite: stretch %g, bend %g, twist %g, contact %g", (double)E[0], (double)E[1], (double)E[2],
+             (double)E[3]);
   PetscCall(PetscLogEventEnd(HYLC_TileEvaluate, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -147,8 +147,7 @@ static PetscErrorCode TestKnownFactor(void)
   }
   PetscCall(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY));
-  for (PetscInt i = 0; i < n; i++) b[i] = (i == 0 ? 6.0 : i == n - 1 ? 7.0
-                                                                     : 9.0);
+  for (PetscInt i = 0; i < n; i++) b[i] = (i == 0 ? 6.0 : i == n - 1 ? 7.0 : 9.0);
   PetscCall(HylcCholCreate(&C));
   for (int o = 0; o < 2; o++) {
     PetscCall(HylcCholSetOrdering(C, o ? HYLC_CHOL_ORDERING_NATURAL : HYLC_CHOL_ORDERING_METIS));

@@ -7,10 +7,7 @@
 #include <string.h>
 #include "hylctest.h"
 
-typedef enum {
-  QUAD,
-  CLOSEST
-} Variant;
+typedef enum { QUAD, CLOSEST } Variant;
 
 typedef struct {
   Variant v;
@@ -348,15 +345,8 @@ int main(void)
   /* convergence of the quadrature to the exact double integral (skew crossing segments) */
   {
     const double th = 1.1, h = 0.8 * r;
-    RefSetup     R = {
-            {-1.3 * r, 0.2 * r, 0},
-            {1, 0, 0},
-            {0.3 * r - 1.2 * r * cos(th), -1.2 * r * sin(th), h},
-            {cos(th), sin(th), 0},
-            2.7 * r,
-            2.4 * r,
-            r};
-    double x[12], err[HYLC_GAUSS_MAX + 1];
+    RefSetup     R = {{-1.3 * r, 0.2 * r, 0}, {1, 0, 0}, {0.3 * r - 1.2 * r * cos(th), -1.2 * r * sin(th), h}, {cos(th), sin(th), 0}, 2.7 * r, 2.4 * r, r};
+    double       x[12], err[HYLC_GAUSS_MAX + 1];
     SetupToX(&R, x);
     const double I = kc * RefIntegral(&R, 1e-12 * r * r);
     Model        m = {QUAD, 1, R.La, R.Lb, kc, r, 1};
@@ -370,14 +360,7 @@ int main(void)
     HYLC_CHECK(err[16] < err[4] / 1000 && err[16] < err[8] / 10, "crossing: no convergence %g %g %g", err[4], err[8], err[16]);
 
     /* both segments entirely inside the contact range: smooth integrand, spectral convergence */
-    RefSetup S = {
-        {-0.4 * r, 0.1 * r, 0},
-        {1, 0, 0},
-        {0.1 * r - 0.3 * r * cos(th), -0.3 * r * sin(th), 0.9 * r},
-        {cos(th), sin(th), 0},
-        0.8 * r,
-        0.6 * r,
-        r};
+    RefSetup S = {{-0.4 * r, 0.1 * r, 0}, {1, 0, 0}, {0.1 * r - 0.3 * r * cos(th), -0.3 * r * sin(th), 0.9 * r}, {cos(th), sin(th), 0}, 0.8 * r, 0.6 * r, r};
     SetupToX(&S, x);
     const double J = kc * RefIntegral(&S, 1e-14 * r * r);
     m.la           = S.La;

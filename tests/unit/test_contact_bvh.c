@@ -78,8 +78,7 @@ static void CompareAll(HylcBVH bvh, int nseg, const double *x, const int *edges,
 static int PairLess(const void *a, const void *b)
 {
   const int *p = (const int *)a, *q = (const int *)b;
-  return p[0] != q[0] ? (p[0] < q[0] ? -1 : 1) : p[1] != q[1] ? (p[1] < q[1] ? -1 : 1)
-                                                              : 0;
+  return p[0] != q[0] ? (p[0] < q[0] ? -1 : 1) : p[1] != q[1] ? (p[1] < q[1] ? -1 : 1) : 0;
 }
 
 /* HylcPairListSort (a counting sort, qsort for negative indices) against qsort: random pairs with

@@ -16,10 +16,7 @@ int main(void)
   for (int k = -40; k <= 40; k++) {
     const double x = k * k * k * 1e-3 * (k < 0 ? 1 : 1.3);
     HYLC_CHECK_REL(HylcSymexp(HylcSymlog(x)), x, 1e-14);
-    HYLC_CHECK_CLOSE(HylcSymlog(x), (x > 0 ? 1 : x < 0 ? -1
-                                                       : 0) *
-                                        log(1 + fabs(x)),
-                     1e-15);
+    HYLC_CHECK_CLOSE(HylcSymlog(x), (x > 0 ? 1 : x < 0 ? -1 : 0) * log(1 + fabs(x)), 1e-15);
   }
   HYLC_CHECK(HylcSymlog(0) == 0 && HylcSymexp(0) == 0, "symlog(0)");
   HYLC_CHECK_CLOSE(HylcSymexp(-2.0), -(exp(2.0) - 1), 1e-14);

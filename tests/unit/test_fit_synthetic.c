@@ -113,7 +113,8 @@ static PetscErrorCode Check(const char *label, const char *options, PetscBool st
     const PetscBool zu = (PetscBool)(t != 7 && (ci == 0 || ci == 2)), zv = (PetscBool)(t != 7 && (cj == 0 || cj == 2));
     for (PetscInt j = 0; j < nv; j++)
       for (PetscInt i = 0; i < nu; i++)
-        if ((zu && s->tu[i] < 0) || (zv && s->tv[j] < 0)) HYLC_CHECK(s->p[j * nu + i] == 0 && s->mu[j * nu + i] == 0 && s->mv[j * nu + i] == 0 && s->muv[j * nu + i] == 0, "%s: %s compressed node (%d, %d) not zero", label, HylcPlanTermName(t), (int)i, (int)j);
+        if ((zu && s->tu[i] < 0) || (zv && s->tv[j] < 0))
+          HYLC_CHECK(s->p[j * nu + i] == 0 && s->mu[j * nu + i] == 0 && s->mv[j * nu + i] == 0 && s->muv[j * nu + i] == 0, "%s: %s compressed node (%d, %d) not zero", label, HylcPlanTermName(t), (int)i, (int)j);
     if (zu || zv)
       for (int a = 0; a <= 30; a++)
         for (int b = 0; b <= 30; b++) {

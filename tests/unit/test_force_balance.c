@@ -77,7 +77,8 @@ static PetscErrorCode Balance(const char *root, const char *dir, const Case *c, 
   }
   const PetscReal ratio = PetscSqrtReal(net / bt);
   if (report)
-    PetscCall(PetscPrintf(PETSC_COMM_SELF, "| %s%s%s | %.3g | %.3g | %.3g | %.3g | %.3g |\n", c->name, c->consistent ? " (consistent periods)" : "", c->yarn ? " (docs/method.md §11 values)" : "", (double)ratio, (double)PetscSqrtReal(st / bt), (double)PetscSqrtReal(ct / bt), (double)PetscSqrtReal(tnet / PetscMax(tbt, 1e-300)), (double)(e[3])));
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, "| %s%s%s | %.3g | %.3g | %.3g | %.3g | %.3g |\n", c->name, c->consistent ? " (consistent periods)" : "", c->yarn ? " (docs/method.md §11 values)" : "", (double)ratio, (double)PetscSqrtReal(st / bt),
+                          (double)PetscSqrtReal(ct / bt), (double)PetscSqrtReal(tnet / PetscMax(tbt, 1e-300)), (double)(e[3])));
   if (c->limit > 0) HYLC_CHECK(ratio < c->limit, "%s: ||net force|| / ||bend + twist forces|| = %.3g, expected < %g", c->name, (double)ratio, (double)c->limit);
   PetscCall(PetscFree5(g, gbt, gs, gc, gt));
   PetscCall(HylcTileDestroy(&T));

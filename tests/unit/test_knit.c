@@ -77,8 +77,7 @@ static void CheckSampling(const Tile *t, const HylcKnitParams *p, double seglen,
   HYLC_CHECK(emin >= 0.7 * seglen && emax <= 1.3 * seglen, "%s: edge lengths [%g, %g] vs seglen %g", name, emin, emax, seglen);
   for (int q = 0; q < 3; q++) HYLC_CHECK(fabs(mean[q] / ntot) < 1e-9 * t->px, "%s: mean[%d] = %g", name, q, mean[q] / ntot);
   if (getenv("HYLC_KNIT_REPORT"))
-    printf("%s: px %.4g py %.4g (units r: %.3f x %.3f), %d verts/stitch, edge/seglen in [%.3f, %.3f], stitch length %.3f r\n", name, t->px, t->py, t->px / t->r, t->py / t->r, t->m, emin / seglen,
-           emax / seglen, t->m * (emin + emax) / 2 / t->r);
+    printf("%s: px %.4g py %.4g (units r: %.3f x %.3f), %d verts/stitch, edge/seglen in [%.3f, %.3f], stitch length %.3f r\n", name, t->px, t->py, t->px / t->r, t->py / t->r, t->m, emin / seglen, emax / seglen, t->m * (emin + emax) / 2 / t->r);
 }
 
 /* Stitch i of a yarn repeats stitch 0 shifted by i*wale (stockinette) or z-mirrored on odd i (rib). */

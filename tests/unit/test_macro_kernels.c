@@ -87,13 +87,8 @@ static void TestStrain(unsigned long long *st)
     HYLC_CHECK_REL(HylcMacroLambdaMin(z), 1 - z[1], 1e-12); /* eigenvalues 1 +- sa */
   }
   /* validation */
-  const double bad[5][6] = {
-      {0, 1, 0, 0, 0, 0},
-      {0, -1.5, 0, 0, 0, 0},
-      {-1, 0, 0, 0, 0, 0},
-      {0, 0, -1.2, 0, 0, 0},
-      {0, 0, 0, NAN, 0, 0}};
-  const HylcMacroStrainError want[5] = {HYLC_MACRO_STRAIN_SHEAR, HYLC_MACRO_STRAIN_SHEAR, HYLC_MACRO_STRAIN_STRETCH_X, HYLC_MACRO_STRAIN_STRETCH_Y, HYLC_MACRO_STRAIN_NONFINITE};
+  const double               bad[5][6] = {{0, 1, 0, 0, 0, 0}, {0, -1.5, 0, 0, 0, 0}, {-1, 0, 0, 0, 0, 0}, {0, 0, -1.2, 0, 0, 0}, {0, 0, 0, NAN, 0, 0}};
+  const HylcMacroStrainError want[5]   = {HYLC_MACRO_STRAIN_SHEAR, HYLC_MACRO_STRAIN_SHEAR, HYLC_MACRO_STRAIN_STRETCH_X, HYLC_MACRO_STRAIN_STRETCH_Y, HYLC_MACRO_STRAIN_NONFINITE};
   for (int k = 0; k < 5; k++) {
     HylcMacroStrain m;
     HYLC_CHECK(HylcMacroStrainValidate(bad[k]) == want[k], "bad strain %d", k);
@@ -320,9 +315,7 @@ static void TestClosed(unsigned long long *st)
   }
   /* sign convention: II00 = H > 0 bends toward +n: phi3 ~ H xi1^2 / 2 > 0; the same with shear and stretch */
   {
-    const double zs[2][6] = {
-        {0, 0, 0, 0.5, 0, 0},
-        {0.2, 0.5, -0.1, 0.5, 0, 0}};
+    const double zs[2][6] = {{0, 0, 0, 0.5, 0, 0}, {0.2, 0.5, -0.1, 0.5, 0, 0}};
     for (int k = 0; k < 2; k++) {
       HylcMacroStrain m;
       HylcMacroStrainSetUp(zs[k], 0, &m);

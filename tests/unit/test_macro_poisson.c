@@ -53,9 +53,7 @@ static PetscErrorCode PoissonError(const PetscReal z[6], const PetscReal lo[2], 
 static PetscErrorCode TestConvergence(void)
 {
   const PetscReal th = 0.5, H = 1.1;
-  const PetscReal cases[2][6] = {
-      {0.1, 0.3, -0.1, 0.8, 0, 0},
-      {-0.1, -0.2, 0.2, H * cos(th) * cos(th), H * cos(th) * sin(th), H * sin(th) * sin(th)}};
+  const PetscReal cases[2][6] = {{0.1, 0.3, -0.1, 0.8, 0, 0}, {-0.1, -0.2, 0.2, H * cos(th) * cos(th), H * cos(th) * sin(th), H * sin(th) * sin(th)}};
   const PetscReal lo[2] = {-1.0, -0.6}, hi[2] = {1.2, 0.9};
   const PetscInt  grids[3] = {24, 48, 96};
 
@@ -75,7 +73,8 @@ static PetscErrorCode TestConvergence(void)
       HYLC_CHECK(ephi[2] <= 2e-4, "case %d %s: phi error on the 96 grid %.3e", c, HylcMidsurfaceInterps[ip], (double)ephi[2]);
       HYLC_CHECK(p1 >= 1.5 && p2 >= 1.5 && enp[2] <= 1e-3, "case %d %s: polar normal orders %.2f %.2f (errors %.3e %.3e %.3e)", c, HylcMidsurfaceInterps[ip], (double)p1, (double)p2, (double)enp[0], (double)enp[1], (double)enp[2]);
       if (verbose)
-        PetscCall(PetscPrintf(PETSC_COMM_SELF, "case %d %-8s phi err %.3e %.3e %.3e orders %.2f %.2f | polar n err %.3e %.3e %.3e orders %.2f %.2f | KSP its (3 comps) %" PetscInt_FMT " %" PetscInt_FMT " %" PetscInt_FMT "\n", c, HylcMidsurfaceInterps[ip], (double)ephi[0], (double)ephi[1], (double)ephi[2], (double)o1, (double)o2, (double)enp[0], (double)enp[1], (double)enp[2], (double)p1, (double)p2, its[0], its[1], its[2]));
+        PetscCall(PetscPrintf(PETSC_COMM_SELF, "case %d %-8s phi err %.3e %.3e %.3e orders %.2f %.2f | polar n err %.3e %.3e %.3e orders %.2f %.2f | KSP its (3 comps) %" PetscInt_FMT " %" PetscInt_FMT " %" PetscInt_FMT "\n", c,
+                              HylcMidsurfaceInterps[ip], (double)ephi[0], (double)ephi[1], (double)ephi[2], (double)o1, (double)o2, (double)enp[0], (double)enp[1], (double)enp[2], (double)p1, (double)p2, its[0], its[1], its[2]));
     }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -261,7 +261,8 @@ static PetscErrorCode TestPolynomial(HylcMaterial m, unsigned long long *st)
       HYLC_CHECK_CLOSE(r.H[6 * 3 + 3] * Sig[3] * Sig[3], Bending(3, l, X, 0, 0, 2) * Sig[3] * Sig[3], 1e-11);
       HYLC_CHECK_CLOSE(r.H[6 * 5 + 5] * Sig[4] * Sig[4], Bending(4, l, X, 0, 0, 2) * Sig[4] * Sig[4], 1e-11);
       HYLC_CHECK_CLOSE(r.H[6 * 4 + 4] * Sig[3] * Sig[3], (Bending(3, l, X, 0, 0, 2) + Bending(4, l, X, 0, 0, 2)) * Sig[3] * Sig[3], 1e-11);
-      HYLC_CHECK(fabs(r.H[6 * 3 + 5]) * Sig[3] * Sig[4] < 1e-12 && fabs(r.H[6 * 3 + 4]) * Sig[3] * Sig[3] < 1e-12 && fabs(r.H[6 * 4 + 5]) * Sig[3] * Sig[4] < 1e-12, "bending Hessian off-diagonal at equal eigenvalues: %g %g %g", r.H[6 * 3 + 5], r.H[6 * 3 + 4], r.H[6 * 4 + 5]);
+      HYLC_CHECK(fabs(r.H[6 * 3 + 5]) * Sig[3] * Sig[4] < 1e-12 && fabs(r.H[6 * 3 + 4]) * Sig[3] * Sig[3] < 1e-12 && fabs(r.H[6 * 4 + 5]) * Sig[3] * Sig[4] < 1e-12, "bending Hessian off-diagonal at equal eigenvalues: %g %g %g", r.H[6 * 3 + 5],
+                 r.H[6 * 3 + 4], r.H[6 * 4 + 5]);
       for (int i = 0; i < 3; i++) {
         HYLC_CHECK_CLOSE(r.H[6 * i + 3] * Sig[i] * Sig[3], Bending(3, l, X, i, 1, 1) * Sig[i] * Sig[3], 1e-11);
         HYLC_CHECK_CLOSE(r.H[6 * i + 5] * Sig[i] * Sig[4], Bending(4, l, X, i, 1, 1) * Sig[i] * Sig[4], 1e-11);
@@ -455,7 +456,9 @@ static PetscErrorCode TestC1(HylcMaterial m, const char *name, unsigned long lon
           t[3] = t[5] = sc[3] * (s1->t[j] + 1e-10);
           PetscCall(Ev(m, t, &rr));
           for (int i = 3; i < 6; i++)
-            for (int k = 3; k < 6; k++) HYLC_CHECK(fabs(rr.H[6 * i + k] - r.H[6 * i + k]) * sc[i] * sc[k] <= 1e-6 * (fabs(r.H[6 * i + k]) * sc[i] * sc[k] + 1e-2), "%s: on knot %d, H[%d][%d] %g is not the limit from the right %g", name, j, i, k, r.H[6 * i + k], rr.H[6 * i + k]);
+            for (int k = 3; k < 6; k++)
+              HYLC_CHECK(fabs(rr.H[6 * i + k] - r.H[6 * i + k]) * sc[i] * sc[k] <= 1e-6 * (fabs(r.H[6 * i + k]) * sc[i] * sc[k] + 1e-2), "%s: on knot %d, H[%d][%d] %g is not the limit from the right %g", name, j, i, k, r.H[6 * i + k],
+                         rr.H[6 * i + k]);
         }
       }
     }

@@ -59,9 +59,7 @@ static PetscErrorCode Sweep(HylcMaterial m, const char name[])
       }
   for (int a = 0; a < NMAG; a++)
     for (int pat = 0; pat < 4; pat++) {
-      for (int i = 0; i < 6; i++) s[i] = Mag[a] * (pat == 0 ? 1 : pat == 1 ? -1
-                                                              : pat == 2   ? (i % 2 ? -1 : 1)
-                                                                           : (i % 3 ? 1 : -1));
+      for (int i = 0; i < 6; i++) s[i] = Mag[a] * (pat == 0 ? 1 : pat == 1 ? -1 : pat == 2 ? (i % 2 ? -1 : 1) : (i % 3 ? 1 : -1));
       PetscCall(CheckAt(m, name, s, &nsat));
       n++;
     }
@@ -146,14 +144,10 @@ int main(int argc, char **argv)
 {
   HylcMaterial       mat;
   unsigned long long rng        = 777;
-  const double       knots[][3] = {
-            {-1e308, 0, 1e308},
-            {0, 1e-300, 2e-300},
-            {-1, 0, 1},
-            {-1e-300, 0, 1e-300}};
-  const double amps[]   = {1, 1e300};
-  const double scales[] = {1, 1e-300, 1e300, 170};
-  char         name[128];
+  const double       knots[][3] = {{-1e308, 0, 1e308}, {0, 1e-300, 2e-300}, {-1, 0, 1}, {-1e-300, 0, 1e-300}};
+  const double       amps[]     = {1, 1e300};
+  const double       scales[]   = {1, 1e-300, 1e300, 170};
+  char               name[128];
 
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
   PetscCall(HylcMaterialCreate(PETSC_COMM_SELF, &mat));

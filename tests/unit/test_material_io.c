@@ -251,7 +251,8 @@ static PetscErrorCode TestErrors(HylcMaterial m)
   CHECK_ERROR(HylcMaterialLoadFromString(m, "e.json", t), PETSC_ERR_USER_INPUT, "invalid escape '\\q'");
   CHECK_ERROR(HylcMaterialLoadFromString(m, "e.json", "{\"density\": 1}\n{}"), PETSC_ERR_USER_INPUT, "e.json:2: unexpected text after the end");
   CHECK_ERROR(HylcMaterialLoadFromString(m, "e.json", "{\"density\": 1, \"density\": 2}"), PETSC_ERR_USER_INPUT, "e.json:1: duplicate key \"density\"");
-  CHECK_ERROR(HylcMaterialLoadFromString(m, "e.json", "{\"density\": [[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]}"), PETSC_ERR_USER_INPUT, "nesting deeper");
+  CHECK_ERROR(HylcMaterialLoadFromString(m, "e.json", "{\"density\": [[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]}"), PETSC_ERR_USER_INPUT,
+              "nesting deeper");
   CHECK_ERROR(HylcMaterialLoadFromString(m, "e.json", "{\"density\": \"\\u12\"}"), PETSC_ERR_USER_INPUT, "invalid \\u escape");
   CHECK_ERROR(HylcMaterialLoadFromString(m, "e.json", "[1, 2"), PETSC_ERR_USER_INPUT, "e.json:1: end of file inside the array opened at line 1");
   /* schema */

@@ -194,7 +194,8 @@ static PetscErrorCode TestContinuation(void)
   PetscCall(HylcMicroSolve(M, z2, &rw)); /* continued from z1 */
   PetscCall(HylcMicroGetContinued(M, &cont));
   HYLC_CHECK(cont, "the solve after HylcMicroSetInitialState says it was not continued");
-  HYLC_CHECK(rc.status == HYLC_MICRO_CONVERGED && r1.status == HYLC_MICRO_CONVERGED && rw.status == HYLC_MICRO_CONVERGED, "continuation: statuses cold %s, z1 %s, continued %s", HylcMicroStatuses[rc.status], HylcMicroStatuses[r1.status], HylcMicroStatuses[rw.status]);
+  HYLC_CHECK(rc.status == HYLC_MICRO_CONVERGED && r1.status == HYLC_MICRO_CONVERGED && rw.status == HYLC_MICRO_CONVERGED, "continuation: statuses cold %s, z1 %s, continued %s", HylcMicroStatuses[rc.status], HylcMicroStatuses[r1.status],
+             HylcMicroStatuses[rw.status]);
   HYLC_CHECK(PetscAbsReal(rw.psi - rc.psi) <= 1e-9 * PetscAbsReal(rc.psi), "continued Psi %.12e vs cold %.12e (relative %.2e > 1e-9)", (double)rw.psi, (double)rc.psi, (double)(PetscAbsReal(rw.psi - rc.psi) / PetscAbsReal(rc.psi)));
   HYLC_CHECK(rw.iterations < rc.iterations, "continued solve: %d iterations, cold %d (expected fewer)", (int)rw.iterations, (int)rc.iterations);
   PetscCall(PetscPrintf(PETSC_COMM_SELF, "continuation: cold %d iterations, continued %d; Psi %.12e vs %.12e\n", (int)rc.iterations, (int)rw.iterations, (double)rc.psi, (double)rw.psi));
@@ -317,10 +318,12 @@ static PetscErrorCode CheckMirrorAndWrap(const char *name, HylcPattern p, const 
   PetscCall(HylcMicroSolve(Q, zp, &rq));
   PetscCall(HylcMicroSolve(M, zp, &rp));
   PetscCall(HylcMicroSolve(W, zp, &rw));
-  HYLC_CHECK(rm.status == HYLC_MICRO_CONVERGED && rq.status == HYLC_MICRO_CONVERGED && rp.status == HYLC_MICRO_CONVERGED && rw.status == HYLC_MICRO_CONVERGED, "%s: status %s %s %s %s", name, HylcMicroStatuses[rm.status], HylcMicroStatuses[rq.status], HylcMicroStatuses[rp.status], HylcMicroStatuses[rw.status]);
+  HYLC_CHECK(rm.status == HYLC_MICRO_CONVERGED && rq.status == HYLC_MICRO_CONVERGED && rp.status == HYLC_MICRO_CONVERGED && rw.status == HYLC_MICRO_CONVERGED, "%s: status %s %s %s %s", name, HylcMicroStatuses[rm.status], HylcMicroStatuses[rq.status],
+             HylcMicroStatuses[rp.status], HylcMicroStatuses[rw.status]);
   HYLC_CHECK(PetscAbsReal(rq.psi - rm.psi) <= 1e-9 * rm.psi, "%s: mirror image at sa = %g: psi %.12g, the pattern at sa = %g: psi %.12g", name, (double)sa, (double)rq.psi, (double)-sa, (double)rm.psi);
   HYLC_CHECK(PetscAbsReal(rw.psi - rp.psi) <= 1e-9 * rp.psi, "%s: vertices stored a period away: psi %.12g instead of %.12g", name, (double)rw.psi, (double)rp.psi);
-  if (getenv("HYLC_REPORT")) PetscCall(PetscPrintf(PETSC_COMM_SELF, "%s: psi(+%g) = %.10g, psi(-%g) = %.10g, mirror image at +%g: %.10g, rewrapped: %.10g\n", name, (double)sa, (double)rp.psi, (double)sa, (double)rm.psi, (double)sa, (double)rq.psi, (double)rw.psi));
+  if (getenv("HYLC_REPORT"))
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, "%s: psi(+%g) = %.10g, psi(-%g) = %.10g, mirror image at +%g: %.10g, rewrapped: %.10g\n", name, (double)sa, (double)rp.psi, (double)sa, (double)rm.psi, (double)sa, (double)rq.psi, (double)rw.psi));
   PetscCall(HylcMicroDestroy(&M));
   PetscCall(HylcMicroDestroy(&Q));
   PetscCall(HylcMicroDestroy(&W));
@@ -482,7 +485,8 @@ static PetscErrorCode TestObject(void)
   PetscCall(HylcMicroSetFromOptions(M));
   PetscCall(HylcMicroSetUp(M));
   PetscCall(ViewToTempFile((PetscObject)M, path));
-  HYLC_CHECK(FileHas(path, "17 trials") && FileHas(path, "step limit (0.07 +") && FileHas(path, "(other_)") && FileHas(path, "solver type hylc (-other_micro_factor_pc_factor_mat_solver_type)") && FileHas(path, "(other_micro_factor_)"), "HylcMicroView (%s) lacks the prefix, a setter's or an option's value", path);
+  HYLC_CHECK(FileHas(path, "17 trials") && FileHas(path, "step limit (0.07 +") && FileHas(path, "(other_)") && FileHas(path, "solver type hylc (-other_micro_factor_pc_factor_mat_solver_type)") && FileHas(path, "(other_micro_factor_)"),
+             "HylcMicroView (%s) lacks the prefix, a setter's or an option's value", path);
   remove(path);
   {
     HylcPeriodic P;
@@ -566,8 +570,11 @@ static PetscErrorCode TestAdaptive(void)
       HYLC_CHECK(r[a].status == HYLC_MICRO_CONVERGED, "plain weave, strain %d, %s, rtol 1e-10: status %s", k, sname[a], HylcMicroStatuses[r[a].status]);
     }
     if (k == 1) psi1 = r[0].psi;
-    for (int a = 1; a < 3; a++) HYLC_CHECK(PetscAbsReal(r[a].psi - r[0].psi) <= 1e-8 * PetscAbsReal(r[0].psi), "plain weave, strain %d: psi %s %.12g, paper %.12g (%d, %d iterations, rtol 1e-10; default rtol: %d, %d)", k, sname[a], (double)r[a].psi, (double)r[0].psi, (int)r[a].iterations, (int)r[0].iterations, (int)its[a], (int)its[0]);
-    PetscCall(PetscPrintf(PETSC_COMM_SELF, "adaptive, hybrid: strain %d: iterations %d, %d (paper %d), rtol 1e-10: %d, %d (%d), psi rel. diff %.1e, %.1e\n", k, (int)its[1], (int)its[2], (int)its[0], (int)r[1].iterations, (int)r[2].iterations, (int)r[0].iterations, (double)(PetscAbsReal(r[1].psi - r[0].psi) / r[0].psi), (double)(PetscAbsReal(r[2].psi - r[0].psi) / r[0].psi)));
+    for (int a = 1; a < 3; a++)
+      HYLC_CHECK(PetscAbsReal(r[a].psi - r[0].psi) <= 1e-8 * PetscAbsReal(r[0].psi), "plain weave, strain %d: psi %s %.12g, paper %.12g (%d, %d iterations, rtol 1e-10; default rtol: %d, %d)", k, sname[a], (double)r[a].psi, (double)r[0].psi,
+                 (int)r[a].iterations, (int)r[0].iterations, (int)its[a], (int)its[0]);
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, "adaptive, hybrid: strain %d: iterations %d, %d (paper %d), rtol 1e-10: %d, %d (%d), psi rel. diff %.1e, %.1e\n", k, (int)its[1], (int)its[2], (int)its[0], (int)r[1].iterations, (int)r[2].iterations,
+                          (int)r[0].iterations, (double)(PetscAbsReal(r[1].psi - r[0].psi) / r[0].psi), (double)(PetscAbsReal(r[2].psi - r[0].psi) / r[0].psi)));
   }
   { /* the clearance step limit: the same equilibrium (rtol 1e-10) */
     HylcMicroResult rc;
@@ -590,10 +597,12 @@ static PetscErrorCode TestAdaptive(void)
     PetscCall(SNESSetTolerances(snes, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, 20, PETSC_DEFAULT));
     PetscCall(HylcMicroSetRegularizationSchedule(M, HYLC_MICRO_ALPHA_ADAPTIVE, PETSC_DEFAULT, 1e10, 1e10));
     PetscCall(HylcMicroSolve(M, zs[1], &rf));
-    HYLC_CHECK(rf.status == HYLC_MICRO_CONVERGED && rf.fallback && rf.iterations > 20 && PetscAbsReal(rf.psi - psi1) <= 1e-8 * PetscAbsReal(psi1), "plain weave, adaptive at alpha^ 1e10, 20 iterations: status %s, fallback %d, %d iterations, psi %.12g, paper %.12g", HylcMicroStatuses[rf.status], (int)rf.fallback, (int)rf.iterations, (double)rf.psi, (double)psi1);
+    HYLC_CHECK(rf.status == HYLC_MICRO_CONVERGED && rf.fallback && rf.iterations > 20 && PetscAbsReal(rf.psi - psi1) <= 1e-8 * PetscAbsReal(psi1),
+               "plain weave, adaptive at alpha^ 1e10, 20 iterations: status %s, fallback %d, %d iterations, psi %.12g, paper %.12g", HylcMicroStatuses[rf.status], (int)rf.fallback, (int)rf.iterations, (double)rf.psi, (double)psi1);
     PetscCall(HylcMicroSetRegularizationFallback(M, PETSC_FALSE));
     PetscCall(HylcMicroSolve(M, zs[1], &rf));
-    HYLC_CHECK(rf.status == HYLC_MICRO_MAX_IT && !rf.fallback && rf.iterations == 20, "plain weave, adaptive at alpha^ 1e10, 20 iterations, no fallback: status %s, fallback %d, %d iterations", HylcMicroStatuses[rf.status], (int)rf.fallback, (int)rf.iterations);
+    HYLC_CHECK(rf.status == HYLC_MICRO_MAX_IT && !rf.fallback && rf.iterations == 20, "plain weave, adaptive at alpha^ 1e10, 20 iterations, no fallback: status %s, fallback %d, %d iterations", HylcMicroStatuses[rf.status], (int)rf.fallback,
+               (int)rf.iterations);
     PetscCall(HylcMicroSetRegularizationFallback(M, PETSC_TRUE));
     PetscCall(HylcMicroSetRegularizationSchedule(M, HYLC_MICRO_ALPHA_PAPER, PETSC_DEFAULT, 1e-2, 1e10));
     PetscCall(SNESSetTolerances(snes, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, maxit, PETSC_DEFAULT));
@@ -728,7 +737,8 @@ static PetscErrorCode TestSaddle(void)
     /* the test alone: the straight state, and its negative curvature past the Euler load */
     PetscCall(HylcMicroSetSaddleEscape(M, PETSC_TRUE, 0, PETSC_DEFAULT));
     PetscCall(HylcMicroSolve(M, z, &r));
-    HYLC_CHECK(r.status == HYLC_MICRO_CONVERGED && PetscAbsReal(r.psi - straight) <= 1e-8 * straight, "compressed yarn eps %g, test only: status %s, psi %.12g, straight %.12g", (double)eps, HylcMicroStatuses[r.status], (double)r.psi, (double)straight);
+    HYLC_CHECK(r.status == HYLC_MICRO_CONVERGED && PetscAbsReal(r.psi - straight) <= 1e-8 * straight, "compressed yarn eps %g, test only: status %s, psi %.12g, straight %.12g", (double)eps, HylcMicroStatuses[r.status], (double)r.psi,
+               (double)straight);
     HYLC_CHECK(k ? r.negcurv > 0 : r.negcurv == 0, "compressed yarn eps %g (Euler strain %g), test only: %d negative eigenvalues", (double)eps, (double)epsc, (int)r.negcurv);
     HYLC_CHECK(r.escapes == 0, "compressed yarn eps %g, test only: %d escapes", (double)eps, (int)r.escapes);
     {
@@ -750,7 +760,8 @@ static PetscErrorCode TestSaddle(void)
       PetscCall(HylcMicroGetEnergyHistory(M, &n, &E));
       for (PetscInt i = 1; i < n; i++) HYLC_CHECK(E[i] < E[i - 1], "compressed yarn eps %g, escapes: energy increased at accepted iterate %d: %g -> %g", (double)eps, (int)i, (double)E[i - 1], (double)E[i]);
     }
-    PetscCall(PetscPrintf(PETSC_COMM_SELF, "saddle: eps %g (Euler %g): psi %g, straight %g (post-buckling estimate %g), %d escapes, %d iterations\n", (double)eps, (double)epsc, (double)r.psi, (double)straight, (double)(k ? straight * (2 * epsc / -eps - PetscSqr(epsc / eps)) : straight), (int)r.escapes, (int)r.iterations));
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, "saddle: eps %g (Euler %g): psi %g, straight %g (post-buckling estimate %g), %d escapes, %d iterations\n", (double)eps, (double)epsc, (double)r.psi, (double)straight,
+                          (double)(k ? straight * (2 * epsc / -eps - PetscSqr(epsc / eps)) : straight), (int)r.escapes, (int)r.iterations));
   }
   PetscCall(HylcMicroDestroy(&M));
   PetscCall(HylcPatternDestroy(&p));
@@ -873,7 +884,8 @@ static PetscErrorCode TestLazy(void)
   PetscCall(HylcPeriodicSetContactMargin(P1, 0.375));
   PetscCall(HylcMicroSetPattern(F, b, &m));
   PetscCall(HylcMicroSolve(F, z, &rf));
-  HYLC_CHECK(ra.status == HYLC_MICRO_CONVERGED && rb.iterations == 2 && rb.status == HYLC_MICRO_MAX_IT, "with -micro_snes_max_it 2: straight yarn %d iterations (%s), plain weave %d iterations (%s)", (int)ra.iterations, HylcMicroStatuses[ra.status], (int)rb.iterations, HylcMicroStatuses[rb.status]);
+  HYLC_CHECK(ra.status == HYLC_MICRO_CONVERGED && rb.iterations == 2 && rb.status == HYLC_MICRO_MAX_IT, "with -micro_snes_max_it 2: straight yarn %d iterations (%s), plain weave %d iterations (%s)", (int)ra.iterations, HylcMicroStatuses[ra.status],
+             (int)rb.iterations, HylcMicroStatuses[rb.status]);
   HYLC_CHECK(rb.psi == rf.psi && rb.iterations == rf.iterations && rb.retries == rf.retries, "second pattern: psi %.17g (%d its) vs a fresh solver %.17g (%d its)", (double)rb.psi, (int)rb.iterations, (double)rf.psi, (int)rf.iterations);
   PetscCall(HylcMicroDestroy(&F));
   PetscCall(HylcMicroDestroy(&M));

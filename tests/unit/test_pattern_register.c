@@ -84,10 +84,7 @@ static PetscErrorCode ErrorOf(PetscErrorCode (*call)(HylcPattern), HylcPattern p
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode SetTypeWoolly(HylcPattern p)
-{
-  return HylcPatternSetType(p, "woolly");
-}
+static PetscErrorCode SetTypeWoolly(HylcPattern p) { return HylcPatternSetType(p, "woolly"); }
 
 int main(int argc, char **argv)
 {

@@ -266,9 +266,7 @@ static PetscErrorCode TestConstraints(HylcPattern p)
     PetscCall(HylcPeriodicSetUp(P));
     PetscCall(HylcPeriodicGetSizes(P, &n, NULL, NULL, &nc));
     PetscCall(HylcPeriodicGetConstraints(P, &nc, &A, &dL, &Ai));
-    HYLC_CHECK(nc == 3 + (sl == 0 ? 0 : sl == 1 ? 1
-                                                : nloops),
-               "slide %s: %d constraint rows", HylcSlideConstraints[sl], (int)nc);
+    HYLC_CHECK(nc == 3 + (sl == 0 ? 0 : sl == 1 ? 1 : nloops), "slide %s: %d constraint rows", HylcSlideConstraints[sl], (int)nc);
     PetscCall(PetscMalloc1(n, &y));
     PetscCall(HylcPeriodicGetInitialState(P, y));
     PetscCall(HylcPeriodicConstraintResidual(P, y, c));
@@ -297,19 +295,12 @@ static PetscErrorCode TestStraightConstraints(void)
 {
   const PetscReal px = 8e-3, py = 8e-3, r = 5e-4;
   const PetscInt  N        = 8;
-  const PetscReal zs[3][6] = {
-      {0, 0, 0, 0, 0, 0},
-      {0.1, 0.3, -0.05, 0, 0, 0},
-      {0.05, 0.1, 0, 80, 0, 40}};
+  const PetscReal zs[3][6] = {{0, 0, 0, 0, 0, 0}, {0.1, 0.3, -0.05, 0, 0, 0}, {0.05, 0.1, 0, 80, 0, 40}};
   /* independent rows per tile and slide variant (none, global, per_yarn, per_family): a slide row that is
      a combination of translation rows goes; the relative slide of two parallel yarns (per_yarn) and the
      slide rows of crossing families stay */
-  const PetscInt expect[4][4] = {
-      {3, 3, 3, 3},
-      {3, 3, 4, 3},
-      {3, 4, 5, 5},
-      {3, 3, 3, 3}};
-  HylcYarnModel m;
+  const PetscInt expect[4][4] = {{3, 3, 3, 3}, {3, 3, 4, 3}, {3, 4, 5, 5}, {3, 3, 3, 3}};
+  HylcYarnModel  m;
 
   PetscFunctionBegin;
   PetscCall(HylcYarnModelDefault(&m));

@@ -50,21 +50,20 @@ static PetscErrorCode SetOptions(const char *const kv[][2], PetscBool set)
 
 static PetscErrorCode TestSampler(void)
 {
-  const char *const opts[][2] = {
-      {"-a_pattern_type", "plain"},
-      {"-a_yarn_kc", "50"},
-      {"-a_sampler_terms", "zero,sx"},
-      {"-a_sampler_n1", "3"},
-      {"-a_sampler_family", "woven"},
-      {"-a_sampler_output", "prefix_a.h5"},
-      {"-a_sampler_overwrite", NULL},
-      {"-a_sampler_progress", "1000"},
-      {"-a_sampler_reference", "relax"},
-      {"-a_reference_max_evals", "6"},
-      {"-a_reference_output", "prefix_a.pyp"},
-      {"-a_micro_max_time", "58"},
-      {"-a_periodic_pair_margin", "1.07"},
-      {NULL, NULL}};
+  const char *const opts[][2] = {{"-a_pattern_type", "plain"},
+                                 {"-a_yarn_kc", "50"},
+                                 {"-a_sampler_terms", "zero,sx"},
+                                 {"-a_sampler_n1", "3"},
+                                 {"-a_sampler_family", "woven"},
+                                 {"-a_sampler_output", "prefix_a.h5"},
+                                 {"-a_sampler_overwrite", NULL},
+                                 {"-a_sampler_progress", "1000"},
+                                 {"-a_sampler_reference", "relax"},
+                                 {"-a_reference_max_evals", "6"},
+                                 {"-a_reference_output", "prefix_a.pyp"},
+                                 {"-a_micro_max_time", "58"},
+                                 {"-a_periodic_pair_margin", "1.07"},
+                                 {NULL, NULL}};
   HylcSampler       S;
   HylcPattern       pat;
   HylcMicro         micro;
@@ -111,24 +110,23 @@ static PetscErrorCode TestSampler(void)
 
 static PetscErrorCode TestCalibrate(void)
 {
-  const char *const opts[][2] = {
-      {"-c_pattern_file", "prefix_a.pyp"},
-      {"-c_yarn_kc", "35"},
-      {"-c_calibrate_target", "prefix_a.h5"},
-      {"-c_calibrate_params", "kc"},
-      {"-c_calibrate_max_it", "3"},
-      {"-c_calibrate_reference", "none"},
-      {"-c_sampler_family", "woven"},
-      {"-c_reference_max_evals", "6"},
-      {"-c_micro_max_time", "59"},
-      {"-c_periodic_pair_margin", "1.08"},
-      {NULL, NULL}};
-  HylcCalibrate C;
-  HylcMicro     micro;
-  HylcPeriodic  P;
-  PetscReal     p0[HYLC_CALIBRATE_NPARAM], p1[HYLC_CALIBRATE_NPARAM], f0, f1;
-  PetscInt      its, m;
-  PetscBool     has;
+  const char *const opts[][2] = {{"-c_pattern_file", "prefix_a.pyp"},
+                                 {"-c_yarn_kc", "35"},
+                                 {"-c_calibrate_target", "prefix_a.h5"},
+                                 {"-c_calibrate_params", "kc"},
+                                 {"-c_calibrate_max_it", "3"},
+                                 {"-c_calibrate_reference", "none"},
+                                 {"-c_sampler_family", "woven"},
+                                 {"-c_reference_max_evals", "6"},
+                                 {"-c_micro_max_time", "59"},
+                                 {"-c_periodic_pair_margin", "1.08"},
+                                 {NULL, NULL}};
+  HylcCalibrate     C;
+  HylcMicro         micro;
+  HylcPeriodic      P;
+  PetscReal         p0[HYLC_CALIBRATE_NPARAM], p1[HYLC_CALIBRATE_NPARAM], f0, f1;
+  PetscInt          its, m;
+  PetscBool         has;
 
   PetscFunctionBegin;
   PetscCall(SetOptions(opts, PETSC_TRUE));

@@ -236,8 +236,7 @@ static PetscErrorCode MeasurePattern(const char *path, PetscBool consistent, Mea
       for (int c = 0; c < NQ; c++) {
         par.variant = c == Q_PEREDGE ? HYLC_ROD_CURVATURE_PER_EDGE : HYLC_ROD_CURVATURE_AVERAGED;
         for (int j = 0; j < 2; j++) {
-          const double r = c == Q_NEG ? -rk[j] : c == Q_SWAP ? rk[1 - j]
-                                                             : rk[j];
+          const double r = c == Q_NEG ? -rk[j] : c == Q_SWAP ? rk[1 - j] : rk[j];
           ref.kappa0[j] = ref.kappa0[2 + j] = r;
         }
         PetscCheck(HylcRodBendTwist(q, &ref, &par, 1.0, HYLC_ROD_BEND, NULL, g, NULL) == 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "kernel failed");

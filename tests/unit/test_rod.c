@@ -72,7 +72,15 @@ static void TestBendTwistFD(void)
 
   /* random configurations */
   for (int trial = 0; trial < 40; trial++) {
-    RodElemSpec s = {.le = RandRange(&st, 0.5, 2), .lf = RandRange(&st, 0.5, 2), .angle = RandRange(&st, 0, 2.5), .thetae = RandRange(&st, -4, 4), .thetaf = RandRange(&st, -4, 4), .perturb = trial % 2 ? 0.2 : 0.0, .mstored = NAN, .nwrap = trial % 3 - 1, .restscale = 1.0};
+    RodElemSpec s = {.le        = RandRange(&st, 0.5, 2),
+                     .lf        = RandRange(&st, 0.5, 2),
+                     .angle     = RandRange(&st, 0, 2.5),
+                     .thetae    = RandRange(&st, -4, 4),
+                     .thetaf    = RandRange(&st, -4, 4),
+                     .perturb   = trial % 2 ? 0.2 : 0.0,
+                     .mstored   = NAN,
+                     .nwrap     = trial % 3 - 1,
+                     .restscale = 1.0};
     RodElemBuild(&st, &s, &el);
     snprintf(label, sizeof label, "random %d", trial);
     CheckBothVariants(&el, RandRange(&st, 0.2, 1), 1.0, label);

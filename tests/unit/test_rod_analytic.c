@@ -21,7 +21,15 @@ static void TestInvariance(void)
 {
   unsigned long long st = 4242;
   for (int trial = 0; trial < 30; trial++) {
-    RodElemSpec s = {.le = RandRange(&st, 0.05, 2), .lf = RandRange(&st, 0.05, 2), .angle = RandRange(&st, 0, 3), .thetae = RandRange(&st, -4, 4), .thetaf = RandRange(&st, -4, 4), .perturb = 0.1 * (trial % 3), .mstored = trial % 2 ? NAN : M_PI - 1e-3, .nwrap = trial % 3 - 1, .restscale = 1};
+    RodElemSpec s = {.le        = RandRange(&st, 0.05, 2),
+                     .lf        = RandRange(&st, 0.05, 2),
+                     .angle     = RandRange(&st, 0, 3),
+                     .thetae    = RandRange(&st, -4, 4),
+                     .thetaf    = RandRange(&st, -4, 4),
+                     .perturb   = 0.1 * (trial % 3),
+                     .mstored   = trial % 2 ? NAN : M_PI - 1e-3,
+                     .nwrap     = trial % 3 - 1,
+                     .restscale = 1};
     RodElem     el, mv;
     double      R[9], b[3];
     RodElemBuild(&st, &s, &el);

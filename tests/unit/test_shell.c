@@ -30,10 +30,7 @@
 
 static PetscBool Verbose = PETSC_FALSE;
 
-static double Uni(unsigned long long *st) /* uniform in [-1, 1) */
-{
-  return 2 * HylcTestRand(st) - 1;
-}
+static double Uni(unsigned long long *st) /* uniform in [-1, 1) */ { return 2 * HylcTestRand(st) - 1; }
 
 /* a uniformly random rotation (from a random unit quaternion) */
 static void RandomRotation(unsigned long long *st, double Q[9])
@@ -69,14 +66,7 @@ typedef struct {
   double             L; /* the size of the triangle (m) */
 } Stencil;
 
-enum {
-  K_GENERIC,
-  K_BOUNDARY,
-  K_FOLD,
-  K_UMBILIC,
-  K_FLAT,
-  K_NKIND
-};
+enum { K_GENERIC, K_BOUNDARY, K_FOLD, K_UMBILIC, K_FLAT, K_NKIND };
 static const char *KindName[K_NKIND] = {"interior", "boundary", "strong fold", "equal eigenvalues", "flat"};
 
 /* a random stencil of the kind; kappa: a typical curvature of the table (1/m); Qt: a rigid motion
@@ -446,7 +436,9 @@ static PetscErrorCode TestTable(const hylcmat *m, const char *name, int nper, un
   }
   for (int k = 0; k < K_NKIND; k++) {
     HYLC_CHECK(s[k].skipped * 10 <= s[k].tested + s[k].skipped, "%s, %s: %d of %d stencils skipped (a knot inside the differences)", name, KindName[k], s[k].skipped, s[k].tested + s[k].skipped);
-    if (Verbose) PetscCall(PetscPrintf(PETSC_COMM_SELF, "  %-16s %-18s %4d tested %3d skipped: worst gradient %.2e Hessian %.2e projection %.2e%s\n", name, KindName[k], s[k].tested, s[k].skipped, s[k].worstg, s[k].worstH, s[k].worstP, k == K_FLAT ? " (Hessian: in-plane and one-sided)" : ""));
+    if (Verbose)
+      PetscCall(PetscPrintf(PETSC_COMM_SELF, "  %-16s %-18s %4d tested %3d skipped: worst gradient %.2e Hessian %.2e projection %.2e%s\n", name, KindName[k], s[k].tested, s[k].skipped, s[k].worstg, s[k].worstH, s[k].worstP,
+                            k == K_FLAT ? " (Hessian: in-plane and one-sided)" : ""));
     if (k == K_FLAT) HYLC_CHECK(s[k].onesided * 4 >= s[k].tested, "%s: only %d of %d flat stencils checked one-sided", name, s[k].onesided, s[k].tested);
     all->tested += s[k].tested;
     all->skipped += s[k].skipped;
@@ -753,7 +745,8 @@ static PetscErrorCode TestCylinder(void)
         }
         HYLC_CHECK(e[3] < 1e-4, "cylinder (%s, axis at %.2f rad, side %d): II off by %.3g / rho with 64 triangles per side", kinds[kind], phis[ip], side, e[3]);
         if (Verbose)
-          PetscCall(PetscPrintf(PETSC_COMM_SELF, "  cylinder, %-21s axis %.2f rad, toward %sn: %s|II - side/rho d d^T| rho = %.2e %.2e %.2e %.2e (8..64 per side), order %.2f %.2f %.2f; in-plane %.1e\n", kinds[kind], phis[ip], side > 0 ? "+" : "-", kind == 2 ? "mean " : "", e[0], e[1], e[2], e[3], o[0], o[1], o[2], ein[3]));
+          PetscCall(PetscPrintf(PETSC_COMM_SELF, "  cylinder, %-21s axis %.2f rad, toward %sn: %s|II - side/rho d d^T| rho = %.2e %.2e %.2e %.2e (8..64 per side), order %.2f %.2f %.2f; in-plane %.1e\n", kinds[kind], phis[ip], side > 0 ? "+" : "-",
+                                kind == 2 ? "mean " : "", e[0], e[1], e[2], e[3], o[0], o[1], o[2], ein[3]));
       }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -998,7 +991,8 @@ int main(int argc, char **argv)
     PetscCall(PetscPrintf(PETSC_COMM_SELF, "note: %s not found: the checks on the paper's tables were skipped\n", dir));
   HYLC_CHECK(all.tested >= (have ? 1000 : 200), "only %d stencils tested", all.tested);
   if (Verbose) {
-    PetscCall(PetscPrintf(PETSC_COMM_SELF, "%d tables, %d stencils tested (%d skipped: a knot inside the differences): worst gradient %.2e, Hessian %.2e (relative to the largest entry), projection vs LAPACK %.2e\n", ntables, all.tested, all.skipped, all.worstg, all.worstH, all.worstP));
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, "%d tables, %d stencils tested (%d skipped: a knot inside the differences): worst gradient %.2e, Hessian %.2e (relative to the largest entry), projection vs LAPACK %.2e\n", ntables, all.tested, all.skipped,
+                          all.worstg, all.worstH, all.worstP));
     PetscCall(PetscPrintf(PETSC_COMM_SELF, "rigid motions (translations up to 10 m): relative changes E %.2e, gradient %.2e, Hessian %.2e\n", rig[0], rig[1], rig[2]));
   }
   PetscCall(PetscFinalize());

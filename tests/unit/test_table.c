@@ -212,9 +212,7 @@ static PetscErrorCode Files(const char *const spec[], const char want[])
 
   PetscFunctionBegin;
   PetscCall(HylcFilesCreate(PETSC_COMM_SELF, &files));
-  for (int i = 0; spec[i]; i += 3) PetscCall(HylcFilesAdd(files, spec[i][0] == 'o' ? HYLC_FILE_OUTPUT : spec[i][0] == 'i' ? HYLC_FILE_INPUT
-                                                                                                                          : HYLC_FILE_INPUT_OPTIONAL,
-                                                          spec[i + 1], spec[i + 2]));
+  for (int i = 0; spec[i]; i += 3) PetscCall(HylcFilesAdd(files, spec[i][0] == 'o' ? HYLC_FILE_OUTPUT : spec[i][0] == 'i' ? HYLC_FILE_INPUT : HYLC_FILE_INPUT_OPTIONAL, spec[i + 1], spec[i + 2]));
   PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
   ierr = HylcFilesCheck(files);
   PetscCall(PetscPopErrorHandler());

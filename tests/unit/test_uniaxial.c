@@ -121,9 +121,11 @@ static PetscErrorCode CheckUniaxialMicro(void)
     HYLC_CHECK(r[d].converged && !r[d].gradientStop, "uniaxial %s at s = %g did not converge by the step test", HylcUniaxialDirections[dir], (double)s);
     HYLC_CHECK(r[d].T > 1, "uniaxial %s: T = %g N/m, expected a clear tension", HylcUniaxialDirections[dir], (double)r[d].T);
     HYLC_CHECK(r[d].lateral[1] < -1e-3, "uniaxial %s: the lateral stretch %g should contract", HylcUniaxialDirections[dir], (double)r[d].lateral[1]);
-    HYLC_CHECK(r[d].z[d ? 2 : 0] == s && r[d].z[3] == 0 && r[d].z[4] == 0 && r[d].z[5] == 0, "uniaxial %s: strain (%g, %g, %g, %g, %g, %g)", HylcUniaxialDirections[dir], (double)r[d].z[0], (double)r[d].z[1], (double)r[d].z[2], (double)r[d].z[3], (double)r[d].z[4], (double)r[d].z[5]);
+    HYLC_CHECK(r[d].z[d ? 2 : 0] == s && r[d].z[3] == 0 && r[d].z[4] == 0 && r[d].z[5] == 0, "uniaxial %s: strain (%g, %g, %g, %g, %g, %g)", HylcUniaxialDirections[dir], (double)r[d].z[0], (double)r[d].z[1], (double)r[d].z[2], (double)r[d].z[3],
+               (double)r[d].z[4], (double)r[d].z[5]);
     /* the lateral stresses vanish */
-    HYLC_CHECK(PetscAbsReal(r[d].grad[1]) <= 1e-6 * r[d].T && PetscAbsReal(r[d].grad[d ? 0 : 2]) <= 1e-6 * r[d].T, "uniaxial %s: lateral gradient (%g, %g) N/m at T = %g", HylcUniaxialDirections[dir], (double)r[d].grad[1], (double)r[d].grad[d ? 0 : 2], (double)r[d].T);
+    HYLC_CHECK(PetscAbsReal(r[d].grad[1]) <= 1e-6 * r[d].T && PetscAbsReal(r[d].grad[d ? 0 : 2]) <= 1e-6 * r[d].T, "uniaxial %s: lateral gradient (%g, %g) N/m at T = %g", HylcUniaxialDirections[dir], (double)r[d].grad[1],
+               (double)r[d].grad[d ? 0 : 2], (double)r[d].T);
     /* T against the central difference of the minimized Psi */
     PetscCall(HylcMicroSolveUniaxial(M, dir, s + h, r[d].lateral, u, &rp, w));
     PetscCall(HylcMicroSolveUniaxial(M, dir, s - h, r[d].lateral, u, &rm, w));
@@ -139,13 +141,7 @@ static PetscErrorCode CheckUniaxialMicro(void)
     const struct {
       int       dir;
       PetscReal s, lat[2];
-    } bad[] = {
-        {0, -0.1, {0, 0}},
-        {0, 1.0, {0, 0}},
-        {1, 1.5, {0, 0}},
-        {2, 0.1, {0, 0}},
-        {0, 0.1, {0.99, 0}},
-        {0, NAN, {0, 0}}};
+    } bad[] = {{0, -0.1, {0, 0}}, {0, 1.0, {0, 0}}, {1, 1.5, {0, 0}}, {2, 0.1, {0, 0}}, {0, 0.1, {0.99, 0}}, {0, NAN, {0, 0}}};
     for (size_t k = 0; k < sizeof(bad) / sizeof(bad[0]); k++) {
       PetscErrorCode ierr;
       PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
@@ -278,12 +274,7 @@ static void CheckTables(void)
       double s;
       int    code;
       char   word[32];
-    } bad[] = {
-        {0, -0.1, HYLCMAT_ERR_ARG, "outside [0, 1)"},
-        {1, 1.0, HYLCMAT_ERR_ARG, "outside [0, 1)"},
-        {0, 0.95, HYLCMAT_ERR_ARG, "outside the table's range"},
-        {2, 0.1, HYLCMAT_ERR_ARG, "direction 2"},
-        {-1, 0.1, HYLCMAT_ERR_ARG, "direction -1"}};
+    } bad[] = {{0, -0.1, HYLCMAT_ERR_ARG, "outside [0, 1)"}, {1, 1.0, HYLCMAT_ERR_ARG, "outside [0, 1)"}, {0, 0.95, HYLCMAT_ERR_ARG, "outside the table's range"}, {2, 0.1, HYLCMAT_ERR_ARG, "direction 2"}, {-1, 0.1, HYLCMAT_ERR_ARG, "direction -1"}};
     for (size_t k = 0; k < sizeof(bad) / sizeof(bad[0]); k++) {
       err[0] = 0;
       r      = hylcmat_uniaxial(m, bad[k].dir, bad[k].s, NULL, &st, err, sizeof(err));

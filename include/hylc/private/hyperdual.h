@@ -18,66 +18,65 @@
 #include <math.h>
 #include <string.h>
 
-#define HYLC_HD_DEFINE(P, T, N)                                                                                                                    \
-  typedef struct {                                                                                                                                 \
-    double v, g[N], h[(N) * ((N) + 1) / 2];                                                                                                        \
-  } T;                                                                                                                                             \
-  enum { P##_NH = (N) * ((N) + 1) / 2 };                                                                                                           \
-  static inline void P##Var(T *r, double x, int i)                                                                                                 \
-  {                                                                                                                                                \
-    memset(r, 0, sizeof(T));                                                                                                                       \
-    r->v    = x;                                                                                                                                   \
-    r->g[i] = 1.0;                                                                                                                                 \
-  }                                                                                                                                                \
-  static inline void P##Lin(T *r, double a, const T *x, double b, const T *y)                                                                      \
-  {                                                                                                                                                \
-    for (int k = 0; k < P##_NH; k++) r->h[k] = a * x->h[k] + b * y->h[k];                                                                          \
-    for (int i = 0; i < (N); i++) r->g[i] = a * x->g[i] + b * y->g[i];                                                                             \
-    r->v = a * x->v + b * y->v;                                                                                                                    \
-  }                                                                                                                                                \
-  static inline void P##Axpy(T *y, double a, const T *x)                                                                                           \
-  {                                                                                                                                                \
-    for (int k = 0; k < P##_NH; k++) y->h[k] += a * x->h[k];                                                                                       \
-    for (int i = 0; i < (N); i++) y->g[i] += a * x->g[i];                                                                                          \
-    y->v += a * x->v;                                                                                                                              \
-  }                                                                                                                                                \
-  static inline void P##Scale(T *x, double a)                                                                                                      \
-  {                                                                                                                                                \
-    for (int k = 0; k < P##_NH; k++) x->h[k] *= a;                                                                                                 \
-    for (int i = 0; i < (N); i++) x->g[i] *= a;                                                                                                    \
-    x->v *= a;                                                                                                                                     \
-  }                                                                                                                                                \
-  static inline void P##Mul(T *r, const T *x, const T *y)                                                                                          \
-  {                                                                                                                                                \
-    const double xv = x->v, yv = y->v;                                                                                                             \
-    for (int i = 0, k = 0; i < (N); i++)                                                                                                           \
-      for (int j = i; j < (N); j++, k++) r->h[k] = xv * y->h[k] + yv * x->h[k] + x->g[i] * y->g[j] + x->g[j] * y->g[i];                            \
-    for (int i = 0; i < (N); i++) r->g[i] = xv * y->g[i] + yv * x->g[i];                                                                           \
-    r->v = xv * yv;                                                                                                                                \
-  }                                                                                                                                                \
-  static inline void P##Chain1(T *r, const T *x, double f0, double f1, double f2)                                                                  \
-  {                                                                                                                                                \
-    for (int i = 0, k = 0; i < (N); i++)                                                                                                           \
-      for (int j = i; j < (N); j++, k++) r->h[k] = f1 * x->h[k] + f2 * x->g[i] * x->g[j];                                                          \
-    for (int i = 0; i < (N); i++) r->g[i] = f1 * x->g[i];                                                                                          \
-    r->v = f0;                                                                                                                                     \
-  }                                                                                                                                                \
-  static inline void P##Recip(T *r, const T *x)                                                                                                    \
-  {                                                                                                                                                \
-    const double ix = 1.0 / x->v;                                                                                                                  \
-    P##Chain1(r, x, ix, -ix *ix, 2.0 * ix * ix * ix);                                                                                              \
-  }                                                                                                                                                \
-  /* atan2(y, x), principal value (add a constant for another branch) */                                                                           \
-  static inline void P##Atan2(T *r, const T *y, const T *x)                                                                                        \
-  {                                                                                                                                                \
-    const double xv = x->v, yv = y->v, ir2 = 1.0 / (xv * xv + yv * yv), ir4 = ir2 * ir2;                                                           \
-    const double fx = -yv * ir2, fy = xv * ir2;                                                                                                    \
-    const double fxx = 2.0 * xv * yv * ir4, fyy = -fxx, fxy = (yv * yv - xv * xv) * ir4;                                                           \
-    for (int i = 0, k = 0; i < (N); i++)                                                                                                           \
-      for (int j = i; j < (N); j++, k++)                                                                                                           \
-        r->h[k] = fx * x->h[k] + fy * y->h[k] + fxx * x->g[i] * x->g[j] + fyy * y->g[i] * y->g[j] + fxy * (x->g[i] * y->g[j] + y->g[i] * x->g[j]); \
-    for (int i = 0; i < (N); i++) r->g[i] = fx * x->g[i] + fy * y->g[i];                                                                           \
-    r->v = atan2(yv, xv);                                                                                                                          \
+#define HYLC_HD_DEFINE(P, T, N)                                                                                                                                                     \
+  typedef struct {                                                                                                                                                                  \
+    double v, g[N], h[(N) * ((N) + 1) / 2];                                                                                                                                         \
+  } T;                                                                                                                                                                              \
+  enum { P##_NH = (N) * ((N) + 1) / 2 };                                                                                                                                            \
+  static inline void P##Var(T *r, double x, int i)                                                                                                                                  \
+  {                                                                                                                                                                                 \
+    memset(r, 0, sizeof(T));                                                                                                                                                        \
+    r->v    = x;                                                                                                                                                                    \
+    r->g[i] = 1.0;                                                                                                                                                                  \
+  }                                                                                                                                                                                 \
+  static inline void P##Lin(T *r, double a, const T *x, double b, const T *y)                                                                                                       \
+  {                                                                                                                                                                                 \
+    for (int k = 0; k < P##_NH; k++) r->h[k] = a * x->h[k] + b * y->h[k];                                                                                                           \
+    for (int i = 0; i < (N); i++) r->g[i] = a * x->g[i] + b * y->g[i];                                                                                                              \
+    r->v = a * x->v + b * y->v;                                                                                                                                                     \
+  }                                                                                                                                                                                 \
+  static inline void P##Axpy(T *y, double a, const T *x)                                                                                                                            \
+  {                                                                                                                                                                                 \
+    for (int k = 0; k < P##_NH; k++) y->h[k] += a * x->h[k];                                                                                                                        \
+    for (int i = 0; i < (N); i++) y->g[i] += a * x->g[i];                                                                                                                           \
+    y->v += a * x->v;                                                                                                                                                               \
+  }                                                                                                                                                                                 \
+  static inline void P##Scale(T *x, double a)                                                                                                                                       \
+  {                                                                                                                                                                                 \
+    for (int k = 0; k < P##_NH; k++) x->h[k] *= a;                                                                                                                                  \
+    for (int i = 0; i < (N); i++) x->g[i] *= a;                                                                                                                                     \
+    x->v *= a;                                                                                                                                                                      \
+  }                                                                                                                                                                                 \
+  static inline void P##Mul(T *r, const T *x, const T *y)                                                                                                                           \
+  {                                                                                                                                                                                 \
+    const double xv = x->v, yv = y->v;                                                                                                                                              \
+    for (int i = 0, k = 0; i < (N); i++)                                                                                                                                            \
+      for (int j = i; j < (N); j++, k++) r->h[k] = xv * y->h[k] + yv * x->h[k] + x->g[i] * y->g[j] + x->g[j] * y->g[i];                                                             \
+    for (int i = 0; i < (N); i++) r->g[i] = xv * y->g[i] + yv * x->g[i];                                                                                                            \
+    r->v = xv * yv;                                                                                                                                                                 \
+  }                                                                                                                                                                                 \
+  static inline void P##Chain1(T *r, const T *x, double f0, double f1, double f2)                                                                                                   \
+  {                                                                                                                                                                                 \
+    for (int i = 0, k = 0; i < (N); i++)                                                                                                                                            \
+      for (int j = i; j < (N); j++, k++) r->h[k] = f1 * x->h[k] + f2 * x->g[i] * x->g[j];                                                                                           \
+    for (int i = 0; i < (N); i++) r->g[i] = f1 * x->g[i];                                                                                                                           \
+    r->v = f0;                                                                                                                                                                      \
+  }                                                                                                                                                                                 \
+  static inline void P##Recip(T *r, const T *x)                                                                                                                                     \
+  {                                                                                                                                                                                 \
+    const double ix = 1.0 / x->v;                                                                                                                                                   \
+    P##Chain1(r, x, ix, -ix *ix, 2.0 * ix * ix * ix);                                                                                                                               \
+  }                                                                                                                                                                                 \
+  /* atan2(y, x), principal value (add a constant for another branch) */                                                                                                            \
+  static inline void P##Atan2(T *r, const T *y, const T *x)                                                                                                                         \
+  {                                                                                                                                                                                 \
+    const double xv = x->v, yv = y->v, ir2 = 1.0 / (xv * xv + yv * yv), ir4 = ir2 * ir2;                                                                                            \
+    const double fx = -yv * ir2, fy = xv * ir2;                                                                                                                                     \
+    const double fxx = 2.0 * xv * yv * ir4, fyy = -fxx, fxy = (yv * yv - xv * xv) * ir4;                                                                                            \
+    for (int i = 0, k = 0; i < (N); i++)                                                                                                                                            \
+      for (int j = i; j < (N); j++, k++) r->h[k] = fx * x->h[k] + fy * y->h[k] + fxx * x->g[i] * x->g[j] + fyy * y->g[i] * y->g[j] + fxy * (x->g[i] * y->g[j] + y->g[i] * x->g[j]); \
+    for (int i = 0; i < (N); i++) r->g[i] = fx * x->g[i] + fy * y->g[i];                                                                                                            \
+    r->v = atan2(yv, xv);                                                                                                                                                           \
   }
 
 HYLC_HD_DEFINE(Hd3, Hd3, 3)

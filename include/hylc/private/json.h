@@ -10,14 +10,7 @@
 #  define HYLC_JSON_INTERN
 #endif
 
-typedef enum {
-  HYLC_JSON_NULL,
-  HYLC_JSON_BOOL,
-  HYLC_JSON_NUMBER,
-  HYLC_JSON_STRING,
-  HYLC_JSON_ARRAY,
-  HYLC_JSON_OBJECT
-} HylcJsonType;
+typedef enum { HYLC_JSON_NULL, HYLC_JSON_BOOL, HYLC_JSON_NUMBER, HYLC_JSON_STRING, HYLC_JSON_ARRAY, HYLC_JSON_OBJECT } HylcJsonType;
 
 /* a value: its line in the text and, by type, the number, the string, or the items (and keys) */
 typedef struct HylcJson {

@@ -24,8 +24,7 @@ typedef struct {
   int    ncourses; /* courses in the tile (>= 1) */
 } HylcKnitParams;
 
-typedef enum { HYLC_KNIT_STOCKINETTE,
-               HYLC_KNIT_RIB } HylcKnitType;
+typedef enum { HYLC_KNIT_STOCKINETTE, HYLC_KNIT_RIB } HylcKnitType;
 
 /* Defaults, in units of r (proportions of the relaxed stockinette of Sperl et al. 2020:
    7.53 r per stitch, 3.97 r per course, z within about +-1.3 r). */

@@ -110,10 +110,7 @@ struct _p_HylcMicro {
 };
 
 /* the object's options prefix ("" if none), for messages: "-%smicro_alpha_start" */
-static inline const char *HylcMicroPrefix_Private(HylcMicro M)
-{
-  return ((PetscObject)M)->prefix ? ((PetscObject)M)->prefix : "";
-}
+static inline const char *HylcMicroPrefix_Private(HylcMicro M) { return ((PetscObject)M)->prefix ? ((PetscObject)M)->prefix : ""; }
 
 /* micro.c */
 PETSC_INTERN PetscErrorCode HylcMicroResetSolveState_Private(HylcMicro);
