@@ -30,8 +30,12 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-# the hylc Python module of this checkout (python/hylc, over build/libhylcmat.so; docs/library.md)
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
+# the hylc Python module of this checkout (python/hylc, over build/libhylcmat.so; docs/library.md), or of
+# the installation when this script is PREFIX/share/hylc/plot_fit.py (PREFIX/share/hylc/python)
+_here = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(_here, "..", "python"))
+if not os.path.isdir(os.path.join(_here, "..", "python", "hylc")):
+    sys.path.insert(0, os.path.join(_here, "python"))
 import hylc  # noqa: E402
 
 TERMS = ["zero", "sx", "sa", "sy", "II00", "II11", "sx-sa", "sx-sy", "sx-II00", "sx-II11", "sa-sy",

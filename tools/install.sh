@@ -96,6 +96,10 @@ PC
   fi
   # hylc-cloth's plots (src/cloth/output.c looks for PREFIX/share/hylc/plot_cloth.py beside PREFIX/bin)
   put 755 examples/plot_cloth.py "$DATADIR/hylc"
+  # the pipeline from an options file to a table (tools/hylc-material) and its helper scripts
+  put 755 tools/hylc-material "$BINDIR"
+  put 644 tools/material_report.py "$DATADIR/hylc"
+  put 644 examples/plot_fit.py "$DATADIR/hylc"
   mkd "$(dirname "$MANIFEST")"
   sort -u "$tmpman" >"$man"
   echo "installed $(grep -c '^f ' "$man") files under $DESTDIR$PREFIX (manifest: $man)"

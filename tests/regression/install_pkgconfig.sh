@@ -16,6 +16,11 @@ asanflag=(); [ "${HYLC_ASAN:-0}" = 1 ] && asanflag=(ASAN=1)
 mk() { make -C "$top" --no-print-directory BUILD="$build" "${asanflag[@]}" "$@"; }
 
 mk install PREFIX="$prefix" >install.log 2>&1 || { cat install.log; die "make install failed"; }
+# the pipeline and hylc-cloth's plots installed with what they call (tools/hylc-material finds them there)
+for f in bin/hylc-material share/hylc/material_report.py share/hylc/plot_fit.py share/hylc/plot_cloth.py; do
+  [ -f "$prefix/$f" ] || die "make install: no $prefix/$f"
+done
+"$prefix/bin/hylc-material" -help >hm.txt 2>&1 || { cat hm.txt; die "installed hylc-material -help failed"; }
 for f in include/hylcmat.h include/hylc/material.h lib/libhylcmat.so lib/libhylcmat.a lib/libhylc.so lib/libhylc.a \
   lib/pkgconfig/hylc.pc lib/pkgconfig/hylcmat.pc bin/hylc-eval bin/hylc-sample share/doc/hylc/material.md; do
   [ -e "$prefix/$f" ] || die "make install did not install $f"
