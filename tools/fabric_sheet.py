@@ -66,6 +66,15 @@ def run(job):
     return name, test, out, rc, time.time() - t0, prefix
 
 
+def shrink(png):
+    """a PNG of 100 kB or more made smaller in place: 256 colours (Pillow, which matplotlib needs)"""
+    code = ("import sys; from PIL import Image; im = Image.open(sys.argv[1]).convert('RGB'); "
+            "im.quantize(256).save(sys.argv[1], optimize=True)")
+    for py in ("/usr/bin/python3", "python3"):
+        if subprocess.run([py, "-c", code, png], stderr=subprocess.DEVNULL).returncode == 0:
+            return
+
+
 def err_line(out):
     """hylc-cloth's own message where it found no equilibrium (PETSc's error line), or ''"""
     for line in out.splitlines():
@@ -158,6 +167,8 @@ def main(argv):
                 kind = "tensile" if test.startswith("tensile") else "drape"
                 for png in sorted(f for f in os.listdir(tmp) if f.startswith(f"{name}_{test}") and f.endswith(".png")):
                     src = os.path.join(tmp, png)
+                    if os.path.getsize(src) >= 100_000:
+                        shrink(src)
                     if os.path.getsize(src) < 100_000:
                         dst = os.path.join(ROOT, "docs", "img", f"fabric-{name}-{kind}.png")
                         os.makedirs(os.path.dirname(dst), exist_ok=True)
