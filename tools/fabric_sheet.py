@@ -154,6 +154,12 @@ def main(argv):
     if not tables:
         print("fabric_sheet: no tables; skipped")
         return 0
+    if any(os.path.abspath(p) == os.path.abspath(OUT) for _, p, _ in tables):
+        sys.exit(f"fabric_sheet: the output {OUT} is one of the tables")
+    if not os.path.isdir(os.path.dirname(os.path.abspath(OUT))):
+        sys.exit(f"fabric_sheet: the output's directory {os.path.dirname(OUT)} does not exist")
+    if not os.access(CLOTH, os.X_OK):
+        sys.exit(f"fabric_sheet: {CLOTH} not found (run make)")
     tmp = tempfile.mkdtemp(prefix="fabric-sheet-")
     load0 = open("/proc/loadavg").read().split()[:3]
     t0 = time.time()
@@ -247,8 +253,9 @@ def main(argv):
     L.append("")
     L.append("Commands (one per cell; PATH the table): `hylc-cloth -cloth_material PATH " + "`, `".join(
         " ".join(TESTS[t]) for t in TESTS) + "`, each with `-cloth_output PREFIX -cloth_plot 0 -cloth_vtk 0`.\n")
-    with open(OUT, "w") as f:
+    with open(OUT + ".tmp", "w") as f:
         f.write("\n".join(L))
+    os.replace(OUT + ".tmp", OUT)
     print(f"fabric_sheet: wrote {OUT} ({wall:.0f} s)")
     return 0
 
