@@ -3,6 +3,8 @@
 #   make test       install missing dependencies, build, run all tests (ends with "N passed, N failed")
 #   make demo       install missing dependencies, build, run the main job on a built-in default
 #   make bench      build and run the benchmarks (prints measured figures)
+#   make fabric-sheet  build, run hylc-cloth's virtual tests on the paper's tables (and FABRIC_TABLES="NAME=PATH ...")
+#                   and write docs/fabric-sheet.md (tools/fabric_sheet.py, about 15 min)
 #   make install    PREFIX=/usr/local DESTDIR=: headers, libraries, programs, pkg-config files, docs
 #   make uninstall  remove every installed file (from the manifest written by install)
 #   make deps       install missing system packages (apt; as root or with sudo)
@@ -80,7 +82,7 @@ SUPPORT_SRC := $(sort $(wildcard tests/support/*.c))
 SUPPORT_LIB := $(BUILD)/libhylc-testsupport.a
 ALL_OBJ   := $(LIB_OBJ) $(SUPPORT_SRC:%.c=$(OBJ)/%.o) $(patsubst src/%.c,$(BUILD)/hylcmat/%.o,$(wildcard src/hylcmat/*.c) src/sys/json.c src/sys/strain.c src/sys/h5util.c) $(APP_SRC:%.c=$(OBJ)/%.o) $(TEST_SRC:%.c=$(OBJ)/%.o) $(REPLAY_SRC:%.c=$(OBJ)/%.o) $(OBJ)/tests/fuzz/replay.o $(BENCH_SRC:%.c=$(OBJ)/%.o) $(EX_SRC:%.c=$(OBJ)/%.o)
 
-.PHONY: all lib apps tests benches examples test test-asan coverage check-format demo bench deps format clean help fuzz fuzz-build fuzz-deps hylcmat install uninstall
+.PHONY: all lib apps tests benches examples test test-asan coverage check-format demo bench fabric-sheet deps format clean help fuzz fuzz-build fuzz-deps hylcmat install uninstall
 all: lib hylcmat apps tests benches examples
 lib: $(LIB) $(SOLIB)
 apps: $(APPS)
@@ -236,6 +238,10 @@ demo:
 
 bench: all
 	@bash tests/bench/run.sh
+
+# the fabric sheet (docs/fabric-sheet.md) of hylc-cloth's virtual tests on the paper's tables and FABRIC_TABLES
+fabric-sheet: apps
+	@HYLC_FABRIC_TABLES="$(FABRIC_TABLES)" python3 tools/fabric_sheet.py
 
 # the tests in the COVERAGE=1 build (build-cov), then line coverage per stage (tools/coverage.sh)
 coverage:
