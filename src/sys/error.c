@@ -273,11 +273,18 @@ PetscErrorCode HylcShareError(MPI_Comm comm, PetscErrorCode ierr)
   SETERRQ(comm, (PetscErrorCode)code, "%s", msg);
 }
 
+static int EndsWith(const char s[], const char end[])
+{
+  const size_t n = strlen(s), m = strlen(end);
+  return n > m && !strcmp(s + n - m, end);
+}
+
 /*@C
   HylcCheckOptionsUsed - Refuses options that nothing has read (misspelt or not for this program), before
   any work is done; the options of other hylc programs' stages only (HylcOptionIsOtherStage()) are
   ignored, so that every program reads the whole study's options file. A viewer option (a name ending in
-  _view, read when its object is viewed) is left to HylcMainFinalize(), which refuses what is still
+  _view, read when its object is viewed, or in _converged_reason, read when its solve ends) is left to
+  HylcMainFinalize(), which refuses what is still
   unread at the end. Collective.
 @*/
 PetscErrorCode HylcCheckOptionsUsed(MPI_Comm comm)
@@ -294,9 +301,10 @@ PetscErrorCode HylcCheckOptionsUsed(MPI_Comm comm)
     PetscBool    other;
     PetscCall(HylcOptionIsOtherStage(names[i], &other));
     if (other) continue;
-    /* a viewer option (-mat_view, -micro_snes_view) is read when its object is viewed, during the work:
-       HylcMainFinalize() refuses it if it is still unread at the end */
-    if (strlen(names[i]) > 5 && !strcmp(names[i] + strlen(names[i]) - 5, "_view")) continue;
+    /* a viewer option (-mat_view, -micro_snes_view) is read when its object is viewed, and a solver's
+       -..._converged_reason at the end of its solve, during the work: HylcMainFinalize() refuses either if
+       it is still unread at the end */
+    if (EndsWith(names[i], "_view") || EndsWith(names[i], "_converged_reason")) continue;
     nbad++;
     if (used + need + 32 >= sizeof(list)) continue;
     snprintf(list + used, sizeof(list) - used, " -%s", names[i]);

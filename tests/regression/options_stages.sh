@@ -83,6 +83,8 @@ misspelt fit -fit_jsn -fit_input nosuch.h5
 misspelt eval -eval_jsn -material empty.json -strain 0,0,0,0,0,0
 misspelt calibrate -calibrate_paramz -pattern_type plain -calibrate_target nosuch.csv
 misspelt cloth -cloth_tset -cloth_material empty.json -cloth_test tensile
+# a solver's -..._converged_reason is read when its solve ends, after the check: accepted
+(cd "$T" && "$B/hylc-solve" -pattern_type plain -strain 0.01,0,0,0,0,0 -micro_snes_converged_reason >cr.out 2>&1) || { cat "$T/cr.out"; die "hylc-solve refuses -micro_snes_converged_reason"; }
 # one of another stage's names misspelt, in the study's file: still an error
 sed 's/^sampler_family:/sampler_familly:/' config/satin.yaml >"$T/typo.yaml"
 (cd "$T" && "$B/hylc-fit" -options_file typo.yaml -fit_input nosuch.h5 >fit.out 2>fit.err) && die "hylc-fit accepts sampler_familly"
