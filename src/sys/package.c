@@ -11,6 +11,7 @@
 #include <hylc/fit.h>
 #include <hylc/material.h>
 #include <hylc/calibrate.h>
+#include <hylc/cloth.h>
 
 const char *HylcDefaultOrdering(void) { return MATORDERINGMETISND; }
 
@@ -60,7 +61,7 @@ PetscErrorCode HylcSysInitializePackage(void)
   ids, log events and registries (HylcPatternInitializePackage(), HylcMidsurfaceInitializePackage(),
   HylcPeriodicInitializePackage(), HylcCholInitializePackage() with the solver type MATSOLVERHYLC,
   HylcMicroInitializePackage(), HylcSamplerInitializePackage(), HylcMaterialInitializePackage(),
-  HylcFitInitializePackage(), HylcCalibrateInitializePackage()). Each stage's HylcXCreate() calls its own
+  HylcFitInitializePackage(), HylcCalibrateInitializePackage(), HylcClothInitializePackage()). Each stage's HylcXCreate() calls its own
   initializer, so a program that creates objects need not call this; one that uses a registered name
   without creating a hylc object (the solver type "hylc" or the ordering "metisnd" in a plain PETSc
   solver) calls it first. Idempotent.
@@ -86,6 +87,7 @@ PetscErrorCode HylcInitializePackage(void)
   PetscCall(HylcMaterialInitializePackage());
   PetscCall(HylcFitInitializePackage());
   PetscCall(HylcCalibrateInitializePackage());
+  PetscCall(HylcClothInitializePackage());
   PetscCall(PetscRegisterFinalize(HylcFinalizePackage));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
