@@ -1,6 +1,7 @@
 /* hylcmat: the homogeneous uniaxial tension state of a table (include/hylcmat.h, docs/fabric-uniaxial.md).
    Plain C99. */
 #include "hylcmatimpl.h"
+#include <hylc/private/newton2.h>
 #include <math.h>
 #include <string.h>
 
@@ -32,37 +33,6 @@ static int Eval(const hylcmat *m, int dir, double s, const double p[2], double *
     Hl[3] = H[6 * o + o];
   }
   return HYLCMAT_OK;
-}
-
-/* d = -H^-1 g with H (symmetric 2 x 2) made positive definite: eigenvalues below 1e-6 of the largest
-   magnitude (or below 0) raised to that floor */
-static void NewtonStep(const double H[4], const double g[2], double d[2])
-{
-  const double a = H[0], b = 0.5 * (H[1] + H[2]), c = H[3];
-  const double mm = 0.5 * (a + c), r = sqrt(0.25 * (a - c) * (a - c) + b * b);
-  double       l1 = mm + r, l2 = mm - r, v1[2];
-  const double floor = 1e-6 * fmax(fabs(l1), fabs(l2));
-  if (b != 0) {
-    v1[0] = l1 - c;
-    v1[1] = b;
-  } else if (a >= c) {
-    v1[0] = 1;
-    v1[1] = 0;
-  } else {
-    v1[0] = 0;
-    v1[1] = 1;
-  }
-  const double nv = hypot(v1[0], v1[1]);
-  v1[0] /= nv;
-  v1[1] /= nv;
-  const double v2[2] = {-v1[1], v1[0]};
-  l1                 = fmax(l1, floor);
-  l2                 = fmax(l2, floor);
-  if (!(l1 > 0)) l1 = 1; /* H = 0: a gradient step */
-  if (!(l2 > 0)) l2 = l1;
-  const double g1 = v1[0] * g[0] + v1[1] * g[1], g2 = v2[0] * g[0] + v2[1] * g[1];
-  d[0] = -(g1 / l1 * v1[0] + g2 / l2 * v2[0]);
-  d[1] = -(g1 / l1 * v1[1] + g2 / l2 * v2[1]);
 }
 
 int hylcmat_uniaxial(const hylcmat *m, int dir, double s, const double guess[2], hylcmat_uniaxial_state *st, char *err, size_t errlen)
@@ -106,7 +76,7 @@ int hylcmat_uniaxial(const hylcmat *m, int dir, double s, const double guess[2],
   for (int restart = 0;; restart++) {
     converged = 0;
     for (; it < maxIt; it++) {
-      NewtonStep(H, gl, d);
+      HylcNewtonStep2(H, gl, 1e-6, d);
       if (fmax(fabs(d[0]), fabs(d[1])) <= xtol) {
         converged = 1;
         break;

@@ -1,6 +1,7 @@
 /* HylcMicro: the strain gradient of the equilibrium energy (envelope theorem) and the homogeneous uniaxial
    tension state of the tile (include/hylc/micro.h, docs/fabric-uniaxial.md). */
 #include <hylc/private/microimpl.h>
+#include <hylc/private/newton2.h>
 #include <petsctime.h>
 
 const char *const HylcUniaxialDirections[] = {"x", "y", "HylcUniaxialDirection", "HYLC_UNIAXIAL_", NULL};
@@ -161,38 +162,6 @@ static void CopyPoint(PetscInt ny, const UniPoint *a, UniPoint *b)
   for (PetscInt i = 0; i < ny; i++) b->u[i] = a->u[i];
 }
 
-/* the Newton step d = -H^-1 g of a symmetric 2 x 2 H, made positive definite first: eigenvalues below
-   1e-3 times the largest magnitude (or below 0) raised to that floor */
-static void NewtonStep2(const PetscReal H[4], const PetscReal g[2], PetscReal d[2])
-{
-  const PetscReal a = H[0], b = 0.5 * (H[1] + H[2]), c = H[3];
-  const PetscReal m = 0.5 * (a + c), r = PetscSqrtReal(0.25 * (a - c) * (a - c) + b * b);
-  PetscReal       l1 = m + r, l2 = m - r, v1[2], nv;
-  const PetscReal floor = 1e-3 * PetscMax(PetscAbsReal(l1), PetscAbsReal(l2));
-  /* eigenvector of l1 */
-  if (PetscAbsReal(b) > 0) {
-    v1[0] = l1 - c;
-    v1[1] = b;
-  } else if (a >= c) {
-    v1[0] = 1;
-    v1[1] = 0;
-  } else {
-    v1[0] = 0;
-    v1[1] = 1;
-  }
-  nv = PetscSqrtReal(v1[0] * v1[0] + v1[1] * v1[1]);
-  v1[0] /= nv;
-  v1[1] /= nv;
-  const PetscReal v2[2] = {-v1[1], v1[0]};
-  l1                    = PetscMax(l1, floor);
-  l2                    = PetscMax(l2, floor);
-  if (!(l1 > 0)) l1 = 1; /* H = 0: a gradient step */
-  if (!(l2 > 0)) l2 = l1;
-  const PetscReal g1 = v1[0] * g[0] + v1[1] * g[1], g2 = v2[0] * g[0] + v2[1] * g[1];
-  d[0] = -(g1 / l1 * v1[0] + g2 / l2 * v2[0]);
-  d[1] = -(g1 / l1 * v1[1] + g2 / l2 * v2[1]);
-}
-
 /* the work of HylcMicroSolveUniaxial() */
 static PetscErrorCode SolveUniaxial(HylcMicro M, HylcUniaxialDirection dir, PetscReal s, const PetscReal lat0[2], const PetscReal u0[], HylcMicroUniaxialResult *res, PetscReal u[])
 {
@@ -222,7 +191,7 @@ static PetscErrorCode SolveUniaxial(HylcMicro M, HylcUniaxialDirection dir, Pets
   for (PetscInt it = 0; cur.ok; it++) {
     LateralOf(dir, cur.g, gl);
     if (haveH) { /* the step predicted with the last Hessian: done when it is small */
-      NewtonStep2(H, gl, d);
+      HylcNewtonStep2(H, gl, 1e-3, d);
       res->step = PetscMax(PetscAbsReal(d[0]), PetscAbsReal(d[1]));
       if (res->step <= par->uniXtol) {
         res->converged = PETSC_TRUE;
@@ -245,7 +214,7 @@ static PetscErrorCode SolveUniaxial(HylcMicro M, HylcUniaxialDirection dir, Pets
     if (!pert.ok) break;
     H[1] = H[2] = 0.5 * (H[1] + H[2]);
     haveH       = PETSC_TRUE;
-    NewtonStep2(H, gl, d);
+    HylcNewtonStep2(H, gl, 1e-3, d);
     res->step = PetscMax(PetscAbsReal(d[0]), PetscAbsReal(d[1]));
     if (res->step <= par->uniXtol) {
       res->converged = PETSC_TRUE;
