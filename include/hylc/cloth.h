@@ -7,7 +7,7 @@
    material table (JSON or HDF5, ours or the paper's), gravity from the table's area density, clamps with
    prescribed motion, pinned vertices and rigid supports (plane, disc) with frictionless barrier contact.
    Equilibria by Newton's method (SNES, an energy line search that refuses penetration) or a trust region
-   (TAO), and an implicit dynamic mode (TS, backward Euler with damping). The mesh is replicated on every
+   (TAO); static only (no dynamic mode yet: docs/fabric.md). The mesh is replicated on every
    rank and partitioned with METIS: every rank evaluates its own triangles and owns a contiguous block of
    vertices of the global vectors and matrices.
 
@@ -83,7 +83,6 @@ PETSC_EXTERN PetscErrorCode HylcClothSetTolerances(HylcCloth, PetscReal rtol, Pe
 PETSC_EXTERN PetscErrorCode HylcClothSetLoadSteps(HylcCloth, PetscInt);
 PETSC_EXTERN PetscErrorCode HylcClothSetCantilever(HylcCloth, PetscReal angleDegrees, PetscReal width);
 PETSC_EXTERN PetscErrorCode HylcClothSetDrape(HylcCloth, PetscReal specimenDiameter, PetscReal discDiameter);
-PETSC_EXTERN PetscErrorCode HylcClothSetDynamics(HylcCloth, PetscReal dt, PetscReal tmax, PetscReal damping);
 PETSC_EXTERN PetscErrorCode HylcClothSetScene(HylcCloth, PetscReal clampLength, PetscInt ncorners, const PetscInt corners[]);
 PETSC_EXTERN PetscErrorCode HylcClothSetBarrier(HylcCloth, PetscReal distance, PetscReal stiffness);
 

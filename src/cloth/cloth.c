@@ -91,9 +91,6 @@ PetscErrorCode HylcClothCreate(MPI_Comm comm, HylcCloth *out)
   c->drapeD        = 0.30;
   c->discD         = 0.18;
   c->rimRadius     = 0.002;
-  c->dt            = 0.01;
-  c->tmax          = 4;
-  c->damping       = 2;
   c->restTol       = 1e-3;
   c->sceneClamp    = 0;
   c->ncorners      = 0;
@@ -478,24 +475,6 @@ PetscErrorCode HylcClothSetDrape(HylcCloth c, PetscReal D, PetscReal d)
 }
 
 /*@C
-  HylcClothSetDynamics - The dynamic mode's time step (s), end time (s) and damping rate (1/s), stored
-  for a dynamic (TS) mode that is not implemented yet: no test uses them and no option sets them.
-  Logically collective.
-
-  Level: intermediate
-@*/
-PetscErrorCode HylcClothSetDynamics(HylcCloth c, PetscReal dt, PetscReal tmax, PetscReal damping)
-{
-  PetscFunctionBegin;
-  CLOTH_CHECK(c);
-  PetscCheck(dt > 0 && tmax >= dt && damping >= 0, CLOTH_COMM(c), PETSC_ERR_USER_INPUT, "-cloth_dt %g, -cloth_tmax %g, -cloth_damping %g: need dt > 0, tmax >= dt, damping >= 0", (double)dt, (double)tmax, (double)damping);
-  c->dt      = dt;
-  c->tmax    = tmax;
-  c->damping = damping;
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/*@C
   HylcClothSetScene - The scene test's supports: clamped along clampLength (m) of its end x = 0, centred
   (-cloth_scene_clamp), and/or pinned at the given corners (-cloth_scene_corners, 0: (0,0), 1: (L,0),
   2: (L,W), 3: (0,W)). Logically collective.
@@ -623,7 +602,6 @@ PetscErrorCode HylcClothSetFromOptions(HylcCloth c)
   if (set || set2) PetscCall(HylcClothSetDrape(c, a, b));
   PetscCall(PetscOptionsReal("-cloth_rim_radius", "Drape: rounding radius of the support disc's rim (m)", "HylcClothSetDrape", c->rimRadius, &c->rimRadius, NULL));
   PetscCheck(c->rimRadius > 0 && c->rimRadius < 0.5 * c->discD, CLOTH_COMM(c), PETSC_ERR_USER_INPUT, "-cloth_rim_radius %g must be in (0, disc radius)", (double)c->rimRadius);
-  /* the dynamic mode (HylcClothSetDynamics) is not implemented: its options are not offered */
   a = c->sceneClamp;
   n = 4;
   for (PetscInt i = 0; i < 4; i++) corners[i] = i < c->ncorners ? c->corners[i] : 0; /* -help shows the first */

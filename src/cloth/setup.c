@@ -27,8 +27,6 @@ PetscErrorCode HylcClothLayoutReset_Private(HylcCloth c)
   PetscCall(VecDestroy(&c->x));
   PetscCall(VecDestroy(&c->x0));
   PetscCall(VecDestroy(&c->xprev));
-  PetscCall(VecDestroy(&c->xn));
-  PetscCall(VecDestroy(&c->vn));
   PetscCall(PetscFree(c->xgather));
   c->ne = c->nloc = 0;
   c->ncoo         = 0;

@@ -58,7 +58,7 @@ struct _p_HylcCloth {
   PetscReal          cantAngle, cantWidth;
   PetscInt           cantN;
   PetscReal          drapeD, discD, rimRadius;
-  PetscReal          dt, tmax, damping, restTol;
+  PetscReal          restTol;
   PetscReal          sceneClamp;
   PetscInt           ncorners, corners[4];
   PetscReal          barrierDist, barrierStiff;
@@ -111,10 +111,6 @@ struct _p_HylcCloth {
   PetscInt  newtonIts, lsFails, hessExact, hessProj, lastIts, lastReason, loadStepsDone;
   PetscBool lastExact; /* the last Hessian assembled was the exact one */
   PetscReal Escale;    /* an energy scale for the rounding test of the line search (J) */
-  /* dynamics */
-  PetscBool dynamic;
-  PetscReal dtcur;
-  Vec       xn, vn; /* state at the start of the step */
   /* ---- results ---- */
   PetscInt   nresults;
   char       rname[HYLC_CLOTH_MAX_RESULTS][32];
@@ -151,7 +147,6 @@ PETSC_INTERN PetscErrorCode HylcClothLoadPath_Private(HylcCloth, PetscReal load,
 PETSC_INTERN PetscErrorCode HylcClothBacktrack_Private(HylcCloth, Vec X, PetscReal E0, Vec F, Vec Y, Vec W, Vec G, PetscReal *lambda, PetscBool *ok);
 PETSC_INTERN PetscErrorCode HylcClothFormHessian_Private(HylcCloth, Vec X, Mat H);
 PETSC_INTERN PetscErrorCode HylcClothDefaultKSP_Private(KSP, PetscBool preonly);
-/* dynamic.c */
 /* output.c */
 PETSC_INTERN PetscErrorCode HylcClothWriteVTK_Private(HylcCloth, const char path[]);
 PETSC_INTERN PetscErrorCode HylcClothOutputName_Private(HylcCloth, const char suffix[], char path[], size_t len);
