@@ -7,7 +7,8 @@
    material table (JSON or HDF5, ours or the paper's), gravity from the table's area density, clamps with
    prescribed motion, pinned vertices and rigid supports (plane, disc) with frictionless barrier contact.
    Equilibria by Newton's method (SNES, an energy line search that refuses penetration) or a trust region
-   (TAO); static only (no dynamic mode yet: docs/fabric.md). The mesh is replicated on every
+   (TAO); where no static path reaches an equilibrium (a drape, a curling knit), the backward Euler
+   dynamics with damping brings the cloth to rest (-cloth_dynamic, docs/fabric.md). The mesh is replicated on every
    rank and partitioned with METIS: every rank evaluates its own triangles and owns a contiguous block of
    vertices of the global vectors and matrices.
 
@@ -53,6 +54,12 @@ PETSC_EXTERN const char *const HylcClothSolvers[];
 typedef enum { HYLC_CLOTH_HESSIAN_PROJECTED = 0, HYLC_CLOTH_HESSIAN_EXACT = 1, HYLC_CLOTH_HESSIAN_AUTO = 2 } HylcClothHessian;
 PETSC_EXTERN const char *const HylcClothHessians[];
 
+/* When the equilibrium under gravity comes from the backward Euler dynamics (dynamic.c): never (OFF: the
+   static load path only), when the static load path fails (AUTO), or always (ON: the cloth released at
+   rest from its flat state under full gravity, as the specimen of a drape test is). */
+typedef enum { HYLC_CLOTH_DYNAMICS_OFF = 0, HYLC_CLOTH_DYNAMICS_AUTO = 1, HYLC_CLOTH_DYNAMICS_ON = 2 } HylcClothDynamics;
+PETSC_EXTERN const char *const HylcClothDynamicsTypes[];
+
 PETSC_EXTERN PetscErrorCode HylcClothCreate(MPI_Comm, HylcCloth *);
 PETSC_EXTERN PetscErrorCode HylcClothDestroy(HylcCloth *);
 PETSC_EXTERN PetscErrorCode HylcClothSetOptionsPrefix(HylcCloth, const char[]);
@@ -85,6 +92,7 @@ PETSC_EXTERN PetscErrorCode HylcClothSetCantilever(HylcCloth, PetscReal angleDeg
 PETSC_EXTERN PetscErrorCode HylcClothSetDrape(HylcCloth, PetscReal specimenDiameter, PetscReal discDiameter);
 PETSC_EXTERN PetscErrorCode HylcClothSetScene(HylcCloth, PetscReal clampLength, PetscInt ncorners, const PetscInt corners[]);
 PETSC_EXTERN PetscErrorCode HylcClothSetBarrier(HylcCloth, PetscReal distance, PetscReal stiffness);
+PETSC_EXTERN PetscErrorCode HylcClothSetDynamics(HylcCloth, HylcClothDynamics, PetscReal dt, PetscReal damping, PetscReal tmax, PetscReal restTol);
 
 /* Lists the material and mesh files (inputs) and the test's CSV (output) in a file registry. */
 PETSC_EXTERN PetscErrorCode HylcClothAddFiles(HylcCloth, HylcFiles);

@@ -91,7 +91,13 @@ PetscErrorCode HylcClothCreate(MPI_Comm comm, HylcCloth *out)
   c->drapeD        = 0.30;
   c->discD         = 0.18;
   c->rimRadius     = 0.002;
+  c->dynamics      = HYLC_CLOTH_DYNAMICS_AUTO;
+  c->dt            = 1e-3;
+  c->dtMax         = 0.1;
+  c->tmax          = 30;
+  c->damping       = 2;
   c->restTol       = 1e-3;
+  c->restRtol      = 1e-4;
   c->sceneClamp    = 0;
   c->ncorners      = 0;
   c->barrierDist   = 1e-3;
@@ -512,6 +518,40 @@ PetscErrorCode HylcClothSetBarrier(HylcCloth c, PetscReal dist, PetscReal stiff)
 }
 
 /*@C
+  HylcClothSetDynamics - How the equilibria under gravity are reached (-cloth_dynamic off|auto|on: the
+  static load path only; the backward Euler dynamics where it fails; the dynamics from the flat state
+  always) and the dynamics' parameters: the first time step dt (-cloth_dt, s), the mass-proportional
+  damping (-cloth_damping, 1/s), the longest simulated time (-cloth_tmax, s) and the largest vertex speed
+  at rest (-cloth_rest_tol, m/s). A value < 0 keeps the current one. -cloth_dt_max (s) bounds the time
+  step as it grows. Logically collective.
+
+  Level: intermediate
+@*/
+PetscErrorCode HylcClothSetDynamics(HylcCloth c, HylcClothDynamics mode, PetscReal dt, PetscReal damping, PetscReal tmax, PetscReal restTol)
+{
+  PetscFunctionBegin;
+  CLOTH_CHECK(c);
+  PetscCheck(mode >= HYLC_CLOTH_DYNAMICS_OFF && mode <= HYLC_CLOTH_DYNAMICS_ON, CLOTH_COMM(c), PETSC_ERR_ARG_OUTOFRANGE, "-cloth_dynamic: unknown mode %d", (int)mode);
+  PetscCheck(!PetscIsInfOrNanReal(dt) && !PetscIsInfOrNanReal(damping) && !PetscIsInfOrNanReal(tmax) && !PetscIsInfOrNanReal(restTol), CLOTH_COMM(c), PETSC_ERR_USER_INPUT, "-cloth_dt %g, -cloth_damping %g, -cloth_tmax %g, -cloth_rest_tol %g must be finite", (double)dt, (double)damping,
+             (double)tmax, (double)restTol);
+  c->dynamics = mode;
+  if (dt >= 0) {
+    PetscCheck(dt > 0, CLOTH_COMM(c), PETSC_ERR_USER_INPUT, "-cloth_dt %g must be a positive time step in s", (double)dt);
+    c->dt = dt;
+  }
+  if (damping >= 0) c->damping = damping;
+  if (tmax >= 0) {
+    PetscCheck(tmax > 0, CLOTH_COMM(c), PETSC_ERR_USER_INPUT, "-cloth_tmax %g must be a positive time in s", (double)tmax);
+    c->tmax = tmax;
+  }
+  if (restTol >= 0) {
+    PetscCheck(restTol > 0, CLOTH_COMM(c), PETSC_ERR_USER_INPUT, "-cloth_rest_tol %g must be a positive speed in m/s", (double)restTol);
+    c->restTol = restTol;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
   HylcClothSetFromOptions - Reads the cloth's options (docs/fabric.md has the table); builds nothing.
   Collective.
 
@@ -522,6 +562,7 @@ PetscErrorCode HylcClothSetBarrier(HylcCloth c, PetscReal dist, PetscReal stiff)
 . -cloth_length, -cloth_width, -cloth_h, -cloth_mesh_file, -cloth_mesh_scale - the specimen and its mesh
 . -cloth_strain_max, -cloth_strain_steps, -cloth_gravity, -cloth_planar - loads
 . -cloth_solver, -cloth_hessian, -cloth_rtol, -cloth_atol, -cloth_max_it, -cloth_load_steps - the solver
+. -cloth_dynamic, -cloth_dt, -cloth_dt_max, -cloth_damping, -cloth_tmax, -cloth_rest_tol, -cloth_rest_rtol - the dynamics (backward Euler)
 . -cloth_cantilever_angle, -cloth_cantilever_width, -cloth_cantilever_n - the cantilever
 . -cloth_drape_diameter, -cloth_drape_disc, -cloth_rim_radius - the drape
 . -cloth_scene_clamp, -cloth_scene_corners - the scene's supports
@@ -588,6 +629,21 @@ PetscErrorCode HylcClothSetFromOptions(HylcCloth c)
   PetscCall(PetscOptionsReal("-cloth_atol", "Newton: absolute gradient norm (N; < 0: 1e-12 x the cloth's weight, at least 1e-14 N)", "HylcClothSetTolerances", c->atol, &c->atol, NULL));
   PetscCall(PetscOptionsInt("-cloth_load_steps", "Load steps of gravity (cantilever, scene) and of the clamps (< 0: the test's)", "HylcClothSetLoadSteps", c->loadSteps, &n, &set));
   if (set) PetscCall(HylcClothSetLoadSteps(c, n));
+  {
+    PetscEnum mode = (PetscEnum)c->dynamics;
+    PetscReal dt = c->dt, damp = c->damping, tmax = c->tmax, rtol = c->restTol;
+    PetscBool s1, s2, s3, s4, s5;
+    PetscCall(PetscOptionsEnum("-cloth_dynamic", "Equilibria under gravity: off (static load path), auto (backward Euler dynamics where the load path fails), on (dynamics from the flat state)", "HylcClothSetDynamics", HylcClothDynamicsTypes, mode, &mode, &s1));
+    PetscCall(PetscOptionsReal("-cloth_dt", "Dynamics: first time step (s)", "HylcClothSetDynamics", c->dt, &dt, &s2));
+    PetscCall(PetscOptionsReal("-cloth_damping", "Dynamics: mass-proportional damping (1/s)", "HylcClothSetDynamics", c->damping, &damp, &s3));
+    PetscCall(PetscOptionsReal("-cloth_tmax", "Dynamics: longest simulated time (s)", "HylcClothSetDynamics", c->tmax, &tmax, &s4));
+    PetscCall(PetscOptionsReal("-cloth_rest_tol", "Dynamics: largest vertex speed at rest (m/s)", "HylcClothSetDynamics", c->restTol, &rtol, &s5));
+    if (s1 || s2 || s3 || s4 || s5) PetscCall(HylcClothSetDynamics(c, (HylcClothDynamics)mode, dt, damp, tmax, rtol));
+    PetscCall(PetscOptionsReal("-cloth_rest_rtol", "Dynamics: largest static residual (gradient norm over the force scale) of a state at rest that Newton does not polish", "HylcClothSetDynamics", c->restRtol, &c->restRtol, NULL));
+    PetscCheck(c->restRtol > 0 && c->restRtol < 1, CLOTH_COMM(c), PETSC_ERR_USER_INPUT, "-cloth_rest_rtol %g must be in (0, 1)", (double)c->restRtol);
+    PetscCall(PetscOptionsReal("-cloth_dt_max", "Dynamics: largest time step as it grows (s)", "HylcClothSetDynamics", c->dtMax, &c->dtMax, NULL));
+    PetscCheck(c->dtMax >= c->dt && PetscIsNormalReal(c->dtMax), CLOTH_COMM(c), PETSC_ERR_USER_INPUT, "-cloth_dt_max %g must be at least -cloth_dt %g (s)", (double)c->dtMax, (double)c->dt);
+  }
   a = c->cantAngle;
   b = c->cantWidth;
   PetscCall(PetscOptionsReal("-cloth_cantilever_angle", "Cantilever: chord angle below the horizontal at the measured overhang (degrees)", "HylcClothSetCantilever", c->cantAngle, &a, &set));
@@ -720,6 +776,7 @@ PetscErrorCode HylcClothView(HylcCloth c, PetscViewer viewer)
   if (c->nv) PetscCall(PetscViewerASCIIPrintf(viewer, "mesh: %" PetscInt_FMT " vertices, %" PetscInt_FMT " triangles, area %g m^2, on %d ranks\n", c->nv, c->nt, (double)c->area, (int)c->size));
   PetscCall(PetscViewerASCIIPrintf(viewer, "solver: %s, Hessian %s, rtol %g, max_it %" PetscInt_FMT "\n", HylcClothSolvers[c->solver], HylcClothHessians[c->hessian], (double)c->rtol, c->maxit));
   PetscCall(PetscViewerASCIIPrintf(viewer, "contact barrier: distance %g m, stiffness %g J/m^4\n", (double)c->barrierDist, (double)c->kappaB));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "dynamics: %s; backward Euler, first step %g s (at most %g s), damping %g 1/s, at most %g s, at rest below %g m/s\n", HylcClothDynamicsTypes[c->dynamics], (double)c->dt, (double)c->dtMax, (double)c->damping, (double)c->tmax, (double)c->restTol));
   if (c->test == HYLC_CLOTH_TEST_DRAPE) PetscCall(PetscViewerASCIIPrintf(viewer, "drape (static): specimen %g m on a disc of %g m (rim radius %g m)\n", (double)c->drapeD, (double)c->discD, (double)c->rimRadius));
   if (c->test == HYLC_CLOTH_TEST_CANTILEVER) PetscCall(PetscViewerASCIIPrintf(viewer, "cantilever: tip angle %g deg, width %g m, %" PetscInt_FMT " spacings along the overhang\n", (double)c->cantAngle, (double)c->cantWidth, c->cantN));
   PetscCall(PetscViewerASCIIPrintf(viewer, "output: %s\n", c->output[0] ? c->output : "(none)"));
@@ -829,6 +886,7 @@ PetscErrorCode HylcClothRun(HylcCloth c)
   PetscCall(HylcClothSetUp(c));
   c->nresults  = 0;
   c->newtonIts = c->lsFails = c->hessExact = c->hessProj = c->loadStepsDone = 0;
+  c->timeSteps = c->timeStepFails = c->polishes = 0;
   switch (c->test) {
   case HYLC_CLOTH_TEST_TENSILE:
     PetscCall(HylcClothRunTensile_Private(c));

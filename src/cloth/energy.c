@@ -1,8 +1,10 @@
 /* The cloth's energy, gradient and Hessian: the C8 shell elements of the owned triangles (hylcmat),
-   gravity and the contact barrier of the supports. Prescribed coordinates have zero gradient and identity rows
+   gravity, the contact barrier of the supports and, in the dynamic mode, the inertia of the backward
+   Euler step (the incremental potential). Prescribed coordinates have zero gradient and identity rows
    and columns in the Hessian.
 
    E = sum_t A_t Psi(z_t) + sum_v m_v (-g . x_v) + sum_v a_v kappa b(d_s(x_v))
+       [+ sum_v m_v (|x_v - x_n - dt v_n|^2 / (2 dt^2) + c |x_v - x_n|^2 / (2 dt))]
    with m_v = rho_A a_v (a_v the lumped rest area), b the barrier of kernels.c and d_s the signed
    distance to each support. */
 #include <hylc/private/clothimpl.h>
@@ -46,7 +48,7 @@ static PetscErrorCode ElementError(HylcCloth c, int rc, PetscBool *infeasible)
 
 /* the vertex terms of an owned vertex: energy, gradient (3), Hessian (3x3; projected: the barrier's
    curvature term, negative semidefinite, dropped) */
-static PetscReal VertexTerms(HylcCloth c, PetscInt i, const PetscScalar *x, PetscReal g[3], PetscReal H[9], PetscBool project)
+static PetscReal VertexTerms(HylcCloth c, PetscInt i, const PetscScalar *x, const PetscScalar *xn, const PetscScalar *vn, PetscReal g[3], PetscReal H[9], PetscBool project)
 {
   PetscInt  v = c->iperm[c->vstart + i];
   PetscReal a = c->vmass[v], m = c->rhoA * a, E = 0;
@@ -71,6 +73,15 @@ static PetscReal VertexTerms(HylcCloth c, PetscInt i, const PetscScalar *x, Pets
       for (int d = 0; d < 3; d++)
         for (int e = 0; e < 3; e++) H[3 * d + e] += a * c->kappaB * (b2 * dg[d] * dg[e] + (project ? 0 : b1 * dh[3 * d + e]));
   }
+  if (c->dynamic) {
+    PetscReal ia = 1 / c->dtcur;
+    for (int d = 0; d < 3; d++) {
+      PetscReal r = x[3 * i + d] - xn[3 * i + d] - c->dtcur * vn[3 * i + d], q = x[3 * i + d] - xn[3 * i + d];
+      E += 0.5 * m * ia * ia * r * r + 0.5 * m * c->damping * ia * q * q;
+      if (g) g[d] += m * ia * ia * r + m * c->damping * ia * q;
+      if (H) H[4 * d] += m * ia * (ia + c->damping);
+    }
+  }
   return E;
 }
 
@@ -83,7 +94,7 @@ PetscErrorCode HylcClothEnergy_Private(HylcCloth c, Vec X, PetscReal *E, Vec G)
   int                rc;
   PetscBool          bad;
   PetscReal          El = 0;
-  const PetscScalar *x;
+  const PetscScalar *x, *xn = NULL, *vn = NULL;
   PetscScalar       *gl = NULL, *gg = NULL;
   PetscInt           nown = c->vend - c->vstart;
 
@@ -113,16 +124,25 @@ PetscErrorCode HylcClothEnergy_Private(HylcCloth c, Vec X, PetscReal *E, Vec G)
     PetscCall(VecGetArray(G, &gg));
   }
   PetscCall(VecGetArrayRead(X, &x));
+  if (c->dynamic) {
+    PetscCall(VecGetArrayRead(c->xn, &xn));
+    PetscCall(VecGetArrayRead(c->vn, &vn));
+  }
   for (PetscInt i = 0; i < nown; i++) {
     PetscReal gv[3];
-    El += VertexTerms(c, i, x, gv, NULL, PETSC_FALSE);
+    El += VertexTerms(c, i, x, xn, vn, gv, NULL, PETSC_FALSE);
     if (gg)
       for (int d = 0; d < 3; d++) gg[3 * i + d] = c->fixed[3 * i + d] ? 0 : gg[3 * i + d] + gv[d];
+  }
+  if (c->dynamic) {
+    PetscCall(VecRestoreArrayRead(c->xn, &xn));
+    PetscCall(VecRestoreArrayRead(c->vn, &vn));
   }
   PetscCall(VecRestoreArrayRead(X, &x));
   if (G) PetscCall(VecRestoreArray(G, &gg));
   if (PetscIsInfOrNanReal(El)) El = PETSC_INFINITY;
   PetscCall(MPIU_Allreduce(&El, E, 1, MPIU_REAL, MPIU_SUM, PetscObjectComm((PetscObject)c)));
+  if (HylcClothInfeasible(*E)) *E = PETSC_INFINITY; /* the same value on any number of ranks */
   PetscCall(PetscLogEventEnd(HYLC_ClothAssemble, c, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -137,7 +157,7 @@ PetscErrorCode HylcClothHessian_Private(HylcCloth c, Vec X, PetscBool project, M
   int                rc;
   PetscBool          bad;
   PetscCount         q = 0;
-  const PetscScalar *x;
+  const PetscScalar *x, *xn = NULL, *vn = NULL;
   PetscInt           nown = c->vend - c->vstart, *fl;
   PetscScalar       *fa;
 
@@ -180,14 +200,22 @@ PetscErrorCode HylcClothHessian_Private(HylcCloth c, Vec X, PetscBool project, M
   }
   PetscCall(PetscFree(fl));
   PetscCall(VecGetArrayRead(X, &x));
+  if (c->dynamic) {
+    PetscCall(VecGetArrayRead(c->xn, &xn));
+    PetscCall(VecGetArrayRead(c->vn, &vn));
+  }
   for (PetscInt i = 0; i < nown; i++) {
     PetscReal Hv[9];
-    (void)VertexTerms(c, i, x, NULL, Hv, project);
+    (void)VertexTerms(c, i, x, xn, vn, NULL, Hv, project);
     for (int d = 0; d < 3; d++)
       for (int e = 0; e < 3; e++) {
         PetscBool fd = c->fixed[3 * i + d] ? PETSC_TRUE : PETSC_FALSE, fe = c->fixed[3 * i + e] ? PETSC_TRUE : PETSC_FALSE;
         c->coo[q++] = (fd || fe) ? (d == e ? 1.0 : 0.0) : Hv[3 * d + e];
       }
+  }
+  if (c->dynamic) {
+    PetscCall(VecRestoreArrayRead(c->xn, &xn));
+    PetscCall(VecRestoreArrayRead(c->vn, &vn));
   }
   PetscCall(VecRestoreArrayRead(X, &x));
   PetscCall(MatSetValuesCOO(H, c->coo, INSERT_VALUES));

@@ -27,6 +27,7 @@ PetscErrorCode HylcClothLayoutReset_Private(HylcCloth c)
   PetscCall(VecDestroy(&c->x));
   PetscCall(VecDestroy(&c->x0));
   PetscCall(VecDestroy(&c->xprev));
+  PetscCall(HylcClothDynamicReset_Private(c));
   PetscCall(PetscFree(c->xgather));
   c->ne = c->nloc = 0;
   c->ncoo         = 0;

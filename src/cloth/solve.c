@@ -61,7 +61,7 @@ PetscErrorCode HylcClothBacktrack_Private(HylcCloth c, Vec X, PetscReal E0, Vec 
     PetscCall(HylcClothFeasible_Private(c, X, W, &clear));
     if (!clear) continue;
     PetscCall(HylcClothEnergy_Private(c, W, &E, G));
-    if (PetscIsInfOrNanReal(E)) continue;
+    if (HylcClothInfeasible(E)) continue;
     if (E <= E0 + 1e-4 * lam * slope) {
       *ok = PETSC_TRUE;
       break;
@@ -113,6 +113,7 @@ static PetscErrorCode LineSearchEnergy(SNESLineSearch ls, void *ctx)
   PetscCall(HylcClothBacktrack_Private(c, X, E0, F, Y, W, G, &lambda, &ok));
   if (!ok) {
     c->lsFails++;
+    if (c->lsMonitor) PetscCall(PetscPrintf(PetscObjectComm((PetscObject)c), "    line search failed: %s Hessian (negative pivots %" PetscInt_FMT "), E %.12g, slope %g\n", c->lastExact ? "exact" : "projected", nneg, (double)E0, (double)slope));
     PetscCall(SNESLineSearchSetReason(ls, SNES_LINESEARCH_FAILED_REDUCT));
     PetscCall(PetscLogEventEnd(HYLC_ClothLineSearch, c, 0, 0, 0));
     PetscFunctionReturn(PETSC_SUCCESS);
@@ -138,7 +139,7 @@ static PetscErrorCode FormGradient(SNES snes, Vec X, Vec F, void *ctx)
   PetscFunctionBegin;
   (void)snes;
   PetscCall(HylcClothEnergy_Private(c, X, &E, F));
-  PetscCheck(!PetscIsInfOrNanReal(E), PetscObjectComm((PetscObject)c), PETSC_ERR_NOT_CONVERGED, "the cloth's state is infeasible (a degenerate triangle or a vertex through a support) at the start of a solve");
+  PetscCheck(!HylcClothInfeasible(E), PetscObjectComm((PetscObject)c), PETSC_ERR_NOT_CONVERGED, "the cloth's state is infeasible (a degenerate triangle or a vertex through a support) at the start of a solve");
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -346,7 +347,7 @@ static PetscErrorCode SolverSetUp(HylcCloth c)
 
 /* the norm of the gradient with the prescribed coordinates' entries kept (the clamps' reactions): the
    force scale of the tolerances */
-static PetscErrorCode ForceScale(HylcCloth c, Vec X, PetscReal *F)
+PetscErrorCode HylcClothForceScale_Private(HylcCloth c, Vec X, PetscReal *F)
 {
   PetscInt *fixedSave, nown = c->vend - c->vstart;
   Vec       G;
@@ -380,7 +381,7 @@ PetscErrorCode HylcClothSolveStatic_Private(HylcCloth c, PetscBool *converged)
   PetscCall(PetscLogEventBegin(HYLC_ClothSolve, c, 0, 0, 0));
   /* converged: the gradient norm (free coordinates) below rtol times the force scale (the gradient with
      the clamps' reactions), at least atol */
-  PetscCall(ForceScale(c, c->x, &Fref));
+  PetscCall(HylcClothForceScale_Private(c, c->x, &Fref));
   atol = PetscMax(c->rtol * Fref, c->atolUsed);
   if (c->snes) PetscCall(SNESSetTolerances(c->snes, atol, 0.0, 0.0, c->maxit, 100000));
   if (c->tao) PetscCall(TaoSetTolerances(c->tao, atol, 0.0, 0.0));
@@ -512,12 +513,12 @@ PetscErrorCode HylcClothLoadPath_Private(HylcCloth c, PetscReal t1, PetscReal g1
       PetscReal E;
       PetscCall(HylcClothApplyClamps_Private(c, c->x));
       PetscCall(HylcClothEnergy_Private(c, c->x, &E, NULL));
-      if (PetscIsInfOrNanReal(E)) { /* the prediction is infeasible: start from the last state */
+      if (HylcClothInfeasible(E)) { /* the prediction is infeasible: start from the last state */
         PetscCall(VecCopy(xa, c->x));
         PetscCall(HylcClothApplyClamps_Private(c, c->x));
         PetscCall(HylcClothEnergy_Private(c, c->x, &E, NULL));
       }
-      PetscCheck(!PetscIsInfOrNanReal(E), PetscObjectComm((PetscObject)c), PETSC_ERR_NOT_CONVERGED, "load step to %g: the clamps' motion makes a triangle degenerate or a vertex cross a support; use more -cloth_load_steps", (double)sn);
+      PetscCheck(!HylcClothInfeasible(E), PetscObjectComm((PetscObject)c), PETSC_ERR_NOT_CONVERGED, "load step to %g: the clamps' motion makes a triangle degenerate or a vertex cross a support; use more -cloth_load_steps", (double)sn);
     }
     PetscCall(HylcClothSolveStatic_Private(c, &ok));
     if (c->monitor) PetscCall(PetscPrintf(PetscObjectComm((PetscObject)c), "  load step %.6g: %s in %" PetscInt_FMT " iterations\n", (double)sn, ok ? "converged" : "not converged", c->lastIts));

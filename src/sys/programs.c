@@ -233,6 +233,13 @@ static const HylcStageOption HylcStageOptions[] = {
     /* the cloth (hylc-cloth) and its embedded solvers */
     {"cloth_angle", G_CLOTH},
     {"cloth_atol", G_CLOTH},
+    {"cloth_dynamic", G_CLOTH},
+    {"cloth_dt", G_CLOTH},
+    {"cloth_dt_max", G_CLOTH},
+    {"cloth_damping", G_CLOTH},
+    {"cloth_tmax", G_CLOTH},
+    {"cloth_rest_tol", G_CLOTH},
+    {"cloth_rest_rtol", G_CLOTH},
     {"cloth_barrier_distance", G_CLOTH},
     {"cloth_barrier_stiffness", G_CLOTH},
     {"cloth_cantilever_angle", G_CLOTH},

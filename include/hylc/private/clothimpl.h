@@ -10,6 +10,10 @@
 #define HYLC_CLOTH_MAX_RESULTS 64
 #define HYLC_CLOTH_MAX_CLAMPS  8
 #define CLOTH_COMM_PRIVATE(c)  PetscObjectComm((PetscObject)(c))
+/* the energy of a state the elements or the supports refuse: HylcClothEnergy_Private returns
+   PETSC_INFINITY (PETSc's "infinity", PETSC_MAX_REAL / 4, finite; TAO takes it for a refused point) or,
+   summed over ranks, more */
+#define HylcClothInfeasible(E) (PetscIsInfOrNanReal(E) || (E) >= PETSC_INFINITY)
 
 struct _HylcClothOps {
   PetscErrorCode (*view)(HylcCloth, PetscViewer);
@@ -58,7 +62,8 @@ struct _p_HylcCloth {
   PetscReal          cantAngle, cantWidth;
   PetscInt           cantN;
   PetscReal          drapeD, discD, rimRadius;
-  PetscReal          restTol;
+  HylcClothDynamics  dynamics;
+  PetscReal          dt, dtMax, tmax, damping, restTol, restRtol; /* the dynamic mode: s, s, s, 1/s, m/s, 1 */
   PetscReal          sceneClamp;
   PetscInt           ncorners, corners[4];
   PetscReal          barrierDist, barrierStiff;
@@ -111,6 +116,12 @@ struct _p_HylcCloth {
   PetscInt  newtonIts, lsFails, hessExact, hessProj, lastIts, lastReason, loadStepsDone;
   PetscBool lastExact; /* the last Hessian assembled was the exact one */
   PetscReal Escale;    /* an energy scale for the rounding test of the line search (J) */
+  /* ---- the dynamic mode (dynamic.c): the backward Euler step's incremental potential is on while
+     dynamic is set ---- */
+  PetscBool dynamic;
+  PetscReal dtcur, time, restResidual; /* restResidual: the static gradient norm / force scale at rest */
+  Vec       xn, vn; /* the state and velocity at the start of the step */
+  PetscInt  timeSteps, timeStepFails, polishes;
   /* ---- results ---- */
   PetscInt   nresults;
   char       rname[HYLC_CLOTH_MAX_RESULTS][32];
@@ -142,11 +153,16 @@ PETSC_INTERN PetscErrorCode HylcClothGather_Private(HylcCloth, Vec X);
 /* solve.c */
 PETSC_INTERN PetscErrorCode HylcClothSolveStatic_Private(HylcCloth, PetscBool *converged);
 PETSC_INTERN PetscErrorCode HylcClothSolverReset_Private(HylcCloth);
+PETSC_INTERN PetscErrorCode HylcClothForceScale_Private(HylcCloth, Vec X, PetscReal *F);
 PETSC_INTERN PetscErrorCode HylcClothSolverOptions_Private(HylcCloth);
 PETSC_INTERN PetscErrorCode HylcClothLoadPath_Private(HylcCloth, PetscReal load, PetscReal gscale, PetscInt nsteps, PetscBool *converged);
 PETSC_INTERN PetscErrorCode HylcClothBacktrack_Private(HylcCloth, Vec X, PetscReal E0, Vec F, Vec Y, Vec W, Vec G, PetscReal *lambda, PetscBool *ok);
 PETSC_INTERN PetscErrorCode HylcClothFormHessian_Private(HylcCloth, Vec X, Mat H);
 PETSC_INTERN PetscErrorCode HylcClothDefaultKSP_Private(KSP, PetscBool preonly);
+/* dynamic.c */
+PETSC_INTERN PetscErrorCode HylcClothSettle_Private(HylcCloth, PetscBool *rest);
+PETSC_INTERN PetscErrorCode HylcClothEquilibrium_Private(HylcCloth, PetscInt nsteps, PetscBool *converged);
+PETSC_INTERN PetscErrorCode HylcClothDynamicReset_Private(HylcCloth);
 /* output.c */
 PETSC_INTERN PetscErrorCode HylcClothWriteVTK_Private(HylcCloth, const char path[]);
 PETSC_INTERN PetscErrorCode HylcClothOutputName_Private(HylcCloth, const char suffix[], char path[], size_t len);
