@@ -17,12 +17,14 @@
    frictionless contact is a barrier that only the line search on Phi keeps finite. The incremental
    potential is the form of backward Euler that keeps both.
 
-   The step length adapts: halved when a step's Newton solve fails (at most 12 iterations: a step that
-   needs more is cheaper halved), grown by 1.5 (up to -cloth_dt_max) after a step that took at most 6. When the largest vertex speed falls below
+   A step's Newton solve stops at a gradient norm 1e-6 of the force scale (or -cloth_rtol if larger: the
+   static equilibria keep -cloth_rtol), far below the step's own error. The step length adapts: halved
+   when a step's Newton solve fails (at most 12 iterations: a step that needs more is cheaper halved), grown by 1.5 (up to -cloth_dt_max) after a step that took at most 6. When the largest vertex speed falls below
    -cloth_rest_tol, the static solver polishes the state to an equilibrium (no inertia, at most 12
    iterations). If it does not converge (a nearly neutral mode creeps: a fold that is still forming), the
    state before the polish is at rest when its static residual (the gradient norm of E over the force
-   scale, the norm with the clamps' reactions) is at most -cloth_rest_rtol; otherwise the dynamics goes on. */
+   scale, the norm with the clamps' reactions) is at most -cloth_rest_rtol; otherwise the dynamics goes on
+   for at least 5 steps before the next polish. */
 #include <hylc/private/clothimpl.h>
 
 const char *const HylcClothDynamicsTypes[] = {"off", "auto", "on", "HylcClothDynamics", "HYLC_CLOTH_DYNAMICS_", NULL};
@@ -66,7 +68,7 @@ PetscErrorCode HylcClothSettle_Private(HylcCloth c, PetscBool *rest)
 {
   MPI_Comm  comm = CLOTH_COMM_PRIVATE(c);
   PetscReal dt = c->dt, dtmin = c->dt / 4096, vmax = PETSC_MAX_REAL, ekin = 0;
-  PetscInt  its0 = c->newtonIts;
+  PetscInt  its0 = c->newtonIts, wait = 0; /* wait: steps before the next polish after a failed one */
   Vec       xsave;
 
   PetscFunctionBegin;
@@ -95,10 +97,13 @@ PetscErrorCode HylcClothSettle_Private(HylcCloth c, PetscBool *rest)
       if (!clear || HylcClothInfeasible(E)) PetscCall(VecCopy(c->xn, c->x));
     }
     {
-      PetscInt maxit = c->maxit;
-      c->maxit       = PetscMin(c->maxit, 12); /* a step that needs more is cheaper halved */
+      PetscInt  maxit = c->maxit;
+      PetscReal rtol  = c->rtol;
+      c->maxit        = PetscMin(c->maxit, 12); /* a step that needs more is cheaper halved */
+      c->rtol         = PetscMax(c->rtol, 1e-6); /* far below the step's own error */
       PetscCall(HylcClothSolveStatic_Private(c, &ok));
       c->maxit = maxit;
+      c->rtol  = rtol;
     }
     c->dynamic = PETSC_FALSE;
     if (!ok) {
@@ -107,7 +112,7 @@ PetscErrorCode HylcClothSettle_Private(HylcCloth c, PetscBool *rest)
       PetscCall(PetscLogEventEnd(HYLC_ClothStep, c, 0, 0, 0));
       if (c->monitor) PetscCall(PetscPrintf(comm, "  time step %g s at t = %g s: not converged in %" PetscInt_FMT " iterations (reason %" PetscInt_FMT "), halved\n", (double)dt, (double)c->time, c->lastIts, c->lastReason));
       dt /= 2;
-      PetscCheck(dt >= dtmin, comm, PETSC_ERR_NOT_CONVERGED, "dynamics: the time step fell below %g s at t = %g s (-cloth_dt %g s); the cloth's state is in the VTK of the last step written", (double)dtmin, (double)c->time, (double)c->dt);
+      PetscCheck(dt >= dtmin, comm, PETSC_ERR_NOT_CONVERGED, "dynamics: the time step fell below %g s at t = %g s (-cloth_dt %g s): try a smaller -cloth_dt, more -cloth_damping or a finer -cloth_h", (double)dtmin, (double)c->time, (double)c->dt);
       continue;
     }
     /* accepted: v_{n+1} = (x_{n+1} - x_n) / dt */
@@ -118,7 +123,8 @@ PetscErrorCode HylcClothSettle_Private(HylcCloth c, PetscBool *rest)
     PetscCall(Speed(c, c->vn, &vmax, &ekin));
     PetscCall(PetscLogEventEnd(HYLC_ClothStep, c, 0, 0, 0));
     if (c->monitor) PetscCall(PetscPrintf(comm, "  t = %-10.6g s  dt %-9.3g s  Newton %2" PetscInt_FMT "  largest speed %-10.4g m/s  kinetic energy %.4g J\n", (double)c->time, (double)dt, c->lastIts, (double)vmax, (double)ekin));
-    if (vmax < c->restTol) { /* slow enough: the static equilibrium near it, or a residual small enough */
+    if (wait > 0) wait--;
+    if (vmax < c->restTol && !wait) { /* slow enough: the static equilibrium near it, or a residual small enough */
       PetscBool eq;
       PetscReal Fref, r;
       PetscInt  maxit = c->maxit;
@@ -141,6 +147,7 @@ PetscErrorCode HylcClothSettle_Private(HylcCloth c, PetscBool *rest)
         break;
       }
       PetscCall(VecCopy(xsave, c->x));
+      wait = 5;
       if (r <= c->restRtol) { /* at rest, not polished: a nearly neutral mode creeps (folds, a slow buckle) */
         c->restResidual = r;
         *rest           = PETSC_TRUE;
