@@ -122,6 +122,7 @@ struct _p_HylcCloth {
 /* mesh.c */
 PETSC_INTERN PetscErrorCode HylcClothMeshStrip_Private(HylcCloth, PetscReal x0, PetscReal L, PetscReal W, PetscReal h);
 PETSC_INTERN PetscErrorCode HylcClothMeshStripN_Private(HylcCloth, PetscReal x0, PetscReal L, PetscReal W, PetscInt nx, PetscInt ny);
+PETSC_INTERN PetscErrorCode HylcClothMeshStripAcross_Private(HylcCloth, PetscReal x0, PetscReal L, PetscReal W, PetscInt nx, PetscInt ny);
 PETSC_INTERN PetscErrorCode HylcClothMeshDisc_Private(HylcCloth, PetscReal R, PetscReal Rsnap, PetscReal h);
 PETSC_INTERN PetscErrorCode HylcClothMeshReadOBJ_Private(HylcCloth, const char path[], PetscReal scale);
 PETSC_INTERN PetscErrorCode HylcClothMeshMaterial_Private(HylcCloth, PetscReal angleRad, PetscBool faceDown);
