@@ -148,6 +148,7 @@ PETSC_INTERN PetscErrorCode HylcClothLoadPath_Private(HylcCloth, PetscReal load,
 PETSC_INTERN PetscErrorCode HylcClothBacktrack_Private(HylcCloth, Vec X, PetscReal E0, Vec F, Vec Y, Vec W, Vec G, PetscReal *lambda, PetscBool *ok);
 PETSC_INTERN PetscErrorCode HylcClothFormHessian_Private(HylcCloth, Vec X, Mat H);
 PETSC_INTERN PetscErrorCode HylcClothDefaultKSP_Private(KSP, PetscBool preonly);
+PETSC_INTERN PetscErrorCode HylcClothFactor_Private(KSP);
 /* output.c */
 PETSC_INTERN PetscErrorCode HylcClothWriteVTK_Private(HylcCloth, const char path[]);
 PETSC_INTERN PetscErrorCode HylcClothOutputName_Private(HylcCloth, const char suffix[], char path[], size_t len);
