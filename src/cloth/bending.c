@@ -3,31 +3,45 @@
 #include <hylc/private/clothimpl.h>
 #include <math.h>
 
-/* the chord angle (radians below the horizontal) of a cantilever of overhang l clamped at x = 0; the
-   mesh: nx = cantN spacings over the overhang and two behind the root (clamped, with every vertex at
-   x <= 0), ny rows across */
+/*
+  The chord angle (radians below the horizontal) of a cantilever of overhang l clamped at x = 0.
+
+  The mesh's rows of vertices run across the strip (HylcClothMeshStripAcross_Private), hx = l / (cantN +
+  1/2) apart, at x = (k + 1/2) hx: the rows at -5/2, -3/2, -1/2 and +1/2 hx are held, the tip is the row at
+  x = l, cantN row spacings beyond the last held row. Why: in the C8 element the curvature along the
+  strip is the dihedral angle at the rows (a second difference of the rows' heights over hx, each row
+  carrying the band hx around it), so the slope is a difference between neighbouring rows and belongs to
+  the midpoint between them. The clamp's condition, zero slope at the platform edge x = 0 (and zero
+  height there), is then held by the two rows at -hx/2 and +hx/2, the staggered form of the clamped end
+  (second order, like a mirrored ghost row); the row at +hx/2 carries the band [0, hx] of the overhang.
+  Holding rows at x <= 0 instead puts the clamp at the midpoint -hx/2 of the last two held rows (the
+  overhang is hx/2 too long: c first order in hx, -4.2 % at 16 spacings for satin1), and with the
+  lattice's rows along the strip the held vertices form a zigzag whose two sub-rows clamp at different
+  x (docs/fabric.md has the measurements).
+*/
 static PetscErrorCode CantileverAngle(HylcCloth c, PetscReal l, PetscReal angle, PetscBool faceDown, PetscReal *phi, PetscBool *ok, PetscReal curl[2], PetscReal *lprev, PetscReal **xprev, PetscInt *nvprev, PetscInt *nyfix)
 {
-  PetscReal dx = l / c->cantN, W = c->cantWidth, tip[2] = {0, 0}, tipl[3] = {0, 0, 0};
+  PetscReal hx = l / (c->cantN + 0.5), W = c->cantWidth, tip[2] = {0, 0}, tipl[3] = {0, 0, 0};
   PetscInt  ny, n, *v;
 
   PetscFunctionBegin;
-  /* the rows across: as close to equilateral as the width allows at the first overhang, then kept (the
-     chord angle stays a continuous function of the overhang for the secant iteration) */
-  if (*nyfix <= 0) *nyfix = PetscMax(1, (PetscInt)PetscFloorReal(W / (dx * PetscSqrtReal(3.0) / 2) + 0.5));
+  /* the spacings along each row (across the strip): as close to equilateral as the width allows at the
+     first overhang, then kept (the chord angle stays a continuous function of the overhang for the
+     secant iteration) */
+  if (*nyfix <= 0) *nyfix = PetscMax(1, (PetscInt)PetscFloorReal(W / (2 * hx / PetscSqrtReal(3.0)) + 0.5));
   ny = *nyfix;
   PetscCall(HylcClothSolverReset_Private(c));
   PetscCall(HylcClothClampsReset_Private(c));
-  PetscCall(HylcClothMeshStripN_Private(c, -2 * dx, l + 2 * dx, W, c->cantN + 2, ny));
+  PetscCall(HylcClothMeshStripAcross_Private(c, -2.5 * hx, l + 2.5 * hx, W, c->cantN + 3, ny));
   PetscCall(HylcClothMeshMaterial_Private(c, angle * PETSC_PI / 180, faceDown));
   c->nsupport = 0;
   c->load     = 0;
-  PetscCall(HylcClothVerticesInBox_Private(c, -1, 1e-9 * l, -1, 2 * W, &n, &v));
+  PetscCall(HylcClothVerticesInBox_Private(c, -1, 0.5 * hx + 1e-9 * l, -1, 2 * W, &n, &v));
   PetscCall(HylcClothAddClamp_Private(c, n, v, NULL, PETSC_FALSE));
   PetscCall(PetscFree(v));
   PetscCall(HylcClothPrepare_Private(c));
   *ok = PETSC_FALSE;
-  if (*xprev && *nvprev != c->nv) PetscCall(PetscFree(*xprev)); /* the rows across changed with the spacing */
+  if (*xprev && *nvprev != c->nv) PetscCall(PetscFree(*xprev)); /* the mesh changed */
   if (*xprev) {                                                 /* the equilibrium of the previous overhang, scaled: the same mesh topology */
     PetscScalar *x;
     PetscReal    s = l / *lprev;

@@ -108,6 +108,30 @@ PetscErrorCode HylcClothMeshStripN_Private(HylcCloth c, PetscReal x0, PetscReal 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*
+  The strip [x0, x0 + L] x [0, W] with the lattice's rows across it (parallel to y): nx row spacings of
+  L / nx along x, ny spacings of W / ny along each row (the transpose of HylcClothMeshStripN_Private).
+  Every row is a straight line x = const of vertices and edges, so an end held along a row (a clamp, a
+  free end) is a line of the mesh; with rows along the strip no edge runs across it and a clamp line
+  x = const is a zigzag.
+*/
+PetscErrorCode HylcClothMeshStripAcross_Private(HylcCloth c, PetscReal x0, PetscReal L, PetscReal W, PetscInt nx, PetscInt ny)
+{
+  PetscFunctionBegin;
+  PetscCall(HylcClothMeshStripN_Private(c, 0, W, L, ny, nx));
+  for (PetscInt i = 0; i < c->nv; i++) { /* (u, v) -> (x0 + v, u): a reflection, so the orientation flips */
+    PetscReal u = c->X[3 * i], v = c->X[3 * i + 1];
+    c->X[3 * i]     = x0 + v;
+    c->X[3 * i + 1] = u;
+  }
+  for (PetscInt t = 0; t < c->nt; t++) { /* counter-clockwise seen from +z again */
+    PetscInt a        = c->tri[3 * t + 1];
+    c->tri[3 * t + 1] = c->tri[3 * t + 2];
+    c->tri[3 * t + 2] = a;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* the strip with rows about h sqrt(3) / 2 apart and the spacing along them as close to h as the length
    allows: nearly equilateral triangles */
 PetscErrorCode HylcClothMeshStrip_Private(HylcCloth c, PetscReal x0, PetscReal L, PetscReal W, PetscReal h)

@@ -102,6 +102,7 @@ static PetscErrorCode LineSearchEnergy(SNESLineSearch ls, void *ctx)
     /* the exact Hessian is indefinite here: the projected Newton direction */
     PetscCall(HylcClothHessian_Private(c, X, PETSC_TRUE, c->H));
     PetscCall(KSPSetOperators(ksp, c->H, c->H));
+    PetscCall(HylcClothFactor_Private(ksp));
     PetscCall(KSPSolve(ksp, F, Y));
     c->lastExact = PETSC_FALSE;
     c->hessExact--;
@@ -188,6 +189,55 @@ PetscErrorCode HylcClothMumpsInertia_Private(KSP ksp)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*
+  Factorizes the operators of ksp now (KSPSetUp), with MUMPS' settings above set first; a MUMPS
+  factorization that runs out of its workspace (INFOG(1) = -9, MAT_FACTOR_OUTMEMORY: the analysis'
+  estimate exceeded) is redone from a new analysis with ICNTL(14), the workspace margin in %, doubled (at
+  most 4 times). A failed factor cannot be left for the next factorization: PETSc 3.18's MUMPS interface
+  returns at once from every later numerical factorization of the same analysis (INFOG(1) < 0 is kept),
+  so every Newton step of every load step would fail, whatever the matrix. The KSPSolve that follows
+  finds the operators unchanged and does not factorize again. Collective.
+*/
+PetscErrorCode HylcClothFactor_Private(KSP ksp)
+{
+  PC             pc;
+  Mat            A, P, F;
+  MatFactorError err     = MAT_FACTOR_NOERROR;
+  PetscBool      ismumps = PETSC_FALSE;
+  MatSolverType  st;
+
+  PetscFunctionBegin;
+  PetscCall(KSPGetPC(ksp, &pc));
+  for (int attempt = 0;; attempt++) {
+    PetscInt w = 0;
+    PetscCall(HylcClothMumpsInertia_Private(ksp));
+    PetscCall(KSPSetUp(ksp));
+    PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCCHOLESKY, &ismumps));
+    if (ismumps) {
+      PetscCall(PCFactorGetMatSolverType(pc, &st));
+      PetscCall(PetscStrcmp(st, MATSOLVERMUMPS, &ismumps));
+    }
+    if (!ismumps) break;
+    PetscCall(PCFactorGetMatrix(pc, &F));
+    PetscCall(MatFactorGetError(F, &err));
+    if (err != MAT_FACTOR_OUTMEMORY || attempt == 4) break;
+    PetscCall(MatMumpsGetIcntl(F, 14, &w));
+    w = 2 * PetscMax(w, 20);
+    PetscCall(PetscInfo(ksp, "MUMPS' workspace exceeded (INFOG(1) = -9): a new analysis with ICNTL(14) = %" PetscInt_FMT "\n", w));
+    PetscCall(PCGetOperators(pc, &A, &P));
+    PetscCall(PetscObjectReference((PetscObject)A));
+    PetscCall(PetscObjectReference((PetscObject)P));
+    PetscCall(PCReset(pc)); /* the factor dropped: a new MUMPS instance and analysis */
+    PetscCall(KSPSetOperators(ksp, A, P));
+    PetscCall(MatDestroy(&A));
+    PetscCall(MatDestroy(&P));
+    PetscCall(PCFactorSetUpMatSolverType(pc));
+    PetscCall(PCFactorGetMatrix(pc, &F));
+    PetscCall(MatMumpsSetIcntl(F, 14, w));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode FormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx)
 {
   KSP ksp;
@@ -196,7 +246,8 @@ static PetscErrorCode FormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx)
   (void)P;
   PetscCall(HylcClothFormHessian_Private((HylcCloth)ctx, X, J));
   PetscCall(SNESGetKSP(snes, &ksp));
-  PetscCall(HylcClothMumpsInertia_Private(ksp));
+  PetscCall(KSPSetOperators(ksp, J, J)); /* as SNES does next: factorized here */
+  PetscCall(HylcClothFactor_Private(ksp));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -454,6 +505,7 @@ static PetscErrorCode TangentPredictor(HylcCloth c, PetscReal t1, PetscReal g1)
   else
     PetscCall(TaoGetKSP(c->tao, &ksp));
   PetscCall(KSPSetOperators(ksp, c->H, c->H));
+  PetscCall(HylcClothFactor_Private(ksp)); /* MUMPS' settings before its first analysis */
   PetscCall(KSPSolve(ksp, R, dx));
   {
     /* a linear response larger than a tenth of the specimen (a cantilever's first load step: linear

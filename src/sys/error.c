@@ -279,13 +279,16 @@ static int EndsWith(const char s[], const char end[])
   return n > m && !strcmp(s + n - m, end);
 }
 
+/* an option of PETSc's MUMPS interface: mat_mumps_..., with or without a prefix (cloth_mat_mumps_...) */
+static int IsMumpsOption(const char s[]) { return !strncmp(s, "mat_mumps_", 10) || strstr(s, "_mat_mumps_") != NULL; }
+
 /*@C
   HylcCheckOptionsUsed - Refuses options that nothing has read (misspelt or not for this program), before
   any work is done; the options of other hylc programs' stages only (HylcOptionIsOtherStage()) are
   ignored, so that every program reads the whole study's options file. A viewer option (a name ending in
-  _view, read when its object is viewed, or in _converged_reason, read when its solve ends) is left to
-  HylcMainFinalize(), which refuses what is still
-  unread at the end. Collective.
+  _view, read when its object is viewed, or in _converged_reason, read when its solve ends) and an option
+  of MUMPS (mat_mumps_*, with any prefix: read at the first factorization) are left to
+  HylcMainFinalize(), which refuses what is still unread at the end. Collective.
 @*/
 PetscErrorCode HylcCheckOptionsUsed(MPI_Comm comm)
 {
@@ -305,6 +308,9 @@ PetscErrorCode HylcCheckOptionsUsed(MPI_Comm comm)
        -..._converged_reason at the end of its solve, during the work: HylcMainFinalize() refuses either if
        it is still unread at the end */
     if (EndsWith(names[i], "_view") || EndsWith(names[i], "_converged_reason")) continue;
+    /* MUMPS' options (-mat_mumps_icntl_14, -cloth_mat_mumps_cntl_1: the factor matrix's prefix, the
+       solver's) are read at its first factorization, during the work: deferred the same way */
+    if (IsMumpsOption(names[i])) continue;
     nbad++;
     if (used + need + 32 >= sizeof(list)) continue;
     snprintf(list + used, sizeof(list) - used, " -%s", names[i]);

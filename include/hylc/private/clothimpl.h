@@ -133,6 +133,7 @@ struct _p_HylcCloth {
 /* mesh.c */
 PETSC_INTERN PetscErrorCode HylcClothMeshStrip_Private(HylcCloth, PetscReal x0, PetscReal L, PetscReal W, PetscReal h);
 PETSC_INTERN PetscErrorCode HylcClothMeshStripN_Private(HylcCloth, PetscReal x0, PetscReal L, PetscReal W, PetscInt nx, PetscInt ny);
+PETSC_INTERN PetscErrorCode HylcClothMeshStripAcross_Private(HylcCloth, PetscReal x0, PetscReal L, PetscReal W, PetscInt nx, PetscInt ny);
 PETSC_INTERN PetscErrorCode HylcClothMeshDisc_Private(HylcCloth, PetscReal R, PetscReal Rsnap, PetscReal h);
 PETSC_INTERN PetscErrorCode HylcClothMeshReadOBJ_Private(HylcCloth, const char path[], PetscReal scale);
 PETSC_INTERN PetscErrorCode HylcClothMeshMaterial_Private(HylcCloth, PetscReal angleRad, PetscBool faceDown);
@@ -159,6 +160,7 @@ PETSC_INTERN PetscErrorCode HylcClothLoadPath_Private(HylcCloth, PetscReal load,
 PETSC_INTERN PetscErrorCode HylcClothBacktrack_Private(HylcCloth, Vec X, PetscReal E0, Vec F, Vec Y, Vec W, Vec G, PetscReal *lambda, PetscBool *ok);
 PETSC_INTERN PetscErrorCode HylcClothFormHessian_Private(HylcCloth, Vec X, Mat H);
 PETSC_INTERN PetscErrorCode HylcClothDefaultKSP_Private(KSP, PetscBool preonly);
+PETSC_INTERN PetscErrorCode HylcClothFactor_Private(KSP);
 /* dynamic.c */
 PETSC_INTERN PetscErrorCode HylcClothSettle_Private(HylcCloth, PetscBool *rest);
 PETSC_INTERN PetscErrorCode HylcClothEquilibrium_Private(HylcCloth, PetscInt nsteps, PetscBool *converged);
