@@ -16,7 +16,7 @@
    eigenvectors (rows of Z, from the identity), and Q applied only to the eigenvectors of the clamped
    eigenvalues. (Computing only those by inverse iteration instead takes fewer instructions but more
    time: its triangular solves are serial chains, while the rotations' vector updates overlap the QR
-   steps' own chain of square roots and divisions, which sets the pace.) Plain C99. */
+   steps' own chain of divisions, which sets the pace.) Plain C99. */
 #include "hylcmatimpl.h"
 #include <math.h>
 #include <string.h>
@@ -105,18 +105,31 @@ static void Tridiagonalize(int n, double *restrict A, double *restrict d, double
 }
 
 /* Implicit QR steps on a tridiagonal (d, e) (overwritten; its eigenvalues end in d), the rotations
-   accumulated into the rows of Z (set to I here), which become T's eigenvectors. The iteration is kept
-   in a state advanced one unit of work at a time (a deflation test, a new step's shift, or one
-   rotation), so that several independent matrices can be iterated in turn: each step's chain of a
-   square root, a division and the bulge update is latency-bound, and the processor overlaps the
-   chains of different matrices (TridiagQRMany). An off-diagonal entry below eps |T| (|T| the largest
-   |d| + 2 |e|) is negligible: the result is needed to rounding relative to |H| (the floor is 1e-8), not
-   to each eigenvalue's relative accuracy, and that takes fewer steps when the eigenvalues span many
-   magnitudes. */
+   accumulated into the rows of Z (set to I here), which become T's eigenvectors. An off-diagonal entry
+   below eps |T| (|T| the largest |d| + 2 |e|) is negligible: the result is needed to rounding relative
+   to |H| (the floor is 1e-8), not to each eigenvalue's relative accuracy, and that takes fewer steps
+   when the eigenvalues span many magnitudes.
+
+   A sweep's rotations are a chain (each rotation's bulge comes from the previous one), which sets the
+   pace: the rotations' updates of Z are independent work the processor overlaps with it. The chain is
+   kept short: with R = x^2 + z^2 of the bulge (x, z), c^2 = x^2 / R, s^2 = z^2 / R and c s = -x z / R
+   give the new diagonal and the next x = e[k] without a square root, and the next R = e[k]^2 + s^2
+   e[k + 1]^2 (the next z being -s e[k + 1]); c = x / sqrt(R) and s = -z / sqrt(R) themselves, which
+   the next rotation needs only for its products x z and c e[k + 1], and the update of Z come off that
+   chain (R outside (1e-290, 1e290): c and s from Norm2). The carried values (the bulge, R, the
+   entries d[k + 1] and e[k + 1] being rotated) stay in registers across a sweep's loop, and two
+   matrices' sweeps run in one loop (TridiagQR2) so that their chains overlap. */
 typedef struct {
-  int     n, hi, lo, k, it, maxit, insweep;
-  double *d, *e, *Z, tnorm, x, z;
+  int     n, hi, it, maxit;
+  double *d, *e, *Z, tnorm;
 } QRState;
+
+/* a sweep in progress: the next rotation at k (lo <= k < hi), the bulge (x, z) with R = x^2 + z^2,
+   a = d[k] and b = e[k] as rotated so far */
+typedef struct {
+  int    k, lo, hi;
+  double x, z, a, b, R;
+} Sweep;
 
 static void QRInit(QRState *q, int n, double *d, double *e, double *Z)
 {
@@ -124,94 +137,119 @@ static void QRInit(QRState *q, int n, double *d, double *e, double *Z)
   memset(Z, 0, sizeof(double) * n * n);
   for (int i = 0; i < n; i++) Z[n * i + i] = 1;
   for (int i = 0; i < n; i++) tn = fmax(tn, fabs(d[i]) + fabs(e[i]) + (i ? fabs(e[i - 1]) : 0));
-  q->n = n, q->hi = n - 1, q->lo = 0, q->k = 0, q->it = 0, q->maxit = 40 * n, q->insweep = 0;
-  q->d = d, q->e = e, q->Z = Z, q->tnorm = 1e-300 + EPS * tn, q->x = q->z = 0;
+  q->n = n, q->hi = n - 1, q->it = 0, q->maxit = 40 * n;
+  q->d = d, q->e = e, q->Z = Z, q->tnorm = 1e-300 + EPS * tn;
 }
 
-/* one unit of work; returns 1 while the iteration goes on, 0 when it is done, -1 if it did not converge */
-static inline int QRStep(QRState *restrict q)
+/* deflation, then the next sweep's start with Wilkinson's shift from the trailing 2 x 2; returns 1 with
+   a sweep to run, 0 when the iteration is done, -1 if it did not converge */
+static inline int SweepStart(QRState *restrict q, Sweep *restrict w)
 {
   double *restrict d = q->d, *restrict e = q->e;
-  const int n = q->n;
 
-  if (!q->insweep) {
-    int lo;
-    if (q->hi <= 0) return 0;
-    if (fabs(e[q->hi - 1]) <= q->tnorm) {
-      e[q->hi - 1] = 0;
+  while (q->hi > 0) {
+    const int hi = q->hi;
+    int       lo = hi - 1;
+    if (fabs(e[hi - 1]) <= q->tnorm) {
+      e[hi - 1] = 0;
       q->hi--;
-      return q->hi > 0;
+      continue;
     }
     if (++q->it > q->maxit) return -1;
-    lo = q->hi - 1;
     while (lo > 0 && fabs(e[lo - 1]) > q->tnorm) lo--;
     if (lo > 0) e[lo - 1] = 0;
     {
-      /* Wilkinson's shift from the trailing 2 x 2 */
-      const int    hi = q->hi;
       const double dd = 0.5 * (d[hi - 1] - d[hi]), b = e[hi - 1], hyp = Norm2(dd, b);
       const double mu = d[hi] - b * b / (dd + (dd >= 0 ? hyp : -hyp));
-      q->x = d[lo] - mu, q->z = e[lo], q->lo = lo, q->k = lo, q->insweep = 1;
+      w->x = d[lo] - mu, w->z = e[lo];
     }
+    w->k = w->lo = lo, w->hi = hi, w->a = d[lo], w->b = e[lo], w->R = w->x * w->x + w->z * w->z;
     return 1;
   }
-  {
-    const int k = q->k, hi = q->hi;
-    double    c = 1, s = 0, a0, b0, d0, x = q->x, z = q->z;
-    /* G = [c s; -s c] with s x + c z = 0 */
-    if (z != 0) {
-      const double ir = 1 / Norm2(x, z);
-      c               = x * ir;
-      s               = -z * ir;
-    }
-    if (k > q->lo) e[k - 1] = c * e[k - 1] - s * z; /* (k-1, k); (k-1, k+1) becomes 0 */
-    a0       = d[k];
-    b0       = e[k];
-    d0       = d[k + 1];
-    d[k]     = c * c * a0 - 2 * c * s * b0 + s * s * d0;
-    d[k + 1] = s * s * a0 + 2 * c * s * b0 + c * c * d0;
-    e[k]     = c * s * (a0 - d0) + (c * c - s * s) * b0;
-    if (k + 1 < hi) {
-      q->z = -s * e[k + 1];
-      e[k + 1] *= c;
-      q->x = e[k];
-    }
-    {
-      double *restrict zk = q->Z + n * k, *restrict zk1 = q->Z + n * (k + 1);
-      for (int j = 0; j < n; j++) {
-        const double u = zk[j], t = zk1[j];
-        zk[j]  = c * u - s * t;
-        zk1[j] = s * u + c * t;
-      }
-    }
-    if (++q->k >= hi) q->insweep = 0;
-  }
-  return 1;
+  return 0;
 }
 
-/* the QR iterations of m (1..4) matrices, in turn; returns 0, or -1 if one did not converge (with AVX2:
-   the rotations' updates of the 15-long eigenvector rows run 4 wide) */
-AVX2_CLONES
-static int TridiagQRMany(int m, QRState *q)
+/* the rotation G = [c s; -s c] of rows and columns k, k + 1 with s x + c z = 0 */
+static inline void Rotate(const QRState *restrict q, Sweep *restrict w)
 {
-  int st[4] = {1, 1, 1, 1}, active = m;
+  double *restrict d = q->d, *restrict e = q->e;
+  const int    n = q->n, k = w->k, hi = w->hi;
+  const double x = w->x, z = w->z, a = w->a, b = w->b, R = w->R, d0 = d[k + 1], e1 = k + 1 < hi ? e[k + 1] : 0;
+  double       c, s, r, cc, ss, cs, en;
 
-  if (m == 1) {
-    while ((st[0] = QRStep(&q[0])) > 0) {}
-    return st[0] < 0 ? -1 : 0;
+  if (R > 1e-290 && R < 1e290) {
+    const double iR = 1 / R;
+    r = sqrt(R), cc = x * x * iR, ss = z * z * iR, cs = -x * z * iR;
+    c = x / r, s = -z / r;
+  } else {
+    r = Norm2(x, z);
+    if (r == 0)
+      c = 1, s = 0;
+    else
+      c = x / r, s = -z / r;
+    cc = c * c, ss = s * s, cs = c * s;
   }
-  if (m == 2) {
-    while (active) {
-      if (st[0] > 0 && (st[0] = QRStep(&q[0])) <= 0) active--;
-      if (st[1] > 0 && (st[1] = QRStep(&q[1])) <= 0) active--;
+  if (k > w->lo) e[k - 1] = r; /* (k - 1, k): c x - s z; (k - 1, k + 1) becomes 0 */
+  d[k] = cc * a - 2 * cs * b + ss * d0;
+  en   = cs * (a - d0) + (cc - ss) * b;
+  e[k] = en;
+  w->a = ss * a + 2 * cs * b + cc * d0;
+  w->R = en * en + ss * e1 * e1;
+  w->x = en;
+  w->z = -s * e1;
+  w->b = c * e1;
+  if (k + 1 < hi) e[k + 1] = w->b;
+  {
+    double *restrict zk = q->Z + n * k, *restrict zk1 = q->Z + n * (k + 1);
+    for (int j = 0; j < n; j++) {
+      const double u = zk[j], t = zk1[j];
+      zk[j]  = c * u - s * t;
+      zk1[j] = s * u + c * t;
     }
-  } else
-    while (active)
-      for (int i = 0; i < m; i++)
-        if (st[i] > 0 && (st[i] = QRStep(&q[i])) <= 0) active--;
-  for (int i = 0; i < m; i++)
-    if (st[i] < 0) return -1;
-  return 0;
+  }
+  w->k = k + 1;
+}
+
+/* the QR iteration of one matrix from its state st of SweepStart (a sweep in w if st = 1); 0, or -1 if
+   it did not converge */
+static inline int QRFinish(QRState *restrict q, Sweep *restrict w, int st)
+{
+  for (; st > 0; st = SweepStart(q, w)) {
+    Sweep v = *w;
+    while (v.k < v.hi) Rotate(q, &v);
+    q->d[v.hi] = v.a;
+  }
+  return st;
+}
+
+AVX2_CLONES
+static int TridiagQR1(QRState *q)
+{
+  Sweep w;
+  return QRFinish(q, &w, SweepStart(q, &w));
+}
+
+/* two matrices: their sweeps' rotations alternate, in one loop while both have a sweep to run (the
+   same arithmetic as TridiagQR1 on each) */
+AVX2_CLONES
+static int TridiagQR2(QRState *q0, QRState *q1)
+{
+  Sweep w0, w1;
+  int   s0 = SweepStart(q0, &w0), s1 = SweepStart(q1, &w1);
+
+  while (s0 > 0 && s1 > 0) {
+    Sweep     v0 = w0, v1 = w1;
+    const int len = v0.hi - v0.k < v1.hi - v1.k ? v0.hi - v0.k : v1.hi - v1.k;
+    for (int i = 0; i < len; i++) {
+      Rotate(q0, &v0);
+      Rotate(q1, &v1);
+    }
+    w0 = v0, w1 = v1;
+    if (w0.k == w0.hi) q0->d[w0.hi] = w0.a, s0 = SweepStart(q0, &w0);
+    if (w1.k == w1.hi) q1->d[w1.hi] = w1.a, s1 = SweepStart(q1, &w1);
+  }
+  if (s0 < 0 || s1 < 0) return -1;
+  return s0 > 0 ? QRFinish(q0, &w0, s0) : QRFinish(q1, &w1, s1);
 }
 
 /* z <- Q z with Q = H_0 H_1 ... H_{n-3} kept in Vr by Tridiagonalize */
@@ -332,7 +370,8 @@ int hm_psd_project_many(int m, double *const H[], const int nb[])
     ProjPrepare(&p[i], H[i], nb[i]);
     QRInit(&q[i], p[i].nm, p[i].d, p[i].e, p[i].Z);
   }
-  if (TridiagQRMany(m, q)) return HYLCMAT_ERR_NAN;
+  for (int i = 0; i < m; i += 2)
+    if (i + 1 < m ? TridiagQR2(&q[i], &q[i + 1]) : TridiagQR1(&q[i])) return HYLCMAT_ERR_NAN;
   for (int i = 0; i < m; i++) ProjFinish(&p[i]);
   return HYLCMAT_OK;
 }
