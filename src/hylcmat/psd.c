@@ -252,19 +252,23 @@ static int TridiagQR2(QRState *q0, QRState *q1)
   return s0 > 0 ? QRFinish(q0, &w0, s0) : QRFinish(q1, &w1, s1);
 }
 
-/* z <- Q z with Q = H_0 H_1 ... H_{n-3} kept in Vr by Tridiagonalize */
-static void BackTransform(int n, const double *restrict Vr, double *restrict z)
+/* Y <- Q Y with Q = H_0 H_1 ... H_{n-3} kept in Vr by Tridiagonalize, for the nc columns of Y (n x nc,
+   row-major): the columns' dot products with a reflection's vector side by side */
+static void BackTransform(int n, const double *restrict Vr, int nc, double *restrict Y)
 {
   for (int k = n - 3; k >= 0; k--) {
     const int    m           = n - k - 1;
     const double beta        = Vr[n * k + k];
     const double *restrict v = Vr + n * k + k + 1;
-    double *restrict zz      = z + k + 1;
-    double t                 = 0;
+    double *restrict yy      = Y + nc * (k + 1);
+    double t[NMAX];
     if (beta == 0) continue;
-    for (int i = 0; i < m; i++) t += v[i] * zz[i];
-    t *= beta;
-    for (int i = 0; i < m; i++) zz[i] -= t * v[i];
+    for (int c = 0; c < nc; c++) t[c] = 0;
+    for (int i = 0; i < m; i++)
+      for (int c = 0; c < nc; c++) t[c] += v[i] * yy[nc * i + c];
+    for (int c = 0; c < nc; c++) t[c] *= beta;
+    for (int i = 0; i < m; i++)
+      for (int c = 0; c < nc; c++) yy[nc * i + c] -= t[c] * v[i];
   }
 }
 
@@ -322,42 +326,51 @@ static void ProjFinish(Proj *p)
 {
   const int    na = p->na, n = p->n, nm = p->nm, *act = p->act, *idx = p->idx;
   const double floor_ = HYLCMAT_PSD_FLOOR, *v = p->v, tau = p->tau, *w = p->d;
-  double *restrict H = p->H, W[18 * 18];
-  int clamped        = 0;
+  double *restrict H = p->H, Y[NMAX * NMAX], U[NMAX][18], sq[NMAX];
+  int nc             = 0;
 
   /* the translations: + floor / na on the diagonal of every vertex block pair */
   for (int i = 0; i < na; i++)
     for (int j = 0; j < na; j++)
       for (int a = 0; a < 3; a++) H[18 * (3 * act[i] + a) + 3 * act[j] + a] += floor_ / na;
-  /* the clamped eigenvalues: u = (P x I3) [0; Q s]; W = sum (floor - lambda) u u^T (compact, upper
-     triangle), then added to H */
+  /* the clamped eigenvalues' T eigenvectors, the columns of Y, and sqrt(floor - lambda) */
   for (int q = 0; q < nm; q++) {
     const double s = floor_ - w[q];
-    double       u[18], dot[3] = {0, 0, 0};
     if (!(s > 0)) continue;
-    if (!clamped++) memset(W, 0, sizeof(double) * n * n);
+    sq[nc++] = sqrt(s);
+  }
+  if (!nc) return;
+  for (int q = 0, c = 0; q < nm; q++)
+    if (floor_ - w[q] > 0) {
+      for (int i = 0; i < nm; i++) Y[nc * i + c] = p->Z[nm * q + i];
+      c++;
+    }
+  /* u = sqrt(floor - lambda) (P x I3) [0; Q y], the rows of U */
+  BackTransform(nm, p->Vr, nc, Y);
+  for (int c = 0; c < nc; c++) {
+    double *restrict u = U[c], dot[3] = {0, 0, 0};
     for (int a = 0; a < 3; a++) u[a] = 0;
-    for (int i = 0; i < nm; i++) u[3 + i] = p->Z[nm * q + i];
-    BackTransform(nm, p->Vr, u + 3);
+    for (int i = 0; i < nm; i++) u[3 + i] = Y[nc * i + c];
     for (int i = 1; i < na; i++)
       for (int a = 0; a < 3; a++) dot[a] += v[i] * u[3 * i + a];
     for (int i = 0; i < na; i++)
       for (int a = 0; a < 3; a++) u[3 * i + a] -= tau * v[i] * dot[a];
-    for (int i = 0; i < n; i++) {
-      double *restrict row = W + n * i;
-      const double su      = s * u[i];
-      for (int j = i; j < n; j++) row[j] += su * u[j];
-    }
+    for (int i = 0; i < n; i++) u[i] *= sq[c];
   }
-  if (clamped)
-    for (int i = 0; i < n; i++) {
-      double *restrict row = H + 18 * idx[i];
-      row[idx[i]] += W[n * i + i];
-      for (int j = i + 1; j < n; j++) {
-        row[idx[j]] += W[n * i + j];
-        H[18 * idx[j] + idx[i]] = row[idx[j]];
-      }
+  /* H += sum u u^T, row by row (exactly symmetric: entries (i, j) and (j, i) add the same products in
+     the same order) */
+  for (int i = 0; i < n; i++) {
+    double row[18];
+    for (int j = 0; j < n; j++) row[j] = 0;
+    for (int c = 0; c < nc; c++) {
+      const double a = U[c][i];
+      for (int j = 0; j < n; j++) row[j] += a * U[c][j];
     }
+    if (n == 18)
+      for (int j = 0; j < 18; j++) H[18 * i + j] += row[j];
+    else
+      for (int j = 0; j < n; j++) H[18 * idx[i] + idx[j]] += row[j];
+  }
 }
 
 /* projects m (1..4) element Hessians H[i] with neighbour masks nb[i], their QR iterations in turn */
