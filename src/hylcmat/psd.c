@@ -358,19 +358,27 @@ static void ProjFinish(Proj *p)
     for (int i = 0; i < n; i++) u[i] *= sq[c];
   }
   /* H += sum u u^T, row by row (exactly symmetric: entries (i, j) and (j, i) add the same products in
-     the same order) */
-  for (int i = 0; i < n; i++) {
-    double row[18];
-    for (int j = 0; j < n; j++) row[j] = 0;
-    for (int c = 0; c < nc; c++) {
-      const double a = U[c][i];
-      for (int j = 0; j < n; j++) row[j] += a * U[c][j];
-    }
-    if (n == 18)
+     the same order); all six vertices: the rows' sums in registers (constant bounds) */
+  if (n == 18)
+    for (int i = 0; i < 18; i++) {
+      double row[18];
+      for (int j = 0; j < 18; j++) row[j] = U[0][i] * U[0][j];
+      for (int c = 1; c < nc; c++) {
+        const double a = U[c][i];
+        for (int j = 0; j < 18; j++) row[j] += a * U[c][j];
+      }
       for (int j = 0; j < 18; j++) H[18 * i + j] += row[j];
-    else
+    }
+  else
+    for (int i = 0; i < n; i++) {
+      double row[18];
+      for (int j = 0; j < n; j++) row[j] = U[0][i] * U[0][j];
+      for (int c = 1; c < nc; c++) {
+        const double a = U[c][i];
+        for (int j = 0; j < n; j++) row[j] += a * U[c][j];
+      }
       for (int j = 0; j < n; j++) H[18 * idx[i] + idx[j]] += row[j];
-  }
+    }
 }
 
 /* projects m (1..4) element Hessians H[i] with neighbour masks nb[i], their QR iterations in turn */
