@@ -22,6 +22,7 @@
 #include <string.h>
 
 #define NMAX 15 /* 3 (6 vertices - 1) */
+#define ZS   16 /* the row stride of Z (its last entry 0) */
 
 /* GCC on x86-64 Linux (glibc's ifunc): the function also compiled for AVX2, the version chosen at load
    time; the same results (no FMA contraction in either) */
@@ -134,8 +135,8 @@ typedef struct {
 static void QRInit(QRState *q, int n, double *d, double *e, double *Z)
 {
   double tn = 0;
-  memset(Z, 0, sizeof(double) * n * n);
-  for (int i = 0; i < n; i++) Z[n * i + i] = 1;
+  memset(Z, 0, sizeof(double) * ZS * n);
+  for (int i = 0; i < n; i++) Z[ZS * i + i] = 1;
   for (int i = 0; i < n; i++) tn = fmax(tn, fabs(d[i]) + fabs(e[i]) + (i ? fabs(e[i - 1]) : 0));
   q->n = n, q->hi = n - 1, q->it = 0, q->maxit = 40 * n;
   q->d = d, q->e = e, q->Z = Z, q->tnorm = 1e-300 + EPS * tn;
@@ -170,10 +171,10 @@ static inline int SweepStart(QRState *restrict q, Sweep *restrict w)
 }
 
 /* the rotation G = [c s; -s c] of rows and columns k, k + 1 with s x + c z = 0 */
-static inline void Rotate(const QRState *restrict q, Sweep *restrict w)
+static inline void Rotate(const QRState *restrict q, Sweep *restrict w, int nz)
 {
   double *restrict d = q->d, *restrict e = q->e;
-  const int    n = q->n, k = w->k, hi = w->hi;
+  const int    k = w->k, hi = w->hi;
   const double x = w->x, z = w->z, a = w->a, b = w->b, R = w->R, d0 = d[k + 1], e1 = k + 1 < hi ? e[k + 1] : 0;
   double       c, s, r, cc, ss, cs, en;
 
@@ -200,8 +201,8 @@ static inline void Rotate(const QRState *restrict q, Sweep *restrict w)
   w->b = c * e1;
   if (k + 1 < hi) e[k + 1] = w->b;
   {
-    double *restrict zk = q->Z + n * k, *restrict zk1 = q->Z + n * (k + 1);
-    for (int j = 0; j < n; j++) {
+    double *restrict zk = q->Z + ZS * k, *restrict zk1 = zk + ZS;
+    for (int j = 0; j < nz; j++) {
       const double u = zk[j], t = zk1[j];
       zk[j]  = c * u - s * t;
       zk1[j] = s * u + c * t;
@@ -216,7 +217,7 @@ static inline int QRFinish(QRState *restrict q, Sweep *restrict w, int st)
 {
   for (; st > 0; st = SweepStart(q, w)) {
     Sweep v = *w;
-    while (v.k < v.hi) Rotate(q, &v);
+    while (v.k < v.hi) Rotate(q, &v, q->n);
     q->d[v.hi] = v.a;
   }
   return st;
@@ -226,7 +227,13 @@ AVX2_CLONES
 static int TridiagQR1(QRState *q)
 {
   Sweep w;
-  return QRFinish(q, &w, SweepStart(q, &w));
+  int   st;
+  while ((st = SweepStart(q, &w)) > 0) {
+    Sweep v = w;
+    while (v.k < v.hi) Rotate(q, &v, ZS);
+    q->d[v.hi] = v.a;
+  }
+  return st;
 }
 
 /* two matrices: their sweeps' rotations alternate, in one loop while both have a sweep to run (the
@@ -241,8 +248,8 @@ static int TridiagQR2(QRState *q0, QRState *q1)
     Sweep     v0 = w0, v1 = w1;
     const int len = v0.hi - v0.k < v1.hi - v1.k ? v0.hi - v0.k : v1.hi - v1.k;
     for (int i = 0; i < len; i++) {
-      Rotate(q0, &v0);
-      Rotate(q1, &v1);
+      Rotate(q0, &v0, q0->n);
+      Rotate(q1, &v1, q1->n);
     }
     w0 = v0, w1 = v1;
     if (w0.k == w0.hi) q0->d[w0.hi] = w0.a, s0 = SweepStart(q0, &w0);
@@ -276,7 +283,7 @@ static void BackTransform(int n, const double *restrict Vr, int nc, double *rest
 typedef struct {
   double *H;
   int     act[6], idx[18], na, n, nm;
-  double  v[6], tau, M[NMAX * NMAX], Z[NMAX * NMAX], Vr[NMAX * NMAX], d[NMAX], e[NMAX];
+  double  v[6], tau, M[NMAX * NMAX], Z[ZS * NMAX], Vr[NMAX * NMAX], d[NMAX], e[NMAX];
 } Proj;
 
 /* M = the rows and columns 3.. of (P x I3) H (P x I3) over the vertices present, tridiagonalized */
@@ -342,7 +349,7 @@ static void ProjFinish(Proj *p)
   if (!nc) return;
   for (int q = 0, c = 0; q < nm; q++)
     if (floor_ - w[q] > 0) {
-      for (int i = 0; i < nm; i++) Y[nc * i + c] = p->Z[nm * q + i];
+      for (int i = 0; i < nm; i++) Y[nc * i + c] = p->Z[ZS * q + i];
       c++;
     }
   /* u = sqrt(floor - lambda) (P x I3) [0; Q y], the rows of U */
