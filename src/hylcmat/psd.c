@@ -14,9 +14,22 @@
    tridiagonalization T = Q^T M Q (the reflections kept; only the lower triangle is read and updated),
    implicit symmetric QR steps with Wilkinson's shift on T with the rotations accumulated into T's
    eigenvectors (rows of Z, from the identity), and Q applied only to the eigenvectors of the clamped
-   eigenvalues. (Computing only those by inverse iteration instead takes fewer instructions but more
-   time: its triangular solves are serial chains, while the rotations' vector updates overlap the QR
-   steps' own chain of divisions, which sets the pace.) Plain C99. */
+   eigenvalues, all of them together. (Computing only those by inverse iteration instead takes fewer
+   instructions but more time: its triangular solves are serial chains, while the rotations' vector
+   updates overlap the QR steps' own chain of divisions, which sets the pace.) Plain C99.
+
+   Where the time goes (issue 31; 2026-11-27, one core of a 2.3 GHz Xeon shared with other work,
+   TSC cycles per six-vertex element, the least of repeated timings of 40 elements, the elements of
+   bench_shell's mesh): forming M 1.0k, tridiagonalization 2.6k, QR 8.8k alone (~22.5 sweeps, ~190
+   rotations; 12.7k before its chain lost the square root and the unit-at-a-time interleaving), the
+   clamped eigenvectors and H's update 2.5k (4.8k before they were back-transformed together and
+   added over full rows); the whole projection 15.0k alone and 13.0k per element in pairs (21.7k and
+   18.2k before). Not kept, measured: a positive-definiteness test first (a Cholesky factorization)
+   would never pay: no element of the bench's stencils and of its mesh is positive definite, as H =
+   J^T Psi'' J (rank <= 6, six strains) plus the stress term leaves ~9 eigenvalues to that term's sign
+   (six are clamped in 99 % of the mesh's elements); the tridiagonalization over the full square with
+   AVX2 and shorter chains of additions (no faster, or slower); Z's padded rows in the two-matrix
+   loop, Y with a padded column stride (slower). */
 #include "hylcmatimpl.h"
 #include <math.h>
 #include <string.h>
@@ -388,7 +401,7 @@ static void ProjFinish(Proj *p)
     }
 }
 
-/* projects m (1..4) element Hessians H[i] with neighbour masks nb[i], their QR iterations in turn */
+/* projects m (1..4) element Hessians H[i] with neighbour masks nb[i], their QR iterations in pairs */
 int hm_psd_project_many(int m, double *const H[], const int nb[])
 {
   Proj    p[4];
