@@ -320,13 +320,24 @@ static void ProjPrepare(Proj *p, double *H, int nb)
   {
     const int    *act = p->act;
     const double *v = p->v, tau = p->tau;
-    for (int j = 0; j < na; j++)
+    if (na == 6) { /* the same sums along H's rows */
+      double Rr[3][18];
       for (int a = 0; a < 3; a++)
-        for (int b = 0; b < 3; b++) {
-          double t = 0;
-          for (int i = 0; i < na; i++) t += v[i] * H[18 * (3 * act[i] + a) + 3 * act[j] + b];
-          R[j][3 * a + b] = t;
-        }
+        for (int c = 0; c < 18; c++) Rr[a][c] = 0;
+      for (int i = 0; i < 6; i++)
+        for (int a = 0; a < 3; a++)
+          for (int c = 0; c < 18; c++) Rr[a][c] += v[i] * H[18 * (3 * i + a) + c];
+      for (int j = 0; j < 6; j++)
+        for (int a = 0; a < 3; a++)
+          for (int b = 0; b < 3; b++) R[j][3 * a + b] = Rr[a][3 * j + b];
+    } else
+      for (int j = 0; j < na; j++)
+        for (int a = 0; a < 3; a++)
+          for (int b = 0; b < 3; b++) {
+            double t = 0;
+            for (int i = 0; i < na; i++) t += v[i] * H[18 * (3 * act[i] + a) + 3 * act[j] + b];
+            R[j][3 * a + b] = t;
+          }
     for (int q = 0; q < 9; q++) {
       double t = 0;
       for (int j = 0; j < na; j++) t += v[j] * R[j][q];
