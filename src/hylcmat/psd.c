@@ -18,18 +18,21 @@
    instructions but more time: its triangular solves are serial chains, while the rotations' vector
    updates overlap the QR steps' own chain of divisions, which sets the pace.) Plain C99.
 
-   Where the time goes (issue 31; 2026-11-27, one core of a 2.3 GHz Xeon shared with other work,
-   TSC cycles per six-vertex element, the least of repeated timings of 40 elements, the elements of
-   bench_shell's mesh): forming M 1.0k, tridiagonalization 2.6k, QR 8.8k alone (~22.5 sweeps, ~190
-   rotations; 12.7k before its chain lost the square root and the unit-at-a-time interleaving), the
-   clamped eigenvectors and H's update 2.5k (4.8k before they were back-transformed together and
-   added over full rows); the whole projection 15.0k alone and 13.0k per element in pairs (21.7k and
-   18.2k before). Not kept, measured: a positive-definiteness test first (a Cholesky factorization)
-   would never pay: no element of the bench's stencils and of its mesh is positive definite, as H =
-   J^T Psi'' J (rank <= 6, six strains) plus the stress term leaves ~9 eigenvalues to that term's sign
-   (six are clamped in 99 % of the mesh's elements); the tridiagonalization over the full square with
-   AVX2 and shorter chains of additions (no faster, or slower); Z's padded rows in the two-matrix
-   loop, Y with a padded column stride (slower). */
+   Where the time goes (issue 31; 2026-11-27, one core of a 2.3 GHz Xeon shared with other work; TSC
+   cycles per six-vertex element, the least of repeated timings of 40 elements, over the elements of
+   bench_shell's mesh): forming M 0.7k (1.0k before its sums ran along H's rows), tridiagonalization
+   2.6k, QR 8.8k alone (~22.5 sweeps, ~190 rotations; 12.7k before its chain lost the square root and
+   the unit-at-a-time state machine gave way to a loop per sweep), the clamped eigenvectors and H's
+   update 2.5k (4.8k before they were back-transformed together and added over full rows); the whole
+   projection 14.7k alone, 12.7k per element in pairs (21.7k alone and 18.2k four in turn before).
+   Measured and not kept: a positive-definiteness test first (a Cholesky factorization) would never
+   pay, since no element of the bench's stencils or of its mesh is positive definite (H = J^T Psi'' J,
+   of rank <= 6 for the six strains, plus the stress term leaves ~9 eigenvalues to that term's sign;
+   six are clamped in 99 % of the mesh's elements, 6 or 7 in the stencils'); the tridiagonalization
+   over the full square with AVX2 and shorter chains of additions (no faster, or slower); Z's padded
+   rows in the two-matrix loop and a padded column stride in BackTransform (slower). A split
+   tridiagonal's upper block could be a second chain, but splits above the bottom block start 1.3 %
+   of the sweeps. */
 #include "hylcmatimpl.h"
 #include <math.h>
 #include <string.h>
@@ -132,7 +135,8 @@ static void Tridiagonalize(int n, double *restrict A, double *restrict d, double
    the next rotation needs only for its products x z and c e[k + 1], and the update of Z come off that
    chain (R outside (1e-290, 1e290): c and s from Norm2). The carried values (the bulge, R, the
    entries d[k + 1] and e[k + 1] being rotated) stay in registers across a sweep's loop, and two
-   matrices' sweeps run in one loop (TridiagQR2) so that their chains overlap. */
+   matrices' sweeps run in one loop (TridiagQR2) so that their chains overlap. One matrix alone updates
+   Z's whole padded rows (four AVX2 vectors; measured slower in the two-matrix loop, which keeps n). */
 typedef struct {
   int     n, hi, it, maxit;
   double *d, *e, *Z, tnorm;
