@@ -25,7 +25,7 @@
    the unit-at-a-time state machine gave way to a loop per sweep), the clamped eigenvectors and H's
    update 2.5k (4.8k before they were back-transformed together and added over full rows); the whole
    projection 14.7k alone, 12.7k per element in pairs (21.7k alone and 18.2k four in turn before).
-   Measured and not kept: a positive-definiteness test first (a Cholesky factorization) would never
+   Not done, measured: a positive-definiteness test first (a Cholesky factorization) would never
    pay, since no element of the bench's stencils or of its mesh is positive definite (H = J^T Psi'' J,
    of rank <= 6 for the six strains, plus the stress term leaves ~9 eigenvalues to that term's sign;
    six are clamped in 99 % of the mesh's elements, 6 or 7 in the stencils'); the tridiagonalization
