@@ -130,7 +130,9 @@ static void Tridiagonalize(int n, double *restrict A, double *restrict d, double
    A sweep's rotations are a chain (each rotation's bulge comes from the previous one), which sets the
    pace: the rotations' updates of Z are independent work the processor overlaps with it. The chain is
    kept short: with R = x^2 + z^2 of the bulge (x, z), c^2 = x^2 / R, s^2 = z^2 / R and c s = -x z / R
-   give the new diagonal and the next x = e[k] without a square root, and the next R = e[k]^2 + s^2
+   give the new diagonal and the next x = e[k] without a square root (x = ((x^2 - z^2) b - x z
+   (a - d[k + 1])) / R with a, b the d[k], e[k] being rotated: its numerator formed alongside the
+   division), and the next R = e[k]^2 + s^2
    e[k + 1]^2 (the next z being -s e[k + 1]); c = x / sqrt(R) and s = -z / sqrt(R) themselves, which
    the next rotation needs only for its products x z and c e[k + 1], and the update of Z come off that
    chain (R outside (1e-290, 1e290): c and s from Norm2). The carried values (the bulge, R, the
@@ -196,9 +198,10 @@ static inline void Rotate(const QRState *restrict q, Sweep *restrict w, int nz)
   double       c, s, r, cc, ss, cs, en;
 
   if (R > 1e-290 && R < 1e290) {
-    const double iR = 1 / R;
-    r = sqrt(R), cc = x * x * iR, ss = z * z * iR, cs = -x * z * iR;
+    const double iR = 1 / R, xx = x * x, zz = z * z, xz = x * z;
+    r = sqrt(R), cc = xx * iR, ss = zz * iR, cs = -xz * iR;
     c = x / r, s = -z / r;
+    en = ((xx - zz) * b - xz * (a - d0)) * iR; /* its numerator alongside the division */
   } else {
     r = Norm2(x, z);
     if (r == 0)
@@ -206,10 +209,10 @@ static inline void Rotate(const QRState *restrict q, Sweep *restrict w, int nz)
     else
       c = x / r, s = -z / r;
     cc = c * c, ss = s * s, cs = c * s;
+    en = cs * (a - d0) + (cc - ss) * b;
   }
   if (k > w->lo) e[k - 1] = r; /* (k - 1, k): c x - s z; (k - 1, k + 1) becomes 0 */
   d[k] = cc * a - 2 * cs * b + ss * d0;
-  en   = cs * (a - d0) + (cc - ss) * b;
   e[k] = en;
   w->a = ss * a + 2 * cs * b + cc * d0;
   w->R = en * en + ss * e1 * e1;
