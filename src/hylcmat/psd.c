@@ -215,7 +215,7 @@ static inline void Rotate(const QRState *restrict q, Sweep *restrict w, int nz)
   d[k] = cc * a - 2 * cs * b + ss * d0;
   e[k] = en;
   w->a = ss * a + 2 * cs * b + cc * d0;
-  w->R = en * en + ss * e1 * e1;
+  w->R = en * en + ss * (e1 * e1);
   w->x = en;
   w->z = -s * e1;
   w->b = c * e1;
