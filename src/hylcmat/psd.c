@@ -21,10 +21,10 @@
    Where the time goes (issue 31; 2026-11-27, one core of a 2.3 GHz Xeon shared with other work; TSC
    cycles per six-vertex element, the least of repeated timings of 40 elements, over the elements of
    bench_shell's mesh): forming M 0.7k (1.0k before its sums ran along H's rows), tridiagonalization
-   2.6k, QR 8.8k alone (~22.5 sweeps, ~190 rotations; 12.7k before its chain lost the square root and
+   2.6k, QR 8.0k alone (~22.5 sweeps, ~190 rotations; 12.7k before its chain lost the square root and
    the unit-at-a-time state machine gave way to a loop per sweep), the clamped eigenvectors and H's
    update 2.5k (4.8k before they were back-transformed together and added over full rows); the whole
-   projection 14.7k alone, 12.7k per element in pairs (21.7k alone and 18.2k four in turn before).
+   projection 13.9k alone, 12.5k per element in pairs (21.7k alone and 18.2k four in turn before).
    Not done, measured: a positive-definiteness test first (a Cholesky factorization) would never
    pay, since no element of the bench's stencils or of its mesh is positive definite (H = J^T Psi'' J,
    of rank <= 6 for the six strains, plus the stress term leaves ~9 eigenvalues to that term's sign;
