@@ -163,8 +163,8 @@ int hylcmat_shell_strains(const hylcmat_shell_rest *r, const double x[18], int n
 int hylcmat_shell_eval(const hylcmat *m, const hylcmat_shell_rest *r, const double x[18], int nbmask, int flags, double *E, double grad[18], double hess[324]);
 /* n elements at once (rest data r[n], coordinates x (n x 18), neighbour masks nbmask[n]): E (n), grad
    (n x 18, may be NULL), hess (n x 324, may be NULL; needs grad), the same values as n calls of
-   hylcmat_shell_eval. With HYLCMAT_SHELL_PSD it is faster on one core: the eigen-decompositions of four
-   elements are iterated in turn, overlapping their latency-bound chains. Returns the first error after
+   hylcmat_shell_eval. With HYLCMAT_SHELL_PSD it is faster on one core: the QR iterations of two
+   elements run in one loop, overlapping their latency-bound chains. Returns the first error after
    evaluating every element (a failed element's outputs are 0). No allocation; thread-safe. */
 int hylcmat_shell_eval_batch(const hylcmat *m, size_t n, const hylcmat_shell_rest *r, const double *x, const int *nbmask, int flags, double *E, double *grad, double *hess);
 

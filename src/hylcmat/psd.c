@@ -14,14 +14,31 @@
    tridiagonalization T = Q^T M Q (the reflections kept; only the lower triangle is read and updated),
    implicit symmetric QR steps with Wilkinson's shift on T with the rotations accumulated into T's
    eigenvectors (rows of Z, from the identity), and Q applied only to the eigenvectors of the clamped
-   eigenvalues. (Computing only those by inverse iteration instead takes fewer instructions but more
-   time: its triangular solves are serial chains, while the rotations' vector updates overlap the QR
-   steps' own chain of square roots and divisions, which sets the pace.) Plain C99. */
+   eigenvalues, all of them together. (Computing only those by inverse iteration instead takes fewer
+   instructions but more time: its triangular solves are serial chains, while the rotations' vector
+   updates overlap the QR steps' own chain of divisions, which sets the pace.) Plain C99.
+
+   Where the time goes (issue 31; 2026-11-27, one core of a 2.3 GHz Xeon shared with other work; TSC
+   cycles per six-vertex element, the least of repeated timings of 40 elements, over the elements of
+   bench_shell's mesh): forming M 0.7k (1.0k before its sums ran along H's rows), tridiagonalization
+   2.6k, QR 8.0k alone (~22.5 sweeps, ~190 rotations; 12.7k before its chain lost the square root and
+   the unit-at-a-time state machine gave way to a loop per sweep), the clamped eigenvectors and H's
+   update 2.5k (4.8k before they were back-transformed together and added over full rows); the whole
+   projection 13.9k alone, 12.5k per element in pairs (21.7k alone and 18.2k four in turn before).
+   Not done, measured: a positive-definiteness test first (a Cholesky factorization) would never
+   pay, since no element of the bench's stencils or of its mesh is positive definite (H = J^T Psi'' J,
+   of rank <= 6 for the six strains, plus the stress term leaves ~9 eigenvalues to that term's sign;
+   six are clamped in 99 % of the mesh's elements, 6 or 7 in the stencils'); the tridiagonalization
+   over the full square with AVX2 and shorter chains of additions (no faster, or slower); Z's padded
+   rows in the two-matrix loop and a padded column stride in BackTransform (slower). A split
+   tridiagonal's upper block could be a second chain, but splits above the bottom block start 1.3 %
+   of the sweeps. */
 #include "hylcmatimpl.h"
 #include <math.h>
 #include <string.h>
 
 #define NMAX 15 /* 3 (6 vertices - 1) */
+#define ZS   16 /* the row stride of Z (its last entry 0) */
 
 /* GCC on x86-64 Linux (glibc's ifunc): the function also compiled for AVX2, the version chosen at load
    time; the same results (no FMA contraction in either) */
@@ -105,128 +122,180 @@ static void Tridiagonalize(int n, double *restrict A, double *restrict d, double
 }
 
 /* Implicit QR steps on a tridiagonal (d, e) (overwritten; its eigenvalues end in d), the rotations
-   accumulated into the rows of Z (set to I here), which become T's eigenvectors. The iteration is kept
-   in a state advanced one unit of work at a time (a deflation test, a new step's shift, or one
-   rotation), so that several independent matrices can be iterated in turn: each step's chain of a
-   square root, a division and the bulge update is latency-bound, and the processor overlaps the
-   chains of different matrices (TridiagQRMany). An off-diagonal entry below eps |T| (|T| the largest
-   |d| + 2 |e|) is negligible: the result is needed to rounding relative to |H| (the floor is 1e-8), not
-   to each eigenvalue's relative accuracy, and that takes fewer steps when the eigenvalues span many
-   magnitudes. */
+   accumulated into the rows of Z (set to I here), which become T's eigenvectors. An off-diagonal entry
+   below eps |T| (|T| the largest |d| + 2 |e|) is negligible: the result is needed to rounding relative
+   to |H| (the floor is 1e-8), not to each eigenvalue's relative accuracy, and that takes fewer steps
+   when the eigenvalues span many magnitudes.
+
+   A sweep's rotations are a chain (each rotation's bulge comes from the previous one), which sets the
+   pace: the rotations' updates of Z are independent work the processor overlaps with it. The chain is
+   kept short: with R = x^2 + z^2 of the bulge (x, z), c^2 = x^2 / R, s^2 = z^2 / R and c s = -x z / R
+   give the new diagonal and the next x = e[k] without a square root (x = ((x^2 - z^2) b - x z
+   (a - d[k + 1])) / R with a, b the d[k], e[k] being rotated: its numerator formed alongside the
+   division), and the next R = e[k]^2 + s^2
+   e[k + 1]^2 (the next z being -s e[k + 1]); c = x / sqrt(R) and s = -z / sqrt(R) themselves, which
+   the next rotation needs only for its products x z and c e[k + 1], and the update of Z come off that
+   chain (R outside (1e-290, 1e290): c and s from Norm2). The carried values (the bulge, R, the
+   entries d[k + 1] and e[k + 1] being rotated) stay in registers across a sweep's loop, and two
+   matrices' sweeps run in one loop (TridiagQR2) so that their chains overlap. One matrix alone updates
+   Z's whole padded rows (four AVX2 vectors; measured slower in the two-matrix loop, which keeps n). */
 typedef struct {
-  int     n, hi, lo, k, it, maxit, insweep;
-  double *d, *e, *Z, tnorm, x, z;
+  int     n, hi, it, maxit;
+  double *d, *e, *Z, tnorm;
 } QRState;
+
+/* a sweep in progress: the next rotation at k (lo <= k < hi), the bulge (x, z) with R = x^2 + z^2,
+   a = d[k] and b = e[k] as rotated so far */
+typedef struct {
+  int    k, lo, hi;
+  double x, z, a, b, R;
+} Sweep;
 
 static void QRInit(QRState *q, int n, double *d, double *e, double *Z)
 {
   double tn = 0;
-  memset(Z, 0, sizeof(double) * n * n);
-  for (int i = 0; i < n; i++) Z[n * i + i] = 1;
+  memset(Z, 0, sizeof(double) * ZS * n);
+  for (int i = 0; i < n; i++) Z[ZS * i + i] = 1;
   for (int i = 0; i < n; i++) tn = fmax(tn, fabs(d[i]) + fabs(e[i]) + (i ? fabs(e[i - 1]) : 0));
-  q->n = n, q->hi = n - 1, q->lo = 0, q->k = 0, q->it = 0, q->maxit = 40 * n, q->insweep = 0;
-  q->d = d, q->e = e, q->Z = Z, q->tnorm = 1e-300 + EPS * tn, q->x = q->z = 0;
+  q->n = n, q->hi = n - 1, q->it = 0, q->maxit = 40 * n;
+  q->d = d, q->e = e, q->Z = Z, q->tnorm = 1e-300 + EPS * tn;
 }
 
-/* one unit of work; returns 1 while the iteration goes on, 0 when it is done, -1 if it did not converge */
-static inline int QRStep(QRState *restrict q)
+/* deflation, then the next sweep's start with Wilkinson's shift from the trailing 2 x 2; returns 1 with
+   a sweep to run, 0 when the iteration is done, -1 if it did not converge */
+static inline int SweepStart(QRState *restrict q, Sweep *restrict w)
 {
   double *restrict d = q->d, *restrict e = q->e;
-  const int n = q->n;
 
-  if (!q->insweep) {
-    int lo;
-    if (q->hi <= 0) return 0;
-    if (fabs(e[q->hi - 1]) <= q->tnorm) {
-      e[q->hi - 1] = 0;
+  while (q->hi > 0) {
+    const int hi = q->hi;
+    int       lo = hi - 1;
+    if (fabs(e[hi - 1]) <= q->tnorm) {
+      e[hi - 1] = 0;
       q->hi--;
-      return q->hi > 0;
+      continue;
     }
     if (++q->it > q->maxit) return -1;
-    lo = q->hi - 1;
     while (lo > 0 && fabs(e[lo - 1]) > q->tnorm) lo--;
     if (lo > 0) e[lo - 1] = 0;
     {
-      /* Wilkinson's shift from the trailing 2 x 2 */
-      const int    hi = q->hi;
       const double dd = 0.5 * (d[hi - 1] - d[hi]), b = e[hi - 1], hyp = Norm2(dd, b);
       const double mu = d[hi] - b * b / (dd + (dd >= 0 ? hyp : -hyp));
-      q->x = d[lo] - mu, q->z = e[lo], q->lo = lo, q->k = lo, q->insweep = 1;
+      w->x = d[lo] - mu, w->z = e[lo];
     }
+    w->k = w->lo = lo, w->hi = hi, w->a = d[lo], w->b = e[lo], w->R = w->x * w->x + w->z * w->z;
     return 1;
   }
-  {
-    const int k = q->k, hi = q->hi;
-    double    c = 1, s = 0, a0, b0, d0, x = q->x, z = q->z;
-    /* G = [c s; -s c] with s x + c z = 0 */
-    if (z != 0) {
-      const double ir = 1 / Norm2(x, z);
-      c               = x * ir;
-      s               = -z * ir;
-    }
-    if (k > q->lo) e[k - 1] = c * e[k - 1] - s * z; /* (k-1, k); (k-1, k+1) becomes 0 */
-    a0       = d[k];
-    b0       = e[k];
-    d0       = d[k + 1];
-    d[k]     = c * c * a0 - 2 * c * s * b0 + s * s * d0;
-    d[k + 1] = s * s * a0 + 2 * c * s * b0 + c * c * d0;
-    e[k]     = c * s * (a0 - d0) + (c * c - s * s) * b0;
-    if (k + 1 < hi) {
-      q->z = -s * e[k + 1];
-      e[k + 1] *= c;
-      q->x = e[k];
-    }
-    {
-      double *restrict zk = q->Z + n * k, *restrict zk1 = q->Z + n * (k + 1);
-      for (int j = 0; j < n; j++) {
-        const double u = zk[j], t = zk1[j];
-        zk[j]  = c * u - s * t;
-        zk1[j] = s * u + c * t;
-      }
-    }
-    if (++q->k >= hi) q->insweep = 0;
-  }
-  return 1;
-}
-
-/* the QR iterations of m (1..4) matrices, in turn; returns 0, or -1 if one did not converge (with AVX2:
-   the rotations' updates of the 15-long eigenvector rows run 4 wide) */
-AVX2_CLONES
-static int TridiagQRMany(int m, QRState *q)
-{
-  int st[4] = {1, 1, 1, 1}, active = m;
-
-  if (m == 1) {
-    while ((st[0] = QRStep(&q[0])) > 0) {}
-    return st[0] < 0 ? -1 : 0;
-  }
-  if (m == 2) {
-    while (active) {
-      if (st[0] > 0 && (st[0] = QRStep(&q[0])) <= 0) active--;
-      if (st[1] > 0 && (st[1] = QRStep(&q[1])) <= 0) active--;
-    }
-  } else
-    while (active)
-      for (int i = 0; i < m; i++)
-        if (st[i] > 0 && (st[i] = QRStep(&q[i])) <= 0) active--;
-  for (int i = 0; i < m; i++)
-    if (st[i] < 0) return -1;
   return 0;
 }
 
-/* z <- Q z with Q = H_0 H_1 ... H_{n-3} kept in Vr by Tridiagonalize */
-static void BackTransform(int n, const double *restrict Vr, double *restrict z)
+/* the rotation G = [c s; -s c] of rows and columns k, k + 1 with s x + c z = 0 */
+static inline void Rotate(const QRState *restrict q, Sweep *restrict w, int nz)
+{
+  double *restrict d = q->d, *restrict e = q->e;
+  const int    k = w->k, hi = w->hi;
+  const double x = w->x, z = w->z, a = w->a, b = w->b, R = w->R, d0 = d[k + 1], e1 = k + 1 < hi ? e[k + 1] : 0;
+  double       c, s, r, cc, ss, cs, en;
+
+  if (R > 1e-290 && R < 1e290) {
+    const double iR = 1 / R, xx = x * x, zz = z * z, xz = x * z;
+    r = sqrt(R), cc = xx * iR, ss = zz * iR, cs = -xz * iR;
+    c = x / r, s = -z / r;
+    en = ((xx - zz) * b - xz * (a - d0)) * iR; /* its numerator alongside the division */
+  } else {
+    r = Norm2(x, z);
+    if (r == 0)
+      c = 1, s = 0;
+    else
+      c = x / r, s = -z / r;
+    cc = c * c, ss = s * s, cs = c * s;
+    en = cs * (a - d0) + (cc - ss) * b;
+  }
+  if (k > w->lo) e[k - 1] = r; /* (k - 1, k): c x - s z; (k - 1, k + 1) becomes 0 */
+  d[k] = cc * a - 2 * cs * b + ss * d0;
+  e[k] = en;
+  w->a = ss * a + 2 * cs * b + cc * d0;
+  w->R = en * en + ss * (e1 * e1);
+  w->x = en;
+  w->z = -s * e1;
+  w->b = c * e1;
+  if (k + 1 < hi) e[k + 1] = w->b;
+  {
+    double *restrict zk = q->Z + ZS * k, *restrict zk1 = zk + ZS;
+    for (int j = 0; j < nz; j++) {
+      const double u = zk[j], t = zk1[j];
+      zk[j]  = c * u - s * t;
+      zk1[j] = s * u + c * t;
+    }
+  }
+  w->k = k + 1;
+}
+
+/* the QR iteration of one matrix from its state st of SweepStart (a sweep in w if st = 1); 0, or -1 if
+   it did not converge */
+static inline int QRFinish(QRState *restrict q, Sweep *restrict w, int st)
+{
+  for (; st > 0; st = SweepStart(q, w)) {
+    Sweep v = *w;
+    while (v.k < v.hi) Rotate(q, &v, q->n);
+    q->d[v.hi] = v.a;
+  }
+  return st;
+}
+
+AVX2_CLONES
+static int TridiagQR1(QRState *q)
+{
+  Sweep w;
+  int   st;
+  while ((st = SweepStart(q, &w)) > 0) {
+    Sweep v = w;
+    while (v.k < v.hi) Rotate(q, &v, ZS);
+    q->d[v.hi] = v.a;
+  }
+  return st;
+}
+
+/* two matrices: their sweeps' rotations alternate, in one loop while both have a sweep to run (the
+   same arithmetic as TridiagQR1 on each) */
+AVX2_CLONES
+static int TridiagQR2(QRState *q0, QRState *q1)
+{
+  Sweep w0, w1;
+  int   s0 = SweepStart(q0, &w0), s1 = SweepStart(q1, &w1);
+
+  while (s0 > 0 && s1 > 0) {
+    Sweep     v0 = w0, v1 = w1;
+    const int len = v0.hi - v0.k < v1.hi - v1.k ? v0.hi - v0.k : v1.hi - v1.k;
+    for (int i = 0; i < len; i++) {
+      Rotate(q0, &v0, q0->n);
+      Rotate(q1, &v1, q1->n);
+    }
+    w0 = v0, w1 = v1;
+    if (w0.k == w0.hi) q0->d[w0.hi] = w0.a, s0 = SweepStart(q0, &w0);
+    if (w1.k == w1.hi) q1->d[w1.hi] = w1.a, s1 = SweepStart(q1, &w1);
+  }
+  if (s0 < 0 || s1 < 0) return -1;
+  return s0 > 0 ? QRFinish(q0, &w0, s0) : QRFinish(q1, &w1, s1);
+}
+
+/* Y <- Q Y with Q = H_0 H_1 ... H_{n-3} kept in Vr by Tridiagonalize, for the nc columns of Y (n x nc,
+   row-major): the columns' dot products with a reflection's vector side by side */
+static void BackTransform(int n, const double *restrict Vr, int nc, double *restrict Y)
 {
   for (int k = n - 3; k >= 0; k--) {
     const int    m           = n - k - 1;
     const double beta        = Vr[n * k + k];
     const double *restrict v = Vr + n * k + k + 1;
-    double *restrict zz      = z + k + 1;
-    double t                 = 0;
+    double *restrict yy      = Y + nc * (k + 1);
+    double t[NMAX];
     if (beta == 0) continue;
-    for (int i = 0; i < m; i++) t += v[i] * zz[i];
-    t *= beta;
-    for (int i = 0; i < m; i++) zz[i] -= t * v[i];
+    for (int c = 0; c < nc; c++) t[c] = 0;
+    for (int i = 0; i < m; i++)
+      for (int c = 0; c < nc; c++) t[c] += v[i] * yy[nc * i + c];
+    for (int c = 0; c < nc; c++) t[c] *= beta;
+    for (int i = 0; i < m; i++)
+      for (int c = 0; c < nc; c++) yy[nc * i + c] -= t[c] * v[i];
   }
 }
 
@@ -234,7 +303,7 @@ static void BackTransform(int n, const double *restrict Vr, double *restrict z)
 typedef struct {
   double *H;
   int     act[6], idx[18], na, n, nm;
-  double  v[6], tau, M[NMAX * NMAX], Z[NMAX * NMAX], Vr[NMAX * NMAX], d[NMAX], e[NMAX];
+  double  v[6], tau, M[NMAX * NMAX], Z[ZS * NMAX], Vr[NMAX * NMAX], d[NMAX], e[NMAX];
 } Proj;
 
 /* M = the rows and columns 3.. of (P x I3) H (P x I3) over the vertices present, tridiagonalized */
@@ -258,13 +327,24 @@ static void ProjPrepare(Proj *p, double *H, int nb)
   {
     const int    *act = p->act;
     const double *v = p->v, tau = p->tau;
-    for (int j = 0; j < na; j++)
+    if (na == 6) { /* the same sums along H's rows */
+      double Rr[3][18];
       for (int a = 0; a < 3; a++)
-        for (int b = 0; b < 3; b++) {
-          double t = 0;
-          for (int i = 0; i < na; i++) t += v[i] * H[18 * (3 * act[i] + a) + 3 * act[j] + b];
-          R[j][3 * a + b] = t;
-        }
+        for (int c = 0; c < 18; c++) Rr[a][c] = 0;
+      for (int i = 0; i < 6; i++)
+        for (int a = 0; a < 3; a++)
+          for (int c = 0; c < 18; c++) Rr[a][c] += v[i] * H[18 * (3 * i + a) + c];
+      for (int j = 0; j < 6; j++)
+        for (int a = 0; a < 3; a++)
+          for (int b = 0; b < 3; b++) R[j][3 * a + b] = Rr[a][3 * j + b];
+    } else
+      for (int j = 0; j < na; j++)
+        for (int a = 0; a < 3; a++)
+          for (int b = 0; b < 3; b++) {
+            double t = 0;
+            for (int i = 0; i < na; i++) t += v[i] * H[18 * (3 * act[i] + a) + 3 * act[j] + b];
+            R[j][3 * a + b] = t;
+          }
     for (int q = 0; q < 9; q++) {
       double t = 0;
       for (int j = 0; j < na; j++) t += v[j] * R[j][q];
@@ -284,45 +364,62 @@ static void ProjFinish(Proj *p)
 {
   const int    na = p->na, n = p->n, nm = p->nm, *act = p->act, *idx = p->idx;
   const double floor_ = HYLCMAT_PSD_FLOOR, *v = p->v, tau = p->tau, *w = p->d;
-  double *restrict H = p->H, W[18 * 18];
-  int clamped        = 0;
+  double *restrict H = p->H, Y[NMAX * NMAX], U[NMAX][18], sq[NMAX];
+  int nc             = 0;
 
   /* the translations: + floor / na on the diagonal of every vertex block pair */
   for (int i = 0; i < na; i++)
     for (int j = 0; j < na; j++)
       for (int a = 0; a < 3; a++) H[18 * (3 * act[i] + a) + 3 * act[j] + a] += floor_ / na;
-  /* the clamped eigenvalues: u = (P x I3) [0; Q s]; W = sum (floor - lambda) u u^T (compact, upper
-     triangle), then added to H */
+  /* the clamped eigenvalues' T eigenvectors, the columns of Y, and sqrt(floor - lambda) */
   for (int q = 0; q < nm; q++) {
     const double s = floor_ - w[q];
-    double       u[18], dot[3] = {0, 0, 0};
     if (!(s > 0)) continue;
-    if (!clamped++) memset(W, 0, sizeof(double) * n * n);
+    sq[nc++] = sqrt(s);
+  }
+  if (!nc) return;
+  for (int q = 0, c = 0; q < nm; q++)
+    if (floor_ - w[q] > 0) {
+      for (int i = 0; i < nm; i++) Y[nc * i + c] = p->Z[ZS * q + i];
+      c++;
+    }
+  /* u = sqrt(floor - lambda) (P x I3) [0; Q y], the rows of U */
+  BackTransform(nm, p->Vr, nc, Y);
+  for (int c = 0; c < nc; c++) {
+    double *restrict u = U[c], dot[3] = {0, 0, 0};
     for (int a = 0; a < 3; a++) u[a] = 0;
-    for (int i = 0; i < nm; i++) u[3 + i] = p->Z[nm * q + i];
-    BackTransform(nm, p->Vr, u + 3);
+    for (int i = 0; i < nm; i++) u[3 + i] = Y[nc * i + c];
     for (int i = 1; i < na; i++)
       for (int a = 0; a < 3; a++) dot[a] += v[i] * u[3 * i + a];
     for (int i = 0; i < na; i++)
       for (int a = 0; a < 3; a++) u[3 * i + a] -= tau * v[i] * dot[a];
-    for (int i = 0; i < n; i++) {
-      double *restrict row = W + n * i;
-      const double su      = s * u[i];
-      for (int j = i; j < n; j++) row[j] += su * u[j];
-    }
+    for (int i = 0; i < n; i++) u[i] *= sq[c];
   }
-  if (clamped)
-    for (int i = 0; i < n; i++) {
-      double *restrict row = H + 18 * idx[i];
-      row[idx[i]] += W[n * i + i];
-      for (int j = i + 1; j < n; j++) {
-        row[idx[j]] += W[n * i + j];
-        H[18 * idx[j] + idx[i]] = row[idx[j]];
+  /* H += sum u u^T, row by row (exactly symmetric: entries (i, j) and (j, i) add the same products in
+     the same order); all six vertices: the rows' sums in registers (constant bounds) */
+  if (n == 18)
+    for (int i = 0; i < 18; i++) {
+      double row[18];
+      for (int j = 0; j < 18; j++) row[j] = U[0][i] * U[0][j];
+      for (int c = 1; c < nc; c++) {
+        const double a = U[c][i];
+        for (int j = 0; j < 18; j++) row[j] += a * U[c][j];
       }
+      for (int j = 0; j < 18; j++) H[18 * i + j] += row[j];
+    }
+  else
+    for (int i = 0; i < n; i++) {
+      double row[18];
+      for (int j = 0; j < n; j++) row[j] = U[0][i] * U[0][j];
+      for (int c = 1; c < nc; c++) {
+        const double a = U[c][i];
+        for (int j = 0; j < n; j++) row[j] += a * U[c][j];
+      }
+      for (int j = 0; j < n; j++) H[18 * idx[i] + idx[j]] += row[j];
     }
 }
 
-/* projects m (1..4) element Hessians H[i] with neighbour masks nb[i], their QR iterations in turn */
+/* projects m (1..4) element Hessians H[i] with neighbour masks nb[i], their QR iterations in pairs */
 int hm_psd_project_many(int m, double *const H[], const int nb[])
 {
   Proj    p[4];
@@ -332,7 +429,8 @@ int hm_psd_project_many(int m, double *const H[], const int nb[])
     ProjPrepare(&p[i], H[i], nb[i]);
     QRInit(&q[i], p[i].nm, p[i].d, p[i].e, p[i].Z);
   }
-  if (TridiagQRMany(m, q)) return HYLCMAT_ERR_NAN;
+  for (int i = 0; i < m; i += 2)
+    if (i + 1 < m ? TridiagQR2(&q[i], &q[i + 1]) : TridiagQR1(&q[i])) return HYLCMAT_ERR_NAN;
   for (int i = 0; i < m; i++) ProjFinish(&p[i]);
   return HYLCMAT_OK;
 }

@@ -570,7 +570,8 @@ fail:
   return ret;
 }
 
-/* the group size of the batched projection: up to this many eigen-decompositions iterated in turn */
+/* the group size of the batched projection: up to this many eigen-decompositions together (their QR
+   iterations in pairs) */
 #define PSD_GROUP 4
 
 int hylcmat_shell_eval_batch(const hylcmat *m, size_t n, const hylcmat_shell_rest *r, const double *x, const int *nbmask, int flags, double *E, double *grad, double *hess)

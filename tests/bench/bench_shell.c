@@ -114,7 +114,7 @@ int main(void)
     printf(Verdict(best, targets[lev]), targets[lev]);
     printf("\n");
   }
-  /* the same stencils through hylcmat_shell_eval_batch (the projections of four elements interleaved) */
+  /* the same stencils through hylcmat_shell_eval_batch (the QR iterations of two elements interleaved) */
   {
     hylcmat_shell_rest rb[NS];
     int                nb[NS];
