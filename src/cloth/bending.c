@@ -171,8 +171,11 @@ PetscErrorCode HylcClothRunCantilever_Private(HylcCloth c)
         l1 = ln;
       }
       PetscCall(PetscFree(xprev));
-      if (!ok) { /* reported, not fatal: the other directions and faces go on */
-        PetscCall(PetscPrintf(comm, "cantilever %s, face %s%s: no equilibrium of the strip at overhang %.6g mm (static load path and dynamics); no bending length; elastica of the table's bending term: c %.6g mm\n", dn, fn, down ? " (n = -z)" : " (n = +z)", (double)(1000 * lbad), (double)(500 * lel)));
+      if (!ok || !conv) { /* reported, not fatal: the other directions and faces go on */
+        if (!ok) PetscCall(PetscPrintf(comm, "cantilever %s, face %s%s: no equilibrium of the strip at overhang %.6g mm (static load path and dynamics); no bending length; elastica of the table's bending term: c %.6g mm\n", dn, fn, down ? " (n = -z)" : " (n = +z)", (double)(1000 * lbad), (double)(500 * lel)));
+        else
+          PetscCall(PetscPrintf(comm, "cantilever %s, face %s%s: the chord angle does not reach %g deg (%.4g deg at the last overhang, %.6g mm; curvature along %.4g 1/m, across %.4g 1/m); no bending length; elastica of the table's bending term: c %.6g mm\n", dn, fn, down ? " (n = -z)" : " (n = +z)", (double)c->cantAngle,
+                                (double)(f1 * 180 / PETSC_PI), (double)(1000 * l1), (double)curl[0], (double)curl[1], (double)(500 * lel)));
         PetscCall(HylcClothTextAppend_Private(&csv, "%s,%s,nan,nan,nan,%.10g,nan,nan,nan,%" PetscInt_FMT "\n", dn, fn, (double)(500 * lel), c->newtonIts - its0));
         PetscCall(PetscSNPrintf(name, sizeof(name), "c_%s_%s", dn, fn));
         PetscCall(HylcClothResult_Private(c, name, NAN));
@@ -184,8 +187,8 @@ PetscErrorCode HylcClothRunCantilever_Private(HylcCloth c)
       cb  = lc / 2;
       G   = w * cb * cb * cb;
       rel = PetscIsNormalReal(lel) ? (cb - lel / 2) / (lel / 2) : NAN;
-      PetscCall(PetscPrintf(comm, "cantilever %s, face %s%s: overhang %.6g mm, bending length c %.6g mm, G = W c^3 %.6g uN m; elastica of the table's bending term: c %.6g mm (shell %+.3g %%); curvature along %.4g 1/m, across %.4g 1/m%s\n", dn, fn,
-                            down ? " (n = -z)" : " (n = +z)", (double)(1000 * lc), (double)(1000 * cb), (double)(1e6 * G), (double)(500 * lel), (double)(100 * rel), (double)curl[0], (double)curl[1], conv ? "" : " [secant not converged]"));
+      PetscCall(PetscPrintf(comm, "cantilever %s, face %s%s: overhang %.6g mm, bending length c %.6g mm, G = W c^3 %.6g uN m; elastica of the table's bending term: c %.6g mm (shell %+.3g %%); curvature along %.4g 1/m, across %.4g 1/m\n", dn, fn,
+                            down ? " (n = -z)" : " (n = +z)", (double)(1000 * lc), (double)(1000 * cb), (double)(1e6 * G), (double)(500 * lel), (double)(100 * rel), (double)curl[0], (double)curl[1]));
       PetscCall(HylcClothTextAppend_Private(&csv, "%s,%s,%.10g,%.10g,%.10g,%.10g,%.6g,%.8g,%.8g,%" PetscInt_FMT "\n", dn, fn, (double)lc, (double)(1000 * cb), (double)(1e6 * G), (double)(500 * lel), (double)rel, (double)curl[0], (double)curl[1],
                                             c->newtonIts - its0));
       PetscCall(PetscSNPrintf(name, sizeof(name), "c_%s_%s", dn, fn));
