@@ -562,7 +562,7 @@ PetscErrorCode HylcClothSetDynamics(HylcCloth c, HylcClothDynamics mode, PetscRe
 . -cloth_length, -cloth_width, -cloth_h, -cloth_mesh_file, -cloth_mesh_scale - the specimen and its mesh
 . -cloth_strain_max, -cloth_strain_steps, -cloth_gravity, -cloth_planar - loads
 . -cloth_solver, -cloth_hessian, -cloth_rtol, -cloth_atol, -cloth_max_it, -cloth_load_steps - the solver
-. -cloth_dynamic, -cloth_dt, -cloth_dt_max, -cloth_damping, -cloth_tmax, -cloth_rest_tol, -cloth_rest_rtol - the dynamics (backward Euler)
+. -cloth_dynamic, -cloth_dt, -cloth_dt_max, -cloth_damping, -cloth_tmax, -cloth_rest_tol, -cloth_rest_rtol, -cloth_vtk_dt - the dynamics (backward Euler)
 . -cloth_cantilever_angle, -cloth_cantilever_width, -cloth_cantilever_n - the cantilever
 . -cloth_drape_diameter, -cloth_drape_disc, -cloth_rim_radius - the drape
 . -cloth_scene_clamp, -cloth_scene_corners - the scene's supports
@@ -641,6 +641,8 @@ PetscErrorCode HylcClothSetFromOptions(HylcCloth c)
     if (s1 || s2 || s3 || s4 || s5) PetscCall(HylcClothSetDynamics(c, (HylcClothDynamics)mode, dt, damp, tmax, rtol));
     PetscCall(PetscOptionsReal("-cloth_rest_rtol", "Dynamics: largest static residual (gradient norm over the force scale) of a state at rest that Newton does not polish", "HylcClothSetDynamics", c->restRtol, &c->restRtol, NULL));
     PetscCheck(c->restRtol > 0 && c->restRtol < 1, CLOTH_COMM(c), PETSC_ERR_USER_INPUT, "-cloth_rest_rtol %g must be in (0, 1)", (double)c->restRtol);
+    PetscCall(PetscOptionsReal("-cloth_vtk_dt", "Dynamics: simulated time between VTK frames (s; 0: none), <output>_dynamics_NNNN.vtk", "", c->vtkDt, &c->vtkDt, NULL));
+    PetscCheck(c->vtkDt >= 0 && !PetscIsInfOrNanReal(c->vtkDt), CLOTH_COMM(c), PETSC_ERR_USER_INPUT, "-cloth_vtk_dt %g must be >= 0 (s)", (double)c->vtkDt);
     PetscCall(PetscOptionsReal("-cloth_dt_max", "Dynamics: largest time step as it grows (s)", "HylcClothSetDynamics", c->dtMax, &c->dtMax, NULL));
     PetscCheck(c->dtMax >= c->dt && PetscIsNormalReal(c->dtMax), CLOTH_COMM(c), PETSC_ERR_USER_INPUT, "-cloth_dt_max %g must be at least -cloth_dt %g (s)", (double)c->dtMax, (double)c->dt);
   }

@@ -27,7 +27,9 @@
    iterations). If it does not converge (a nearly neutral mode creeps: a fold that is still forming), the
    state before the polish is at rest when its static residual (the gradient norm of E over the force
    scale, the norm with the clamps' reactions) is at most -cloth_rest_rtol; otherwise the dynamics goes on
-   for at least 5 steps before the next polish. */
+   for at least 5 steps before the next polish. With -cloth_vtk_dt > 0 the state is written as a VTK frame
+   (<output>_dynamics_NNNN.vtk, frame NNNN at t >= NNNN * vtk_dt, the step that first passes it) for
+   ParaView's animation. */
 #include <hylc/private/clothimpl.h>
 
 const char *const HylcClothDynamicsTypes[] = {"off", "auto", "on", "HylcClothDynamics", "HYLC_CLOTH_DYNAMICS_", NULL};
@@ -72,7 +74,7 @@ PetscErrorCode HylcClothSettle_Private(HylcCloth c, PetscBool *rest)
 {
   MPI_Comm  comm = CLOTH_COMM_PRIVATE(c);
   PetscReal dt = c->dt, dtmin = c->dt / 4096, vmax = PETSC_MAX_REAL, ekin = 0;
-  PetscInt  its0 = c->newtonIts, wait = 0; /* wait: steps before the next polish after a failed one */
+  PetscInt  its0 = c->newtonIts, wait = 0, frame = 0; /* wait: steps before the next polish after a failed one; frame: the last VTK frame */
   Vec       xsave;
 
   PetscFunctionBegin;
@@ -121,6 +123,13 @@ PetscErrorCode HylcClothSettle_Private(HylcCloth c, PetscBool *rest)
     c->timeSteps++;
     PetscCall(Speed(c, c->vn, &vmax, &ekin));
     PetscCall(PetscLogEventEnd(HYLC_ClothStep, c, 0, 0, 0));
+    if (c->vtkDt > 0 && c->time >= (frame + 1) * c->vtkDt * (1 - 1e-12)) { /* an animation frame (ParaView reads the numbered series) */
+      char suffix[64], path[PETSC_MAX_PATH_LEN + 64];
+      frame = (PetscInt)PetscFloorReal(c->time / c->vtkDt * (1 + 1e-12));
+      PetscCall(PetscSNPrintf(suffix, sizeof(suffix), "dynamics_%04" PetscInt_FMT ".vtk", frame));
+      PetscCall(HylcClothOutputName_Private(c, suffix, path, sizeof(path)));
+      PetscCall(HylcClothWriteVTK_Private(c, path));
+    }
     if (c->monitor) PetscCall(PetscPrintf(comm, "  t = %-10.6g s  dt %-9.3g s  Newton %2" PetscInt_FMT "  largest speed %-10.4g m/s  kinetic energy %.4g J\n", (double)c->time, (double)dt, c->lastIts, (double)vmax, (double)ekin));
     if (wait > 0) wait--;
     if (vmax < c->restTol && !wait) { /* slow enough: the static equilibrium near it, or a residual small enough */

@@ -240,6 +240,7 @@ static const HylcStageOption HylcStageOptions[] = {
     {"cloth_tmax", G_CLOTH},
     {"cloth_rest_tol", G_CLOTH},
     {"cloth_rest_rtol", G_CLOTH},
+    {"cloth_vtk_dt", G_CLOTH},
     {"cloth_barrier_distance", G_CLOTH},
     {"cloth_barrier_stiffness", G_CLOTH},
     {"cloth_cantilever_angle", G_CLOTH},

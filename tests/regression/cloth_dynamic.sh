@@ -5,7 +5,8 @@
 #    the load path (-cloth_dynamic off): coordinates within 1e-9 m; the same on 2 ranks.
 # 2. The paper's stock1 drape, whose static load path fails at the first step (the knit curls), comes to
 #    rest through the dynamics (-cloth_dynamic auto, the default) with a drape coefficient in (0, 1).
-# 3. Bad dynamics options in one line.
+# 3. -cloth_vtk_dt writes the animation's VTK frames.
+# 4. Bad dynamics options in one line.
 set -u
 cd "$HYLC_TMP"
 . "$HYLC_ROOT/tests/regression/probe_common.inc"
@@ -20,6 +21,9 @@ $cloth $common -cloth_dynamic on -cloth_output d >d.txt 2>&1 || { cat d.txt; die
 grep -q "dynamics: .* at rest in a static equilibrium" d.txt || { cat d.txt; die "the dynamics should end at rest in the static equilibrium"; }
 cmp_xyz() { paste -d, "$1" "$2" | awk -F, -v tol="$3" 'NR > 1 { for (k = 5; k <= 7; k++) { d = $k - $(k + 7); if (d < 0) d = -d; if (d > tol) { print "vertex " $1 " column " k ": " $k " vs " $(k + 7); bad = 1 } } } END { exit bad }'; }
 cmp_xyz s_scene.csv d_scene.csv 1e-9 || die "the dynamics' rest differs from the static equilibrium"
+# the animation frames: one per 0.5 s of simulated time (the fall takes about 1.7 s)
+$cloth $common -cloth_dynamic on -cloth_vtk 1 -cloth_vtk_dt 0.5 -cloth_output f >f.txt 2>&1 || { cat f.txt; die "dynamic scene with frames failed"; }
+for k in 0001 0002 0003; do grep -q '^POINTS' f_dynamics_$k.vtk 2>/dev/null || { ls f_*; die "VTK frame $k missing"; }; done
 $MPIEXEC -n 2 $cloth $common -cloth_dynamic on -cloth_output p >p.txt 2>&1 || { cat p.txt; die "2 ranks failed"; }
 cmp_xyz s_scene.csv p_scene.csv 1e-9 || die "the dynamics on 2 ranks differs from the static equilibrium"
 

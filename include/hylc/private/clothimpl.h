@@ -63,7 +63,7 @@ struct _p_HylcCloth {
   PetscInt           cantN;
   PetscReal          drapeD, discD, rimRadius;
   HylcClothDynamics  dynamics;
-  PetscReal          dt, dtMax, tmax, damping, restTol, restRtol; /* the dynamic mode: s, s, s, 1/s, m/s, 1 */
+  PetscReal          dt, dtMax, tmax, damping, restTol, restRtol, vtkDt; /* the dynamic mode: s, s, s, 1/s, m/s, 1, s */
   PetscReal          sceneClamp;
   PetscInt           ncorners, corners[4];
   PetscReal          barrierDist, barrierStiff;
