@@ -88,7 +88,7 @@ def err_line(out):
 def parse(test, out, rc):
     """the figures of one run as strings, or the reason there are none"""
     if rc == "timeout":
-        return {"fail": f"not at rest in {TIMEOUT:.0f} s"}
+        return {"fail": f"not at rest in {DRAPE_TIMEOUT if test == 'drape' else TIMEOUT:.0f} s"}
     r = {}
     if test.startswith("tensile"):
         m = re.search(r"T\(5%\) ([^,]+), T\(10%\) ([^,]+), dT/de\(5%\) [^,]+, Poisson\(5%\) ([^;]+);", out)
