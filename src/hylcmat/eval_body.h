@@ -274,7 +274,7 @@ static inline void F(Eval2D)(const hylcmat_term2d *sp, const F(Basis) * Bu, doub
 }
 
 /* a 1D bending constituent h(x) = f_k(x) at x = a +- s */
-static void F(Quot1D)(const hylcmat_term1d *sp, double sw, double ih, R a, R s, int level, F(Quot) * q)
+static HM_ALWAYS_INLINE void F(Quot1D)(const hylcmat_term1d *sp, double sw, double ih, R a, R s, int level, F(Quot) * q)
 {
   R hp[3] = {0, 0, 0}, hm[3] = {0, 0, 0};
 
@@ -303,7 +303,7 @@ static void F(Quot1D)(const hylcmat_term1d *sp, double sw, double ih, R a, R s, 
 
 /* a 2D bending constituent h(x) = f_ik(u, x) at x = a +- s, and (level >= 1) its u-derivatives: q[0] for
    h, q[1] for dh/du (level - 1 a-derivatives), q[2] for d2h/du2 (level 2, none); Bu: the u-basis */
-static void F(Quot2D)(const hylcmat_term2d *sp, double sw, double ihv, const F(Basis) * Bu, R a, R s, int level, F(Quot) q[3])
+static HM_ALWAYS_INLINE void F(Quot2D)(const hylcmat_term2d *sp, double sw, double ihv, const F(Basis) * Bu, R a, R s, int level, F(Quot) q[3])
 {
   R fp[3][3], fm[3][3];
 
@@ -373,8 +373,9 @@ static inline R F(Hypot)(R B, R C)
   }
 }
 
-/* Psi, and (level >= 1) its gradient g, (level 2) its Hessian hess (6x6, row-major) at s, in R */
-static void F(Evaluate)(const hylcmat *m, const double s[6], int level, R *psi, R grad[6], R hess[36])
+/* Psi, and (level >= 1) its gradient g, (level 2) its Hessian hess (6x6, row-major) at s, in R; inlined
+   into one copy per level (F(Evaluate) below), so the loops over derivative orders are fixed */
+static HM_ALWAYS_INLINE void F(EvaluateLevel)(const hylcmat *m, const double s[6], int level, R *psi, R grad[6], R hess[36])
 {
   const R is[5] = {1 / (R)m->scale[0], 1 / (R)m->scale[1], 1 / (R)m->scale[2], 1 / (R)m->scale[3], 1 / (R)m->scale[4]};
   const R X[3]  = {s[0] * is[0], s[1] * is[1], s[2] * is[2]};
@@ -481,4 +482,18 @@ static void F(Evaluate)(const hylcmat *m, const double s[6], int level, R *psi, 
   *psi = E;
   if (level)
     for (int i = 0; i < 6; i++) grad[i] = g[i];
+}
+
+static void F(Evaluate0)(const hylcmat *m, const double s[6], R *psi, R grad[6], R hess[36]) { F(EvaluateLevel)(m, s, 0, psi, grad, hess); }
+static void F(Evaluate1)(const hylcmat *m, const double s[6], R *psi, R grad[6], R hess[36]) { F(EvaluateLevel)(m, s, 1, psi, grad, hess); }
+static void F(Evaluate2)(const hylcmat *m, const double s[6], R *psi, R grad[6], R hess[36]) { F(EvaluateLevel)(m, s, 2, psi, grad, hess); }
+
+static void F(Evaluate)(const hylcmat *m, const double s[6], int level, R *psi, R grad[6], R hess[36])
+{
+  if (level == 0)
+    F(Evaluate0)(m, s, psi, grad, hess);
+  else if (level == 1)
+    F(Evaluate1)(m, s, psi, grad, hess);
+  else
+    F(Evaluate2)(m, s, psi, grad, hess);
 }
