@@ -71,12 +71,13 @@ static void F(PieceOwn)(int n, const double t[], const R P[], const R M[], int j
     c[1]        = ext == HYLCMAT_EXT_LINEAR ? M[e - j0] : 0;
     c[2] = c[3] = 0;
   } else {
-    const R h = (R)t[i + 1] - (R)t[i], m0 = M[i - j0], m1 = M[i + 1 - j0], d = (P[i + 1 - j0] - P[i - j0]) / h;
+    /* one division (the others as products with its reciprocal: the same to rounding) */
+    const R ih = 1 / ((R)t[i + 1] - (R)t[i]), m0 = M[i - j0], m1 = M[i + 1 - j0], d = (P[i + 1 - j0] - P[i - j0]) * ih;
     *k   = t[i];
     c[0] = P[i - j0];
     c[1] = m0;
-    c[2] = (3 * d - 2 * m0 - m1) / h;
-    c[3] = (m0 + m1 - 2 * d) / (h * h);
+    c[2] = (3 * d - 2 * m0 - m1) * ih;
+    c[3] = (m0 + m1 - 2 * d) * (ih * ih);
   }
 }
 
@@ -161,18 +162,19 @@ static void F(QuotPieces)(int n, const double t[], const R P[], const R M[], int
       for (int r = 0; r < 4; r++) d[r] += e[r];
     }
   {
-    const R s3 = w * s;
+    /* the quotients by s, s^3, s^5 as products with 1/s (the same to rounding; s >= S_TINY here) */
+    const R s3 = w * s, is = 1 / s, is3 = is * is * is;
     q->P += 0.5 * (d[0] + d[1] * s + d[2] * w + d[3] * s3);
-    q->Q += 0.5 * (d[0] / s + d[1] + d[2] * s + d[3] * w);
+    q->Q += 0.5 * (d[0] * is + d[1] + d[2] * s + d[3] * w);
     if (nd < 1) return;
     q->Pa += 0.5 * (d[1] + 2 * d[2] * s + 3 * d[3] * w);
-    q->Qa += 0.5 * (d[1] / s + 2 * d[2] + 3 * d[3] * s);
-    q->W1 += 0.5 * d[3] + (d[2] * w - d[0]) / (4 * s3);
+    q->Qa += 0.5 * (d[1] * is + 2 * d[2] + 3 * d[3] * s);
+    q->W1 += 0.5 * d[3] + 0.25 * (d[2] * w - d[0]) * is3;
     if (nd < 2) return;
     q->Paa += d[2] + 3 * d[3] * s;
-    q->Qaa += d[2] / s + 3 * d[3];
-    q->W2 = (3 * d[3] * w - d[1]) / (4 * s3);
-    q->W3 = (3 * d[0] - d[2] * w) / (8 * s3 * w);
+    q->Qaa += d[2] * is + 3 * d[3];
+    q->W2 = 0.25 * (3 * d[3] * w - d[1]) * is3;
+    q->W3 = 0.125 * (3 * d[0] - d[2] * w) * (is3 * is * is);
   }
 }
 
