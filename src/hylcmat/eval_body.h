@@ -62,7 +62,7 @@ static inline int F(Loc)(int n, const double t[], double ih, R x)
 
 /* the piece polynomial i (HylcHermite1DPiece) about its own origin k: sum c[r] (x - k)^r; node data
    P[j - j0], M[j - j0] */
-static void F(PieceOwn)(int n, const double t[], const R P[], const R M[], int j0, int ext, int i, R *k, R c[4])
+static inline void F(PieceOwn)(int n, const double t[], const R P[], const R M[], int j0, int ext, int i, R *k, R c[4])
 {
   if (i < 0 || i >= n - 1) {
     const int e = i < 0 ? 0 : n - 1;
@@ -115,7 +115,7 @@ static void F(KnotJump)(int n, const double t[], const R P[], const R M[], int j
 
 /* the piece form: x- = a - s in piece L, x+ = a + s in piece Rp (Rp - L <= 1); node data P, M from j0;
    nd = number of a-derivatives wanted (0: P, Q; 1: + Pa, Qa, W1; 2: all), the others are set to 0 */
-static void F(QuotPieces)(int n, const double t[], const R P[], const R M[], int j0, int ext, int L, int Rp, R a, R s, int nd, F(Quot) * q)
+static HM_ALWAYS_INLINE void F(QuotPieces)(int n, const double t[], const R P[], const R M[], int j0, int ext, int L, int Rp, R a, R s, int nd, F(Quot) * q)
 {
   R       l[4], d[4] = {0, 0, 0, 0};
   const R w = s * s;
