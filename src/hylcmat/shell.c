@@ -377,10 +377,11 @@ static int Element(const hylcmat *m, const hylcmat_shell_rest *r, const double x
   for (int k = 0; k < 3; k++) py[3 + k] = A * (el.T[k][0] * dpsi[3] + el.T[k][1] * dpsi[4] + el.T[k][2] * dpsi[5]);
   /* gradient: in-plane through (a, b) */
   {
-    double ga[3], gb[3];
+    double       ga[3], gb[3];
+    const double qa = py[1] / el.al, qb = py[1] / el.be; /* (two divisions instead of six: the same to rounding) */
     for (int i = 0; i < 3; i++) {
-      ga[i] = py[0] * el.ah[i] + py[1] * (el.bh[i] - el.sa * el.ah[i]) / el.al;
-      gb[i] = py[2] * el.bh[i] + py[1] * (el.ah[i] - el.sa * el.bh[i]) / el.be;
+      ga[i] = py[0] * el.ah[i] + qa * (el.bh[i] - el.sa * el.ah[i]);
+      gb[i] = py[2] * el.bh[i] + qb * (el.ah[i] - el.sa * el.bh[i]);
     }
     for (int v = 0; v < 3; v++)
       for (int i = 0; i < 3; i++) g[3 * v + i] = el.C0[v] * ga[i] + el.C1[v] * gb[i];
