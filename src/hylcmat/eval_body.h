@@ -197,7 +197,7 @@ static inline void F(QuotDirect)(R s, const R hp[3], const R hm[3], int nd, F(Qu
   q->W3  = (q->Qaa - 6 * q->W1) / (4 * w);
 }
 
-static inline void F(BasisAt)(int n, const double t[], double ih, int ext, R x, int nd, F(Basis) * B)
+static HM_ALWAYS_INLINE void F(BasisAt)(int n, const double t[], double ih, int ext, R x, int nd, F(Basis) * B)
 {
   const int loc = F(Loc)(n, t, ih, x);
 
@@ -233,7 +233,7 @@ static inline void F(BasisAt)(int n, const double t[], double ih, int ext, R x, 
 }
 
 /* f[d] = d-th derivative of a 1D spline at x, d <= nd */
-static inline void F(Eval1D)(const hylcmat_term1d *sp, double ih, R x, int nd, R f[3])
+static HM_ALWAYS_INLINE void F(Eval1D)(const hylcmat_term1d *sp, double ih, R x, int nd, R f[3])
 {
   F(Basis)
   B;
@@ -248,7 +248,7 @@ static inline void F(Eval1D)(const hylcmat_term1d *sp, double ih, R x, int nd, R
 
 /* the node values P[o][.] and v-slopes M[o][.] of the restriction v -> d^o f(u, v)/du^o (o <= nd), for
    the v-nodes j0..j1 (at most 3), from the u-basis Bu */
-static inline void F(SliceV)(const hylcmat_term2d *sp, const F(Basis) * Bu, int j0, int j1, int nd, R P[3][3], R M[3][3])
+static HM_ALWAYS_INLINE void F(SliceV)(const hylcmat_term2d *sp, const F(Basis) * Bu, int j0, int j1, int nd, R P[3][3], R M[3][3])
 {
   for (int j = j0; j <= j1; j++) {
     const int     k = j * sp->nu + Bu->i;
@@ -261,7 +261,7 @@ static inline void F(SliceV)(const hylcmat_term2d *sp, const F(Basis) * Bu, int 
 }
 
 /* f[o][r] = d^(o+r) f / du^o dv^r of a 2D spline at (u, v), o + r <= nd, from the u-basis Bu (nd derivatives) */
-static inline void F(Eval2D)(const hylcmat_term2d *sp, const F(Basis) * Bu, double ihv, R v, int nd, R f[3][3])
+static HM_ALWAYS_INLINE void F(Eval2D)(const hylcmat_term2d *sp, const F(Basis) * Bu, double ihv, R v, int nd, R f[3][3])
 {
   F(Basis)
   Bv;
