@@ -386,6 +386,8 @@ static HM_ALWAYS_INLINE void F(EvaluateLevel)(const hylcmat *m, const double s[6
   R       E = m->C0, g[6] = {0, 0, 0, 0, 0, 0}, H[6][6];
   F(Bend)
   T0, Tu[3], Tuu[3];
+  F(Basis)
+  Bq[HYLCMAT_N2D]; /* the pairs' u-bases (a pair with m->ushare[q] >= 0 uses that one's) */
 
   memset(H, 0, sizeof(H));
   memset(&T0, 0, sizeof(T0));
@@ -404,14 +406,18 @@ static HM_ALWAYS_INLINE void F(EvaluateLevel)(const hylcmat *m, const double s[6
   for (int q = 0; q < HYLCMAT_N2D; q++) {
     const int             i = HylcmatPairs[q][0], j = HylcmatPairs[q][1];
     const hylcmat_term2d *sp = &m->t2[q];
-    F(Basis)
-    Bu;
+    const F(Basis) * Bu;
     R f[3][3];
     if (j > 2 || !m->has2[q]) continue;
-    F(BasisAt)
-    (sp->nu, sp->tu, m->ihu[q], sp->ext, X[i], level, &Bu);
+    if (m->ushare[q] >= 0)
+      Bu = &Bq[m->ushare[q]];
+    else {
+      F(BasisAt)
+      (sp->nu, sp->tu, m->ihu[q], sp->ext, X[i], level, &Bq[q]);
+      Bu = &Bq[q];
+    }
     F(Eval2D)
-    (sp, &Bu, m->ihv[q], X[j], level, f);
+    (sp, Bu, m->ihv[q], X[j], level, f);
     E += f[0][0];
     if (level) {
       g[i] += f[1][0] * is[i];
@@ -437,13 +443,17 @@ static HM_ALWAYS_INLINE void F(EvaluateLevel)(const hylcmat *m, const double s[6
     const int i = HylcmatPairs[r][0], k = HylcmatPairs[r][1];
     F(Quot)
     q[3];
-    F(Basis)
-    Bu;
+    const F(Basis) * Bu;
     if (k < 3 || !m->has2[r]) continue;
-    F(BasisAt)
-    (m->t2[r].nu, m->t2[r].tu, m->ihu[r], m->t2[r].ext, X[i], level, &Bu);
+    if (m->ushare[r] >= 0)
+      Bu = &Bq[m->ushare[r]];
+    else {
+      F(BasisAt)
+      (m->t2[r].nu, m->t2[r].tu, m->ihu[r], m->t2[r].ext, X[i], level, &Bq[r]);
+      Bu = &Bq[r];
+    }
     F(Quot2D)
-    (&m->t2[r], m->sw2[r], m->ihv[r], &Bu, A * is[k], S * is[k], level, q);
+    (&m->t2[r], m->sw2[r], m->ihv[r], Bu, A * is[k], S * is[k], level, q);
     F(Add)
     (&T0, &q[0], k == 3 ? 1 : -1, is[k], 1, level);
     if (level) F(Add)
