@@ -389,10 +389,12 @@ static HM_ALWAYS_INLINE void F(EvaluateLevel)(const hylcmat *m, const double s[6
   F(Basis)
   Bq[HYLCMAT_N2D]; /* the pairs' u-bases (a pair with m->ushare[q] >= 0 uses that one's) */
 
-  memset(H, 0, sizeof(H));
   memset(&T0, 0, sizeof(T0));
-  memset(Tu, 0, sizeof(Tu));
-  memset(Tuu, 0, sizeof(Tuu));
+  if (level) memset(Tu, 0, sizeof(Tu));
+  if (level > 1) { /* (H and Tuu are not used below level 2: no zeroing there) */
+    memset(H, 0, sizeof(H));
+    memset(Tuu, 0, sizeof(Tuu));
+  }
   /* in-plane: 1D terms and the pairs (0,1) (0,2) (1,2) */
   for (int k = 0; k < 3; k++) {
     R f[3];
