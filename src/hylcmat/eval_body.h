@@ -389,11 +389,15 @@ static HM_ALWAYS_INLINE void F(EvaluateLevel)(const hylcmat *m, const double s[6
   F(Basis)
   Bq[HYLCMAT_N2D]; /* the pairs' u-bases (a pair with m->ushare[q] >= 0 uses that one's) */
 
-  memset(&T0, 0, sizeof(T0));
-  if (level) memset(Tu, 0, sizeof(Tu));
-  if (level > 1) { /* (H and Tuu are not used below level 2: no zeroing there) */
+  /* zeroed as far as the level uses them (Add touches P, Q at nd = 0, + PA, Pw, QA, Qw at nd = 1) */
+  if (level > 1) {
+    memset(&T0, 0, sizeof(T0));
+    memset(Tu, 0, sizeof(Tu));
     memset(H, 0, sizeof(H));
     memset(Tuu, 0, sizeof(Tuu));
+  } else {
+    T0.P = T0.Q = T0.PA = T0.Pw = T0.QA = T0.Qw = 0;
+    for (int i = 0; i < 3; i++) Tu[i].P = Tu[i].Q = 0;
   }
   /* in-plane: 1D terms and the pairs (0,1) (0,2) (1,2) */
   for (int k = 0; k < 3; k++) {
