@@ -98,6 +98,23 @@ static void Free1D(hylcmat *m, int k)
   m->sw1[k]  = 0;
 }
 
+/* m->ushare from the pairs present */
+static void UShare(hylcmat *m)
+{
+  for (int q = 0; q < HYLCMAT_N2D; q++) {
+    const hylcmat_term2d *a = &m->t2[q];
+    m->ushare[q]            = -1;
+    if (!m->has2[q]) continue;
+    for (int r = 0; r < q; r++) {
+      const hylcmat_term2d *b = &m->t2[r];
+      if (m->has2[r] && HylcmatPairs[r][0] == HylcmatPairs[q][0] && b->nu == a->nu && b->ext == a->ext && m->ihu[r] == m->ihu[q] && !memcmp(b->tu, a->tu, sizeof(double) * (size_t)a->nu)) {
+        m->ushare[q] = r;
+        break;
+      }
+    }
+  }
+}
+
 static void Free2D(hylcmat *m, int q)
 {
   if (m->has2[q]) {
@@ -111,6 +128,7 @@ static void Free2D(hylcmat *m, int q)
   memset(&m->t2[q], 0, sizeof(m->t2[q]));
   m->has2[q] = 0;
   m->sw2[q]  = 0;
+  UShare(m);
 }
 
 void hylcmat_reset(hylcmat *m)
@@ -344,6 +362,7 @@ int hylcmat_set_term2d(hylcmat *m, const hylcmat_term2d *s, char *err, size_t er
   m->sw2[q]    = HalfMinSpacing(s->nv, s->tv);
   m->ihu[q]    = (s->nu - 1) / (s->tu[s->nu - 1] - s->tu[0]);
   m->ihv[q]    = (s->nv - 1) / (s->tv[s->nv - 1] - s->tv[0]);
+  UShare(m);
   return HYLCMAT_OK;
 }
 

@@ -27,6 +27,13 @@
 #include <math.h>
 #include <string.h>
 
+/* the evaluator's inner functions inlined into one copy per derivative level */
+#if defined(__GNUC__)
+#  define HM_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#  define HM_ALWAYS_INLINE inline
+#endif
+
 #define HM_MAX(a, b) ((a) < (b) ? (b) : (a))
 #define HM_MIN(a, b) ((b) < (a) ? (b) : (a))
 

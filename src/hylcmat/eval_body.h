@@ -62,7 +62,7 @@ static inline int F(Loc)(int n, const double t[], double ih, R x)
 
 /* the piece polynomial i (HylcHermite1DPiece) about its own origin k: sum c[r] (x - k)^r; node data
    P[j - j0], M[j - j0] */
-static void F(PieceOwn)(int n, const double t[], const R P[], const R M[], int j0, int ext, int i, R *k, R c[4])
+static inline void F(PieceOwn)(int n, const double t[], const R P[], const R M[], int j0, int ext, int i, R *k, R c[4])
 {
   if (i < 0 || i >= n - 1) {
     const int e = i < 0 ? 0 : n - 1;
@@ -71,12 +71,13 @@ static void F(PieceOwn)(int n, const double t[], const R P[], const R M[], int j
     c[1]        = ext == HYLCMAT_EXT_LINEAR ? M[e - j0] : 0;
     c[2] = c[3] = 0;
   } else {
-    const R h = (R)t[i + 1] - (R)t[i], m0 = M[i - j0], m1 = M[i + 1 - j0], d = (P[i + 1 - j0] - P[i - j0]) / h;
+    /* one division (the others as products with its reciprocal: the same to rounding) */
+    const R ih = 1 / ((R)t[i + 1] - (R)t[i]), m0 = M[i - j0], m1 = M[i + 1 - j0], d = (P[i + 1 - j0] - P[i - j0]) * ih;
     *k   = t[i];
     c[0] = P[i - j0];
     c[1] = m0;
-    c[2] = (3 * d - 2 * m0 - m1) / h;
-    c[3] = (m0 + m1 - 2 * d) / (h * h);
+    c[2] = (3 * d - 2 * m0 - m1) * ih;
+    c[3] = (m0 + m1 - 2 * d) * (ih * ih);
   }
 }
 
@@ -114,7 +115,7 @@ static void F(KnotJump)(int n, const double t[], const R P[], const R M[], int j
 
 /* the piece form: x- = a - s in piece L, x+ = a + s in piece Rp (Rp - L <= 1); node data P, M from j0;
    nd = number of a-derivatives wanted (0: P, Q; 1: + Pa, Qa, W1; 2: all), the others are set to 0 */
-static void F(QuotPieces)(int n, const double t[], const R P[], const R M[], int j0, int ext, int L, int Rp, R a, R s, int nd, F(Quot) * q)
+static HM_ALWAYS_INLINE void F(QuotPieces)(int n, const double t[], const R P[], const R M[], int j0, int ext, int L, int Rp, R a, R s, int nd, F(Quot) * q)
 {
   R       l[4], d[4] = {0, 0, 0, 0};
   const R w = s * s;
@@ -161,18 +162,19 @@ static void F(QuotPieces)(int n, const double t[], const R P[], const R M[], int
       for (int r = 0; r < 4; r++) d[r] += e[r];
     }
   {
-    const R s3 = w * s;
+    /* the quotients by s, s^3, s^5 as products with 1/s (the same to rounding; s >= S_TINY here) */
+    const R s3 = w * s, is = 1 / s, is3 = is * is * is;
     q->P += 0.5 * (d[0] + d[1] * s + d[2] * w + d[3] * s3);
-    q->Q += 0.5 * (d[0] / s + d[1] + d[2] * s + d[3] * w);
+    q->Q += 0.5 * (d[0] * is + d[1] + d[2] * s + d[3] * w);
     if (nd < 1) return;
     q->Pa += 0.5 * (d[1] + 2 * d[2] * s + 3 * d[3] * w);
-    q->Qa += 0.5 * (d[1] / s + 2 * d[2] + 3 * d[3] * s);
-    q->W1 += 0.5 * d[3] + (d[2] * w - d[0]) / (4 * s3);
+    q->Qa += 0.5 * (d[1] * is + 2 * d[2] + 3 * d[3] * s);
+    q->W1 += 0.5 * d[3] + 0.25 * (d[2] * w - d[0]) * is3;
     if (nd < 2) return;
     q->Paa += d[2] + 3 * d[3] * s;
-    q->Qaa += d[2] / s + 3 * d[3];
-    q->W2 = (3 * d[3] * w - d[1]) / (4 * s3);
-    q->W3 = (3 * d[0] - d[2] * w) / (8 * s3 * w);
+    q->Qaa += d[2] * is + 3 * d[3];
+    q->W2 = 0.25 * (3 * d[3] * w - d[1]) * is3;
+    q->W3 = 0.125 * (3 * d[0] - d[2] * w) * (is3 * is * is);
   }
 }
 
@@ -195,7 +197,7 @@ static inline void F(QuotDirect)(R s, const R hp[3], const R hm[3], int nd, F(Qu
   q->W3  = (q->Qaa - 6 * q->W1) / (4 * w);
 }
 
-static inline void F(BasisAt)(int n, const double t[], double ih, int ext, R x, int nd, F(Basis) * B)
+static HM_ALWAYS_INLINE void F(BasisAt)(int n, const double t[], double ih, int ext, R x, int nd, F(Basis) * B)
 {
   const int loc = F(Loc)(n, t, ih, x);
 
@@ -231,7 +233,7 @@ static inline void F(BasisAt)(int n, const double t[], double ih, int ext, R x, 
 }
 
 /* f[d] = d-th derivative of a 1D spline at x, d <= nd */
-static inline void F(Eval1D)(const hylcmat_term1d *sp, double ih, R x, int nd, R f[3])
+static HM_ALWAYS_INLINE void F(Eval1D)(const hylcmat_term1d *sp, double ih, R x, int nd, R f[3])
 {
   F(Basis)
   B;
@@ -246,7 +248,7 @@ static inline void F(Eval1D)(const hylcmat_term1d *sp, double ih, R x, int nd, R
 
 /* the node values P[o][.] and v-slopes M[o][.] of the restriction v -> d^o f(u, v)/du^o (o <= nd), for
    the v-nodes j0..j1 (at most 3), from the u-basis Bu */
-static inline void F(SliceV)(const hylcmat_term2d *sp, const F(Basis) * Bu, int j0, int j1, int nd, R P[3][3], R M[3][3])
+static HM_ALWAYS_INLINE void F(SliceV)(const hylcmat_term2d *sp, const F(Basis) * Bu, int j0, int j1, int nd, R P[3][3], R M[3][3])
 {
   for (int j = j0; j <= j1; j++) {
     const int     k = j * sp->nu + Bu->i;
@@ -259,7 +261,7 @@ static inline void F(SliceV)(const hylcmat_term2d *sp, const F(Basis) * Bu, int 
 }
 
 /* f[o][r] = d^(o+r) f / du^o dv^r of a 2D spline at (u, v), o + r <= nd, from the u-basis Bu (nd derivatives) */
-static inline void F(Eval2D)(const hylcmat_term2d *sp, const F(Basis) * Bu, double ihv, R v, int nd, R f[3][3])
+static HM_ALWAYS_INLINE void F(Eval2D)(const hylcmat_term2d *sp, const F(Basis) * Bu, double ihv, R v, int nd, R f[3][3])
 {
   F(Basis)
   Bv;
@@ -274,7 +276,7 @@ static inline void F(Eval2D)(const hylcmat_term2d *sp, const F(Basis) * Bu, doub
 }
 
 /* a 1D bending constituent h(x) = f_k(x) at x = a +- s */
-static void F(Quot1D)(const hylcmat_term1d *sp, double sw, double ih, R a, R s, int level, F(Quot) * q)
+static HM_ALWAYS_INLINE void F(Quot1D)(const hylcmat_term1d *sp, double sw, double ih, R a, R s, int level, F(Quot) * q)
 {
   R hp[3] = {0, 0, 0}, hm[3] = {0, 0, 0};
 
@@ -303,7 +305,7 @@ static void F(Quot1D)(const hylcmat_term1d *sp, double sw, double ih, R a, R s, 
 
 /* a 2D bending constituent h(x) = f_ik(u, x) at x = a +- s, and (level >= 1) its u-derivatives: q[0] for
    h, q[1] for dh/du (level - 1 a-derivatives), q[2] for d2h/du2 (level 2, none); Bu: the u-basis */
-static void F(Quot2D)(const hylcmat_term2d *sp, double sw, double ihv, const F(Basis) * Bu, R a, R s, int level, F(Quot) q[3])
+static HM_ALWAYS_INLINE void F(Quot2D)(const hylcmat_term2d *sp, double sw, double ihv, const F(Basis) * Bu, R a, R s, int level, F(Quot) q[3])
 {
   R fp[3][3], fm[3][3];
 
@@ -373,8 +375,9 @@ static inline R F(Hypot)(R B, R C)
   }
 }
 
-/* Psi, and (level >= 1) its gradient g, (level 2) its Hessian hess (6x6, row-major) at s, in R */
-static void F(Evaluate)(const hylcmat *m, const double s[6], int level, R *psi, R grad[6], R hess[36])
+/* Psi, and (level >= 1) its gradient g, (level 2) its Hessian hess (6x6, row-major) at s, in R; inlined
+   into one copy per level (F(Evaluate) below), so the loops over derivative orders are fixed */
+static HM_ALWAYS_INLINE void F(EvaluateLevel)(const hylcmat *m, const double s[6], int level, R *psi, R grad[6], R hess[36])
 {
   const R is[5] = {1 / (R)m->scale[0], 1 / (R)m->scale[1], 1 / (R)m->scale[2], 1 / (R)m->scale[3], 1 / (R)m->scale[4]};
   const R X[3]  = {s[0] * is[0], s[1] * is[1], s[2] * is[2]};
@@ -383,11 +386,19 @@ static void F(Evaluate)(const hylcmat *m, const double s[6], int level, R *psi, 
   R       E = m->C0, g[6] = {0, 0, 0, 0, 0, 0}, H[6][6];
   F(Bend)
   T0, Tu[3], Tuu[3];
+  F(Basis)
+  Bq[HYLCMAT_N2D]; /* the pairs' u-bases (a pair with m->ushare[q] >= 0 uses that one's) */
 
-  memset(H, 0, sizeof(H));
-  memset(&T0, 0, sizeof(T0));
-  memset(Tu, 0, sizeof(Tu));
-  memset(Tuu, 0, sizeof(Tuu));
+  /* zeroed as far as the level uses them (Add touches P, Q at nd = 0, + PA, Pw, QA, Qw at nd = 1) */
+  if (level > 1) {
+    memset(&T0, 0, sizeof(T0));
+    memset(Tu, 0, sizeof(Tu));
+    memset(H, 0, sizeof(H));
+    memset(Tuu, 0, sizeof(Tuu));
+  } else {
+    T0.P = T0.Q = T0.PA = T0.Pw = T0.QA = T0.Qw = 0;
+    for (int i = 0; i < 3; i++) Tu[i].P = Tu[i].Q = 0;
+  }
   /* in-plane: 1D terms and the pairs (0,1) (0,2) (1,2) */
   for (int k = 0; k < 3; k++) {
     R f[3];
@@ -401,14 +412,18 @@ static void F(Evaluate)(const hylcmat *m, const double s[6], int level, R *psi, 
   for (int q = 0; q < HYLCMAT_N2D; q++) {
     const int             i = HylcmatPairs[q][0], j = HylcmatPairs[q][1];
     const hylcmat_term2d *sp = &m->t2[q];
-    F(Basis)
-    Bu;
+    const F(Basis) * Bu;
     R f[3][3];
     if (j > 2 || !m->has2[q]) continue;
-    F(BasisAt)
-    (sp->nu, sp->tu, m->ihu[q], sp->ext, X[i], level, &Bu);
+    if (m->ushare[q] >= 0)
+      Bu = &Bq[m->ushare[q]];
+    else {
+      F(BasisAt)
+      (sp->nu, sp->tu, m->ihu[q], sp->ext, X[i], level, &Bq[q]);
+      Bu = &Bq[q];
+    }
     F(Eval2D)
-    (sp, &Bu, m->ihv[q], X[j], level, f);
+    (sp, Bu, m->ihv[q], X[j], level, f);
     E += f[0][0];
     if (level) {
       g[i] += f[1][0] * is[i];
@@ -434,13 +449,17 @@ static void F(Evaluate)(const hylcmat *m, const double s[6], int level, R *psi, 
     const int i = HylcmatPairs[r][0], k = HylcmatPairs[r][1];
     F(Quot)
     q[3];
-    F(Basis)
-    Bu;
+    const F(Basis) * Bu;
     if (k < 3 || !m->has2[r]) continue;
-    F(BasisAt)
-    (m->t2[r].nu, m->t2[r].tu, m->ihu[r], m->t2[r].ext, X[i], level, &Bu);
+    if (m->ushare[r] >= 0)
+      Bu = &Bq[m->ushare[r]];
+    else {
+      F(BasisAt)
+      (m->t2[r].nu, m->t2[r].tu, m->ihu[r], m->t2[r].ext, X[i], level, &Bq[r]);
+      Bu = &Bq[r];
+    }
     F(Quot2D)
-    (&m->t2[r], m->sw2[r], m->ihv[r], &Bu, A * is[k], S * is[k], level, q);
+    (&m->t2[r], m->sw2[r], m->ihv[r], Bu, A * is[k], S * is[k], level, q);
     F(Add)
     (&T0, &q[0], k == 3 ? 1 : -1, is[k], 1, level);
     if (level) F(Add)
@@ -481,4 +500,18 @@ static void F(Evaluate)(const hylcmat *m, const double s[6], int level, R *psi, 
   *psi = E;
   if (level)
     for (int i = 0; i < 6; i++) grad[i] = g[i];
+}
+
+static void F(Evaluate0)(const hylcmat *m, const double s[6], R *psi, R grad[6], R hess[36]) { F(EvaluateLevel)(m, s, 0, psi, grad, hess); }
+static void F(Evaluate1)(const hylcmat *m, const double s[6], R *psi, R grad[6], R hess[36]) { F(EvaluateLevel)(m, s, 1, psi, grad, hess); }
+static void F(Evaluate2)(const hylcmat *m, const double s[6], R *psi, R grad[6], R hess[36]) { F(EvaluateLevel)(m, s, 2, psi, grad, hess); }
+
+static void F(Evaluate)(const hylcmat *m, const double s[6], int level, R *psi, R grad[6], R hess[36])
+{
+  if (level == 0)
+    F(Evaluate0)(m, s, psi, grad, hess);
+  else if (level == 1)
+    F(Evaluate1)(m, s, psi, grad, hess);
+  else
+    F(Evaluate2)(m, s, psi, grad, hess);
 }

@@ -24,6 +24,9 @@ struct hylcmat {
      is the first guess of the interval search */
   double sw1[HYLCMAT_N1D], sw2[HYLCMAT_N2D];
   double ih1[HYLCMAT_N1D], ihu[HYLCMAT_N2D], ihv[HYLCMAT_N2D];
+  /* ushare[q] = an earlier pair q' < q of the same u-coordinate and the same u-knots and extension
+     (its u-basis is the same: the evaluator reuses it), or -1 (src/hylcmat/core.c: UShare) */
+  int ushare[HYLCMAT_N2D];
 };
 
 /* the terms' names and pairs: the shared vocabulary (include/hylc/strain.h, src/sys/strain.c) */

@@ -159,6 +159,26 @@ static void HingeGrad(Hinge *h)
   }
 }
 
+/* dw alone (energy + gradient: the same operations as HingeGrad, the intermediate gradients in
+   locals, not stored) */
+static void HingeGradW(const Hinge *h, double dw[9])
+{
+  const double *e = h->e, *f = h->f, *g = h->g, il = 1 / h->l, ir2 = 1 / h->r2, ik = 1 / h->kap;
+  double        cge[3], N[3];
+
+  Cross(g, e, cge);
+  Cross(e, f, N);
+  for (int i = 0; i < 3; i++) {
+    const double dY0 = -(h->V * e[i] * il + h->l * h->cfg[i]), dY1 = -h->l * cge[i], dY2 = -h->l * N[i];
+    const double dX0 = h->ge * f[i] + h->fe * g[i] - 2 * h->fg * e[i], dX1 = h->ge * e[i] - h->l2 * g[i], dX2 = h->fe * e[i] - h->l2 * f[i];
+    const double dk0 = -h->sig * h->fp[i] * ik, dk1 = h->fp[i] * ik;
+    const double dt0 = (h->X * dY0 - h->Y * dX0) * ir2, dt1 = (h->X * dY1 - h->Y * dX1) * ir2, dt2 = (h->X * dY2 - h->Y * dX2) * ir2;
+    dw[i]     = -(h->th * dk0 + h->kap * dt0);
+    dw[3 + i] = -(h->th * dk1 + h->kap * dt1);
+    dw[6 + i] = -(h->th * 0 + h->kap * dt2);
+  }
+}
+
 /* B += s I */
 static inline void AddI(double B[9], double s)
 {
@@ -357,10 +377,11 @@ static int Element(const hylcmat *m, const hylcmat_shell_rest *r, const double x
   for (int k = 0; k < 3; k++) py[3 + k] = A * (el.T[k][0] * dpsi[3] + el.T[k][1] * dpsi[4] + el.T[k][2] * dpsi[5]);
   /* gradient: in-plane through (a, b) */
   {
-    double ga[3], gb[3];
+    double       ga[3], gb[3];
+    const double qa = py[1] / el.al, qb = py[1] / el.be; /* (two divisions instead of six: the same to rounding) */
     for (int i = 0; i < 3; i++) {
-      ga[i] = py[0] * el.ah[i] + py[1] * (el.bh[i] - el.sa * el.ah[i]) / el.al;
-      gb[i] = py[2] * el.bh[i] + py[1] * (el.ah[i] - el.sa * el.bh[i]) / el.be;
+      ga[i] = py[0] * el.ah[i] + qa * (el.bh[i] - el.sa * el.ah[i]);
+      gb[i] = py[2] * el.bh[i] + qb * (el.ah[i] - el.sa * el.bh[i]);
     }
     for (int v = 0; v < 3; v++)
       for (int i = 0; i < 3; i++) g[3 * v + i] = el.C0[v] * ga[i] + el.C1[v] * gb[i];
@@ -369,7 +390,10 @@ static int Element(const hylcmat *m, const hylcmat_shell_rest *r, const double x
   for (int k = 0; k < 3; k++) {
     Hinge *h = &el.h[k];
     if (!(nb >> k & 1)) continue;
-    HingeGrad(h);
+    if (level > 1)
+      HingeGrad(h);
+    else
+      HingeGradW(h, h->dw);
     {
       double *ga = g + 3 * EdgeA[k], *gb = g + 3 * EdgeB[k], *gc = g + 3 * EdgeC[k], *gp = g + 9 + 3 * k;
       for (int i = 0; i < 3; i++) {
