@@ -148,7 +148,10 @@ PetscErrorCode HylcClothRunCantilever_Private(HylcCloth c)
            decides the chord angle more than the weight does (the paper's stock1 along x: radius 8.8 mm) */
         double kc = d ? k1 : k0, Rc = kc != 0 ? 1 / PetscAbsReal(kc) : (double)INFINITY;
         if (PetscIsNormalReal(lel) && Rc < lel)
-          PetscCall(PetscPrintf(comm, "cantilever %s, face %s: the table's free curl along the strip (radius %.3g mm) is tighter than the elastica's overhang (%.3g mm): the strip curls, and ASTM D1388 leaves out fabrics that curl; the bending length below is the curl's as much as the weight's\n", dn, fn, 1000 * Rc, (double)(1000 * lel)));
+          PetscCall(PetscPrintf(comm,
+                                "cantilever %s, face %s: the table's free curl along the strip (radius %.3g mm) is tighter than the elastica's overhang (%.3g mm): the strip curls, and ASTM D1388 leaves out fabrics that curl; the bending length "
+                                "below is the curl's as much as the weight's\n",
+                                dn, fn, 1000 * Rc, (double)(1000 * lel)));
       }
       lbad = l0;
       PetscCall(CantileverAngle(c, l0, angle, down, &f0, &ok, NULL, &lprev, &xprev, &nvprev, &nyfix));
@@ -172,10 +175,13 @@ PetscErrorCode HylcClothRunCantilever_Private(HylcCloth c)
       }
       PetscCall(PetscFree(xprev));
       if (!ok || !conv) { /* reported, not fatal: the other directions and faces go on */
-        if (!ok) PetscCall(PetscPrintf(comm, "cantilever %s, face %s%s: no equilibrium of the strip at overhang %.6g mm (static load path and dynamics); no bending length; elastica of the table's bending term: c %.6g mm\n", dn, fn, down ? " (n = -z)" : " (n = +z)", (double)(1000 * lbad), (double)(500 * lel)));
+        if (!ok)
+          PetscCall(PetscPrintf(comm, "cantilever %s, face %s%s: no equilibrium of the strip at overhang %.6g mm (static load path and dynamics); no bending length; elastica of the table's bending term: c %.6g mm\n", dn, fn,
+                                down ? " (n = -z)" : " (n = +z)", (double)(1000 * lbad), (double)(500 * lel)));
         else
-          PetscCall(PetscPrintf(comm, "cantilever %s, face %s%s: the chord angle does not reach %g deg (%.4g deg at the last overhang, %.6g mm; curvature along %.4g 1/m, across %.4g 1/m); no bending length; elastica of the table's bending term: c %.6g mm\n", dn, fn, down ? " (n = -z)" : " (n = +z)", (double)c->cantAngle,
-                                (double)(f1 * 180 / PETSC_PI), (double)(1000 * l1), (double)curl[0], (double)curl[1], (double)(500 * lel)));
+          PetscCall(PetscPrintf(
+              comm, "cantilever %s, face %s%s: the chord angle does not reach %g deg (%.4g deg at the last overhang, %.6g mm; curvature along %.4g 1/m, across %.4g 1/m); no bending length; elastica of the table's bending term: c %.6g mm\n", dn, fn,
+              down ? " (n = -z)" : " (n = +z)", (double)c->cantAngle, (double)(f1 * 180 / PETSC_PI), (double)(1000 * l1), (double)curl[0], (double)curl[1], (double)(500 * lel)));
         PetscCall(HylcClothTextAppend_Private(&csv, "%s,%s,nan,nan,nan,%.10g,nan,nan,nan,%" PetscInt_FMT "\n", dn, fn, (double)(500 * lel), c->newtonIts - its0));
         PetscCall(PetscSNPrintf(name, sizeof(name), "c_%s_%s", dn, fn));
         PetscCall(HylcClothResult_Private(c, name, NAN));

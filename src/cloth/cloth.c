@@ -532,8 +532,8 @@ PetscErrorCode HylcClothSetDynamics(HylcCloth c, HylcClothDynamics mode, PetscRe
   PetscFunctionBegin;
   CLOTH_CHECK(c);
   PetscCheck(mode >= HYLC_CLOTH_DYNAMICS_OFF && mode <= HYLC_CLOTH_DYNAMICS_ON, CLOTH_COMM(c), PETSC_ERR_ARG_OUTOFRANGE, "-cloth_dynamic: unknown mode %d", (int)mode);
-  PetscCheck(!PetscIsInfOrNanReal(dt) && !PetscIsInfOrNanReal(damping) && !PetscIsInfOrNanReal(tmax) && !PetscIsInfOrNanReal(restTol), CLOTH_COMM(c), PETSC_ERR_USER_INPUT, "-cloth_dt %g, -cloth_damping %g, -cloth_tmax %g, -cloth_rest_tol %g must be finite", (double)dt, (double)damping,
-             (double)tmax, (double)restTol);
+  PetscCheck(!PetscIsInfOrNanReal(dt) && !PetscIsInfOrNanReal(damping) && !PetscIsInfOrNanReal(tmax) && !PetscIsInfOrNanReal(restTol), CLOTH_COMM(c), PETSC_ERR_USER_INPUT,
+             "-cloth_dt %g, -cloth_damping %g, -cloth_tmax %g, -cloth_rest_tol %g must be finite", (double)dt, (double)damping, (double)tmax, (double)restTol);
   c->dynamics = mode;
   if (dt >= 0) {
     PetscCheck(dt > 0, CLOTH_COMM(c), PETSC_ERR_USER_INPUT, "-cloth_dt %g must be a positive time step in s", (double)dt);
@@ -633,7 +633,8 @@ PetscErrorCode HylcClothSetFromOptions(HylcCloth c)
     PetscEnum mode = (PetscEnum)c->dynamics;
     PetscReal dt = c->dt, damp = c->damping, tmax = c->tmax, rtol = c->restTol;
     PetscBool s1, s2, s3, s4, s5;
-    PetscCall(PetscOptionsEnum("-cloth_dynamic", "Equilibria under gravity: off (static load path), auto (backward Euler dynamics where the load path fails), on (dynamics from the flat state)", "HylcClothSetDynamics", HylcClothDynamicsTypes, mode, &mode, &s1));
+    PetscCall(PetscOptionsEnum("-cloth_dynamic", "Equilibria under gravity: off (static load path), auto (backward Euler dynamics where the load path fails), on (dynamics from the flat state)", "HylcClothSetDynamics", HylcClothDynamicsTypes, mode,
+                               &mode, &s1));
     PetscCall(PetscOptionsReal("-cloth_dt", "Dynamics: first time step (s)", "HylcClothSetDynamics", c->dt, &dt, &s2));
     PetscCall(PetscOptionsReal("-cloth_damping", "Dynamics: mass-proportional damping (1/s)", "HylcClothSetDynamics", c->damping, &damp, &s3));
     PetscCall(PetscOptionsReal("-cloth_tmax", "Dynamics: longest simulated time (s)", "HylcClothSetDynamics", c->tmax, &tmax, &s4));
@@ -778,7 +779,8 @@ PetscErrorCode HylcClothView(HylcCloth c, PetscViewer viewer)
   if (c->nv) PetscCall(PetscViewerASCIIPrintf(viewer, "mesh: %" PetscInt_FMT " vertices, %" PetscInt_FMT " triangles, area %g m^2, on %d ranks\n", c->nv, c->nt, (double)c->area, (int)c->size));
   PetscCall(PetscViewerASCIIPrintf(viewer, "solver: %s, Hessian %s, rtol %g, max_it %" PetscInt_FMT "\n", HylcClothSolvers[c->solver], HylcClothHessians[c->hessian], (double)c->rtol, c->maxit));
   PetscCall(PetscViewerASCIIPrintf(viewer, "contact barrier: distance %g m, stiffness %g J/m^4\n", (double)c->barrierDist, (double)c->kappaB));
-  PetscCall(PetscViewerASCIIPrintf(viewer, "dynamics: %s; backward Euler, first step %g s (at most %g s), damping %g 1/s, at most %g s, at rest below %g m/s\n", HylcClothDynamicsTypes[c->dynamics], (double)c->dt, (double)c->dtMax, (double)c->damping, (double)c->tmax, (double)c->restTol));
+  PetscCall(PetscViewerASCIIPrintf(viewer, "dynamics: %s; backward Euler, first step %g s (at most %g s), damping %g 1/s, at most %g s, at rest below %g m/s\n", HylcClothDynamicsTypes[c->dynamics], (double)c->dt, (double)c->dtMax, (double)c->damping,
+                                   (double)c->tmax, (double)c->restTol));
   if (c->test == HYLC_CLOTH_TEST_DRAPE) PetscCall(PetscViewerASCIIPrintf(viewer, "drape (static): specimen %g m on a disc of %g m (rim radius %g m)\n", (double)c->drapeD, (double)c->discD, (double)c->rimRadius));
   if (c->test == HYLC_CLOTH_TEST_CANTILEVER) PetscCall(PetscViewerASCIIPrintf(viewer, "cantilever: tip angle %g deg, width %g m, %" PetscInt_FMT " spacings along the overhang\n", (double)c->cantAngle, (double)c->cantWidth, c->cantN));
   PetscCall(PetscViewerASCIIPrintf(viewer, "output: %s\n", c->output[0] ? c->output : "(none)"));

@@ -186,14 +186,17 @@ PetscErrorCode HylcClothEquilibrium_Private(HylcCloth c, PetscInt nsteps, PetscB
     PetscCall(HylcClothLoadPath_Private(c, c->load, 1, nsteps, converged));
     if (*converged || c->dynamics == HYLC_CLOTH_DYNAMICS_OFF) PetscFunctionReturn(PETSC_SUCCESS);
     PetscCall(PetscPrintf(comm, "  the static load path stops at gravity scale %.4g: released under full gravity, backward Euler to rest (-cloth_dynamic auto)\n", (double)c->gscale));
-  } else PetscCall(VecCopy(c->x0, c->x));
+  } else
+    PetscCall(VecCopy(c->x0, c->x));
   c->gscale = 1;
   steps0    = c->timeSteps;
   fails0    = c->timeStepFails;
   PetscCall(HylcClothSettle_Private(c, converged));
   if (*converged && c->restResidual > 0)
-    PetscCall(PetscPrintf(comm, "  dynamics: %" PetscInt_FMT " time steps (%" PetscInt_FMT " repeated with half the step) to t = %.4g s, at rest (static residual %.2g of the force scale, not polished)\n", c->timeSteps - steps0, c->timeStepFails - fails0, (double)c->time, (double)c->restResidual));
+    PetscCall(PetscPrintf(comm, "  dynamics: %" PetscInt_FMT " time steps (%" PetscInt_FMT " repeated with half the step) to t = %.4g s, at rest (static residual %.2g of the force scale, not polished)\n", c->timeSteps - steps0,
+                          c->timeStepFails - fails0, (double)c->time, (double)c->restResidual));
   else
-    PetscCall(PetscPrintf(comm, "  dynamics: %" PetscInt_FMT " time steps (%" PetscInt_FMT " repeated with half the step) to t = %.4g s, %s\n", c->timeSteps - steps0, c->timeStepFails - fails0, (double)c->time, *converged ? "at rest in a static equilibrium" : "not at rest"));
+    PetscCall(PetscPrintf(comm, "  dynamics: %" PetscInt_FMT " time steps (%" PetscInt_FMT " repeated with half the step) to t = %.4g s, %s\n", c->timeSteps - steps0, c->timeStepFails - fails0, (double)c->time,
+                          *converged ? "at rest in a static equilibrium" : "not at rest"));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

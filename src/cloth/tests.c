@@ -439,10 +439,11 @@ PetscErrorCode HylcClothRunDrape_Private(HylcCloth c)
   c->support[0].rho                   = PetscMin(c->rimRadius, 0.5 * Rd);
   c->support[0].z0                    = -0.5 * c->barrierDist;
   PetscCall(HylcClothPrepare_Private(c));
-  PetscCall(PetscPrintf(comm, "drape (face %s, dynamics %s): specimen %g m on a %g m disc, %" PetscInt_FMT " vertices, %" PetscInt_FMT " triangles (h %g m)\n", c->face == HYLC_CLOTH_FACE_DOWN ? "down" : "up", HylcClothDynamicsTypes[c->dynamics], (double)c->drapeD, (double)c->discD, c->nv,
-                        c->nt, (double)h));
+  PetscCall(PetscPrintf(comm, "drape (face %s, dynamics %s): specimen %g m on a %g m disc, %" PetscInt_FMT " vertices, %" PetscInt_FMT " triangles (h %g m)\n", c->face == HYLC_CLOTH_FACE_DOWN ? "down" : "up", HylcClothDynamicsTypes[c->dynamics],
+                        (double)c->drapeD, (double)c->discD, c->nv, c->nt, (double)h));
   PetscCall(HylcClothEquilibrium_Private(c, c->loadSteps > 0 ? c->loadSteps : 8, &ok));
-  PetscCheck(ok, comm, PETSC_ERR_NOT_CONVERGED, "drape: no equilibrium under gravity (%s; try -cloth_dynamic on, a longer -cloth_tmax or more -cloth_load_steps)", c->dynamics == HYLC_CLOTH_DYNAMICS_OFF ? "static load path only" : "the dynamics did not come to rest");
+  PetscCheck(ok, comm, PETSC_ERR_NOT_CONVERGED, "drape: no equilibrium under gravity (%s; try -cloth_dynamic on, a longer -cloth_tmax or more -cloth_load_steps)",
+             c->dynamics == HYLC_CLOTH_DYNAMICS_OFF ? "static load path only" : "the dynamics did not come to rest");
   PetscCall(DrapeShadow(c, nb, rmax, &area, &nodes));
   DC = (area - Ad) / (A0 - Ad);
   PetscCall(HylcClothResult_Private(c, "DC", DC));
@@ -518,7 +519,8 @@ PetscErrorCode HylcClothRunScene_Private(HylcCloth c)
   PetscCall(PetscPrintf(comm, "scene: %s, %" PetscInt_FMT " vertices, %" PetscInt_FMT " triangles; clamp %g m, %" PetscInt_FMT " pinned corners, gravity %g m/s^2\n", c->meshFile[0] ? c->meshFile : "rectangle", c->nv, c->nt, (double)c->sceneClamp,
                         c->ncorners, (double)c->gravity));
   PetscCall(HylcClothEquilibrium_Private(c, c->loadSteps > 0 ? c->loadSteps : 8, &ok));
-  PetscCheck(ok, comm, PETSC_ERR_NOT_CONVERGED, "scene: no equilibrium under gravity (%s; try -cloth_dynamic on, a longer -cloth_tmax or more -cloth_load_steps)", c->dynamics == HYLC_CLOTH_DYNAMICS_OFF ? "static load path only" : "the dynamics did not come to rest");
+  PetscCheck(ok, comm, PETSC_ERR_NOT_CONVERGED, "scene: no equilibrium under gravity (%s; try -cloth_dynamic on, a longer -cloth_tmax or more -cloth_load_steps)",
+             c->dynamics == HYLC_CLOTH_DYNAMICS_OFF ? "static load path only" : "the dynamics did not come to rest");
   PetscCall(HylcClothGather_Private(c, c->x));
   PetscCall(HylcClothTextAppend_Private(&csv, "vertex,X,Y,Z,x,y,z\n"));
   for (PetscInt i = 0; i < c->nv; i++) {

@@ -120,7 +120,7 @@ struct _p_HylcCloth {
      dynamic is set ---- */
   PetscBool dynamic;
   PetscReal dtcur, time, restResidual; /* restResidual: the static gradient norm / force scale at rest */
-  Vec       xn, vn; /* the state and velocity at the start of the step */
+  Vec       xn, vn;                    /* the state and velocity at the start of the step */
   PetscInt  timeSteps, timeStepFails, polishes;
   /* ---- results ---- */
   PetscInt   nresults;
