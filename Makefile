@@ -4,7 +4,7 @@
 #   make demo       install missing dependencies, build, run the main job on a built-in default
 #   make bench      build and run the benchmarks (prints measured figures)
 #   make fabric-sheet  build, run hylc-cloth's virtual tests on the paper's tables (and FABRIC_TABLES="NAME=PATH ...")
-#                   and write docs/fabric-sheet.md (tools/fabric_sheet.py, about 15 min)
+#                   and write docs/fabric-sheet.md (tools/fabric_sheet.py, about 40 min on 2 cores)
 #   make install    PREFIX=/usr/local DESTDIR=: headers, libraries, programs, pkg-config files, docs
 #   make uninstall  remove every installed file (from the manifest written by install)
 #   make deps       install missing system packages (apt; as root or with sudo)
