@@ -11,10 +11,18 @@
      5. for each supernode s with block columns [f, f + w) its block rows R_s = [f, f + w) U struct(f + w - 1), and
         a dense column-major panel of bs |R_s| rows and bs w columns;
      6. amap: the position in the panels of every entry of A on or below the permuted diagonal.
-   Numeric phase (right-looking over supernodes): scatter A into the panels; for each supernode, the
-   dense Cholesky of its panel (diagonal block and the rows below it), then the update of every ancestor
-   column block c in R_s by the bs x bs blocks L_r L_c^T (r >= c in R_s), written into the ancestor's panel
-   through the relative positions of R_s's rows in its row list. */
+   Numeric phase (right-looking over supernodes): scatter A into the panels; for each supernode s:
+     a. the dense factorization of its panel (diagonal block and the rows below it), left-looking by block
+        columns: the product of the block column's rows with the previous columns (vector kernels of 8 or
+        4 rows by the bs columns, for bs <= 4), then an unblocked step on its bs columns;
+     b. the update of the ancestors, the standard supernodal one: the m rows below the panel, B (m x W,
+        W = bs w), packed by row octets; for each target supernode t (a run of R_s) its columns of
+        U = B S B^T (S the pivot signs) from the diagonal down, computed into a contiguous temporary by an
+        8 x 4 register-blocked micro-kernel (GCC vector extensions; those columns of B S packed by
+        quadruples), then subtracted from t's panel through the relative positions of R_s's rows in t's
+        row list.
+   Every entry of a product is summed over k from zero in increasing order and then subtracted from its
+   target, the order of the former per-block loops, so the factor is the same to the last bit. */
 #include <hylc/chol.h>
 #include <hylc/private/clones.h>
 #include <string.h>
@@ -455,7 +463,22 @@ static inline void PanelKern(const PetscInt NC, const PetscInt nv, PetscInt K, P
 }
 #endif
 
-/* the same for nrow < 4 rows and nc columns (any) */
+/* the same for nrow < 4 rows and NC <= 4 columns, one pass over the K columns */
+static inline void PanelKernRem(const PetscInt NC, PetscInt nrow, PetscInt K, PetscInt ld, const PetscReal *a, const PetscReal *b, const PetscReal *sg, PetscReal *t)
+{
+  PetscReal c[4][4] = {{0}};
+  for (PetscInt k = 0; k < K; k++, a += ld, b += ld) {
+    const PetscReal s = sg ? sg[k] : 1.0;
+    for (PetscInt j = 0; j < NC; j++) {
+      const PetscReal bj = s * b[j];
+      for (PetscInt i = 0; i < nrow; i++) c[j][i] += a[i] * bj;
+    }
+  }
+  for (PetscInt j = 0; j < NC; j++)
+    for (PetscInt i = 0; i < nrow; i++) t[j * ld + i] -= c[j][i];
+}
+
+/* any number nc of columns and nrow of rows */
 static inline void PanelKernScalar(PetscInt nc, PetscInt nrow, PetscInt K, PetscInt ld, const PetscReal *a, const PetscReal *b, const PetscReal *sg, PetscReal *t)
 {
   for (PetscInt j = 0; j < nc; j++)
@@ -478,7 +501,7 @@ static inline __attribute__((always_inline)) void PanelUpdate(const PetscInt NC,
     for (; i + 8 <= nrow; i += 8) PanelKern(NC, 2, K, ld, a + i, b, NULL, t + i);
     if (i + 4 <= nrow) PanelKern(NC, 1, K, ld, a + i, b, NULL, t + i), i += 4;
   }
-  if (i < nrow) PanelKernScalar(NC, nrow - i, K, ld, a + i, b, sg, t + i);
+  if (i < nrow) PanelKernRem(NC, nrow - i, K, ld, a + i, b, sg, t + i);
 }
 
 /* packs the m x W block a (column-major, leading dimension ld) by groups of G (8 or 4) rows: p[G (W o + k)
