@@ -17,10 +17,10 @@
         4 rows by the bs columns, for bs <= 4), then an unblocked step on its bs columns;
      b. the update of the ancestors, the standard supernodal one: the m rows below the panel, B (m x W,
         W = bs w), packed by row octets; for each target supernode t (a run of R_s) its columns of
-        U = B S B^T (S the pivot signs) from the diagonal down, computed into a contiguous temporary by an
-        8 x 4 register-blocked micro-kernel (GCC vector extensions; those columns of B S packed by
-        quadruples), then subtracted from t's panel through the relative positions of R_s's rows in t's
-        row list.
+        U = B S B^T (S the pivot signs) from the diagonal down, four columns at a time: computed into a
+        small contiguous temporary by an 8 x 4 register-blocked micro-kernel (GCC vector extensions; those
+        columns of B S packed by quadruples), then subtracted from t's panel through the relative
+        positions of R_s's rows in t's row list.
    Every entry of a product is summed over k from zero in increasing order and then subtracted from its
    target, the order of the former per-block loops, so the factor is the same to the last bit. */
 #include <hylc/chol.h>
@@ -547,15 +547,15 @@ HYLC_TARGET_CLONES static PetscErrorCode CholNumeric(HylcChol C, Mat A, PetscBoo
     mmax = PetscMax(mmax, ld - W);
   }
   {
-    /* work: the packed rows below a panel, the packed (signed) columns of one target, an update U (rows
-       padded to octets, columns to quadruples) and the target offsets of the rows */
+    /* work: the packed rows below a panel, the packed (signed) columns of one target, four columns of an
+       update U (rows padded to octets) and the target offsets of the rows */
     const PetscInt mp   = 8 * ((mmax + 7) / 8);
     PetscCount     wmax = 0;
     for (PetscInt s = 0; s < C->nsup; s++) {
       const PetscInt nr = C->rptr[s + 1] - C->rptr[s], W = bs * (C->sfirst[s + 1] - C->sfirst[s]);
       wmax = PetscMax(wmax, (PetscCount)W * 8 * ((bs * (nr - (C->sfirst[s + 1] - C->sfirst[s])) + 7) / 8));
     }
-    PetscCall(PetscMalloc4(wmax + 1, &Ap, wmax + 8 * mmax + 1, &Bp, (PetscCount)mp * (mp + 8) + 1, &U, C->nb + 1, &off));
+    PetscCall(PetscMalloc4(wmax + 1, &Ap, wmax + 8 * mmax + 1, &Bp, (PetscCount)4 * mp + 1, &U, C->nb + 1, &off));
   }
   for (PetscInt s = 0; s < C->nsup && *ok; s++) {
     const PetscInt  f = C->sfirst[s], w = C->sfirst[s + 1] - f, nr = C->rptr[s + 1] - C->rptr[s], ld = bs * nr, W = bs * w, c0 = bs * f;
@@ -602,10 +602,10 @@ HYLC_TARGET_CLONES static PetscErrorCode CholNumeric(HylcChol C, Mat A, PetscBoo
     if (!*ok) break;
     if (!m) continue;
     /* the update of the ancestors: the rows below the panel, B (m x W), packed by row octets; then for each
-       target supernode (a run of R, block columns [p, q1)) the columns [j0, j1) = [bs (p - w), bs (q1 - w))
-       of U = B S B^T from the octet of row j0 down, by 8 x 4 tiles (those columns of B packed by quadruples,
-       with the pivot signs), scattered into the target's panel at the relative positions of R_s's rows in
-       its row list */
+       target supernode (a run of R, block columns [p, q1)) the columns [bs (p - w), bs (q1 - w)) of
+       U = B S B^T (those columns of B packed by quadruples, with the pivot signs), four at a time: from the
+       octet of the first one's row down by 8 x 4 tiles into the work U (cache-resident), then scattered
+       into the target's panel at the relative positions of R_s's rows in its row list */
     Pack(8, m, W, ld, P + W, NULL, Ap);
     for (PetscInt p = w; p < nr;) {
       const PetscInt  t = C->snode[R[p]], ft = C->sfirst[t], lt = C->sfirst[t + 1], nrt = C->rptr[t + 1] - C->rptr[t], ldt = bs * nrt;
@@ -619,11 +619,10 @@ HYLC_TARGET_CLONES static PetscErrorCode CholNumeric(HylcChol C, Mat A, PetscBoo
       Pack(4, jend - jbase, W, ld, P + W + jbase, neg ? sg + c0 : NULL, Bp);
       for (PetscInt j0 = jbase; j0 < jend; j0 += 4) {
         const PetscReal *b = Bp + (PetscCount)W * (j0 - jbase);
-        for (PetscInt i0 = 8 * (j0 / 8); i0 < mp; i0 += 8) Kern8x4(W, Ap + (PetscCount)8 * W * (i0 / 8), b, U + (PetscCount)(j0 - jbase) * mp + i0, mp);
-      }
-      for (PetscInt q = p; q < q1; q++)
-        for (PetscInt jj = 0; jj < bs; jj++) {
-          const PetscReal *u    = U + (PetscCount)(bs * (q - w) + jj - jbase) * mp - bs * w;
+        for (PetscInt i0 = 8 * (j0 / 8); i0 < mp; i0 += 8) Kern8x4(W, Ap + (PetscCount)8 * W * (i0 / 8), b, U + i0, mp);
+        for (PetscInt c = j0; c < j0 + 4 && c < jend; c++) {
+          const PetscInt   q = w + c / bs, jj = c % bs;
+          const PetscReal *u    = U + (PetscCount)(c - j0) * mp - bs * w;
           PetscReal       *tcol = Pt + (PetscCount)(bs * (R[q] - ft) + jj) * ldt;
           if (bs == 3)
             for (PetscInt r = q; r < nr; r++) {
@@ -635,6 +634,7 @@ HYLC_TARGET_CLONES static PetscErrorCode CholNumeric(HylcChol C, Mat A, PetscBoo
             for (PetscInt r = q; r < nr; r++)
               for (PetscInt i = 0; i < bs; i++) tcol[off[r] + i] -= u[bs * r + i];
         }
+      }
       p = q1;
     }
   }
