@@ -21,8 +21,11 @@
         small contiguous temporary by an 8 x 4 register-blocked micro-kernel (GCC vector extensions; those
         columns of B S packed by quadruples), then subtracted from t's panel through the relative
         positions of R_s's rows in t's row list.
+     On x86-64 with AVX-512 (checked at run time) a second copy of the numeric phase, compiled for
+     x86-64-v4, runs the micro-kernel on 16 x 4 tiles of 8-wide vectors; elsewhere HYLC_TARGET_CLONES.
    Every entry of a product is summed over k from zero in increasing order and then subtracted from its
-   target, the order of the former per-block loops, so the factor is the same to the last bit. */
+   target (no contraction into FMA), the order of the former per-block loops, so the factor is the same to
+   the last bit on every path and as before 2026-11-27. */
 #include <hylc/chol.h>
 #include <hylc/private/clones.h>
 #include <string.h>
@@ -399,6 +402,31 @@ static inline __attribute__((always_inline)) void Kern8x4(PetscInt K, const Pets
   V4STORE(c + 3 * ldc, c03), V4STORE(c + 3 * ldc + 4, c13);
 }
 
+#  if !defined(__clang__) && defined(__x86_64__)
+/* with AVX-512 (a separate copy of the numeric phase, chosen at run time): eight doubles as one value,
+   and the micro-kernel on 16 x 4 tiles (a packed by groups of 16 rows), the same operations per entry */
+#    define HYLC_CHOL_WIDE 1
+typedef PetscReal V8 __attribute__((vector_size(8 * sizeof(PetscReal))));
+#    define V8BCAST(s) \
+      (V8) { (s), (s), (s), (s), (s), (s), (s), (s) }
+static inline __attribute__((always_inline)) void Kern16x4(PetscInt K, const PetscReal *a, const PetscReal *b, PetscReal *c, PetscInt ldc)
+{
+  V8 c00 = {0}, c01 = {0}, c02 = {0}, c03 = {0}, c10 = {0}, c11 = {0}, c12 = {0}, c13 = {0};
+  for (PetscInt k = 0; k < K; k++, a += 16, b += 4) {
+    V8       a0, a1;
+    const V8 b0 = V8BCAST(b[0]), b1 = V8BCAST(b[1]), b2 = V8BCAST(b[2]), b3 = V8BCAST(b[3]);
+    memcpy(&a0, a, sizeof(V8));
+    memcpy(&a1, a + 8, sizeof(V8));
+    c00 += a0 * b0, c01 += a0 * b1, c02 += a0 * b2, c03 += a0 * b3;
+    c10 += a1 * b0, c11 += a1 * b1, c12 += a1 * b2, c13 += a1 * b3;
+  }
+  memcpy(c, &c00, sizeof(V8)), memcpy(c + 8, &c10, sizeof(V8));
+  memcpy(c + ldc, &c01, sizeof(V8)), memcpy(c + ldc + 8, &c11, sizeof(V8));
+  memcpy(c + 2 * ldc, &c02, sizeof(V8)), memcpy(c + 2 * ldc + 8, &c12, sizeof(V8));
+  memcpy(c + 3 * ldc, &c03, sizeof(V8)), memcpy(c + 3 * ldc + 8, &c13, sizeof(V8));
+}
+#  endif
+
 /* the panel's block column update: t[i + j ld] -= sum_k a[i + k ld] s_k b[j + k ld] for the nv (1 or 2) row
    quadruples i < 4 nv and the NC (1 to 4, a constant) columns j, over K columns k of the panel (s_k = sg[k],
    or 1 without sg) */
@@ -524,7 +552,7 @@ static void Pack(PetscInt G, PetscInt m, PetscInt W, PetscInt ld, const PetscRea
    positive pivots only it is the Cholesky factorization. A pivot that is zero or tiny against the diagonal
    of A (|d_k| <= 1e-14 |A_kk|), not finite, or negative when indefinite matrices are refused, stops it. */
 
-HYLC_TARGET_CLONES static PetscErrorCode CholNumeric(HylcChol C, Mat A, PetscBool *ok)
+static inline __attribute__((always_inline)) PetscErrorCode CholNumericBody(HylcChol C, Mat A, PetscBool *ok, const PetscInt KMR)
 {
   const PetscInt     bs = C->bs;
   const PetscScalar *av;
@@ -549,17 +577,17 @@ HYLC_TARGET_CLONES static PetscErrorCode CholNumeric(HylcChol C, Mat A, PetscBoo
   {
     /* work: the packed rows below a panel, the packed (signed) columns of one target, four columns of an
        update U (rows padded to octets) and the target offsets of the rows */
-    const PetscInt mp   = 8 * ((mmax + 7) / 8);
+    const PetscInt mp   = KMR * ((mmax + KMR - 1) / KMR);
     PetscCount     wmax = 0;
     for (PetscInt s = 0; s < C->nsup; s++) {
       const PetscInt nr = C->rptr[s + 1] - C->rptr[s], W = bs * (C->sfirst[s + 1] - C->sfirst[s]);
-      wmax = PetscMax(wmax, (PetscCount)W * 8 * ((bs * (nr - (C->sfirst[s + 1] - C->sfirst[s])) + 7) / 8));
+      wmax = PetscMax(wmax, (PetscCount)W * KMR * ((bs * (nr - (C->sfirst[s + 1] - C->sfirst[s])) + KMR - 1) / KMR));
     }
     PetscCall(PetscMalloc4(wmax + 1, &Ap, wmax + 8 * mmax + 1, &Bp, (PetscCount)4 * mp + 1, &U, C->nb + 1, &off));
   }
   for (PetscInt s = 0; s < C->nsup && *ok; s++) {
     const PetscInt  f = C->sfirst[s], w = C->sfirst[s + 1] - f, nr = C->rptr[s + 1] - C->rptr[s], ld = bs * nr, W = bs * w, c0 = bs * f;
-    const PetscInt  m = ld - W, mp = 8 * ((m + 7) / 8);
+    const PetscInt  m = ld - W, mp = KMR * ((m + KMR - 1) / KMR);
     const PetscInt *R   = C->rows + C->rptr[s];
     PetscReal      *P   = C->L + C->voff[s];
     PetscBool       neg = PETSC_FALSE;
@@ -606,7 +634,7 @@ HYLC_TARGET_CLONES static PetscErrorCode CholNumeric(HylcChol C, Mat A, PetscBoo
        U = B S B^T (those columns of B packed by quadruples, with the pivot signs), four at a time: from the
        octet of the first one's row down by 8 x 4 tiles into the work U (cache-resident), then scattered
        into the target's panel at the relative positions of R_s's rows in its row list */
-    Pack(8, m, W, ld, P + W, NULL, Ap);
+    Pack(KMR, m, W, ld, P + W, NULL, Ap);
     for (PetscInt p = w; p < nr;) {
       const PetscInt  t = C->snode[R[p]], ft = C->sfirst[t], lt = C->sfirst[t + 1], nrt = C->rptr[t + 1] - C->rptr[t], ldt = bs * nrt;
       const PetscInt *Rt = C->rows + C->rptr[t];
@@ -619,7 +647,12 @@ HYLC_TARGET_CLONES static PetscErrorCode CholNumeric(HylcChol C, Mat A, PetscBoo
       Pack(4, jend - jbase, W, ld, P + W + jbase, neg ? sg + c0 : NULL, Bp);
       for (PetscInt j0 = jbase; j0 < jend; j0 += 4) {
         const PetscReal *b = Bp + (PetscCount)W * (j0 - jbase);
-        for (PetscInt i0 = 8 * (j0 / 8); i0 < mp; i0 += 8) Kern8x4(W, Ap + (PetscCount)8 * W * (i0 / 8), b, U + i0, mp);
+#if defined(HYLC_CHOL_WIDE)
+        if (KMR == 16)
+          for (PetscInt i0 = 16 * (j0 / 16); i0 < mp; i0 += 16) Kern16x4(W, Ap + (PetscCount)W * i0, b, U + i0, mp);
+        else
+#endif
+          for (PetscInt i0 = 8 * (j0 / 8); i0 < mp; i0 += 8) Kern8x4(W, Ap + (PetscCount)W * i0, b, U + i0, mp);
         for (PetscInt c = j0; c < j0 + 4 && c < jend; c++) {
           const PetscInt   q = w + c / bs, jj = c % bs;
           const PetscReal *u    = U + (PetscCount)(c - j0) * mp - bs * w;
@@ -644,6 +677,21 @@ HYLC_TARGET_CLONES static PetscErrorCode CholNumeric(HylcChol C, Mat A, PetscBoo
   PetscCall(PetscLogFlops(C->info.flops));
   PetscCall(PetscLogEventEnd(HYLC_CholNumeric, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+HYLC_TARGET_CLONES static PetscErrorCode CholNumericNarrow(HylcChol C, Mat A, PetscBool *ok) { return CholNumericBody(C, A, ok, 8); }
+
+#if defined(HYLC_CHOL_WIDE)
+__attribute__((target("arch=x86-64-v4"))) static PetscErrorCode CholNumericWide(HylcChol C, Mat A, PetscBool *ok) { return CholNumericBody(C, A, ok, 16); }
+#endif
+
+/* the numeric phase: with AVX-512 when the processor has it (HYLC_CHOL_WIDE), else by HYLC_TARGET_CLONES */
+static PetscErrorCode CholNumeric(HylcChol C, Mat A, PetscBool *ok)
+{
+#if defined(HYLC_CHOL_WIDE)
+  if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512vl")) return CholNumericWide(C, A, ok);
+#endif
+  return CholNumericNarrow(C, A, ok);
 }
 
 static PetscErrorCode CheckSeqAIJ(Mat A)
