@@ -16,13 +16,14 @@
         columns: the product of the block column's rows with the previous columns (vector kernels of 8 or
         4 rows by the bs columns, for bs <= 4), then an unblocked step on its bs columns;
      b. the update of the ancestors, the standard supernodal one: the m rows below the panel, B (m x W,
-        W = bs w), packed by row octets; for each target supernode t (a run of R_s) its columns of
+        W = bs w), packed by groups of 8 rows; for each target supernode t (a run of R_s) its columns of
         U = B S B^T (S the pivot signs) from the diagonal down, four columns at a time: computed into a
         small contiguous temporary by an 8 x 4 register-blocked micro-kernel (GCC vector extensions; those
         columns of B S packed by quadruples), then subtracted from t's panel through the relative
         positions of R_s's rows in t's row list.
      On x86-64 with AVX-512 (checked at run time) a second copy of the numeric phase, compiled for
-     x86-64-v4, runs the micro-kernel on 16 x 4 tiles of 8-wide vectors; elsewhere HYLC_TARGET_CLONES.
+     x86-64-v4, packs B by groups of 16 rows and runs the micro-kernel on 16 x 4 tiles of 8-wide vectors;
+     elsewhere HYLC_TARGET_CLONES (AVX2 or the baseline).
    Every entry of a product is summed over k from zero in increasing order and then subtracted from its
    target (no contraction into FMA), the order of the former per-block loops, so the factor is the same to
    the last bit on every path and as before 2026-11-27. */
@@ -532,7 +533,7 @@ static inline __attribute__((always_inline)) void PanelUpdate(const PetscInt NC,
   if (i < nrow) PanelKernRem(NC, nrow - i, K, ld, a + i, b, sg, t + i);
 }
 
-/* packs the m x W block a (column-major, leading dimension ld) by groups of G (8 or 4) rows: p[G (W o + k)
+/* packs the m x W block a (column-major, leading dimension ld) by groups of G (16, 8 or 4) rows: p[G (W o + k)
    + i] = s_k a[G o + i + k ld] (s_k = sg[k], or 1 without sg), zero below row m */
 static void Pack(PetscInt G, PetscInt m, PetscInt W, PetscInt ld, const PetscReal *a, const PetscReal *sg, PetscReal *p)
 {
@@ -576,7 +577,7 @@ static inline __attribute__((always_inline)) PetscErrorCode CholNumericBody(Hylc
   }
   {
     /* work: the packed rows below a panel, the packed (signed) columns of one target, four columns of an
-       update U (rows padded to octets) and the target offsets of the rows */
+       update U (rows padded to a multiple of KMR, 8 or 16) and the target offsets of the rows */
     const PetscInt mp   = KMR * ((mmax + KMR - 1) / KMR);
     PetscCount     wmax = 0;
     for (PetscInt s = 0; s < C->nsup; s++) {
@@ -629,10 +630,10 @@ static inline __attribute__((always_inline)) PetscErrorCode CholNumericBody(Hylc
     }
     if (!*ok) break;
     if (!m) continue;
-    /* the update of the ancestors: the rows below the panel, B (m x W), packed by row octets; then for each
+    /* the update of the ancestors: the rows below the panel, B (m x W), packed by groups of KMR rows; then for each
        target supernode (a run of R, block columns [p, q1)) the columns [bs (p - w), bs (q1 - w)) of
        U = B S B^T (those columns of B packed by quadruples, with the pivot signs), four at a time: from the
-       octet of the first one's row down by 8 x 4 tiles into the work U (cache-resident), then scattered
+       group of the first one's row down by KMR x 4 tiles into the work U (cache-resident), then scattered
        into the target's panel at the relative positions of R_s's rows in its row list */
     Pack(KMR, m, W, ld, P + W, NULL, Ap);
     for (PetscInt p = w; p < nr;) {
