@@ -11,10 +11,22 @@
      5. for each supernode s with block columns [f, f + w) its block rows R_s = [f, f + w) U struct(f + w - 1), and
         a dense column-major panel of bs |R_s| rows and bs w columns;
      6. amap: the position in the panels of every entry of A on or below the permuted diagonal.
-   Numeric phase (right-looking over supernodes): scatter A into the panels; for each supernode, the
-   dense Cholesky of its panel (diagonal block and the rows below it), then the update of every ancestor
-   column block c in R_s by the bs x bs blocks L_r L_c^T (r >= c in R_s), written into the ancestor's panel
-   through the relative positions of R_s's rows in its row list. */
+   Numeric phase (right-looking over supernodes): scatter A into the panels; for each supernode s:
+     a. the dense factorization of its panel (diagonal block and the rows below it), left-looking by block
+        columns: the product of the block column's rows with the previous columns (vector kernels of 8 or
+        4 rows by the bs columns, for bs <= 4), then an unblocked step on its bs columns;
+     b. the update of the ancestors, the standard supernodal one: the m rows below the panel, B (m x W,
+        W = bs w), packed by groups of 8 rows; for each target supernode t (a run of R_s) its columns of
+        U = B S B^T (S the pivot signs) from the diagonal down, four columns at a time: computed into a
+        small contiguous temporary by an 8 x 4 register-blocked micro-kernel (GCC vector extensions; those
+        columns of B S packed by quadruples), then subtracted from t's panel through the relative
+        positions of R_s's rows in t's row list.
+     On x86-64 with AVX-512 (checked at run time) a second copy of the numeric phase, compiled for
+     x86-64-v4, packs B by groups of 16 rows and runs the micro-kernel on 16 x 4 tiles of 8-wide vectors;
+     elsewhere HYLC_TARGET_CLONES (AVX2 or the baseline).
+   Every entry of a product is summed over k from zero in increasing order and then subtracted from its
+   target (no contraction into FMA), the order of the former per-block loops, so the factor is the same to
+   the last bit on every path and as before 2026-11-27. */
 #include <hylc/chol.h>
 #include <hylc/private/clones.h>
 #include <string.h>
@@ -353,12 +365,17 @@ static PetscErrorCode CholSymbolic(HylcChol C, Mat A, PetscInt bs)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Dense kernels of the numeric phase. Every entry of a product is summed over k in increasing order from
+   zero and then subtracted from its target (one multiply and one add per term, no contraction), so the
+   vector code and the scalar fallback give the same values. */
 #if defined(__GNUC__)
 /* four doubles as one value (GCC and Clang vector extensions): an AVX register in the x86-64-v3 clone, two
    SSE2 registers otherwise; loads and stores through memcpy, so no alignment is assumed */
 typedef PetscReal V4 __attribute__((vector_size(4 * sizeof(PetscReal))));
 #  define V4LOAD(v, p)  memcpy(&(v), (p), sizeof(V4))
 #  define V4STORE(p, v) memcpy((p), &(v), sizeof(V4))
+#  define V4BCAST(s) \
+    (V4) { (s), (s), (s), (s) }
 #  define V4SUBFROM(p, c) \
     do {                  \
       V4 t_;              \
@@ -367,105 +384,187 @@ typedef PetscReal V4 __attribute__((vector_size(4 * sizeof(PetscReal))));
       V4STORE(p, t_);     \
     } while (0)
 
-/* the bs = 4 kernel: for each of nr4 (1 or 2) row blocks a + 4 i (rows of the panel, contiguous in its
-   columns), tgt[i] (4 x 4, column-major with leading dimension ldt) -= sum_k a[k ld + 4 i + (0..3)]
-   s_k b[k ld + j] over the W columns k (s_k = sg[k], or 1 without sg). The accumulators are the target's
-   columns, so each product is a vector times a broadcast scalar (one multiply and one add per lane, the
-   order of the scalar code) and the target is updated with whole-column vector operations; two row blocks
-   share the broadcasts of b. */
-static inline __attribute__((always_inline)) void Update4(PetscInt nr4, PetscInt W, PetscInt ld, const PetscReal *a, const PetscReal *b, const PetscReal *sg, PetscReal *tgt0, PetscReal *tgt1, PetscInt ldt)
+/* the micro-kernel of the update: c (8 x 4, column-major with leading dimension ldc) = sum_k a_k b_k^T over
+   K terms, a and b packed (a_k = a[8k + 0..7], b_k = b[4k + 0..3]) */
+static inline __attribute__((always_inline)) void Kern8x4(PetscInt K, const PetscReal *a, const PetscReal *b, PetscReal *c, PetscInt ldc)
 {
   V4 c00 = {0}, c01 = {0}, c02 = {0}, c03 = {0}, c10 = {0}, c11 = {0}, c12 = {0}, c13 = {0};
-  for (PetscInt k = 0; k < W; k++, a += ld, b += ld) {
-    const PetscReal s = sg ? sg[k] : 1.0, s0 = s * b[0], s1 = s * b[1], s2 = s * b[2], s3 = s * b[3];
-    const V4        b0 = {s0, s0, s0, s0}, b1 = {s1, s1, s1, s1}, b2 = {s2, s2, s2, s2}, b3 = {s3, s3, s3, s3};
-    V4              a0;
+  for (PetscInt k = 0; k < K; k++, a += 8, b += 4) {
+    V4       a0, a1;
+    const V4 b0 = V4BCAST(b[0]), b1 = V4BCAST(b[1]), b2 = V4BCAST(b[2]), b3 = V4BCAST(b[3]);
     V4LOAD(a0, a);
+    V4LOAD(a1, a + 4);
     c00 += a0 * b0, c01 += a0 * b1, c02 += a0 * b2, c03 += a0 * b3;
-    if (nr4 == 2) {
-      V4 a1;
-      V4LOAD(a1, a + 4);
-      c10 += a1 * b0, c11 += a1 * b1, c12 += a1 * b2, c13 += a1 * b3;
+    c10 += a1 * b0, c11 += a1 * b1, c12 += a1 * b2, c13 += a1 * b3;
+  }
+  V4STORE(c, c00), V4STORE(c + 4, c10);
+  V4STORE(c + ldc, c01), V4STORE(c + ldc + 4, c11);
+  V4STORE(c + 2 * ldc, c02), V4STORE(c + 2 * ldc + 4, c12);
+  V4STORE(c + 3 * ldc, c03), V4STORE(c + 3 * ldc + 4, c13);
+}
+
+#  if !defined(__clang__) && defined(__x86_64__)
+/* with AVX-512 (a separate copy of the numeric phase, chosen at run time): eight doubles as one value,
+   and the micro-kernel on 16 x 4 tiles (a packed by groups of 16 rows), the same operations per entry */
+#    define HYLC_CHOL_WIDE 1
+typedef PetscReal V8 __attribute__((vector_size(8 * sizeof(PetscReal))));
+#    define V8BCAST(s) \
+      (V8) { (s), (s), (s), (s), (s), (s), (s), (s) }
+static inline __attribute__((always_inline)) void Kern16x4(PetscInt K, const PetscReal *a, const PetscReal *b, PetscReal *c, PetscInt ldc)
+{
+  V8 c00 = {0}, c01 = {0}, c02 = {0}, c03 = {0}, c10 = {0}, c11 = {0}, c12 = {0}, c13 = {0};
+  for (PetscInt k = 0; k < K; k++, a += 16, b += 4) {
+    V8       a0, a1;
+    const V8 b0 = V8BCAST(b[0]), b1 = V8BCAST(b[1]), b2 = V8BCAST(b[2]), b3 = V8BCAST(b[3]);
+    memcpy(&a0, a, sizeof(V8));
+    memcpy(&a1, a + 8, sizeof(V8));
+    c00 += a0 * b0, c01 += a0 * b1, c02 += a0 * b2, c03 += a0 * b3;
+    c10 += a1 * b0, c11 += a1 * b1, c12 += a1 * b2, c13 += a1 * b3;
+  }
+  memcpy(c, &c00, sizeof(V8)), memcpy(c + 8, &c10, sizeof(V8));
+  memcpy(c + ldc, &c01, sizeof(V8)), memcpy(c + ldc + 8, &c11, sizeof(V8));
+  memcpy(c + 2 * ldc, &c02, sizeof(V8)), memcpy(c + 2 * ldc + 8, &c12, sizeof(V8));
+  memcpy(c + 3 * ldc, &c03, sizeof(V8)), memcpy(c + 3 * ldc + 8, &c13, sizeof(V8));
+}
+#  endif
+
+/* the panel's block column update: t[i + j ld] -= sum_k a[i + k ld] s_k b[j + k ld] for the nv (1 or 2) row
+   quadruples i < 4 nv and the NC (1 to 4, a constant) columns j, over K columns k of the panel (s_k = sg[k],
+   or 1 without sg) */
+static inline __attribute__((always_inline)) void PanelKern(const PetscInt NC, const PetscInt nv, PetscInt K, PetscInt ld, const PetscReal *a, const PetscReal *b, const PetscReal *sg, PetscReal *t)
+{
+  V4 c00 = {0}, c01 = {0}, c02 = {0}, c03 = {0}, c10 = {0}, c11 = {0}, c12 = {0}, c13 = {0};
+  for (PetscInt k = 0; k < K; k++, a += ld, b += ld) {
+    const PetscReal s = sg ? sg[k] : 1.0;
+    V4              a0, a1, bb;
+    V4LOAD(a0, a);
+    if (nv == 2) V4LOAD(a1, a + 4);
+    bb = V4BCAST(s * b[0]), c00 += a0 * bb;
+    if (nv == 2) c10 += a1 * bb;
+    if (NC > 1) {
+      bb = V4BCAST(s * b[1]), c01 += a0 * bb;
+      if (nv == 2) c11 += a1 * bb;
+    }
+    if (NC > 2) {
+      bb = V4BCAST(s * b[2]), c02 += a0 * bb;
+      if (nv == 2) c12 += a1 * bb;
+    }
+    if (NC > 3) {
+      bb = V4BCAST(s * b[3]), c03 += a0 * bb;
+      if (nv == 2) c13 += a1 * bb;
     }
   }
-  V4SUBFROM(tgt0, c00);
-  V4SUBFROM(tgt0 + ldt, c01);
-  V4SUBFROM(tgt0 + 2 * ldt, c02);
-  V4SUBFROM(tgt0 + 3 * ldt, c03);
-  if (nr4 == 2) {
-    V4SUBFROM(tgt1, c10);
-    V4SUBFROM(tgt1 + ldt, c11);
-    V4SUBFROM(tgt1 + 2 * ldt, c12);
-    V4SUBFROM(tgt1 + 3 * ldt, c13);
+  V4SUBFROM(t, c00);
+  if (nv == 2) V4SUBFROM(t + 4, c10);
+  if (NC > 1) {
+    V4SUBFROM(t + ld, c01);
+    if (nv == 2) V4SUBFROM(t + ld + 4, c11);
+  }
+  if (NC > 2) {
+    V4SUBFROM(t + 2 * ld, c02);
+    if (nv == 2) V4SUBFROM(t + 2 * ld + 4, c12);
+  }
+  if (NC > 3) {
+    V4SUBFROM(t + 3 * ld, c03);
+    if (nv == 2) V4SUBFROM(t + 3 * ld + 4, c13);
   }
 }
 #else
-static inline void Update4(PetscInt nr4, PetscInt W, PetscInt ld, const PetscReal *a, const PetscReal *b, const PetscReal *sg, PetscReal *tgt0, PetscReal *tgt1, PetscInt ldt)
+static inline void Kern8x4(PetscInt K, const PetscReal *a, const PetscReal *b, PetscReal *c, PetscInt ldc)
 {
-  for (PetscInt h = 0; h < nr4; h++) {
-    PetscReal c[4][4] = {{0}}, *tgt = h ? tgt1 : tgt0;
-    for (PetscInt k = 0; k < W; k++) {
-      const PetscReal s = sg ? sg[k] : 1.0;
-      for (int j = 0; j < 4; j++)
-        for (int i = 0; i < 4; i++) c[j][i] += a[k * ld + 4 * h + i] * s * b[k * ld + j];
-    }
-    for (int j = 0; j < 4; j++)
-      for (int i = 0; i < 4; i++) tgt[j * ldt + i] -= c[j][i];
+  for (PetscInt j = 0; j < 4; j++)
+    for (PetscInt i = 0; i < 8; i++) c[j * ldc + i] = 0;
+  for (PetscInt k = 0; k < K; k++)
+    for (PetscInt j = 0; j < 4; j++)
+      for (PetscInt i = 0; i < 8; i++) c[j * ldc + i] += a[8 * k + i] * b[4 * k + j];
+}
+
+static inline void PanelKern(const PetscInt NC, const PetscInt nv, PetscInt K, PetscInt ld, const PetscReal *a, const PetscReal *b, const PetscReal *sg, PetscReal *t)
+{
+  PetscReal c[4][8] = {{0}};
+  for (PetscInt k = 0; k < K; k++) {
+    const PetscReal s = sg ? sg[k] : 1.0;
+    for (PetscInt j = 0; j < NC; j++)
+      for (PetscInt i = 0; i < 4 * nv; i++) c[j][i] += a[k * ld + i] * (s * b[k * ld + j]);
   }
+  for (PetscInt j = 0; j < NC; j++)
+    for (PetscInt i = 0; i < 4 * nv; i++) t[j * ld + i] -= c[j][i];
 }
 #endif
 
-/* any bs: tgt (bs x bs, column-major with leading dimension ldt) -= the block product of a and b over W
-   columns (with signs sg) */
-static inline void BlockUpdateGeneral(PetscInt bs, PetscInt W, PetscInt ld, const PetscReal *a, const PetscReal *b, const PetscReal *sg, PetscReal blk[], PetscReal *tgt, PetscInt ldt)
+/* the same for nrow < 4 rows and NC <= 4 columns, one pass over the K columns */
+static inline void PanelKernRem(const PetscInt NC, PetscInt nrow, PetscInt K, PetscInt ld, const PetscReal *a, const PetscReal *b, const PetscReal *sg, PetscReal *t)
 {
-  for (PetscInt i = 0; i < bs * bs; i++) blk[i] = 0;
-  for (PetscInt k = 0; k < W; k++, a += ld, b += ld) {
+  PetscReal c[4][4] = {{0}};
+  for (PetscInt k = 0; k < K; k++, a += ld, b += ld) {
     const PetscReal s = sg ? sg[k] : 1.0;
-    for (PetscInt j = 0; j < bs; j++)
-      for (PetscInt i = 0; i < bs; i++) blk[j * bs + i] += a[i] * s * b[j];
+    for (PetscInt j = 0; j < NC; j++) {
+      const PetscReal bj = s * b[j];
+      for (PetscInt i = 0; i < nrow; i++) c[j][i] += a[i] * bj;
+    }
   }
-  for (PetscInt j = 0; j < bs; j++, tgt += ldt)
-    for (PetscInt i = 0; i < bs; i++) tgt[i] -= blk[j * bs + i];
+  for (PetscInt j = 0; j < NC; j++)
+    for (PetscInt i = 0; i < nrow; i++) t[j * ld + i] -= c[j][i];
 }
 
-/* the update of the block column b (its bs columns) at the row blocks r0 <= r < r1 of a panel: the block of
-   row r, a + bs r, lands at tgt + toff(r) (target offsets through pos: bs pos[R[r]] with R, or bs r without);
-   with bs = 4, two row blocks at a time, and a no-sign specialization by the compiler */
-static inline __attribute__((always_inline)) void UpdateRows(PetscInt bs, PetscInt r0, PetscInt r1, PetscInt W, PetscInt ld, const PetscReal *a, const PetscReal *b, const PetscReal *sg, PetscReal blk[], PetscReal *tgt, PetscInt ldt,
-                                                             const PetscInt *R, const PetscInt *pos)
+/* any number nc of columns and nrow of rows */
+static inline void PanelKernScalar(PetscInt nc, PetscInt nrow, PetscInt K, PetscInt ld, const PetscReal *a, const PetscReal *b, const PetscReal *sg, PetscReal *t)
 {
-#define TOFF(r) (R ? bs * pos[R[r]] : bs * (r))
-  if (bs == 4) {
-    PetscInt r = r0;
-    if (sg) {
-      for (; r + 1 < r1; r += 2) Update4(2, W, ld, a + 4 * r, b, sg, tgt + TOFF(r), tgt + TOFF(r + 1), ldt);
-      if (r < r1) Update4(1, W, ld, a + 4 * r, b, sg, tgt + TOFF(r), NULL, ldt);
-    } else {
-      for (; r + 1 < r1; r += 2) Update4(2, W, ld, a + 4 * r, b, NULL, tgt + TOFF(r), tgt + TOFF(r + 1), ldt);
-      if (r < r1) Update4(1, W, ld, a + 4 * r, b, NULL, tgt + TOFF(r), NULL, ldt);
+  for (PetscInt j = 0; j < nc; j++)
+    for (PetscInt i = 0; i < nrow; i++) {
+      PetscReal c = 0;
+      for (PetscInt k = 0; k < K; k++) c += a[k * ld + i] * ((sg ? sg[k] : 1.0) * b[k * ld + j]);
+      t[j * ld + i] -= c;
     }
-  } else
-    for (PetscInt r = r0; r < r1; r++) BlockUpdateGeneral(bs, W, ld, a + bs * r, b, sg, blk, tgt + TOFF(r), ldt);
-#undef TOFF
+}
+
+/* the left-looking update of the panel's block column: its NC columns t at the nrow rows from a (the same
+   rows of the K previous columns; b: the block column's own rows there) */
+static inline __attribute__((always_inline)) void PanelUpdate(const PetscInt NC, PetscInt nrow, PetscInt K, PetscInt ld, const PetscReal *a, const PetscReal *b, const PetscReal *sg, PetscReal *t)
+{
+  PetscInt i = 0;
+  if (sg) {
+    for (; i + 8 <= nrow; i += 8) PanelKern(NC, 2, K, ld, a + i, b, sg, t + i);
+    if (i + 4 <= nrow) PanelKern(NC, 1, K, ld, a + i, b, sg, t + i), i += 4;
+  } else {
+    for (; i + 8 <= nrow; i += 8) PanelKern(NC, 2, K, ld, a + i, b, NULL, t + i);
+    if (i + 4 <= nrow) PanelKern(NC, 1, K, ld, a + i, b, NULL, t + i), i += 4;
+  }
+  if (i < nrow) PanelKernRem(NC, nrow - i, K, ld, a + i, b, sg, t + i);
+}
+
+/* packs the m x W block a (column-major, leading dimension ld) by groups of G (16, 8 or 4) rows: p[G (W o + k)
+   + i] = s_k a[G o + i + k ld] (s_k = sg[k], or 1 without sg), zero below row m */
+static void Pack(PetscInt G, PetscInt m, PetscInt W, PetscInt ld, const PetscReal *a, const PetscReal *sg, PetscReal *p)
+{
+  for (PetscInt o = 0; G * o < m; o++) {
+    const PetscInt nr = m - G * o < G ? m - G * o : G;
+    for (PetscInt k = 0; k < W; k++, p += G) {
+      const PetscReal *ak = a + G * o + k * ld;
+      const PetscReal  s  = sg ? sg[k] : 1.0;
+      PetscInt         i  = 0;
+      for (; i < nr; i++) p[i] = s * ak[i];
+      for (; i < G; i++) p[i] = 0;
+    }
+  }
 }
 
 /* The signed factorization A = L S L^T, S = diag(+-1) (the sign of each pivot): L_kk = sqrt(|d_k|). With
    positive pivots only it is the Cholesky factorization. A pivot that is zero or tiny against the diagonal
    of A (|d_k| <= 1e-14 |A_kk|), not finite, or negative when indefinite matrices are refused, stops it. */
 
-HYLC_TARGET_CLONES static PetscErrorCode CholNumeric(HylcChol C, Mat A, PetscBool *ok)
+static inline __attribute__((always_inline)) PetscErrorCode CholNumericBody(HylcChol C, Mat A, PetscBool *ok, const PetscInt KMR)
 {
   const PetscInt     bs = C->bs;
   const PetscScalar *av;
-  PetscReal          cb[64], *blk = cb, *sg = C->sg, *dA = C->dA;
+  PetscReal         *sg = C->sg, *dA = C->dA, *Ap, *Bp, *U;
+  PetscInt          *off, mmax       = 0;
 
   PetscFunctionBegin;
   PetscCall(PetscLogEventBegin(HYLC_CholNumeric, 0, 0, 0, 0));
   *ok         = PETSC_TRUE;
   C->factored = PETSC_FALSE;
   C->nneg     = 0;
-  if (bs * bs > 64) PetscCall(PetscMalloc1(bs * bs, &blk));
   PetscCall(PetscArrayzero(C->L, C->voff[C->nsup]));
   PetscCall(MatSeqAIJGetArrayRead(A, &av));
   for (PetscInt t = 0; t < C->nnzA; t++)
@@ -474,17 +573,43 @@ HYLC_TARGET_CLONES static PetscErrorCode CholNumeric(HylcChol C, Mat A, PetscBoo
   for (PetscInt s = 0; s < C->nsup; s++) {
     const PetscInt ld = bs * (C->rptr[s + 1] - C->rptr[s]), c0 = bs * C->sfirst[s], W = bs * (C->sfirst[s + 1] - C->sfirst[s]);
     for (PetscInt k = 0; k < W; k++) dA[c0 + k] = PetscAbsReal(C->L[C->voff[s] + k * ld + k]);
+    mmax = PetscMax(mmax, ld - W);
+  }
+  {
+    /* work: the packed rows below a panel, the packed (signed) columns of one target, four columns of an
+       update U (rows padded to a multiple of KMR, 8 or 16) and the target offsets of the rows */
+    const PetscInt mp   = KMR * ((mmax + KMR - 1) / KMR);
+    PetscCount     wmax = 0;
+    for (PetscInt s = 0; s < C->nsup; s++) {
+      const PetscInt nr = C->rptr[s + 1] - C->rptr[s], W = bs * (C->sfirst[s + 1] - C->sfirst[s]);
+      wmax = PetscMax(wmax, (PetscCount)W * KMR * ((bs * (nr - (C->sfirst[s + 1] - C->sfirst[s])) + KMR - 1) / KMR));
+    }
+    PetscCall(PetscMalloc4(wmax + 1, &Ap, wmax + 8 * mmax + 1, &Bp, (PetscCount)4 * mp + 1, &U, C->nb + 1, &off));
   }
   for (PetscInt s = 0; s < C->nsup && *ok; s++) {
     const PetscInt  f = C->sfirst[s], w = C->sfirst[s + 1] - f, nr = C->rptr[s + 1] - C->rptr[s], ld = bs * nr, W = bs * w, c0 = bs * f;
+    const PetscInt  m = ld - W, mp = KMR * ((m + KMR - 1) / KMR);
     const PetscInt *R   = C->rows + C->rptr[s];
     PetscReal      *P   = C->L + C->voff[s];
     PetscBool       neg = PETSC_FALSE;
     /* the panel: dense factorization of the diagonal block and triangular solve of the rows below,
-       left-looking by block columns (block products of the previous columns, then an unblocked step) */
+       left-looking by block columns (the product of the previous columns, then an unblocked step) */
     for (PetscInt jb = 0; jb < w && *ok; jb++) {
-      PetscReal *cjb = P + (PetscCount)bs * jb * ld;
-      if (jb) UpdateRows(bs, jb, nr, bs * jb, ld, P, P + bs * jb, neg ? sg + c0 : NULL, blk, cjb, ld, NULL, NULL);
+      PetscReal       *cjb  = P + (PetscCount)bs * jb * ld;
+      const PetscInt   nrow = ld - bs * jb, K = bs * jb;
+      const PetscReal *sk = neg ? sg + c0 : NULL;
+      if (jb) {
+        if (bs == 3)
+          PanelUpdate(3, nrow, K, ld, P + bs * jb, P + bs * jb, sk, cjb + bs * jb);
+        else if (bs == 4)
+          PanelUpdate(4, nrow, K, ld, P + bs * jb, P + bs * jb, sk, cjb + bs * jb);
+        else if (bs == 2)
+          PanelUpdate(2, nrow, K, ld, P + bs * jb, P + bs * jb, sk, cjb + bs * jb);
+        else if (bs == 1)
+          PanelUpdate(1, nrow, K, ld, P + bs * jb, P + bs * jb, sk, cjb + bs * jb);
+        else
+          PanelKernScalar(bs, nrow, K, ld, P + bs * jb, P + bs * jb, sk, cjb + bs * jb);
+      }
       for (PetscInt k = bs * jb; k < bs * (jb + 1); k++) {
         PetscReal *ck = P + k * ld, d = ck[k];
         if (!PetscIsNormalReal(d) || PetscAbsReal(d) <= 1e-14 * dA[c0 + k] || (d < 0 && !C->indefinite)) {
@@ -504,7 +629,13 @@ HYLC_TARGET_CLONES static PetscErrorCode CholNumeric(HylcChol C, Mat A, PetscBoo
       }
     }
     if (!*ok) break;
-    /* updates of the ancestors, one target supernode (a run of R) at a time */
+    if (!m) continue;
+    /* the update of the ancestors: the rows below the panel, B (m x W), packed by groups of KMR rows; then for each
+       target supernode (a run of R, block columns [p, q1)) the columns [bs (p - w), bs (q1 - w)) of
+       U = B S B^T (those columns of B packed by quadruples, with the pivot signs), four at a time: from the
+       group of the first one's row down by KMR x 4 tiles into the work U (cache-resident), then scattered
+       into the target's panel at the relative positions of R_s's rows in its row list */
+    Pack(KMR, m, W, ld, P + W, NULL, Ap);
     for (PetscInt p = w; p < nr;) {
       const PetscInt  t = C->snode[R[p]], ft = C->sfirst[t], lt = C->sfirst[t + 1], nrt = C->rptr[t + 1] - C->rptr[t], ldt = bs * nrt;
       const PetscInt *Rt = C->rows + C->rptr[t];
@@ -512,19 +643,56 @@ HYLC_TARGET_CLONES static PetscErrorCode CholNumeric(HylcChol C, Mat A, PetscBoo
       PetscInt        q1 = p;
       while (q1 < nr && R[q1] < lt) q1++;
       for (PetscInt i = 0; i < nrt; i++) C->relpos[Rt[i]] = i;
-      for (PetscInt q = p; q < q1; q++) {
-        PetscReal *tcol = Pt + (PetscCount)bs * (R[q] - ft) * ldt;
-        UpdateRows(bs, q, nr, W, ld, P, P + bs * q, neg ? sg + c0 : NULL, blk, tcol, ldt, R, C->relpos);
+      for (PetscInt r = p; r < nr; r++) off[r] = bs * C->relpos[R[r]];
+      const PetscInt jbase = bs * (p - w), jend = bs * (q1 - w);
+      Pack(4, jend - jbase, W, ld, P + W + jbase, neg ? sg + c0 : NULL, Bp);
+      for (PetscInt j0 = jbase; j0 < jend; j0 += 4) {
+        const PetscReal *b = Bp + (PetscCount)W * (j0 - jbase);
+#if defined(HYLC_CHOL_WIDE)
+        if (KMR == 16)
+          for (PetscInt i0 = 16 * (j0 / 16); i0 < mp; i0 += 16) Kern16x4(W, Ap + (PetscCount)W * i0, b, U + i0, mp);
+        else
+#endif
+          for (PetscInt i0 = 8 * (j0 / 8); i0 < mp; i0 += 8) Kern8x4(W, Ap + (PetscCount)W * i0, b, U + i0, mp);
+        for (PetscInt c = j0; c < j0 + 4 && c < jend; c++) {
+          const PetscInt   q = w + c / bs, jj = c % bs;
+          const PetscReal *u    = U + (PetscCount)(c - j0) * mp - bs * w;
+          PetscReal       *tcol = Pt + (PetscCount)(bs * (R[q] - ft) + jj) * ldt;
+          if (bs == 3)
+            for (PetscInt r = q; r < nr; r++) {
+              PetscReal       *d = tcol + off[r];
+              const PetscReal *e = u + 3 * r;
+              d[0] -= e[0], d[1] -= e[1], d[2] -= e[2];
+            }
+          else
+            for (PetscInt r = q; r < nr; r++)
+              for (PetscInt i = 0; i < bs; i++) tcol[off[r] + i] -= u[bs * r + i];
+        }
       }
       p = q1;
     }
   }
-  if (blk != cb) PetscCall(PetscFree(blk));
+  PetscCall(PetscFree4(Ap, Bp, U, off));
   C->factored = *ok;
   C->info.nnumeric++;
   PetscCall(PetscLogFlops(C->info.flops));
   PetscCall(PetscLogEventEnd(HYLC_CholNumeric, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+HYLC_TARGET_CLONES static PetscErrorCode CholNumericNarrow(HylcChol C, Mat A, PetscBool *ok) { return CholNumericBody(C, A, ok, 8); }
+
+#if defined(HYLC_CHOL_WIDE)
+__attribute__((target("arch=x86-64-v4"))) static PetscErrorCode CholNumericWide(HylcChol C, Mat A, PetscBool *ok) { return CholNumericBody(C, A, ok, 16); }
+#endif
+
+/* the numeric phase: with AVX-512 when the processor has it (HYLC_CHOL_WIDE), else by HYLC_TARGET_CLONES */
+static PetscErrorCode CholNumeric(HylcChol C, Mat A, PetscBool *ok)
+{
+#if defined(HYLC_CHOL_WIDE)
+  if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512vl")) return CholNumericWide(C, A, ok);
+#endif
+  return CholNumericNarrow(C, A, ok);
 }
 
 static PetscErrorCode CheckSeqAIJ(Mat A)

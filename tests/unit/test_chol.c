@@ -1,9 +1,9 @@
 /* HylcChol, the supernodal block Cholesky (src/linalg/chol.c), and the solver type hylc (matsolver.c):
-   - random sparse SPD matrices with block sizes 1, 3 and 4, METIS and natural orderings: the solution of
+   - random sparse SPD matrices with block sizes 1 to 5, METIS and natural orderings: the solution of
      A x = b has a relative residual <= 1e-12 and agrees with PETSc's own Cholesky;
    - the factor of a matrix with a known dense factor (block tridiagonal) is exact to rounding;
    - an indefinite matrix is reported (ok = false) by default; with indefinite matrices accepted, its
-     inertia equals MUMPS's and the solve has a small residual;
+     inertia equals MUMPS's and the solve has a small residual (block sizes 4 and 3);
    - the symbolic phase reruns only when the nonzero pattern changes;
    - HylcCholSolveMany gives bitwise the results of HylcCholSolve, also in place;
    - the Newton matrices H_y + alpha BI of the paper's tiles ($HYLC_REFDATA, skipped when absent);
@@ -112,10 +112,10 @@ static PetscErrorCode CheckSolve(Mat A, PetscInt bs, HylcCholOrdering ord, Petsc
 static PetscErrorCode TestRandom(void)
 {
   unsigned long long seed   = 0x9e3779b97f4a7c15ULL;
-  const PetscInt     bss[3] = {1, 3, 4}, nbs[4] = {1, 7, 60, 250};
+  const PetscInt     bss[5] = {1, 3, 4, 2, 5}, nbs[4] = {1, 7, 60, 250};
 
   PetscFunctionBegin;
-  for (int a = 0; a < 3; a++)
+  for (int a = 0; a < 5; a++)
     for (int k = 0; k < 4; k++)
       for (int o = 0; o < 3; o++) {
         Mat  A;
@@ -230,64 +230,65 @@ static PetscErrorCode TestInertia(void)
   const PetscReal    shifts[3] = {-8.0, -12.0, -16.0};
 
   PetscFunctionBegin;
-  for (int k = 0; k < 3; k++)
-    for (int o = 0; o < 2; o++) {
-      const PetscInt nb = 40, bs = 4, n = nb * bs;
-      Mat            A;
-      HylcChol       C;
-      PetscBool      ok;
-      PetscInt       nneg, npos, lneg = 0;
-      PetscScalar    b[160], x[160], r[160];
-      PetscBool      mumps;
-      /* diagonal dominance margin 0.5, shifted down: a few eigenvalues become negative */
-      PetscCall(RandomSPD(nb, bs, 0.05, 0.5, &seed, &A));
-      PetscCall(MatShift(A, shifts[k]));
-      PetscCall(MatGetFactorAvailable(A, MATSOLVERMUMPS, MAT_FACTOR_CHOLESKY, &mumps));
-      if (!mumps) {
-        printf("MUMPS not available: inertia test skipped\n");
-        PetscCall(MatDestroy(&A));
-        PetscFunctionReturn(PETSC_SUCCESS);
-      } else {
-        Mat           F;
-        MatFactorInfo info;
-        PetscInt      zn, zp;
-        PetscCall(MatFactorInfoInitialize(&info));
-        PetscCall(MatGetFactor(A, MATSOLVERMUMPS, MAT_FACTOR_CHOLESKY, &F));
-        PetscCall(MatMumpsSetIcntl(F, 24, 1));
-        PetscCall(MatCholeskyFactorSymbolic(F, A, NULL, &info));
-        PetscCall(MatCholeskyFactorNumeric(F, A, &info));
-        PetscCall(MatGetInertia(F, &lneg, &zn, &zp));
-        HYLC_CHECK(zn == 0, "test matrix singular");
-        PetscCall(MatDestroy(&F));
-      }
-      PetscCall(HylcCholCreate(&C));
-      PetscCall(HylcCholSetOrdering(C, o ? HYLC_CHOL_ORDERING_NATURAL : HYLC_CHOL_ORDERING_METIS));
-      PetscCall(HylcCholFactor(C, A, bs, &ok));
-      HYLC_CHECK(!ok || lneg == 0, "shift %g: %d negative eigenvalues but reported positive definite", (double)shifts[k], (int)lneg);
-      PetscCall(HylcCholSetIndefinite(C, PETSC_TRUE));
-      PetscCall(HylcCholFactor(C, A, bs, &ok));
-      HYLC_CHECK(ok, "shift %g: signed factorization failed", (double)shifts[k]);
-      if (ok) {
-        PetscCall(HylcCholGetInertia(C, &nneg, &npos));
-        HYLC_CHECK(nneg == lneg && npos == n - lneg, "shift %g: inertia (%d, %d), MUMPS %d negative", (double)shifts[k], (int)nneg, (int)npos, (int)lneg);
-        HYLC_CHECK(lneg > 0, "shift %g: the test matrix should be indefinite", (double)shifts[k]);
-        for (PetscInt i = 0; i < n; i++) b[i] = PetscCosReal(1.3 * i);
-        PetscCall(HylcCholSolve(C, b, x));
-        PetscReal rn = 0, bn2 = 0;
-        for (PetscInt i = 0; i < n; i++) {
-          r[i] = -b[i];
-          for (PetscInt j = 0; j < n; j++) {
-            PetscScalar v;
-            PetscCall(MatGetValue(A, i, j, &v));
-            r[i] += v * x[j];
-          }
-          rn += r[i] * r[i], bn2 += b[i] * b[i];
+  for (int a = 0; a < 2; a++) /* bs 4, then 3 */
+    for (int k = 0; k < 3; k++)
+      for (int o = 0; o < 2; o++) {
+        const PetscInt nb = 40, bs = a ? 3 : 4, n = nb * bs;
+        Mat            A;
+        HylcChol       C;
+        PetscBool      ok;
+        PetscInt       nneg, npos, lneg = 0;
+        PetscScalar    b[160], x[160], r[160];
+        PetscBool      mumps;
+        /* diagonal dominance margin 0.5, shifted down: a few eigenvalues become negative */
+        PetscCall(RandomSPD(nb, bs, 0.05, 0.5, &seed, &A));
+        PetscCall(MatShift(A, shifts[k]));
+        PetscCall(MatGetFactorAvailable(A, MATSOLVERMUMPS, MAT_FACTOR_CHOLESKY, &mumps));
+        if (!mumps) {
+          printf("MUMPS not available: inertia test skipped\n");
+          PetscCall(MatDestroy(&A));
+          PetscFunctionReturn(PETSC_SUCCESS);
+        } else {
+          Mat           F;
+          MatFactorInfo info;
+          PetscInt      zn, zp;
+          PetscCall(MatFactorInfoInitialize(&info));
+          PetscCall(MatGetFactor(A, MATSOLVERMUMPS, MAT_FACTOR_CHOLESKY, &F));
+          PetscCall(MatMumpsSetIcntl(F, 24, 1));
+          PetscCall(MatCholeskyFactorSymbolic(F, A, NULL, &info));
+          PetscCall(MatCholeskyFactorNumeric(F, A, &info));
+          PetscCall(MatGetInertia(F, &lneg, &zn, &zp));
+          HYLC_CHECK(zn == 0, "test matrix singular");
+          PetscCall(MatDestroy(&F));
         }
-        HYLC_CHECK(PetscSqrtReal(rn) <= 1e-10 * PetscSqrtReal(bn2), "shift %g: indefinite solve residual %g", (double)shifts[k], (double)PetscSqrtReal(rn / bn2));
+        PetscCall(HylcCholCreate(&C));
+        PetscCall(HylcCholSetOrdering(C, o ? HYLC_CHOL_ORDERING_NATURAL : HYLC_CHOL_ORDERING_METIS));
+        PetscCall(HylcCholFactor(C, A, bs, &ok));
+        HYLC_CHECK(!ok || lneg == 0, "shift %g: %d negative eigenvalues but reported positive definite", (double)shifts[k], (int)lneg);
+        PetscCall(HylcCholSetIndefinite(C, PETSC_TRUE));
+        PetscCall(HylcCholFactor(C, A, bs, &ok));
+        HYLC_CHECK(ok, "shift %g: signed factorization failed", (double)shifts[k]);
+        if (ok) {
+          PetscCall(HylcCholGetInertia(C, &nneg, &npos));
+          HYLC_CHECK(nneg == lneg && npos == n - lneg, "shift %g: inertia (%d, %d), MUMPS %d negative", (double)shifts[k], (int)nneg, (int)npos, (int)lneg);
+          HYLC_CHECK(lneg > 0, "shift %g: the test matrix should be indefinite", (double)shifts[k]);
+          for (PetscInt i = 0; i < n; i++) b[i] = PetscCosReal(1.3 * i);
+          PetscCall(HylcCholSolve(C, b, x));
+          PetscReal rn = 0, bn2 = 0;
+          for (PetscInt i = 0; i < n; i++) {
+            r[i] = -b[i];
+            for (PetscInt j = 0; j < n; j++) {
+              PetscScalar v;
+              PetscCall(MatGetValue(A, i, j, &v));
+              r[i] += v * x[j];
+            }
+            rn += r[i] * r[i], bn2 += b[i] * b[i];
+          }
+          HYLC_CHECK(PetscSqrtReal(rn) <= 1e-10 * PetscSqrtReal(bn2), "shift %g: indefinite solve residual %g", (double)shifts[k], (double)PetscSqrtReal(rn / bn2));
+        }
+        PetscCall(HylcCholDestroy(&C));
+        PetscCall(MatDestroy(&A));
       }
-      PetscCall(HylcCholDestroy(&C));
-      PetscCall(MatDestroy(&A));
-    }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
