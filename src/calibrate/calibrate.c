@@ -409,8 +409,8 @@ PetscErrorCode HylcCalibrateSetUp(HylcCalibrate C)
     PetscCheck(C->hasGrad, comm, PETSC_ERR_USER_INPUT, "-calibrate_stationary needs an in-plane base strain (II = 0); the target's base strain is (%g, %g, %g, %g, %g, %g)", (double)C->z[0], (double)C->z[1], (double)C->z[2], (double)C->z[3],
                (double)C->z[4], (double)C->z[5]);
     for (int k = 0; k < 2; k++)
-      PetscCheck(C->sscale[k] > 0, comm, PETSC_ERR_USER_INPUT, "-calibrate_stationary: no scale of dPsi/d%s (the target is not a table and has no row of the %s term with %s > 0, or its energy there equals the base strain's)", k ? "sy" : "sx", k ? "sy" : "sx",
-                 k ? "sy" : "sx");
+      PetscCheck(C->sscale[k] > 0, comm, PETSC_ERR_USER_INPUT, "-calibrate_stationary: no scale of dPsi/d%s (the target is not a table and has no row of the %s term with %s > 0, or its energy there equals the base strain's)", k ? "sy" : "sx",
+                 k ? "sy" : "sx", k ? "sy" : "sx");
     C->nres = C->m + 2;
   }
   PetscCall(PetscMalloc2(C->m * HYLC_CALIB_NRECORD, &C->rec0, C->m * HYLC_CALIB_NRECORD, &C->rec1));
@@ -675,7 +675,8 @@ PetscErrorCode HylcCalibrateView(HylcCalibrate C, PetscViewer viewer)
       if (C->sscale[k] > 0)
         snprintf(buf, sizeof(buf), "%-8s %4d   dPsi/d%s(z_b) / S %+.4f -> %+.4f            (S = target's dPsi/d%s at 5 %%: %.6g N/m; -calibrate_stationary %g)\n", k ? "stat_sy" : "stat_sx", 1, k ? "sy" : "sx", (double)(g0[k] / C->sscale[k]),
                  (double)(g1[k] / C->sscale[k]), k ? "sy" : "sx", (double)C->sscale[k], (double)C->wstat);
-      else snprintf(buf, sizeof(buf), "%-8s %4d   dPsi/d%s(z_b) %.6g -> %.6g N/m (no scale)\n", k ? "stat_sy" : "stat_sx", 1, k ? "sy" : "sx", (double)g0[k], (double)g1[k]);
+      else
+        snprintf(buf, sizeof(buf), "%-8s %4d   dPsi/d%s(z_b) %.6g -> %.6g N/m (no scale)\n", k ? "stat_sy" : "stat_sx", 1, k ? "sy" : "sx", (double)g0[k], (double)g1[k]);
       PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
     }
   }

@@ -169,7 +169,7 @@ PetscErrorCode HylcCalibrateSetMaxIterations(HylcCalibrate C, PetscInt n)
 }
 
 const char *const HylcCalibrateStationaryJacobians[] = {"gn", "fd", "HylcCalibrateStationaryJacobian", "HYLC_CALIBRATE_STATIONARY_", NULL};
-const char *const HylcCalibrateStarts[] = {"auto", "cold", "continue", "HylcCalibrateStart", "HYLC_CALIBRATE_START_", NULL};
+const char *const HylcCalibrateStarts[]              = {"auto", "cold", "continue", "HylcCalibrateStart", "HYLC_CALIBRATE_START_", NULL};
 
 /*@C
   HylcCalibrateSetStart - How the samples of an evaluation are solved (option -calibrate_start): auto (the
@@ -633,12 +633,12 @@ PetscErrorCode HylcCalibrateSetFromOptions(HylcCalibrate C)
   PetscCall(HylcOptionsReal("-calibrate_weight_zero", "Weight of the relative error of Psi at the base strain (the constant)", "HylcCalibrateSetTermWeight", wzero, &wzero, NULL));
   PetscCall(
       PetscOptionsString("-calibrate_weights", "Weights of terms, a comma list term=weight (e.g. sx=2,sa-sy=0.5; default 1 each; 'other' for file rows off the plan's axes)", "HylcCalibrateSetTermWeight", weights, weights, sizeof(weights), NULL));
-  PetscCall(HylcOptionsReal("-calibrate_stationary",
-                            "Weight w of the stationarity at the base strain: adds w ((dPsi/dsx / S_x)^2 + (dPsi/dsy / S_y)^2) to the objective, dPsi/ds in N/m, S the target's dPsi/ds at 5 % stretch (0: off)", "HylcCalibrateSetStationary",
-                            wstat, &wstat, NULL));
-  PetscCall(PetscOptionsEnum("-calibrate_stationary_jacobian",
-                             "Jacobian of the stationarity's residuals: fd (central differences in log p, two re-solves of the base sample per parameter not fixed) or gn (the energy terms' parts at the fixed state: no solve, leaves out the equilibrium's change)",
-                             "HylcCalibrateSetStationary", HylcCalibrateStationaryJacobians, sjac, &sjac, NULL));
+  PetscCall(HylcOptionsReal("-calibrate_stationary", "Weight w of the stationarity at the base strain: adds w ((dPsi/dsx / S_x)^2 + (dPsi/dsy / S_y)^2) to the objective, dPsi/ds in N/m, S the target's dPsi/ds at 5 % stretch (0: off)",
+                            "HylcCalibrateSetStationary", wstat, &wstat, NULL));
+  PetscCall(PetscOptionsEnum(
+      "-calibrate_stationary_jacobian",
+      "Jacobian of the stationarity's residuals: fd (central differences in log p, two re-solves of the base sample per parameter not fixed) or gn (the energy terms' parts at the fixed state: no solve, leaves out the equilibrium's change)",
+      "HylcCalibrateSetStationary", HylcCalibrateStationaryJacobians, sjac, &sjac, NULL));
   PetscCall(HylcOptionsReal("-calibrate_stationary_h", "Step in log p of the stationarity's central differences (-calibrate_stationary_jacobian fd)", "HylcCalibrateSetStationary", statH, &statH, NULL));
   PetscCall(PetscOptionsEnum("-calibrate_start",
                              "How each evaluation's samples are solved: auto (as the target was made: a samples file's own start; cold for a table, raw data or CSV), continue (each 1D term's half-line from zero outward, as hylc-sample) or cold "

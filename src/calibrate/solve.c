@@ -131,7 +131,8 @@ PetscErrorCode HylcCalibrateSolveSamples_Private(HylcCalibrate C, const PetscRea
         }
         if (ok)
           for (int k = 0; k < 2; k++) ob[HYLC_CALIB_REC_DSP + 2 * q + k] = (g[0][2 * k] - g[1][2 * k]) / (2 * C->statH);
-        else PetscCall(PetscInfo(C, "the base sample with %s x exp(+-%g) did not converge: its stationarity column is the Gauss-Newton one\n", HylcCalibrateParamNames[q], (double)C->statH));
+        else
+          PetscCall(PetscInfo(C, "the base sample with %s x exp(+-%g) did not converge: its stationarity column is the Gauss-Newton one\n", HylcCalibrateParamNames[q], (double)C->statH));
       }
     }
   }

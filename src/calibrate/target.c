@@ -269,7 +269,7 @@ static PetscErrorCode SampleTable(HylcCalibrate C)
   C->nrows = C->m;
   for (int k = 0; k < 2; k++) { /* the scale of the stationarity: the table's dPsi/ds_k at s_k = 5 % */
     PetscReal z[6] = {0, 0, 0, 0, 0, 0}, psi, g[6];
-    z[2 * k] = 0.05;
+    z[2 * k]       = 0.05;
     PetscCall(HylcMaterialEvaluate(mat, z, &psi, g, NULL));
     C->sscale[k] = PetscAbsReal(g[2 * k]);
   }

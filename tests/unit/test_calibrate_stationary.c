@@ -53,7 +53,7 @@ int main(int argc, char **argv)
   char          path[] = "/tmp/hylc-calibrate-stationary-XXXXXX.csv";
   HylcCalibrate C;
   PetscReal     p[4] = {1e6, 1e6, 4e5, 50}, ds[2], J[8], q[4], dp[2], dm[2], row[2] = {0, 0}, err = 0, a0, a1, a2, S;
-  const double  h    = 1e-4;
+  const double  h       = 1e-4;
   const int     verbose = getenv("HYLC_TEST_VERBOSE") != NULL;
   int           fd;
   FILE         *fp_;
