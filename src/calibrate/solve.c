@@ -553,6 +553,10 @@ static PetscErrorCode WriteYAML(HylcCalibrate C)
   fprintf(fp, "# pattern: %s%s\n", C->patLabel, C->refComputed ? " (its reference state computed with the initial parameters, kept fixed)" : "");
   fprintf(fp, "# target: %s (%s), %d samples\n", C->target, HylcCalibTargetTypes[C->targetResolved], (int)C->m);
   fprintf(fp, "# objective: %.6e -> %.6e in %d iterations\n", (double)C->f0, (double)C->f1, (int)C->its);
+  if (C->hasGrad && C->sscale[0] > 0 && C->sscale[1] > 0)
+    fprintf(fp, "# stationarity at the base strain (-calibrate_stationary %g): dPsi/dsx / S_x %+.4f -> %+.4f, dPsi/dsy / S_y %+.4f -> %+.4f (S the target's dPsi/ds at 5 %%: %.6g, %.6g N/m)\n", (double)C->wstat,
+            (double)(C->rec0[HYLC_CALIB_REC_DS] / C->sscale[0]), (double)(C->rec1[HYLC_CALIB_REC_DS] / C->sscale[0]), (double)(C->rec0[HYLC_CALIB_REC_DS + 1] / C->sscale[1]), (double)(C->rec1[HYLC_CALIB_REC_DS + 1] / C->sscale[1]),
+            (double)C->sscale[0], (double)C->sscale[1]);
   for (int j = 0; j < HYLC_CALIBRATE_NPARAM; j++) fprintf(fp, "# %-2s %-9s initial %.9g%s%s\n", HylcCalibrateParamNames[j], roles[C->role[j]], (double)C->p0[j], C->held[j] ? " HELD (not determined by the data)" : "", C->bound[j] ? " AT BOUND" : "");
   fprintf(fp, "# use after the pattern's options: -options_file config/<p>.yaml -options_file %s\n", C->output);
   fprintf(fp, "yarn_E:  %.9g   # bending Young's modulus (Pa)\n", (double)C->p[0]);
