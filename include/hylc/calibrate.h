@@ -83,6 +83,14 @@ PETSC_EXTERN PetscErrorCode HylcCalibrateSetSampleCounts(HylcCalibrate, PetscInt
 PETSC_EXTERN PetscErrorCode HylcCalibrateSetThinning(HylcCalibrate, PetscInt stride, PetscInt maxSamples);
 PETSC_EXTERN PetscErrorCode HylcCalibrateSetTermWeight(HylcCalibrate, const char term[], PetscReal w);
 PETSC_EXTERN PetscErrorCode HylcCalibrateSetReference(HylcCalibrate, HylcReferenceMode, const char output[]);
+/* -calibrate_stationary: weight w of the stationarity at the base strain, w ((dPsi/dsx / S_x)^2 + (dPsi/dsy / S_y)^2) (0: off);
+   its Jacobian by central differences with step h in log p (fd, -calibrate_stationary_jacobian fd) or the fixed-state parts (gn) */
+PETSC_EXTERN const char *const HylcCalibrateStationaryJacobians[];
+PETSC_EXTERN PetscErrorCode    HylcCalibrateSetStationary(HylcCalibrate, PetscReal w, PetscBool fd, PetscReal h);
+/* the scales S_x, S_y and dPsi/dsx, dPsi/dsy at the base strain before and after HylcCalibrateSolve (N/m; any may be NULL). Not collective. */
+PETSC_EXTERN PetscErrorCode HylcCalibrateGetStationarity(HylcCalibrate, PetscReal scale[], PetscReal before[], PetscReal after[]);
+/* at explicit p (no ties): dPsi/dsx, dPsi/dsy at the base strain and dlogp[2 q + k] = p_q d/dp_q of dPsi/ds_k at the fixed state. Collective. */
+PETSC_EXTERN PetscErrorCode HylcCalibrateEvaluateStationarity(HylcCalibrate, const PetscReal p[], PetscReal ds[], PetscReal dlogp[]);
 
 /* The objective f at explicit parameter values p = (E, Es, G, kc) (no ties applied) and its gradient
    grad[j] = df / dlog p_j by the envelope theorem (may be NULL); one solve per sample. *nfailed (may be

@@ -96,6 +96,9 @@ PetscErrorCode HylcCalibrateCreate(MPI_Comm comm, HylcCalibrate *out)
   C->fatol   = 1e-20;
   C->flatTol = 1e-4;
   C->start   = HYLC_CALIBRATE_START_AUTO;
+  C->wstat   = 0;
+  C->statFD  = PETSC_TRUE;
+  C->statH   = 1e-2;
   *out       = C;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -106,8 +109,11 @@ PetscErrorCode HylcCalibrateResetSamples_Private(HylcCalibrate C)
   PetscCall(PetscFree3(C->z, C->tpsi, C->term));
   PetscCall(PetscFree2(C->rec0, C->rec1));
   PetscCall(PetscFree2(C->ustart, C->uorder));
-  C->nunits = 0;
-  C->m      = 0;
+  C->nunits    = 0;
+  C->m         = 0;
+  C->nres      = 0;
+  C->hasGrad   = PETSC_FALSE;
+  C->sscale[0] = C->sscale[1] = 0;
   for (int t = 0; t < HYLC_CALIB_NTERM; t++) {
     C->nt[t]    = 0;
     C->range[t] = 0;
@@ -396,6 +402,17 @@ PetscErrorCode HylcCalibrateSetUp(HylcCalibrate C)
   PetscCall(HylcCalibrateReadTarget_Private(C)); /* checks the target's content */
   C->continued = (PetscBool)(C->start == HYLC_CALIBRATE_START_CONTINUE || (C->start == HYLC_CALIBRATE_START_AUTO && C->targetResolved == HYLC_CALIB_TARGET_SAMPLES && C->targetContinued));
   PetscCall(HylcCalibrateBuildUnits_Private(C));
+  /* the gradient at the base strain (in-plane only) and the stationarity's residuals */
+  C->hasGrad = (PetscBool)(C->z[3] == 0 && C->z[4] == 0 && C->z[5] == 0);
+  C->nres    = C->m;
+  if (C->wstat > 0) {
+    PetscCheck(C->hasGrad, comm, PETSC_ERR_USER_INPUT, "-calibrate_stationary needs an in-plane base strain (II = 0); the target's base strain is (%g, %g, %g, %g, %g, %g)", (double)C->z[0], (double)C->z[1], (double)C->z[2], (double)C->z[3],
+               (double)C->z[4], (double)C->z[5]);
+    for (int k = 0; k < 2; k++)
+      PetscCheck(C->sscale[k] > 0, comm, PETSC_ERR_USER_INPUT, "-calibrate_stationary: no scale of dPsi/d%s (the target is not a table and has no row of the %s term with %s > 0, or its energy there equals the base strain's)", k ? "sy" : "sx",
+                 k ? "sy" : "sx", k ? "sy" : "sx");
+    C->nres = C->m + 2;
+  }
   PetscCall(PetscMalloc2(C->m * HYLC_CALIB_NRECORD, &C->rec0, C->m * HYLC_CALIB_NRECORD, &C->rec1));
   /* the reference state: a generated pattern's depends on the parameters; it is computed once, with the
      initial values, and kept fixed (docs/calibrate.md) */
@@ -493,6 +510,90 @@ PetscErrorCode HylcCalibrateGetSize(HylcCalibrate C, PetscInt *m)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/*@C
+  HylcCalibrateGetStationarity - The gradient of Psi at the base strain z_b (dPsi/dsx, dPsi/dsy, N/m, by the
+  envelope theorem) before and after HylcCalibrateSolve(), and the scales S_x, S_y of the stationarity's
+  residuals (-calibrate_stationary; docs/calibrate.md). Zero where the base strain is not in-plane. Any
+  output may be NULL.
+
+  Not collective
+
+  Input Parameter:
+. C - the calibration, after HylcCalibrateSolve()
+
+  Output Parameters:
++ scale  - S_x, S_y (N/m; 0: no scale)
+. before - the gradient with the initial parameters
+- after  - the gradient with the calibrated parameters
+
+  Level: intermediate
+
+.seealso: HylcCalibrateSetStationary(), HylcCalibrateEvaluateStationarity()
+@*/
+PetscErrorCode HylcCalibrateGetStationarity(HylcCalibrate C, PetscReal scale[], PetscReal before[], PetscReal after[])
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
+  PetscCheck(C->solved, PetscObjectComm((PetscObject)C), PETSC_ERR_ARG_WRONGSTATE, "Call HylcCalibrateSolve() first");
+  for (int k = 0; k < 2; k++) {
+    if (scale) scale[k] = C->sscale[k];
+    if (before) before[k] = C->rec0[HYLC_CALIB_REC_DS + k];
+    if (after) after[k] = C->rec1[HYLC_CALIB_REC_DS + k];
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcCalibrateEvaluateStationarity - At explicit parameter values p = (E, Es, G, kc) (no ties applied): the
+  base sample solved on every rank, the gradient dPsi/dsx, dPsi/dsy at it (N/m) and the Jacobian the
+  stationarity's residuals use, dlogp[2 q + k] = p_q d/dp_q of dPsi/ds_k at the fixed state of the tile (the
+  energy term of p_q; the change of the equilibrium with p is left out). After HylcCalibrateSetUp(), with an
+  in-plane base strain.
+
+  Collective
+
+  Input Parameters:
++ C - the calibration
+- p - the 4 parameter values (> 0)
+
+  Output Parameters:
++ ds    - dPsi/dsx, dPsi/dsy at the base strain
+- dlogp - 8 values (may be NULL)
+
+  Level: advanced
+
+.seealso: HylcCalibrateGetStationarity(), HylcMicroGetStrainGradientParts()
+@*/
+PetscErrorCode HylcCalibrateEvaluateStationarity(HylcCalibrate C, const PetscReal p[], PetscReal ds[], PetscReal dlogp[])
+{
+  static const int PartOf[HYLC_CALIBRATE_NPARAM] = {1, 0, 2, 3};
+  HylcYarnModel    model                         = C->model;
+  HylcMicroResult  res;
+  PetscReal        g[3], dp[12];
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
+  PetscCheck(C->setupcalled, PetscObjectComm((PetscObject)C), PETSC_ERR_ARG_WRONGSTATE, "Call HylcCalibrateSetUp() first");
+  PetscCheck(C->hasGrad, PetscObjectComm((PetscObject)C), PETSC_ERR_ARG_WRONGSTATE, "The base strain is not in-plane: no gradient there");
+  model.E  = p[0];
+  model.Es = p[1];
+  model.G  = p[2];
+  model.kc = p[3];
+  PetscCall(HylcMicroSetPattern(C->micro, C->pat, &model));
+  PetscCall(HylcMicroSetUp(C->micro));
+  PetscCall(HylcMicroSolve(C->micro, C->z, &res));
+  PetscCheck(res.status == HYLC_MICRO_CONVERGED, PETSC_COMM_SELF, PETSC_ERR_NOT_CONVERGED, "The base sample did not converge (%s)", HylcMicroStatuses[res.status]);
+  PetscCall(HylcMicroGetStrainGradientParts(C->micro, g, dp));
+  ds[0] = g[0];
+  ds[1] = g[2];
+  if (dlogp)
+    for (int q = 0; q < HYLC_CALIBRATE_NPARAM; q++) {
+      dlogp[2 * q]     = dp[3 * PartOf[q]];
+      dlogp[2 * q + 1] = dp[3 * PartOf[q] + 2];
+    }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* normalised RMS of dPsi (model - target) over term t and the least-squares factor s of target onto model
    (target ~ s model) from a record array; rows that did not converge are left out */
 static void TermStats(HylcCalibrate C, const PetscReal rec[], PetscInt t, PetscReal *rms, PetscReal *scale, PetscInt *n)
@@ -567,6 +668,17 @@ PetscErrorCode HylcCalibrateView(HylcCalibrate C, PetscViewer viewer)
     const PetscReal pt = C->tpsi[0];
     snprintf(buf, sizeof(buf), "%-8s %4d   Psi(z_b)/target %.4f -> %.4f            (target %.6g J/m^2)\n", "zero", 1, (double)(C->rec0[0] / pt), (double)(C->rec1[0] / pt), (double)pt);
     PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
+  }
+  if (C->hasGrad) {
+    const PetscReal *g0 = C->rec0 + HYLC_CALIB_REC_DS, *g1 = C->rec1 + HYLC_CALIB_REC_DS;
+    for (int k = 0; k < 2; k++) {
+      if (C->sscale[k] > 0)
+        snprintf(buf, sizeof(buf), "%-8s %4d   dPsi/d%s(z_b) / S %+.4f -> %+.4f            (S = target's dPsi/d%s at 5 %%: %.6g N/m; -calibrate_stationary %g)\n", k ? "stat_sy" : "stat_sx", 1, k ? "sy" : "sx", (double)(g0[k] / C->sscale[k]),
+                 (double)(g1[k] / C->sscale[k]), k ? "sy" : "sx", (double)C->sscale[k], (double)C->wstat);
+      else
+        snprintf(buf, sizeof(buf), "%-8s %4d   dPsi/d%s(z_b) %.6g -> %.6g N/m (no scale)\n", k ? "stat_sy" : "stat_sx", 1, k ? "sy" : "sx", (double)g0[k], (double)g1[k]);
+      PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
+    }
   }
   for (PetscInt t = 1; t < HYLC_CALIB_NTERM; t++) {
     PetscReal r0, r1, s0, s1;

@@ -6,7 +6,9 @@
 
 #define HYLC_CALIB_NTERM   (HYLC_PLAN_NTERM + 1) /* the plan's 15 terms and "other" (rows of a file off the plan's axes) */
 #define HYLC_CALIB_OTHER   HYLC_PLAN_NTERM
-#define HYLC_CALIB_NRECORD 7 /* per sample and evaluation: psi, dpsi/dlog p (4), status, iterations */
+#define HYLC_CALIB_NRECORD 17 /* per sample and evaluation: psi, dpsi/dlog p (4), status, iterations, then (the base sample only) the gradient below */
+#define HYLC_CALIB_REC_DS  7  /* dPsi/dsx, dPsi/dsy at the base strain (N/m; II = 0 only, else 0) */
+#define HYLC_CALIB_REC_DSP 9  /* [9 + 2 q + k]: p_q d/dp_q of dPsi/ds_k at the fixed state (q = E, Es, G, kc; k = x, y) */
 
 typedef enum {
   HYLC_CALIB_TARGET_AUTO    = 0,
@@ -51,6 +53,12 @@ struct _p_HylcCalibrate {
   PetscInt stride, maxSamples;
   /* objective */
   PetscReal wzero, w[HYLC_CALIB_NTERM];
+  PetscReal wstat;    /* -calibrate_stationary: weight of (dPsi/ds_k(z_b) / S_k)^2, k = x, y (0: off) */
+  PetscReal sscale[2]; /* S_k: the target's dPsi/ds_k at s_k = 5 % (a table), or 2 dPsi_T / s of its row nearest 5 % (N/m; 0: none) */
+  PetscBool statFD;    /* -calibrate_stationary_jacobian fd: its Jacobian by central differences (re-solves of the base sample), else gn */
+  PetscReal statH;     /* the step in log p of those differences */
+  PetscBool hasGrad;   /* the base strain is in-plane: the gradient there is computed */
+  PetscInt  nres;      /* residuals: m, and 2 with the stationarity */
   /* the optimizer: TAO (options prefix calibrate_), created by HylcCalibrateGetTao(), and the options it
      is given before TaoSetFromOptions() (the -calibrate_tao_* options override them) and the tests hylc
      adds to TAO's (held flat directions, -calibrate_xtol, -calibrate_ftol, -calibrate_fatol) */
@@ -105,5 +113,6 @@ PETSC_INTERN PetscErrorCode HylcCalibrateReadFileTarget_Private(const char path[
 PETSC_INTERN const char *HylcCalibrateTermName_Private(PetscInt t);
 /* solve.c: one evaluation at explicit p (no ties): the records (m x HYLC_CALIB_NRECORD) on every rank */
 PETSC_INTERN PetscErrorCode HylcCalibrateSolveSamples_Private(HylcCalibrate, const PetscReal p[], PetscReal rec[]);
-/* solve.c: residuals r (m + 1; entry m is the base term) and Jacobian J ((m+1) x 4, row-major) from records */
+/* solve.c: residuals r (nres: entry 0 the base term, 1..m-1 the samples, m and m+1 the stationarity's) and
+   Jacobian J (nres x 4, row-major) from records */
 PETSC_INTERN PetscErrorCode HylcCalibrateResiduals_Private(HylcCalibrate, const PetscReal rec[], PetscReal r[], PetscReal J[], PetscReal *f, PetscInt *nfailed);

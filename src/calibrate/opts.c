@@ -168,7 +168,8 @@ PetscErrorCode HylcCalibrateSetMaxIterations(HylcCalibrate C, PetscInt n)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-const char *const HylcCalibrateStarts[] = {"auto", "cold", "continue", "HylcCalibrateStart", "HYLC_CALIBRATE_START_", NULL};
+const char *const HylcCalibrateStationaryJacobians[] = {"gn", "fd", "HylcCalibrateStationaryJacobian", "HYLC_CALIBRATE_STATIONARY_", NULL};
+const char *const HylcCalibrateStarts[]              = {"auto", "cold", "continue", "HylcCalibrateStart", "HYLC_CALIBRATE_START_", NULL};
 
 /*@C
   HylcCalibrateSetStart - How the samples of an evaluation are solved (option -calibrate_start): auto (the
@@ -197,6 +198,42 @@ PetscErrorCode HylcCalibrateSetStart(HylcCalibrate C, HylcCalibrateStart start)
   PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
   PetscCheck(start >= HYLC_CALIBRATE_START_AUTO && start <= HYLC_CALIBRATE_START_CONTINUE, PetscObjectComm((PetscObject)C), PETSC_ERR_ARG_OUTOFRANGE, "-calibrate_start: unknown start %d (auto, cold or continue)", (int)start);
   C->start = start;
+  PetscCall(HylcCalibrateResetSamples_Private(C));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcCalibrateSetStationary - Requires the tile to be stationary at the base strain (option
+  -calibrate_stationary): adds the residuals sqrt(w) dPsi/ds_k(z_b) / S_k, k = x, y, so that the objective
+  gains w ((dPsi/dsx / S_x)^2 + (dPsi/dsy / S_y)^2); S_k is the target's dPsi/ds_k at s_k = 5 % (a table; for
+  a file target 2 dPsi_T / s_k of its row of the 1D term nearest to s_k = 5 %). The gradient is the envelope
+  theorem's at the equilibrium. Its Jacobian (option -calibrate_stationary_jacobian): fd (the default), central
+  differences in log p with step h (-calibrate_stationary_h, 1e-2), each a cold re-solve of the base sample
+  (two per parameter not fixed, per evaluation); or gn, the energy terms' parts at the fixed state, which
+  costs no solve but leaves out the change of the equilibrium with the parameters (a Gauss-Newton
+  approximation that measured poor: docs/calibrate.md).
+
+  Not collective
+
+  Input Parameters:
++ C  - the calibration
+. w  - the weight (>= 0; 0: off, the default)
+. fd - PETSC_TRUE: the Jacobian by central differences; PETSC_FALSE: the Gauss-Newton one
+- h  - the step in log p of the differences (0 < h <= 1)
+
+  Level: intermediate
+
+.seealso: HylcCalibrateGetStationarity(), HylcCalibrateEvaluateStationarity()
+@*/
+PetscErrorCode HylcCalibrateSetStationary(HylcCalibrate C, PetscReal w, PetscBool fd, PetscReal h)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
+  PetscCheck(w >= 0 && !PetscIsInfOrNanReal(w), PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "-calibrate_stationary must be a finite number >= 0, got %g", (double)w);
+  PetscCheck(h > 0 && h <= 1, PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "-calibrate_stationary_h must be in (0, 1], got %g", (double)h);
+  C->wstat  = w;
+  C->statFD = fd;
+  C->statH  = h;
   PetscCall(HylcCalibrateResetSamples_Private(C));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -506,6 +543,8 @@ PetscErrorCode HylcCalibrateTaoSetFromOptions_Private(HylcCalibrate C)
 . -sampler_family, -sampler_range_<c> - the plan's ranges (table target), as hylc-sample (HylcCalibrateSetPlanRanges())
 . -calibrate_stride <1>, -calibrate_max_samples <0> - thinning of a file target (HylcCalibrateSetThinning())
 . -calibrate_weight_zero <1>, -calibrate_weights <t=w,...> - weights of Psi(z_b) and of the terms (HylcCalibrateSetTermWeight())
+. -calibrate_stationary <0>        - weight of the stationarity at the base strain, (dPsi/ds_k / S_k)^2 for k = x, y (HylcCalibrateSetStationary())
+. -calibrate_stationary_jacobian <fd>, -calibrate_stationary_h <1e-2> - its Jacobian: central differences over re-solves (fd) or the fixed-state parts (gn) (HylcCalibrateSetStationary())
 . -calibrate_start <auto>          - auto (as the target was made), continue (each 1D term's half-line from zero outward) or cold (HylcCalibrateSetStart())
 . -calibrate_max_it <30>            - iterations of the optimizer (TAO's maximum; HylcCalibrateSetMaxIterations())
 . -calibrate_lambda <1e-3>          - Levenberg-Marquardt damping of TAOBRGN (HylcCalibrateSetDamping())
@@ -523,9 +562,9 @@ PetscErrorCode HylcCalibrateSetFromOptions(HylcCalibrate C)
   MPI_Comm       comm        = PetscObjectComm((PetscObject)C);
   char           params[256] = "", tie[256] = "G", terms[512] = "", weights[1024] = "", target[PETSC_MAX_PATH_LEN], output[PETSC_MAX_PATH_LEN], dump[PETSC_MAX_PATH_LEN], refout[PETSC_MAX_PATH_LEN];
   PetscBool      set, pset, tset, ttset;
-  PetscEnum      tt = (PetscEnum)C->targetType, rm = (PetscEnum)C->refmode, start = (PetscEnum)C->start;
+  PetscEnum      sjac = C->statFD ? 1 : 0, tt = (PetscEnum)C->targetType, rm = (PetscEnum)C->refmode, start = (PetscEnum)C->start;
   PetscInt       n1 = C->n1, n2 = C->n2, stride = C->stride, maxSamples = C->maxSamples, maxIt = C->maxIt;
-  PetscReal      wzero = C->wzero, lambda = C->lambda, xtol = C->xtol, ftol = C->ftol, fatol = C->fatol, flatTol = C->flatTol;
+  PetscReal      wzero = C->wzero, wstat = C->wstat, statH = C->statH, lambda = C->lambda, xtol = C->xtol, ftol = C->ftol, fatol = C->fatol, flatTol = C->flatTol;
   HylcPlanRanges ranges = C->ranges;
   HylcPattern    pat;
   HylcMicro      micro;
@@ -594,6 +633,13 @@ PetscErrorCode HylcCalibrateSetFromOptions(HylcCalibrate C)
   PetscCall(HylcOptionsReal("-calibrate_weight_zero", "Weight of the relative error of Psi at the base strain (the constant)", "HylcCalibrateSetTermWeight", wzero, &wzero, NULL));
   PetscCall(
       PetscOptionsString("-calibrate_weights", "Weights of terms, a comma list term=weight (e.g. sx=2,sa-sy=0.5; default 1 each; 'other' for file rows off the plan's axes)", "HylcCalibrateSetTermWeight", weights, weights, sizeof(weights), NULL));
+  PetscCall(HylcOptionsReal("-calibrate_stationary", "Weight w of the stationarity at the base strain: adds w ((dPsi/dsx / S_x)^2 + (dPsi/dsy / S_y)^2) to the objective, dPsi/ds in N/m, S the target's dPsi/ds at 5 % stretch (0: off)",
+                            "HylcCalibrateSetStationary", wstat, &wstat, NULL));
+  PetscCall(PetscOptionsEnum(
+      "-calibrate_stationary_jacobian",
+      "Jacobian of the stationarity's residuals: fd (central differences in log p, two re-solves of the base sample per parameter not fixed) or gn (the energy terms' parts at the fixed state: no solve, leaves out the equilibrium's change)",
+      "HylcCalibrateSetStationary", HylcCalibrateStationaryJacobians, sjac, &sjac, NULL));
+  PetscCall(HylcOptionsReal("-calibrate_stationary_h", "Step in log p of the stationarity's central differences (-calibrate_stationary_jacobian fd)", "HylcCalibrateSetStationary", statH, &statH, NULL));
   PetscCall(PetscOptionsEnum("-calibrate_start",
                              "How each evaluation's samples are solved: auto (as the target was made: a samples file's own start; cold for a table, raw data or CSV), continue (each 1D term's half-line from zero outward, as hylc-sample) or cold "
                              "(every sample from the reference state, the paper's procedure)",
@@ -644,6 +690,7 @@ PetscErrorCode HylcCalibrateSetFromOptions(HylcCalibrate C)
   PetscCall(HylcCalibrateSetSampleCounts(C, n1, n2));
   PetscCall(HylcCalibrateSetThinning(C, stride, maxSamples));
   PetscCall(HylcCalibrateSetTermWeight(C, "zero", wzero));
+  PetscCall(HylcCalibrateSetStationary(C, wstat, (PetscBool)(sjac == 1), statH));
   if (weights[0]) {
     char *tok, *save = NULL;
     for (tok = strtok_r(weights, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {

@@ -89,7 +89,51 @@ PetscErrorCode HylcCalibrateSolveSamples_Private(HylcCalibrate C, const PetscRea
       for (int r = 0; r < HYLC_CALIBRATE_NPARAM; r++) o[1 + r] = res.parts[PartOf[r]] / area; /* dPsi/dlog p_r */
       o[5] = (PetscReal)res.status;
       o[6] = (PetscReal)res.iterations;
-      o[7] = (PetscReal)k;
+      for (int r = HYLC_CALIB_REC_DS; r < HYLC_CALIB_NRECORD; r++) o[r] = 0;
+      if (k == 0 && C->hasGrad && res.status == HYLC_MICRO_CONVERGED) { /* the gradient at the base strain, split by parameter */
+        PetscReal ds[3], dp[12];
+        PetscCall(HylcMicroGetStrainGradientParts(C->micro, ds, dp));
+        o[HYLC_CALIB_REC_DS]     = ds[0];
+        o[HYLC_CALIB_REC_DS + 1] = ds[2];
+        for (int q = 0; q < HYLC_CALIBRATE_NPARAM; q++) {
+          o[HYLC_CALIB_REC_DSP + 2 * q]     = dp[3 * PartOf[q]];
+          o[HYLC_CALIB_REC_DSP + 2 * q + 1] = dp[3 * PartOf[q] + 2];
+        }
+      }
+      o[HYLC_CALIB_NRECORD] = (PetscReal)k;
+    }
+  }
+  /* -calibrate_stationary_jacobian fd: the stationarity's Jacobian columns (the parameters not fixed) by
+     central differences in log p, each a cold re-solve of the base sample: they include the change of the
+     equilibrium with p that the Gauss-Newton columns above leave out */
+  if (C->wstat > 0 && C->statFD) {
+    PetscReal *ob = NULL;
+    for (PetscInt i = 0; i < nloc; i++)
+      if (buf[i * NB + HYLC_CALIB_NRECORD] == 0) ob = buf + i * NB;
+    if (ob && ob[5] == 0) {
+      for (int q = 0; q < HYLC_CALIBRATE_NPARAM; q++) {
+        PetscReal       g[2][3];
+        HylcMicroResult res;
+        PetscBool       ok = PETSC_TRUE;
+        if (C->role[q] == HYLC_CALIBRATE_FIXED) continue;
+        for (int sg = 0; sg < 2; sg++) {
+          HylcYarnModel mq = model;
+          PetscReal    *pq = q == 0 ? &mq.E : q == 1 ? &mq.Es : q == 2 ? &mq.G : &mq.kc;
+          *pq *= PetscExpReal(sg ? -C->statH : C->statH);
+          PetscCall(HylcMicroSetPattern(C->micro, C->pat, &mq));
+          PetscCall(HylcMicroSetUp(C->micro));
+          PetscCall(HylcMicroSolveContinued(C->micro, C->z, NULL, &res, NULL, NULL));
+          if (res.status != HYLC_MICRO_CONVERGED) {
+            ok = PETSC_FALSE;
+            break;
+          }
+          PetscCall(HylcMicroGetStrainGradient(C->micro, g[sg]));
+        }
+        if (ok)
+          for (int k = 0; k < 2; k++) ob[HYLC_CALIB_REC_DSP + 2 * q + k] = (g[0][2 * k] - g[1][2 * k]) / (2 * C->statH);
+        else
+          PetscCall(PetscInfo(C, "the base sample with %s x exp(+-%g) did not converge: its stationarity column is the Gauss-Newton one\n", HylcCalibrateParamNames[q], (double)C->statH));
+      }
     }
   }
   PetscCall(PetscFree2(y, u));
@@ -150,6 +194,16 @@ PetscErrorCode HylcCalibrateResiduals_Private(HylcCalibrate C, const PetscReal r
     }
     s += r[i] * r[i];
   }
+  /* the stationarity at the base strain: sqrt(w) dPsi/ds_k(z_b) / S_k, its Jacobian from the records: the
+     energy terms' parts at the fixed state of the tile (gn: the change of the equilibrium with p left out)
+     or central differences over re-solves (fd) */
+  for (PetscInt k = 0; k < C->nres - C->m; k++) {
+    const PetscInt  i = C->m + k;
+    const PetscReal c = PetscSqrtReal(C->wstat) / C->sscale[k];
+    r[i]              = b[5] != 0 ? 0 : c * b[HYLC_CALIB_REC_DS + k];
+    for (PetscInt q = 0; q < NP; q++) J[i * NP + q] = b[5] != 0 ? 0 : c * b[HYLC_CALIB_REC_DSP + 2 * q + k];
+    s += r[i] * r[i];
+  }
   *f = b[5] != 0 ? PETSC_INFINITY : s;
   if (nfailed) *nfailed = nf;
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -181,13 +235,13 @@ PetscErrorCode HylcCalibrateEvaluate(HylcCalibrate C, const PetscReal p[], Petsc
   PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
   PetscCheck(C->setupcalled, PetscObjectComm((PetscObject)C), PETSC_ERR_ARG_WRONGSTATE, "Call HylcCalibrateSetUp() first");
   for (int q = 0; q < HYLC_CALIBRATE_NPARAM; q++) PetscCheck(p[q] > 0, PetscObjectComm((PetscObject)C), PETSC_ERR_ARG_OUTOFRANGE, "Parameter %s = %g must be positive", HylcCalibrateParamNames[q], (double)p[q]);
-  PetscCall(PetscMalloc3(C->m * HYLC_CALIB_NRECORD, &rec, C->m, &r, C->m * HYLC_CALIBRATE_NPARAM, &J));
+  PetscCall(PetscMalloc3(C->m * HYLC_CALIB_NRECORD, &rec, C->nres, &r, C->nres * HYLC_CALIBRATE_NPARAM, &J));
   PetscCall(HylcCalibrateSolveSamples_Private(C, p, rec));
   PetscCall(HylcCalibrateResiduals_Private(C, rec, r, J, f, nfailed));
   if (grad)
     for (int q = 0; q < HYLC_CALIBRATE_NPARAM; q++) {
       grad[q] = 0;
-      for (PetscInt i = 0; i < C->m; i++) grad[q] += 2 * r[i] * J[i * HYLC_CALIBRATE_NPARAM + q];
+      for (PetscInt i = 0; i < C->nres; i++) grad[q] += 2 * r[i] * J[i * HYLC_CALIBRATE_NPARAM + q];
     }
   PetscCall(PetscFree3(rec, r, J));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -253,7 +307,7 @@ static void SymEig(int n, const PetscReal A0[], PetscReal ev[], PetscReal V[])
 /* columns of the active parameters (E's column also carries the tied parameters) */
 static void ActiveJacobian(HylcCalibrate C, const PetscReal J[], const int act[], int na, PetscReal Jc[])
 {
-  for (PetscInt i = 0; i < C->m; i++)
+  for (PetscInt i = 0; i < C->nres; i++)
     for (int a = 0; a < na; a++) {
       const int j = act[a];
       PetscReal v = J[i * HYLC_CALIBRATE_NPARAM + j];
@@ -337,7 +391,7 @@ static PetscErrorCode FormResidual(Tao tao, Vec X, Vec F, void *ctx)
   (void)tao;
   PetscCall(EvalAt(c, X));
   PetscCall(VecGetArrayWrite(F, &f));
-  for (PetscInt i = 0; i < c->C->m; i++) f[i] = c->f < PETSC_INFINITY ? c->r[i] : PETSC_INFINITY;
+  for (PetscInt i = 0; i < c->C->nres; i++) f[i] = c->f < PETSC_INFINITY ? c->r[i] : PETSC_INFINITY;
   PetscCall(VecRestoreArrayWrite(F, &f));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -359,7 +413,7 @@ static PetscErrorCode FormJacobian(Tao tao, Vec X, Mat Jm, Mat Jpre, void *ctx)
   PetscCall(MatDenseGetLDA(Jm, &lda));
   PetscCall(MatDenseGetArrayWrite(Jm, &v));
   for (int a = 0; a < c->na; a++)
-    for (PetscInt i = 0; i < C->m; i++) v[i + a * lda] = C->held[c->act[a]] ? 0 : c->Jc[i * c->na + a];
+    for (PetscInt i = 0; i < C->nres; i++) v[i + a * lda] = C->held[c->act[a]] ? 0 : c->Jc[i * c->na + a];
   PetscCall(MatDenseRestoreArrayWrite(Jm, &v));
   PetscCall(MatAssemblyBegin(Jm, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(Jm, MAT_FINAL_ASSEMBLY));
@@ -383,7 +437,7 @@ static PetscErrorCode FormObjectiveGradient(Tao tao, Vec X, PetscReal *f, Vec G,
   for (int a = 0; a < c->na; a++) {
     g[a] = 0;
     if (!C->held[c->act[a]])
-      for (PetscInt i = 0; i < C->m; i++) g[a] += c->Jc[i * c->na + a] * c->r[i];
+      for (PetscInt i = 0; i < C->nres; i++) g[a] += c->Jc[i * c->na + a] * c->r[i];
   }
   PetscCall(VecRestoreArrayWrite(G, &g));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -412,7 +466,7 @@ static PetscErrorCode HoldFlat(CalibTao *c, PetscBool *left)
     for (int a = 0; a < na; a++)
       for (int b = 0; b < na; b++) {
         A[a * na + b] = 0;
-        for (PetscInt i = 0; i < C->m; i++) A[a * na + b] += c->Jc[i * na + a] * c->Jc[i * na + b];
+        for (PetscInt i = 0; i < C->nres; i++) A[a * na + b] += c->Jc[i * na + a] * c->Jc[i * na + b];
       }
     SymEig(na, A, ev, V);
     if (PetscSqrtReal(PetscMax(ev[0], 0)) >= C->flatTol) break;
@@ -499,6 +553,10 @@ static PetscErrorCode WriteYAML(HylcCalibrate C)
   fprintf(fp, "# pattern: %s%s\n", C->patLabel, C->refComputed ? " (its reference state computed with the initial parameters, kept fixed)" : "");
   fprintf(fp, "# target: %s (%s), %d samples\n", C->target, HylcCalibTargetTypes[C->targetResolved], (int)C->m);
   fprintf(fp, "# objective: %.6e -> %.6e in %d iterations\n", (double)C->f0, (double)C->f1, (int)C->its);
+  if (C->hasGrad && C->sscale[0] > 0 && C->sscale[1] > 0)
+    fprintf(fp, "# stationarity at the base strain (-calibrate_stationary %g): dPsi/dsx / S_x %+.4f -> %+.4f, dPsi/dsy / S_y %+.4f -> %+.4f (S the target's dPsi/ds at 5 %%: %.6g, %.6g N/m)\n", (double)C->wstat,
+            (double)(C->rec0[HYLC_CALIB_REC_DS] / C->sscale[0]), (double)(C->rec1[HYLC_CALIB_REC_DS] / C->sscale[0]), (double)(C->rec0[HYLC_CALIB_REC_DS + 1] / C->sscale[1]), (double)(C->rec1[HYLC_CALIB_REC_DS + 1] / C->sscale[1]),
+            (double)C->sscale[0], (double)C->sscale[1]);
   for (int j = 0; j < HYLC_CALIBRATE_NPARAM; j++) fprintf(fp, "# %-2s %-9s initial %.9g%s%s\n", HylcCalibrateParamNames[j], roles[C->role[j]], (double)C->p0[j], C->held[j] ? " HELD (not determined by the data)" : "", C->bound[j] ? " AT BOUND" : "");
   fprintf(fp, "# use after the pattern's options: -options_file config/<p>.yaml -options_file %s\n", C->output);
   fprintf(fp, "yarn_E:  %.9g   # bending Young's modulus (Pa)\n", (double)C->p[0]);
@@ -577,7 +635,7 @@ PetscErrorCode HylcCalibrateSolve(HylcCalibrate C)
     C->held[j] = C->bound[j] = PETSC_FALSE;
     if (C->role[j] == HYLC_CALIBRATE_FREE) c.act[c.na++] = j;
   }
-  PetscCall(PetscMalloc4(m * HYLC_CALIB_NRECORD, &c.rec, m, &c.r, m * NP, &c.J, m * NP, &c.Jc));
+  PetscCall(PetscMalloc4(m * HYLC_CALIB_NRECORD, &c.rec, C->nres, &c.r, C->nres * NP, &c.J, C->nres * NP, &c.Jc));
   {
     char line[256] = "";
     for (int j = 0; j < NP; j++) {
@@ -607,8 +665,8 @@ PetscErrorCode HylcCalibrateSolve(HylcCalibrate C)
   PetscCall(VecAssemblyEnd(c.XL));
   PetscCall(VecAssemblyBegin(c.XU));
   PetscCall(VecAssemblyEnd(c.XU));
-  PetscCall(VecCreateSeq(PETSC_COMM_SELF, m, &F));
-  PetscCall(MatCreateSeqDense(PETSC_COMM_SELF, m, c.na, NULL, &Jm));
+  PetscCall(VecCreateSeq(PETSC_COMM_SELF, C->nres, &F));
+  PetscCall(MatCreateSeqDense(PETSC_COMM_SELF, C->nres, c.na, NULL, &Jm));
   PetscCall(TaoSetSolution(tao, X));
   PetscCall(TaoSetVariableBounds(tao, c.XL, c.XU));
   PetscCall(TaoSetResidualRoutine(tao, F, FormResidual, &c));

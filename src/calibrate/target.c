@@ -267,6 +267,12 @@ static PetscErrorCode SampleTable(HylcCalibrate C)
     PetscCall(HylcMaterialEvaluate(mat, C->z + 6 * k, &C->tpsi[k], NULL, NULL));
   }
   C->nrows = C->m;
+  for (int k = 0; k < 2; k++) { /* the scale of the stationarity: the table's dPsi/ds_k at s_k = 5 % */
+    PetscReal z[6] = {0, 0, 0, 0, 0, 0}, psi, g[6];
+    z[2 * k]       = 0.05;
+    PetscCall(HylcMaterialEvaluate(mat, z, &psi, g, NULL));
+    C->sscale[k] = PetscAbsReal(g[2 * k]);
+  }
   PetscCall(HylcMaterialDestroy(&mat));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -374,6 +380,17 @@ PetscErrorCode HylcCalibrateReadTarget_Private(HylcCalibrate C)
       if (C->term[i]) C->range[C->term[i]] = PetscMax(C->range[C->term[i]], d);
     }
     for (PetscInt t = 1; t < HYLC_CALIB_NTERM; t++) rmax = PetscMax(rmax, C->range[t]);
+    if (kind != HYLC_CALIB_TARGET_TABLE) /* the stationarity's scale S_k without a table: 2 dPsi_T / s_k of the row of the 1D term s_k > 0 nearest to 5 % (the slope there of a quadratic) */
+      for (int k = 0; k < 2; k++) {
+        PetscReal best = PETSC_MAX_REAL;
+        C->sscale[k]   = 0;
+        for (PetscInt i = 1; i < C->m; i++) {
+          const PetscReal sk = C->z[6 * i + 2 * k];
+          if (C->term[i] != (k ? 3 : 1) || sk <= 0 || PetscAbsReal(sk - 0.05) >= best) continue;
+          best         = PetscAbsReal(sk - 0.05);
+          C->sscale[k] = PetscAbsReal(2 * (C->tpsi[i] - C->tpsi[0]) / sk);
+        }
+      }
     PetscCheck(C->m > 1 && rmax > 0, comm, PETSC_ERR_USER_INPUT, "%s: the target has no sample with an energy different from the base strain's (%" PetscInt_FMT " samples)", C->target, C->m);
     for (PetscInt t = 1; t < HYLC_CALIB_NTERM; t++)
       if (C->nt[t] && C->range[t] == 0) {

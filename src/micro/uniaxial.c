@@ -6,6 +6,53 @@
 
 const char *const HylcUniaxialDirections[] = {"x", "y", "HylcUniaxialDirection", "HYLC_UNIAXIAL_", NULL};
 
+/* dPsi/dz_j (j = sx, sa, sy) of the energy terms of mask at the state of the last solve, with the multipliers
+   of those terms' gradient: linear in the terms, so the terms' results add up to all terms' */
+static PetscErrorCode StrainGradientOfTerms(HylcMicro M, int mask, PetscReal dpsi[3])
+{
+  PetscInt         m;
+  const PetscReal *A, *AAtinv;
+  PetscReal        parts[4], dEdz[3], *dcdz, *Ag, area;
+
+  PetscFunctionBegin;
+  PetscCall(HylcPeriodicGetConstraints(M->P, &m, &A, NULL, &AAtinv));
+  PetscCall(PetscMalloc2(3 * m, &dcdz, 2 * m, &Ag));
+  PetscCall(HylcPeriodicEvaluateStrainDerivative(M->P, mask, parts, M->gw, dEdz, dcdz));
+  for (PetscInt i = 0; i < m; i++) {
+    PetscReal t = 0;
+    for (PetscInt k = 0; k < M->ny; k++) t += A[i * M->ny + k] * M->gw[k];
+    Ag[i] = t;
+  }
+  for (PetscInt i = 0; i < m; i++) { /* lambda = -(A A^T)^-1 A g */
+    PetscReal t = 0;
+    for (PetscInt k = 0; k < m; k++) t -= AAtinv[i * m + k] * Ag[k];
+    Ag[m + i] = t;
+  }
+  PetscCall(HylcPeriodicGetArea(M->P, &area));
+  for (int j = 0; j < 3; j++) {
+    PetscReal t = dEdz[j];
+    for (PetscInt i = 0; i < m; i++) t += Ag[m + i] * dcdz[3 * i + j];
+    dpsi[j] = t / area;
+  }
+  PetscCall(PetscFree2(dcdz, Ag));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* the state of the last solve set in the tile, which must have been at II = 0 */
+static PetscErrorCode StrainGradientSetState(HylcMicro M, const char caller[])
+{
+  const HylcMacroStrain *ms;
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
+  PetscCheck(M->X && M->P && M->setupcalled, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE, "%s: no solve yet", caller);
+  PetscCall(HylcPeriodicGetMacroStrain(M->P, &ms));
+  PetscCheck(ms->z[3] == 0 && ms->z[4] == 0 && ms->z[5] == 0, PETSC_COMM_SELF, PETSC_ERR_SUP, "%s: implemented for in-plane strains only (II = 0), the last solve had II = (%g, %g, %g)", caller, ms->z[3], ms->z[4], ms->z[5]);
+  PetscCall(HylcMicroToY_Private(M, M->X, M->yw));
+  PetscCall(HylcPeriodicSetState(M->P, M->yw));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /*@C
   HylcMicroGetStrainGradient - The gradient of the equilibrium energy density Psi with respect to the
   in-plane strains (sx, sa, sy) at the state of the last solve, by the envelope theorem: at an equilibrium
@@ -30,40 +77,42 @@ const char *const HylcUniaxialDirections[] = {"x", "y", "HylcUniaxialDirection",
 @*/
 PetscErrorCode HylcMicroGetStrainGradient(HylcMicro M, PetscReal dpsi[3])
 {
-  PetscInt         m;
-  const PetscReal *A, *AAtinv;
-  PetscReal        parts[4], dEdz[3], *dcdz, *Ag, area;
+  PetscFunctionBegin;
+  PetscCall(StrainGradientSetState(M, "HylcMicroGetStrainGradient"));
+  PetscCall(StrainGradientOfTerms(M, HYLC_TERM_ALL, dpsi));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcMicroGetStrainGradientParts - HylcMicroGetStrainGradient() split by energy term: the gradient of
+  each term (stretch, bend, twist, contact) at the state of the last solve, with the constraint multipliers
+  of that term's own gradient. The terms add up to the gradient. Each term is linear in its modulus
+  (E_s, E, G, k_c), so dparts[3 k + j] is p_k d/dp_k of dPsi/dz_j at the fixed state of the tile: the
+  change of the gradient with a parameter without the change of the equilibrium (hylc-calibrate's
+  -calibrate_stationary uses it as a Gauss-Newton Jacobian). No solve. Not collective.
+
+  Input Parameter:
+. M - the solver, after a HylcMicroSolve() at a strain with II = 0
+
+  Output Parameters:
++ dpsi   - dPsi/dsx, dPsi/dsa, dPsi/dsy (J/m^2 = N/m)
+- dparts - 12 values, dparts[3 k + j]: term k (0 stretch, 1 bend, 2 twist, 3 contact), strain j
+
+  Level: advanced
+
+.seealso: HylcMicroGetStrainGradient()
+@*/
+PetscErrorCode HylcMicroGetStrainGradientParts(HylcMicro M, PetscReal dpsi[3], PetscReal dparts[12])
+{
+  static const int masks[4] = {HYLC_TERM_STRETCH, HYLC_TERM_BEND, HYLC_TERM_TWIST, HYLC_TERM_CONTACT};
 
   PetscFunctionBegin;
-  PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
-  PetscCheck(M->X && M->P && M->setupcalled, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE, "HylcMicroGetStrainGradient: no solve yet");
-  {
-    const HylcMacroStrain *ms;
-    PetscCall(HylcPeriodicGetMacroStrain(M->P, &ms));
-    PetscCheck(ms->z[3] == 0 && ms->z[4] == 0 && ms->z[5] == 0, PETSC_COMM_SELF, PETSC_ERR_SUP, "HylcMicroGetStrainGradient: implemented for in-plane strains only (II = 0), the last solve had II = (%g, %g, %g)", ms->z[3], ms->z[4], ms->z[5]);
+  PetscCall(StrainGradientSetState(M, "HylcMicroGetStrainGradientParts"));
+  for (int j = 0; j < 3; j++) dpsi[j] = 0;
+  for (int k = 0; k < 4; k++) {
+    PetscCall(StrainGradientOfTerms(M, masks[k], dparts + 3 * k));
+    for (int j = 0; j < 3; j++) dpsi[j] += dparts[3 * k + j];
   }
-  PetscCall(HylcMicroToY_Private(M, M->X, M->yw));
-  PetscCall(HylcPeriodicSetState(M->P, M->yw));
-  PetscCall(HylcPeriodicGetConstraints(M->P, &m, &A, NULL, &AAtinv));
-  PetscCall(PetscMalloc2(3 * m, &dcdz, 2 * m, &Ag));
-  PetscCall(HylcPeriodicEvaluateStrainDerivative(M->P, HYLC_TERM_ALL, parts, M->gw, dEdz, dcdz));
-  for (PetscInt i = 0; i < m; i++) {
-    PetscReal t = 0;
-    for (PetscInt k = 0; k < M->ny; k++) t += A[i * M->ny + k] * M->gw[k];
-    Ag[i] = t;
-  }
-  for (PetscInt i = 0; i < m; i++) { /* lambda = -(A A^T)^-1 A g */
-    PetscReal t = 0;
-    for (PetscInt k = 0; k < m; k++) t -= AAtinv[i * m + k] * Ag[k];
-    Ag[m + i] = t;
-  }
-  PetscCall(HylcPeriodicGetArea(M->P, &area));
-  for (int j = 0; j < 3; j++) {
-    PetscReal t = dEdz[j];
-    for (PetscInt i = 0; i < m; i++) t += Ag[m + i] * dcdz[3 * i + j];
-    dpsi[j] = t / area;
-  }
-  PetscCall(PetscFree2(dcdz, Ag));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -68,7 +68,7 @@ static PetscErrorCode Residual(Tao tao, Vec X, Vec F, void *ctx)
   (void)tao;
   PetscCall(EvalAt(c, X));
   PetscCall(VecGetArray(F, &f));
-  for (PetscInt i = 0; i < c->C->m; i++) f[i] = c->r[i];
+  for (PetscInt i = 0; i < c->C->nres; i++) f[i] = c->r[i];
   PetscCall(VecRestoreArray(F, &f));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -81,7 +81,7 @@ static PetscErrorCode Jacobian(Tao tao, Vec X, Mat J, Mat Jpre, void *ctx)
   (void)tao;
   (void)Jpre;
   PetscCall(EvalAt(c, X));
-  for (PetscInt i = 0; i < c->C->m; i++)
+  for (PetscInt i = 0; i < c->C->nres; i++)
     for (int a = 0; a < c->na; a++) PetscCall(MatSetValue(J, i, a, c->J[i * HYLC_CALIBRATE_NPARAM + c->act[a]], INSERT_VALUES));
   PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
@@ -120,7 +120,7 @@ static PetscErrorCode Run(void)
   c.best = PETSC_INFINITY;
   for (int j = 0; j < HYLC_CALIBRATE_NPARAM; j++)
     if (C->role[j] == HYLC_CALIBRATE_FREE) c.act[c.na++] = j;
-  PetscCall(PetscMalloc3(C->m * HYLC_CALIB_NRECORD, &c.rec, C->m, &c.r, C->m * HYLC_CALIBRATE_NPARAM, &c.J));
+  PetscCall(PetscMalloc3(C->m * HYLC_CALIB_NRECORD, &c.rec, C->nres, &c.r, C->nres * HYLC_CALIBRATE_NPARAM, &c.J));
 
   /* TAO first (HylcCalibrateSolve writes its outputs and marks the object solved) */
   PetscCall(VecCreateSeq(PETSC_COMM_SELF, c.na, &X));
@@ -132,8 +132,8 @@ static PetscErrorCode Run(void)
     PetscCall(VecSetValue(XL, a, PetscLogReal(C->lo[j]), INSERT_VALUES));
     PetscCall(VecSetValue(XU, a, PetscLogReal(C->hi[j]), INSERT_VALUES));
   }
-  PetscCall(VecCreateSeq(PETSC_COMM_SELF, C->m, &F));
-  PetscCall(MatCreateSeqDense(PETSC_COMM_SELF, C->m, c.na, NULL, &J));
+  PetscCall(VecCreateSeq(PETSC_COMM_SELF, C->nres, &F));
+  PetscCall(MatCreateSeqDense(PETSC_COMM_SELF, C->nres, c.na, NULL, &J));
   PetscCall(TaoCreate(PETSC_COMM_SELF, &tao));
   PetscCall(TaoSetType(tao, TAOBRGN));
   PetscCall(TaoSetSolution(tao, X));

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # hylc-calibrate refuses bad input with a one-line error before any solve: an unknown parameter name,
 # inverted or non-positive bounds, a missing target, a directory target without data.txt, an unknown
-# term, a CSV without the needed columns, an unwritable output, the retired -calibrate_max_reject; -help
+# term, a CSV without the needed columns, an unwritable output, the retired -calibrate_max_reject, a bad
+# -calibrate_stationary (weight, step, no scale in a file target); -help
 # lists the options (the optimizer's, TAO's, under -calibrate_tao_*);
 # the tile options reach the solves.
 set -u
@@ -36,6 +37,10 @@ expect "-calibrate_output" -calibrate_target ok.csv -calibrate_output nodir/p.ya
 expect "Unknown option.*-calibrate_paramz" -calibrate_target ok.csv -calibrate_paramz E
 # the hand-written Levenberg-Marquardt's option with no TAO counterpart names the TAO option to use
 expect "-calibrate_max_reject no longer applies.*-calibrate_tao_max_funcs" -calibrate_target ok.csv -calibrate_max_reject 8
+# the stationarity (issue 30): a bad weight or step; a file target without a row to scale dPsi/dsy by
+expect "-calibrate_stationary must be a finite number >= 0" -calibrate_target ok.csv -calibrate_stationary -1
+expect "-calibrate_stationary_h must be in" -calibrate_target ok.csv -calibrate_stationary 1 -calibrate_stationary_h 0
+expect "-calibrate_stationary: no scale of dPsi/dsy" -calibrate_target ok.csv -calibrate_stationary 1
 # the tile options (-periodic_*, -macro_*) reach every evaluation's solves (each rebuilds the tile): the
 # closed-form midsurface refuses a doubly curved row in the solve (they were once silently dropped)
 printf 'sx,sa,sy,II00,II01,II11,psi\n0,0,0,0,0,0,1\n0,0,0,50,0,50,2\n' >curved.csv
@@ -45,7 +50,7 @@ grep -q "^hylc: error.*-macro_phi closed needs a flat or singly curved II" out.t
 # -help documents every option of the tool
 $tool -help >help.txt 2>&1 || { cat help.txt; die "-help failed"; }
 for o in target target_type output dump params tie bounds_E bounds_Es bounds_G bounds_kc terms n n2 stride max_samples \
-  weight_zero weights max_it lambda xtol ftol fatol flat_tol reference tao_type tao_max_funcs tao_brgn_regularization_type; do
+  weight_zero weights stationary stationary_jacobian stationary_h max_it lambda xtol ftol fatol flat_tol reference tao_type tao_max_funcs tao_brgn_regularization_type; do
   grep -q -- "-calibrate_$o " help.txt || grep -q -- "-calibrate_$o <" help.txt || die "-help does not list -calibrate_$o"
 done
 grep -q -- '-sampler_family' help.txt && grep -q -- '-yarn_E' help.txt && grep -q -- '-micro_rtol' help.txt || die "-help lacks the pattern/yarn/solver options"
