@@ -22,8 +22,8 @@
 #pragma GCC diagnostic pop
 #include <hylc/chol.h>
 
-/* the number of negative pivots of the last factorization (MatGetInertia: hylc's and MUMPS' Cholesky),
-   or -1 when the preconditioner does not tell */
+/* the number of negative pivots of the last factorization (MatGetInertia: hylc's and MUMPS' Cholesky,
+   also inside PCREDUNDANT), or -1 when the preconditioner does not tell */
 static PetscErrorCode NegativePivots(KSP ksp, PetscInt *nneg)
 {
   PC        pc;
@@ -34,6 +34,13 @@ static PetscErrorCode NegativePivots(KSP ksp, PetscInt *nneg)
   PetscFunctionBegin;
   *nneg = -1;
   PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCREDUNDANT, &isfactor));
+  if (isfactor) { /* the same sequential factorization on every rank (HylcClothDefaultKSP_Private) */
+    KSP inner;
+    PetscCall(PCRedundantGetKSP(pc, &inner));
+    PetscCall(NegativePivots(inner, nneg));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCCHOLESKY, &isfactor));
   if (!isfactor) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PCFactorGetMatrix(pc, &F));
@@ -252,7 +259,11 @@ static PetscErrorCode FormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx)
 }
 
 /* the direct solver of the Newton systems: a signed Cholesky factorization that counts the negative
-   pivots, hylc's supernodal one on one rank (MATSOLVERHYLC, METIS ordering), MUMPS' LDL^T on several */
+   pivots, hylc's supernodal one (MATSOLVERHYLC, METIS ordering). On several ranks every rank factors the
+   whole matrix (PCREDUNDANT, one subcommunicator per rank, -cloth_redundant_* options): measured on the
+   20,724-triangle drape (2026-11-27, docs/performance.md), MUMPS' LDL^T on 2 ranks took 133 s of
+   factorization in 78 Newton iterations with this machine's reference BLAS, HylcChol on one rank 19 s.
+   MUMPS stays an option away: -cloth_pc_type cholesky -cloth_pc_factor_mat_solver_type mumps. */
 PetscErrorCode HylcClothDefaultKSP_Private(KSP ksp, PetscBool preonly)
 {
   PC          pc;
@@ -261,9 +272,17 @@ PetscErrorCode HylcClothDefaultKSP_Private(KSP ksp, PetscBool preonly)
   PetscFunctionBegin;
   if (preonly) PetscCall(KSPSetType(ksp, KSPPREONLY));
   PetscCall(KSPGetPC(ksp, &pc));
-  PetscCall(PCSetType(pc, PCCHOLESKY));
   PetscCallMPI(MPI_Comm_size(PetscObjectComm((PetscObject)ksp), &size));
-  PetscCall(PCFactorSetMatSolverType(pc, size == 1 ? MATSOLVERHYLC : MATSOLVERMUMPS));
+  if (size > 1) {
+    KSP inner;
+    PetscCall(PCSetType(pc, PCREDUNDANT));
+    PetscCall(PCRedundantSetNumber(pc, size));
+    PetscCall(PCRedundantGetKSP(pc, &inner));
+    PetscCall(KSPSetType(inner, KSPPREONLY));
+    PetscCall(KSPGetPC(inner, &pc));
+  }
+  PetscCall(PCSetType(pc, PCCHOLESKY));
+  PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERHYLC));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
