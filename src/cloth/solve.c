@@ -1,8 +1,9 @@
 /* Equilibria of the cloth: minimizing the energy (energy.c) with PETSc's solvers.
 
    NEWTON (default): SNES newtonls, F = the gradient, J = the Hessian (projected, exact, or auto: exact
-   whenever its LDL^T factorization by MUMPS has no negative pivot), a direct solve (-cloth_ksp_type
-   preonly, -cloth_pc_type cholesky, MUMPS), and a shell line search on the energy: the step X - lambda Y
+   whenever its signed Cholesky factorization has no negative pivot), a direct solve (-cloth_ksp_type
+   preonly, HylcClothDefaultKSP_Private: hylc's Cholesky, on several ranks on every rank; MUMPS as an
+   option), and a shell line search on the energy: the step X - lambda Y
    is halved until the path is clear of every support (HylcClothFeasible_Private) and the energy
    decreases by the Armijo condition (or, within rounding of the energy, the gradient norm decreases).
    A direction that is not a descent direction (the exact Hessian at an unstable state) is replaced by
