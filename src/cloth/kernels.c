@@ -1,6 +1,7 @@
-/* Plain C kernels of the cloth stage (include/hylc/cloth.h): the homogeneous uniaxial state of a table,
-   the elastica of a cantilever under its own weight, the contact barrier and the distance to a support. */
+/* Plain C kernels of the cloth stage (include/hylc/cloth.h): the free curl of a table, the elastica of a
+   cantilever under its own weight, the contact barrier and the distance to a support. */
 #include <hylc/private/clothimpl.h>
+#include <hylc/private/newton2.h>
 #include <math.h>
 
 /* Psi over two free strains z[i[0]], z[i[1]] of z0 (the others fixed) */
@@ -8,7 +9,6 @@ typedef struct {
   const hylcmat *m;
   double         z0[6];
   int            i[2];
-  int            cosine; /* the first free strain is the cosine sa: keep |y0| < 0.99 */
 } Pair;
 
 static int PairEval(const Pair *p, const double y[2], double *psi, double g[2], double H[4])
@@ -44,24 +44,9 @@ static int PairNewton(const Pair *p, double y[2], double *fout, int *conv)
   *conv = 0;
   if ((rc = PairEval(p, y, &f, g, H))) return rc;
   for (it = 0; it < 300; it++) {
-    double a = H[0], b = 0.5 * (H[1] + H[2]), c = H[3], d[2], gnorm = fabs(g[0]) + fabs(g[1]), t = 1, slope;
-    double tr = 0.5 * (a + c), df = sqrt(0.25 * (a - c) * (a - c) + b * b), l1 = tr + df, l2 = tr - df, fl = 1e-8 * (fabs(l1) + 1e-12);
-    double v1[2], v2[2], nrm;
-    if (fabs(b) > 1e-300) {
-      v1[0] = l1 - c;
-      v1[1] = b;
-    } else if (a >= c) {
-      v1[0] = 1;
-      v1[1] = 0;
-    } else {
-      v1[0] = 0;
-      v1[1] = 1;
-    }
-    nrm = sqrt(v1[0] * v1[0] + v1[1] * v1[1]);
-    v1[0] /= nrm;
-    v1[1] /= nrm;
-    v2[0] = -v1[1];
-    v2[1] = v1[0];
+    double d[2], gnorm = fabs(g[0]) + fabs(g[1]), t = 1, slope, l1, l2, v1[2], v2[2], fl;
+    HylcSymEig2(H, &l1, &l2, v1, v2);
+    fl = 1e-8 * (fabs(l1) + 1e-12);
     if (gnorm < 1e-13 * (1 + fabs(f))) {
       if (l2 >= 0) {
         *conv = 1;
@@ -73,7 +58,6 @@ static int PairNewton(const Pair *p, double y[2], double *fout, int *conv)
         for (int sg = -1; sg <= 1; sg += 2)
           for (double h = 1e-4; h < 1; h *= 2) {
             double yt[2] = {y[0] + sg * h * v2[0], y[1] + sg * h * v2[1]}, ft;
-            if (p->cosine && fabs(yt[0]) >= 0.99) break;
             if ((rc = PairEval(p, yt, &ft, NULL, NULL))) return rc;
             if (ft < best) {
               best  = ft;
@@ -92,15 +76,7 @@ static int PairNewton(const Pair *p, double y[2], double *fout, int *conv)
         continue;
       }
     }
-    if (l1 < fl) l1 = fl;
-    if (l2 < fl) l2 = fl;
-    {
-      double p1 = (v1[0] * g[0] + v1[1] * g[1]) / l1, p2 = (v2[0] * g[0] + v2[1] * g[1]) / l2;
-      d[0] = -(p1 * v1[0] + p2 * v2[0]);
-      d[1] = -(p1 * v1[1] + p2 * v2[1]);
-    }
-    if (p->cosine)
-      while (fabs(y[0] + t * d[0]) >= 0.99) t *= 0.5; /* keep the cosine sa inside (-1, 1) */
+    HylcEigSolve2(fmax(l1, fl), fmax(l2, fl), v1, v2, g, d);
     slope = g[0] * d[0] + g[1] * d[1];
     for (;;) {
       double yt[2] = {y[0] + t * d[0], y[1] + t * d[1]}, ft;
@@ -126,7 +102,7 @@ static int PairNewton(const Pair *p, double y[2], double *fout, int *conv)
 
 int HylcClothTableCurl(const hylcmat *m, double *II00, double *II11, double *psi)
 {
-  Pair   p    = {m, {0, 0, 0, 0, 0, 0}, {3, 5}, 0};
+  Pair   p    = {m, {0, 0, 0, 0, 0, 0}, {3, 5}};
   double y[2] = {0, 0}, f, best = INFINITY;
   int    rc, conv;
 
