@@ -173,7 +173,20 @@ static PetscErrorCode Fit1D(HylcFit fit, int c, PetscInt n, const PetscReal u[],
     PetscCall(G(fit, &g, t, tk[i] - 0.5 * e, 0, &b));
     m[i] = (a - b) / e;
   }
-  PetscCall(GrowWarning(fit, &g, t, 3 * nk));
+  if (refined) {
+    /* Each knot's value is taken relative to 0 by the same kernel: the paper's knots are shifted by
+       (narrow g(0) - paper g(0)), so that after p -= p(0) below they hold the paper layout's g(t) - g(0)
+       of one kernel, whose smoothing bias largely cancels in the difference, and the added knots their
+       own. Without this the paper's knots carry the difference of the two kernels' values at 0 as a
+       constant offset over the whole range (measured on the thinned plans: the range-normalised RMS up
+       to 0.5 % worse than the paper layout's on 15 of the 35 1D terms). */
+    PetscReal q0;
+    g.ku = fit->kernel * (mx - mn);
+    PetscCall(G(fit, &g, t, tk[i0], 0, &q0));
+    for (PetscInt i = 0; i < nk; i++)
+      if (PetscAbsInt((int)(i - i0)) > fit->refine) p[i] += p[i0] - q0;
+  }
+  PetscCall(GrowWarning(fit, &g, t, 3 * nk + (refined ? 1 : 0)));
   PetscCall(PetscLogEventEnd(HYLC_FitMLS, fit, 0, 0, 0));
   PetscCall(PetscLogEventBegin(HYLC_FitMonotone, fit, 0, 0, 0));
   if (fit->quasiconvex) {
