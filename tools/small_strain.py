@@ -13,6 +13,11 @@ For each paper pattern (config/PATTERN.yaml, the pattern from ../shared/refdata 
     dPsi/dsy vanish), next to the same derivative at sx = 5 % for scale;
   - the linear stiffness: the diagonal of the Hessian of Psi at 0 from the tile (second differences over
     the same h) beside the tables' (hylc-eval -derivatives; one-sided where a table has a knot at 0).
+  - the stationarity ratios |dPsi/dsx(0)| / dPsi/dsx(sx = 5 %) and |dPsi/dsy(0)| / dPsi/dsy(sy = 5 %) (issue 30
+    asks for both below 1 %);
+  - with --samples DIR (DIR/PATTERN.h5, the samples the table was fitted to): issue 30's probe criterion, the
+    probes whose tile |dPsi| exceeds 1 % of the term's range of Psi - f0 in the samples, and how many of them
+    have our table within 10 % of the tile.
 Prints a Markdown report. hylc-solve runs on N processes at a time (default 2). --tiles DIR takes the tiles
 from DIR/PATTERN.pyp instead (e.g. the relaxed reference states of hylc-sample -sampler_reference relax
 -reference_output). Needs the programs built.
@@ -87,11 +92,35 @@ def table_psi(table, zs, derivatives=False):
     return rows
 
 
+def term_ranges(path):
+    """max |Psi - f0| over the converged samples of each 1D term of a samples file, f0 the zero sample's Psi
+    (the term's range, as hylc-fit prints it)."""
+    try:
+        import h5py
+    except ImportError:
+        raise SystemExit("small_strain: --samples needs h5py (python3-h5py)")
+    with h5py.File(path, "r") as f:
+        s = f["samples"]
+        term, psi, status = s["term"][:], s["psi"][:], s["status"][:]
+    zero = [k for k in range(len(term)) if term[k] == 0]
+    if not zero:
+        raise SystemExit("small_strain: %s has no zero sample" % path)
+    f0 = psi[zero[0]]
+    out = {}
+    for t, n in enumerate(("sx", "sa", "sy", "II00", "II11"), start=1):
+        v = [abs(psi[k] - f0) for k in range(len(term)) if term[k] == t and status[k] == 0]
+        if not v:
+            raise SystemExit("small_strain: %s has no converged sample of term %s" % (path, n))
+        out[n] = max(v)
+    return out
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("patterns", nargs="*", default=list(TABLE))
     ap.add_argument("--ours", help="directory with our fitted tables, PATTERN.json")
     ap.add_argument("--np", type=int, default=2)
+    ap.add_argument("--samples", help="directory with the samples our tables were fitted to, PATTERN.h5 (for the probe criterion; needs h5py)")
     ap.add_argument("--tiles", help="directory with the tiles, PATTERN.pyp (default: the paper's; e.g. reference states written by hylc-sample -sampler_reference relax -reference_output)")
     a = ap.parse_args()
     global PATTERNS
@@ -108,7 +137,7 @@ def main():
         fd = []
         for n in ("sx", "sa", "sy", "II00", "II11"):
             fd += [strain(n, H[n]), strain(n, -H[n])]
-        fd += [strain("sx", 0.05 + 1e-3), strain("sx", 0.05 - 1e-3)]
+        fd += [strain("sx", 0.05 + 1e-3), strain("sx", 0.05 - 1e-3), strain("sy", 0.05 + 1e-3), strain("sy", 0.05 - 1e-3)]
         with ThreadPoolExecutor(max_workers=a.np) as ex:
             tile = list(ex.map(lambda z: solve(p, z), zs + fd))
         t0 = tile[0]
@@ -126,6 +155,22 @@ def main():
                 dt = tab[i + 1][-1] - tab[0][-1]
                 cells.append("%.3g%s" % (dt, "" if d is None or d == 0 else " (%.2f)" % (dt / d)))
             print("| " + " | ".join(cells) + " |")
+        if ours and a.samples:
+            rng = term_ranges(os.path.join(a.samples, p + ".h5"))
+            counted, ok, miss = 0, 0, []
+            for i, (n, v) in enumerate(PROBES):
+                d = None if tprobe[i] is None or t0 is None else tprobe[i] - t0
+                if d is None or abs(d) <= 0.01 * rng[n]:
+                    continue
+                counted += 1
+                r = (ours[i + 1][-1] - ours[0][-1]) / d
+                if abs(r - 1) <= 0.1:
+                    ok += 1
+                else:
+                    miss.append("%s = %g: %.2f" % (n, v, r))
+            print("\nProbe criterion (issue 30; the term's range of Psi - f0 in %s: %s J/m^2): %d of %d probes above 1 %% of it "
+                  "have our table within 10 %% of the tile%s." % (os.path.join(a.samples, p + ".h5"), ", ".join("%s %.3g" % (n, rng[n]) for n in ("sx", "sa", "sy", "II00", "II11")),
+                                                                   ok, counted, "; outside: " + ", ".join(miss) if miss else ""))
         # the tile's gradient and stiffness at 0 by differences; the tables' by hylc-eval -derivatives
         print("\n| at z = 0 | dPsi/dsx | dPsi/dsa | dPsi/dsy | dPsi/dII00 | dPsi/dII11 | dPsi/dsx at sx = 5 % |")
         print("|---|---|---|---|---|---|---|")
@@ -138,13 +183,17 @@ def main():
             else:
                 g.append((pl - mi) / (2 * H[n]))
                 k.append((pl - 2 * t0 + mi) / H[n] ** 2)
-        g5 = None if None in tfd[-2:] else (tfd[-2] - tfd[-1]) / 2e-3
+        g5 = None if None in tfd[-4:-2] else (tfd[-4] - tfd[-3]) / 2e-3
+        g5y = None if None in tfd[-2:] else (tfd[-2] - tfd[-1]) / 2e-3
         print("| tile (differences) | " + " | ".join("n/c" if x is None else "%.3g" % x for x in g) + " | %s |" % ("n/c" if g5 is None else "%.3g" % g5))
         dz = [[0.0] * 6, strain("sx", 0.05)]
         for label, path in ([("our table", os.path.join(a.ours, p + ".json"))] if a.ours else []) + [("paper's table", os.path.join(REF, "materials", TABLE[p] + ".json"))]:
             r = table_psi(path, dz, derivatives=True)
             grad0, grad5 = r[0][1:7], r[1][1:7]
             print("| %s | %s | %.3g |" % (label, " | ".join("%.3g" % grad0[NAMES.index(n)] for n in ("sx", "sa", "sy", "II00", "II11")), grad5[0]))
+        if None not in (g[0], g[2], g5, g5y):
+            print("\nStationarity of the tile at z = 0 (issue 30: below 1 %%): |dPsi/dsx(0)| / dPsi/dsx(sx = 5 %%) = %.2f %%, "
+                  "|dPsi/dsy(0)| / dPsi/dsy(sy = 5 %%) = %.2f %% (dPsi/dsy at sy = 5 %%: %.3g N/m)." % (100 * abs(g[0]) / g5, 100 * abs(g[2]) / g5y, g5y))
         print("\n| linear stiffness d2Psi/dz2 at 0 | sx | sa | sy | II00 | II11 |")
         print("|---|---|---|---|---|---|")
         print("| tile (second differences) | " + " | ".join("n/c" if x is None else "%.3g" % x for x in k) + " |")
