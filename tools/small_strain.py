@@ -99,9 +99,12 @@ def term_ranges(path):
         import h5py
     except ImportError:
         raise SystemExit("small_strain: --samples needs h5py (python3-h5py)")
-    with h5py.File(path, "r") as f:
-        s = f["samples"]
-        term, psi, status = s["term"][:], s["psi"][:], s["status"][:]
+    try:
+        with h5py.File(path, "r") as f:
+            s = f["samples"]
+            term, psi, status = s["term"][:], s["psi"][:], s["status"][:]
+    except (OSError, KeyError) as e:
+        raise SystemExit("small_strain: %s: not a samples file of hylc-sample (%s)" % (path, e))
     zero = [k for k in range(len(term)) if term[k] == 0]
     if not zero:
         raise SystemExit("small_strain: %s has no zero sample" % path)
@@ -129,6 +132,10 @@ def main():
     for p in a.patterns:
         if p not in TABLE:
             raise SystemExit("small_strain: unknown pattern %s (one of %s)" % (p, ", ".join(TABLE)))
+    for p in a.patterns:
+        for d, ext, opt in ((a.ours, ".json", "--ours"), (a.samples, ".h5", "--samples")):
+            if d and not os.path.isfile(os.path.join(d, p + ext)):
+                raise SystemExit("small_strain: %s: no such file (%s)" % (os.path.join(d, p + ext), opt))
     if not os.path.isdir(os.path.join(REF, "patterns", "hylc2020")):
         print("small_strain: the paper's reference data (%s) is absent; skipped" % REF)
         return 0
