@@ -46,3 +46,17 @@ static inline double HylcTestRand(unsigned long long *state)
 }
 
 #define HYLC_TEST_RESULT() (hylc_test_failures ? 1 : 0)
+
+#ifdef PETSCSYS_H
+#  include <hylc/sys.h> /* PETSC_SUCCESS on PETSc < 3.19 */
+/* an option's value unless the command line gives it (include PETSc before this header) */
+static inline PetscErrorCode HylcTestOptionDefault(const char name[], const char value[])
+{
+  PetscBool set;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsHasName(NULL, NULL, name, &set));
+  if (!set) PetscCall(PetscOptionsSetValue(NULL, name, value));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+#endif

@@ -18,17 +18,6 @@ static const char csv[] = "sx,sa,sy,II00,II01,II11,psi\n"
                           "0.05,0.1,0,0,0,0,8.5\n"
                           "0,0,0,30,10,0,6.0\n";
 
-/* an option unless given on the command line */
-static PetscErrorCode Default(const char name[], const char value[])
-{
-  PetscBool set;
-
-  PetscFunctionBeginUser;
-  PetscCall(PetscOptionsHasName(NULL, NULL, name, &set));
-  if (!set) PetscCall(PetscOptionsSetValue(NULL, name, value));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 int main(int argc, char **argv)
 {
   char          path[] = "/tmp/hylc-calibrate-gradient-XXXXXX.csv";
@@ -45,11 +34,11 @@ int main(int argc, char **argv)
   fp_ = fdopen(fd, "w");
   fputs(csv, fp_);
   fclose(fp_);
-  PetscCall(Default("-pattern_type", "stockinette"));
-  PetscCall(Default("-calibrate_reference", "none"));
+  PetscCall(HylcTestOptionDefault("-pattern_type", "stockinette"));
+  PetscCall(HylcTestOptionDefault("-calibrate_reference", "none"));
   PetscCall(PetscOptionsSetValue(NULL, "-calibrate_target", path));
   PetscCall(PetscOptionsSetValue(NULL, "-calibrate_weight_zero", "0.5"));
-  PetscCall(Default("-micro_rtol", "1e-7"));
+  PetscCall(HylcTestOptionDefault("-micro_rtol", "1e-7"));
   PetscCall(HylcCalibrateCreate(PETSC_COMM_WORLD, &C));
   PetscCall(HylcCalibrateSetFromOptions(C));
   PetscCall(HylcCalibrateSetUp(C));

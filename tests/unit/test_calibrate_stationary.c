@@ -19,16 +19,6 @@ static const char csv[] = "sx,sa,sy,II00,II01,II11,psi\n"
                           "0,0,0.08,0,0,0,6.9\n"
                           "0,0,0,60,0,0,6.6\n";
 
-static PetscErrorCode Default(const char name[], const char value[])
-{
-  PetscBool set;
-
-  PetscFunctionBeginUser;
-  PetscCall(PetscOptionsHasName(NULL, NULL, name, &set));
-  if (!set) PetscCall(PetscOptionsSetValue(NULL, name, value));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 /* a calibration of E, Es, kc (G tied) with stationarity weight w: |dPsi/dsx| + |dPsi/dsy| at 0 after it */
 static PetscErrorCode Calibrate(const char w[], const char jac[], const char maxit[], PetscReal *after, PetscReal *scale)
 {
@@ -65,12 +55,12 @@ int main(int argc, char **argv)
   fp_ = fdopen(fd, "w");
   fputs(csv, fp_);
   fclose(fp_);
-  PetscCall(Default("-pattern_type", "stockinette"));
-  PetscCall(Default("-calibrate_reference", "none"));
-  PetscCall(Default("-micro_rtol", "1e-8"));
-  PetscCall(Default("-yarn_E", "1e6"));
-  PetscCall(Default("-yarn_Es", "1e6"));
-  PetscCall(Default("-yarn_kc", "50"));
+  PetscCall(HylcTestOptionDefault("-pattern_type", "stockinette"));
+  PetscCall(HylcTestOptionDefault("-calibrate_reference", "none"));
+  PetscCall(HylcTestOptionDefault("-micro_rtol", "1e-8"));
+  PetscCall(HylcTestOptionDefault("-yarn_E", "1e6"));
+  PetscCall(HylcTestOptionDefault("-yarn_Es", "1e6"));
+  PetscCall(HylcTestOptionDefault("-yarn_kc", "50"));
   PetscCall(PetscOptionsSetValue(NULL, "-calibrate_target", path));
 
   /* the Jacobian columns against central differences in log p (each a full re-solve of the base sample) */
