@@ -566,10 +566,9 @@ PetscErrorCode HylcCalibrateGetStationarity(HylcCalibrate C, PetscReal scale[], 
 @*/
 PetscErrorCode HylcCalibrateEvaluateStationarity(HylcCalibrate C, const PetscReal p[], PetscReal ds[], PetscReal dlogp[])
 {
-  static const int PartOf[HYLC_CALIBRATE_NPARAM] = {1, 0, 2, 3};
-  HylcYarnModel    model                         = C->model;
-  HylcMicroResult  res;
-  PetscReal        g[3], dp[12];
+  HylcYarnModel   model = C->model;
+  HylcMicroResult res;
+  PetscReal       cols[2 * HYLC_CALIBRATE_NPARAM];
 
   PetscFunctionBegin;
   PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
@@ -583,14 +582,8 @@ PetscErrorCode HylcCalibrateEvaluateStationarity(HylcCalibrate C, const PetscRea
   PetscCall(HylcMicroSetUp(C->micro));
   PetscCall(HylcMicroSolve(C->micro, C->z, &res));
   PetscCheck(res.status == HYLC_MICRO_CONVERGED, PETSC_COMM_SELF, PETSC_ERR_NOT_CONVERGED, "The base sample did not converge (%s)", HylcMicroStatuses[res.status]);
-  PetscCall(HylcMicroGetStrainGradientParts(C->micro, g, dp));
-  ds[0] = g[0];
-  ds[1] = g[2];
-  if (dlogp)
-    for (int q = 0; q < HYLC_CALIBRATE_NPARAM; q++) {
-      dlogp[2 * q]     = dp[3 * PartOf[q]];
-      dlogp[2 * q + 1] = dp[3 * PartOf[q] + 2];
-    }
+  PetscCall(HylcCalibrateStrainGradient_Private(C, ds, cols));
+  if (dlogp) PetscCall(PetscArraycpy(dlogp, cols, 2 * HYLC_CALIBRATE_NPARAM));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -113,6 +113,7 @@ PETSC_INTERN PetscErrorCode HylcCalibrateReadFileTarget_Private(const char path[
 PETSC_INTERN const char *HylcCalibrateTermName_Private(PetscInt t);
 /* solve.c: one evaluation at explicit p (no ties): the records (m x HYLC_CALIB_NRECORD) on every rank */
 PETSC_INTERN PetscErrorCode HylcCalibrateSolveSamples_Private(HylcCalibrate, const PetscReal p[], PetscReal rec[]);
+PETSC_INTERN PetscErrorCode HylcCalibrateStrainGradient_Private(HylcCalibrate, PetscReal ds[2], PetscReal dlogp[]);
 /* solve.c: residuals r (nres: entry 0 the base term, 1..m-1 the samples, m and m+1 the stationarity's) and
    Jacobian J (nres x 4, row-major) from records */
 PETSC_INTERN PetscErrorCode HylcCalibrateResiduals_Private(HylcCalibrate, const PetscReal rec[], PetscReal r[], PetscReal J[], PetscReal *f, PetscInt *nfailed);

@@ -10,6 +10,23 @@
 /* energy part matching parameter j: E bend (1), Es stretch (0), G twist (2), kc contact (3) */
 static const int PartOf[HYLC_CALIBRATE_NPARAM] = {1, 0, 2, 3};
 
+/* the gradient dPsi/dsx, dPsi/dsy at the micro solver's current equilibrium and its Gauss-Newton columns,
+   dlogp[2 q + k] = p_q d/dp_q of dPsi/ds_k at the fixed state (parameter q's energy term) */
+PetscErrorCode HylcCalibrateStrainGradient_Private(HylcCalibrate C, PetscReal ds[2], PetscReal dlogp[])
+{
+  PetscReal g[3], dp[12];
+
+  PetscFunctionBegin;
+  PetscCall(HylcMicroGetStrainGradientParts(C->micro, g, dp));
+  ds[0] = g[0];
+  ds[1] = g[2];
+  for (int q = 0; q < HYLC_CALIBRATE_NPARAM; q++) {
+    dlogp[2 * q]     = dp[3 * PartOf[q]];
+    dlogp[2 * q + 1] = dp[3 * PartOf[q] + 2];
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* the coordinate of a 1D term t (1..5) in z: sx, sa, sy, II00, II11 */
 static const int CoordOf1D[6] = {-1, 0, 1, 2, 3, 5};
 
@@ -90,16 +107,8 @@ PetscErrorCode HylcCalibrateSolveSamples_Private(HylcCalibrate C, const PetscRea
       o[5] = (PetscReal)res.status;
       o[6] = (PetscReal)res.iterations;
       for (int r = HYLC_CALIB_REC_DS; r < HYLC_CALIB_NRECORD; r++) o[r] = 0;
-      if (k == 0 && C->hasGrad && res.status == HYLC_MICRO_CONVERGED) { /* the gradient at the base strain, split by parameter */
-        PetscReal ds[3], dp[12];
-        PetscCall(HylcMicroGetStrainGradientParts(C->micro, ds, dp));
-        o[HYLC_CALIB_REC_DS]     = ds[0];
-        o[HYLC_CALIB_REC_DS + 1] = ds[2];
-        for (int q = 0; q < HYLC_CALIBRATE_NPARAM; q++) {
-          o[HYLC_CALIB_REC_DSP + 2 * q]     = dp[3 * PartOf[q]];
-          o[HYLC_CALIB_REC_DSP + 2 * q + 1] = dp[3 * PartOf[q] + 2];
-        }
-      }
+      if (k == 0 && C->hasGrad && res.status == HYLC_MICRO_CONVERGED) /* the gradient at the base strain, split by parameter */
+        PetscCall(HylcCalibrateStrainGradient_Private(C, o + HYLC_CALIB_REC_DS, o + HYLC_CALIB_REC_DSP));
       o[HYLC_CALIB_NRECORD] = (PetscReal)k;
     }
   }
