@@ -18,6 +18,8 @@ For each paper pattern (config/PATTERN.yaml, the pattern from ../shared/refdata 
   - with --samples DIR (DIR/PATTERN.h5, the samples the table was fitted to): issue 30's probe criterion, the
     probes whose tile |dPsi| exceeds 1 % of the term's range of Psi - f0 in the samples, and how many of them
     have our table within 10 % of the tile.
+    Also, per 1D term, the range-normalised RMS of our table against those samples beside that of a fit of
+    the same samples with the paper's knot layout (hylc-fit -fit_knots paper), issue 30's "no worse" check.
 Prints a Markdown report. hylc-solve runs on N processes at a time (default 2). --tiles DIR takes the tiles
 from DIR/PATTERN.pyp instead (e.g. the relaxed reference states of hylc-sample -sampler_reference relax
 -reference_output). Needs the programs built.
@@ -118,6 +120,36 @@ def term_ranges(path):
     return out
 
 
+def layout_rms(path, ours):
+    """per 1D term: RMS of (table - Psi) over the converged samples / the term's range, for our table and for
+    hylc-fit -fit_knots paper of the same samples (the family is the samples' own)"""
+    import h5py
+    with h5py.File(path, "r") as f:
+        s = f["samples"]
+        term, psi, status = s["term"][:], s["psi"][:], s["status"][:]
+    f0 = psi[[k for k in range(len(term)) if term[k] == 0][0]]
+    with tempfile.TemporaryDirectory() as d:
+        paper = os.path.join(d, "paper.json")
+        r = subprocess.run([os.path.join(BIN, "hylc-fit"), "-fit_input", path, "-fit_knots", "paper", "-fit_json", paper], capture_output=True, text=True)
+        if r.returncode:
+            raise SystemExit("small_strain: hylc-fit -fit_knots paper %s: %s" % (path, (r.stdout + r.stderr).strip().splitlines()[-1:]))
+        vals = {}
+        for label, table in (("ours", ours), ("paper", paper)):
+            outp = os.path.join(d, label + ".txt")
+            r = subprocess.run([os.path.join(BIN, "hylc-eval"), "-material", table, "-eval_input", path, "-eval_output", outp], capture_output=True, text=True)
+            if r.returncode:
+                raise SystemExit("small_strain: hylc-eval %s: %s" % (table, (r.stdout + r.stderr).strip()))
+            with open(outp) as f:
+                vals[label] = [float(line.split()[-1]) for line in f if line.strip() and not line.startswith("#")]
+    out = []
+    for t, n in enumerate(("sx", "sa", "sy", "II00", "II11"), start=1):
+        rows = [k for k in range(len(term)) if term[k] == t and status[k] == 0]
+        rng = max(abs(psi[k] - f0) for k in rows)
+        rms = {lab: 100 * (sum((vals[lab][k] - psi[k]) ** 2 for k in rows) / len(rows)) ** 0.5 / rng for lab in vals}
+        out.append((n, rms["ours"], rms["paper"]))
+    return out
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("patterns", nargs="*", default=list(TABLE))
@@ -178,6 +210,11 @@ def main():
             print("\nProbe criterion (issue 30; the term's range of Psi - f0 in %s: %s J/m^2): %d of %d probes above 1 %% of it "
                   "have our table within 10 %% of the tile%s." % (os.path.join(a.samples, p + ".h5"), ", ".join("%s %.3g" % (n, rng[n]) for n in ("sx", "sa", "sy", "II00", "II11")),
                                                                    ok, counted, "; outside: " + ", ".join(miss) if miss else ""))
+            rows = layout_rms(os.path.join(a.samples, p + ".h5"), os.path.join(a.ours, p + ".json"))
+            print("\n| 1D term | RMS of our table against the samples (% of the range) | the same, paper's knot layout | ours vs paper |")
+            print("|---|---|---|---|")
+            for n, r_ours, r_paper in rows:
+                print("| %s | %.4f | %.4f | %+.2g %% |" % (n, r_ours, r_paper, 100 * (r_ours / r_paper - 1)))
         # the tile's gradient and stiffness at 0 by differences; the tables' by hylc-eval -derivatives
         print("\n| at z = 0 | dPsi/dsx | dPsi/dsa | dPsi/dsy | dPsi/dII00 | dPsi/dII11 | dPsi/dsx at sx = 5 % |")
         print("|---|---|---|---|---|---|---|")

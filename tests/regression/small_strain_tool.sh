@@ -3,7 +3,8 @@
 # thinned plan (-sampler_n1 30, 1D terms only: the 1D fits are those of the whole plan), fitted by hylc-fit,
 # then the report with --ours and --samples. Checks: every probe table row is there; the probe criterion
 # counts the probes above 1 % of their term's range and finds our table within 10 % of the tile on all of
-# them (4 of 4 on 2026-11-27: II00 and II11 at +-40 1/m); the stationarity line reports the stored basket
+# them (4 of 4 on 2026-11-27: II00 and II11 at +-40 1/m); the RMS table of the 1D terms (ours and the
+# paper layout's fit of the same samples) has its five rows; the stationarity line reports the stored basket
 # far from stationary (|dPsi/dsx(0)| 97 % of dPsi/dsx at 5 % with config/basket.yaml; checked > 50 %, so a
 # change of the model that made it a minimum would show here); a missing samples file is one line.
 set -u
@@ -24,6 +25,8 @@ grep -q '^| sx = 0.05 | [-0-9.e]* | [-0-9.e]* ([-0-9.]*) | [-0-9.e]* ([-0-9.]*) 
 crit=$(grep '^Probe criterion' "$t/report.md") || { cat "$t/report.md"; die "no probe criterion line"; }
 echo "$crit"
 echo "$crit" | grep -Eq ': ([1-9][0-9]*) of \1 probes above 1 % of it have our table within 10 % of the tile\.$' || die "the probe criterion is not met on every counted probe"
+# the 1D terms' RMS against the samples, ours beside the paper layout's fit of the same samples
+[ "$(grep -c '^| \(sx\|sa\|sy\|II00\|II11\) | [0-9.]* | [0-9.]* | [-+0-9.e]* % |$' "$t/report.md")" = 5 ] || { cat "$t/report.md"; die "not 5 rows of RMS, ours against the paper layout"; }
 stat=$(grep '^Stationarity of the tile' "$t/report.md") || { cat "$t/report.md"; die "no stationarity line"; }
 echo "$stat"
 echo "$stat" | awk '{ if (match($0, /dPsi\/dsx\(sx = 5 %\) = [0-9.]+ %/)) { split(substr($0, RSTART, RLENGTH), w, " "); exit !(w[6] > 50) } exit 1 }' ||
