@@ -135,6 +135,7 @@ PETSC_EXTERN const char *const HylcMidsurfaceNormals[];
 /* Lifecycle. Create is not collective (use PETSC_COMM_SELF); Destroy accepts NULL. */
 PETSC_EXTERN PetscErrorCode HylcMidsurfaceCreate(MPI_Comm, HylcMidsurface *);
 PETSC_EXTERN PetscErrorCode HylcMidsurfaceDestroy(HylcMidsurface *);
+PETSC_EXTERN PetscErrorCode HylcMidsurfaceDuplicate(HylcMidsurface, HylcMidsurface *);
 PETSC_EXTERN PetscErrorCode HylcMidsurfaceSetOptionsPrefix(HylcMidsurface, const char[]);
 /* Options: -macro_phi <auto|closed|poisson>, -macro_grid <96> (nodes per direction, >= 8),
    -macro_interp <bilinear|bicubic>, -macro_normal <rotation|polar>, -macro_ksp_* / -macro_pc_* for

@@ -128,8 +128,8 @@ PETSC_EXTERN PetscErrorCode HylcMicroSolveContinued(HylcMicro, const PetscReal[6
 PETSC_EXTERN PetscErrorCode HylcMicroGetContinued(HylcMicro, PetscBool *);
 PETSC_EXTERN PetscErrorCode HylcMicroGetEnergyHistory(HylcMicro, PetscInt *, const PetscReal **);
 PETSC_EXTERN PetscErrorCode HylcMicroResultView(const HylcMicroResult *, PetscViewer);
-PETSC_EXTERN PetscErrorCode HylcMicroGetStrainGradient(HylcMicro, PetscReal[3]);
-PETSC_EXTERN PetscErrorCode HylcMicroGetStrainGradientParts(HylcMicro, PetscReal[3], PetscReal[12]);
+PETSC_EXTERN PetscErrorCode HylcMicroGetStrainGradient(HylcMicro, int, PetscReal[6]);
+PETSC_EXTERN PetscErrorCode HylcMicroGetStrainGradientParts(HylcMicro, int, PetscReal[6], PetscReal[24]);
 PETSC_EXTERN PetscErrorCode HylcMicroSetUniaxial(HylcMicro, HylcMicroUniaxialGradient, PetscReal, PetscInt, PetscReal, PetscReal);
 PETSC_EXTERN PetscErrorCode HylcMicroSetUniaxialTolerances(HylcMicro, PetscReal, PetscReal);
 PETSC_EXTERN PetscErrorCode HylcMicroSolveUniaxial(HylcMicro, HylcUniaxialDirection, PetscReal, const PetscReal[2], const PetscReal[], HylcMicroUniaxialResult *, PetscReal[]);

@@ -67,7 +67,7 @@ PETSC_EXTERN PetscErrorCode HylcPeriodicGetFullPositions(HylcPeriodic, PetscInt 
 PETSC_EXTERN PetscErrorCode HylcPeriodicCreateMatrix(HylcPeriodic, Mat *);
 PETSC_EXTERN PetscErrorCode HylcPeriodicEvaluate(HylcPeriodic, int, PetscReal[4], PetscReal[], Mat);
 PETSC_EXTERN PetscErrorCode HylcPeriodicEvaluateFinite(HylcPeriodic, int, PetscReal[4], PetscReal[], Mat, PetscBool *);
-PETSC_EXTERN PetscErrorCode HylcPeriodicEvaluateStrainDerivative(HylcPeriodic, int, PetscReal[4], PetscReal[], PetscReal[3], PetscReal[]);
+PETSC_EXTERN PetscErrorCode HylcPeriodicEvaluateStrainDerivative(HylcPeriodic, int, int, PetscReal[4], PetscReal[], PetscReal[6], PetscReal[]);
 PETSC_EXTERN PetscErrorCode HylcPeriodicUpdateFrames(HylcPeriodic);
 PETSC_EXTERN PetscErrorCode HylcPeriodicSaveFrames(HylcPeriodic);
 PETSC_EXTERN PetscErrorCode HylcPeriodicRestoreFrames(HylcPeriodic);

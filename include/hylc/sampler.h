@@ -48,6 +48,7 @@ typedef enum { HYLC_SAMPLER_START_COLD = 0, HYLC_SAMPLER_START_CONTINUE = 1, HYL
 PETSC_EXTERN const char *const HylcSamplerStarts[];
 PETSC_EXTERN PetscErrorCode    HylcSamplerSetStart(HylcSampler, HylcSamplerStart);
 PETSC_EXTERN PetscErrorCode    HylcSamplerSetBothTolerance(HylcSampler, PetscReal);
+PETSC_EXTERN PetscErrorCode    HylcSamplerSetStress(HylcSampler, PetscBool);
 PETSC_EXTERN PetscErrorCode    HylcSamplerSetProgressInterval(HylcSampler, PetscReal);
 PETSC_EXTERN PetscErrorCode    HylcSamplerSetExportRaw(HylcSampler, const char[], PetscReal);
 PETSC_EXTERN PetscErrorCode    HylcSamplerSetReference(HylcSampler, HylcReferenceMode, const char[]);

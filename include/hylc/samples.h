@@ -23,6 +23,7 @@ typedef struct {
   double psiOther;    /* -sampler_start both: Psi of the start not kept (J/m^2); NaN if it was not solved */
   int    statusOther; /* its HylcMicroStatus; -1 not solved (other starts, or the first sample of a half-line) */
   int    multistable; /* both starts converged and their Psi differ by more than -sampler_both_rtol: 1; 0 if not; -1 not compared */
+  double stress[6];   /* dPsi/dz of the kept equilibrium (envelope theorem, HylcMicroGetStrainGradient()): N/m for sx, sa, sy, N for the curvatures; NaN where not converged or not recorded */
 } HylcSampleRecord;
 
 /* how a sample's solve started (/samples/start) */

@@ -14,15 +14,15 @@ static const int PartOf[HYLC_CALIBRATE_NPARAM] = {1, 0, 2, 3};
    dlogp[2 q + k] = p_q d/dp_q of dPsi/ds_k at the fixed state (parameter q's energy term) */
 PetscErrorCode HylcCalibrateStrainGradient_Private(HylcCalibrate C, PetscReal ds[2], PetscReal dlogp[])
 {
-  PetscReal g[3], dp[12];
+  PetscReal g[6], dp[24];
 
   PetscFunctionBegin;
-  PetscCall(HylcMicroGetStrainGradientParts(C->micro, g, dp));
+  PetscCall(HylcMicroGetStrainGradientParts(C->micro, HYLC_STRAIN_PLANE_BITS, g, dp));
   ds[0] = g[0];
   ds[1] = g[2];
   for (int q = 0; q < HYLC_CALIBRATE_NPARAM; q++) {
-    dlogp[2 * q]     = dp[3 * PartOf[q]];
-    dlogp[2 * q + 1] = dp[3 * PartOf[q] + 2];
+    dlogp[2 * q]     = dp[6 * PartOf[q]];
+    dlogp[2 * q + 1] = dp[6 * PartOf[q] + 2];
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -121,7 +121,7 @@ PetscErrorCode HylcCalibrateSolveSamples_Private(HylcCalibrate C, const PetscRea
       if (buf[i * NB + HYLC_CALIB_NRECORD] == 0) ob = buf + i * NB;
     if (ob && ob[5] == 0) {
       for (int q = 0; q < HYLC_CALIBRATE_NPARAM; q++) {
-        PetscReal       g[2][3];
+        PetscReal       g[2][6];
         HylcMicroResult res;
         PetscBool       ok = PETSC_TRUE;
         if (C->role[q] == HYLC_CALIBRATE_FIXED) continue;
@@ -136,7 +136,7 @@ PetscErrorCode HylcCalibrateSolveSamples_Private(HylcCalibrate C, const PetscRea
             ok = PETSC_FALSE;
             break;
           }
-          PetscCall(HylcMicroGetStrainGradient(C->micro, g[sg]));
+          PetscCall(HylcMicroGetStrainGradient(C->micro, HYLC_STRAIN_PLANE_BITS, g[sg]));
         }
         if (ok)
           for (int k = 0; k < 2; k++) ob[HYLC_CALIB_REC_DSP + 2 * q + k] = (g[0][2 * k] - g[1][2 * k]) / (2 * C->statH);

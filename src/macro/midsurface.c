@@ -66,6 +66,45 @@ PetscErrorCode HylcMidsurfaceCreate(MPI_Comm comm, HylcMidsurface *out)
 }
 
 /*@C
+  HylcMidsurfaceDuplicate - Creates a midsurface with the settings of another (method, interpolation, normals,
+  Poisson grid size, box and options prefix) at its strain, not set up; the Poisson solution is not copied.
+
+  Not collective
+
+  Input Parameter:
+. ms - the midsurface to copy the settings of
+
+  Output Parameter:
+. out - the new midsurface (destroy with HylcMidsurfaceDestroy())
+
+  Level: intermediate
+
+.seealso: HylcMidsurfaceCreate(), HylcMidsurfaceSetStrain(), HylcMidsurfaceSetUp()
+@*/
+PetscErrorCode HylcMidsurfaceDuplicate(HylcMidsurface ms, HylcMidsurface *out)
+{
+  HylcMidsurface d;
+  const char    *prefix;
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(ms, HYLC_MIDSURFACE_CLASSID, 1);
+  PetscValidPointer(out, 2);
+  PetscCall(HylcMidsurfaceCreate(PetscObjectComm((PetscObject)ms), &d));
+  PetscCall(PetscObjectGetOptionsPrefix((PetscObject)ms, &prefix));
+  PetscCall(PetscObjectSetOptionsPrefix((PetscObject)d, prefix));
+  d->type   = ms->type;
+  d->interp = ms->interp;
+  d->normal = ms->normal;
+  d->grid   = ms->grid;
+  for (int i = 0; i < 2; i++) d->lo[i] = ms->lo[i], d->hi[i] = ms->hi[i];
+  d->strain      = ms->strain;
+  d->hasStrain   = ms->hasStrain;
+  d->setupcalled = PETSC_FALSE;
+  *out           = d;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
   HylcMidsurfaceDestroy - Drops a reference to the midsurface and frees it with its Poisson data at the last;
   accepts NULL and sets the handle to NULL.
 

@@ -6,18 +6,18 @@
 
 const char *const HylcUniaxialDirections[] = {"x", "y", "HylcUniaxialDirection", "HYLC_UNIAXIAL_", NULL};
 
-/* dPsi/dz_j (j = sx, sa, sy) of the energy terms of mask at the state of the last solve, with the multipliers
-   of those terms' gradient: linear in the terms, so the terms' results add up to all terms' */
-static PetscErrorCode StrainGradientOfTerms(HylcMicro M, int mask, PetscReal dpsi[3])
+/* dPsi/dz_j (the components comps) of the energy terms of mask at the state of the last solve, with the
+   multipliers of those terms' gradient: linear in the terms, so the terms' results add up to all terms' */
+static PetscErrorCode StrainGradientOfTerms(HylcMicro M, int mask, int comps, PetscReal dpsi[6])
 {
   PetscInt         m;
   const PetscReal *A, *AAtinv;
-  PetscReal        parts[4], dEdz[3], *dcdz, *Ag, area;
+  PetscReal        parts[4], dEdz[6], *dcdz, *Ag, area;
 
   PetscFunctionBegin;
   PetscCall(HylcPeriodicGetConstraints(M->P, &m, &A, NULL, &AAtinv));
-  PetscCall(PetscMalloc2(3 * m, &dcdz, 2 * m, &Ag));
-  PetscCall(HylcPeriodicEvaluateStrainDerivative(M->P, mask, parts, M->gw, dEdz, dcdz));
+  PetscCall(PetscMalloc2(6 * m, &dcdz, 2 * m, &Ag));
+  PetscCall(HylcPeriodicEvaluateStrainDerivative(M->P, mask, comps, parts, M->gw, dEdz, dcdz));
   for (PetscInt i = 0; i < m; i++) {
     PetscReal t = 0;
     for (PetscInt k = 0; k < M->ny; k++) t += A[i * M->ny + k] * M->gw[k];
@@ -29,57 +29,65 @@ static PetscErrorCode StrainGradientOfTerms(HylcMicro M, int mask, PetscReal dps
     Ag[m + i] = t;
   }
   PetscCall(HylcPeriodicGetArea(M->P, &area));
-  for (int j = 0; j < 3; j++) {
+  for (int j = 0; j < 6; j++) {
     PetscReal t = dEdz[j];
-    for (PetscInt i = 0; i < m; i++) t += Ag[m + i] * dcdz[3 * i + j];
+    if (!(comps & (1 << j))) {
+      dpsi[j] = (PetscReal)NAN;
+      continue;
+    }
+    for (PetscInt i = 0; i < m; i++) t += Ag[m + i] * dcdz[6 * i + j];
     dpsi[j] = t / area;
   }
   PetscCall(PetscFree2(dcdz, Ag));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* the state of the last solve set in the tile, which must have been at II = 0 */
-static PetscErrorCode StrainGradientSetState(HylcMicro M, const char caller[])
+/* the state of the last solve set in the tile */
+static PetscErrorCode StrainGradientSetState(HylcMicro M, int comps, const char caller[])
 {
-  const HylcMacroStrain *ms;
-
   PetscFunctionBegin;
   PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
   PetscCheck(M->X && M->P && M->setupcalled, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE, "%s: no solve yet", caller);
-  PetscCall(HylcPeriodicGetMacroStrain(M->P, &ms));
-  PetscCheck(ms->z[3] == 0 && ms->z[4] == 0 && ms->z[5] == 0, PETSC_COMM_SELF, PETSC_ERR_SUP, "%s: implemented for in-plane strains only (II = 0), the last solve had II = (%g, %g, %g)", caller, ms->z[3], ms->z[4], ms->z[5]);
+  PetscCheck((comps & HYLC_STRAIN_ALL_BITS) && !(comps & ~(HYLC_STRAIN_ALL_BITS | HYLC_STRAIN_NO_POISSON)), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%s: component mask %d: bits 0..5 (at least one) and HYLC_STRAIN_NO_POISSON only", caller, comps);
   PetscCall(HylcMicroToY_Private(M, M->X, M->yw));
   PetscCall(HylcPeriodicSetState(M->P, M->yw));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /*@C
-  HylcMicroGetStrainGradient - The gradient of the equilibrium energy density Psi with respect to the
-  in-plane strains (sx, sa, sy) at the state of the last solve, by the envelope theorem: at an equilibrium
-  of E(y; z) under the constraints c(y; z) = A y - dL = 0, dPsi/dz_j = (dE/dz_j + lambda . dc/dz_j) / area
-  with the partial derivatives at fixed y (HylcPeriodicEvaluateStrainDerivative()) and the multipliers
-  lambda = -(A A^T)^-1 A g_y of the state's gradient. No solve. Not collective.
+  HylcMicroGetStrainGradient - The stress of the last solve's equilibrium: the gradient of the equilibrium
+  energy density Psi with respect to the strain z = (sx, sa, sy, II00, II01, II11), by the envelope theorem:
+  at an equilibrium of E(y; z) under the constraints c(y; z) = A y - dL = 0,
+  dPsi/dz_j = (dE/dz_j + lambda . dc/dz_j) / area with the partial derivatives at fixed y
+  (HylcPeriodicEvaluateStrainDerivative()) and the multipliers lambda = -(A A^T)^-1 A g_y of the state's
+  gradient. No solve. Not collective.
 
-  Input Parameter:
-. M - the solver, after a HylcMicroSolve() at a strain with II = 0
+  Input Parameters:
++ M     - the solver, after a HylcMicroSolve()
+- comps - the components wanted: bit j for z_j (HYLC_STRAIN_ALL_BITS for all six, HYLC_STRAIN_PLANE_BITS for
+          sx, sa, sy), or'ed with HYLC_STRAIN_NO_POISSON to leave NaN a curvature component that would need a
+          Poisson midsurface (HylcPeriodicEvaluateStrainDerivative())
 
   Output Parameter:
-. dpsi - dPsi/dsx, dPsi/dsa, dPsi/dsy (J/m^2 = N/m)
+. dpsi - dPsi/dz_j (N/m for sx, sa, sy; N for the curvatures, i.e. J/m^2 per 1/m); NaN where not asked for
 
   Notes:
   The result is exact at an exact equilibrium; at a converged one its error is of the order of the
   remaining gradient (the solve's tolerance, -micro_rtol). It is meaningless at a state that did not
-  converge. tests/unit/test_uniaxial.c checks it against central differences of Psi.
+  converge. The in-plane components at II = 0 are exact; the others use central differences of the periodic
+  map (HylcPeriodicEvaluateStrainDerivative()) on its closed form, except a curvature across the axis of a
+  bent strain (II11 at II00 != 0) and the curvatures of a doubly curved strain, which need Poisson midsurfaces.
+  tests/unit/test_uniaxial.c checks every component against central differences of Psi.
 
   Level: intermediate
 
 .seealso: HylcMicroSolve(), HylcMicroSolveUniaxial(), HylcPeriodicEvaluateStrainDerivative()
 @*/
-PetscErrorCode HylcMicroGetStrainGradient(HylcMicro M, PetscReal dpsi[3])
+PetscErrorCode HylcMicroGetStrainGradient(HylcMicro M, int comps, PetscReal dpsi[6])
 {
   PetscFunctionBegin;
-  PetscCall(StrainGradientSetState(M, "HylcMicroGetStrainGradient"));
-  PetscCall(StrainGradientOfTerms(M, HYLC_TERM_ALL, dpsi));
+  PetscCall(StrainGradientSetState(M, comps, "HylcMicroGetStrainGradient"));
+  PetscCall(StrainGradientOfTerms(M, HYLC_TERM_ALL, comps, dpsi));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -87,38 +95,39 @@ PetscErrorCode HylcMicroGetStrainGradient(HylcMicro M, PetscReal dpsi[3])
   HylcMicroGetStrainGradientParts - HylcMicroGetStrainGradient() split by energy term: the gradient of
   each term (stretch, bend, twist, contact) at the state of the last solve, with the constraint multipliers
   of that term's own gradient. The terms add up to the gradient. Each term is linear in its modulus
-  (E_s, E, G, k_c), so dparts[3 k + j] is p_k d/dp_k of dPsi/dz_j at the fixed state of the tile: the
+  (E_s, E, G, k_c), so dparts[6 k + j] is p_k d/dp_k of dPsi/dz_j at the fixed state of the tile: the
   change of the gradient with a parameter without the change of the equilibrium (hylc-calibrate's
   -calibrate_stationary uses it as a Gauss-Newton Jacobian). No solve. Not collective.
 
-  Input Parameter:
-. M - the solver, after a HylcMicroSolve() at a strain with II = 0
+  Input Parameters:
++ M     - the solver, after a HylcMicroSolve()
+- comps - the components wanted (as HylcMicroGetStrainGradient())
 
   Output Parameters:
-+ dpsi   - dPsi/dsx, dPsi/dsa, dPsi/dsy (J/m^2 = N/m)
-- dparts - 12 values, dparts[3 k + j]: term k (0 stretch, 1 bend, 2 twist, 3 contact), strain j
++ dpsi   - dPsi/dz_j (NaN where not asked for)
+- dparts - 24 values, dparts[6 k + j]: term k (0 stretch, 1 bend, 2 twist, 3 contact), strain component j
 
   Level: advanced
 
 .seealso: HylcMicroGetStrainGradient()
 @*/
-PetscErrorCode HylcMicroGetStrainGradientParts(HylcMicro M, PetscReal dpsi[3], PetscReal dparts[12])
+PetscErrorCode HylcMicroGetStrainGradientParts(HylcMicro M, int comps, PetscReal dpsi[6], PetscReal dparts[24])
 {
   static const int masks[4] = {HYLC_TERM_STRETCH, HYLC_TERM_BEND, HYLC_TERM_TWIST, HYLC_TERM_CONTACT};
 
   PetscFunctionBegin;
-  PetscCall(StrainGradientSetState(M, "HylcMicroGetStrainGradientParts"));
-  for (int j = 0; j < 3; j++) dpsi[j] = 0;
+  PetscCall(StrainGradientSetState(M, comps, "HylcMicroGetStrainGradientParts"));
+  for (int j = 0; j < 6; j++) dpsi[j] = 0;
   for (int k = 0; k < 4; k++) {
-    PetscCall(StrainGradientOfTerms(M, masks[k], dparts + 3 * k));
-    for (int j = 0; j < 3; j++) dpsi[j] += dparts[3 * k + j];
+    PetscCall(StrainGradientOfTerms(M, masks[k], comps, dparts + 6 * k));
+    for (int j = 0; j < 6; j++) dpsi[j] += dparts[6 * k + j];
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* a point of the lateral minimization: strain, Psi, gradient, and the local fluctuation of its equilibrium */
 typedef struct {
-  PetscReal  p[2], z[6], psi, g[3];
+  PetscReal  p[2], z[6], psi, g[6];
   PetscReal *u;
   PetscBool  ok; /* every solve of the point converged */
 } UniPoint;
@@ -182,7 +191,7 @@ static PetscErrorCode Evaluate(HylcMicro M, HylcUniaxialDirection dir, PetscReal
   }
   if (!pt->ok) PetscFunctionReturn(PETSC_SUCCESS);
   if (M->par.uniGrad == HYLC_MICRO_UNIAXIAL_ENVELOPE)
-    PetscCall(HylcMicroGetStrainGradient(M, pt->g));
+    PetscCall(HylcMicroGetStrainGradient(M, HYLC_STRAIN_PLANE_BITS, pt->g));
   else {
     const PetscReal h = M->par.uniH;
     for (int j = 0; j < 3 && pt->ok; j++) {

@@ -480,6 +480,10 @@ static PetscErrorCode PeriodicEvaluate(HylcPeriodic P, int mask, PetscReal parts
       }
       if (mask & HYLC_TERM_BEND) E[1] += en[0];
       if (mask & HYLC_TERM_TWIST) E[2] += en[1];
+      if (P->gtfull) { /* before Scatter reduces ge */
+        P->gtfull[B->e] += ge[3];
+        P->gtfull[B->f] += ge[7];
+      }
       Scatter(P, &L, ge, He, gy, hv, P->coopos + k);
     }
     k += 121;
@@ -586,65 +590,29 @@ PetscErrorCode HylcPeriodicEvaluateFinite(HylcPeriodic P, int mask, PetscReal pa
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/*@C
-  HylcPeriodicEvaluateStrainDerivative - For an in-plane strain (II = 0), the partial derivatives of the
-  tile energy E and of the constraint residuals c = A y - dL with respect to the in-plane strains
-  z_j = (sx, sa, sy) at fixed reduced unknowns y (the originals' positions and twists) and fixed reference
-  frames: only the ghosts move, a ghost (o, s) at x_o + A (s1 px, s2 py) with A = sqrt(I) (the co-rotated
-  periodic map at II = 0). With the multipliers lambda of an equilibrium (g_y + A^T lambda = 0), the
-  envelope theorem gives dE_eq/dz_j = dE/dz_j + lambda . dc/dz_j for the equilibrium energy E_eq(z)
-  (HylcMicroGetStrainGradient()).
-
-  Not collective
-
-  Input Parameters:
-+ P    - the periodic tile, set up at a strain with II = 0, its state set (HylcPeriodicSetState())
-- mask - terms (as HylcPeriodicEvaluate())
-
-  Output Parameters:
-+ parts - the energy of each term (J)
-. gy    - the reduced gradient (4 per original vertex; may be NULL)
-. dEdz  - dE/dz_j, j = sx, sa, sy (J)
-- dcdz  - dc/dz_j of the constraint rows, m x 3 row-major (HylcPeriodicGetConstraints(); m rows; may be NULL)
-
-  Notes:
-  dE/dz_j is the virial of the ghosts: the sum over the ghosts k of g_k . (dA/dz_j (s1 px, s2 py), 0),
-  g_k the gradient of E with respect to the position of ghost k (the elements' gradients accumulated per
-  full vertex, fractional weights included). A degenerate geometry or a non-finite energy is an error, as
-  in HylcPeriodicEvaluate(). A strain with II != 0 is refused (PETSC_ERR_SUP): the map of the ghosts then
-  depends on the strain through R(xi) too.
-
-  Level: advanced
-
-.seealso: HylcPeriodicEvaluate(), HylcPeriodicGetConstraints()
-@*/
-PetscErrorCode HylcPeriodicEvaluateStrainDerivative(HylcPeriodic P, int mask, PetscReal parts[4], PetscReal gy[], PetscReal dEdz[3], PetscReal dcdz[])
+/* The evaluation with the gradient of E with respect to every full vertex's position accumulated in gfull (3
+   per full vertex, the elements' gradients with their fractional weights) and with respect to the twist of
+   every full chain edge in gtfull: the forces and moments on the ghosts that the strain derivatives need. A degenerate geometry or a non-finite energy is an error. */
+PetscErrorCode HylcPeriodicEvaluateFull_Private(HylcPeriodic P, int mask, PetscReal parts[4], PetscReal gy[], PetscReal gfull[], PetscReal gtfull[])
 {
   int            bad;
   PetscInt       v;
-  PetscReal      dA[12], *gw;
+  PetscReal     *gw;
   PetscErrorCode ierr;
 
   PetscFunctionBegin;
-  PetscValidHeaderSpecific(P, HYLC_PERIODIC_CLASSID, 1);
-  PetscCheck(P->setup, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE, "Call HylcPeriodicSetUp() first");
-  PetscCheck(P->z[3] == 0 && P->z[4] == 0 && P->z[5] == 0, PETSC_COMM_SELF, PETSC_ERR_SUP, "The strain derivative of the tile energy is implemented for in-plane strains only (II = 0), got II = (%g, %g, %g)", (double)P->z[3], (double)P->z[4],
-             (double)P->z[5]);
-  PetscCall(PetscCalloc2(3 * P->nfv, &P->gfull, gy ? 0 : 4 * P->N, &gw)); /* the element gradients are formed only with a reduced gradient */
-  ierr = PeriodicEvaluate(P, mask, parts, gy ? gy : gw, NULL, &bad, &v);
-  if (!ierr && !bad) {
-    StretchDerivatives(P->z, dA);
-    for (int j = 0; j < 3; j++) dEdz[j] = 0;
-    for (PetscInt k = P->N; k < P->nfv; k++) {
-      const PetscReal sh[2] = {P->fs[2 * k] * P->D.px, P->fs[2 * k + 1] * P->D.py}, *g = P->gfull + 3 * k;
-      for (int j = 0; j < 3; j++) dEdz[j] += g[0] * (dA[4 * j] * sh[0] + dA[4 * j + 1] * sh[1]) + g[1] * (dA[4 * j + 2] * sh[0] + dA[4 * j + 3] * sh[1]);
-    }
-  }
-  PetscCall(PetscFree2(P->gfull, gw));
+  PetscCall(PetscMalloc1(gy ? 0 : 4 * P->N, &gw)); /* the element gradients are formed only with a reduced gradient */
+  PetscCall(PetscArrayzero(gfull, 3 * P->nfv));
+  PetscCall(PetscArrayzero(gtfull, P->nchain));
+  P->gfull  = gfull;
+  P->gtfull = gtfull;
+  ierr      = PeriodicEvaluate(P, mask, parts, gy ? gy : gw, NULL, &bad, &v);
+  P->gfull  = NULL;
+  P->gtfull = NULL;
+  PetscCall(PetscFree(gw));
   PetscCall(ierr);
   PetscCheck(bad != 1, PETSC_COMM_SELF, PETSC_ERR_FP, "Zero-length edge at vertex %" PetscInt_FMT, v);
   PetscCheck(bad != 2, PETSC_COMM_SELF, PETSC_ERR_FP, "Bending element at vertex %" PetscInt_FMT " is degenerate", v);
   PetscCheck(bad != 3, PETSC_COMM_SELF, PETSC_ERR_FP, "Energy is not finite: stretch %g, bend %g, twist %g, contact %g", (double)parts[0], (double)parts[1], (double)parts[2], (double)parts[3]);
-  if (dcdz) PetscCall(HylcPeriodicConstraintStrainDerivative_Private(P, dcdz));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

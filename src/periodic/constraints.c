@@ -235,6 +235,43 @@ PetscErrorCode HylcPeriodicConstraintStrainDerivative_Private(HylcPeriodic P, Pe
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The kept constraint residuals at the state y for the strain of ms: translation rows
+   sum_o w_o R_o^T (y_o - x0_o), slide rows sum_o s w_o tau_o . R_o^T (y_o - x0_o) with R_o, x0_o and tau_o
+   (the reference tangent deformed by ms's A) of ms. At P's own strain this is A y - dL. */
+PetscErrorCode HylcPeriodicConstraintResidualAt_Private(HylcPeriodic P, HylcMidsurface ms, const PetscReal *x0, const PetscReal y[], PetscReal c[])
+{
+  const PetscInt         N = P->N;
+  PetscInt               nloops, m, *fam;
+  PetscReal             *sgn, *full;
+  const HylcMacroStrain *st;
+
+  PetscFunctionBegin;
+  PetscCall(ConstraintLayout(P, &nloops, &fam, &sgn, &m));
+  PetscCall(PetscCalloc1(m, &full));
+  PetscCall(HylcMidsurfaceGetStrain(ms, &st));
+  for (PetscInt o = 0; o < N; o++) {
+    const PetscInt  u  = P->D.prev[o];
+    const PetscReal wo = 0.5 * (P->D.restLength[u] + P->D.restLength[o]);
+    PetscReal       R[9], d[3], Rtd[3], t[3], tau[3], s;
+    PetscInt        row;
+    PetscCall(HylcMidsurfaceGetRotation(ms, P->xi + 3 * o, R));
+    for (int i = 0; i < 3; i++) d[i] = y[4 * o + i] - x0[3 * o + i];
+    MatT3(R, d, Rtd);
+    for (int i = 0; i < 3; i++) full[i] += wo * Rtd[i];
+    if (P->slide == HYLC_SLIDE_NONE) continue;
+    PetscCall(SlideRow(P, o, fam, sgn, &row, &s, t));
+    tau[0] = st->A[0] * t[0] + st->A[1] * t[1];
+    tau[1] = st->A[2] * t[0] + st->A[3] * t[1];
+    tau[2] = t[2];
+    PetscCheck(HylcNormalize3(tau) > 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "Yarn folds back at vertex %" PetscInt_FMT ": no tangent for the slide constraint", o);
+    full[row] += s * wo * HylcDot3(tau, Rtd);
+  }
+  for (PetscInt k = 0; k < P->ncons; k++) c[k] = full[P->crow[k]];
+  PetscCall(PetscFree(full));
+  PetscCall(PetscFree2(fam, sgn));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /*@C
   HylcPeriodicGetConstraints - The constraints A y = dL of the set-up tile (borrowed; any output may be NULL).
 

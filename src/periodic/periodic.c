@@ -196,6 +196,7 @@ PetscErrorCode HylcPeriodicDestroy(HylcPeriodic *per)
   }
   PetscCall(HylcPeriodicReset_Private(*per));
   PetscCall(HylcMidsurfaceDestroy(&(*per)->ms));
+  PetscCall(HylcMidsurfaceDestroy(&(*per)->msfd));
   PetscCall(HylcPatternDestroy(&(*per)->pat));
   PetscCall(PetscHeaderDestroy(per));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -34,6 +34,8 @@ struct _p_HylcPeriodic {
   HylcYarnConstants      c;
   HylcRodBendTwistParams btpar;
   HylcMidsurface         ms;
+  HylcMidsurface         msfd;     /* the midsurface at perturbed strains (strain derivatives at II != 0; created on first use) */
+  PetscReal              msbox[4]; /* the box in xi of ms: lo[2], hi[2] */
   PetscReal              z[6];
   HylcSlideConstraint    slide;
   PetscReal              marginFactor; /* contact ghosts: every copy in the neighbouring tiles (0) or those within max(3 r, factor min(px, py)) */
@@ -80,7 +82,8 @@ struct _p_HylcPeriodic {
   PetscInt     coonpairs, *coopairs; /* the pairs of the current COO structure, a superset of the touching ones */
   PetscReal   *coopw;                /* their weights */
   Mat          cooMat;
-  PetscReal   *gfull; /* when set, the evaluation also accumulates the gradient per full vertex (3 each) here */
+  PetscReal   *gfull;  /* when set, the evaluation also accumulates the gradient per full vertex (3 each) here */
+  PetscReal   *gtfull; /* ... and dE/dtheta per full chain edge here (the twist of that copy of the edge) */
   /* accumulated wall times (s): evaluations with a Hessian, contact (broadphase + pairs), assembly */
   PetscLogDouble tEval, tContact, tAssemble;
 };
@@ -122,3 +125,9 @@ PETSC_INTERN PetscErrorCode HylcPeriodicSetUpConstraints_Private(HylcPeriodic, c
 /* dc/dz_j at fixed y of the kept constraint rows c = A y - dL for the in-plane strains (II = 0): m x 3,
    row-major (constraints.c) */
 PETSC_INTERN PetscErrorCode HylcPeriodicConstraintStrainDerivative_Private(HylcPeriodic, PetscReal[]);
+/* the kept constraint residuals c = A y - dL at the state y for the strain of the set-up midsurface ms, the
+   rows and their right-hand side rebuilt from ms (the same rows as P's); x0 the deformed initial guess of the
+   originals at that strain (3 per original) (constraints.c) */
+PETSC_INTERN PetscErrorCode HylcPeriodicConstraintResidualAt_Private(HylcPeriodic, HylcMidsurface, const PetscReal *, const PetscReal[], PetscReal[]);
+/* the reduced evaluation with the gradient per full vertex (3 each) and dE/dtheta per full chain edge (assembly.c) */
+PETSC_INTERN PetscErrorCode HylcPeriodicEvaluateFull_Private(HylcPeriodic, int, PetscReal[4], PetscReal[], PetscReal[], PetscReal[]);

@@ -161,6 +161,7 @@ PetscErrorCode HylcPeriodicSetUp(HylcPeriodic P)
   hi[0] += 1.5 * P->D.px;
   lo[1] -= 1.5 * P->D.py;
   hi[1] += 1.5 * P->D.py;
+  P->msbox[0] = lo[0], P->msbox[1] = lo[1], P->msbox[2] = hi[0], P->msbox[3] = hi[1];
   PetscCall(HylcMidsurfaceSetStrain(P->ms, P->z));
   PetscCall(HylcMidsurfaceSetBox(P->ms, lo, hi));
   PetscCall(HylcMidsurfaceSetUp(P->ms));

@@ -219,6 +219,28 @@ PetscErrorCode HylcSamplerSetBothTolerance(HylcSampler S, PetscReal rtol)
 }
 
 /*@C
+  HylcSamplerSetStress - Whether each converged sample records its stress dPsi/dz (all six components, by the
+  envelope theorem at the equilibrium: HylcMicroGetStrainGradient(); option -sampler_stress). The stress is
+  what hylc-fit's fabric method fits the slopes of its splines to.
+
+  Not collective
+
+  Input Parameters:
++ S      - the sampler
+- stress - PETSC_TRUE (default) to record it, PETSC_FALSE to write NaN
+
+  Level: intermediate
+
+.seealso: HylcMicroGetStrainGradient(), HylcSamplerRun()
+@*/
+PetscErrorCode HylcSamplerSetStress(HylcSampler S, PetscBool stress)
+{
+  SAMPLER_SETTER_BEGIN;
+  S->stress = stress;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
   HylcSamplerSetProgressInterval - Seconds between progress lines (option -sampler_progress).
 
   Not collective
@@ -319,7 +341,7 @@ PetscErrorCode HylcSamplerSetFromOptions(HylcSampler S)
   char           terms[512] = "all", output[PETSC_MAX_PATH_LEN], refout[PETSC_MAX_PATH_LEN], rawdir[PETSC_MAX_PATH_LEN];
   PetscInt       n1 = S->n1, n2 = S->n2, batch = S->batch;
   PetscReal      progress = S->progress, density = S->density, bothRtol = S->bothRtol;
-  PetscBool      resume = S->resume, overwrite = S->overwrite, tset;
+  PetscBool      resume = S->resume, overwrite = S->overwrite, stress = S->stress, tset;
   PetscEnum      mode = (PetscEnum)S->refmode, start = (PetscEnum)S->start;
   HylcPlanRanges ranges = S->ranges;
   HylcPattern    pat;
@@ -360,6 +382,7 @@ PetscErrorCode HylcSamplerSetFromOptions(HylcSampler S)
                              "cold (every sample from u~ = 0: the paper's procedure) or both (every sample from both, the lower Psi kept, the other in /samples/psi_other: a map of multistability)",
                              "HylcSamplerSetStart", HylcSamplerStarts, start, &start, NULL));
   PetscCall(HylcOptionsReal("-sampler_both_rtol", "-sampler_start both: relative difference of the two starts' Psi above which a sample is flagged multistable (1)", "HylcSamplerSetBothTolerance", bothRtol, &bothRtol, NULL));
+  PetscCall(PetscOptionsBool("-sampler_stress", "Record each converged sample's stress dPsi/dz (six components, N/m and N; envelope theorem, no re-solve) in /samples/stress", "HylcSamplerSetStress", stress, &stress, NULL));
   PetscCall(HylcOptionsReal("-sampler_progress", "Seconds between progress lines", "HylcSamplerSetProgressInterval", progress, &progress, NULL));
   PetscCall(PetscOptionsString("-sampler_export_raw", "Also write the paper's raw layout into this directory: data.txt (rows sx sa sy II00 II01 II11 Psi in the order of C4) and info.txt (area, area density)", "HylcSamplerSetExportRaw", rawdir,
                                rawdir, sizeof(rawdir), NULL));
@@ -375,6 +398,7 @@ PetscErrorCode HylcSamplerSetFromOptions(HylcSampler S)
   PetscCall(HylcSamplerSetBatchSize(S, batch));
   PetscCall(HylcSamplerSetStart(S, (HylcSamplerStart)start));
   PetscCall(HylcSamplerSetBothTolerance(S, bothRtol));
+  PetscCall(HylcSamplerSetStress(S, stress));
   PetscCall(HylcSamplerSetProgressInterval(S, progress));
   PetscCall(HylcSamplerSetExportRaw(S, rawdir, density));
   if (tset) {

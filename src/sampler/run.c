@@ -163,6 +163,19 @@ static void FillRecord(long k, int term, const double z[6], const HylcMicroResul
   rec->psiOther    = NAN;
   rec->statusOther = -1;
   rec->multistable = -1;
+  for (int i = 0; i < 6; i++) rec->stress[i] = NAN;
+}
+
+/* the stress of the micro solver's last equilibrium into rec, if it converged and the run records it */
+static PetscErrorCode RecordStress(HylcSampler S, HylcSampleRecord *rec)
+{
+  PetscFunctionBegin;
+  if (S->stress && rec->status == HYLC_MICRO_CONVERGED) {
+    PetscReal g[6];
+    PetscCall(HylcMicroGetStrainGradient(S->micro, HYLC_STRAIN_ALL_BITS | HYLC_STRAIN_NO_POISSON, g));
+    for (int i = 0; i < 6; i++) rec->stress[i] = g[i];
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* the order of outcomes: converged, then not converged, then non-finite */
@@ -191,6 +204,7 @@ static PetscErrorCode SolveSample(HylcSampler S, long k, const PetscReal *u, Pet
   if (S->start == HYLC_SAMPLER_START_BOTH) {
     PetscCall(HylcMicroSolve(S->micro, z, &rc));
     FillRecord(k, term, z, &rc, rec);
+    PetscCall(RecordStress(S, rec));
     if (state) PetscCall(HylcMicroGetState(S->micro, state));
     if (u) {
       PetscBool contBetter;
@@ -199,6 +213,7 @@ static PetscErrorCode SolveSample(HylcSampler S, long k, const PetscReal *u, Pet
       contBetter = (PetscBool)(OutcomeRank(&r) < OutcomeRank(&rc) || (r.status == HYLC_MICRO_CONVERGED && rc.status == HYLC_MICRO_CONVERGED && r.psi < rc.psi));
       if (contBetter) {
         FillRecord(k, term, z, &r, rec);
+        PetscCall(RecordStress(S, rec));
         rec->start = HYLC_SAMPLE_START_CONTINUED;
         if (state) PetscCall(HylcMicroGetState(S->micro, state));
       }
@@ -214,6 +229,7 @@ static PetscErrorCode SolveSample(HylcSampler S, long k, const PetscReal *u, Pet
     PetscBool retried;
     PetscCall(HylcMicroSolveContinued(S->micro, z, u, &r, state, &retried));
     FillRecord(k, term, z, &r, rec);
+    PetscCall(RecordStress(S, rec)); /* a converged result is the last solve's (HylcMicroSolveContinued()) */
     rec->start = !u ? HYLC_SAMPLE_START_COLD : (retried ? HYLC_SAMPLE_START_RETRIED : HYLC_SAMPLE_START_CONTINUED);
   }
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -70,6 +70,7 @@ PetscErrorCode HylcSamplerCreate(MPI_Comm comm, HylcSampler *s)
   S->progress = 5;
   S->start    = HYLC_SAMPLER_START_CONTINUE;
   S->bothRtol = 1e-3;
+  S->stress   = PETSC_TRUE;
   S->density  = 0;
   S->refmode  = HYLC_REFERENCE_AUTO;
   PetscCall(HylcYarnModelDefault(&S->model));

@@ -29,6 +29,7 @@ struct _p_HylcSampler {
   PetscInt            batch;
   HylcSamplerStart    start;    /* -sampler_start */
   PetscReal           bothRtol; /* -sampler_both_rtol */
+  PetscBool           stress;   /* -sampler_stress: record dPsi/dz of each converged sample */
   PetscReal           progress; /* seconds between progress lines */
   long                nsamples;
   HylcReferenceMode   refmode;

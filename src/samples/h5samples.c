@@ -33,12 +33,13 @@ static PetscErrorCode DatasetInt(hid_t loc, const char name[], PetscInt n, Petsc
 
 static PetscErrorCode WriteSamplesGroup(hid_t file, long N, const HylcSampleRecord recs[], const unsigned char done[])
 {
-  double *strain, *psi, *parts, *res, *cres, *t, *psio;
+  double *strain, *psi, *parts, *res, *cres, *t, *psio, *stress;
   int    *term, *status, *its, *retries, *start, *negcurv, *escapes, *stato, *multi;
   hid_t   g;
   int     nstat = HylcSamplesNumStatuses_();
 
   PetscFunctionBegin;
+  PetscCall(PetscMalloc1(6 * N + 1, &stress));
   PetscCall(PetscMalloc6(6 * N + 1, &strain, N + 1, &psi, 4 * N + 1, &parts, N + 1, &res, N + 1, &cres, N + 1, &t));
   PetscCall(PetscMalloc7(N + 1, &term, N + 1, &status, N + 1, &its, N + 1, &retries, N + 1, &start, N + 1, &negcurv, N + 1, &escapes));
   PetscCall(PetscMalloc3(N + 1, &psio, N + 1, &stato, N + 1, &multi));
@@ -49,6 +50,7 @@ static PetscErrorCode WriteSamplesGroup(hid_t file, long N, const HylcSampleReco
     psio[k]    = done && done[k] ? recs[k].psiOther : NAN;
     stato[k]   = done && done[k] ? recs[k].statusOther : -1;
     multi[k]   = done && done[k] ? recs[k].multistable : -1;
+    for (int i = 0; i < 6; i++) stress[6 * k + i] = done && done[k] ? recs[k].stress[i] : NAN;
     if (done && done[k]) {
       const HylcSampleRecord *r = &recs[k];
       for (int i = 0; i < 6; i++) strain[6 * k + i] = r->z[i];
@@ -79,6 +81,8 @@ static PetscErrorCode WriteSamplesGroup(hid_t file, long N, const HylcSampleReco
   HylcCallHDF5(HylcH5WriteDataset(g, "strain", 2, (hsize_t[]){(hsize_t)N, 6}, H5T_NATIVE_DOUBLE, strain, "1 for sx, sa, sy; 1/m for II00, II01, II11",
                                   "macroscopic strain z = (sx, sa, sy, II00, II01, II11): in-plane stretch/shear and the second fundamental form"));
   HylcCallHDF5(HylcH5WriteDataset(g, "psi", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_DOUBLE, psi, "J/m^2", "area energy density psi = E / A of the equilibrium (A: reference tile area)"));
+  HylcCallHDF5(HylcH5WriteDataset(g, "stress", 2, (hsize_t[]){(hsize_t)N, 6}, H5T_NATIVE_DOUBLE, stress, "N/m for sx, sa, sy; N (J/m^2 per 1/m) for II00, II01, II11",
+                                  "the stress dpsi/dz of the equilibrium, columns as /samples/strain, by the envelope theorem (no re-solve; docs/output-format.md); NaN where the solve did not converge or the run did not record it (-sampler_stress false)"));
   HylcCallHDF5(HylcH5WriteDataset(g, "term", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, term, "1", "term of the sampling plan: 0 zero sample, 1..5 one-dimensional, 6..14 two-dimensional; index into /samples@term_names; -1 not computed"));
   HylcCallHDF5(HylcH5WriteDataset(g, "status", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, status, "1",
                                   "HylcMicroStatus of the Newton solve, index into /samples@status_names (0 converged, 1 iteration_cap, 2 time_cap, 3 stalled, 4 nonfinite; 5 failed is reserved, no longer produced); -1: not computed (the run ended "
@@ -107,6 +111,7 @@ static PetscErrorCode WriteSamplesGroup(hid_t file, long N, const HylcSampleReco
   PetscCall(PetscFree6(strain, psi, parts, res, cres, t));
   PetscCall(PetscFree7(term, status, its, retries, start, negcurv, escapes));
   PetscCall(PetscFree3(psio, stato, multi));
+  PetscCall(PetscFree(stress));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -356,12 +361,12 @@ PetscErrorCode HylcSamplesWriteHDF5(const char path[], long nsamples, const Hylc
 }
 
 /* the datasets of /samples that HylcSamplesReadHDF5() reads (start, negcurv, escapes, psi_other,
-   status_other and multistable are newer than the format's first files: optional) */
+   status_other, multistable and stress are newer than the format's first files: optional) */
 static const HylcTableColumn SamplesColumns[] = {
     {"strain", 6, H5T_FLOAT, PETSC_FALSE},      {"psi", 0, H5T_FLOAT, PETSC_FALSE},      {"energy_parts", 4, H5T_FLOAT, PETSC_FALSE}, {"residual", 0, H5T_FLOAT, PETSC_FALSE},     {"constraint_residual", 0, H5T_FLOAT, PETSC_FALSE},
     {"time", 0, H5T_FLOAT, PETSC_FALSE},        {"term", 0, H5T_INTEGER, PETSC_FALSE},   {"status", 0, H5T_INTEGER, PETSC_FALSE},     {"iterations", 0, H5T_INTEGER, PETSC_FALSE}, {"retries", 0, H5T_INTEGER, PETSC_FALSE},
     {"start", 0, H5T_INTEGER, PETSC_TRUE},      {"negcurv", 0, H5T_INTEGER, PETSC_TRUE}, {"escapes", 0, H5T_INTEGER, PETSC_TRUE},     {"psi_other", 0, H5T_FLOAT, PETSC_TRUE},     {"status_other", 0, H5T_INTEGER, PETSC_TRUE},
-    {"multistable", 0, H5T_INTEGER, PETSC_TRUE}};
+    {"multistable", 0, H5T_INTEGER, PETSC_TRUE},  {"stress", 6, H5T_FLOAT, PETSC_TRUE}};
 #define NSAMPLESCOLUMNS ((int)(sizeof(SamplesColumns) / sizeof(SamplesColumns[0])))
 
 /* whether /samples/name exists (checked by HylcTableCheckHDF5Columns() when it does) */
@@ -380,7 +385,7 @@ static int HasColumn(hid_t file, const char name[])
 
 /* every column read into the arrays given (allocated for N + 1 rows by the caller) */
 static PetscErrorCode ReadColumns(hid_t file, const char path[], double *strain, double *psi, double *parts, double *res, double *cres, double *tm, int *term, int *status, int *its, int *retries, int *start, int *negcurv, int *escapes, double *psio,
-                                  int *stato, int *multi)
+                                  int *stato, int *multi, double *stress)
 {
   PetscFunctionBegin;
   PetscCall(HylcTableReadHDF5Column(file, path, "samples/strain", H5T_NATIVE_DOUBLE, strain));
@@ -402,6 +407,8 @@ static PetscErrorCode ReadColumns(hid_t file, const char path[], double *strain,
   if (HasColumn(file, "psi_other")) PetscCall(HylcTableReadHDF5Column(file, path, "samples/psi_other", H5T_NATIVE_DOUBLE, psio));
   if (HasColumn(file, "status_other")) PetscCall(HylcTableReadHDF5Column(file, path, "samples/status_other", H5T_NATIVE_INT, stato));
   if (HasColumn(file, "multistable")) PetscCall(HylcTableReadHDF5Column(file, path, "samples/multistable", H5T_NATIVE_INT, multi));
+  /* files before the stress: NaN */
+  if (HasColumn(file, "stress")) PetscCall(HylcTableReadHDF5Column(file, path, "samples/stress", H5T_NATIVE_DOUBLE, stress));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -414,7 +421,7 @@ static PetscErrorCode ReadFile(hid_t file, const char path[], long *nsamples, Hy
   HylcSampleRecord *recs = NULL;
   unsigned char    *done = NULL;
   PetscErrorCode    ierr;
-  double           *psio;
+  double           *psio, *stress;
   int              *stato, *multi;
 
   PetscFunctionBegin;
@@ -425,9 +432,10 @@ static PetscErrorCode ReadFile(hid_t file, const char path[], long *nsamples, Hy
   PetscCall(PetscMalloc6(6 * N + 1, &strain, N + 1, &psi, 4 * N + 1, &parts, N + 1, &res, N + 1, &cres, N + 1, &tm));
   PetscCall(PetscMalloc4(N + 1, &term, N + 1, &status, N + 1, &its, N + 1, &retries));
   PetscCall(PetscCalloc3(N + 1, &start, N + 1, &negcurv, N + 1, &escapes));
-  PetscCall(PetscMalloc3(N + 1, &psio, N + 1, &stato, N + 1, &multi));
+  PetscCall(PetscMalloc4(N + 1, &psio, N + 1, &stato, N + 1, &multi, 6 * N + 1, &stress));
   for (long k = 0; k < N; k++) negcurv[k] = -1, psio[k] = NAN, stato[k] = -1, multi[k] = -1;
-  ierr = ReadColumns(file, path, strain, psi, parts, res, cres, tm, term, status, its, retries, start, negcurv, escapes, psio, stato, multi);
+  for (long k = 0; k < 6 * N; k++) stress[k] = NAN;
+  ierr = ReadColumns(file, path, strain, psi, parts, res, cres, tm, term, status, its, retries, start, negcurv, escapes, psio, stato, multi, stress);
   if (!ierr) ierr = PetscCalloc1(N + 1, &recs);
   if (!ierr) ierr = PetscCalloc1(N + 1, &done);
   for (long k = 0; !ierr && k < N; k++) {
@@ -449,9 +457,10 @@ static PetscErrorCode ReadFile(hid_t file, const char path[], long *nsamples, Hy
     r->psiOther    = psio[k];
     r->statusOther = stato[k] >= -1 && stato[k] < HylcSamplesNumStatuses_() ? stato[k] : -1;
     r->multistable = multi[k] >= -1 && multi[k] <= 1 ? multi[k] : -1;
-    done[k]        = status[k] >= 0;
+    for (int i = 0; i < 6; i++) r->stress[i] = stress[6 * k + i];
+    done[k] = status[k] >= 0;
   }
-  PetscCall(PetscFree3(psio, stato, multi));
+  PetscCall(PetscFree4(psio, stato, multi, stress));
   PetscCall(PetscFree6(strain, psi, parts, res, cres, tm));
   PetscCall(PetscFree4(term, status, its, retries));
   PetscCall(PetscFree3(start, negcurv, escapes));

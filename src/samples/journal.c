@@ -22,8 +22,8 @@
 
 #define JOURNAL_MAGIC     "HYLCJNL1"
 #define JOURNAL_BOM       0x01020304u
-#define JOURNAL_VERSION   5u  /* 1: a short fingerprint (hylc before the complete identity); 2: records without the start; 3: without negcurv and escapes; 4: without the other start's Psi, status and the multistable flag */
-#define JOURNAL_PAYLOAD   164 /* packed record without checksum */
+#define JOURNAL_VERSION   6u  /* 1: a short fingerprint (hylc before the complete identity); 2: records without the start; 3: without negcurv and escapes; 4: without the other start's Psi, status and the multistable flag; 5: without the stress */
+#define JOURNAL_PAYLOAD   212 /* packed record without checksum */
 #define JOURNAL_RECSIZE   (JOURNAL_PAYLOAD + 8)
 #define JOURNAL_FIXEDHEAD 64 /* header bytes before the identity text: 32 fixed + the SHA-256 of the identity */
 #define JOURNAL_MAXID     (1 << 24)
@@ -51,7 +51,7 @@ static uint64_t Fnv1a64(const unsigned char *p, size_t n)
 }
 
 /* the record layout: int64 index, int32 term, status, iterations, retries, 14 doubles, int32 start, negcurv,
-   escapes, double psiOther, int32 statusOther, multistable, uint64 checksum */
+   escapes, double psiOther, int32 statusOther, multistable, double stress[6], uint64 checksum */
 static void PackRecord(const HylcSampleRecord *r, unsigned char b[JOURNAL_RECSIZE])
 {
   int64_t  idx   = r->index;
@@ -73,6 +73,7 @@ static void PackRecord(const HylcSampleRecord *r, unsigned char b[JOURNAL_RECSIZ
     memcpy(b + 136, tail, 12);
     memcpy(b + 148, &r->psiOther, 8);
     memcpy(b + 156, other, 8);
+    memcpy(b + 164, r->stress, 48);
   }
   h = Fnv1a64(b, JOURNAL_PAYLOAD);
   memcpy(b + JOURNAL_PAYLOAD, &h, 8);
@@ -119,6 +120,7 @@ static int UnpackRecord(const unsigned char b[JOURNAL_RECSIZE], long nsamples, H
     r->statusOther = other[0];
     r->multistable = other[1];
   }
+  memcpy(r->stress, b + 164, 48);
   return 0;
 }
 

@@ -131,6 +131,7 @@ static const HylcStageOption HylcStageOptions[] = {
     {"sampler_range_II11", G_PLAN},
     {"sampler_batch", G_SAMPLER},
     {"sampler_both_rtol", G_SAMPLER},
+    {"sampler_stress", G_SAMPLER},
     {"sampler_density", G_SAMPLER},
     {"sampler_export_raw", G_SAMPLER},
     {"sampler_n1", G_SAMPLER},

@@ -13,7 +13,7 @@
 #include <unistd.h>
 #include "hylctest.h"
 
-#define RECSIZE 172 /* bytes per journal record (docs/output-format.md) */
+#define RECSIZE 220 /* bytes per journal record (docs/output-format.md) */
 
 static void MakeRecord(long k, HylcSampleRecord *r)
 {
