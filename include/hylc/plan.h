@@ -15,11 +15,23 @@
 #define HYLC_PLAN_NCOORD HYLC_NCOORD                    /* the vocabulary's coordinates (include/hylc/strain.h) */
 #define HYLC_PLAN_NTERM  (1 + HYLC_NCOORD + HYLC_NPAIR) /* zero, the 1D terms, the 2D terms */
 
+/* How the samples of an axis are spaced. paper: n1 (1D) or n2 (2D) samples of Algorithm C4's SampleRange.
+   graded: the knots of HylcPlanGradedKnots() over the axis's range (dense near 0, where fabric lives), each
+   interval cut into sub equal parts: the knots of the fabric fit are samples (hylc-fit -fit_method fabric). */
+typedef enum { HYLC_PLAN_SPACING_PAPER = 0, HYLC_PLAN_SPACING_GRADED = 1 } HylcPlanSpacing;
+
+#define HYLC_PLAN_MAXAXIS 1024 /* samples per axis at most */
+
 typedef struct {
   double min1[HYLC_PLAN_NCOORD], max1[HYLC_PLAN_NCOORD]; /* 1D ranges per coordinate */
   double min2[9][2], max2[9][2];                         /* 2D ranges per pair and coordinate */
-  int    n1, n2;                                         /* samples per 1D term, per 2D axis (150, 50) */
+  int    n1, n2;                                         /* paper spacing: samples per 1D term, per 2D axis (150, 50) */
   int    terms;                                          /* bit t set: term t is sampled (all: (1 << 15) - 1) */
+  int    spacing;                                        /* HylcPlanSpacing */
+  double h0[HYLC_PLAN_NCOORD];                           /* graded: the knot spacing at 0 per coordinate (II in 1/m) */
+  double growth;                                         /* graded: ratio of consecutive knot spacings away from 0 (>= 1) */
+  double hmax;                                           /* graded: the largest knot spacing, as a fraction of the axis's range */
+  int    sub;                                            /* graded: samples per knot interval (1: the knots only) */
 } HylcPlan;
 
 /* the name of term t: zero, sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11,
@@ -34,6 +46,17 @@ int HylcPlanStrainIndex(int c);
    (dense near 0). End points are exact. Returns -1 for invalid input (N < 1, zmin > zmax, zmin <= -1 for
    sx/sy, a range not containing 0 for the other coordinates). */
 int HylcSampleRange(int c, double zmin, double zmax, int N, double Z[]);
+/* The graded knots of [mn, mx] (mn <= 0 <= mx, mn < mx): 0, then on each side spacings h0, h0 g, h0 g^2, ...
+   (each at most hmax), the last interval on a side ending at the end point (merged with the one before when
+   it would be shorter than half of that one's). Ascending, 0 included; returns the count, or -1 for invalid
+   input (h0 <= 0, g < 1, hmax < h0, more than cap knots). */
+int HylcPlanGradedKnots(double mn, double mx, double h0, double g, double hmax, int cap, double K[]);
+/* The samples of axis a (0, or 1 for the second coordinate of a 2D term) of term t (1..14), ascending; returns
+   their count, or -1 for an invalid plan. paper: HylcSampleRange with n1 / n2; graded: the knots cut sub times. */
+int HylcPlanAxis(const HylcPlan *, int t, int a, double Z[HYLC_PLAN_MAXAXIS]);
+/* The knots of axis a of term t under graded spacing (what the samples subdivide); -1 for paper spacing or an
+   invalid plan. */
+int HylcPlanAxisKnots(const HylcPlan *, int t, int a, double K[HYLC_PLAN_MAXAXIS]);
 /* number of samples of term t (0 if not selected) and of the whole plan */
 long HylcPlanTermSize(const HylcPlan *, int t);
 long HylcPlanSize(const HylcPlan *);
@@ -51,8 +74,12 @@ long HylcPlanUnits(const HylcPlan *, long start[], long order[]);
 /* the default ranges of docs/method.md §8 for a named pattern family: "woven" (basket, satin), "stockinette",
    "honeycomb", "rib"; II ranges scale with 1/r relative to r = 1 mm (scale = 1e-3 / r). Returns -1 for an
    unknown family. 2D ranges: stretch axes paired with sa or a bending [-0.1, 0.84 max], (sx, sy) both
-   [0.74 min, max], sa in 2D +-0.8 max, bending in 2D +-0.8 max (+-0.72 max on the same axis). */
+   [0.74 min, max], sa in 2D +-0.8 max, bending in 2D +-0.8 max (+-0.72 max on the same axis). The spacing is
+   paper's (n1 150, n2 50); the graded parameters are set to their defaults (HylcPlanGradedDefaults()). */
 int HylcPlanDefaults(const char *family, double scale, HylcPlan *);
+/* The graded spacing's defaults: h0 = 0.01 in sx, sa, sy and 2.5 1/m x scale in the curvatures (scale = 1e-3 / r,
+   as the ranges), growth 1.5, hmax 0.15, sub 2. */
+void HylcPlanGradedDefaults(double scale, HylcPlan *);
 
 /* ---- The plan's options (src/plan/planopts.c) ---- */
 
@@ -61,12 +88,19 @@ typedef struct {
   PetscInt  family;                /* index into HylcPlanFamilies: woven, stockinette, honeycomb, rib */
   PetscBool set[HYLC_PLAN_NCOORD]; /* 1D range of coordinate c given (else the family's default) */
   PetscReal min[HYLC_PLAN_NCOORD], max[HYLC_PLAN_NCOORD];
+  PetscInt  spacing;               /* HylcPlanSpacing (the caller's default: the sampler's graded, the calibration's paper) */
+  PetscBool spacingSet;            /* -sampler_spacing given */
+  PetscBool h0set;                 /* graded: h0 given (else HylcPlanGradedDefaults(), II scaled by 1 mm / r) */
+  PetscReal h0[HYLC_PLAN_NCOORD];
+  PetscReal growth, hmax; /* graded: 0 for the defaults */
+  PetscInt  sub;          /* graded: 0 for the default */
 } HylcPlanRanges;
 
 /* Family names, -sampler_family and -sampler_range_<c> inside a PetscOptionsBegin/End block (only read;
    ranges resolved and checked for a radius by HylcPlanRangesApply), and a term list ("all", "1d" or
    comma-separated names). Collective. */
 PETSC_EXTERN const char *const HylcPlanFamilies[];
+PETSC_EXTERN const char *const HylcPlanSpacings[];
 PETSC_EXTERN PetscErrorCode    HylcPlanRangesFromOptions(PetscOptionItems *, MPI_Comm, const char[], HylcPlanRanges *);
 PETSC_EXTERN PetscErrorCode    HylcPlanRangesApply(MPI_Comm, const HylcPlanRanges *, PetscReal, HylcPlan *);
 PETSC_EXTERN PetscErrorCode    HylcPlanTermsFromString(MPI_Comm, const char[], const char[], int *);

@@ -83,9 +83,12 @@ PETSC_EXTERN PetscBool      HylcSamplesOptionIsNeutral(const char[]);
    options text; NULL: PetscOptionsGetAll of the global database) and provenance attributes on /.
    reference and model may be NULL (the groups are then omitted). Not collective (call on rank 0). */
 PETSC_EXTERN PetscErrorCode HylcSamplesWriteHDF5(const char path[], long nsamples, const HylcSampleRecord recs[], const unsigned char done[], HylcPattern reference, const HylcYarnModel *model, const char optionsText[]);
-/* The same, and /provenance from the run's identity text (HylcSamplesIdentity; NULL: no /provenance). */
+/* The same, and /provenance from the run's identity text (HylcSamplesIdentity; NULL: no /provenance), /plan
+   from the plan (its spacing; graded: its parameters and knots; NULL: no /plan). */
 PETSC_EXTERN PetscErrorCode HylcSamplesWriteHDF5WithIdentity(const char path[], long nsamples, const HylcSampleRecord recs[], const unsigned char done[], HylcPattern reference, const HylcYarnModel *model, const char optionsText[],
-                                                             const char identity[]);
+                                                             const char identity[], const HylcPlan *plan);
+/* The graded knots of axis a of term t stored in a samples file's /plan (n = 0: none). */
+PETSC_EXTERN PetscErrorCode HylcSamplesReadKnots(const char path[], int t, int a, PetscInt *n, PetscReal K[]);
 /* Reads /samples of a file written by HylcSamplesWriteHDF5: the sample count, records (indexed by
    sample) and done flags (status >= 0), allocated with PetscMalloc (free with PetscFree); optionsText
    (may be NULL) receives the /options text (PetscFree). Every dataset is checked first as by

@@ -3,6 +3,7 @@
 #include <math.h>
 #include <string.h>
 
+
 /* the terms are the shared vocabulary's (include/hylc/strain.h) after the zero sample: 1..5 its coordinates,
    6..14 its pairs */
 const char *HylcPlanTermName(int t)
@@ -46,12 +47,94 @@ int HylcSampleRange(int c, double zmin, double zmax, int N, double Z[])
   return 0;
 }
 
+int HylcPlanGradedKnots(double mn, double mx, double h0, double g, double hmax, int cap, double K[])
+{
+  double L[HYLC_PLAN_MAXAXIS], R[HYLC_PLAN_MAXAXIS];
+  int    nl = 0, nr = 0, n = 0;
+  if (!(mn <= 0 && mx >= 0 && mn < mx && h0 > 0 && g >= 1 && hmax >= h0) || cap < 1) return -1;
+  for (int side = 0; side < 2; side++) {
+    const double end = side ? mx : -mn;
+    double      *T = side ? R : L, t = 0, h = h0;
+    int          m = 0;
+    while (end > 0 && t < end) {
+      if (m == HYLC_PLAN_MAXAXIS) return -1;
+      if (t + h >= end || end - (t + h) < 0.5 * fmin(h * g, hmax)) t = end; /* the last interval: to the end point */
+      else t += h;
+      T[m++] = t;
+      h = h * g < hmax ? h * g : hmax;
+    }
+    if (side) nr = m;
+    else nl = m;
+  }
+  if (nl + nr + 1 > cap) return -1;
+  for (int i = nl - 1; i >= 0; i--) K[n++] = -L[i];
+  K[n++] = 0;
+  for (int i = 0; i < nr; i++) K[n++] = R[i];
+  return n;
+}
+
+/* the range of axis a of term t */
+static int AxisRange(const HylcPlan *p, int t, int a, int *c, double *mn, double *mx)
+{
+  if (t < 1 || t >= HYLC_PLAN_NTERM || a < 0 || a > (t > 5)) return -1;
+  if (t <= 5) {
+    *c  = t - 1;
+    *mn = p->min1[*c];
+    *mx = p->max1[*c];
+  } else {
+    int ci, cj;
+    HylcPlanPair(t, &ci, &cj);
+    *c  = a ? cj : ci;
+    *mn = p->min2[t - 6][a];
+    *mx = p->max2[t - 6][a];
+  }
+  return 0;
+}
+
+int HylcPlanAxisKnots(const HylcPlan *p, int t, int a, double K[HYLC_PLAN_MAXAXIS])
+{
+  int    c;
+  double mn, mx;
+  if (p->spacing != HYLC_PLAN_SPACING_GRADED || AxisRange(p, t, a, &c, &mn, &mx)) return -1;
+  return HylcPlanGradedKnots(mn, mx, p->h0[c], p->growth, p->hmax * (mx - mn), HYLC_PLAN_MAXAXIS, K);
+}
+
+int HylcPlanAxis(const HylcPlan *p, int t, int a, double Z[HYLC_PLAN_MAXAXIS])
+{
+  int    c, n;
+  double mn, mx;
+  if (AxisRange(p, t, a, &c, &mn, &mx)) return -1;
+  if (p->spacing == HYLC_PLAN_SPACING_PAPER) {
+    n = t <= 5 ? p->n1 : p->n2;
+    if (n > HYLC_PLAN_MAXAXIS || HylcSampleRange(c, mn, mx, n, Z)) return -1;
+    return n;
+  }
+  if (p->spacing != HYLC_PLAN_SPACING_GRADED || p->sub < 1) return -1;
+  {
+    double K[HYLC_PLAN_MAXAXIS];
+    const int nk = HylcPlanAxisKnots(p, t, a, K);
+    if (nk < 1 || (long)(nk - 1) * p->sub + 1 > HYLC_PLAN_MAXAXIS) return -1;
+    n = 0;
+    for (int i = 0; i + 1 < nk; i++)
+      for (int q = 0; q < p->sub; q++) Z[n++] = q ? K[i] + (K[i + 1] - K[i]) * q / p->sub : K[i];
+    Z[n++] = K[nk - 1];
+    return n;
+  }
+}
+
 long HylcPlanTermSize(const HylcPlan *p, int t)
 {
+  double Z[HYLC_PLAN_MAXAXIS];
+  long   n;
   if (t < 0 || t >= HYLC_PLAN_NTERM || !(p->terms & (1 << t))) return 0;
   if (t == 0) return 1;
-  if (t <= 5) return p->n1;
-  return (long)p->n2 * p->n2;
+  n = HylcPlanAxis(p, t, 0, Z);
+  if (n < 0) return 0;
+  if (t <= 5) return n;
+  {
+    const long m = HylcPlanAxis(p, t, 1, Z);
+    return m < 0 ? 0 : n * m;
+  }
 }
 
 long HylcPlanSize(const HylcPlan *p)
@@ -63,7 +146,7 @@ long HylcPlanSize(const HylcPlan *p)
 
 int HylcPlanSample(const HylcPlan *p, long k, double z[6], int *term)
 {
-  double Z[1024];
+  double Z[HYLC_PLAN_MAXAXIS];
   for (int i = 0; i < 6; i++) z[i] = 0;
   if (k < 0) return -1;
   for (int t = 0; t < HYLC_PLAN_NTERM; t++) {
@@ -75,17 +158,17 @@ int HylcPlanSample(const HylcPlan *p, long k, double z[6], int *term)
     *term = t;
     if (t == 0) return 0;
     if (t <= 5) {
-      const int c = t - 1;
-      if (p->n1 > 1024 || HylcSampleRange(c, p->min1[c], p->max1[c], p->n1, Z)) return -1;
-      z[HylcPlanStrainIndex(c)] = Z[k];
+      if (HylcPlanAxis(p, t, 0, Z) < 0) return -1;
+      z[HylcPlanStrainIndex(t - 1)] = Z[k];
       return 0;
     }
-    int ci, cj;
+    int       ci, cj;
+    const int nv = HylcPlanAxis(p, t, 1, Z);
+    if (nv < 1) return -1;
     HylcPlanPair(t, &ci, &cj);
-    if (p->n2 > 1024 || HylcSampleRange(ci, p->min2[t - 6][0], p->max2[t - 6][0], p->n2, Z)) return -1;
-    z[HylcPlanStrainIndex(ci)] = Z[k / p->n2];
-    if (HylcSampleRange(cj, p->min2[t - 6][1], p->max2[t - 6][1], p->n2, Z)) return -1;
-    z[HylcPlanStrainIndex(cj)] = Z[k % p->n2];
+    z[HylcPlanStrainIndex(cj)] = Z[k % nv];
+    if (HylcPlanAxis(p, t, 0, Z) < 0) return -1;
+    z[HylcPlanStrainIndex(ci)] = Z[k / nv];
     return 0;
   }
   return -1;
@@ -108,6 +191,7 @@ int HylcPlanDefaults(const char *family, double scale, HylcPlan *p)
   memset(p, 0, sizeof(*p));
   p->n1              = 150;
   p->n2              = 50;
+  HylcPlanGradedDefaults(scale, p);
   p->terms           = (1 << HYLC_PLAN_NTERM) - 1;
   const double lo[5] = {s0, -sa, s0, -b0 * scale, -b1 * scale}, hi[5] = {s1, sa, s1, b0 * scale, b1 * scale};
   for (int c = 0; c < 5; c++) {
@@ -168,7 +252,7 @@ static void HalfLines(const double Z[], int n, long base, long stride, long *nu,
 
 long HylcPlanUnits(const HylcPlan *p, long start[], long order[])
 {
-  double Z[1024];
+  double Z[HYLC_PLAN_MAXAXIS];
   long   nu = 0, pos = 0, off = 0;
   for (int t = 0; t < HYLC_PLAN_NTERM; t++) {
     const long n = HylcPlanTermSize(p, t);
@@ -178,17 +262,24 @@ long HylcPlanUnits(const HylcPlan *p, long start[], long order[])
       if (order) order[pos] = off;
       nu++, pos++;
     } else if (t <= 5) {
-      const int c = t - 1;
-      if (p->n1 > 1024 || HylcSampleRange(c, p->min1[c], p->max1[c], p->n1, Z)) return -1;
-      HalfLines(Z, p->n1, off, 1, &nu, &pos, start, order);
+      const int m = HylcPlanAxis(p, t, 0, Z);
+      if (m < 0) return -1;
+      HalfLines(Z, m, off, 1, &nu, &pos, start, order);
     } else {
-      int ci, cj;
-      HylcPlanPair(t, &ci, &cj);
-      if (p->n2 > 1024 || HylcSampleRange(cj, p->min2[t - 6][1], p->max2[t - 6][1], p->n2, Z)) return -1;
-      for (int a = 0; a < p->n2; a++) HalfLines(Z, p->n2, off + (long)a * p->n2, 1, &nu, &pos, start, order);
+      const int nv = HylcPlanAxis(p, t, 1, Z);
+      if (nv < 1) return -1;
+      for (long a = 0; a < n / nv; a++) HalfLines(Z, nv, off + a * nv, 1, &nu, &pos, start, order);
     }
     off += n;
   }
   if (start) start[nu] = pos;
   return nu;
+}
+
+void HylcPlanGradedDefaults(double scale, HylcPlan *p)
+{
+  for (int c = 0; c < HYLC_PLAN_NCOORD; c++) p->h0[c] = c < 3 ? 0.01 : 2.5 * scale;
+  p->growth = 1.5;
+  p->hmax   = 0.15;
+  p->sub    = 2;
 }

@@ -4,12 +4,15 @@
 #include <string.h>
 
 const char *const HylcPlanFamilies[] = {"woven", "stockinette", "honeycomb", "rib", "HylcPlanFamily", "", NULL};
+const char *const HylcPlanSpacings[] = {"paper", "graded", "HylcPlanSpacing", "HYLC_PLAN_SPACING_", NULL};
 
 /*@C
-  HylcPlanRangesFromOptions - Reads the plan's ranges inside a PetscOptionsBegin/End block (only reads them;
-  HylcPlanRangesApply() turns them into ranges for a yarn radius): -sampler_family (the defaults of
-  docs/method.md §8, II scaled by 1 mm / r) and -sampler_range_<c> min,max for c = sx, sa, sy, II00, II11
-  (the 2D ranges follow the 1D ones in proportion). -help shows the family's defaults for r = 1 mm.
+  HylcPlanRangesFromOptions - Reads the plan's ranges and spacing inside a PetscOptionsBegin/End block (only
+  reads them; HylcPlanRangesApply() turns them into ranges for a yarn radius): -sampler_family (the defaults
+  of docs/method.md §8, II scaled by 1 mm / r), -sampler_range_<c> min,max for c = sx, sa, sy, II00, II11 (the
+  2D ranges follow the 1D ones in proportion), -sampler_spacing paper|graded and the graded spacing's
+  -sampler_graded_h0, -sampler_graded_growth, -sampler_graded_hmax, -sampler_graded_sub. -help shows the
+  family's defaults for r = 1 mm.
 
   Collective
 
@@ -47,6 +50,38 @@ PetscErrorCode HylcPlanRangesFromOptions(PetscOptionItems *PetscOptionsObject, M
       ranges->set[c] = PETSC_TRUE;
       ranges->min[c] = v[0];
       ranges->max[c] = v[1];
+    }
+  }
+  {
+    PetscEnum sp     = (PetscEnum)ranges->spacing;
+    PetscReal h0[5], growth = ranges->growth > 0 ? ranges->growth : p.growth, hmax = ranges->hmax > 0 ? ranges->hmax : p.hmax;
+    PetscInt  n = HYLC_PLAN_NCOORD, sub = ranges->sub > 0 ? ranges->sub : p.sub;
+    PetscBool set;
+    for (int c = 0; c < HYLC_PLAN_NCOORD; c++) h0[c] = ranges->h0set ? ranges->h0[c] : p.h0[c];
+    PetscCall(PetscOptionsEnum("-sampler_spacing", "How an axis is sampled: graded (knots dense near 0, spacing -sampler_graded_h0 growing by -sampler_graded_growth, each interval cut -sampler_graded_sub times: the fabric fit's knots) or paper (Algorithm C4's -sampler_n1 samples per 1D term, -sampler_n2 per 2D axis; giving either selects paper spacing unless this is given)", man, HylcPlanSpacings, sp, &sp, &set));
+    ranges->spacing = (PetscInt)sp;
+    if (set) ranges->spacingSet = PETSC_TRUE;
+    PetscCall(HylcOptionsRealArray("-sampler_graded_h0", "graded spacing: the knot spacing at 0 of sx, sa, sy, II00, II11 (1 and 1/m; default 0.01 and 2.5 1/m at r = 1 mm, scaled by 1 mm / r)", man, h0, &n, &set));
+    if (set) {
+      PetscCheck(n == HYLC_PLAN_NCOORD, comm, PETSC_ERR_USER_INPUT, "-sampler_graded_h0 needs %d values (sx, sa, sy, II00, II11), got %d", HYLC_PLAN_NCOORD, (int)n);
+      for (int c = 0; c < HYLC_PLAN_NCOORD; c++) PetscCheck(h0[c] > 0, comm, PETSC_ERR_USER_INPUT, "-sampler_graded_h0: %s spacing %g must be positive", cn[c], (double)h0[c]);
+      ranges->h0set = PETSC_TRUE;
+      for (int c = 0; c < HYLC_PLAN_NCOORD; c++) ranges->h0[c] = h0[c];
+    }
+    PetscCall(HylcOptionsReal("-sampler_graded_growth", "graded spacing: ratio of consecutive knot spacings away from 0 (>= 1)", man, growth, &growth, &set));
+    if (set) {
+      PetscCheck(growth >= 1 && growth <= 10, comm, PETSC_ERR_USER_INPUT, "-sampler_graded_growth %g: must be in [1, 10]", (double)growth);
+      ranges->growth = growth;
+    }
+    PetscCall(HylcOptionsReal("-sampler_graded_hmax", "graded spacing: the largest knot spacing, a fraction of the axis's range (0, 1]", man, hmax, &hmax, &set));
+    if (set) {
+      PetscCheck(hmax > 0 && hmax <= 1, comm, PETSC_ERR_USER_INPUT, "-sampler_graded_hmax %g: must be in (0, 1]", (double)hmax);
+      ranges->hmax = hmax;
+    }
+    PetscCall(PetscOptionsInt("-sampler_graded_sub", "graded spacing: samples per knot interval (1: the knots only; 2: knots and midpoints)", man, sub, &sub, &set));
+    if (set) {
+      PetscCheck(sub >= 1 && sub <= 16, comm, PETSC_ERR_USER_INPUT, "-sampler_graded_sub %d: must be in 1..16", (int)sub);
+      ranges->sub = sub;
     }
   }
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -97,6 +132,19 @@ PetscErrorCode HylcPlanRangesApply(MPI_Comm comm, const HylcPlanRanges *ranges, 
     double Z[1];
     PetscCheck(!HylcSampleRange(c, p.min1[c], p.max1[c], 1, Z), comm, PETSC_ERR_USER_INPUT, "-sampler_range_%s %g,%g is not a valid range (sx, sy > -1; the others must contain 0)", cn[c], p.min1[c], p.max1[c]);
   }
+  p.spacing = (int)ranges->spacing;
+  if (ranges->h0set)
+    for (int c = 0; c < HYLC_PLAN_NCOORD; c++) p.h0[c] = ranges->h0[c];
+  if (ranges->growth > 0) p.growth = ranges->growth;
+  if (ranges->hmax > 0) p.hmax = ranges->hmax;
+  if (ranges->sub > 0) p.sub = (int)ranges->sub;
+  if (p.spacing == HYLC_PLAN_SPACING_GRADED)
+    for (int t = 1; t < HYLC_PLAN_NTERM; t++)
+      for (int a = 0; a < (t > 5 ? 2 : 1); a++) {
+        double    Z[HYLC_PLAN_MAXAXIS];
+        const int n = HylcPlanAxis(&p, t, a, Z);
+        PetscCheck(n > 0, comm, PETSC_ERR_USER_INPUT, "-sampler_spacing graded: axis %d of term %s has more than %d samples (-sampler_graded_h0 %g too small for its range, or -sampler_graded_sub too large)", a, HylcPlanTermName(t), HYLC_PLAN_MAXAXIS, p.h0[t <= 5 ? t - 1 : 0]);
+      }
   p.n1    = plan->n1;
   p.n2    = plan->n2;
   p.terms = plan->terms;

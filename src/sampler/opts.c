@@ -372,8 +372,12 @@ PetscErrorCode HylcSamplerSetFromOptions(HylcSampler S)
   PetscCall(
       PetscOptionsBool("-sampler_overwrite", "Start over: replace an existing output and its journal (without -sampler_resume or this, an existing output or journal with samples is refused)", "HylcSamplerSetOverwrite", overwrite, &overwrite, NULL));
   PetscCall(HylcPlanRangesFromOptions(PetscOptionsObject, comm, "HylcSamplerSetPlanRanges", &ranges));
-  PetscCall(PetscOptionsInt("-sampler_n1", "Samples per 1D term", "HylcSamplerSetSampleCounts", n1, &n1, NULL));
-  PetscCall(PetscOptionsInt("-sampler_n2", "Samples per axis of a 2D term", "HylcSamplerSetSampleCounts", n2, &n2, NULL));
+  {
+    PetscBool s1, s2;
+    PetscCall(PetscOptionsInt("-sampler_n1", "Samples per 1D term (paper spacing; giving it selects paper spacing unless -sampler_spacing is given)", "HylcSamplerSetSampleCounts", n1, &n1, &s1));
+    PetscCall(PetscOptionsInt("-sampler_n2", "Samples per axis of a 2D term (paper spacing; as -sampler_n1)", "HylcSamplerSetSampleCounts", n2, &n2, &s2));
+    if ((s1 || s2) && !ranges.spacingSet) ranges.spacing = HYLC_PLAN_SPACING_PAPER;
+  }
   PetscCall(PetscOptionsString("-sampler_terms", "Terms to sample: all, or a comma list of zero, sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11", "HylcSamplerSetTerms", terms, terms, sizeof(terms),
                                &tset));
   PetscCall(PetscOptionsInt("-sampler_batch", "Samples per batch (unit of work of a rank)", "HylcSamplerSetBatchSize", batch, &batch, NULL));

@@ -460,7 +460,7 @@ PetscErrorCode HylcSamplerRun(HylcSampler S)
     PetscCall(HylcJournalGetDone(J, &nd, &jd));
     PetscCall(HylcJournalGetRecords(J, &all));
     PetscCall(PetscOptionsGetAll(NULL, &opts));
-    ierr = HylcSamplesWriteHDF5WithIdentity(S->output, S->nsamples, all, jd, S->pat, &S->model, opts, S->identity);
+    ierr = HylcSamplesWriteHDF5WithIdentity(S->output, S->nsamples, all, jd, S->pat, &S->model, opts, S->identity, &S->plan);
     PetscCall(PetscFree(opts));
     PetscCall(ierr);
     PetscCall(PetscPrintf(PETSC_COMM_SELF, "[sampler] wrote %s: %ld samples, %ld not converged\n", S->output, (long)nd, pg.failed));

@@ -72,6 +72,7 @@ PetscErrorCode HylcSamplerCreate(MPI_Comm comm, HylcSampler *s)
   S->bothRtol = 1e-3;
   S->stress   = PETSC_TRUE;
   S->density  = 0;
+  S->ranges.spacing = HYLC_PLAN_SPACING_GRADED; /* the fabric fit's knots (-sampler_spacing) */
   S->refmode  = HYLC_REFERENCE_AUTO;
   PetscCall(HylcYarnModelDefault(&S->model));
   PetscCall(HylcReferenceParamsDefault(&S->refpar));
@@ -257,7 +258,14 @@ PetscErrorCode HylcSamplerView(HylcSampler S, PetscViewer viewer)
     PetscCall(PetscSNPrintf(count, sizeof(count), ": %ld samples", S->nsamples));
   else
     PetscCall(PetscStrncpy(count, " (ranges not resolved: not set up)", sizeof(count)));
-  PetscCall(PetscViewerASCIIPrintf(viewer, "plan: family %s, %" PetscInt_FMT " samples per 1D term, %" PetscInt_FMT " per 2D axis, terms %s%s\n", HylcPlanFamilies[S->ranges.family], S->n1, S->n2, terms, count));
+  if (S->ranges.spacing == HYLC_PLAN_SPACING_GRADED) {
+    HylcPlan p;
+    PetscCheck(!HylcPlanDefaults(HylcPlanFamilies[S->ranges.family], 1, &p), PETSC_COMM_SELF, PETSC_ERR_PLIB, "family");
+    if (S->setupcalled) p = S->plan;
+    PetscCall(PetscViewerASCIIPrintf(viewer, "plan: family %s, graded spacing (h0 %g %g %g %g %g 1/m%s, growth %g, hmax %g of the range, %d samples per knot interval), terms %s%s\n", HylcPlanFamilies[S->ranges.family], p.h0[0], p.h0[1], p.h0[2], p.h0[3], p.h0[4],
+                                     S->setupcalled ? "" : " at r = 1 mm", p.growth, p.hmax, p.sub, terms, count));
+  } else
+    PetscCall(PetscViewerASCIIPrintf(viewer, "plan: family %s, paper spacing, %" PetscInt_FMT " samples per 1D term, %" PetscInt_FMT " per 2D axis, terms %s%s\n", HylcPlanFamilies[S->ranges.family], S->n1, S->n2, terms, count));
   if (S->start == HYLC_SAMPLER_START_BOTH)
     PetscCall(PetscViewerASCIIPrintf(viewer, "start: both (units: half-lines from the zero strain outward; every sample also cold, the lower Psi kept, multistable where they differ by more than %g)\n", (double)S->bothRtol));
   else

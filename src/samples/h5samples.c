@@ -277,8 +277,97 @@ static PetscErrorCode WriteProvenance(hid_t file, const char identity[])
 }
 
 /* builds the whole file in memory (HDF5's core driver, no backing store) and returns its image */
-static PetscErrorCode BuildImage(const char path[], long nsamples, const HylcSampleRecord recs[], const unsigned char done[], HylcPattern reference, const HylcYarnModel *model, const char optionsText[], const char identity[], void **image,
-                                 size_t *size)
+/* /plan: the spacing and, for graded spacing, its parameters and the knots of every axis of every term sampled
+   (knots_<term> for a 1D term, knots_<term>_0 and _1 for the axes of a 2D term): the fabric fit's knots */
+static PetscErrorCode WritePlan(hid_t file, const HylcPlan *plan)
+{
+  hid_t g;
+
+  PetscFunctionBegin;
+  HylcCallHDF5Id(g, H5Gcreate2(file, "plan", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+  HylcCallHDF5(HylcH5WriteAttrString(g, "spacing", HylcPlanSpacings[plan->spacing]));
+  HylcCallHDF5(HylcH5WriteAttrString(g, "description", "The sampling plan's spacing (-sampler_spacing); for graded spacing its parameters and the knots of each axis of each term (knots_<term>, knots_<term>_0 and _1 for a 2D term), which the samples subdivide (docs/output-format.md)"));
+  if (plan->spacing == HYLC_PLAN_SPACING_GRADED) {
+    HylcCallHDF5(HylcH5WriteDataset(g, "h0", 1, (hsize_t[]){HYLC_PLAN_NCOORD}, H5T_NATIVE_DOUBLE, plan->h0, "1 for sx, sa, sy; 1/m for II00, II11", "knot spacing at 0 per coordinate"));
+    HylcCallHDF5(HylcH5WriteAttrDouble(g, "growth", plan->growth));
+    HylcCallHDF5(HylcH5WriteAttrDouble(g, "hmax", plan->hmax));
+    HylcCallHDF5(HylcH5WriteAttrLong(g, "sub", plan->sub));
+    for (int t = 1; t < HYLC_PLAN_NTERM; t++) {
+      if (!(plan->terms & (1 << t))) continue;
+      for (int a = 0; a < (t > 5 ? 2 : 1); a++) {
+        double    K[HYLC_PLAN_MAXAXIS];
+        char      name[64];
+        const int n = HylcPlanAxisKnots(plan, t, a, K);
+        PetscCheck(n > 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "graded knots of term %s", HylcPlanTermName(t));
+        if (t <= 5) snprintf(name, sizeof(name), "knots_%s", HylcPlanTermName(t));
+        else snprintf(name, sizeof(name), "knots_%s_%d", HylcPlanTermName(t), a);
+        HylcCallHDF5(HylcH5WriteDataset(g, name, 1, (hsize_t[]){(hsize_t)n}, H5T_NATIVE_DOUBLE, K, "1 for sx, sa, sy; 1/m for II00, II11", "the knots of this axis of the term (ascending, 0 included)"));
+      }
+    }
+  }
+  HylcCallHDF5(H5Gclose(g));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcSamplesReadKnots - The knots of axis a of term t of a samples file written with graded spacing (its /plan
+  group, docs/output-format.md); n = 0 when the file has none (paper spacing, older files, the term not
+  sampled). Not collective.
+
+  Input Parameters:
++ path - the samples file
+. t    - the term (1..14, include/hylc/plan.h)
+- a    - the axis (0; 1 for the second coordinate of a 2D term)
+
+  Output Parameters:
++ n - the number of knots (0: none)
+- K - the knots (ascending; room for HYLC_PLAN_MAXAXIS)
+
+  Level: developer
+
+.seealso: HylcSamplesWriteHDF5WithIdentity(), HylcPlanAxisKnots()
+@*/
+PetscErrorCode HylcSamplesReadKnots(const char path[], int t, int a, PetscInt *n, PetscReal K[])
+{
+  hid_t       file, ds, sp;
+  char        name[80];
+  HylcH5Quiet q;
+  htri_t      has;
+  hssize_t    m;
+
+  PetscFunctionBegin;
+  *n = 0;
+  PetscCheck(t >= 1 && t < HYLC_PLAN_NTERM && a >= 0 && a <= (t > 5), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "HylcSamplesReadKnots: term %d axis %d", t, a);
+  if (t <= 5) snprintf(name, sizeof(name), "plan/knots_%s", HylcPlanTermName(t));
+  else snprintf(name, sizeof(name), "plan/knots_%s_%d", HylcPlanTermName(t), a);
+  HylcH5QuietBegin(&q);
+  file = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
+  has  = file < 0 ? -1 : H5Lexists(file, "plan", H5P_DEFAULT) > 0 ? H5Lexists(file, name, H5P_DEFAULT) : 0;
+  HylcH5QuietEnd(&q);
+  PetscCheck(file >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot open %s as HDF5", path);
+  if (has <= 0) {
+    H5Fclose(file);
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  ds = H5Dopen2(file, name, H5P_DEFAULT);
+  sp = ds < 0 ? -1 : H5Dget_space(ds);
+  m  = sp < 0 ? -1 : H5Sget_simple_extent_npoints(sp);
+  if (sp >= 0) H5Sclose(sp);
+  if (ds < 0 || m < 1 || m > HYLC_PLAN_MAXAXIS || H5Dread(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, K) < 0) {
+    if (ds >= 0) H5Dclose(ds);
+    H5Fclose(file);
+    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s: /%s is not a list of at most %d knots", path, name, HYLC_PLAN_MAXAXIS);
+  }
+  H5Dclose(ds);
+  H5Fclose(file);
+  for (hssize_t i = 0; i < m; i++) PetscCheck(PetscIsNormalReal(K[i]) || K[i] == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s: /%s[%d] = %g is not finite", path, name, (int)i, (double)K[i]);
+  for (hssize_t i = 1; i < m; i++) PetscCheck(K[i] > K[i - 1], PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "%s: /%s is not ascending at %d", path, name, (int)i);
+  *n = (PetscInt)m;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode BuildImage(const char path[], long nsamples, const HylcSampleRecord recs[], const unsigned char done[], HylcPattern reference, const HylcYarnModel *model, const char optionsText[], const char identity[], const HylcPlan *plan,
+                                 void **image, size_t *size)
 {
   hid_t          file;
   ssize_t        n = 0;
@@ -294,6 +383,7 @@ static PetscErrorCode BuildImage(const char path[], long nsamples, const HylcSam
   }
   ierr = WriteFile(file, nsamples, recs, done, reference, model, optionsText);
   if (!ierr && identity) ierr = WriteProvenance(file, identity);
+  if (!ierr && plan) ierr = WritePlan(file, plan);
   if (!ierr) {
     n = HylcH5ImageSize(file);
     if (n > 0) {
@@ -318,9 +408,11 @@ static PetscErrorCode BuildImage(const char path[], long nsamples, const HylcSam
   HylcSamplesWriteHDF5WithIdentity - Writes the samples file (docs/output-format.md) atomically: the
   HDF5 image is built in memory, written to a unique temporary beside path, fsynced and renamed; on any
   failure (a full disk, say) the temporary is removed, path is left as it was and the error names it.
+  With an identity, /provenance; with a plan, /plan (its spacing and graded knots, HylcSamplesReadKnots()).
   Not collective (rank 0).
 @*/
-PetscErrorCode HylcSamplesWriteHDF5WithIdentity(const char path[], long nsamples, const HylcSampleRecord recs[], const unsigned char done[], HylcPattern reference, const HylcYarnModel *model, const char optionsText[], const char identity[])
+PetscErrorCode HylcSamplesWriteHDF5WithIdentity(const char path[], long nsamples, const HylcSampleRecord recs[], const unsigned char done[], HylcPattern reference, const HylcYarnModel *model, const char optionsText[], const char identity[],
+                                                const HylcPlan *plan)
 {
   char           tmp[PETSC_MAX_PATH_LEN];
   HylcH5Quiet    quiet;
@@ -335,7 +427,7 @@ PetscErrorCode HylcSamplesWriteHDF5WithIdentity(const char path[], long nsamples
   HylcH5Where = path;
   /* HDF5 prints nothing itself: its innermost message goes into the PETSc error */
   HylcH5QuietBegin(&quiet);
-  ierr = BuildImage(path, nsamples, recs, done, reference, model, optionsText, identity, &image, &size);
+  ierr = BuildImage(path, nsamples, recs, done, reference, model, optionsText, identity, plan, &image, &size);
   HylcH5QuietEnd(&quiet);
   HylcH5Where = "?";
   PetscCall(ierr);
@@ -356,7 +448,7 @@ PetscErrorCode HylcSamplesWriteHDF5WithIdentity(const char path[], long nsamples
 PetscErrorCode HylcSamplesWriteHDF5(const char path[], long nsamples, const HylcSampleRecord recs[], const unsigned char done[], HylcPattern reference, const HylcYarnModel *model, const char optionsText[])
 {
   PetscFunctionBegin;
-  PetscCall(HylcSamplesWriteHDF5WithIdentity(path, nsamples, recs, done, reference, model, optionsText, NULL));
+  PetscCall(HylcSamplesWriteHDF5WithIdentity(path, nsamples, recs, done, reference, model, optionsText, NULL, NULL));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

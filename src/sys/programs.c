@@ -125,6 +125,11 @@ static const HylcStageOption HylcStageOptions[] = {
     /* sampling plan and job */
     {"sampler_family", G_PLAN},
     {"sampler_range_sx", G_PLAN},
+    {"sampler_spacing", G_PLAN},
+    {"sampler_graded_h0", G_PLAN},
+    {"sampler_graded_growth", G_PLAN},
+    {"sampler_graded_hmax", G_PLAN},
+    {"sampler_graded_sub", G_PLAN},
     {"sampler_range_sa", G_PLAN},
     {"sampler_range_sy", G_PLAN},
     {"sampler_range_II00", G_PLAN},

@@ -23,15 +23,15 @@ cat >journal.py <<'PY'
 import struct, sys, numpy as np, h5py
 b = open(sys.argv[1], "rb").read()
 assert b[:8] == b"HYLCJNL1", "journal magic"
-assert struct.unpack_from("<I", b, 12)[0] == 5, "journal format version"
+assert struct.unpack_from("<I", b, 12)[0] == 6, "journal format version"
 rs, L = struct.unpack_from("<II", b, 16)
 rec = np.dtype([("index", "<i8"), ("term", "<i4"), ("status", "<i4"), ("iterations", "<i4"),
                 ("retries", "<i4"), ("z", "<f8", 6), ("psi", "<f8"), ("parts", "<f8", 4),
                 ("residual", "<f8"), ("cresidual", "<f8"), ("time", "<f8"), ("start", "<i4"), ("negcurv", "<i4"),
                 ("escapes", "<i4"), ("psi_other", "<f8"), ("status_other", "<i4"), ("multistable", "<i4"),
-                ("fnv", "<u8")])
+                ("stress", "<f8", 6), ("fnv", "<u8")])
 assert rs == rec.itemsize, "record size %d" % rs
-body = b[72 + L:]  # format 5: 64-byte fixed header, identity, 8-byte hash
+body = b[72 + L:]  # format 6: 64-byte fixed header, identity, 8-byte hash
 r = np.frombuffer(body[: len(body) // rs * rs], dtype=rec)
 want = int(sys.argv[3])
 assert want < 0 or len(r) == want, "%d records in the journal, expected %d" % (len(r), want)
