@@ -40,6 +40,14 @@ PETSC_EXTERN const char *const HylcFitFamilies[];
 typedef enum { HYLC_FIT_KNOTS_PAPER = 0, HYLC_FIT_KNOTS_REFINED = 1 } HylcFitKnotLayout;
 PETSC_EXTERN const char *const HylcFitKnotLayouts[];
 
+/* The fitting method (-fit_method, docs/fit.md): PAPER, the paper's MLS of the values on its knot layout
+   (Algorithms C6, C7); FABRIC, a weighted least-squares fit of the samples' values and stresses dPsi/dz on the
+   sampling plan's graded knots, 2D residuals free across the axes (the lateral couplings), no symmetrization
+   in sa (docs/fit.md "The fabric method"); AUTO (default), fabric when every sample has its stress, else paper.
+   -fit_compat authors implies paper. */
+typedef enum { HYLC_FIT_METHOD_AUTO = 0, HYLC_FIT_METHOD_PAPER = 1, HYLC_FIT_METHOD_FABRIC = 2 } HylcFitMethod;
+PETSC_EXTERN const char *const HylcFitMethods[];
+
 PETSC_EXTERN PetscErrorCode HylcFitCreate(MPI_Comm, HylcFit *);
 PETSC_EXTERN PetscErrorCode HylcFitDestroy(HylcFit *);
 PETSC_EXTERN PetscErrorCode HylcFitSetOptionsPrefix(HylcFit, const char[]);
@@ -47,6 +55,12 @@ PETSC_EXTERN PetscErrorCode HylcFitSetFromOptions(HylcFit);
 PETSC_EXTERN PetscErrorCode HylcFitSetUp(HylcFit);
 PETSC_EXTERN PetscErrorCode HylcFitView(HylcFit, PetscViewer);
 PETSC_EXTERN PetscErrorCode HylcFitViewFromOptions(HylcFit, PetscObject, const char[]);
+
+/* The method (-fit_method); the one used, after HylcFitCompute() (auto resolved). */
+PETSC_EXTERN PetscErrorCode HylcFitSetMethod(HylcFit, HylcFitMethod);
+PETSC_EXTERN PetscErrorCode HylcFitGetMethod(HylcFit, HylcFitMethod *);
+/* The stresses dPsi/dz of the rows set by HylcFitSetData() (n x 6, NaN where unknown; copied). */
+PETSC_EXTERN PetscErrorCode HylcFitSetStress(HylcFit, const PetscReal[]);
 
 /* The input file (-fit_input): an HDF5 samples file, a raw data.txt, or a directory holding data.txt
    (and info.txt). Read by HylcFitSetUp(). */

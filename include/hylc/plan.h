@@ -88,9 +88,9 @@ typedef struct {
   PetscInt  family;                /* index into HylcPlanFamilies: woven, stockinette, honeycomb, rib */
   PetscBool set[HYLC_PLAN_NCOORD]; /* 1D range of coordinate c given (else the family's default) */
   PetscReal min[HYLC_PLAN_NCOORD], max[HYLC_PLAN_NCOORD];
-  PetscInt  spacing;               /* HylcPlanSpacing (the caller's default: the sampler's graded, the calibration's paper) */
-  PetscBool spacingSet;            /* -sampler_spacing given */
-  PetscBool h0set;                 /* graded: h0 given (else HylcPlanGradedDefaults(), II scaled by 1 mm / r) */
+  PetscInt  spacing;    /* HylcPlanSpacing (the caller's default: the sampler's graded, the calibration's paper) */
+  PetscBool spacingSet; /* -sampler_spacing given */
+  PetscBool h0set;      /* graded: h0 given (else HylcPlanGradedDefaults(), II scaled by 1 mm / r) */
   PetscReal h0[HYLC_PLAN_NCOORD];
   PetscReal growth, hmax; /* graded: 0 for the defaults */
   PetscInt  sub;          /* graded: 0 for the default */

@@ -14,9 +14,9 @@
 
    A new strain term is added here first; docs/architecture.md lists what else it touches. */
 
-#define HYLC_NSTRAIN 6 /* components of z */
-#define HYLC_NCOORD  5 /* coordinates = 1D terms */
-#define HYLC_NPAIR   9 /* pairs = 2D terms */
+#define HYLC_NSTRAIN           6  /* components of z */
+#define HYLC_NCOORD            5  /* coordinates = 1D terms */
+#define HYLC_NPAIR             9  /* pairs = 2D terms */
 #define HYLC_STRAIN_ALL_BITS   63 /* bit s set for every strain component s (component masks) */
 #define HYLC_STRAIN_PLANE_BITS 7  /* sx, sa, sy */
 #define HYLC_STRAIN_NO_POISSON 64 /* with a component mask: leave NaN a component whose derivative needs a doubly curved (Poisson) midsurface at a flat or singly curved strain */

@@ -46,6 +46,7 @@ static PetscErrorCode FamilyDefaults(HylcFit fit, HylcFitFamily family)
 }
 
 const char *const HylcFitKnotLayouts[] = {"paper", "refined", "HylcFitKnotLayout", "HYLC_FIT_KNOTS_", NULL};
+const char *const HylcFitMethods[]     = {"auto", "paper", "fabric", "HylcFitMethod", "HYLC_FIT_METHOD_", NULL};
 
 PetscClassId  HYLC_FIT_CLASSID;
 PetscLogEvent HYLC_FitRun, HYLC_FitTerm, HYLC_FitMLS, HYLC_FitMonotone;
@@ -95,6 +96,12 @@ PetscErrorCode HylcFitCreate(MPI_Comm comm, HylcFit *out)
   PetscCall(HylcFitInitializePackage());
   PetscCall(PetscHeaderCreate(fit, HYLC_FIT_CLASSID, "HylcFit", "Material fit", "Fit", comm, HylcFitDestroy, HylcFitView));
   fit->compat          = HYLC_FIT_COMPAT_PAPER;
+  fit->method          = HYLC_FIT_METHOD_AUTO;
+  fit->methodUsed      = HYLC_FIT_METHOD_AUTO;
+  fit->fabricFloor     = 1e-4;
+  fit->fabricRidge     = 1e-10;
+  fit->fabricReg       = 1e-6;
+  fit->fabricPasses    = 3;
   fit->rule            = HYLC_MONOTONE_CIRCLE;
   fit->quasiconvex     = PETSC_TRUE;
   fit->symmetrize      = PETSC_TRUE;
@@ -142,6 +149,11 @@ PetscErrorCode HylcFitResetResults_Private(HylcFit fit)
     PetscCall(PetscFree6(fit->s2[k].tu, fit->s2[k].tv, fit->s2[k].p, fit->s2[k].mu, fit->s2[k].mv, fit->s2[k].muv));
     PetscCall(PetscMemzero(&fit->s2[k], sizeof(fit->s2[k])));
   }
+  for (int t = 0; t < HYLC_PLAN_NTERM; t++)
+    for (int a = 0; a < 2; a++) {
+      PetscCall(PetscFree(fit->knot[t][a]));
+      fit->nknot[t][a] = 0;
+    }
   for (int t = 0; t < HYLC_PLAN_NTERM; t++) {
     fit->has[t]   = PETSC_FALSE;
     fit->statN[t] = 0;
@@ -154,6 +166,8 @@ static PetscErrorCode ResetData(HylcFit fit)
 {
   PetscFunctionBegin;
   PetscCall(PetscFree4(fit->z, fit->psi, fit->term, fit->row));
+  PetscCall(PetscFree(fit->stress));
+  fit->samplesFile = PETSC_FALSE;
   fit->n = fit->nrows = fit->nskipped = 0;
   for (int i = 0; i < 6; i++) fit->zabsmax[i] = 0;
   fit->dataset     = PETSC_FALSE;
@@ -419,7 +433,21 @@ PetscErrorCode HylcFitSetFromOptions(HylcFit fit)
   }
   PetscCall(HylcOptionsReal("-fit_reg", "Quasiconvex marching: minimum outward slope p^x_min in J/m^2 per normalised unit (S28)", "HylcFitSetFromOptions", fit->reg, &fit->reg, NULL));
   PetscCall(PetscOptionsBool("-fit_quasiconvex", "Apply the quasiconvex marching (false: the unregularized fits, like rib1_noreg)", "HylcFitSetFromOptions", fit->quasiconvex, &fit->quasiconvex, NULL));
-  PetscCall(PetscOptionsEnum("-fit_compat", "paper, or authors: the authors' code's two departures (S42 x-clamp dropped; mv <= -reg on the minimum's row)", "HylcFitSetFromOptions", HylcFitCompats, compat, &compat, NULL));
+  PetscCall(
+      PetscOptionsEnum("-fit_compat", "paper, or authors: the authors' code's two departures (S42 x-clamp dropped; mv <= -reg on the minimum's row); authors implies -fit_method paper", "HylcFitSetFromOptions", HylcFitCompats, compat, &compat, NULL));
+  {
+    PetscEnum method = (PetscEnum)fit->method;
+    PetscCall(PetscOptionsEnum("-fit_method",
+                               "auto (fabric when every sample has its stress, else paper), fabric (the samples' values and stresses by weighted least squares on the plan's graded knots) or paper (the MLS of the values on the paper's knots)",
+                               "HylcFitSetMethod", HylcFitMethods, method, &method, NULL));
+    fit->method = (HylcFitMethod)method;
+  }
+  PetscCall(HylcOptionsReal("-fit_fabric_floor", "fabric method: each equation's error is relative to the tile's own value or stress there, with a floor of this fraction of the term's largest (1)", "HylcFitSetFromOptions", fit->fabricFloor,
+                            &fit->fabricFloor, NULL));
+  PetscCall(HylcOptionsReal("-fit_fabric_ridge", "fabric method: ridge added to the scaled normal equations (1)", "HylcFitSetFromOptions", fit->fabricRidge, &fit->fabricRidge, NULL));
+  PetscCall(PetscOptionsInt("-fit_fabric_passes", "fabric method: fits of each 2D term, the mixed slopes muv taken from the fitted slopes' differences between them (the first with muv = 0)", "HylcFitSetFromOptions", fit->fabricPasses,
+                            &fit->fabricPasses, NULL));
+  PetscCall(HylcOptionsReal("-fit_fabric_reg", "fabric method: the 1D terms' smallest outward slope, a fraction of the term's largest |Psi - f0| per normalised unit (1)", "HylcFitSetFromOptions", fit->fabricReg, &fit->fabricReg, NULL));
   PetscCall(PetscOptionsEnum("-fit_monotone_rule", "1D slope limiter: circle (alpha^2 + beta^2 <= 9, the authors') or box (0 <= alpha, beta <= 3)", "HylcFitSetFromOptions", HylcMonotoneRules, rule, &rule, NULL));
   PetscCall(HylcOptionsReal("-fit_flat_tol", "1D monotone cubic: an interval with |dp| below this gets zero slopes", "HylcFitSetFromOptions", fit->flatTol, &fit->flatTol, NULL));
   PetscCall(HylcOptionsReal("-fit_end_slope", "Boundary slopes at least this outward (increasing linear extrapolation)", "HylcFitSetFromOptions", fit->endSlope, &fit->endSlope, NULL));
@@ -469,6 +497,11 @@ PetscErrorCode HylcFitSetFromOptions(HylcFit fit)
   PetscCheck(fit->kernelSpacing > 0 && fit->kernelMin >= 3, comm, PETSC_ERR_USER_INPUT, "-fit_knots_kernel_spacing must be > 0 and -fit_knots_kernel_samples >= 3");
   fit->rule = (HylcMonotoneRule)rule;
   PetscCheck(fit->reg >= 0, comm, PETSC_ERR_USER_INPUT, "-fit_reg %g must be >= 0", (double)fit->reg);
+  PetscCheck(fit->fabricFloor > 0 && fit->fabricFloor <= 1, comm, PETSC_ERR_USER_INPUT, "-fit_fabric_floor %g must be in (0, 1]", (double)fit->fabricFloor);
+  PetscCheck(fit->fabricRidge >= 0 && fit->fabricRidge < 1, comm, PETSC_ERR_USER_INPUT, "-fit_fabric_ridge %g must be in [0, 1)", (double)fit->fabricRidge);
+  PetscCheck(fit->fabricReg >= 0 && fit->fabricReg < 1, comm, PETSC_ERR_USER_INPUT, "-fit_fabric_reg %g must be in [0, 1)", (double)fit->fabricReg);
+  PetscCheck(fit->fabricPasses >= 1 && fit->fabricPasses <= 20, comm, PETSC_ERR_USER_INPUT, "-fit_fabric_passes %" PetscInt_FMT " must be in 1..20", fit->fabricPasses);
+  PetscCheck(!(fit->compat == HYLC_FIT_COMPAT_AUTHORS && fit->method == HYLC_FIT_METHOD_FABRIC), comm, PETSC_ERR_USER_INPUT, "-fit_compat authors reproduces the authors' fits (the paper's method): drop -fit_method fabric");
   PetscCheck(fit->kernel > 0 && fit->kernel <= 1, comm, PETSC_ERR_USER_INPUT, "-fit_mls_kernel %g must be in (0, 1]", (double)fit->kernel);
   PetscCheck(fit->truncation > 0, comm, PETSC_ERR_USER_INPUT, "-fit_mls_truncation %g must be > 0", (double)fit->truncation);
   PetscCheck(fit->fdEps > 0 && fit->fdEps < 1, comm, PETSC_ERR_USER_INPUT, "-fit_fd_eps %g must be in (0, 1)", (double)fit->fdEps);
@@ -536,6 +569,8 @@ PetscErrorCode HylcFitSetData(HylcFit fit, PetscInt n, const PetscReal strain[],
   PetscCall(ResetData(fit));
   fit->input[0] = 0;
   PetscCall(PetscMalloc4(6 * n + 1, &fit->z, n + 1, &fit->psi, n + 1, &fit->term, n + 1, &fit->row));
+  PetscCall(PetscMalloc1(6 * n + 1, &fit->stress));
+  for (PetscInt k = 0; k < 6 * n; k++) fit->stress[k] = (PetscReal)NAN;
   for (PetscInt k = 0; k < n; k++) {
     PetscCheck(term[k] >= 0 && term[k] < HYLC_PLAN_NTERM, comm, PETSC_ERR_USER_INPUT, "HylcFitSetData: row %" PetscInt_FMT " has term %" PetscInt_FMT " (valid: 0..14)", k, term[k]);
     for (int i = 0; i < 6; i++) fit->z[6 * k + i] = strain[6 * k + i];
@@ -548,6 +583,78 @@ PetscErrorCode HylcFitSetData(HylcFit fit, PetscInt n, const PetscReal strain[],
   PetscCall(PetscStrncpy(fit->rhoSource, "given with the data", sizeof(fit->rhoSource)));
   PetscCall(PetscStrncpy(fit->source, "data set by HylcFitSetData", sizeof(fit->source)));
   fit->dataset = PETSC_TRUE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcFitSetStress - The stresses dPsi/dz of the rows given by HylcFitSetData(), for the fabric method.
+
+  Not collective
+
+  Input Parameters:
++ fit    - the fit, after HylcFitSetData()
+- stress - n x 6 (the rows' order; N/m for sx, sa, sy, N for the curvatures; NaN where unknown); copied
+
+  Level: intermediate
+
+.seealso: HylcFitSetData(), HylcFitSetMethod()
+@*/
+PetscErrorCode HylcFitSetStress(HylcFit fit, const PetscReal stress[])
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(fit, HYLC_FIT_CLASSID, 1);
+  PetscCheck(fit->dataset, PetscObjectComm((PetscObject)fit), PETSC_ERR_ARG_WRONGSTATE, "HylcFitSetStress: call HylcFitSetData() first");
+  PetscCall(PetscArraycpy(fit->stress, stress, 6 * fit->n));
+  PetscCall(HylcFitResetResults_Private(fit));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcFitSetMethod - How the terms are fitted (option -fit_method): paper (the MLS of the values, Algorithms
+  C6, C7), fabric (values and stresses by weighted least squares on graded knots) or auto (fabric when every
+  sample has its stress).
+
+  Not collective
+
+  Input Parameters:
++ fit    - the fit
+- method - HYLC_FIT_METHOD_AUTO (default), HYLC_FIT_METHOD_PAPER or HYLC_FIT_METHOD_FABRIC
+
+  Level: intermediate
+
+.seealso: HylcFitGetMethod(), HylcFitSetStress()
+@*/
+PetscErrorCode HylcFitSetMethod(HylcFit fit, HylcFitMethod method)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(fit, HYLC_FIT_CLASSID, 1);
+  PetscCheck(method >= HYLC_FIT_METHOD_AUTO && method <= HYLC_FIT_METHOD_FABRIC, PetscObjectComm((PetscObject)fit), PETSC_ERR_ARG_OUTOFRANGE, "Unknown fit method %d", (int)method);
+  fit->method = method;
+  PetscCall(HylcFitResetResults_Private(fit));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcFitGetMethod - The method of the fit: after HylcFitCompute() the one used (auto resolved), before it the
+  one set.
+
+  Not collective
+
+  Input Parameter:
+. fit - the fit
+
+  Output Parameter:
+. method - the method
+
+  Level: intermediate
+
+.seealso: HylcFitSetMethod()
+@*/
+PetscErrorCode HylcFitGetMethod(HylcFit fit, HylcFitMethod *method)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(fit, HYLC_FIT_CLASSID, 1);
+  *method = fit->computed ? fit->methodUsed : fit->method;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -865,6 +972,13 @@ PetscErrorCode HylcFitView(HylcFit fit, PetscViewer viewer)
   PetscCall(PetscViewerASCIIPushTab(viewer));
   PetscCall(Line(viewer, "input: %s\n", fit->source[0] ? fit->source : (fit->input[0] ? fit->input : "(none)")));
   PetscCall(Line(viewer, "family: %s (%s)\n", fit->familyName, fit->familySource[0] ? fit->familySource : "the default"));
+  if (fit->computed)
+    PetscCall(Line(viewer, "method: %s%s\n", HylcFitMethods[fit->methodUsed], fit->method == HYLC_FIT_METHOD_AUTO ? " (auto)" : ""));
+  else
+    PetscCall(Line(viewer, "method: %s\n", HylcFitMethods[fit->method]));
+  if (fit->computed && fit->methodUsed == HYLC_FIT_METHOD_FABRIC)
+    PetscCall(Line(viewer, "fabric method: values and stresses by weighted least squares, errors relative to the tile's own with a floor of %g of each term's largest, ridge %g, outward slope floor %g; knots %s\n", (double)fit->fabricFloor,
+                   (double)fit->fabricRidge, (double)fit->fabricReg, fit->knotSource));
   PetscCall(Line(viewer, "reg %g%s, compat %s, MLS kernel %g of the span (sigma = kernel/%g), FD width %g of the knot spacing\n", (double)fit->reg, fit->quasiconvex ? "" : " (marching off)", HylcFitCompats[fit->compat], (double)fit->kernel,
                  (double)fit->truncation, (double)fit->fdEps));
   if (fit->knots == HYLC_FIT_KNOTS_REFINED)

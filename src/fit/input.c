@@ -126,6 +126,7 @@ static PetscErrorCode ReadSamplesHDF5(HylcFit fit, const char path[])
   PetscCall(HylcSamplesCheckHDF5(path, "-fit_input"));
   PetscCall(HylcSamplesReadHDF5(path, &N, &recs, &done, NULL));
   PetscCall(PetscMalloc4(6 * N + 1, &fit->z, N + 1, &fit->psi, N + 1, &fit->term, N + 1, &fit->row));
+  PetscCall(PetscMalloc1(6 * N + 1, &fit->stress));
   fit->nrows = (PetscInt)N;
   for (long k = 0; k < N; k++) {
     const HylcSampleRecord *r = &recs[k];
@@ -156,6 +157,7 @@ static PetscErrorCode ReadSamplesHDF5(HylcFit fit, const char path[])
       }
     }
     for (int i = 0; i < 6; i++) fit->z[6 * n + i] = r->z[i];
+    for (int i = 0; i < 6; i++) fit->stress[6 * n + i] = r->stress[i];
     fit->psi[n]  = r->psi;
     fit->term[n] = r->term;
     fit->row[n]  = (PetscInt)k;
@@ -165,6 +167,7 @@ static PetscErrorCode ReadSamplesHDF5(HylcFit fit, const char path[])
   PetscCall(PetscFree(recs));
   PetscCall(PetscFree(done));
   PetscCall(PetscSNPrintf(fit->source, sizeof(fit->source), "%s (HDF5 samples)", path));
+  fit->samplesFile = PETSC_TRUE;
   /* area density from the reference pattern */
   PetscCall(ReadReference(fit, path));
   if (fit->radius > 0 && fit->restLength > 0 && fit->px > 0 && fit->py > 0) {
@@ -273,6 +276,8 @@ static PetscErrorCode ReadRaw(HylcFit fit, const char data[], const char info[])
   }
   /* the term of each row by row order; every coordinate outside the term must be 0 */
   PetscCall(PetscMalloc4(6 * n + 1, &fit->z, n + 1, &fit->psi, n + 1, &fit->term, n + 1, &fit->row));
+  PetscCall(PetscMalloc1(6 * n + 1, &fit->stress));
+  for (PetscInt k = 0; k < 6 * n; k++) fit->stress[k] = (PetscReal)NAN; /* the raw layout has no stress */
   for (PetscInt k = 0; k < n; k++) {
     PetscInt t, c[2] = {-1, -1};
     if (k < 5 * n1) {

@@ -349,6 +349,16 @@ PetscErrorCode HylcFitCompute(HylcFit fit)
     }
     fit->f0 = fit->psi[fit->f0row];
   }
+  /* the method: auto is fabric when every row has its in-plane stress */
+  fit->methodUsed = fit->compat == HYLC_FIT_COMPAT_AUTHORS ? HYLC_FIT_METHOD_PAPER : fit->method;
+  if (fit->methodUsed == HYLC_FIT_METHOD_AUTO) {
+    PetscBool all = (PetscBool)(fit->n > 0);
+    for (PetscInt k = 0; k < fit->n && all; k++)
+      for (int i = 0; i < 3; i++)
+        if (PetscIsInfOrNanReal(fit->stress[6 * k + i])) all = PETSC_FALSE;
+    fit->methodUsed = all ? HYLC_FIT_METHOD_FABRIC : HYLC_FIT_METHOD_PAPER;
+  }
+  if (fit->methodUsed == HYLC_FIT_METHOD_FABRIC) PetscCall(HylcFitFabricKnots_Private(fit));
   for (int t = 1; t < HYLC_PLAN_NTERM; t++) {
     PetscInt   n = 0;
     PetscReal *u = NULL, *v = NULL, *l = NULL;
@@ -364,7 +374,11 @@ PetscErrorCode HylcFitCompute(HylcFit fit)
       if (n < need) PetscCall(PetscFree3(u, v, l));
       PetscCheck(n >= need, comm, PETSC_ERR_USER_INPUT, "%s: term %s has only %" PetscInt_FMT " usable samples (at least %" PetscInt_FMT " needed: -fit_min_samples_%s, or leave the term out with -fit_terms)", fit->source, HylcPlanTermName(t), n,
                  need, t <= 5 ? "1d" : "2d");
-      PetscErrorCode ierr = t <= 5 ? Fit1D(fit, ci, n, u, l) : Fit2D(fit, t, n, u, v, l);
+      PetscErrorCode ierr;
+      if (fit->methodUsed == HYLC_FIT_METHOD_FABRIC)
+        ierr = t <= 5 ? HylcFitTerm1DFabric_Private(fit, ci) : HylcFitTerm2DFabric_Private(fit, t);
+      else
+        ierr = t <= 5 ? Fit1D(fit, ci, n, u, l) : Fit2D(fit, t, n, u, v, l);
       if (ierr) PetscCall(PetscFree3(u, v, l));
       PetscCall(ierr);
       fit->has[t] = PETSC_TRUE;

@@ -75,8 +75,8 @@ static void CurvatureDirections(const PetscReal z[6], int j, PetscInt *n, PetscR
   switch (HylcMacroClassifyII(II, 0, &H, d)) {
   case HYLC_MACRO_FLAT:
     if (j == 4) {
-      *n   = 2;
-      w[1] = -1;
+      *n      = 2;
+      w[1]    = -1;
       B[0][0] = B[0][1] = B[0][2] = 0.5;
       B[1][0] = B[1][2] = 0.5;
       B[1][1]           = -0.5;
@@ -85,8 +85,10 @@ static void CurvatureDirections(const PetscReal z[6], int j, PetscInt *n, PetscR
     break;
   case HYLC_MACRO_SINGLY: {
     const PetscReal dp[2] = {-d[1], d[0]}, across = dp[0] * dp[0] * Ej[0] + 2 * dp[0] * dp[1] * Ej[1] + dp[1] * dp[1] * Ej[2];
-    if (PetscAbsReal(across) <= 1e-12) *trunc = PETSC_TRUE;
-    else *poisson = PETSC_TRUE;
+    if (PetscAbsReal(across) <= 1e-12)
+      *trunc = PETSC_TRUE;
+    else
+      *poisson = PETSC_TRUE;
   } break;
   default:
     *poisson = PETSC_TRUE;
@@ -143,7 +145,7 @@ static void CurvatureDirections(const PetscReal z[6], int j, PetscInt *n, PetscR
 PetscErrorCode HylcPeriodicEvaluateStrainDerivative(HylcPeriodic P, int mask, int comps, PetscReal parts[4], PetscReal gy[], PetscReal dEdz[6], PetscReal dcdz[])
 {
   const PetscInt  N = P->N, ng = P->nfv - N, m = P->ncons;
-  const PetscBool flat = (PetscBool)(P->z[3] == 0 && P->z[4] == 0 && P->z[5] == 0);
+  const PetscBool flat   = (PetscBool)(P->z[3] == 0 && P->z[4] == 0 && P->z[5] == 0);
   const double    IIz[3] = {P->z[3], P->z[4], P->z[5]};
   const PetscBool doubly = (PetscBool)(HylcMacroClassifyII(IIz, 0, NULL, NULL) == HYLC_MACRO_DOUBLY);
   PetscReal      *gfull, *gtfull, *xp, *xm, *Tp, *Tm, *cp, *cm, *xih, *x0, dA[12];
@@ -164,7 +166,7 @@ PetscErrorCode HylcPeriodicEvaluateStrainDerivative(HylcPeriodic P, int mask, in
     PetscCall(PetscFree(d3));
   }
   for (int j = 0; j < 6; j++) {
-    PetscInt  nt = 1;
+    PetscInt  nt    = 1;
     PetscReal wt[2] = {1, 0}, B[2][3], s = 0;
     PetscBool trunc = PETSC_FALSE, poisson = doubly;
     if (j >= 3) CurvatureDirections(P->z, j, &nt, wt, B, &trunc, &poisson);
@@ -192,7 +194,8 @@ PetscErrorCode HylcPeriodicEvaluateStrainDerivative(HylcPeriodic P, int mask, in
       const PetscReal h = j < 3 ? 1e-6 : 1e-6 / PetscMax(P->D.px, P->D.py);
       PetscReal       zp[6], zm[6];
       for (int i = 0; i < 6; i++) zp[i] = zm[i] = P->z[i];
-      if (j < 3) zp[j] += h, zm[j] -= h;
+      if (j < 3)
+        zp[j] += h, zm[j] -= h;
       else {
         for (int i = 0; i < 3; i++) zp[3 + i] += h * B[q][i], zm[3 + i] -= h * B[q][i];
         if (trunc) {

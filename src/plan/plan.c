@@ -3,7 +3,6 @@
 #include <math.h>
 #include <string.h>
 
-
 /* the terms are the shared vocabulary's (include/hylc/strain.h) after the zero sample: 1..5 its coordinates,
    6..14 its pairs */
 const char *HylcPlanTermName(int t)
@@ -58,13 +57,17 @@ int HylcPlanGradedKnots(double mn, double mx, double h0, double g, double hmax, 
     int          m = 0;
     while (end > 0 && t < end) {
       if (m == HYLC_PLAN_MAXAXIS) return -1;
-      if (t + h >= end || end - (t + h) < 0.5 * fmin(h * g, hmax)) t = end; /* the last interval: to the end point */
-      else t += h;
+      if (t + h >= end || end - (t + h) < 0.5 * fmin(h * g, hmax))
+        t = end; /* the last interval: to the end point */
+      else
+        t += h;
       T[m++] = t;
-      h = h * g < hmax ? h * g : hmax;
+      h      = h * g < hmax ? h * g : hmax;
     }
-    if (side) nr = m;
-    else nl = m;
+    if (side)
+      nr = m;
+    else
+      nl = m;
   }
   if (nl + nr + 1 > cap) return -1;
   for (int i = nl - 1; i >= 0; i--) K[n++] = -L[i];
@@ -111,7 +114,7 @@ int HylcPlanAxis(const HylcPlan *p, int t, int a, double Z[HYLC_PLAN_MAXAXIS])
   }
   if (p->spacing != HYLC_PLAN_SPACING_GRADED || p->sub < 1) return -1;
   {
-    double K[HYLC_PLAN_MAXAXIS];
+    double    K[HYLC_PLAN_MAXAXIS];
     const int nk = HylcPlanAxisKnots(p, t, a, K);
     if (nk < 1 || (long)(nk - 1) * p->sub + 1 > HYLC_PLAN_MAXAXIS) return -1;
     n = 0;
@@ -189,8 +192,8 @@ int HylcPlanDefaults(const char *family, double scale, HylcPlan *p)
   else
     return -1;
   memset(p, 0, sizeof(*p));
-  p->n1              = 150;
-  p->n2              = 50;
+  p->n1 = 150;
+  p->n2 = 50;
   HylcPlanGradedDefaults(scale, p);
   p->terms           = (1 << HYLC_PLAN_NTERM) - 1;
   const double lo[5] = {s0, -sa, s0, -b0 * scale, -b1 * scale}, hi[5] = {s1, sa, s1, b0 * scale, b1 * scale};

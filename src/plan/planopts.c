@@ -53,12 +53,15 @@ PetscErrorCode HylcPlanRangesFromOptions(PetscOptionItems *PetscOptionsObject, M
     }
   }
   {
-    PetscEnum sp     = (PetscEnum)ranges->spacing;
+    PetscEnum sp = (PetscEnum)ranges->spacing;
     PetscReal h0[5], growth = ranges->growth > 0 ? ranges->growth : p.growth, hmax = ranges->hmax > 0 ? ranges->hmax : p.hmax;
     PetscInt  n = HYLC_PLAN_NCOORD, sub = ranges->sub > 0 ? ranges->sub : p.sub;
     PetscBool set;
     for (int c = 0; c < HYLC_PLAN_NCOORD; c++) h0[c] = ranges->h0set ? ranges->h0[c] : p.h0[c];
-    PetscCall(PetscOptionsEnum("-sampler_spacing", "How an axis is sampled: graded (knots dense near 0, spacing -sampler_graded_h0 growing by -sampler_graded_growth, each interval cut -sampler_graded_sub times: the fabric fit's knots) or paper (Algorithm C4's -sampler_n1 samples per 1D term, -sampler_n2 per 2D axis; giving either selects paper spacing unless this is given)", man, HylcPlanSpacings, sp, &sp, &set));
+    PetscCall(PetscOptionsEnum("-sampler_spacing",
+                               "How an axis is sampled: graded (knots dense near 0, spacing -sampler_graded_h0 growing by -sampler_graded_growth, each interval cut -sampler_graded_sub times: the fabric fit's knots) or paper (Algorithm C4's "
+                               "-sampler_n1 samples per 1D term, -sampler_n2 per 2D axis; giving either selects paper spacing unless this is given)",
+                               man, HylcPlanSpacings, sp, &sp, &set));
     ranges->spacing = (PetscInt)sp;
     if (set) ranges->spacingSet = PETSC_TRUE;
     PetscCall(HylcOptionsRealArray("-sampler_graded_h0", "graded spacing: the knot spacing at 0 of sx, sa, sy, II00, II11 (1 and 1/m; default 0.01 and 2.5 1/m at r = 1 mm, scaled by 1 mm / r)", man, h0, &n, &set));
@@ -143,7 +146,8 @@ PetscErrorCode HylcPlanRangesApply(MPI_Comm comm, const HylcPlanRanges *ranges, 
       for (int a = 0; a < (t > 5 ? 2 : 1); a++) {
         double    Z[HYLC_PLAN_MAXAXIS];
         const int n = HylcPlanAxis(&p, t, a, Z);
-        PetscCheck(n > 0, comm, PETSC_ERR_USER_INPUT, "-sampler_spacing graded: axis %d of term %s has more than %d samples (-sampler_graded_h0 %g too small for its range, or -sampler_graded_sub too large)", a, HylcPlanTermName(t), HYLC_PLAN_MAXAXIS, p.h0[t <= 5 ? t - 1 : 0]);
+        PetscCheck(n > 0, comm, PETSC_ERR_USER_INPUT, "-sampler_spacing graded: axis %d of term %s has more than %d samples (-sampler_graded_h0 %g too small for its range, or -sampler_graded_sub too large)", a, HylcPlanTermName(t), HYLC_PLAN_MAXAXIS,
+                   p.h0[t <= 5 ? t - 1 : 0]);
       }
   p.n1    = plan->n1;
   p.n2    = plan->n2;

@@ -63,17 +63,17 @@ PetscErrorCode HylcSamplerCreate(MPI_Comm comm, HylcSampler *s)
   PetscCallMPI(MPI_Comm_rank(comm, &S->rank));
   PetscCallMPI(MPI_Comm_size(comm, &S->size));
   PetscCall(PetscStrncpy(S->output, "samples.h5", sizeof(S->output)));
-  S->n1       = 150;
-  S->n2       = 50;
-  S->terms    = (1 << HYLC_PLAN_NTERM) - 1;
-  S->batch    = 1;
-  S->progress = 5;
-  S->start    = HYLC_SAMPLER_START_CONTINUE;
-  S->bothRtol = 1e-3;
-  S->stress   = PETSC_TRUE;
-  S->density  = 0;
+  S->n1             = 150;
+  S->n2             = 50;
+  S->terms          = (1 << HYLC_PLAN_NTERM) - 1;
+  S->batch          = 1;
+  S->progress       = 5;
+  S->start          = HYLC_SAMPLER_START_CONTINUE;
+  S->bothRtol       = 1e-3;
+  S->stress         = PETSC_TRUE;
+  S->density        = 0;
   S->ranges.spacing = HYLC_PLAN_SPACING_GRADED; /* the fabric fit's knots (-sampler_spacing) */
-  S->refmode  = HYLC_REFERENCE_AUTO;
+  S->refmode        = HYLC_REFERENCE_AUTO;
   PetscCall(HylcYarnModelDefault(&S->model));
   PetscCall(HylcReferenceParamsDefault(&S->refpar));
   *s = S;
@@ -262,8 +262,8 @@ PetscErrorCode HylcSamplerView(HylcSampler S, PetscViewer viewer)
     HylcPlan p;
     PetscCheck(!HylcPlanDefaults(HylcPlanFamilies[S->ranges.family], 1, &p), PETSC_COMM_SELF, PETSC_ERR_PLIB, "family");
     if (S->setupcalled) p = S->plan;
-    PetscCall(PetscViewerASCIIPrintf(viewer, "plan: family %s, graded spacing (h0 %g %g %g %g %g 1/m%s, growth %g, hmax %g of the range, %d samples per knot interval), terms %s%s\n", HylcPlanFamilies[S->ranges.family], p.h0[0], p.h0[1], p.h0[2], p.h0[3], p.h0[4],
-                                     S->setupcalled ? "" : " at r = 1 mm", p.growth, p.hmax, p.sub, terms, count));
+    PetscCall(PetscViewerASCIIPrintf(viewer, "plan: family %s, graded spacing (h0 %g %g %g %g %g 1/m%s, growth %g, hmax %g of the range, %d samples per knot interval), terms %s%s\n", HylcPlanFamilies[S->ranges.family], p.h0[0], p.h0[1], p.h0[2],
+                                     p.h0[3], p.h0[4], S->setupcalled ? "" : " at r = 1 mm", p.growth, p.hmax, p.sub, terms, count));
   } else
     PetscCall(PetscViewerASCIIPrintf(viewer, "plan: family %s, paper spacing, %" PetscInt_FMT " samples per 1D term, %" PetscInt_FMT " per 2D axis, terms %s%s\n", HylcPlanFamilies[S->ranges.family], S->n1, S->n2, terms, count));
   if (S->start == HYLC_SAMPLER_START_BOTH)

@@ -81,8 +81,9 @@ static PetscErrorCode WriteSamplesGroup(hid_t file, long N, const HylcSampleReco
   HylcCallHDF5(HylcH5WriteDataset(g, "strain", 2, (hsize_t[]){(hsize_t)N, 6}, H5T_NATIVE_DOUBLE, strain, "1 for sx, sa, sy; 1/m for II00, II01, II11",
                                   "macroscopic strain z = (sx, sa, sy, II00, II01, II11): in-plane stretch/shear and the second fundamental form"));
   HylcCallHDF5(HylcH5WriteDataset(g, "psi", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_DOUBLE, psi, "J/m^2", "area energy density psi = E / A of the equilibrium (A: reference tile area)"));
-  HylcCallHDF5(HylcH5WriteDataset(g, "stress", 2, (hsize_t[]){(hsize_t)N, 6}, H5T_NATIVE_DOUBLE, stress, "N/m for sx, sa, sy; N (J/m^2 per 1/m) for II00, II01, II11",
-                                  "the stress dpsi/dz of the equilibrium, columns as /samples/strain, by the envelope theorem (no re-solve; docs/output-format.md); NaN where the solve did not converge or the run did not record it (-sampler_stress false)"));
+  HylcCallHDF5(
+      HylcH5WriteDataset(g, "stress", 2, (hsize_t[]){(hsize_t)N, 6}, H5T_NATIVE_DOUBLE, stress, "N/m for sx, sa, sy; N (J/m^2 per 1/m) for II00, II01, II11",
+                         "the stress dpsi/dz of the equilibrium, columns as /samples/strain, by the envelope theorem (no re-solve; docs/output-format.md); NaN where the solve did not converge or the run did not record it (-sampler_stress false)"));
   HylcCallHDF5(HylcH5WriteDataset(g, "term", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, term, "1", "term of the sampling plan: 0 zero sample, 1..5 one-dimensional, 6..14 two-dimensional; index into /samples@term_names; -1 not computed"));
   HylcCallHDF5(HylcH5WriteDataset(g, "status", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, status, "1",
                                   "HylcMicroStatus of the Newton solve, index into /samples@status_names (0 converged, 1 iteration_cap, 2 time_cap, 3 stalled, 4 nonfinite; 5 failed is reserved, no longer produced); -1: not computed (the run ended "
@@ -286,7 +287,9 @@ static PetscErrorCode WritePlan(hid_t file, const HylcPlan *plan)
   PetscFunctionBegin;
   HylcCallHDF5Id(g, H5Gcreate2(file, "plan", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
   HylcCallHDF5(HylcH5WriteAttrString(g, "spacing", HylcPlanSpacings[plan->spacing]));
-  HylcCallHDF5(HylcH5WriteAttrString(g, "description", "The sampling plan's spacing (-sampler_spacing); for graded spacing its parameters and the knots of each axis of each term (knots_<term>, knots_<term>_0 and _1 for a 2D term), which the samples subdivide (docs/output-format.md)"));
+  HylcCallHDF5(HylcH5WriteAttrString(
+      g, "description",
+      "The sampling plan's spacing (-sampler_spacing); for graded spacing its parameters and the knots of each axis of each term (knots_<term>, knots_<term>_0 and _1 for a 2D term), which the samples subdivide (docs/output-format.md)"));
   if (plan->spacing == HYLC_PLAN_SPACING_GRADED) {
     HylcCallHDF5(HylcH5WriteDataset(g, "h0", 1, (hsize_t[]){HYLC_PLAN_NCOORD}, H5T_NATIVE_DOUBLE, plan->h0, "1 for sx, sa, sy; 1/m for II00, II11", "knot spacing at 0 per coordinate"));
     HylcCallHDF5(HylcH5WriteAttrDouble(g, "growth", plan->growth));
@@ -299,8 +302,10 @@ static PetscErrorCode WritePlan(hid_t file, const HylcPlan *plan)
         char      name[64];
         const int n = HylcPlanAxisKnots(plan, t, a, K);
         PetscCheck(n > 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "graded knots of term %s", HylcPlanTermName(t));
-        if (t <= 5) snprintf(name, sizeof(name), "knots_%s", HylcPlanTermName(t));
-        else snprintf(name, sizeof(name), "knots_%s_%d", HylcPlanTermName(t), a);
+        if (t <= 5)
+          snprintf(name, sizeof(name), "knots_%s", HylcPlanTermName(t));
+        else
+          snprintf(name, sizeof(name), "knots_%s_%d", HylcPlanTermName(t), a);
         HylcCallHDF5(HylcH5WriteDataset(g, name, 1, (hsize_t[]){(hsize_t)n}, H5T_NATIVE_DOUBLE, K, "1 for sx, sa, sy; 1/m for II00, II11", "the knots of this axis of the term (ascending, 0 included)"));
       }
     }
@@ -338,8 +343,10 @@ PetscErrorCode HylcSamplesReadKnots(const char path[], int t, int a, PetscInt *n
   PetscFunctionBegin;
   *n = 0;
   PetscCheck(t >= 1 && t < HYLC_PLAN_NTERM && a >= 0 && a <= (t > 5), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "HylcSamplesReadKnots: term %d axis %d", t, a);
-  if (t <= 5) snprintf(name, sizeof(name), "plan/knots_%s", HylcPlanTermName(t));
-  else snprintf(name, sizeof(name), "plan/knots_%s_%d", HylcPlanTermName(t), a);
+  if (t <= 5)
+    snprintf(name, sizeof(name), "plan/knots_%s", HylcPlanTermName(t));
+  else
+    snprintf(name, sizeof(name), "plan/knots_%s_%d", HylcPlanTermName(t), a);
   HylcH5QuietBegin(&q);
   file = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
   has  = file < 0 ? -1 : H5Lexists(file, "plan", H5P_DEFAULT) > 0 ? H5Lexists(file, name, H5P_DEFAULT) : 0;
@@ -455,10 +462,10 @@ PetscErrorCode HylcSamplesWriteHDF5(const char path[], long nsamples, const Hylc
 /* the datasets of /samples that HylcSamplesReadHDF5() reads (start, negcurv, escapes, psi_other,
    status_other, multistable and stress are newer than the format's first files: optional) */
 static const HylcTableColumn SamplesColumns[] = {
-    {"strain", 6, H5T_FLOAT, PETSC_FALSE},      {"psi", 0, H5T_FLOAT, PETSC_FALSE},      {"energy_parts", 4, H5T_FLOAT, PETSC_FALSE}, {"residual", 0, H5T_FLOAT, PETSC_FALSE},     {"constraint_residual", 0, H5T_FLOAT, PETSC_FALSE},
-    {"time", 0, H5T_FLOAT, PETSC_FALSE},        {"term", 0, H5T_INTEGER, PETSC_FALSE},   {"status", 0, H5T_INTEGER, PETSC_FALSE},     {"iterations", 0, H5T_INTEGER, PETSC_FALSE}, {"retries", 0, H5T_INTEGER, PETSC_FALSE},
-    {"start", 0, H5T_INTEGER, PETSC_TRUE},      {"negcurv", 0, H5T_INTEGER, PETSC_TRUE}, {"escapes", 0, H5T_INTEGER, PETSC_TRUE},     {"psi_other", 0, H5T_FLOAT, PETSC_TRUE},     {"status_other", 0, H5T_INTEGER, PETSC_TRUE},
-    {"multistable", 0, H5T_INTEGER, PETSC_TRUE},  {"stress", 6, H5T_FLOAT, PETSC_TRUE}};
+    {"strain", 6, H5T_FLOAT, PETSC_FALSE},       {"psi", 0, H5T_FLOAT, PETSC_FALSE},      {"energy_parts", 4, H5T_FLOAT, PETSC_FALSE}, {"residual", 0, H5T_FLOAT, PETSC_FALSE},     {"constraint_residual", 0, H5T_FLOAT, PETSC_FALSE},
+    {"time", 0, H5T_FLOAT, PETSC_FALSE},         {"term", 0, H5T_INTEGER, PETSC_FALSE},   {"status", 0, H5T_INTEGER, PETSC_FALSE},     {"iterations", 0, H5T_INTEGER, PETSC_FALSE}, {"retries", 0, H5T_INTEGER, PETSC_FALSE},
+    {"start", 0, H5T_INTEGER, PETSC_TRUE},       {"negcurv", 0, H5T_INTEGER, PETSC_TRUE}, {"escapes", 0, H5T_INTEGER, PETSC_TRUE},     {"psi_other", 0, H5T_FLOAT, PETSC_TRUE},     {"status_other", 0, H5T_INTEGER, PETSC_TRUE},
+    {"multistable", 0, H5T_INTEGER, PETSC_TRUE}, {"stress", 6, H5T_FLOAT, PETSC_TRUE}};
 #define NSAMPLESCOLUMNS ((int)(sizeof(SamplesColumns) / sizeof(SamplesColumns[0])))
 
 /* whether /samples/name exists (checked by HylcTableCheckHDF5Columns() when it does) */

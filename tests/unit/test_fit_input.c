@@ -7,6 +7,7 @@
 #include <hylc/fit.h>
 #include <hylc/samples.h>
 #include "hylctest.h"
+#include <math.h>
 #include "fittest.h"
 #include <string.h>
 #include <errno.h>
@@ -110,6 +111,7 @@ static PetscErrorCode Run(void)
       recs[k].term   = (int)term[k];
       recs[k].status = k % 7 == 3 ? 3 : 0;
       for (int i = 0; i < 6; i++) recs[k].z[i] = z[6 * k + i];
+      for (int i = 0; i < 6; i++) recs[k].stress[i] = NAN; /* not recorded: the paper's method, as for the data in memory */
       recs[k].psi = recs[k].status ? 1e9 : psi[k];
       done[k]     = k < n - 3;
       if (done[k] && !recs[k].status) {
@@ -275,6 +277,7 @@ static PetscErrorCode WriteSamples(const char path[])
     recs[k].index = k;
     recs[k].term  = (int)term[k];
     for (int i = 0; i < 6; i++) recs[k].z[i] = z[6 * k + i];
+    for (int i = 0; i < 6; i++) recs[k].stress[i] = NAN; /* a synthetic psi without its stress: the paper's method */
     recs[k].psi = psi[k];
     done[k]     = 1;
   }

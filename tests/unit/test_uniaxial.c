@@ -83,8 +83,8 @@ static PetscErrorCode CheckEnvelope(HylcPatternType type, const PetscReal z[6], 
     }
     const PetscReal fd = (psi[0] - psi[1]) / (2 * hj), fds = j < 3 ? fd : fd / p;
     if (getenv("HYLC_TEST_VERBOSE"))
-      printf("%s z = (%g, %g, %g, %g, %g, %g) dPsi/d%s: envelope %.12e central %.12e (of which dE/dz at fixed y %.12e)\n", type, (double)z[0], (double)z[1], (double)z[2], (double)z[3], (double)z[4], (double)z[5], HylcStrainNames[j], (double)g[j], (double)fd,
-             (double)(dEdz[j] / area));
+      printf("%s z = (%g, %g, %g, %g, %g, %g) dPsi/d%s: envelope %.12e central %.12e (of which dE/dz at fixed y %.12e)\n", type, (double)z[0], (double)z[1], (double)z[2], (double)z[3], (double)z[4], (double)z[5], HylcStrainNames[j], (double)g[j],
+             (double)fd, (double)(dEdz[j] / area));
     /* a perturbation that makes II doubly curved (II01, or across the axis of a bent strain) is solved on a
        Poisson midsurface, whose discretization error changes with the strain: envelope and differences of Psi
        then agree to that error's derivative (measured up to 4e-4 of |g|), not to the solve's tolerance */

@@ -39,9 +39,14 @@ struct _p_HylcFit {
   PetscInt          rawN1, rawN2;                                                    /* raw data.txt block sizes (0: infer) */
   PetscInt          min1, min2;                                                      /* minimum samples per 1D, 2D term */
   PetscInt          terms;                                                           /* bit t: fit term t */
+  HylcFitMethod     method;                                                          /* -fit_method as set */
+  HylcFitMethod     methodUsed;                                                      /* auto resolved by HylcFitCompute() */
+  PetscReal         fabricFloor, fabricRidge, fabricReg;                             /* the fabric fit's weight floor, ridge, marching floor */
+  PetscInt          fabricPasses;                                                    /* the fabric fit's 2D passes (muv from the slopes between them) */
   /* data: the rows used (status 0), in file order */
   PetscInt   n;
   PetscReal *z, *psi;                               /* n x 6, n */
+  PetscReal *stress;                                /* n x 6: dPsi/dz of each row (NaN: not recorded) */
   PetscInt  *term, *row;                            /* term, row in the file */
   PetscReal  rhoA;                                  /* resolved area density (kg/m^2), <= 0 unknown */
   char       rhoSource[PETSC_MAX_PATH_LEN + 256];   /* how rhoA was obtained */
@@ -52,7 +57,11 @@ struct _p_HylcFit {
   PetscInt   nrows, nskipped; /* rows in the input, rows not used (status != 0) */
   PetscReal  zabsmax[6];      /* max |strain| over every computed row, converged or not (the plan's range) */
   PetscBool  dataset, setupcalled, computed;
+  PetscBool  samplesFile; /* the input is a samples file of hylc-sample (HDF5) */
   /* results */
+  PetscInt     nknot[HYLC_PLAN_NTERM][2]; /* the fabric fit's knots per term and axis (physical units) */
+  PetscReal   *knot[HYLC_PLAN_NTERM][2];
+  char         knotSource[PETSC_MAX_PATH_LEN + 64];
   PetscReal    scale[6], f0;
   PetscInt     f0row;
   PetscBool    has[HYLC_PLAN_NTERM];
@@ -71,3 +80,7 @@ PETSC_INTERN PetscErrorCode HylcFitReadInput_Private(HylcFit);
 PETSC_INTERN PetscErrorCode HylcFitInputFamily_Private(const char[], char[], size_t, PetscBool *);
 /* fit.c: frees the results */
 PETSC_INTERN PetscErrorCode HylcFitResetResults_Private(HylcFit);
+/* fabric.c: the fabric method's knots (the samples file's /plan, else graded over the data), 1D and 2D terms */
+PETSC_INTERN PetscErrorCode HylcFitFabricKnots_Private(HylcFit);
+PETSC_INTERN PetscErrorCode HylcFitTerm1DFabric_Private(HylcFit, int);
+PETSC_INTERN PetscErrorCode HylcFitTerm2DFabric_Private(HylcFit, int);
