@@ -3,7 +3,9 @@
 # for each pattern, Psi(0) / table constant and, on each 1D term sx, sa, sy, II00, II11, the normalised RMS
 # of dPsi(z) = Psi(z) - Psi(0) against the table's dPsi at the same strains, within the table's knot range,
 # divided by the largest |dPsi_table| of that term.  It is hylc-calibrate's own "before" table with no
-# iteration (-calibrate_max_it 0: one evaluation of the config's parameters; docs/calibrate.md).
+# iteration (-calibrate_max_it 0: one evaluation of the config's parameters; docs/calibrate.md), with the
+# paper's procedure (config/profile-paper.yaml: the stored tiles as they are, cold starts), the way to compare
+# with the paper's tables.
 #
 #   bash examples/compare_tables.sh [pattern ...] [-- extra hylc-calibrate options]
 #   NP=2 N=15 bash examples/compare_tables.sh stockinette satin -- -options_file my-values.yaml
@@ -47,7 +49,7 @@ good=0 all=0 cgood=0 call=0 st=0
 for p in "${names[@]}"; do
   t=$(table "$p") || { echo "compare_tables: unknown pattern $p" >&2; st=1; continue; }
   log=$tmp/$p.log
-  if ! mpiexec --oversubscribe -n "$np" "$tool" -options_file "$root/config/$p.yaml" "${extra[@]}" \
+  if ! mpiexec --oversubscribe -n "$np" "$tool" -options_file "$root/config/$p.yaml" -options_file "$root/config/profile-paper.yaml" "${extra[@]}" \
        -calibrate_target "$ref/materials/$t.json" -calibrate_terms zero,sx,sa,sy,II00,II11 -calibrate_n "$n" \
        -calibrate_max_it 0 -calibrate_dump "$tmp/$p.csv" >"$log" 2>&1; then
     echo "| $p ($t) | run failed: $(grep -m1 'error' "$log") |"; st=1; continue

@@ -237,6 +237,49 @@ typedef struct {
    thread-safe. */
 int hylcmat_uniaxial(const hylcmat *m, int dir, double s, const double guess[2], hylcmat_uniaxial_state *st, char *err, size_t errlen);
 
+/* ---- the homogeneous states of the standard fabric tests (docs/fabric-fidelity.md) -----------------
+   A load path prescribes one quantity s and leaves p free (1 to 3 strains), which minimize Psi: their stresses
+   vanish, as in the homogeneous zone of the test. The path's force is d(min Psi)/ds, the derivative of the
+   minimized Psi (by the envelope theorem dPsi/dz . dz/ds at the state):
+     HYLCMAT_PATH_UNIAXIAL   stretch s along the material direction at angle degrees from x (0 strip tensile
+                             along x, 90 along y, 45 the bias test); p: the other two in-plane strains (at 0:
+                             sa, sy; at 90: sa, sx; otherwise the shear cosine and stretch of the rotated frame);
+                             force: T, N/m of reference width;
+     HYLCMAT_PATH_EQUIBIAXIAL sx = sy = s; p: sa; force: dPsi/dsx + dPsi/dsy (N/m; the gradient has each);
+     HYLCMAT_PATH_SHEAR      sa = s (the cosine of the angle between the deformed axes); p: sx, sy; force:
+                             dPsi/dsa (N/m);
+     HYLCMAT_PATH_BENDING    II00 = s (angle 0) or II11 = s (angle 90), 1/m; p: sx, sa, sy; force: the moment
+                             per unit width dPsi/dII (N). */
+enum { HYLCMAT_PATH_UNIAXIAL = 0, HYLCMAT_PATH_EQUIBIAXIAL = 1, HYLCMAT_PATH_SHEAR = 2, HYLCMAT_PATH_BENDING = 3 };
+typedef struct {
+  int    kind;  /* HYLCMAT_PATH_* */
+  double angle; /* degrees: the uniaxial direction from material x (0..90); the bending axis (0 or 90) */
+} hylcmat_path;
+typedef struct {
+  double s;          /* the prescribed value */
+  double force;      /* d(min Psi)/ds at the state */
+  double p[3];       /* the free strains (nfree of them) */
+  double z[6];       /* the strain of the state */
+  double psi;        /* Psi there (J/m^2) */
+  double grad[6];    /* dPsi/dz there */
+  double gfree[3];   /* dPsi/dp there (0 up to rounding) */
+  double step;       /* the last Newton step */
+  int    iterations; /* Newton iterations */
+} hylcmat_path_result;
+/* "uniaxial", "equibiaxial", "shear", "bending"; NULL for another kind */
+const char *hylcmat_path_name(int kind);
+/* the number of free strains of a path (2, 1, 2, 3), or -1 */
+int hylcmat_path_nfree(const hylcmat_path *path);
+/* the strain z of the path at s with the free strains p and, if J is not NULL, dz/d(s, p) (6 x (1 + nfree),
+   row-major). HYLCMAT_ERR_ARG for an invalid path or a strain outside the domain. */
+int hylcmat_path_strain(const hylcmat_path *path, double s, const double p[], double z[6], double J[]);
+/* The state of a table on a path at s: Newton's method in the free strains with the table's exact Hessian
+   (and the rotation's curvature for an oblique uniaxial path), made positive definite, steps of at most 0.1,
+   backtracking on Psi, to a step below 1e-11, then probes (a lower one restarts), as hylcmat_uniaxial(). From
+   guess (the free strains of a nearby state along a loading path), or with guess NULL from the lowest point of
+   a grid of the free strains. Errors as hylcmat_uniaxial()'s; no allocation; thread-safe. */
+int hylcmat_path_state(const hylcmat *m, const hylcmat_path *path, double s, const double guess[], hylcmat_path_result *st, char *err, size_t errlen);
+
 /* ---- names -------------------------------------------------------------------------------------- */
 /* (k0, k1) of 2D term q (0..8), in the order of the JSON tables */
 void hylcmat_pair(int q, int *k0, int *k1);

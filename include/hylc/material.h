@@ -16,6 +16,7 @@
 #include <hylc/sys.h>
 #include <hylc/spline.h>
 #include <hylc/strain.h>
+#include <hylcmat.h>
 #include <petscviewer.h>
 
 typedef struct _p_HylcMaterial *HylcMaterial;
@@ -72,6 +73,7 @@ PETSC_EXTERN PetscErrorCode HylcMaterialEvaluate(HylcMaterial, const PetscReal s
 /* The homogeneous uniaxial tension state (hylcmat_uniaxial(), docs/fabric-uniaxial.md): stretch s along
    x (dir 0) or y (dir 1), the lateral strains minimizing Psi; T = dPsi/ds (N/m). Not collective. */
 PETSC_EXTERN PetscErrorCode HylcMaterialUniaxial(HylcMaterial, PetscInt dir, PetscReal s, const PetscReal guess[2], PetscReal *T, PetscReal lateral[2], PetscReal *psi, PetscBool *converged);
+PETSC_EXTERN PetscErrorCode HylcMaterialPathState(HylcMaterial, const hylcmat_path *, PetscReal, const PetscReal[], hylcmat_path_result *, PetscBool *);
 
 /* Names of the terms: the shared vocabulary's (include/hylc/strain.h), as the sampling plan's (HylcPlanTermName). */
 #define HylcMaterialTermNames1D HylcCoordNames

@@ -19,6 +19,7 @@
    solve is an error (the sample has no result): only a failed factorization (the regularization's job)
    and a degenerate or non-finite trial state (energy +inf) are outcomes of the method. */
 #include <hylc/periodic.h>
+#include <hylcmat.h>
 #include <petscsnes.h>
 
 typedef struct _p_HylcMicro *HylcMicro;
@@ -97,6 +98,26 @@ typedef struct {
   PetscLogDouble        time;            /* wall time (s) */
 } HylcMicroUniaxialResult;
 
+/* the homogeneous state of the tile on a load path (HylcMicroSolvePath(), include/hylcmat.h, docs/fabric-fidelity.md) */
+typedef struct {
+  hylcmat_path   path;
+  PetscReal      s;               /* the prescribed value */
+  PetscReal      force;           /* d(min Psi)/ds: N/m, or N (the moment per unit width) for bending */
+  PetscReal      p[3];            /* the free strains (hylcmat_path_nfree()) */
+  PetscReal      z[6];            /* the strain of the state */
+  PetscReal      psi;             /* Psi (J/m^2) */
+  PetscReal      grad[6];         /* dPsi/dz there (the components the path moves; 0 for the others) */
+  PetscReal      gfree[3];        /* dPsi/dp there */
+  PetscReal      step;            /* the Newton step to the minimizer predicted at the state returned, max norm */
+  PetscBool      converged;       /* as HylcMicroUniaxialResult */
+  PetscBool      gradientStop;    /* converged by the gradient test after a failed line search */
+  PetscInt       iterations;      /* accepted Newton steps */
+  PetscInt       solves;          /* microscale solves */
+  PetscInt       microIterations; /* their Newton iterations */
+  PetscInt       failedSolves;    /* solves that did not converge */
+  PetscLogDouble time;            /* wall time (s) */
+} HylcMicroPathResult;
+
 PETSC_EXTERN PetscErrorCode HylcMicroCreate(MPI_Comm, HylcMicro *);
 PETSC_EXTERN PetscErrorCode HylcMicroDestroy(HylcMicro *);
 PETSC_EXTERN PetscErrorCode HylcMicroSetPattern(HylcMicro, HylcPattern, const HylcYarnModel *);
@@ -129,6 +150,8 @@ PETSC_EXTERN PetscErrorCode HylcMicroGetContinued(HylcMicro, PetscBool *);
 PETSC_EXTERN PetscErrorCode HylcMicroGetEnergyHistory(HylcMicro, PetscInt *, const PetscReal **);
 PETSC_EXTERN PetscErrorCode HylcMicroResultView(const HylcMicroResult *, PetscViewer);
 PETSC_EXTERN PetscErrorCode HylcMicroGetStrainGradient(HylcMicro, int, PetscReal[6]);
+PETSC_EXTERN PetscErrorCode HylcMicroSolvePath(HylcMicro, const hylcmat_path *, PetscReal, const PetscReal[], const PetscReal[], HylcMicroPathResult *, PetscReal[]);
+PETSC_EXTERN PetscErrorCode HylcMicroPathResultView(const HylcMicroPathResult *, PetscViewer);
 PETSC_EXTERN PetscErrorCode HylcMicroGetStrainGradientParts(HylcMicro, int, PetscReal[6], PetscReal[24]);
 PETSC_EXTERN PetscErrorCode HylcMicroSetUniaxial(HylcMicro, HylcMicroUniaxialGradient, PetscReal, PetscInt, PetscReal, PetscReal);
 PETSC_EXTERN PetscErrorCode HylcMicroSetUniaxialTolerances(HylcMicro, PetscReal, PetscReal);

@@ -42,6 +42,9 @@ extern const int HylcCoordStrain[HYLC_NCOORD];
 /* the pairs = the 2D terms: their coordinates (k0 < k1) and names */
 extern const int         HylcPairCoords[HYLC_NPAIR][2];
 extern const char *const HylcPairNames[HYLC_NPAIR];
+/* the load paths of include/hylcmat.h (uniaxial, equibiaxial, shear, bending), as a PETSc enum list (the kind's
+   name, then the type's name, the prefix and NULL) */
+extern const char *const HylcPathNames[7];
 /* index of the pair (k0, k1) (k0 < k1), or -1 */
 int HylcPairIndex(int k0, int k1);
 #ifdef __cplusplus

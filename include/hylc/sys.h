@@ -81,6 +81,7 @@ PETSC_EXTERN PetscErrorCode HylcShareError(MPI_Comm, PetscErrorCode);
 /* A uniaxial curve as CSV (docs/fabric-uniaxial.md): the header strain,T_N_per_m,lateral_strain_sa,lateral_strain_s2
    and one row per point (s2: sy for a test along x, sx along y), written atomically. Not collective. */
 PETSC_EXTERN PetscErrorCode HylcWriteUniaxialCSV(const char[], PetscInt, const PetscReal[], const PetscReal[], const PetscReal[], const PetscReal[]);
+PETSC_EXTERN PetscErrorCode HylcWritePathCSV(const char[], PetscInt, const PetscReal[], const PetscReal[], const PetscReal[], const PetscReal[], const PetscBool[]);
 /* Refuses options nothing has read (before any work), except the options of other hylc programs' stages
    (HylcOptionIsOtherStage()): every program accepts the whole study's options file. Collective. */
 PETSC_EXTERN PetscErrorCode HylcCheckOptionsUsed(MPI_Comm);

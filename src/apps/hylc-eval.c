@@ -161,6 +161,37 @@ static PetscErrorCode EvalUniaxial(HylcMaterial mat, PetscInt dir, PetscInt n, c
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* -eval_path: the states of a load path at the values s[0..n), the first from the lowest point of a grid of the
+   free strains, each other from the free strains of the one before (a loading path) */
+static PetscErrorCode EvalPath(HylcMaterial mat, const hylcmat_path *path, PetscInt n, const PetscReal s[], const char csv[])
+{
+  PetscReal  *F, *Z, *psi, p[3] = {0, 0, 0};
+  PetscBool  *conv;
+  PetscMPIInt rank;
+
+  PetscFunctionBegin;
+  PetscCall(PetscMalloc4(n, &F, 6 * n, &Z, n, &psi, n, &conv));
+  for (PetscInt i = 0; i < n; i++) {
+    hylcmat_path_result r;
+    char                buf[320];
+    PetscCall(HylcMaterialPathState(mat, path, s[i], i ? p : NULL, &r, &conv[i]));
+    F[i]   = r.force;
+    psi[i] = r.psi;
+    for (int k = 0; k < 6; k++) Z[6 * i + k] = r.z[k];
+    for (int a = 0; a < 3; a++) p[a] = r.p[a];
+    snprintf(buf, sizeof(buf), "%s %g: s %.6g force %.9e %s z %.6e %.6e %.6e %.6e %.6e %.6e psi %.10e%s\n", hylcmat_path_name(path->kind), path->angle, (double)s[i], (double)F[i], path->kind == HYLCMAT_PATH_BENDING ? "N" : "N/m", (double)r.z[0], (double)r.z[1], (double)r.z[2],
+             (double)r.z[3], (double)r.z[4], (double)r.z[5], (double)psi[i], conv[i] ? "" : " NOT CONVERGED");
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s", buf));
+  }
+  PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
+  if (csv[0]) {
+    if (rank == 0) PetscCall(HylcWritePathCSV(csv, n, s, F, Z, psi, conv));
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "wrote %s\n", csv));
+  }
+  PetscCall(PetscFree4(F, Z, psi, conv));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* the work of hylc-eval on the material mat (created and destroyed by Run, also on an error) */
 static PetscErrorCode Eval(HylcMaterial mat)
 {
@@ -172,7 +203,12 @@ static PetscErrorCode Eval(HylcMaterial mat)
   char      udir[16] = "", ucsv[PETSC_MAX_PATH_LEN] = "";
   PetscBool hasUni, hasUStrains, hasUCsv;
   PetscReal ustrain[256] = {0.05, 0.1, 0.2};
-  PetscInt  nu = 256, udirn = 0;
+  PetscInt  nu = 256, udirn = 0, npv = 256;
+  char      pcsv[PETSC_MAX_PATH_LEN] = "";
+  PetscBool pathSet, hasPathValues;
+  PetscReal pvalues[256];
+  PetscEnum pkind = 0;
+  hylcmat_path path = {HYLCMAT_PATH_UNIAXIAL, 0};
 
   PetscFunctionBeginUser;
   PetscOptionsBegin(PETSC_COMM_WORLD, NULL, "hylc-eval options", "hylc-eval");
@@ -190,7 +226,15 @@ static PetscErrorCode Eval(HylcMaterial mat)
       "Uniaxial mode: the stretches s in [0, 1) (strain, 0 at rest; default 0.05,0.1,0.2; at most 256), in this order: the first from the lowest point of a grid of the lateral strains, each other from the lateral strains of the one before",
       "HylcMaterialUniaxial", ustrain, &nu, &hasUStrains));
   PetscCall(PetscOptionsString("-eval_uniaxial_csv", "Uniaxial mode: write strain,T_N_per_m,lateral_strain_sa,lateral_strain_s2 (T in N/m) to this CSV file", "HylcWriteUniaxialCSV", ucsv, ucsv, sizeof(ucsv), &hasUCsv));
+  PetscCall(PetscOptionsEnum("-eval_path", "Load path mode (docs/fabric-fidelity.md): uniaxial (stretch along -eval_path_angle, the other in-plane strains free), equibiaxial (sx = sy, sa free), shear (sa given, sx, sy free) or bending (II00, or II11 with -eval_path_angle 90, in-plane strains free)",
+                             "HylcMaterialPathState", HylcPathNames, pkind, &pkind, &pathSet));
+  PetscCall(HylcOptionsReal("-eval_path_angle", "Path mode: the uniaxial direction in degrees from the material x axis (0 strip along x, 90 along y, 45 bias), or the bending axis (0: II00, 90: II11)", "HylcMaterialPathState", path.angle, &path.angle, NULL));
+  PetscCall(HylcOptionsRealArray("-eval_path_values", "Path mode: the prescribed values (stretches in [0, 1), sa in (-0.99, 0.99), or curvatures in 1/m), in this order: the first from the lowest point of a grid of the free strains, each other from the one before (at most 256)", "HylcMaterialPathState", pvalues, &npv, &hasPathValues));
+  PetscCall(PetscOptionsString("-eval_path_csv", "Path mode: write value,force,sx,sa,sy,II00,II11,psi,converged (force in N/m, N for bending) to this CSV file", "HylcWritePathCSV", pcsv, pcsv, sizeof(pcsv), NULL));
   PetscOptionsEnd();
+  path.kind = (int)pkind;
+  PetscCheck(pathSet || (!hasPathValues && !pcsv[0]), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-eval_path_values and -eval_path_csv need -eval_path uniaxial|equibiaxial|shear|bending");
+  PetscCheck(!pathSet || (hasPathValues && npv > 0), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-eval_path %s needs -eval_path_values", HylcPathNames[path.kind]);
   if (!hasUStrains) nu = 3;
   PetscCheck(hasUni || (!hasUStrains && !hasUCsv), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-eval_uniaxial_strains and -eval_uniaxial_csv need -eval_uniaxial x|y");
   PetscCheck(!hasUStrains || nu > 0, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-eval_uniaxial_strains: needs at least one stretch");
@@ -220,8 +264,8 @@ static PetscErrorCode Eval(HylcMaterial mat)
   PetscCheck(hasIn == hasOut, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "Batch mode needs both -eval_input strains.txt|.h5 and -eval_output out.txt|.h5");
   PetscCheck(!hasIn || (bin[0] && bout[0]), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-eval_input and -eval_output need file names");
   PetscCheck(!(hasIn && hasStrain), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-strain and -eval_input exclude each other");
-  PetscCheck(hasStrain || hasJson || hasH5 || hasIn || hasUni, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT,
-             "Nothing to do: give -strain sx,sa,sy,II00,II01,II11 (or -eval_json / -eval_hdf5 to convert the material, -eval_uniaxial x|y for the uniaxial states)");
+  PetscCheck(hasStrain || hasJson || hasH5 || hasIn || hasUni || pathSet, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT,
+             "Nothing to do: give -strain sx,sa,sy,II00,II01,II11 (or -eval_json / -eval_hdf5 to convert the material, -eval_uniaxial x|y for the uniaxial states, -eval_path for a fabric test's states)");
   PetscCheck(!deriv || hasStrain || hasIn, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-derivatives needs -strain");
   if (hasStrain) PetscCall(ParseStrain(strain, s));
   /* every file before any work (include/hylc/files.h): the inputs readable, the outputs writable and
@@ -237,6 +281,7 @@ static PetscErrorCode Eval(HylcMaterial mat)
     if (!ierr && hasJson) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, json, "-eval_json");
     if (!ierr && hasH5) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, h5, "-eval_hdf5");
     if (!ierr && hasUCsv) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, ucsv, "-eval_uniaxial_csv");
+    if (!ierr && pcsv[0]) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, pcsv, "-eval_path_csv");
     if (!ierr) ierr = HylcFilesCheck(files);
     PetscCall(HylcFilesDestroy(&files));
     PetscCall(ierr);
@@ -261,6 +306,7 @@ static PetscErrorCode Eval(HylcMaterial mat)
   }
   if (hasIn) PetscCall(EvalBatch(mat, bin, bout, deriv));
   if (hasUni) PetscCall(EvalUniaxial(mat, udirn, nu, ustrain, ucsv));
+  if (pathSet) PetscCall(EvalPath(mat, &path, npv, pvalues, pcsv));
   if (hasJson) {
     PetscCall(HylcMaterialWriteJSON(mat, json));
     PetscCall(PetscPrintf(PETSC_COMM_WORLD, "wrote %s\n", json));

@@ -1,10 +1,13 @@
 static const char help[] = "hylc-solve: the equilibrium of a periodic yarn tile under one macroscopic strain.\n\n"
                            "  hylc-solve -options_file config/satin.yaml -strain 0.2,0,0,0,0,0\n"
                            "  hylc-solve -pattern_type stockinette -strain 0,0,0,100,0,0 -solve_vtk s.vtk\n\n"
-                           "  hylc-solve -options_file config/satin.yaml -solve_uniaxial x -solve_uniaxial_strains 0.05,0.1,0.2 -solve_uniaxial_csv satin-x.csv\n\n"
-                           "Prints psi (J/m^2), the energy parts, the status, the Newton iterations and the wall time.\n"
+                           "  hylc-solve -options_file config/satin.yaml -solve_uniaxial x -solve_uniaxial_strains 0.05,0.1,0.2 -solve_uniaxial_csv satin-x.csv\n"
+                           "  hylc-solve -options_file config/satin.yaml -solve_path uniaxial -solve_path_angle 45 -solve_path_values 0.02,0.05 -solve_path_csv bias.csv\n\n"
+                           "Prints psi (J/m^2), the energy parts, the status, the Newton iterations, the wall time and the stress dPsi/dz.\n"
                            "With -solve_uniaxial x|y: the homogeneous uniaxial tension state at each stretch (Psi minimized over the\n"
-                           "two free strains, docs/fabric-uniaxial.md), one line per stretch: T = dPsi/ds (N/m), the lateral strains.\n\n";
+                           "two free strains, docs/fabric-uniaxial.md), one line per stretch: T = dPsi/ds (N/m), the lateral strains.\n"
+                           "With -solve_path uniaxial|equibiaxial|shear|bending: the homogeneous state of that fabric test at each value\n"
+                           "(Psi minimized over the path's free strains; its force d(min Psi)/ds; docs/fabric-fidelity.md).\n\n";
 
 #include <hylc/options.h>
 #include <hylc/micro.h>
@@ -64,6 +67,52 @@ static PetscErrorCode SolveUniaxial(HylcMicro micro, HylcUniaxialDirection dir, 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* -solve_path: the states of a load path at the values s[0..n), in order, each continued from the one before (its
+   fluctuation, and its free strains extrapolated linearly) */
+static PetscErrorCode SolvePathMode(HylcMicro micro, const hylcmat_path *path, PetscInt n, const PetscReal s[], const char csv[])
+{
+  HylcPeriodic P;
+  const int    nf = hylcmat_path_nfree(path);
+  PetscInt     ny, nfail = 0;
+  PetscBool    haveU = PETSC_FALSE, *conv;
+  PetscReal   *u, *unext, *F, *Z, *psi, *pf, p0[3] = {0, 0, 0};
+
+  PetscFunctionBegin;
+  PetscCall(HylcMicroSetUp(micro));
+  PetscCall(HylcMicroGetPeriodic(micro, &P));
+  PetscCall(HylcPeriodicGetSizes(P, &ny, NULL, NULL, NULL));
+  PetscCall(PetscMalloc6(ny, &u, ny, &unext, n, &F, 6 * n, &Z, n, &psi, n, &conv));
+  PetscCall(PetscMalloc1(3 * n, &pf));
+  for (PetscInt i = 0; i < n; i++) {
+    HylcMicroPathResult r;
+    if (i >= 2 && s[i - 1] != s[i - 2] && conv[i - 1] && conv[i - 2]) { /* linear predictor of the free strains */
+      const PetscReal f = (s[i] - s[i - 1]) / (s[i - 1] - s[i - 2]);
+      for (int a = 0; a < nf; a++) p0[a] = pf[3 * (i - 1) + a] + f * (pf[3 * (i - 1) + a] - pf[3 * (i - 2) + a]);
+    }
+    PetscCall(HylcMicroSolvePath(micro, path, s[i], p0, haveU ? u : NULL, &r, unext));
+    PetscCall(HylcMicroPathResultView(&r, PETSC_VIEWER_STDOUT_SELF));
+    conv[i] = r.converged;
+    F[i]    = r.force;
+    psi[i]  = r.psi;
+    for (int k = 0; k < 6; k++) Z[6 * i + k] = r.z[k];
+    for (int a = 0; a < 3; a++) pf[3 * i + a] = r.p[a];
+    if (r.converged) { /* the next value continues from the last converged state */
+      for (int a = 0; a < 3; a++) p0[a] = r.p[a];
+      PetscCall(PetscArraycpy(u, unext, ny));
+      haveU = PETSC_TRUE;
+    } else
+      nfail++;
+  }
+  if (nfail) PetscCall(PetscPrintf(PETSC_COMM_SELF, "%" PetscInt_FMT " of %" PetscInt_FMT " %s states did not converge\n", nfail, n, hylcmat_path_name(path->kind)));
+  if (csv[0]) {
+    PetscCall(HylcWritePathCSV(csv, n, s, F, Z, psi, conv));
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, "wrote %s\n", csv));
+  }
+  PetscCall(PetscFree6(u, unext, F, Z, psi, conv));
+  PetscCall(PetscFree(pf));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* the work of hylc-solve on pat and micro (created and destroyed by Run, also on an error) */
 static PetscErrorCode Solve(HylcPattern pat, HylcMicro micro)
 {
@@ -71,10 +120,12 @@ static PetscErrorCode Solve(HylcPattern pat, HylcMicro micro)
   HylcMicroResult res;
   PetscReal       z[6] = {0, 0, 0, 0, 0, 0};
   PetscInt        nz = 6, tiles[2] = {3, 3}, nt = 2;
-  char            out[PETSC_MAX_PATH_LEN] = "", vtk[PETSC_MAX_PATH_LEN] = "", csv[PETSC_MAX_PATH_LEN] = "", udir[16] = "";
-  PetscBool       flg, uni, hasStrains, hasCsv;
-  PetscReal       ustrain[64] = {0.05, 0.1, 0.2};
-  PetscInt        nu          = 64;
+  char            out[PETSC_MAX_PATH_LEN] = "", vtk[PETSC_MAX_PATH_LEN] = "", csv[PETSC_MAX_PATH_LEN] = "", udir[16] = "", pcsv[PETSC_MAX_PATH_LEN] = "";
+  PetscBool       flg, uni, hasStrains, hasCsv, pathSet, hasPathValues;
+  PetscReal       ustrain[64] = {0.05, 0.1, 0.2}, pvalues[64];
+  PetscInt        nu = 64, npv = 64;
+  PetscEnum       pkind = 0;
+  hylcmat_path    path  = {HYLCMAT_PATH_UNIAXIAL, 0};
 
   PetscFunctionBeginUser;
   PetscCall(HylcPatternSetFromOptions(pat));
@@ -92,7 +143,16 @@ static PetscErrorCode Solve(HylcPattern pat, HylcMicro micro)
   PetscCall(HylcOptionsRealArray("-solve_uniaxial_strains", "Uniaxial mode: the stretches s in [0, 1) (strain, 0 at rest; default 0.05,0.1,0.2), solved in this order, each continued from the one before (at most 64)", "HylcMicroSolveUniaxial",
                                  ustrain, &nu, &hasStrains));
   PetscCall(PetscOptionsString("-solve_uniaxial_csv", "Uniaxial mode: write strain,T_N_per_m,lateral_strain_sa,lateral_strain_s2 (T in N/m) to this CSV file", "HylcWriteUniaxialCSV", csv, csv, sizeof(csv), &hasCsv));
+  PetscCall(PetscOptionsEnum("-solve_path", "Load path mode (docs/fabric-fidelity.md): uniaxial (stretch along -solve_path_angle, the other in-plane strains free), equibiaxial (sx = sy, sa free), shear (sa given, sx, sy free) or bending (II00, or II11 with -solve_path_angle 90, in-plane strains free)",
+                             "HylcMicroSolvePath", HylcPathNames, pkind, &pkind, &pathSet));
+  PetscCall(HylcOptionsReal("-solve_path_angle", "Path mode: the uniaxial direction in degrees from the material x axis (0 strip along x, 90 along y, 45 bias), or the bending axis (0: II00, 90: II11)", "HylcMicroSolvePath", path.angle, &path.angle, NULL));
+  PetscCall(HylcOptionsRealArray("-solve_path_values", "Path mode: the prescribed values (stretches in [0, 1), sa in (-0.95, 0.95), or curvatures in 1/m), solved in this order, each continued from the one before (at most 64)", "HylcMicroSolvePath", pvalues, &npv, &hasPathValues));
+  PetscCall(PetscOptionsString("-solve_path_csv", "Path mode: write value,force,sx,sa,sy,II00,II11,psi,converged (force in N/m, N for bending) to this CSV file", "HylcWritePathCSV", pcsv, pcsv, sizeof(pcsv), NULL));
   PetscOptionsEnd();
+  path.kind = (int)pkind;
+  PetscCheck(pathSet || (!hasPathValues && !pcsv[0]), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-solve_path_values and -solve_path_csv need -solve_path uniaxial|equibiaxial|shear|bending");
+  PetscCheck(!pathSet || hasPathValues, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-solve_path %s needs -solve_path_values", HylcPathNames[path.kind]);
+  PetscCheck(!pathSet || (!uni && !flg && !out[0] && !vtk[0]), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-solve_path cannot be combined with -solve_uniaxial, -strain, -solve_output or -solve_vtk");
   if (!hasStrains) nu = 3;
   PetscCheck(!hasStrains || nu > 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-solve_uniaxial_strains: needs at least one stretch");
   PetscCheck(uni || (!hasStrains && !hasCsv), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-solve_uniaxial_strains and -solve_uniaxial_csv need -solve_uniaxial x|y");
@@ -132,11 +192,17 @@ static PetscErrorCode Solve(HylcPattern pat, HylcMicro micro)
     if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, out, "-solve_output");
     if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, vtk, "-solve_vtk");
     if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, csv, "-solve_uniaxial_csv");
+    if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, pcsv, "-solve_path_csv");
     if (!ierr) ierr = HylcFilesCheck(files);
     PetscCall(HylcFilesDestroy(&files));
     PetscCall(ierr);
   }
   PetscCall(HylcPatternSetUp(pat));
+  if (pathSet) {
+    PetscCall(HylcMicroSetPattern(micro, pat, &model));
+    PetscCall(SolvePathMode(micro, &path, npv, pvalues, pcsv));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   if (uni) {
     PetscBool isx;
     PetscCall(PetscStrcmp(udir, "x", &isx));
@@ -152,6 +218,13 @@ static PetscErrorCode Solve(HylcPattern pat, HylcMicro micro)
   }
   PetscCall(HylcMicroSolve(micro, z, &res));
   PetscCall(HylcMicroResultView(&res, PETSC_VIEWER_STDOUT_SELF));
+  if (res.status == HYLC_MICRO_CONVERGED) { /* the stress of the equilibrium (envelope theorem) */
+    PetscReal g[6];
+    char      buf[256];
+    PetscCall(HylcMicroGetStrainGradient(micro, HYLC_STRAIN_ALL_BITS | HYLC_STRAIN_NO_POISSON, g));
+    snprintf(buf, sizeof(buf), "stress: %.10e %.10e %.10e %.10e %.10e %.10e (dPsi/dz: N/m for sx, sa, sy; N for II00, II01, II11; nan: needs a Poisson midsurface)\n", (double)g[0], (double)g[1], (double)g[2], (double)g[3], (double)g[4], (double)g[5]);
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, "%s", buf));
+  }
   if (out[0] || vtk[0]) {
     HylcPeriodic P;
     PetscCall(HylcMicroGetPeriodic(micro, &P));

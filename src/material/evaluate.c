@@ -68,3 +68,40 @@ PetscErrorCode HylcMaterialUniaxial(HylcMaterial m, PetscInt dir, PetscReal s, c
   if (psi) *psi = st.psi;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+/*@C
+  HylcMaterialPathState - The homogeneous state of the table on a load path (hylcmat_path_state(), include/hylcmat.h:
+  uniaxial tension at any angle, equibiaxial tension, shear, bending), the path's value s prescribed and Psi
+  minimized over its free strains. Not collective; no allocation.
+
+  Input Parameters:
++ m     - the material
+. path  - the load path
+. s     - the prescribed value (stretch, sa, or curvature in 1/m)
+- guess - the starting free strains (those of a nearby s along a loading path), or NULL for the lowest point of
+          a grid of them
+
+  Output Parameters:
++ res       - the state (the path's force d(min Psi)/ds, the free strains, the strain, Psi, the gradient)
+- converged - whether the minimization converged (may be NULL: then not converging is an error)
+
+  Notes:
+  A bad path or value is an error (PETSC_ERR_ARG_OUTOFRANGE) whose message names it.
+
+  Level: intermediate
+
+.seealso: HylcMaterialUniaxial(), HylcMicroSolvePath()
+@*/
+PetscErrorCode HylcMaterialPathState(HylcMaterial m, const hylcmat_path *path, PetscReal s, const PetscReal guess[], hylcmat_path_result *res, PetscBool *converged)
+{
+  char err[512];
+  int  r;
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(m, HYLC_MATERIAL_CLASSID, 1);
+  r = hylcmat_path_state(m->hm, path, (double)s, guess, res, err, sizeof(err));
+  if (converged) *converged = (PetscBool)(r == HYLCMAT_OK);
+  if (r == HYLCMAT_ERR_NOCONV && converged) r = HYLCMAT_OK;
+  PetscCheck(!r, PETSC_COMM_SELF, HylcMaterialErrorCode_Private(r), "%s", err[0] ? err : hylcmat_strerror(r));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -125,194 +125,6 @@ PetscErrorCode HylcMicroGetStrainGradientParts(HylcMicro M, int comps, PetscReal
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* a point of the lateral minimization: strain, Psi, gradient, and the local fluctuation of its equilibrium */
-typedef struct {
-  PetscReal  p[2], z[6], psi, g[6];
-  PetscReal *u;
-  PetscBool  ok; /* every solve of the point converged */
-} UniPoint;
-
-/* the free strains: p = (sa, sy) for x, (sa, sx) for y; lateral gradient and T */
-static void StrainOf(HylcUniaxialDirection dir, PetscReal s, const PetscReal p[2], PetscReal z[6])
-{
-  for (int k = 0; k < 6; k++) z[k] = 0;
-  z[1]                              = p[0];
-  z[dir == HYLC_UNIAXIAL_X ? 0 : 2] = s;
-  z[dir == HYLC_UNIAXIAL_X ? 2 : 0] = p[1];
-}
-static void LateralOf(HylcUniaxialDirection dir, const PetscReal g[3], PetscReal gl[2])
-{
-  gl[0] = g[1];
-  gl[1] = g[dir == HYLC_UNIAXIAL_X ? 2 : 0];
-}
-
-/* one solve at z, continued from u (NULL: cold), cold again if that does not converge; counted in res */
-static PetscErrorCode SolveAt(HylcMicro M, const PetscReal z[6], const PetscReal u[], HylcMicroUniaxialResult *res, HylcMicroResult *r)
-{
-  PetscFunctionBegin;
-  if (u) PetscCall(HylcMicroSetInitialFluctuation(M, u));
-  PetscCall(HylcMicroSolve(M, z, r));
-  res->solves++;
-  res->microIterations += r->iterations;
-  if (r->status != HYLC_MICRO_CONVERGED) {
-    res->failedSolves++;
-    if (u) {
-      PetscCall(PetscInfo(M, "uniaxial: the continued solve at (%g, %g, %g) ended %s: solved again cold\n", (double)z[0], (double)z[1], (double)z[2], HylcMicroStatuses[r->status]));
-      PetscCall(HylcMicroSolve(M, z, r));
-      res->solves++;
-      res->microIterations += r->iterations;
-      if (r->status != HYLC_MICRO_CONVERGED) res->failedSolves++;
-    }
-  }
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* Psi and its gradient at the lateral strains pt->p, from the fluctuation u (NULL: cold); pt->u gets the
-   fluctuation of the equilibrium. A strain the tile cannot take (|sa| >= 0.95, a stretch factor <= 0.05)
-   is a failed point (psi = +inf), as is a solve that does not converge. */
-static PetscErrorCode Evaluate(HylcMicro M, HylcUniaxialDirection dir, PetscReal s, const PetscReal u[], UniPoint *pt, HylcMicroUniaxialResult *res)
-{
-  HylcMicroResult r;
-
-  PetscFunctionBegin;
-  StrainOf(dir, s, pt->p, pt->z);
-  pt->ok  = PETSC_FALSE;
-  pt->psi = PETSC_INFINITY;
-  for (int j = 0; j < 3; j++) pt->g[j] = 0;
-  if (!(PetscAbsReal(pt->p[0]) < 0.95 && pt->p[1] > -0.95)) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(SolveAt(M, pt->z, u, res, &r));
-  pt->psi = r.psi;
-  pt->ok  = (PetscBool)(r.status == HYLC_MICRO_CONVERGED);
-  if (r.status == HYLC_MICRO_NONFINITE)
-    PetscCall(PetscArrayzero(pt->u, M->ny)); /* no state to continue from: cold */
-  else {
-    PetscCall(HylcMicroGetState(M, M->yw));
-    PetscCall(HylcMicroGetFluctuation(M, M->yw, pt->u));
-  }
-  if (!pt->ok) PetscFunctionReturn(PETSC_SUCCESS);
-  if (M->par.uniGrad == HYLC_MICRO_UNIAXIAL_ENVELOPE)
-    PetscCall(HylcMicroGetStrainGradient(M, HYLC_STRAIN_PLANE_BITS, pt->g));
-  else {
-    const PetscReal h = M->par.uniH;
-    for (int j = 0; j < 3 && pt->ok; j++) {
-      PetscReal psi[2];
-      for (int sgn = 0; sgn < 2; sgn++) {
-        PetscReal zz[6];
-        for (int k = 0; k < 6; k++) zz[k] = pt->z[k];
-        zz[j] += sgn ? -h : h;
-        PetscCall(SolveAt(M, zz, pt->u, res, &r));
-        psi[sgn] = r.psi;
-        if (r.status != HYLC_MICRO_CONVERGED) pt->ok = PETSC_FALSE;
-      }
-      pt->g[j] = (psi[0] - psi[1]) / (2 * h);
-    }
-  }
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-static void CopyPoint(PetscInt ny, const UniPoint *a, UniPoint *b)
-{
-  for (int i = 0; i < 2; i++) b->p[i] = a->p[i];
-  for (int i = 0; i < 6; i++) b->z[i] = a->z[i];
-  for (int i = 0; i < 3; i++) b->g[i] = a->g[i];
-  b->psi = a->psi;
-  b->ok  = a->ok;
-  for (PetscInt i = 0; i < ny; i++) b->u[i] = a->u[i];
-}
-
-/* the work of HylcMicroSolveUniaxial() */
-static PetscErrorCode SolveUniaxial(HylcMicro M, HylcUniaxialDirection dir, PetscReal s, const PetscReal lat0[2], const PetscReal u0[], HylcMicroUniaxialResult *res, PetscReal u[])
-{
-  const HylcMicroParams *par = &M->par;
-  UniPoint               cur, trial, pert;
-  PetscReal              H[4], gl[2], d[2];
-  PetscBool              haveH = PETSC_FALSE;
-  PetscLogDouble         t0, t1;
-
-  PetscFunctionBegin;
-  PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
-  PetscValidPointer(res, 6);
-  PetscCheck(dir == HYLC_UNIAXIAL_X || dir == HYLC_UNIAXIAL_Y, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "Uniaxial direction %d: must be x (0) or y (1)", (int)dir);
-  PetscCheck(s >= 0 && s < 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "Uniaxial stretch %g is outside [0, 1): a uniaxial state is a tension test (a compressed strip buckles) within the sampled stretches", (double)s);
-  PetscCheck(!lat0 || (!PetscIsInfOrNanReal(lat0[0]) && !PetscIsInfOrNanReal(lat0[1]) && PetscAbsReal(lat0[0]) < 0.95 && lat0[1] > -0.95 && lat0[1] < 1e3), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
-             "Uniaxial starting lateral strains (%g, %g): need |sa| < 0.95 and a stretch in (-0.95, 1e3)", lat0 ? (double)lat0[0] : 0.0, lat0 ? (double)lat0[1] : 0.0);
-  PetscCall(PetscTime(&t0));
-  PetscCall(HylcMicroSetUp(M));
-  PetscCall(PetscMemzero(res, sizeof(*res)));
-  res->dir = dir;
-  res->s   = s;
-  PetscCall(PetscMalloc3(M->ny, &cur.u, M->ny, &trial.u, M->ny, &pert.u));
-  cur.p[0] = lat0 ? lat0[0] : 0;
-  cur.p[1] = lat0 ? lat0[1] : 0;
-  PetscCall(Evaluate(M, dir, s, u0, &cur, res));
-  res->step = PETSC_INFINITY;
-  for (PetscInt it = 0; cur.ok; it++) {
-    LateralOf(dir, cur.g, gl);
-    if (haveH) { /* the step predicted with the last Hessian: done when it is small */
-      HylcNewtonStep2(H, gl, 1e-3, d);
-      res->step = PetscMax(PetscAbsReal(d[0]), PetscAbsReal(d[1]));
-      if (res->step <= par->uniXtol) {
-        res->converged = PETSC_TRUE;
-        break;
-      }
-    }
-    if (it >= par->uniMaxIt) break;
-    /* the lateral Hessian by forward differences of the lateral gradient, continued from the point */
-    for (int a = 0; a < 2 && cur.ok; a++) {
-      PetscReal gp[2];
-      pert.p[0] = cur.p[0];
-      pert.p[1] = cur.p[1];
-      pert.p[a] += par->uniH;
-      PetscCall(Evaluate(M, dir, s, cur.u, &pert, res));
-      if (!pert.ok) break;
-      LateralOf(dir, pert.g, gp);
-      H[a]     = (gp[0] - gl[0]) / par->uniH;
-      H[2 + a] = (gp[1] - gl[1]) / par->uniH;
-    }
-    if (!pert.ok) break;
-    H[1] = H[2] = 0.5 * (H[1] + H[2]);
-    haveH       = PETSC_TRUE;
-    HylcNewtonStep2(H, gl, 1e-3, d);
-    res->step = PetscMax(PetscAbsReal(d[0]), PetscAbsReal(d[1]));
-    if (res->step <= par->uniXtol) {
-      res->converged = PETSC_TRUE;
-      break;
-    }
-    if (res->step > par->uniMaxStep) {
-      d[0] *= par->uniMaxStep / res->step;
-      d[1] *= par->uniMaxStep / res->step;
-    }
-    /* backtracking on Psi */
-    PetscBool       accepted = PETSC_FALSE;
-    const PetscReal slope    = gl[0] * d[0] + gl[1] * d[1];
-    for (PetscReal t = 1; t > 1e-3 && !accepted; t *= 0.25) {
-      trial.p[0] = cur.p[0] + t * d[0];
-      trial.p[1] = cur.p[1] + t * d[1];
-      PetscCall(Evaluate(M, dir, s, cur.u, &trial, res));
-      accepted = (PetscBool)(trial.ok && trial.psi <= cur.psi + 1e-4 * t * PetscMin(slope, 0));
-    }
-    if (!accepted) { /* no decrease: Psi at its noise level? */
-      const PetscReal T = PetscAbsReal(cur.g[dir == HYLC_UNIAXIAL_X ? 0 : 2]);
-      if (PetscMax(PetscAbsReal(gl[0]), PetscAbsReal(gl[1])) <= par->uniGtol * T) res->converged = res->gradientStop = PETSC_TRUE;
-      break;
-    }
-    CopyPoint(M->ny, &trial, &cur);
-    res->iterations++;
-  }
-  for (int k = 0; k < 6; k++) res->z[k] = cur.z[k];
-  res->lateral[0] = cur.p[0];
-  res->lateral[1] = cur.p[1];
-  res->psi        = cur.psi;
-  for (int j = 0; j < 3; j++) res->grad[j] = cur.g[j];
-  res->T = cur.g[dir == HYLC_UNIAXIAL_X ? 0 : 2];
-  if (!cur.ok) res->converged = PETSC_FALSE;
-  if (u) PetscCall(PetscArraycpy(u, cur.u, M->ny));
-  PetscCall(PetscFree3(cur.u, trial.u, pert.u));
-  PetscCall(PetscTime(&t1));
-  res->time = t1 - t0;
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 /*@C
   HylcMicroSolveUniaxial - The homogeneous uniaxial tension state of the tile: the stretch s prescribed along
   the material x axis (sx = s) or y axis (sy = s), bending zero, and Psi minimized over the two free strains
@@ -333,8 +145,8 @@ static PetscErrorCode SolveUniaxial(HylcMicro M, HylcUniaxialDirection dir, Pets
 - u   - the local fluctuation of the state returned (the tile's size; may be NULL), to continue from
 
   Notes:
-  Each Psi is a microscale equilibrium (HylcMicroSolve(), continued from the last accepted point, cold again
-  if that does not converge). The minimization is a Newton method in the two lateral strains p: the
+  HylcMicroSolvePath() on the uniaxial path along x or y. Each Psi is a microscale equilibrium (HylcMicroSolve(),
+  continued from the last accepted point, cold again if that does not converge). The minimization is a Newton method in the two lateral strains p: the
   gradient by HylcMicroGetStrainGradient() (or central differences, HylcMicroSetUniaxial()), the Hessian by
   forward differences of the lateral gradient (two more solves per step, continued from the point), made
   positive definite, steps of at most maxStep per strain and a backtracking line search on Psi (Armijo,
@@ -351,16 +163,34 @@ static PetscErrorCode SolveUniaxial(HylcMicro M, HylcUniaxialDirection dir, Pets
 @*/
 PetscErrorCode HylcMicroSolveUniaxial(HylcMicro M, HylcUniaxialDirection dir, PetscReal s, const PetscReal lat0[2], const PetscReal u0[], HylcMicroUniaxialResult *res, PetscReal u[])
 {
-  PetscReal      rtol;
-  PetscErrorCode ierr;
+  hylcmat_path        path = {HYLCMAT_PATH_UNIAXIAL, dir == HYLC_UNIAXIAL_Y ? 90 : 0};
+  HylcMicroPathResult r;
 
   PetscFunctionBegin;
   PetscValidHeaderSpecific(M, HYLC_MICRO_CLASSID, 1);
-  rtol        = M->par.rtol;
-  M->par.rtol = M->par.uniRtol;
-  ierr        = SolveUniaxial(M, dir, s, lat0, u0, res, u);
-  M->par.rtol = rtol; /* restored on an error too */
-  PetscCall(ierr);
+  PetscValidPointer(res, 6);
+  PetscCheck(dir == HYLC_UNIAXIAL_X || dir == HYLC_UNIAXIAL_Y, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "Uniaxial direction %d: must be x (0) or y (1)", (int)dir);
+  PetscCheck(s >= 0 && s < 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "Uniaxial stretch %g is outside [0, 1): a uniaxial state is a tension test (a compressed strip buckles) within the sampled stretches", (double)s);
+  PetscCheck(!lat0 || (!PetscIsInfOrNanReal(lat0[0]) && !PetscIsInfOrNanReal(lat0[1]) && PetscAbsReal(lat0[0]) < 0.95 && lat0[1] > -0.95 && lat0[1] < 1e3), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+             "Uniaxial starting lateral strains (%g, %g): need |sa| < 0.95 and a stretch in (-0.95, 1e3)", lat0 ? (double)lat0[0] : 0.0, lat0 ? (double)lat0[1] : 0.0);
+  PetscCall(HylcMicroSolvePath(M, &path, s, lat0, u0, &r, u));
+  PetscCall(PetscMemzero(res, sizeof(*res)));
+  res->dir = dir;
+  res->s   = s;
+  for (int k = 0; k < 6; k++) res->z[k] = r.z[k];
+  for (int j = 0; j < 3; j++) res->grad[j] = r.grad[j];
+  res->lateral[0]      = r.p[0];
+  res->lateral[1]      = r.p[1];
+  res->psi             = r.psi;
+  res->T               = r.force;
+  res->step            = r.step;
+  res->converged       = r.converged;
+  res->gradientStop    = r.gradientStop;
+  res->iterations      = r.iterations;
+  res->solves          = r.solves;
+  res->microIterations = r.microIterations;
+  res->failedSolves    = r.failedSolves;
+  res->time            = r.time;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -378,11 +208,10 @@ PetscErrorCode HylcMicroSolveUniaxial(HylcMicro M, HylcUniaxialDirection dir, Pe
 @*/
 PetscErrorCode HylcMicroUniaxialResultView(const HylcMicroUniaxialResult *r, PetscViewer viewer)
 {
-  char      buf[512];
-  PetscReal gl[2];
+  char            buf[512];
+  const PetscReal gl[2] = {r->grad[1], r->grad[r->dir == HYLC_UNIAXIAL_X ? 2 : 0]};
 
   PetscFunctionBegin;
-  LateralOf(r->dir, r->grad, gl);
   /* C formatting: PETSc's printf appends '.' to integral %g values */
   snprintf(buf, sizeof(buf), "uniaxial %s: s %.6g T %.9e N/m sa %.6e %s %.6e psi %.10e lateral gradient %.2e %.2e N/m step %.1e %s; %d Newton steps, %d solves (%d not converged), %d micro iterations, %.2f s\n", HylcUniaxialDirections[r->dir],
            (double)r->s, (double)r->T, (double)r->lateral[0], r->dir == HYLC_UNIAXIAL_X ? "sy" : "sx", (double)r->lateral[1], (double)r->psi, (double)gl[0], (double)gl[1], (double)r->step,

@@ -270,9 +270,8 @@ PetscErrorCode HylcReferenceStateCompute(HylcPattern in, const HylcYarnModel *mo
 
 /*@C
   HylcReferenceStateNeeded - Whether a job's reference mode computes a reference state for this pattern:
-  compute and relax always, none never, auto for a generated pattern and for a file unless it is a
-  reference state (its record says reference, or it has no record, as the paper's files:
-  HylcPatternGetState()). Not collective.
+  compute, relax and auto always (auto: Algorithm C1 for a generated pattern or a file that is not a reference
+  state, relax for a stored reference state, HylcReferenceStateForMode()), none never. Not collective.
 
   Input Parameters:
 + in   - the pattern, set up
@@ -295,16 +294,20 @@ PetscErrorCode HylcReferenceStateNeeded(HylcPattern in, HylcReferenceMode mode, 
   PetscCall(HylcPatternGetState(in, &state));
   PetscCall(HylcPatternGetType(in, &type));
   PetscCall(PetscStrcmp(type, HYLCPATTERNFILE, &isfile));
-  *needed = (PetscBool)(mode == HYLC_REFERENCE_COMPUTE || mode == HYLC_REFERENCE_RELAX || (mode == HYLC_REFERENCE_AUTO && (!isfile || (state != HYLC_PATTERN_STATE_REFERENCE && state != HYLC_PATTERN_STATE_UNRECORDED))));
+  (void)state;
+  (void)isfile;
+  *needed = (PetscBool)(mode != HYLC_REFERENCE_NONE);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /*@C
   HylcReferenceStateForMode - The reference state a job's -sampler_reference or -calibrate_reference mode
-  asks for: compute (Algorithm C1), auto (C1 unless the pattern is a reference state: a file that records
-  one, or records nothing, as the paper's files, HylcReferenceStateNeeded()), none, or relax (the pattern's rest data kept, no tension: only the
-  in-plane minimum over the periods and the recentring, so that the stored tile under the configured yarn
-  becomes a minimum of the model). *out is NULL when the mode asks for none.
+  asks for: compute (Algorithm C1), relax (the pattern's rest data kept, no tension: only the in-plane minimum
+  over the periods and the recentring, so that the stored tile under the configured yarn becomes a minimum of
+  the model: at rest at z = 0, dPsi/dsx = dPsi/dsy = 0), auto (relax for a pattern file that is a reference
+  state, one that records it or records nothing, as the paper's files; C1 for a generated pattern and any
+  other file), or none (the pattern as given: the paper's procedure, which samples its stored tiles as they
+  are, not at rest under the configured yarn). *out is NULL when the mode asks for none.
 
   Collective
 
@@ -333,17 +336,15 @@ PetscErrorCode HylcReferenceStateForMode(HylcPattern in, HylcReferenceMode mode,
   PetscCall(HylcPatternGetType(in, &type));
   PetscCall(PetscStrcmp(type, HYLCPATTERNFILE, &isfile));
   PetscCall(HylcReferenceStateNeeded(in, mode, &needed));
-  if (v) { /* which it does, and why */
+  {
     HylcPatternState state;
     PetscCall(HylcPatternGetState(in, &state));
-    if (mode == HYLC_REFERENCE_NONE) { /* asked for: nothing to say */
-    } else if (!needed && state == HYLC_PATTERN_STATE_REFERENCE)
-      PetscCall(PetscViewerASCIIPrintf(v, "[reference] the pattern file records a reference state: used as given\n"));
-    else if (!needed)
-      PetscCall(PetscViewerASCIIPrintf(v, "[reference] the pattern file does not record its state (as the paper's): taken as its own reference state\n"));
-    else if (mode == HYLC_REFERENCE_AUTO && isfile)
+    if (mode == HYLC_REFERENCE_AUTO && isfile && (state == HYLC_PATTERN_STATE_REFERENCE || state == HYLC_PATTERN_STATE_UNRECORDED)) {
+      if (v) PetscCall(PetscViewerASCIIPrintf(v, "[reference] the pattern file is a stored reference state (%s): relaxed to the in-plane minimum under the configured yarn (auto; -sampler_reference none keeps it as given, the paper's procedure)\n", state == HYLC_PATTERN_STATE_REFERENCE ? "its record says so" : "it records nothing, as the paper's files"));
+      mode = HYLC_REFERENCE_RELAX;
+    } else if (v && mode == HYLC_REFERENCE_AUTO && isfile)
       PetscCall(PetscViewerASCIIPrintf(v, "[reference] the pattern file is not a reference state (%s): computing it (Algorithm C1)\n", HylcPatternStates[state]));
-    else if (mode == HYLC_REFERENCE_AUTO)
+    else if (v && mode == HYLC_REFERENCE_AUTO)
       PetscCall(PetscViewerASCIIPrintf(v, "[reference] a generated pattern: computing its reference state (Algorithm C1)\n"));
   }
   if (!needed) PetscFunctionReturn(PETSC_SUCCESS);

@@ -364,7 +364,7 @@ PetscErrorCode HylcSamplerSetFromOptions(HylcSampler S)
   PetscObjectOptionsBegin((PetscObject)S);
   PetscCall(PetscOptionsEnum(
       "-sampler_reference",
-      "Reference state (Algorithm C1): auto (compute for generated patterns, not for files), compute, none, or relax (only the in-plane minimum over the periods of the pattern as given: a stored tile made a minimum of the configured yarn)",
+      "Reference state: auto (Algorithm C1 for a generated pattern; relax for a stored reference state, a .pyp as the paper's: the tile at rest at z = 0), compute (C1), relax (only the in-plane minimum over the periods of the pattern as given: a stored tile made a minimum of the configured yarn) or none (the pattern as given: the paper's procedure, config/profile-paper.yaml)",
       "HylcSamplerSetReference", HylcReferenceModes, mode, &mode, NULL));
   PetscCall(PetscOptionsString("-reference_output", "Write the reference state as .pyp", "HylcSamplerSetReference", refout, refout, sizeof(refout), NULL));
   PetscCall(PetscOptionsString("-sampler_output", "HDF5 output file (the journal is <output>.journal)", "HylcSamplerSetOutput", output, output, sizeof(output), NULL));

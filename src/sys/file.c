@@ -203,3 +203,36 @@ PetscErrorCode HylcWriteUniaxialCSV(const char path[], PetscInt n, const PetscRe
   PetscCall(HylcFileCommitTemp(&fp, tmp, path));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+/*@C
+  HylcWritePathCSV - Writes the states of a load path as CSV (docs/fabric-fidelity.md): the header line
+  "value,force,sx,sa,sy,II00,II11,psi,converged" and one line per state, 17 significant digits: value the
+  prescribed quantity (a stretch, sa, or a curvature in 1/m), force d(min Psi)/ds (N/m; N for a bending path), the
+  state's strain (II in 1/m), Psi (J/m^2) and 1 or 0. Written atomically (HylcFileOpenTemp()). Not collective.
+
+  Input Parameters:
++ path  - the file
+. n     - the number of states
+. value - the prescribed values
+. force - the forces
+. z     - the strains (n x 6: sx, sa, sy, II00, II01, II11)
+. psi   - the energies
+- conv  - whether each state converged
+
+  Level: intermediate
+
+.seealso: HylcWriteUniaxialCSV(), HylcMicroSolvePath(), HylcMaterialPathState()
+@*/
+PetscErrorCode HylcWritePathCSV(const char path[], PetscInt n, const PetscReal value[], const PetscReal force[], const PetscReal z[], const PetscReal psi[], const PetscBool conv[])
+{
+  char  tmp[PETSC_MAX_PATH_LEN + 32];
+  FILE *fp;
+
+  PetscFunctionBegin;
+  PetscCall(HylcFileOpenTemp(path, tmp, sizeof(tmp), &fp));
+  fprintf(fp, "value,force,sx,sa,sy,II00,II11,psi,converged\n");
+  for (PetscInt i = 0; i < n; i++)
+    fprintf(fp, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d\n", (double)value[i], (double)force[i], (double)z[6 * i], (double)z[6 * i + 1], (double)z[6 * i + 2], (double)z[6 * i + 3], (double)z[6 * i + 5], (double)psi[i], conv[i] ? 1 : 0);
+  PetscCall(HylcFileCommitTemp(&fp, tmp, path));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -1,6 +1,7 @@
 /* The vocabulary of strains and terms (include/hylc/strain.h): the only definition of their names, indices
    and pairs. Plain C99; compiled into libhylc and libhylcmat. */
 #include <hylc/strain.h>
+#include <stddef.h>
 
 const char *const HylcStrainNames[HYLC_NSTRAIN + 1] = {HYLC_NAME_SX, HYLC_NAME_SA, HYLC_NAME_SY, HYLC_NAME_II00, HYLC_NAME_II01, HYLC_NAME_II11, HYLC_NAME_PSI};
 
@@ -19,3 +20,6 @@ int HylcPairIndex(int k0, int k1)
     if (HylcPairCoords[q][0] == k0 && HylcPairCoords[q][1] == k1) return q;
   return -1;
 }
+
+/* the load paths of include/hylcmat.h, with the two trailing entries of PETSc's enum lists */
+const char *const HylcPathNames[7] = {"uniaxial", "equibiaxial", "shear", "bending", "HylcPath", "HYLCMAT_PATH_", NULL};

@@ -50,3 +50,49 @@ static inline void HylcNewtonStep2(const double H[4], const double g[2], double 
   if (!(l2 > 0)) l2 = l1;
   HylcEigSolve2(l1, l2, v1, v2, g, d);
 }
+
+/* d = -H^-1 g for a symmetric n x n H (n <= 3, row-major) made positive definite first, as HylcNewtonStep2():
+   eigenvalues (Jacobi rotations) below relFloor times the largest magnitude raised to it; H = 0 gives a
+   gradient step */
+static inline void HylcNewtonStepN(int n, const double H[9], const double g[3], double relFloor, double d[3])
+{
+  double A[9], V[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0}, lmax = 0;
+  for (int i = 0; i < n * n; i++) A[i] = H[i];
+  for (int i = 0; i < n; i++) V[n * i + i] = 1;
+  for (int sweep = 0; sweep < 30; sweep++) {
+    double off = 0, diag = 0;
+    for (int i = 0; i < n; i++) {
+      diag += A[n * i + i] * A[n * i + i];
+      for (int j = i + 1; j < n; j++) off += A[n * i + j] * A[n * i + j];
+    }
+    if (off <= 1e-30 * diag) break;
+    for (int i = 0; i < n; i++)
+      for (int j = i + 1; j < n; j++) {
+        if (A[n * i + j] == 0) continue;
+        const double th = 0.5 * atan2(2 * A[n * i + j], A[n * j + j] - A[n * i + i]), c = cos(th), s = sin(th);
+        for (int k = 0; k < n; k++) { /* A <- A G */
+          const double aki = A[n * k + i], akj = A[n * k + j];
+          A[n * k + i] = c * aki - s * akj;
+          A[n * k + j] = s * aki + c * akj;
+        }
+        for (int k = 0; k < n; k++) { /* A <- G^T A */
+          const double aik = A[n * i + k], ajk = A[n * j + k];
+          A[n * i + k] = c * aik - s * ajk;
+          A[n * j + k] = s * aik + c * ajk;
+        }
+        for (int k = 0; k < n; k++) { /* V <- V G */
+          const double vki = V[n * k + i], vkj = V[n * k + j];
+          V[n * k + i] = c * vki - s * vkj;
+          V[n * k + j] = s * vki + c * vkj;
+        }
+      }
+  }
+  for (int i = 0; i < n; i++) lmax = fmax(lmax, fabs(A[n * i + i]));
+  for (int i = 0; i < n; i++) d[i] = 0;
+  for (int e = 0; e < n; e++) {
+    double l  = fmax(A[n * e + e], relFloor * lmax), ge = 0;
+    if (!(l > 0)) l = lmax > 0 ? lmax : 1;
+    for (int k = 0; k < n; k++) ge += V[n * k + e] * g[k];
+    for (int k = 0; k < n; k++) d[k] -= ge / l * V[n * k + e];
+  }
+}
