@@ -50,6 +50,8 @@ enum {
 
 #define HYLCMAT_N1D 5 /* 1D terms k = 0 sx, 1 sa, 2 sy, 3 x-bending (II00), 4 y-bending (II11) */
 #define HYLCMAT_N2D 9 /* 2D terms (k0, k1): (0,1) (0,2) (0,3) (0,4) (1,2) (1,3) (1,4) (2,3) (2,4) */
+#define HYLCMAT_N3D 3 /* 3D terms (k0, k1, k2): (0,1,2) (0,2,3) (0,2,4): hylc's extension of the paper's model,
+                         not in the ARCSim-HYLC JSON (docs/material.md, "Three-strain terms") */
 
 /* extrapolation modes (the JSON key "ext") */
 enum { HYLCMAT_EXT_LINEAR = 0, HYLCMAT_EXT_CONSTANT = 1, HYLCMAT_EXT_ZERO = 2 };
@@ -68,6 +70,14 @@ typedef struct {
   int           k0, k1, nu, nv, ext;
   const double *tu, *tv, *p, *mu, *mv, *muv;
 } hylcmat_term2d;
+
+/* A 3D term f_k0k1k2(u, v, w) (hylc's extension): knots tu (nu), tv (nv), tw (nw); node (iu, iv, iw) at
+   (iw*nv + iv)*nu + iu of p and its derivatives mu, mv, mw, muv, muw, mvw, muvw (tricubic Hermite). A bending
+   coordinate (k2 = 3, 4) enters through the eigen-split of II as in the 2D terms. */
+typedef struct {
+  int           k0, k1, k2, nu, nv, nw, ext;
+  const double *tu, *tv, *tw, *p, *mu, *mv, *mw, *muv, *muw, *mvw, *muvw;
+} hylcmat_term3d;
 
 /* ---- reading ---------------------------------------------------------------------------------- */
 /* Reads a JSON or (when built with HDF5) HDF5 material, recognized by content. *m is a new table, NULL
@@ -105,6 +115,7 @@ int  hylcmat_set_constant(hylcmat *m, double c0, char *err, size_t errlen);
 void hylcmat_set_strain_shift(hylcmat *m, const int shift[5]);
 int  hylcmat_set_term1d(hylcmat *m, const hylcmat_term1d *t, char *err, size_t errlen);
 int  hylcmat_set_term2d(hylcmat *m, const hylcmat_term2d *t, char *err, size_t errlen);
+int  hylcmat_set_term3d(hylcmat *m, const hylcmat_term3d *t, char *err, size_t errlen);
 
 double hylcmat_density(const hylcmat *m);  /* area density rho_A, kg/m^2 */
 double hylcmat_constant(const hylcmat *m); /* C0, J/m^2 */
@@ -113,6 +124,7 @@ void   hylcmat_strain_shift(const hylcmat *m, int shift[5]);
 /* 1 and *t filled (pointers owned by the table, valid until it changes) if the term is present, else 0 */
 int hylcmat_term1d_get(const hylcmat *m, int k, hylcmat_term1d *t);
 int hylcmat_term2d_get(const hylcmat *m, int k0, int k1, hylcmat_term2d *t);
+int hylcmat_term3d_get(const hylcmat *m, int k0, int k1, int k2, hylcmat_term3d *t);
 
 /* ---- the shell element (Algorithm C8) -------------------------------------------------------------
    A triangle and the vertices across its edges, 6 vertices, 18 coordinates x (m, vertex i at 3i..3i+2):
@@ -288,6 +300,9 @@ int hylcmat_pair_index(int k0, int k1);
 /* "sx" "sa" "sy" "II00" "II11" (k = 0..4); "sx-sa" ... "sy-II11" (q = 0..8); NULL out of range */
 const char *hylcmat_term1d_name(int k);
 const char *hylcmat_term2d_name(int q);
+/* (k0, k1, k2) of 3D term r (0..2); "sx-sa-sy" "sx-sy-II00" "sx-sy-II11"; NULL out of range */
+void        hylcmat_triple(int r, int *k0, int *k1, int *k2);
+const char *hylcmat_term3d_name(int r);
 /* a short description of an error code */
 const char *hylcmat_strerror(int code);
 /* Python's repr() of a double (shortest round-trip digits: "1e-05", "200.0", "-0.0"), what the JSON

@@ -17,6 +17,7 @@
 #define HYLC_NSTRAIN           6  /* components of z */
 #define HYLC_NCOORD            5  /* coordinates = 1D terms */
 #define HYLC_NPAIR             9  /* pairs = 2D terms */
+#define HYLC_NTRIPLE           3  /* triples = 3D terms, hylc's extension of the paper's model: (sx,sa,sy) (sx,sy,II00) (sx,sy,II11) */
 #define HYLC_STRAIN_ALL_BITS   63 /* bit s set for every strain component s (component masks) */
 #define HYLC_STRAIN_PLANE_BITS 7  /* sx, sa, sy */
 #define HYLC_STRAIN_NO_POISSON 64 /* with a component mask: leave NaN a component whose derivative needs a doubly curved (Poisson) midsurface at a flat or singly curved strain */
@@ -47,6 +48,11 @@ extern const char *const HylcPairNames[HYLC_NPAIR];
 extern const char *const HylcPathNames[7];
 /* index of the pair (k0, k1) (k0 < k1), or -1 */
 int HylcPairIndex(int k0, int k1);
+/* the triples = the 3D terms (hylc's extension): their coordinates (k0 < k1 < k2) and names ("sx-sa-sy", ...) */
+extern const int         HylcTripleCoords[HYLC_NTRIPLE][3];
+extern const char *const HylcTripleNames[HYLC_NTRIPLE];
+/* index of the triple (k0, k1, k2), or -1 */
+int HylcTripleIndex(int k0, int k1, int k2);
 #ifdef __cplusplus
 }
 #endif

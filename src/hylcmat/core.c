@@ -131,11 +131,26 @@ static void Free2D(hylcmat *m, int q)
   UShare(m);
 }
 
+/* the arrays of a 3D term, in the order of hylcmat_term3d */
+#define T3ARRAYS(t) {&(t)->tu, &(t)->tv, &(t)->tw, &(t)->p, &(t)->mu, &(t)->mv, &(t)->mw, &(t)->muv, &(t)->muw, &(t)->mvw, &(t)->muvw}
+
+static void Free3D(hylcmat *m, int r)
+{
+  if (m->has3[r]) {
+    const double **a[11] = T3ARRAYS(&m->t3[r]);
+    for (int i = 0; i < 11; i++) free((void *)*a[i]);
+  }
+  memset(&m->t3[r], 0, sizeof(m->t3[r]));
+  m->has3[r] = 0;
+  m->sw3[r]  = 0;
+}
+
 void hylcmat_reset(hylcmat *m)
 {
   if (!m) return;
   for (int k = 0; k < HYLCMAT_N1D; k++) Free1D(m, k);
   for (int q = 0; q < HYLCMAT_N2D; q++) Free2D(m, q);
+  for (int r = 0; r < HYLCMAT_N3D; r++) Free3D(m, r);
   m->density = 0;
   m->C0      = 0;
   for (int k = 0; k < 5; k++) {
@@ -366,6 +381,68 @@ int hylcmat_set_term2d(hylcmat *m, const hylcmat_term2d *s, char *err, size_t er
   return HYLCMAT_OK;
 }
 
+int hylcmat_term3d_get(const hylcmat *m, int k0, int k1, int k2, hylcmat_term3d *t)
+{
+  const int r = HylcTripleIndex(k0, k1, k2);
+  if (!m || !t || r < 0 || !m->has3[r]) return 0;
+  *t = m->t3[r];
+  return 1;
+}
+
+void hylcmat_triple(int r, int *k0, int *k1, int *k2)
+{
+  const int ok = r >= 0 && r < HYLCMAT_N3D;
+  if (k0) *k0 = ok ? HylcTripleCoords[r][0] : -1;
+  if (k1) *k1 = ok ? HylcTripleCoords[r][1] : -1;
+  if (k2) *k2 = ok ? HylcTripleCoords[r][2] : -1;
+}
+
+const char *hylcmat_term3d_name(int r) { return r >= 0 && r < HYLCMAT_N3D ? HylcTripleNames[r] : NULL; }
+
+int hylcmat_set_term3d(hylcmat *m, const hylcmat_term3d *s, char *err, size_t errlen)
+{
+  hm_err        E = {err, errlen};
+  char          what[64];
+  int           r;
+  size_t        N;
+  double       *a[11];
+  const double *src[11];
+  static const char *const names[11] = {"tu", "tv", "tw", "p", "mu", "mv", "mw", "muv", "muw", "mvw", "muvw"};
+
+  HM_CHECK(m && s, &E, HYLCMAT_ERR_ARG, "hylcmat_set_term3d: NULL argument");
+  r = HylcTripleIndex(s->k0, s->k1, s->k2);
+  HM_CHECK(r >= 0, &E, HYLCMAT_ERR_FORMAT, "3D term: (k0, k1, k2) = (%d, %d, %d) is not a term of the model; the triples are (0,1,2) (0,2,3) (0,2,4)", s->k0, s->k1, s->k2);
+  snprintf(what, sizeof(what), "3D term %s (k0 = %d, k1 = %d, k2 = %d)", HylcTripleNames[r], s->k0, s->k1, s->k2);
+  HM_CHECK(s->ext >= HYLCMAT_EXT_LINEAR && s->ext <= HYLCMAT_EXT_ZERO, &E, HYLCMAT_ERR_FORMAT, "%s: extrapolation mode %d is not 0 (linear), 1 (constant) or 2 (zero)", what, s->ext);
+  HM_CALL(CheckKnots(&E, what, "tu", s->nu, s->tu));
+  HM_CALL(CheckKnots(&E, what, "tv", s->nv, s->tv));
+  HM_CALL(CheckKnots(&E, what, "tw", s->nw, s->tw));
+  HM_CHECK((double)s->nu * s->nv * s->nw < 1e8, &E, HYLCMAT_ERR_FORMAT, "%s: %d x %d x %d nodes: too many", what, s->nu, s->nv, s->nw);
+  N       = (size_t)s->nu * (size_t)s->nv * (size_t)s->nw;
+  src[0]  = s->tu, src[1] = s->tv, src[2] = s->tw, src[3] = s->p, src[4] = s->mu, src[5] = s->mv, src[6] = s->mw;
+  src[7]  = s->muv, src[8] = s->muw, src[9] = s->mvw, src[10] = s->muvw;
+  for (int i = 3; i < 11; i++) HM_CALL(CheckFinite(&E, what, names[i], (int)N, src[i]));
+  for (int i = 0; i < 11; i++) a[i] = Copy(src[i], i == 0 ? (size_t)s->nu : i == 1 ? (size_t)s->nv : i == 2 ? (size_t)s->nw : N);
+  for (int i = 0; i < 11; i++)
+    if (!a[i]) {
+      for (int j = 0; j < 11; j++) free(a[j]);
+      return hm_fail(&E, HYLCMAT_ERR_MEMORY, "%s: out of memory", what);
+    }
+  Free3D(m, r);
+  {
+    hylcmat_term3d *t = &m->t3[r];
+    t->k0 = s->k0, t->k1 = s->k1, t->k2 = s->k2, t->nu = s->nu, t->nv = s->nv, t->nw = s->nw, t->ext = s->ext;
+    t->tu = a[0], t->tv = a[1], t->tw = a[2], t->p = a[3], t->mu = a[4], t->mv = a[5], t->mw = a[6];
+    t->muv = a[7], t->muw = a[8], t->mvw = a[9], t->muvw = a[10];
+  }
+  m->has3[r] = 1;
+  m->sw3[r]  = HalfMinSpacing(s->nw, s->tw);
+  m->ihu3[r] = (s->nu - 1) / (s->tu[s->nu - 1] - s->tu[0]);
+  m->ihv3[r] = (s->nv - 1) / (s->tv[s->nv - 1] - s->tv[0]);
+  m->ihw3[r] = (s->nw - 1) / (s->tw[s->nw - 1] - s->tw[0]);
+  return HYLCMAT_OK;
+}
+
 /* ------------------------------------------------------------------------------------------------ */
 /* Documents and files                                                                                */
 /* ------------------------------------------------------------------------------------------------ */
@@ -396,7 +473,11 @@ void hm_doc_free(hm_doc *d)
     free((void *)d->s2[i].mv);
     free((void *)d->s2[i].muv);
   }
-  d->n1 = d->n2 = 0;
+  for (int i = 0; i < d->n3; i++) {
+    const double **a[11] = T3ARRAYS(&d->s3[i]);
+    for (int j = 0; j < 11; j++) free((void *)*a[j]);
+  }
+  d->n1 = d->n2 = d->n3 = 0;
 }
 
 int hm_doc_install(hm_doc *d, hylcmat **out)
@@ -413,6 +494,7 @@ int hm_doc_install(hm_doc *d, hylcmat **out)
   if (!r) r = hylcmat_set_constant(m, d->C0, eb, el);
   for (int i = 0; i < d->n1 && !r; i++) r = hylcmat_set_term1d(m, &d->s1[i], eb, el);
   for (int i = 0; i < d->n2 && !r; i++) r = hylcmat_set_term2d(m, &d->s2[i], eb, el);
+  for (int i = 0; i < d->n3 && !r; i++) r = hylcmat_set_term3d(m, &d->s3[i], eb, el);
   hm_doc_free(d);
   if (r == HYLCMAT_ERR_MEMORY && m == NULL) hm_fail(E, r, "out of memory");
   if (r) {

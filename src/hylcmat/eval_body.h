@@ -334,6 +334,80 @@ static HM_ALWAYS_INLINE void F(Quot2D)(const hylcmat_term2d *sp, double sw, doub
   }
 }
 
+/* the derivative orders (ou, ov) of the restrictions of a 3D term along w, by total order: a level-nd evaluation
+   uses the first 1, 3 or 6 */
+static const int F(D3)[6][2] = {{0, 0}, {1, 0}, {0, 1}, {2, 0}, {1, 1}, {0, 2}};
+
+/* the node values P[o][.] and w-slopes M[o][.] of the restriction w -> d^(ou+ov) f(u, v, w)/du^ou dv^ov of a 3D
+   term ((ou, ov) = D3[o], total order <= nd) for the w-nodes j0..j1 (at most 3), from the u- and v-bases */
+static HM_ALWAYS_INLINE void F(SliceW3)(const hylcmat_term3d *sp, const F(Basis) * Bu, const F(Basis) * Bv, int j0, int j1, int nd, R P[6][3], R M[6][3])
+{
+  const int no = nd == 0 ? 1 : nd == 1 ? 3 : 6;
+  for (int j = j0; j <= j1; j++)
+    for (int o = 0; o < no; o++) {
+      const int ou = F(D3)[o][0], ov = F(D3)[o][1];
+      R         pv = 0, pw = 0;
+      for (int f = 0; f < 2; f++)
+        for (int e = 0; e < 2; e++) {
+          const int k  = (j * sp->nv + Bv->i + f) * sp->nu + Bu->i + e;
+          const R   au = Bu->a[ou][e], bu = Bu->b[ou][e], av = Bv->a[ov][f], bv = Bv->b[ov][f];
+          pv += au * av * sp->p[k] + bu * av * sp->mu[k] + au * bv * sp->mv[k] + bu * bv * sp->muv[k];
+          pw += au * av * sp->mw[k] + bu * av * sp->muw[k] + au * bv * sp->mvw[k] + bu * bv * sp->muvw[k];
+        }
+      P[o][j - j0] = pv;
+      M[o][j - j0] = pw;
+    }
+}
+
+/* f[o][r] = d^r/dw^r of the restriction o (F(D3)) of a 3D term at w, orders up to nd in total */
+static HM_ALWAYS_INLINE void F(Eval3DW)(const hylcmat_term3d *sp, const F(Basis) * Bu, const F(Basis) * Bv, double ihw, R w, int nd, R f[6][3])
+{
+  F(Basis)
+  Bw;
+  R         P[6][3], M[6][3];
+  const int no = nd == 0 ? 1 : nd == 1 ? 3 : 6;
+
+  F(BasisAt)
+  (sp->nw, sp->tw, ihw, sp->ext, w, nd, &Bw);
+  F(SliceW3)
+  (sp, Bu, Bv, Bw.i, Bw.i + 1, nd, P, M);
+  for (int o = 0; o < no; o++)
+    for (int r = 0; r <= nd - F(D3)[o][0] - F(D3)[o][1]; r++) f[o][r] = Bw.a[r][0] * P[o][0] + Bw.a[r][1] * P[o][1] + Bw.b[r][0] * M[o][0] + Bw.b[r][1] * M[o][1];
+}
+
+/* a 3D bending constituent h(x) = f(u, v, x) at x = a +- s and its (u, v)-derivatives q[o] (o as F(D3), each
+   with level minus its order a-derivatives), as F(Quot2D) */
+static HM_ALWAYS_INLINE void F(Quot3D)(const hylcmat_term3d *sp, double sw, double ihw, const F(Basis) * Bu, const F(Basis) * Bv, R a, R s, int level, F(Quot) q[6])
+{
+  const int no = level == 0 ? 1 : level == 1 ? 3 : 6;
+  R         fp[6][3], fm[6][3];
+
+  if (s < sw) {
+    const R   ss = s < S_TINY ? 0 : s;
+    const int L = F(Loc)(sp->nw, sp->tw, ihw, a - ss), Rp = F(Loc)(sp->nw, sp->tw, ihw, a + ss);
+    if (Rp - L <= 1) {
+      const int j0 = HM_MAX(L, 0), j1 = HM_MIN(Rp + 1, sp->nw - 1);
+      R         P[6][3], M[6][3];
+      F(SliceW3)
+      (sp, Bu, Bv, j0, j1, level, P, M);
+      for (int o = 0; o < no; o++) F(QuotPieces)
+      (sp->nw, sp->tw, P[o], M[o], j0, sp->ext, L, Rp, a, ss, level - F(D3)[o][0] - F(D3)[o][1], &q[o]);
+      return;
+    }
+  }
+  F(Eval3DW)
+  (sp, Bu, Bv, ihw, a + s, level, fp);
+  F(Eval3DW)
+  (sp, Bu, Bv, ihw, a - s, level, fm);
+  for (int o = 0; o < no; o++) {
+    const int lev   = level - F(D3)[o][0] - F(D3)[o][1];
+    const R   hp[3] = {fp[o][0], lev > 0 ? fp[o][1] : 0, lev > 1 ? fp[o][2] : 0};
+    const R   hm[3] = {fm[o][0], lev > 0 ? fm[o][1] : 0, lev > 1 ? fm[o][2] : 0};
+    F(QuotDirect)
+    (s, hp, hm, lev, &q[o]);
+  }
+}
+
 /* adds a constituent in table units to T in physical units: sg = +1 (x-bending f) or -1 (y-bending g),
    is = 1/sigma of its bending coordinate, f = the factor of its u-derivative order (1, 1/sigma_i, 1/sigma_i^2).
    The P-type part P, P_A, P_AA, P_w = Q_a/2, P_Aw = Q_aa/2, P_ww = W2/2 is the same for f and g; the
@@ -385,7 +459,7 @@ static HM_ALWAYS_INLINE void F(EvaluateLevel)(const hylcmat *m, const double s[6
   const R A = 0.5 * (R)s[3] + 0.5 * (R)s[5], B = 0.5 * (R)s[3] - 0.5 * (R)s[5], C = s[4], S = F(Hypot)(B, C);
   R       E = m->C0, g[6] = {0, 0, 0, 0, 0, 0}, H[6][6];
   F(Bend)
-  T0, Tu[3], Tuu[3];
+  T0, Tu[3], Tuu[3], T02; /* T02: the mixed sx-sy derivative of the 3D bending terms */
   F(Basis)
   Bq[HYLCMAT_N2D]; /* the pairs' u-bases (a pair with m->ushare[q] >= 0 uses that one's) */
 
@@ -395,6 +469,7 @@ static HM_ALWAYS_INLINE void F(EvaluateLevel)(const hylcmat *m, const double s[6
     memset(Tu, 0, sizeof(Tu));
     memset(H, 0, sizeof(H));
     memset(Tuu, 0, sizeof(Tuu));
+    memset(&T02, 0, sizeof(T02));
   } else {
     T0.P = T0.Q = T0.PA = T0.Pw = T0.QA = T0.Qw = 0;
     for (int i = 0; i < 3; i++) Tu[i].P = Tu[i].Q = 0;
@@ -467,6 +542,60 @@ static HM_ALWAYS_INLINE void F(EvaluateLevel)(const hylcmat *m, const double s[6
     if (level > 1) F(Add)
     (&Tuu[i], &q[2], k == 3 ? 1 : -1, is[k], is[i] * is[i], 0);
   }
+  /* hylc's 3D terms: (sx, sa, sy) in-plane, (sx, sy, II00) and (sx, sy, II11) through the eigen-split */
+  for (int r = 0; r < HYLCMAT_N3D; r++) {
+    const hylcmat_term3d *sp = &m->t3[r];
+    const int             i = HylcTripleCoords[r][0], j = HylcTripleCoords[r][1], k = HylcTripleCoords[r][2];
+    F(Basis)
+    Bu, Bv;
+    if (!m->has3[r]) continue;
+    F(BasisAt)
+    (sp->nu, sp->tu, m->ihu3[r], sp->ext, X[i], level, &Bu);
+    F(BasisAt)
+    (sp->nv, sp->tv, m->ihv3[r], sp->ext, X[j], level, &Bv);
+    if (k < 3) {
+      R f[6][3];
+      F(Eval3DW)
+      (sp, &Bu, &Bv, m->ihw3[r], X[k], level, f);
+      E += f[0][0];
+      if (level) {
+        g[i] += f[1][0] * is[i];
+        g[j] += f[2][0] * is[j];
+        g[k] += f[0][1] * is[k];
+      }
+      if (level > 1) {
+        H[i][i] += f[3][0] * is[i] * is[i];
+        H[i][j] += f[4][0] * is[i] * is[j];
+        H[j][j] += f[5][0] * is[j] * is[j];
+        H[i][k] += f[1][1] * is[i] * is[k];
+        H[j][k] += f[2][1] * is[j] * is[k];
+        H[k][k] += f[0][2] * is[k] * is[k];
+      }
+    } else {
+      const int kb = k == 3 ? 3 : 4; /* the bending coordinate's index among the scales */
+      const R   sg = k == 3 ? 1 : -1;
+      F(Quot)
+      q[6];
+      F(Quot3D)
+      (sp, m->sw3[r], m->ihw3[r], &Bu, &Bv, A * is[kb], S * is[kb], level, q);
+      F(Add)
+      (&T0, &q[0], sg, is[kb], 1, level);
+      if (level) {
+        F(Add)
+        (&Tu[i], &q[1], sg, is[kb], is[i], level - 1);
+        F(Add)
+        (&Tu[j], &q[2], sg, is[kb], is[j], level - 1);
+      }
+      if (level > 1) {
+        F(Add)
+        (&Tuu[i], &q[3], sg, is[kb], is[i] * is[i], 0);
+        F(Add)
+        (&T02, &q[4], sg, is[kb], is[i] * is[j], 0);
+        F(Add)
+        (&Tuu[j], &q[5], sg, is[kb], is[j] * is[j], 0);
+      }
+    }
+  }
   E += T0.P + B * T0.Q;
   if (level) {
     const R EA = T0.PA + B * T0.QA, EB = 2 * B * T0.Pw + T0.Q + 2 * B * B * T0.Qw, EC = 2 * C * T0.Pw + 2 * B * C * T0.Qw;
@@ -494,6 +623,7 @@ static HM_ALWAYS_INLINE void F(EvaluateLevel)(const hylcmat *m, const double s[6
       H[i][4] += EuC;
       H[i][i] += Tuu[i].P + B * Tuu[i].Q;
     }
+    H[0][2] += T02.P + B * T02.Q;
     for (int i = 0; i < 6; i++)
       for (int j = 0; j < 6; j++) hess[6 * i + j] = i <= j ? H[i][j] : H[j][i];
   }

@@ -19,6 +19,9 @@ struct hylcmat {
   int            has1[HYLCMAT_N1D], has2[HYLCMAT_N2D];
   hylcmat_term1d t1[HYLCMAT_N1D]; /* term k at index k; arrays owned (malloc) */
   hylcmat_term2d t2[HYLCMAT_N2D]; /* pair at its index in HylcmatPairs */
+  int            has3[HYLCMAT_N3D];
+  hylcmat_term3d t3[HYLCMAT_N3D]; /* triple at its index in HylcTripleCoords */
+  double         sw3[HYLCMAT_N3D], ihu3[HYLCMAT_N3D], ihv3[HYLCMAT_N3D], ihw3[HYLCMAT_N3D];
   /* evaluator: below sw (table units) the bending divided differences of a term use the
      piecewise-polynomial form (docs/material.md); ih = (n - 1) / (t[n-1] - t[0]) of each knot vector
      is the first guess of the interval search */
@@ -64,9 +67,10 @@ typedef struct {
   hm_err        *E;
   double         density, scale[5], C0;
   int            shift[5];
-  int            n1, n2; /* terms read so far */
+  int            n1, n2, n3; /* terms read so far */
   hylcmat_term1d s1[HYLCMAT_N1D];
   hylcmat_term2d s2[HYLCMAT_N2D];
+  hylcmat_term3d s3[HYLCMAT_N3D];
 } hm_doc;
 
 HM_INTERN void hm_doc_init(hm_doc *d, const char *name, hm_err *E);

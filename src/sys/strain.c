@@ -23,3 +23,13 @@ int HylcPairIndex(int k0, int k1)
 
 /* the load paths of include/hylcmat.h, with the two trailing entries of PETSc's enum lists */
 const char *const HylcPathNames[7] = {"uniaxial", "equibiaxial", "shear", "bending", "HylcPath", "HYLCMAT_PATH_", NULL};
+
+const int         HylcTripleCoords[HYLC_NTRIPLE][3] = {{0, 1, 2}, {0, 2, 3}, {0, 2, 4}};
+const char *const HylcTripleNames[HYLC_NTRIPLE]     = {HYLC_NAME_SX "-" HYLC_NAME_SA "-" HYLC_NAME_SY, HYLC_NAME_SX "-" HYLC_NAME_SY "-" HYLC_NAME_II00, HYLC_NAME_SX "-" HYLC_NAME_SY "-" HYLC_NAME_II11};
+
+int HylcTripleIndex(int k0, int k1, int k2)
+{
+  for (int r = 0; r < HYLC_NTRIPLE; r++)
+    if (HylcTripleCoords[r][0] == k0 && HylcTripleCoords[r][1] == k1 && HylcTripleCoords[r][2] == k2) return r;
+  return -1;
+}
