@@ -50,8 +50,9 @@ enum {
 
 #define HYLCMAT_N1D 5 /* 1D terms k = 0 sx, 1 sa, 2 sy, 3 x-bending (II00), 4 y-bending (II11) */
 #define HYLCMAT_N2D 9 /* 2D terms (k0, k1): (0,1) (0,2) (0,3) (0,4) (1,2) (1,3) (1,4) (2,3) (2,4) */
-#define HYLCMAT_N3D 3 /* 3D terms (k0, k1, k2): (0,1,2) (0,2,3) (0,2,4): hylc's extension of the paper's model,
-                         not in the ARCSim-HYLC JSON (docs/material.md, "Three-strain terms") */
+#define HYLCMAT_N3D                                                                           \
+  3 /* 3D terms (k0, k1, k2): (0,1,2) (0,2,3) (0,2,4): hylc's extension of the paper's model, \
+       not in the ARCSim-HYLC JSON (docs/material.md, "Three-strain terms") */
 
 /* extrapolation modes (the JSON key "ext") */
 enum { HYLCMAT_EXT_LINEAR = 0, HYLCMAT_EXT_CONSTANT = 1, HYLCMAT_EXT_ZERO = 2 };

@@ -6,9 +6,10 @@ standard fabric tests put cloth in?
     /usr/bin/python3 tools/fabric_fidelity.py --collect OUT.md RESULT.json ...
 
 CONFIG.yaml is the study's options file (the yarn model; config/satin.yaml), MATERIAL_DIR the output of
-tools/hylc-material (reference.pyp, the tile the table was sampled on; model.json, the table; samples.h5). For
-the tile (hylc-solve -solve_path on reference.pyp) and the table (hylc-eval -eval_path on model.json), and the
-paper's table where one exists (--paper TABLE.json, automatic for the paper's patterns when the reference data
+tools/hylc-material (reference.pyp, the tile the table was sampled on; model.h5, the table, else model.json;
+samples.h5). For the tile (hylc-solve -solve_path on reference.pyp) and the table (hylc-eval -eval_path on
+model.h5), the ARCSim-HYLC JSON export beside it when the table has terms the JSON leaves out (hylc's 3D terms),
+and the paper's table where one exists (--paper TABLE.json, automatic for the paper's patterns when the reference data
 are present), each state continued along its loading path from rest:
   - uniaxial tension along x, y and the 45-degree bias (the other in-plane strains free, bending 0) at
     s = 1, 2, 5, 10, 20 %: the force per unit width T, the lateral strain, the shear;
@@ -95,6 +96,16 @@ def table_path(table, kind, angle, values, work, tag):
     return read_csv(out)
 
 
+def has_3d(path):
+    """whether an HDF5 table holds 3D terms (hylc's extension, which the JSON export leaves out)"""
+    try:
+        import h5py
+        with h5py.File(path, "r") as f:
+            return "3D" in f and len(f["3D"]) > 0
+    except (OSError, ImportError):
+        return False
+
+
 def rel(table, tile, floor):
     """the relative error of table against tile, the denominator at least floor"""
     return (table - tile) / max(abs(tile), floor)
@@ -102,7 +113,12 @@ def rel(table, tile, floor):
 
 def measure(args):
     cfg, mat = args.config, args.material
-    pyp, model, samples = os.path.join(mat, "reference.pyp"), os.path.join(mat, "model.json"), os.path.join(mat, "samples.h5")
+    pyp, samples = os.path.join(mat, "reference.pyp"), os.path.join(mat, "samples.h5")
+    model, export = os.path.join(mat, "model.h5"), os.path.join(mat, "model.json")
+    if not os.path.isfile(model):
+        model, export = export, ""
+    elif not (os.path.isfile(export) and has_3d(model)):
+        export = ""
     for f in (cfg, pyp, model):
         if not os.path.isfile(f):
             die("cannot read %s (MATERIAL_DIR must hold the output of tools/hylc-material)" % f)
@@ -117,14 +133,16 @@ def measure(args):
         vals = [sign * v for v in values]
         tag = label.replace(" ", "_").replace("+", "p").replace("-", "m")
         jobs.append((label, kind, angle, vals, [sign * v for v in report], tag))
-    results = {"name": name, "config": cfg, "material": mat, "paper": paper or "", "paths": {}}
+    results = {"name": name, "config": cfg, "material": mat, "model": model, "export": export, "paper": paper or "", "paths": {}}
     with ThreadPoolExecutor(max_workers=args.np) as ex:
         tile_f = {j[0]: ex.submit(tile_path, cfg, pyp, j[1], j[2], j[3], work, j[5]) for j in jobs}
         table_f = {j[0]: ex.submit(table_path, model, j[1], j[2], j[3], work, j[5]) for j in jobs}
         paper_f = {j[0]: ex.submit(table_path, paper, j[1], j[2], j[3], work, j[5] + "-paper") for j in jobs} if paper else {}
+        export_f = {j[0]: ex.submit(table_path, export, j[1], j[2], j[3], work, j[5] + "-export") for j in jobs} if export else {}
         for (label, kind, angle, vals, report, tag) in jobs:
             results["paths"][label] = {"kind": kind, "angle": angle, "values": vals, "report": report, "tile": tile_f[label].result(),
-                                       "table": table_f[label].result(), "paper": paper_f[label].result() if paper else None}
+                                       "table": table_f[label].result(), "paper": paper_f[label].result() if paper else None,
+                                       "export": export_f[label].result() if export else None}
     # the tile's stationarity at z = 0: the zero sample's stress against T at 5 %
     try:
         import h5py
@@ -172,14 +190,16 @@ def evaluate(res):
         floor = 0.02 * fmax  # a force near 0 is judged against 2 % of the path's largest
         for v in d["report"]:
             a, b, c = at(d["tile"], v), at(d["table"], v), at(d["paper"], v) if d["paper"] else None
+            x = at(d["export"], v) if d.get("export") else None
             if not a or not b:
                 continue
             e = rel(b["force"], a["force"], floor)
             ep = rel(c["force"], a["force"], floor) if c else None
+            ex = rel(x["force"], a["force"], floor) if x else None
             lat_a, sh_a = lateral_of(kind, angle, a)
             lat_b, sh_b = lateral_of(kind, angle, b)
             row = {"path": label, "value": v, "tile": a["force"], "table": b["force"], "err": e, "paper": c["force"] if c else None, "err_paper": ep,
-                   "tile_conv": bool(a["converged"]), "table_conv": bool(b["converged"]), "lat_tile": lat_a, "lat_table": lat_b, "shear_tile": sh_a, "shear_table": sh_b}
+                   "err_export": ex, "tile_conv": bool(a["converged"]), "table_conv": bool(b["converged"]), "lat_tile": lat_a, "lat_table": lat_b, "shear_tile": sh_a, "shear_table": sh_b}
             rows.append(row)
             if kind == "uniaxial" and angle in (0, 90):
                 tol = TARGET["uniaxial1"] if abs(v) < 0.015 else TARGET["uniaxial"]
@@ -211,8 +231,9 @@ def markdown(res):
     name = res["name"]
     ok = sum(1 for c in checks if c[3])
     out = ["## %s" % name, ""]
-    out.append("Table `%s` against its tile `%s` (options `%s`)%s: **%d of %d checks met**." % (
-        os.path.join(res["material"], "model.json"), os.path.join(res["material"], "reference.pyp"), res["config"],
+    out.append("Table `%s` against its tile `%s` (options `%s`)%s%s: **%d of %d checks met**." % (
+        res.get("model", os.path.join(res["material"], "model.json")), os.path.join(res["material"], "reference.pyp"), res["config"],
+        "; its ARCSim-HYLC JSON export `%s` (the paper's terms only) beside it" % os.path.basename(res["export"]) if res.get("export") else "",
         "; the paper's table `%s` beside it" % os.path.basename(res["paper"]) if res["paper"] else "", ok, len(checks)))
     out.append("")
     by = {}
@@ -229,13 +250,15 @@ def markdown(res):
     if stat:
         out.append("Stationarity of the tile at z = 0: |dPsi/dsx| / T_x(5 %%) = %.4f, |dPsi/dsy| / T_y(5 %%) = %.4f." % stat)
         out.append("")
-    out.append("| path | value | tile | table | table vs tile | paper vs tile | lateral tile / table | shear tile / table |")
-    out.append("|---|---|---|---|---|---|---|---|")
+    exp = bool(res.get("export"))
+    out.append("| path | value | tile | table | table vs tile |%s paper vs tile | lateral tile / table | shear tile / table |" % (" JSON export vs tile |" if exp else ""))
+    out.append("|---|---|---|---|---|%s---|---|---|" % ("---|" if exp else ""))
     for r in rows:
         unit = "N" if r["path"].startswith("bending") else "N/m"
         lat = "" if r["lat_tile"] is None else "%.4f / %.4f" % (r["lat_tile"], r["lat_table"])
         conv = "" if r["tile_conv"] and r["table_conv"] else " (not converged: %s)" % ("tile" if not r["tile_conv"] else "table")
-        out.append("| %s | %g | %.4g %s | %.4g | %s%s | %s | %s | %.4f / %.4f |" % (r["path"], r["value"], r["tile"], unit, r["table"], fmt_pct(r["err"]), conv, fmt_pct(r["err_paper"]), lat, r["shear_tile"], r["shear_table"]))
+        out.append("| %s | %g | %.4g %s | %.4g | %s%s |%s %s | %s | %.4f / %.4f |" % (r["path"], r["value"], r["tile"], unit, r["table"], fmt_pct(r["err"]), conv, (" %s |" % fmt_pct(r.get("err_export"))) if exp else "",
+                                                                           fmt_pct(r["err_paper"]), lat, r["shear_tile"], r["shear_table"]))
     out.append("")
     return "\n".join(out), checks
 

@@ -65,6 +65,11 @@ PETSC_EXTERN PetscErrorCode HylcMaterialSet1D(HylcMaterial, const HylcSpline1D *
 PETSC_EXTERN PetscErrorCode HylcMaterialGet1D(HylcMaterial, PetscInt k, const HylcSpline1D **);
 PETSC_EXTERN PetscErrorCode HylcMaterialSet2D(HylcMaterial, const HylcSpline2D *);
 PETSC_EXTERN PetscErrorCode HylcMaterialGet2D(HylcMaterial, PetscInt k0, PetscInt k1, const HylcSpline2D **);
+/* The 3D terms (hylc's extension of the paper's model, docs/material.md "Three-strain terms"), through
+   hylcmat's own struct: Set3D copies and checks as hylcmat_set_term3d(); Get3D returns PETSC_FALSE for an
+   absent term (pointers owned by the material). */
+PETSC_EXTERN PetscErrorCode HylcMaterialSet3D(HylcMaterial, const hylcmat_term3d *);
+PETSC_EXTERN PetscErrorCode HylcMaterialGet3D(HylcMaterial, PetscInt k0, PetscInt k1, PetscInt k2, hylcmat_term3d *, PetscBool *);
 
 /* Psi(s) in J/m^2; grad (may be NULL) = dPsi/ds (6), hess (may be NULL) = d2Psi/ds2 (6x6 row-major,
    symmetric). Exact limits at equal eigenvalues of II (finite and continuous where the model is):

@@ -179,8 +179,8 @@ static PetscErrorCode EvalPath(HylcMaterial mat, const hylcmat_path *path, Petsc
     psi[i] = r.psi;
     for (int k = 0; k < 6; k++) Z[6 * i + k] = r.z[k];
     for (int a = 0; a < 3; a++) p[a] = r.p[a];
-    snprintf(buf, sizeof(buf), "%s %g: s %.6g force %.9e %s z %.6e %.6e %.6e %.6e %.6e %.6e psi %.10e%s\n", hylcmat_path_name(path->kind), path->angle, (double)s[i], (double)F[i], path->kind == HYLCMAT_PATH_BENDING ? "N" : "N/m", (double)r.z[0], (double)r.z[1], (double)r.z[2],
-             (double)r.z[3], (double)r.z[4], (double)r.z[5], (double)psi[i], conv[i] ? "" : " NOT CONVERGED");
+    snprintf(buf, sizeof(buf), "%s %g: s %.6g force %.9e %s z %.6e %.6e %.6e %.6e %.6e %.6e psi %.10e%s\n", hylcmat_path_name(path->kind), path->angle, (double)s[i], (double)F[i], path->kind == HYLCMAT_PATH_BENDING ? "N" : "N/m", (double)r.z[0],
+             (double)r.z[1], (double)r.z[2], (double)r.z[3], (double)r.z[4], (double)r.z[5], (double)psi[i], conv[i] ? "" : " NOT CONVERGED");
     PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s", buf));
   }
   PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
@@ -195,20 +195,20 @@ static PetscErrorCode EvalPath(HylcMaterial mat, const hylcmat_path *path, Petsc
 /* the work of hylc-eval on the material mat (created and destroyed by Run, also on an error) */
 static PetscErrorCode Eval(HylcMaterial mat)
 {
-  char      bin[PETSC_MAX_PATH_LEN] = "", bout[PETSC_MAX_PATH_LEN] = "";
-  PetscBool hasIn, hasOut;
-  char      file[PETSC_MAX_PATH_LEN] = "", strain[512] = "", json[PETSC_MAX_PATH_LEN] = "", h5[PETSC_MAX_PATH_LEN] = "", matFile[PETSC_MAX_PATH_LEN] = "";
-  PetscBool hasFile, hasStrain, deriv = PETSC_FALSE, help, hasJson, hasH5, hasMatFile;
-  PetscReal s[6], psi, grad[6], hess[36];
-  char      udir[16] = "", ucsv[PETSC_MAX_PATH_LEN] = "";
-  PetscBool hasUni, hasUStrains, hasUCsv;
-  PetscReal ustrain[256] = {0.05, 0.1, 0.2};
-  PetscInt  nu = 256, udirn = 0, npv = 256;
-  char      pcsv[PETSC_MAX_PATH_LEN] = "";
-  PetscBool pathSet, hasPathValues;
-  PetscReal pvalues[256];
-  PetscEnum pkind = 0;
-  hylcmat_path path = {HYLCMAT_PATH_UNIAXIAL, 0};
+  char         bin[PETSC_MAX_PATH_LEN] = "", bout[PETSC_MAX_PATH_LEN] = "";
+  PetscBool    hasIn, hasOut;
+  char         file[PETSC_MAX_PATH_LEN] = "", strain[512] = "", json[PETSC_MAX_PATH_LEN] = "", h5[PETSC_MAX_PATH_LEN] = "", matFile[PETSC_MAX_PATH_LEN] = "";
+  PetscBool    hasFile, hasStrain, deriv = PETSC_FALSE, help, hasJson, hasH5, hasMatFile;
+  PetscReal    s[6], psi, grad[6], hess[36];
+  char         udir[16] = "", ucsv[PETSC_MAX_PATH_LEN] = "";
+  PetscBool    hasUni, hasUStrains, hasUCsv;
+  PetscReal    ustrain[256] = {0.05, 0.1, 0.2};
+  PetscInt     nu = 256, udirn = 0, npv = 256;
+  char         pcsv[PETSC_MAX_PATH_LEN] = "";
+  PetscBool    pathSet, hasPathValues;
+  PetscReal    pvalues[256];
+  PetscEnum    pkind = 0;
+  hylcmat_path path  = {HYLCMAT_PATH_UNIAXIAL, 0};
 
   PetscFunctionBeginUser;
   PetscOptionsBegin(PETSC_COMM_WORLD, NULL, "hylc-eval options", "hylc-eval");
@@ -226,10 +226,16 @@ static PetscErrorCode Eval(HylcMaterial mat)
       "Uniaxial mode: the stretches s in [0, 1) (strain, 0 at rest; default 0.05,0.1,0.2; at most 256), in this order: the first from the lowest point of a grid of the lateral strains, each other from the lateral strains of the one before",
       "HylcMaterialUniaxial", ustrain, &nu, &hasUStrains));
   PetscCall(PetscOptionsString("-eval_uniaxial_csv", "Uniaxial mode: write strain,T_N_per_m,lateral_strain_sa,lateral_strain_s2 (T in N/m) to this CSV file", "HylcWriteUniaxialCSV", ucsv, ucsv, sizeof(ucsv), &hasUCsv));
-  PetscCall(PetscOptionsEnum("-eval_path", "Load path mode (docs/fabric-fidelity.md): uniaxial (stretch along -eval_path_angle, the other in-plane strains free), equibiaxial (sx = sy, sa free), shear (sa given, sx, sy free) or bending (II00, or II11 with -eval_path_angle 90, in-plane strains free)",
+  PetscCall(PetscOptionsEnum("-eval_path",
+                             "Load path mode (docs/fabric-fidelity.md): uniaxial (stretch along -eval_path_angle, the other in-plane strains free), equibiaxial (sx = sy, sa free), shear (sa given, sx, sy free) or bending (II00, or II11 with "
+                             "-eval_path_angle 90, in-plane strains free)",
                              "HylcMaterialPathState", HylcPathNames, pkind, &pkind, &pathSet));
-  PetscCall(HylcOptionsReal("-eval_path_angle", "Path mode: the uniaxial direction in degrees from the material x axis (0 strip along x, 90 along y, 45 bias), or the bending axis (0: II00, 90: II11)", "HylcMaterialPathState", path.angle, &path.angle, NULL));
-  PetscCall(HylcOptionsRealArray("-eval_path_values", "Path mode: the prescribed values (stretches in [0, 1), sa in (-0.99, 0.99), or curvatures in 1/m), in this order: the first from the lowest point of a grid of the free strains, each other from the one before (at most 256)", "HylcMaterialPathState", pvalues, &npv, &hasPathValues));
+  PetscCall(HylcOptionsReal("-eval_path_angle", "Path mode: the uniaxial direction in degrees from the material x axis (0 strip along x, 90 along y, 45 bias), or the bending axis (0: II00, 90: II11)", "HylcMaterialPathState", path.angle, &path.angle,
+                            NULL));
+  PetscCall(HylcOptionsRealArray(
+      "-eval_path_values",
+      "Path mode: the prescribed values (stretches in [0, 1), sa in (-0.99, 0.99), or curvatures in 1/m), in this order: the first from the lowest point of a grid of the free strains, each other from the one before (at most 256)",
+      "HylcMaterialPathState", pvalues, &npv, &hasPathValues));
   PetscCall(PetscOptionsString("-eval_path_csv", "Path mode: write value,force,sx,sa,sy,II00,II11,psi,converged (force in N/m, N for bending) to this CSV file", "HylcWritePathCSV", pcsv, pcsv, sizeof(pcsv), NULL));
   PetscOptionsEnd();
   path.kind = (int)pkind;

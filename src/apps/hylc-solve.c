@@ -143,10 +143,14 @@ static PetscErrorCode Solve(HylcPattern pat, HylcMicro micro)
   PetscCall(HylcOptionsRealArray("-solve_uniaxial_strains", "Uniaxial mode: the stretches s in [0, 1) (strain, 0 at rest; default 0.05,0.1,0.2), solved in this order, each continued from the one before (at most 64)", "HylcMicroSolveUniaxial",
                                  ustrain, &nu, &hasStrains));
   PetscCall(PetscOptionsString("-solve_uniaxial_csv", "Uniaxial mode: write strain,T_N_per_m,lateral_strain_sa,lateral_strain_s2 (T in N/m) to this CSV file", "HylcWriteUniaxialCSV", csv, csv, sizeof(csv), &hasCsv));
-  PetscCall(PetscOptionsEnum("-solve_path", "Load path mode (docs/fabric-fidelity.md): uniaxial (stretch along -solve_path_angle, the other in-plane strains free), equibiaxial (sx = sy, sa free), shear (sa given, sx, sy free) or bending (II00, or II11 with -solve_path_angle 90, in-plane strains free)",
+  PetscCall(PetscOptionsEnum("-solve_path",
+                             "Load path mode (docs/fabric-fidelity.md): uniaxial (stretch along -solve_path_angle, the other in-plane strains free), equibiaxial (sx = sy, sa free), shear (sa given, sx, sy free) or bending (II00, or II11 with "
+                             "-solve_path_angle 90, in-plane strains free)",
                              "HylcMicroSolvePath", HylcPathNames, pkind, &pkind, &pathSet));
-  PetscCall(HylcOptionsReal("-solve_path_angle", "Path mode: the uniaxial direction in degrees from the material x axis (0 strip along x, 90 along y, 45 bias), or the bending axis (0: II00, 90: II11)", "HylcMicroSolvePath", path.angle, &path.angle, NULL));
-  PetscCall(HylcOptionsRealArray("-solve_path_values", "Path mode: the prescribed values (stretches in [0, 1), sa in (-0.95, 0.95), or curvatures in 1/m), solved in this order, each continued from the one before (at most 64)", "HylcMicroSolvePath", pvalues, &npv, &hasPathValues));
+  PetscCall(
+      HylcOptionsReal("-solve_path_angle", "Path mode: the uniaxial direction in degrees from the material x axis (0 strip along x, 90 along y, 45 bias), or the bending axis (0: II00, 90: II11)", "HylcMicroSolvePath", path.angle, &path.angle, NULL));
+  PetscCall(HylcOptionsRealArray("-solve_path_values", "Path mode: the prescribed values (stretches in [0, 1), sa in (-0.95, 0.95), or curvatures in 1/m), solved in this order, each continued from the one before (at most 64)", "HylcMicroSolvePath",
+                                 pvalues, &npv, &hasPathValues));
   PetscCall(PetscOptionsString("-solve_path_csv", "Path mode: write value,force,sx,sa,sy,II00,II11,psi,converged (force in N/m, N for bending) to this CSV file", "HylcWritePathCSV", pcsv, pcsv, sizeof(pcsv), NULL));
   PetscOptionsEnd();
   path.kind = (int)pkind;
@@ -222,7 +226,8 @@ static PetscErrorCode Solve(HylcPattern pat, HylcMicro micro)
     PetscReal g[6];
     char      buf[256];
     PetscCall(HylcMicroGetStrainGradient(micro, HYLC_STRAIN_ALL_BITS | HYLC_STRAIN_NO_POISSON, g));
-    snprintf(buf, sizeof(buf), "stress: %.10e %.10e %.10e %.10e %.10e %.10e (dPsi/dz: N/m for sx, sa, sy; N for II00, II01, II11; nan: needs a Poisson midsurface)\n", (double)g[0], (double)g[1], (double)g[2], (double)g[3], (double)g[4], (double)g[5]);
+    snprintf(buf, sizeof(buf), "stress: %.10e %.10e %.10e %.10e %.10e %.10e (dPsi/dz: N/m for sx, sa, sy; N for II00, II01, II11; nan: needs a Poisson midsurface)\n", (double)g[0], (double)g[1], (double)g[2], (double)g[3], (double)g[4],
+             (double)g[5]);
     PetscCall(PetscPrintf(PETSC_COMM_SELF, "%s", buf));
   }
   if (out[0] || vtk[0]) {

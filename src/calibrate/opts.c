@@ -652,7 +652,8 @@ PetscErrorCode HylcCalibrateSetFromOptions(HylcCalibrate C)
   PetscCall(HylcOptionsReal("-calibrate_flat_tol", "A direction of the log parameters along which the normalised residuals change by less than this per unit (a singular value of the Jacobian) is flat: its parameter is held and reported",
                             "HylcCalibrateSetTolerances", flatTol, &flatTol, NULL));
   PetscCall(PetscOptionsEnum("-calibrate_reference",
-                             "Reference state: auto (computed once with the initial parameters: Algorithm C1 for a generated pattern, relax for a stored reference state, as hylc-sample), compute, relax (only the in-plane minimum over the periods of the pattern as given) or none (the pattern as given: the paper's tables were made so; config/profile-paper.yaml)",
+                             "Reference state: auto (computed once with the initial parameters: Algorithm C1 for a generated pattern, relax for a stored reference state, as hylc-sample), compute, relax (only the in-plane minimum over the periods of "
+                             "the pattern as given) or none (the pattern as given: the paper's tables were made so; config/profile-paper.yaml)",
                              "HylcCalibrateSetReference", HylcReferenceModes, rm, &rm, NULL));
   PetscCall(PetscOptionsName("-calibrate_view", "Print the set-up at the end of HylcCalibrateSetUp()", "HylcCalibrateView", NULL));
   PetscOptionsEnd();

@@ -3,7 +3,8 @@
    stress every sample records), on the sampling plan's graded knots, so that the slopes of the table are the
    tile's own. The 2D terms are residuals that vanish on the axes, with their slopes across the axes free: the
    lateral stress a 1D sample records (dPsi/dsy at (sx, 0, 0), the Poisson effect; dPsi/dsa at (sx, 0, 0), the
-   shear a chiral tile takes under tension) is what they carry there. */
+   shear a chiral tile takes under tension) is what they carry there. The 3D terms (hylc's extension) are the
+   residual of the samples of a 3D grid against the 1D and 2D terms, Hermite data straight from the samples. */
 #include <hylc/private/fitimpl.h>
 #include <hylc/samples.h>
 #include <string.h>
@@ -129,7 +130,7 @@ static PetscBool Finite(PetscReal x) { return (PetscBool)!PetscIsInfOrNanReal(x)
 /* the knots of axis a of term t in normalised units (HylcFitFabricKnots_Private()) into K (room for nknot) */
 static void TermKnots(HylcFit fit, int t, int a, PetscReal K[])
 {
-  const int c = t <= 5 ? t - 1 : (a ? HylcPairCoords[t - 6][1] : HylcPairCoords[t - 6][0]);
+  const int c = HylcPlanAxisCoord(t, a);
   for (PetscInt i = 0; i < fit->nknot[t][a]; i++) K[i] = fit->knot[t][a][i] / fit->scale[HylcPlanStrainIndex(c)];
 }
 
@@ -161,7 +162,8 @@ static void TermScales(HylcFit fit, int t, int nc, const int cs[], PetscReal *vm
 
 /*
    The knots of every term with data: the samples file's /plan (the graded knots it was sampled on), else graded
-   knots (HylcPlanGradedKnots() with the plan's defaults, II scaled by 1 mm / r) over the term's data range.
+   knots (HylcPlanGradedKnots() with the plan's defaults, II scaled by 1 mm / r) over the term's data range (a
+   3D term: the distinct coordinates of its samples, which are its nodes).
 */
 PetscErrorCode HylcFitFabricKnots_Private(HylcFit fit)
 {
@@ -172,18 +174,31 @@ PetscErrorCode HylcFitFabricKnots_Private(HylcFit fit)
   PetscFunctionBegin;
   memset(&defaults, 0, sizeof(defaults));
   HylcPlanGradedDefaults(fit->radius > 0 ? 1e-3 / fit->radius : 1, &defaults);
-  for (int t = 1; t < HYLC_PLAN_NTERM; t++) {
+  for (int t = 1; t < HYLC_PLAN_NTERM3; t++) {
     PetscInt rows = 0;
     for (PetscInt k = 0; k < fit->n; k++) rows += fit->term[k] == t;
     if (!rows || !((fit->terms >> t) & 1)) continue;
-    for (int a = 0; a < (t > 5 ? 2 : 1); a++) {
-      const int      c = t <= 5 ? t - 1 : HylcPairCoords[t - 6][a];
+    for (int a = 0; a < HylcPlanTermDim(t); a++) {
+      const int      c = HylcPlanAxisCoord(t, a);
       const PetscInt s = HylcPlanStrainIndex(c);
       PetscInt       n = 0;
       if (fit->samplesFile) PetscCall(HylcSamplesReadKnots(fit->input, t, a, &n, K));
       if (n)
         fromFile++;
-      else {
+      else if (HylcPlanTermDim(t) == 3) { /* a 3D term's samples are its nodes: their distinct coordinates */
+        for (PetscInt k = 0; k < fit->n; k++) {
+          PetscInt i = 0;
+          if (fit->term[k] != t) continue;
+          const PetscReal x = fit->z[6 * k + s];
+          while (i < n && K[i] < x) i++;
+          if (i < n && K[i] == x) continue;
+          PetscCheck(n < HYLC_PLAN_MAXAXIS, PetscObjectComm((PetscObject)fit), PETSC_ERR_USER_INPUT, "%s: term %s has more than %d distinct %s values", fit->source, HylcPlanTermName(t), HYLC_PLAN_MAXAXIS, HylcCoordNames[c]);
+          for (PetscInt j = n; j > i; j--) K[j] = K[j - 1];
+          K[i] = x;
+          n++;
+        }
+        made++;
+      } else {
         PetscReal mn = 0, mx = 0;
         for (PetscInt k = 0; k < fit->n; k++)
           if (fit->term[k] == t) mn = PetscMin(mn, fit->z[6 * k + s]), mx = PetscMax(mx, fit->z[6 * k + s]);
@@ -417,5 +432,176 @@ PetscErrorCode HylcFitTerm2DFabric_Private(HylcFit fit, int t)
   sp->k0 = ci, sp->k1 = cj, sp->nu = nu, sp->nv = nv;
   sp->ext = HYLC_EXT_LINEAR;
   PetscCheck(nrow >= 4, comm, PETSC_ERR_USER_INPUT, "%s: term %s: %" PetscInt_FMT " samples, too few for the fabric fit", fit->source, HylcPlanTermName(t), nrow);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* ---- 3D ---- */
+
+/* the 1D and 2D terms (without f0) at normalised coordinates S, with their gradient g (5) */
+static PetscReal Model12(HylcFit fit, const PetscReal S[5], PetscReal g[5])
+{
+  PetscReal f = 0;
+  for (int c = 0; c < 5; c++) {
+    PetscReal d;
+    g[c] = 0;
+    f += Term1D(fit, c, S[c], &d);
+    g[c] += d;
+  }
+  for (int t = 6; t < HYLC_PLAN_NTERM; t++) {
+    PetscReal gg[2];
+    int       ci, cj;
+    if (!fit->has[t]) continue;
+    HylcPlanPair(t, &ci, &cj);
+    f += HylcSpline2DEval(&fit->s2[t - 6], S[ci], S[cj], gg, NULL);
+    g[ci] += gg[0];
+    g[cj] += gg[1];
+  }
+  return f;
+}
+
+/* the index of knot x among K (within a relative 1e-9 of the spacing), -1 if x is not a knot */
+static PetscInt KnotIndex(PetscInt n, const PetscReal K[], PetscReal x)
+{
+  for (PetscInt i = 0; i < n; i++) {
+    const PetscReal h = i + 1 < n ? K[i + 1] - K[i] : K[i] - K[i - 1];
+    if (PetscAbsReal(x - K[i]) <= 1e-9 * h) return i;
+  }
+  return -1;
+}
+
+PetscReal HylcFitTerm3DEval_Private(const hylcmat_term3d *s, PetscReal u, PetscReal v, PetscReal w, PetscReal g[3])
+{
+  PetscReal      A[3][2], B[3][2], dA[3][2], dB[3][2], f = 0;
+  const PetscInt i    = HylcHermiteBasis(s->nu, s->tu, HYLC_EXT_LINEAR, u, A[0], B[0], dA[0], dB[0], NULL, NULL);
+  const PetscInt j    = HylcHermiteBasis(s->nv, s->tv, HYLC_EXT_LINEAR, v, A[1], B[1], dA[1], dB[1], NULL, NULL);
+  const PetscInt k    = HylcHermiteBasis(s->nw, s->tw, HYLC_EXT_LINEAR, w, A[2], B[2], dA[2], dB[2], NULL, NULL);
+  const double  *D[8] = {s->p, s->mu, s->mv, s->muv, s->mw, s->muw, s->mvw, s->muvw}; /* bit 0: d/du, 1: d/dv, 2: d/dw */
+
+  if (g) g[0] = g[1] = g[2] = 0;
+  for (int e = 0; e < 2; e++)
+    for (int f2 = 0; f2 < 2; f2++)
+      for (int h = 0; h < 2; h++) {
+        const PetscInt node = ((k + h) * s->nv + (j + f2)) * s->nu + (i + e);
+        for (int q = 0; q < 8; q++) {
+          const PetscReal bu = q & 1 ? B[0][e] : A[0][e], bv = q & 2 ? B[1][f2] : A[1][f2], bw = q & 4 ? B[2][h] : A[2][h];
+          const PetscReal du = q & 1 ? dB[0][e] : dA[0][e], dv = q & 2 ? dB[1][f2] : dA[1][f2], dw = q & 4 ? dB[2][h] : dA[2][h];
+          const PetscReal c = D[q][node];
+          f += c * bu * bv * bw;
+          if (g) {
+            g[0] += c * du * bv * bw;
+            g[1] += c * bu * dv * bw;
+            g[2] += c * bu * bv * dw;
+          }
+        }
+      }
+  return f;
+}
+
+/* 0 on the coordinate planes (node index z0[a] on axis a) with every derivative along them */
+static void ZeroPlanes(const PetscInt n[3], const PetscInt z0[3], PetscReal *D[8])
+{
+  for (PetscInt iw = 0; iw < n[2]; iw++)
+    for (PetscInt iv = 0; iv < n[1]; iv++)
+      for (PetscInt iu = 0; iu < n[0]; iu++) {
+        const PetscInt node = (iw * n[1] + iv) * n[0] + iu, ix[3] = {iu, iv, iw};
+        for (int a = 0; a < 3; a++)
+          if (ix[a] == z0[a])
+            for (int q = 0; q < 8; q++)
+              if (!(q & (1 << a))) D[q][node] = 0;
+      }
+}
+
+/*
+   A 3D term f(u, v, w) from the samples of its grid (the plan's 3D knots, one sample per node): the node's value
+   is the sample's energy less f0 and the 1D and 2D terms there, its slopes the sample's stress less theirs (the
+   envelope-theorem stress: the tile's own slopes), the mixed derivatives differences of those slopes between
+   neighbouring nodes (3-point, averaged over the orders). On a coordinate plane the term is 0 with every
+   derivative along the plane, so the 1D and 2D terms' fits are kept exactly; the derivatives across the plane
+   are free. A node without a converged sample gets 0 (counted in missing3).
+*/
+PetscErrorCode HylcFitTerm3DFabric_Private(HylcFit fit, int t)
+{
+  const int       r  = t - HYLC_PLAN_NTERM;
+  hylcmat_term3d *sp = &fit->s3[r];
+  int             c[3];
+  PetscInt        st[3], n[3], z0[3], N, nrow = 0, offgrid = 0;
+  PetscReal      *K[3], *D[8], *buf;
+  PetscBool      *have;
+  MPI_Comm        comm = PetscObjectComm((PetscObject)fit);
+
+  PetscFunctionBegin;
+  HylcPlanTriple(t, c);
+  for (int a = 0; a < 3; a++) {
+    n[a]  = fit->nknot[t][a];
+    st[a] = HylcPlanStrainIndex(c[a]);
+    PetscCheck(n[a] >= 2, comm, PETSC_ERR_PLIB, "fabric fit: term %s has %" PetscInt_FMT " knots on axis %d", HylcPlanTermName(t), n[a], a);
+  }
+  N = n[0] * n[1] * n[2];
+  PetscCall(PetscFree(fit->a3[r]));
+  PetscCall(PetscMalloc1(n[0] + n[1] + n[2] + 8 * N, &fit->a3[r]));
+  buf  = fit->a3[r];
+  K[0] = buf, K[1] = K[0] + n[0], K[2] = K[1] + n[1];
+  for (int q = 0; q < 8; q++) D[q] = K[2] + n[2] + q * N; /* p, mu, mv, muv, mw, muw, mvw, muvw: bit 0 d/du, 1 d/dv, 2 d/dw */
+  PetscCall(PetscArrayzero(D[0], 8 * N));
+  for (int a = 0; a < 3; a++) {
+    TermKnots(fit, t, a, K[a]);
+    z0[a] = ZeroKnot(n[a], K[a]);
+    PetscCheck(z0[a] >= 0, comm, PETSC_ERR_PLIB, "fabric fit: term %s: 0 is not a knot", HylcPlanTermName(t));
+  }
+  PetscCall(PetscCalloc1(N, &have));
+  for (PetscInt k = 0; k < fit->n; k++) {
+    const PetscReal *z = fit->z + 6 * k, *g = fit->stress + 6 * k;
+    PetscReal        S[5], gm[5], fm;
+    PetscInt         idx[3], node;
+    if (fit->term[k] != t) continue;
+    for (int q = 0; q < 5; q++) S[q] = z[HylcPlanStrainIndex(q)] / fit->scale[HylcPlanStrainIndex(q)];
+    for (int a = 0; a < 3; a++) idx[a] = KnotIndex(n[a], K[a], S[c[a]]);
+    if (idx[0] < 0 || idx[1] < 0 || idx[2] < 0) {
+      offgrid++;
+      continue;
+    }
+    node = (idx[2] * n[1] + idx[1]) * n[0] + idx[0];
+    fm   = Model12(fit, S, gm);
+    if (!(Finite(g[st[0]]) && Finite(g[st[1]]) && Finite(g[st[2]]))) continue;
+    D[0][node] = fit->psi[k] - fit->f0 - fm;
+    D[1][node] = g[st[0]] * fit->scale[st[0]] - gm[c[0]];
+    D[2][node] = g[st[1]] * fit->scale[st[1]] - gm[c[1]];
+    D[4][node] = g[st[2]] * fit->scale[st[2]] - gm[c[2]];
+    have[node] = PETSC_TRUE;
+    nrow++;
+  }
+  fit->missing3[r] = 0;
+  for (PetscInt q = 0; q < N; q++) fit->missing3[r] += !have[q];
+  PetscCall(PetscFree(have));
+  PetscCheck(nrow >= 8, comm, PETSC_ERR_USER_INPUT, "%s: term %s: %" PetscInt_FMT " samples on its knots (%" PetscInt_FMT " off them), too few for the fabric fit", fit->source, HylcPlanTermName(t), nrow, offgrid);
+  ZeroPlanes(n, z0, D); /* the data there are the 2D terms' residuals: not the 3D term's */
+  {
+    /* the mixed derivatives: muv from mv along u and mu along v, ...; muvw from the three pairs' */
+    const PetscInt stride[3] = {1, n[0], n[0] * n[1]};
+    for (int q = 3; q < 8; q++) {
+      if (q == 4) continue; /* mw: data */
+      for (PetscInt iw = 0; iw < n[2]; iw++)
+        for (PetscInt iv = 0; iv < n[1]; iv++)
+          for (PetscInt iu = 0; iu < n[0]; iu++) {
+            const PetscInt node = (iw * n[1] + iv) * n[0] + iu, ix[3] = {iu, iv, iw};
+            PetscReal      sum = 0;
+            int            cnt = 0;
+            for (int a = 0; a < 3; a++) { /* d/da of the derivative without a */
+              if (!(q & (1 << a))) continue;
+              const PetscInt lower = q & ~(1 << a);
+              const PetscInt base  = node - ix[a] * stride[a];
+              sum += Deriv3(n[a], K[a], D[lower] + base, stride[a], ix[a]);
+              cnt++;
+            }
+            D[q][node] = sum / cnt;
+          }
+    }
+  }
+  ZeroPlanes(n, z0, D);
+  sp->k0 = c[0], sp->k1 = c[1], sp->k2 = c[2];
+  sp->nu = (int)n[0], sp->nv = (int)n[1], sp->nw = (int)n[2];
+  sp->ext = HYLC_EXT_LINEAR;
+  sp->tu = K[0], sp->tv = K[1], sp->tw = K[2];
+  sp->p = D[0], sp->mu = D[1], sp->mv = D[2], sp->muv = D[3], sp->mw = D[4], sp->muw = D[5], sp->mvw = D[6], sp->muvw = D[7];
   PetscFunctionReturn(PETSC_SUCCESS);
 }

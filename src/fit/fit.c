@@ -130,7 +130,7 @@ PetscErrorCode HylcFitCreate(MPI_Comm comm, HylcFit *out)
   fit->yarnDensity     = 0;
   fit->min1            = 10;
   fit->min2            = 25;
-  fit->terms           = (1 << HYLC_PLAN_NTERM) - 2; /* every term but the zero sample */
+  fit->terms           = HYLC_PLAN_ALL_TERMS - 1; /* every term but the zero sample */
   fit->rhoA            = -1;
   PetscCall(FamilyDefaults(fit, HYLC_FIT_FAMILY_WOVEN));
   fit->familySource[0] = 0; /* the default */
@@ -149,12 +149,17 @@ PetscErrorCode HylcFitResetResults_Private(HylcFit fit)
     PetscCall(PetscFree6(fit->s2[k].tu, fit->s2[k].tv, fit->s2[k].p, fit->s2[k].mu, fit->s2[k].mv, fit->s2[k].muv));
     PetscCall(PetscMemzero(&fit->s2[k], sizeof(fit->s2[k])));
   }
-  for (int t = 0; t < HYLC_PLAN_NTERM; t++)
-    for (int a = 0; a < 2; a++) {
+  for (int r = 0; r < HYLC_NTRIPLE; r++) {
+    PetscCall(PetscFree(fit->a3[r]));
+    PetscCall(PetscMemzero(&fit->s3[r], sizeof(fit->s3[r])));
+    fit->missing3[r] = 0;
+  }
+  for (int t = 0; t < HYLC_PLAN_NTERM3; t++)
+    for (int a = 0; a < 3; a++) {
       PetscCall(PetscFree(fit->knot[t][a]));
       fit->nknot[t][a] = 0;
     }
-  for (int t = 0; t < HYLC_PLAN_NTERM; t++) {
+  for (int t = 0; t < HYLC_PLAN_NTERM3; t++) {
     fit->has[t]   = PETSC_FALSE;
     fit->statN[t] = 0;
   }
@@ -485,7 +490,9 @@ PetscErrorCode HylcFitSetFromOptions(HylcFit fit)
   PetscCall(PetscOptionsInt("-fit_raw_n2", "Raw data.txt: grid size per axis of a 2D block (0: from the row count)", "HylcFitSetFromOptions", fit->rawN2, &fit->rawN2, NULL));
   PetscCall(PetscOptionsInt("-fit_min_samples_1d", "A 1D term with fewer samples (but some) is an error", "HylcFitSetFromOptions", fit->min1, &fit->min1, NULL));
   PetscCall(PetscOptionsInt("-fit_min_samples_2d", "A 2D term with fewer samples (but some) is an error", "HylcFitSetFromOptions", fit->min2, &fit->min2, NULL));
-  PetscCall(PetscOptionsString("-fit_terms", "Terms to fit: all, or a comma list of sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11", "HylcFitSetFromOptions", terms, terms, sizeof(terms), NULL));
+  PetscCall(PetscOptionsString("-fit_terms",
+                               "Terms to fit: all, or a comma list of sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11, sx-sa-sy, sx-sy-II00, sx-sy-II11 (the 3D terms with the fabric method only)",
+                               "HylcFitSetFromOptions", terms, terms, sizeof(terms), NULL));
   PetscOptionsEnd();
   PetscCheck(known, comm, set ? PETSC_ERR_USER_INPUT : PETSC_ERR_FILE_UNEXPECTED, "%s %s: unknown family (woven, stockinette, honeycomb or rib; knit is the former name of honeycomb and rib)", set ? "-fit_family" : "the samples' -sampler_family",
              family);
@@ -514,18 +521,18 @@ PetscErrorCode HylcFitSetFromOptions(HylcFit fit)
     PetscBool all;
     PetscCall(PetscStrcmp(terms, "all", &all));
     if (all)
-      fit->terms = (1 << HYLC_PLAN_NTERM) - 2;
+      fit->terms = HYLC_PLAN_ALL_TERMS - 1;
     else {
       char *tok, *save = NULL;
       fit->terms = 0;
       for (tok = strtok_r(terms, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
         int found = -1;
-        for (int t = 1; t < HYLC_PLAN_NTERM; t++) {
+        for (int t = 1; t < HYLC_PLAN_NTERM3; t++) {
           PetscBool eq;
           PetscCall(PetscStrcmp(tok, HylcPlanTermName(t), &eq));
           if (eq) found = t;
         }
-        PetscCheck(found > 0, comm, PETSC_ERR_USER_INPUT, "-fit_terms: unknown term '%s' (use all or sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11)", tok);
+        PetscCheck(found > 0, comm, PETSC_ERR_USER_INPUT, "-fit_terms: unknown term '%s' (use all or sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11, sx-sa-sy, sx-sy-II00, sx-sy-II11)", tok);
         fit->terms |= 1 << found;
       }
     }
@@ -550,7 +557,7 @@ PetscErrorCode HylcFitSetFromOptions(HylcFit fit)
 . n           - the number of rows
 . strain      - n x 6: sx, sa, sy, II00, II01, II11
 . psi         - the energy densities (J/m^2)
-. term        - the term of each row, 0..14 as in include/hylc/plan.h (term 0 rows only take part in f0 and
+. term        - the term of each row, 0..17 as in include/hylc/plan.h (term 0 rows only take part in f0 and
                 the normalisation)
 - areaDensity - the area density (kg/m^2; <= 0: -fit_density must give it)
 
@@ -572,7 +579,7 @@ PetscErrorCode HylcFitSetData(HylcFit fit, PetscInt n, const PetscReal strain[],
   PetscCall(PetscMalloc1(6 * n + 1, &fit->stress));
   for (PetscInt k = 0; k < 6 * n; k++) fit->stress[k] = (PetscReal)NAN;
   for (PetscInt k = 0; k < n; k++) {
-    PetscCheck(term[k] >= 0 && term[k] < HYLC_PLAN_NTERM, comm, PETSC_ERR_USER_INPUT, "HylcFitSetData: row %" PetscInt_FMT " has term %" PetscInt_FMT " (valid: 0..14)", k, term[k]);
+    PetscCheck(term[k] >= 0 && term[k] < HYLC_PLAN_NTERM3, comm, PETSC_ERR_USER_INPUT, "HylcFitSetData: row %" PetscInt_FMT " has term %" PetscInt_FMT " (valid: 0..17)", k, term[k]);
     for (int i = 0; i < 6; i++) fit->z[6 * k + i] = strain[6 * k + i];
     fit->psi[k]  = psi[k];
     fit->term[k] = term[k];
@@ -857,6 +864,12 @@ PetscErrorCode HylcFitEvaluateAxes(HylcFit fit, const PetscReal z[6], PetscReal 
     HylcPlanPair(t, &ci, &cj);
     f += HylcSpline2DEval(&fit->s2[t - 6], S[ci], S[cj], NULL, NULL);
   }
+  for (int t = HYLC_PLAN_NTERM; t < HYLC_PLAN_NTERM3; t++) {
+    int c[3];
+    if (!fit->has[t]) continue;
+    HylcPlanTriple(t, c);
+    f += HylcFitTerm3DEval_Private(&fit->s3[t - HYLC_PLAN_NTERM], S[c[0]], S[c[1]], S[c[2]], NULL);
+  }
   *psi = f;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -999,16 +1012,21 @@ PetscErrorCode HylcFitView(HylcFit fit, PetscViewer viewer)
     const PetscReal *z = fit->z + 6 * fit->f0row;
     PetscCall(Line(viewer, "f0: %.9g J/m^2 (row %" PetscInt_FMT ", strain (%g, %g, %g, %g, %g, %g))\n", (double)fit->f0, fit->row[fit->f0row], (double)z[0], (double)z[1], (double)z[2], (double)z[3], (double)z[4], (double)z[5]));
     PetscCall(Line(viewer, "strain scale: %g %g %g %g %g\n", (double)fit->scale[0], (double)fit->scale[1], (double)fit->scale[2], (double)fit->scale[3], (double)fit->scale[5]));
-    for (int t = 1; t < HYLC_PLAN_NTERM; t++) {
-      char knots[64], range[160];
+    for (int t = 1; t < HYLC_PLAN_NTERM3; t++) {
+      char knots[64], range[240];
       if (!fit->has[t]) {
-        PetscCall(Line(viewer, "%-8s not fitted (%s)\n", HylcPlanTermName(t), (fit->terms >> t) & 1 ? "no samples" : "not in -fit_terms"));
+        if (t < HYLC_PLAN_NTERM) PetscCall(Line(viewer, "%-8s not fitted (%s)\n", HylcPlanTermName(t), (fit->terms >> t) & 1 ? "no samples" : "not in -fit_terms"));
         continue;
       }
       if (t <= 5) {
         const int c = t - 1;
         PetscCall(Fmt(knots, sizeof(knots), "%" PetscInt_FMT " knots", fit->s1[c].n));
         PetscCall(Fmt(range, sizeof(range), "%s in [%.4g, %.4g]", HylcPlanTermName(t), (double)fit->statMin[t][0], (double)fit->statMax[t][0]));
+      } else if (t >= HYLC_PLAN_NTERM) {
+        const hylcmat_term3d *s = &fit->s3[t - HYLC_PLAN_NTERM];
+        PetscCall(Fmt(knots, sizeof(knots), "%dx%dx%d knots", s->nu, s->nv, s->nw));
+        PetscCall(Fmt(range, sizeof(range), "%s in [%.4g, %.4g], %s in [%.4g, %.4g], %s in [%.4g, %.4g]%s", HylcCoordNames[s->k0], (double)fit->statMin[t][0], (double)fit->statMax[t][0], HylcCoordNames[s->k1], (double)fit->statMin[t][1],
+                      (double)fit->statMax[t][1], HylcCoordNames[s->k2], (double)fit->statMin[t][2], (double)fit->statMax[t][2], fit->missing3[t - HYLC_PLAN_NTERM] ? " (nodes without a converged sample: 0)" : ""));
       } else {
         int ci, cj;
         HylcPlanPair(t, &ci, &cj);

@@ -386,16 +386,27 @@ PetscErrorCode HylcFitCompute(HylcFit fit)
     PetscCall(PetscFree3(u, v, l));
     PetscCall(PetscLogEventEnd(HYLC_FitTerm, fit, 0, 0, 0));
   }
+  /* the 3D terms (hylc's extension; the fabric method only): residuals of their grids against the 1D and 2D terms */
+  for (int t = HYLC_PLAN_NTERM; t < HYLC_PLAN_NTERM3 && fit->methodUsed == HYLC_FIT_METHOD_FABRIC; t++) {
+    PetscInt n = 0;
+    if (!((fit->terms >> t) & 1)) continue;
+    for (PetscInt k = 0; k < fit->n; k++) n += fit->term[k] == t;
+    if (!n) continue;
+    PetscCall(PetscLogEventBegin(HYLC_FitTerm, fit, 0, 0, 0));
+    PetscCall(HylcFitTerm3DFabric_Private(fit, t));
+    fit->has[t] = PETSC_TRUE;
+    PetscCall(PetscLogEventEnd(HYLC_FitTerm, fit, 0, 0, 0));
+  }
   fit->computed = PETSC_TRUE;
   /* statistics of the model against each term's data */
-  for (int t = 1; t < HYLC_PLAN_NTERM; t++) {
+  for (int t = 1; t < HYLC_PLAN_NTERM3; t++) {
     PetscReal ss = 0, rng = 0, bss[HYLC_FIT_NBAND] = {0, 0, 0}, bref[HYLC_FIT_NBAND] = {0, 0, 0};
     PetscInt  cnt  = 0;
-    int       c[2] = {t - 1, -1};
+    int       c[3] = {-1, -1, -1};
     if (!fit->has[t]) continue;
     for (int b = 0; b < HYLC_FIT_NBAND; b++) fit->statBandN[t][b] = 0;
-    if (t >= 6) HylcPlanPair(t, &c[0], &c[1]);
-    for (int a = 0; a < 2; a++) {
+    for (int a = 0; a < HylcPlanTermDim(t); a++) c[a] = HylcPlanAxisCoord(t, a);
+    for (int a = 0; a < 3; a++) {
       fit->statMin[t][a] = PETSC_MAX_REAL;
       fit->statMax[t][a] = PETSC_MIN_REAL;
     }
@@ -407,7 +418,7 @@ PetscErrorCode HylcFitCompute(HylcFit fit)
       rng = PetscMax(rng, PetscAbsReal(fit->psi[k] - fit->f0));
       cnt++;
       int band = 0;
-      for (int a = 0; a < 2; a++) {
+      for (int a = 0; a < 3; a++) {
         if (c[a] < 0) continue;
         const PetscReal x  = fit->z[6 * k + HylcPlanStrainIndex(c[a])];
         const int       kc = c[a] >= 3; /* a curvature */

@@ -132,7 +132,10 @@ static void Free2D(hylcmat *m, int q)
 }
 
 /* the arrays of a 3D term, in the order of hylcmat_term3d */
-#define T3ARRAYS(t) {&(t)->tu, &(t)->tv, &(t)->tw, &(t)->p, &(t)->mu, &(t)->mv, &(t)->mw, &(t)->muv, &(t)->muw, &(t)->mvw, &(t)->muvw}
+#define T3ARRAYS(t)                                                                                                  \
+  {                                                                                                                  \
+    &(t)->tu, &(t)->tv, &(t)->tw, &(t)->p, &(t)->mu, &(t)->mv, &(t)->mw, &(t)->muv, &(t)->muw, &(t)->mvw, &(t)->muvw \
+  }
 
 static void Free3D(hylcmat *m, int r)
 {
@@ -401,12 +404,12 @@ const char *hylcmat_term3d_name(int r) { return r >= 0 && r < HYLCMAT_N3D ? Hylc
 
 int hylcmat_set_term3d(hylcmat *m, const hylcmat_term3d *s, char *err, size_t errlen)
 {
-  hm_err        E = {err, errlen};
-  char          what[64];
-  int           r;
-  size_t        N;
-  double       *a[11];
-  const double *src[11];
+  hm_err                   E = {err, errlen};
+  char                     what[64];
+  int                      r;
+  size_t                   N;
+  double                  *a[11];
+  const double            *src[11];
   static const char *const names[11] = {"tu", "tv", "tw", "p", "mu", "mv", "mw", "muv", "muw", "mvw", "muvw"};
 
   HM_CHECK(m && s, &E, HYLCMAT_ERR_ARG, "hylcmat_set_term3d: NULL argument");
@@ -418,9 +421,9 @@ int hylcmat_set_term3d(hylcmat *m, const hylcmat_term3d *s, char *err, size_t er
   HM_CALL(CheckKnots(&E, what, "tv", s->nv, s->tv));
   HM_CALL(CheckKnots(&E, what, "tw", s->nw, s->tw));
   HM_CHECK((double)s->nu * s->nv * s->nw < 1e8, &E, HYLCMAT_ERR_FORMAT, "%s: %d x %d x %d nodes: too many", what, s->nu, s->nv, s->nw);
-  N       = (size_t)s->nu * (size_t)s->nv * (size_t)s->nw;
-  src[0]  = s->tu, src[1] = s->tv, src[2] = s->tw, src[3] = s->p, src[4] = s->mu, src[5] = s->mv, src[6] = s->mw;
-  src[7]  = s->muv, src[8] = s->muw, src[9] = s->mvw, src[10] = s->muvw;
+  N      = (size_t)s->nu * (size_t)s->nv * (size_t)s->nw;
+  src[0] = s->tu, src[1] = s->tv, src[2] = s->tw, src[3] = s->p, src[4] = s->mu, src[5] = s->mv, src[6] = s->mw;
+  src[7] = s->muv, src[8] = s->muw, src[9] = s->mvw, src[10] = s->muvw;
   for (int i = 3; i < 11; i++) HM_CALL(CheckFinite(&E, what, names[i], (int)N, src[i]));
   for (int i = 0; i < 11; i++) a[i] = Copy(src[i], i == 0 ? (size_t)s->nu : i == 1 ? (size_t)s->nv : i == 2 ? (size_t)s->nw : N);
   for (int i = 0; i < 11; i++)

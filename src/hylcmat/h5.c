@@ -82,7 +82,7 @@ static int ReadData(const hm_doc *d, hid_t loc, const char path[], const char na
 {
   hid_t   ds, sp;
   int     r;
-  hsize_t dd[2] = {1, 1}, n = 1;
+  hsize_t dd[3] = {1, 1, 1}, n = 1;
 
   HM_CALL(Exists(d, loc, path, name, 1, NULL));
   CallH5Id(ds, H5Dopen2(loc, name, H5P_DEFAULT));
@@ -159,6 +159,53 @@ static int ReadExt(const hm_doc *d, hid_t g, const char path[], int *ext)
   return HYLCMAT_OK;
 }
 
+/* the 3D terms (format version 2): group /3D/<u-v-w> with attributes k0, k1, k2, ext, knots tu, tv, tw and
+   the node arrays p, mu, mv, mw, muv, muw, mvw, muvw of shape (nw, nv, nu) */
+static int Read3D(hm_doc *d, hid_t file)
+{
+  char                     gpath[64];
+  int                      has;
+  hid_t                    g3, g;
+  static const char *const arrays[] = {"p", "mu", "mv", "mw", "muv", "muw", "mvw", "muvw"};
+
+  HM_CALL(OpenGroup(d, file, "/", "3D", HYLCMAT_N3D, HylcTripleNames, gpath, &g3, &has));
+  if (!has) return HYLCMAT_OK;
+  for (int r = 0; r < HYLCMAT_N3D; r++) {
+    hylcmat_term3d *s = &d->s3[d->n3];
+    char            path[64];
+    hsize_t         nu = 0, nv = 0, nw = 0, dims[3];
+    long long       k[3];
+    const double  **out[8] = {&s->p, &s->mu, &s->mv, &s->mw, &s->muv, &s->muw, &s->mvw, &s->muvw};
+    HM_CALL(OpenGroup(d, g3, gpath, HylcTripleNames[r], 0, NULL, path, &g, &has));
+    if (!has) continue;
+    HM_CALL(ReadAttrLong(d, g, path, "k0", &k[0]));
+    HM_CALL(ReadAttrLong(d, g, path, "k1", &k[1]));
+    HM_CALL(ReadAttrLong(d, g, path, "k2", &k[2]));
+    HM_CHECK(k[0] == HylcTripleCoords[r][0] && k[1] == HylcTripleCoords[r][1] && k[2] == HylcTripleCoords[r][2], d->E, HYLCMAT_ERR_CONTENT, "%s: %s has (k0, k1, k2) = (%lld, %lld, %lld), expected (%d, %d, %d)", d->name, path, k[0], k[1], k[2],
+             (int)HylcTripleCoords[r][0], (int)HylcTripleCoords[r][1], (int)HylcTripleCoords[r][2]);
+    s->k0 = HylcTripleCoords[r][0];
+    s->k1 = HylcTripleCoords[r][1];
+    s->k2 = HylcTripleCoords[r][2];
+    HM_CALL(ReadExt(d, g, path, &s->ext));
+    d->n3++;
+    HM_CALL(ReadData(d, g, path, "tu", 1, &nu, (double **)&s->tu, NULL));
+    HM_CALL(ReadData(d, g, path, "tv", 1, &nv, (double **)&s->tv, NULL));
+    HM_CALL(ReadData(d, g, path, "tw", 1, &nw, (double **)&s->tw, NULL));
+    s->nu = (int)nu;
+    s->nv = (int)nv;
+    s->nw = (int)nw;
+    for (int a = 0; a < 8; a++) {
+      dims[0] = nw;
+      dims[1] = nv;
+      dims[2] = nu;
+      HM_CALL(ReadData(d, g, path, arrays[a], 3, dims, (double **)out[a], NULL));
+    }
+    CallH5(H5Gclose(g));
+  }
+  CallH5(H5Gclose(g3));
+  return HYLCMAT_OK;
+}
+
 static int ReadContents(hm_doc *d, hid_t file)
 {
   char                     fmt[64], gpath[64];
@@ -167,7 +214,7 @@ static int ReadContents(hm_doc *d, hid_t file)
   double                  *buf;
   int                      has;
   hid_t                    g1, g2, g;
-  static const char *const top[] = {"density", "constant", "strain_scale", "strain_shift", "1D", "2D"};
+  static const char *const top[] = {"density", "constant", "strain_scale", "strain_shift", "1D", "2D", "3D"};
 
   {
     htri_t e;
@@ -178,7 +225,7 @@ static int ReadContents(hm_doc *d, hid_t file)
   HM_CHECK(!strcmp(fmt, HYLC_MATERIAL_FORMAT), d->E, HYLCMAT_ERR_CONTENT, "%s: an HDF5 file of format '%s', not a hylc material file ('%s')", d->name, fmt, HYLC_MATERIAL_FORMAT);
   HM_CALL(ReadAttrLong(d, file, "/", "format_version", &version));
   HM_CHECK(version >= 1 && version <= HYLC_MATERIAL_FORMAT_VERSION, d->E, HYLCMAT_ERR_CONTENT, "%s: material format version %lld is not supported (this hylc reads version %d)", d->name, version, HYLC_MATERIAL_FORMAT_VERSION);
-  HM_CALL(CheckMembers(d, file, "/", 6, top));
+  HM_CALL(CheckMembers(d, file, "/", version >= 2 ? 7 : 6, top));
   HM_CALL(ReadScalar(d, file, "density", &d->density));
   HM_CALL(ReadScalar(d, file, "constant", &d->C0));
   buf = NULL;
@@ -243,6 +290,7 @@ static int ReadContents(hm_doc *d, hid_t file)
     }
     CallH5(H5Gclose(g2));
   }
+  if (version >= 2) HM_CALL(Read3D(d, file));
   return HYLCMAT_OK;
 }
 

@@ -73,9 +73,9 @@ static int StrainOnly(const hylcmat_path *path, double s, const double p[3], dou
     z[2] = p[1];
     return 0;
   case HYLCMAT_PATH_BENDING:
-    z[0]                    = p[0];
-    z[1]                    = p[1];
-    z[2]                    = p[2];
+    z[0]                   = p[0];
+    z[1]                   = p[1];
+    z[2]                   = p[2];
     z[path->angle ? 5 : 3] = s;
     return 0;
   }
@@ -84,7 +84,7 @@ static int StrainOnly(const hylcmat_path *path, double s, const double p[3], dou
 
 int hylcmat_path_strain(const hylcmat_path *path, double s, const double p[], double z[6], double J[])
 {
-  const int nf = hylcmat_path_nfree(path);
+  const int nf   = hylcmat_path_nfree(path);
   double    q[3] = {0, 0, 0}, zp[6], zm[6];
   if (nf < 0 || !p || !z) return HYLCMAT_ERR_ARG;
   for (int i = 0; i < nf; i++) q[i] = p[i];
@@ -92,10 +92,12 @@ int hylcmat_path_strain(const hylcmat_path *path, double s, const double p[], do
   if (!J) return HYLCMAT_OK;
   /* dz/d(s, p) (6 x (1 + nf), row-major): exact for the linear maps, central differences for a rotation */
   for (int c = 0; c <= nf; c++) {
-    const double h = 1e-7;
+    const double h  = 1e-7;
     double       sp = s, sm = s, qp[3] = {q[0], q[1], q[2]}, qm[3] = {q[0], q[1], q[2]};
-    if (c) qp[c - 1] += h, qm[c - 1] -= h;
-    else sp += h, sm -= h;
+    if (c)
+      qp[c - 1] += h, qm[c - 1] -= h;
+    else
+      sp += h, sm -= h;
     if (StrainOnly(path, sp, qp, zp) || StrainOnly(path, sm, qm, zm)) return HYLCMAT_ERR_ARG;
     for (int k = 0; k < 6; k++) J[k * (1 + nf) + c] = (zp[k] - zm[k]) / (2 * h);
   }
@@ -153,8 +155,8 @@ static int Admissible(const hylcmat_path *path, int nf, double s, const double p
 
 int hylcmat_path_state(const hylcmat *m, const hylcmat_path *path, double s, const double guess[], hylcmat_path_result *st, char *err, size_t errlen)
 {
-  hm_err       E  = {err, errlen};
-  const int    nf = hylcmat_path_nfree(path);
+  hm_err       E    = {err, errlen};
+  const int    nf   = hylcmat_path_nfree(path);
   double       p[3] = {0, 0, 0}, psi, gp[3], H[9], f, gz[6], d[3] = {0, 0, 0};
   const double xtol = 1e-11, maxStep = 0.1;
   const int    maxIt = 200, maxRestarts = 20;
@@ -168,8 +170,7 @@ int hylcmat_path_state(const hylcmat *m, const hylcmat_path *path, double s, con
   HM_CHECK(isfinite(s) && isfinite(path->angle), &E, HYLCMAT_ERR_ARG, "%s path: the strain %g and the angle %g must be finite", name, s, path->angle);
   HM_CHECK(path->kind != HYLCMAT_PATH_BENDING || path->angle == 0 || path->angle == 90, &E, HYLCMAT_ERR_ARG, "bending path: the axis angle %g must be 0 (II00) or 90 (II11)", path->angle);
   HM_CHECK(path->kind != HYLCMAT_PATH_UNIAXIAL || (path->angle >= 0 && path->angle <= 90), &E, HYLCMAT_ERR_ARG, "uniaxial path: the angle %g must be in [0, 90] degrees from the material x axis", path->angle);
-  HM_CHECK((path->kind != HYLCMAT_PATH_UNIAXIAL && path->kind != HYLCMAT_PATH_EQUIBIAXIAL) || (s >= 0 && s < 1), &E, HYLCMAT_ERR_ARG,
-           "%s path: the stretch %g is outside [0, 1) (a tension test: a compressed strip buckles)", name, s);
+  HM_CHECK((path->kind != HYLCMAT_PATH_UNIAXIAL && path->kind != HYLCMAT_PATH_EQUIBIAXIAL) || (s >= 0 && s < 1), &E, HYLCMAT_ERR_ARG, "%s path: the stretch %g is outside [0, 1) (a tension test: a compressed strip buckles)", name, s);
   HM_CHECK(path->kind != HYLCMAT_PATH_SHEAR || fabs(s) < 0.99, &E, HYLCMAT_ERR_ARG, "shear path: sa = %g must be in (-0.99, 0.99)", s);
   if (guess)
     for (int a = 0; a < nf; a++) {
@@ -178,9 +179,9 @@ int hylcmat_path_state(const hylcmat *m, const hylcmat_path *path, double s, con
     }
   HM_CHECK(Admissible(path, nf, s, p), &E, HYLCMAT_ERR_ARG, "%s path at %g: the starting free strains give an invalid strain", name, s);
   if (!guess) { /* the lowest point of a grid of the free strains (a table can have several minima) */
-    const int    K = nf == 1 ? 50 : nf == 2 ? 25 : 8;
-    const double h = nf == 3 ? 0.05 : 0.02;
-    double       best = INFINITY;
+    const int    K      = nf == 1 ? 50 : nf == 2 ? 25 : 8;
+    const double h      = nf == 3 ? 0.05 : 0.02;
+    double       best   = INFINITY;
     int          idx[3] = {-K, nf > 1 ? -K : 0, nf > 2 ? -K : 0};
     for (;;) {
       const double q[3] = {h * idx[0], h * idx[1], h * idx[2]};

@@ -3,6 +3,7 @@
    built with HYLCMAT_WITH_HDF5 into libhylc). */
 #include <hylc/private/materialimpl.h>
 #include <hylc/private/h5util.h>
+#include <hylc/strain.h>
 #include <string.h>
 #include <time.h>
 #include <unistd.h>
@@ -10,7 +11,7 @@
 /* what the HDF5 calls work on, for HylcCallHDF5's messages */
 #define HylcH5Where "the in-memory HDF5 image"
 
-/* a dataset of doubles (dv) or int32 (iv) of rank 0 (dims NULL), 1 or 2, with units and description */
+/* a dataset of doubles (dv) or int32 (iv) of rank 0 (dims NULL), 1, 2 or 3, with units and description */
 static PetscErrorCode Dataset(hid_t loc, const char name[], int rank, const hsize_t dims[], const double *dv, const int *iv, const char units[], const char description[])
 {
   PetscFunctionBegin;
@@ -27,8 +28,9 @@ static PetscErrorCode WriteContents(hid_t file, HylcMaterial m, const char optio
   struct tm         tm;
   unsigned          maj, min, rel;
   char             *allopts = NULL;
-  hid_t             g1, g2, g;
+  hid_t             g1, g2, g3, g;
   hsize_t           dim5 = 5;
+  int               n3   = 0;
   double            scale[5];
   int               shift[5];
   const char *const coordinate[5] = {"sx (stretch along x)", "sa (shear: cosine of the angle between the deformed material axes)", "sy (stretch along y)", "x-bending curvature (eigenvalue of II)", "y-bending curvature (eigenvalue of II)"};
@@ -41,10 +43,16 @@ static PetscErrorCode WriteContents(hid_t file, HylcMaterial m, const char optio
   snprintf(h5v, sizeof(h5v), "%u.%u.%u", maj, min, rel);
   if (!optionsText) PetscCall(PetscOptionsGetAll(NULL, &allopts));
   HylcCallHDF5(HylcH5WriteAttrString(file, "format", HYLC_MATERIAL_FORMAT));
-  HylcCallHDF5(HylcH5WriteAttrLong(file, "format_version", HYLC_MATERIAL_FORMAT_VERSION));
-  HylcCallHDF5(HylcH5WriteAttrString(file, "description",
-                                     "Homogenized yarn-level cloth material: Psi(s) = constant + 1D terms f_k(s_k / sigma_k) + 2D terms f_k0k1(s_k0 / sigma_k0, s_k1 / sigma_k1), cubic/bicubic Hermite splines in normalized strains, bending terms "
-                                     "split over the eigenvalues of II (docs/material.md). Equivalent to the ARCSim-HYLC JSON."));
+  for (int r = 0; r < HYLCMAT_N3D; r++) {
+    hylcmat_term3d t;
+    if (hylcmat_term3d_get(m->hm, HylcTripleCoords[r][0], HylcTripleCoords[r][1], HylcTripleCoords[r][2], &t)) n3++;
+  }
+  /* a table without 3D terms stays readable by a hylc that reads version 1 */
+  HylcCallHDF5(HylcH5WriteAttrLong(file, "format_version", n3 ? HYLC_MATERIAL_FORMAT_VERSION : 1));
+  HylcCallHDF5(
+      HylcH5WriteAttrString(file, "description",
+                            "Homogenized yarn-level cloth material: Psi(s) = constant + 1D terms f_k(s_k / sigma_k) + 2D terms f_k0k1(s_k0 / sigma_k0, s_k1 / sigma_k1), cubic/bicubic Hermite splines in normalized strains, bending terms "
+                            "split over the eigenvalues of II (docs/material.md); with format_version 2, 3D terms f_k0k1k2 (hylc's extension, tricubic Hermite, not in the ARCSim-HYLC JSON). Without them equivalent to the ARCSim-HYLC JSON."));
   HylcCallHDF5(HylcH5WriteAttrString(file, "hylc_version", HYLC_VERSION_STRING));
   HylcCallHDF5(HylcH5WriteAttrString(file, "petsc_version", petscv));
   HylcCallHDF5(HylcH5WriteAttrString(file, "hdf5_version", h5v));
@@ -114,6 +122,44 @@ static PetscErrorCode WriteContents(hid_t file, HylcMaterial m, const char optio
     HylcCallHDF5(H5Gclose(g));
   }
   HylcCallHDF5(H5Gclose(g2));
+  if (!n3) PetscFunctionReturn(PETSC_SUCCESS);
+
+  HylcCallHDF5Id(g3, H5Gcreate2(file, "3D", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+  HylcCallHDF5(HylcH5WriteAttrString(g3, "description",
+                                     "three-dimensional terms f_k0k1k2(u, v, w) (hylc's extension of the paper's model), u, v, w the normalized strains k0, k1, k2, one group per term present: tricubic Hermite spline with knots tu, tv, tw and "
+                                     "node arrays of shape (len(tw), len(tv), len(tu)): p[iw, iv, iu] is the value at (tu[iu], tv[iv], tw[iw]); a bending coordinate enters through the eigenvalues of II as in the 2D terms"));
+  for (int r = 0; r < HYLCMAT_N3D; r++) {
+    hylcmat_term3d t;
+    hsize_t        nu, nv, nw, dims[3];
+    if (!hylcmat_term3d_get(m->hm, HylcTripleCoords[r][0], HylcTripleCoords[r][1], HylcTripleCoords[r][2], &t)) continue;
+    nu      = (hsize_t)t.nu;
+    nv      = (hsize_t)t.nv;
+    nw      = (hsize_t)t.nw;
+    dims[0] = nw;
+    dims[1] = nv;
+    dims[2] = nu;
+    HylcCallHDF5Id(g, H5Gcreate2(g3, HylcTripleNames[r], H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+    snprintf(desc, sizeof(desc), "f_%d%d%d(u, v, w) of u = %s / %.17g, v = %s / %.17g, w = %s / %.17g", t.k0, t.k1, t.k2, coordinate[t.k0], scale[t.k0], coordinate[t.k1], scale[t.k1], coordinate[t.k2], scale[t.k2]);
+    HylcCallHDF5(HylcH5WriteAttrString(g, "description", desc));
+    HylcCallHDF5(HylcH5WriteAttrLong(g, "k0", (long long)t.k0));
+    HylcCallHDF5(HylcH5WriteAttrLong(g, "k1", (long long)t.k1));
+    HylcCallHDF5(HylcH5WriteAttrLong(g, "k2", (long long)t.k2));
+    HylcCallHDF5(HylcH5WriteAttrLong(g, "ext", (long long)t.ext));
+    HylcCallHDF5(HylcH5WriteAttrString(g, "extrapolation", ExtNames[t.ext]));
+    PetscCall(Dataset(g, "tu", 1, &nu, t.tu, NULL, "1", "knots of u (normalized strain k0), strictly increasing"));
+    PetscCall(Dataset(g, "tv", 1, &nv, t.tv, NULL, "1", "knots of v (normalized strain k1), strictly increasing"));
+    PetscCall(Dataset(g, "tw", 1, &nw, t.tw, NULL, "1", "knots of w (normalized strain k2), strictly increasing"));
+    PetscCall(Dataset(g, "p", 3, dims, t.p, NULL, "J/m^2", "values at the nodes, p[iw, iv, iu] at (tu[iu], tv[iv], tw[iw])"));
+    PetscCall(Dataset(g, "mu", 3, dims, t.mu, NULL, "J/m^2", "df/du at the nodes"));
+    PetscCall(Dataset(g, "mv", 3, dims, t.mv, NULL, "J/m^2", "df/dv at the nodes"));
+    PetscCall(Dataset(g, "mw", 3, dims, t.mw, NULL, "J/m^2", "df/dw at the nodes"));
+    PetscCall(Dataset(g, "muv", 3, dims, t.muv, NULL, "J/m^2", "d2f/dudv at the nodes"));
+    PetscCall(Dataset(g, "muw", 3, dims, t.muw, NULL, "J/m^2", "d2f/dudw at the nodes"));
+    PetscCall(Dataset(g, "mvw", 3, dims, t.mvw, NULL, "J/m^2", "d2f/dvdw at the nodes"));
+    PetscCall(Dataset(g, "muvw", 3, dims, t.muvw, NULL, "J/m^2", "d3f/dudvdw at the nodes"));
+    HylcCallHDF5(H5Gclose(g));
+  }
+  HylcCallHDF5(H5Gclose(g3));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -578,6 +578,60 @@ PetscErrorCode HylcMaterialSet2D(HylcMaterial m, const HylcSpline2D *s)
 }
 
 /*@C
+  HylcMaterialSet3D - Sets a 3D term f_k0k1k2 (hylc's extension of the paper's model, a tricubic Hermite spline
+  in the normalized strains; docs/material.md, "Three-strain terms"), replacing one of the same triple.
+
+  Not collective
+
+  Input Parameters:
++ m - the material
+- t - the term (copied; checked as hylcmat_set_term3d(): a triple of the model, strictly increasing knots,
+      finite values)
+
+  Level: intermediate
+
+.seealso: HylcMaterialGet3D(), HylcMaterialSet2D()
+@*/
+PetscErrorCode HylcMaterialSet3D(HylcMaterial m, const hylcmat_term3d *t)
+{
+  char err[512] = "";
+
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(m, HYLC_MATERIAL_CLASSID, 1);
+  PetscValidPointer(t, 2);
+  CallHM(PetscObjectComm((PetscObject)m), hylcmat_set_term3d(m->hm, t, err, sizeof(err)));
+  HylcMaterialSync_Private(m);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcMaterialGet3D - The 3D term of the triple (k0, k1, k2) (include/hylc/strain.h, HylcTripleCoords).
+
+  Not collective
+
+  Input Parameters:
++ m  - the material
+- k0, k1, k2 - the triple
+
+  Output Parameters:
++ t   - the term (pointers owned by the material, valid until it changes)
+- has - PETSC_FALSE when the material has no such term
+
+  Level: intermediate
+
+.seealso: HylcMaterialSet3D()
+@*/
+PetscErrorCode HylcMaterialGet3D(HylcMaterial m, PetscInt k0, PetscInt k1, PetscInt k2, hylcmat_term3d *t, PetscBool *has)
+{
+  PetscFunctionBegin;
+  PetscValidHeaderSpecific(m, HYLC_MATERIAL_CLASSID, 1);
+  PetscValidPointer(t, 5);
+  PetscValidBoolPointer(has, 6);
+  *has = (PetscBool)hylcmat_term3d_get(m->hm, (int)k0, (int)k1, (int)k2, t);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
   HylcMaterialGet1D - The 1D term of coordinate k (include/hylc/strain.h: 0 sx, 1 sa, 2 sy, 3 II00, 4 II11).
 
   Not collective

@@ -265,8 +265,8 @@ PetscErrorCode HylcMicroPathResultView(const HylcMicroPathResult *r, PetscViewer
   for (int a = 0; a < nf; a++) gmax = PetscMax(gmax, PetscAbsReal(r->gfree[a]));
   /* C formatting: PETSc's printf appends '.' to integral %g values */
   snprintf(buf, sizeof(buf), "%s %g: s %.6g force %.9e %s z %.6e %.6e %.6e %.6e %.6e %.6e psi %.10e free gradient %.2e step %.1e %s; %d Newton steps, %d solves (%d not converged), %d micro iterations, %.2f s\n", hylcmat_path_name(r->path.kind),
-           r->path.angle, (double)r->s, (double)r->force, r->path.kind == HYLCMAT_PATH_BENDING ? "N" : "N/m", (double)r->z[0], (double)r->z[1], (double)r->z[2], (double)r->z[3], (double)r->z[4], (double)r->z[5], (double)r->psi, (double)gmax, (double)r->step,
-           r->converged ? (r->gradientStop ? "converged (gradient test)" : "converged") : "NOT CONVERGED", (int)r->iterations, (int)r->solves, (int)r->failedSolves, (int)r->microIterations, r->time);
+           r->path.angle, (double)r->s, (double)r->force, r->path.kind == HYLCMAT_PATH_BENDING ? "N" : "N/m", (double)r->z[0], (double)r->z[1], (double)r->z[2], (double)r->z[3], (double)r->z[4], (double)r->z[5], (double)r->psi, (double)gmax,
+           (double)r->step, r->converged ? (r->gradientStop ? "converged (gradient test)" : "converged") : "NOT CONVERGED", (int)r->iterations, (int)r->solves, (int)r->failedSolves, (int)r->microIterations, r->time);
   PetscCall(PetscViewerASCIIPrintf(viewer, "%s", buf));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

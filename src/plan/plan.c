@@ -4,19 +4,43 @@
 #include <string.h>
 
 /* the terms are the shared vocabulary's (include/hylc/strain.h) after the zero sample: 1..5 its coordinates,
-   6..14 its pairs */
+   6..14 its pairs, 15..17 its triples */
 const char *HylcPlanTermName(int t)
 {
   if (t == 0) return "zero";
   if (t >= 1 && t <= HYLC_NCOORD) return HylcCoordNames[t - 1];
   if (t > HYLC_NCOORD && t < HYLC_PLAN_NTERM) return HylcPairNames[t - 1 - HYLC_NCOORD];
+  if (t >= HYLC_PLAN_NTERM && t < HYLC_PLAN_NTERM3) return HylcTripleNames[t - HYLC_PLAN_NTERM];
   return "unknown";
+}
+
+int HylcPlanTermDim(int t)
+{
+  if (t == 0) return 0;
+  if (t >= 1 && t <= HYLC_NCOORD) return 1;
+  if (t > HYLC_NCOORD && t < HYLC_PLAN_NTERM) return 2;
+  if (t >= HYLC_PLAN_NTERM && t < HYLC_PLAN_NTERM3) return 3;
+  return -1;
 }
 
 void HylcPlanPair(int t, int *ci, int *cj)
 {
   *ci = HylcPairCoords[t - 1 - HYLC_NCOORD][0];
   *cj = HylcPairCoords[t - 1 - HYLC_NCOORD][1];
+}
+
+void HylcPlanTriple(int t, int c[3])
+{
+  for (int a = 0; a < 3; a++) c[a] = HylcTripleCoords[t - HYLC_PLAN_NTERM][a];
+}
+
+int HylcPlanAxisCoord(int t, int a)
+{
+  const int d = HylcPlanTermDim(t);
+  if (d < 1 || a < 0 || a >= d) return -1;
+  if (d == 1) return t - 1;
+  if (d == 2) return HylcPairCoords[t - 1 - HYLC_NCOORD][a];
+  return HylcTripleCoords[t - HYLC_PLAN_NTERM][a];
 }
 
 int HylcPlanStrainIndex(int c) { return HylcCoordStrain[c]; }
@@ -79,17 +103,18 @@ int HylcPlanGradedKnots(double mn, double mx, double h0, double g, double hmax, 
 /* the range of axis a of term t */
 static int AxisRange(const HylcPlan *p, int t, int a, int *c, double *mn, double *mx)
 {
-  if (t < 1 || t >= HYLC_PLAN_NTERM || a < 0 || a > (t > 5)) return -1;
-  if (t <= 5) {
-    *c  = t - 1;
+  const int d = HylcPlanTermDim(t);
+  if (d < 1 || a < 0 || a >= d) return -1;
+  *c = HylcPlanAxisCoord(t, a);
+  if (d == 1) {
     *mn = p->min1[*c];
     *mx = p->max1[*c];
-  } else {
-    int ci, cj;
-    HylcPlanPair(t, &ci, &cj);
-    *c  = a ? cj : ci;
+  } else if (d == 2) {
     *mn = p->min2[t - 6][a];
     *mx = p->max2[t - 6][a];
+  } else {
+    *mn = p->min3[t - HYLC_PLAN_NTERM][a];
+    *mx = p->max3[t - HYLC_PLAN_NTERM][a];
   }
   return 0;
 }
@@ -99,6 +124,7 @@ int HylcPlanAxisKnots(const HylcPlan *p, int t, int a, double K[HYLC_PLAN_MAXAXI
   int    c;
   double mn, mx;
   if (p->spacing != HYLC_PLAN_SPACING_GRADED || AxisRange(p, t, a, &c, &mn, &mx)) return -1;
+  if (HylcPlanTermDim(t) == 3) return HylcPlanGradedKnots(mn, mx, 2 * p->h0[c], p->growth > HYLC_PLAN_GROWTH3 ? p->growth : HYLC_PLAN_GROWTH3, p->hmax * (mx - mn) > 2 * p->h0[c] ? p->hmax * (mx - mn) : 2 * p->h0[c], HYLC_PLAN_MAXAXIS, K);
   return HylcPlanGradedKnots(mn, mx, p->h0[c], p->growth, p->hmax * (mx - mn), HYLC_PLAN_MAXAXIS, K);
 }
 
@@ -108,6 +134,7 @@ int HylcPlanAxis(const HylcPlan *p, int t, int a, double Z[HYLC_PLAN_MAXAXIS])
   double mn, mx;
   if (AxisRange(p, t, a, &c, &mn, &mx)) return -1;
   if (p->spacing == HYLC_PLAN_SPACING_PAPER) {
+    if (t >= HYLC_PLAN_NTERM) return -1;
     n = t <= 5 ? p->n1 : p->n2;
     if (n > HYLC_PLAN_MAXAXIS || HylcSampleRange(c, mn, mx, n, Z)) return -1;
     return n;
@@ -115,11 +142,12 @@ int HylcPlanAxis(const HylcPlan *p, int t, int a, double Z[HYLC_PLAN_MAXAXIS])
   if (p->spacing != HYLC_PLAN_SPACING_GRADED || p->sub < 1) return -1;
   {
     double    K[HYLC_PLAN_MAXAXIS];
-    const int nk = HylcPlanAxisKnots(p, t, a, K);
-    if (nk < 1 || (long)(nk - 1) * p->sub + 1 > HYLC_PLAN_MAXAXIS) return -1;
+    const int nk  = HylcPlanAxisKnots(p, t, a, K);
+    const int sub = t >= HYLC_PLAN_NTERM ? 1 : p->sub;
+    if (nk < 1 || (long)(nk - 1) * sub + 1 > HYLC_PLAN_MAXAXIS) return -1;
     n = 0;
     for (int i = 0; i + 1 < nk; i++)
-      for (int q = 0; q < p->sub; q++) Z[n++] = q ? K[i] + (K[i + 1] - K[i]) * q / p->sub : K[i];
+      for (int q = 0; q < sub; q++) Z[n++] = q ? K[i] + (K[i + 1] - K[i]) * q / sub : K[i];
     Z[n++] = K[nk - 1];
     return n;
   }
@@ -127,23 +155,22 @@ int HylcPlanAxis(const HylcPlan *p, int t, int a, double Z[HYLC_PLAN_MAXAXIS])
 
 long HylcPlanTermSize(const HylcPlan *p, int t)
 {
-  double Z[HYLC_PLAN_MAXAXIS];
-  long   n;
-  if (t < 0 || t >= HYLC_PLAN_NTERM || !(p->terms & (1 << t))) return 0;
-  if (t == 0) return 1;
-  n = HylcPlanAxis(p, t, 0, Z);
-  if (n < 0) return 0;
-  if (t <= 5) return n;
-  {
-    const long m = HylcPlanAxis(p, t, 1, Z);
-    return m < 0 ? 0 : n * m;
+  double    Z[HYLC_PLAN_MAXAXIS];
+  long      n = 1;
+  const int d = HylcPlanTermDim(t);
+  if (d < 0 || !(p->terms & (1 << t))) return 0;
+  for (int a = 0; a < d; a++) {
+    const long m = HylcPlanAxis(p, t, a, Z);
+    if (m < 0) return 0;
+    n *= m;
   }
+  return n;
 }
 
 long HylcPlanSize(const HylcPlan *p)
 {
   long n = 0;
-  for (int t = 0; t < HYLC_PLAN_NTERM; t++) n += HylcPlanTermSize(p, t);
+  for (int t = 0; t < HYLC_PLAN_NTERM3; t++) n += HylcPlanTermSize(p, t);
   return n;
 }
 
@@ -152,26 +179,21 @@ int HylcPlanSample(const HylcPlan *p, long k, double z[6], int *term)
   double Z[HYLC_PLAN_MAXAXIS];
   for (int i = 0; i < 6; i++) z[i] = 0;
   if (k < 0) return -1;
-  for (int t = 0; t < HYLC_PLAN_NTERM; t++) {
+  for (int t = 0; t < HYLC_PLAN_NTERM3; t++) {
     const long n = HylcPlanTermSize(p, t);
+    const int  d = HylcPlanTermDim(t);
     if (k >= n) {
       k -= n;
       continue;
     }
     *term = t;
-    if (t == 0) return 0;
-    if (t <= 5) {
-      if (HylcPlanAxis(p, t, 0, Z) < 0) return -1;
-      z[HylcPlanStrainIndex(t - 1)] = Z[k];
-      return 0;
+    /* the last axis innermost */
+    for (int a = d - 1; a >= 0; a--) {
+      const int m = HylcPlanAxis(p, t, a, Z);
+      if (m < 1) return -1;
+      z[HylcPlanStrainIndex(HylcPlanAxisCoord(t, a))] = Z[k % m];
+      k /= m;
     }
-    int       ci, cj;
-    const int nv = HylcPlanAxis(p, t, 1, Z);
-    if (nv < 1) return -1;
-    HylcPlanPair(t, &ci, &cj);
-    z[HylcPlanStrainIndex(cj)] = Z[k % nv];
-    if (HylcPlanAxis(p, t, 0, Z) < 0) return -1;
-    z[HylcPlanStrainIndex(ci)] = Z[k / nv];
     return 0;
   }
   return -1;
@@ -195,7 +217,7 @@ int HylcPlanDefaults(const char *family, double scale, HylcPlan *p)
   p->n1 = 150;
   p->n2 = 50;
   HylcPlanGradedDefaults(scale, p);
-  p->terms           = (1 << HYLC_PLAN_NTERM) - 1;
+  p->terms           = HYLC_PLAN_ALL_TERMS;
   const double lo[5] = {s0, -sa, s0, -b0 * scale, -b1 * scale}, hi[5] = {s1, sa, s1, b0 * scale, b1 * scale};
   for (int c = 0; c < 5; c++) {
     p->min1[c] = lo[c];
@@ -222,6 +244,21 @@ int HylcPlanDefaults(const char *family, double scale, HylcPlan *p)
       }
       p->min2[t - 6][a] = mn;
       p->max2[t - 6][a] = mx;
+    }
+  }
+  for (int r = 0; r < HYLC_NTRIPLE; r++) { /* where cloth lives: tension with free contraction, bias, drape */
+    const int bending = HylcTripleCoords[r][2] >= 3;
+    for (int a = 0; a < 3; a++) {
+      const int x = HylcTripleCoords[r][a];
+      double    mn, mx;
+      if (x == 0 || x == 2)
+        mn = (bending ? 0.2 : 0.45) * lo[x], mx = (bending ? 0.15 : 0.3) * hi[x];
+      else if (x == 1)
+        mn = 0.55 * lo[x], mx = 0.55 * hi[x];
+      else
+        mn = 0.35 * lo[x], mx = 0.35 * hi[x];
+      p->min3[r][a] = mn;
+      p->max3[r][a] = mx;
     }
   }
   return 0;
@@ -257,21 +294,18 @@ long HylcPlanUnits(const HylcPlan *p, long start[], long order[])
 {
   double Z[HYLC_PLAN_MAXAXIS];
   long   nu = 0, pos = 0, off = 0;
-  for (int t = 0; t < HYLC_PLAN_NTERM; t++) {
+  for (int t = 0; t < HYLC_PLAN_NTERM3; t++) {
     const long n = HylcPlanTermSize(p, t);
+    const int  d = HylcPlanTermDim(t);
     if (!n) continue;
-    if (t == 0) {
+    if (d == 0) {
       if (start) start[nu] = pos;
       if (order) order[pos] = off;
       nu++, pos++;
-    } else if (t <= 5) {
-      const int m = HylcPlanAxis(p, t, 0, Z);
-      if (m < 0) return -1;
-      HalfLines(Z, m, off, 1, &nu, &pos, start, order);
     } else {
-      const int nv = HylcPlanAxis(p, t, 1, Z);
-      if (nv < 1) return -1;
-      for (long a = 0; a < n / nv; a++) HalfLines(Z, nv, off + a * nv, 1, &nu, &pos, start, order);
+      const int m = HylcPlanAxis(p, t, d - 1, Z); /* lines along the innermost coordinate */
+      if (m < 1) return -1;
+      for (long a = 0; a < n / m; a++) HalfLines(Z, m, off + a * m, 1, &nu, &pos, start, order);
     }
     off += n;
   }

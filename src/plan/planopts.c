@@ -121,15 +121,14 @@ PetscErrorCode HylcPlanRangesApply(MPI_Comm comm, const HylcPlanRanges *ranges, 
       p.min1[c] = ranges->min[c];
       p.max1[c] = ranges->max[c];
     }
-    for (int t = 6; t < HYLC_PLAN_NTERM; t++) { /* 2D ranges follow the 1D ones in proportion */
-      int ci, cj;
-      HylcPlanPair(t, &ci, &cj);
-      for (int a = 0; a < 2; a++)
-        if ((a ? cj : ci) == c) {
-          if (mn0 != 0) p.min2[t - 6][a] *= p.min1[c] / mn0;
-          if (mx0 != 0) p.max2[t - 6][a] *= p.max1[c] / mx0;
+    for (int t = 6; t < HYLC_PLAN_NTERM3; t++) /* 2D and 3D ranges follow the 1D ones in proportion */
+      for (int a = 0; a < HylcPlanTermDim(t); a++)
+        if (HylcPlanAxisCoord(t, a) == c) {
+          double *mn = t < HYLC_PLAN_NTERM ? &p.min2[t - 6][a] : &p.min3[t - HYLC_PLAN_NTERM][a];
+          double *mx = t < HYLC_PLAN_NTERM ? &p.max2[t - 6][a] : &p.max3[t - HYLC_PLAN_NTERM][a];
+          if (mn0 != 0) *mn *= p.min1[c] / mn0;
+          if (mx0 != 0) *mx *= p.max1[c] / mx0;
         }
-    }
   }
   for (int c = 0; c < HYLC_PLAN_NCOORD; c++) {
     double Z[1];
@@ -142,12 +141,12 @@ PetscErrorCode HylcPlanRangesApply(MPI_Comm comm, const HylcPlanRanges *ranges, 
   if (ranges->hmax > 0) p.hmax = ranges->hmax;
   if (ranges->sub > 0) p.sub = (int)ranges->sub;
   if (p.spacing == HYLC_PLAN_SPACING_GRADED)
-    for (int t = 1; t < HYLC_PLAN_NTERM; t++)
-      for (int a = 0; a < (t > 5 ? 2 : 1); a++) {
+    for (int t = 1; t < HYLC_PLAN_NTERM3; t++)
+      for (int a = 0; a < HylcPlanTermDim(t); a++) {
         double    Z[HYLC_PLAN_MAXAXIS];
         const int n = HylcPlanAxis(&p, t, a, Z);
         PetscCheck(n > 0, comm, PETSC_ERR_USER_INPUT, "-sampler_spacing graded: axis %d of term %s has more than %d samples (-sampler_graded_h0 %g too small for its range, or -sampler_graded_sub too large)", a, HylcPlanTermName(t), HYLC_PLAN_MAXAXIS,
-                   p.h0[t <= 5 ? t - 1 : 0]);
+                   p.h0[HylcPlanAxisCoord(t, a)]);
       }
   p.n1    = plan->n1;
   p.n2    = plan->n2;
@@ -157,8 +156,9 @@ PetscErrorCode HylcPlanRangesApply(MPI_Comm comm, const HylcPlanRanges *ranges, 
 }
 
 /*@C
-  HylcPlanTermsFromString - Parses a list of the plan's terms: "all", "1d" (zero and the five 1D terms) or a
-  comma list of term names (HylcPlanTermName). Collective.
+  HylcPlanTermsFromString - Parses a list of the plan's terms: "all", "paper" (the paper's terms: zero, the 1D
+  and the 2D ones, without hylc's 3D terms), "1d" (zero and the five 1D terms) or a comma list of term names
+  (HylcPlanTermName). Collective.
 
   Input Parameters:
 + comm - communicator for errors
@@ -173,25 +173,27 @@ PetscErrorCode HylcPlanRangesApply(MPI_Comm comm, const HylcPlanRanges *ranges, 
 PetscErrorCode HylcPlanTermsFromString(MPI_Comm comm, const char opt[], const char list[], int *terms)
 {
   char      buf[512], *tok, *save = NULL;
-  PetscBool all, d1;
+  PetscBool all, d1, paper;
 
   PetscFunctionBegin;
   PetscCall(PetscStrcmp(list, "all", &all));
   PetscCall(PetscStrcmp(list, "1d", &d1));
-  if (all || d1) {
-    *terms = all ? (1 << HYLC_PLAN_NTERM) - 1 : (1 << 6) - 1;
+  PetscCall(PetscStrcmp(list, "paper", &paper));
+  if (all || d1 || paper) {
+    *terms = all ? HYLC_PLAN_ALL_TERMS : paper ? HYLC_PLAN_PAPER_TERMS : (1 << 6) - 1;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscCall(PetscStrncpy(buf, list, sizeof(buf)));
   *terms = 0;
   for (tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
     int found = -1;
-    for (int t = 0; t < HYLC_PLAN_NTERM; t++) {
+    for (int t = 0; t < HYLC_PLAN_NTERM3; t++) {
       PetscBool eq;
       PetscCall(PetscStrcmp(tok, HylcPlanTermName(t), &eq));
       if (eq) found = t;
     }
-    PetscCheck(found >= 0, comm, PETSC_ERR_USER_INPUT, "%s: unknown term '%s' (use zero, sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11, 1d or all)", opt, tok);
+    PetscCheck(found >= 0, comm, PETSC_ERR_USER_INPUT, "%s: unknown term '%s' (use zero, sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11, sx-sa-sy, sx-sy-II00, sx-sy-II11, 1d, paper or all)", opt,
+               tok);
     *terms |= 1 << found;
   }
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -340,7 +340,9 @@ PetscErrorCode HylcReferenceStateForMode(HylcPattern in, HylcReferenceMode mode,
     HylcPatternState state;
     PetscCall(HylcPatternGetState(in, &state));
     if (mode == HYLC_REFERENCE_AUTO && isfile && (state == HYLC_PATTERN_STATE_REFERENCE || state == HYLC_PATTERN_STATE_UNRECORDED)) {
-      if (v) PetscCall(PetscViewerASCIIPrintf(v, "[reference] the pattern file is a stored reference state (%s): relaxed to the in-plane minimum under the configured yarn (auto; -sampler_reference none keeps it as given, the paper's procedure)\n", state == HYLC_PATTERN_STATE_REFERENCE ? "its record says so" : "it records nothing, as the paper's files"));
+      if (v)
+        PetscCall(PetscViewerASCIIPrintf(v, "[reference] the pattern file is a stored reference state (%s): relaxed to the in-plane minimum under the configured yarn (auto; -sampler_reference none keeps it as given, the paper's procedure)\n",
+                                         state == HYLC_PATTERN_STATE_REFERENCE ? "its record says so" : "it records nothing, as the paper's files"));
       mode = HYLC_REFERENCE_RELAX;
     } else if (v && mode == HYLC_REFERENCE_AUTO && isfile)
       PetscCall(PetscViewerASCIIPrintf(v, "[reference] the pattern file is not a reference state (%s): computing it (Algorithm C1)\n", HylcPatternStates[state]));

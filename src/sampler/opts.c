@@ -132,14 +132,14 @@ PetscErrorCode HylcSamplerSetSampleCounts(HylcSampler S, PetscInt n1, PetscInt n
 
   Input Parameters:
 + S     - the sampler
-- terms - bit t set for term t of include/hylc/plan.h (0 zero, 1..5 the 1D terms, 6..14 the 2D terms)
+- terms - bit t set for term t of include/hylc/plan.h (0 zero, 1..5 the 1D terms, 6..14 the 2D terms, 15..17 the 3D terms)
 
   Level: beginner
 @*/
 PetscErrorCode HylcSamplerSetTerms(HylcSampler S, PetscInt terms)
 {
   SAMPLER_SETTER_BEGIN;
-  PetscCheck(terms > 0 && terms < (1 << HYLC_PLAN_NTERM), PetscObjectComm((PetscObject)S), PETSC_ERR_USER_INPUT, "The sampling plan is empty (-sampler_terms)");
+  PetscCheck(terms > 0 && terms <= HYLC_PLAN_ALL_TERMS, PetscObjectComm((PetscObject)S), PETSC_ERR_USER_INPUT, "The sampling plan is empty (-sampler_terms)");
   S->terms = terms;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -322,7 +322,9 @@ PetscErrorCode HylcSamplerSetReference(HylcSampler S, HylcReferenceMode mode, co
 . -sampler_range_<c> min,max      - 1D range of c = sx, sa, sy, II00, II11 (II in 1/m; 2D ranges follow) (HylcSamplerSetPlanRanges())
 . -sampler_n1 <150>, -sampler_n2 <50> - samples per 1D term, per axis of a 2D term (HylcSamplerSetSampleCounts())
 . -sampler_terms <all>            - comma list of terms: zero, sx, sa, sy, II00, II11, sx-sa, sx-sy,
-                                    sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11, or all (HylcSamplerSetTerms())
+                                    sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11, sx-sa-sy, sx-sy-II00,
+                                    sx-sy-II11, or all (with graded spacing the 3D terms too), paper (the paper's 15), 1d
+                                    (HylcSamplerSetTerms())
 . -sampler_batch <1>              - samples per batch (the unit of work handed to a rank) (HylcSamplerSetBatchSize())
 . -sampler_start <continue>       - continue (half-lines from the zero strain outward), cold (the paper's) or both (HylcSamplerSetStart())
 . -sampler_both_rtol <1e-3>       - both: relative difference of the two Psi flagged multistable (HylcSamplerSetBothTolerance())
@@ -362,10 +364,10 @@ PetscErrorCode HylcSamplerSetFromOptions(HylcSampler S)
   PetscCall(HylcSamplerSetYarnModel(S, &model));
   PetscCall(HylcReferenceParamsSetFromOptions(comm, ((PetscObject)S)->prefix, &S->refpar));
   PetscObjectOptionsBegin((PetscObject)S);
-  PetscCall(PetscOptionsEnum(
-      "-sampler_reference",
-      "Reference state: auto (Algorithm C1 for a generated pattern; relax for a stored reference state, a .pyp as the paper's: the tile at rest at z = 0), compute (C1), relax (only the in-plane minimum over the periods of the pattern as given: a stored tile made a minimum of the configured yarn) or none (the pattern as given: the paper's procedure, config/profile-paper.yaml)",
-      "HylcSamplerSetReference", HylcReferenceModes, mode, &mode, NULL));
+  PetscCall(PetscOptionsEnum("-sampler_reference",
+                             "Reference state: auto (Algorithm C1 for a generated pattern; relax for a stored reference state, a .pyp as the paper's: the tile at rest at z = 0), compute (C1), relax (only the in-plane minimum over the periods of the "
+                             "pattern as given: a stored tile made a minimum of the configured yarn) or none (the pattern as given: the paper's procedure, config/profile-paper.yaml)",
+                             "HylcSamplerSetReference", HylcReferenceModes, mode, &mode, NULL));
   PetscCall(PetscOptionsString("-reference_output", "Write the reference state as .pyp", "HylcSamplerSetReference", refout, refout, sizeof(refout), NULL));
   PetscCall(PetscOptionsString("-sampler_output", "HDF5 output file (the journal is <output>.journal)", "HylcSamplerSetOutput", output, output, sizeof(output), NULL));
   PetscCall(PetscOptionsBool("-sampler_resume", "Continue an interrupted run from its journal <output>.journal (refused, naming the differences, if any setting that changes results differs)", "HylcSamplerSetResume", resume, &resume, NULL));
@@ -378,8 +380,10 @@ PetscErrorCode HylcSamplerSetFromOptions(HylcSampler S)
     PetscCall(PetscOptionsInt("-sampler_n2", "Samples per axis of a 2D term (paper spacing; as -sampler_n1)", "HylcSamplerSetSampleCounts", n2, &n2, &s2));
     if ((s1 || s2) && !ranges.spacingSet) ranges.spacing = HYLC_PLAN_SPACING_PAPER;
   }
-  PetscCall(PetscOptionsString("-sampler_terms", "Terms to sample: all, or a comma list of zero, sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11", "HylcSamplerSetTerms", terms, terms, sizeof(terms),
-                               &tset));
+  PetscCall(PetscOptionsString("-sampler_terms",
+                               "Terms to sample: all (with graded spacing the 3D terms too), paper (the paper's 15: zero, 1D, 2D), 1d, or a comma list of zero, sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, "
+                               "sy-II00, sy-II11, sx-sa-sy, sx-sy-II00, sx-sy-II11",
+                               "HylcSamplerSetTerms", terms, terms, sizeof(terms), &tset));
   PetscCall(PetscOptionsInt("-sampler_batch", "Samples per batch (unit of work of a rank)", "HylcSamplerSetBatchSize", batch, &batch, NULL));
   PetscCall(PetscOptionsEnum("-sampler_start",
                              "How each sample's solve starts: continue (half-lines of the plan from the zero strain outward, each sample from its predecessor's equilibrium, retried cold if it does not converge; the unit of work is a half-line), "

@@ -65,7 +65,7 @@ PetscErrorCode HylcSamplerCreate(MPI_Comm comm, HylcSampler *s)
   PetscCall(PetscStrncpy(S->output, "samples.h5", sizeof(S->output)));
   S->n1             = 150;
   S->n2             = 50;
-  S->terms          = (1 << HYLC_PLAN_NTERM) - 1;
+  S->terms          = HYLC_PLAN_ALL_TERMS;
   S->batch          = 1;
   S->progress       = 5;
   S->start          = HYLC_SAMPLER_START_CONTINUE;
@@ -236,14 +236,14 @@ PetscErrorCode HylcSamplerGetPlan(HylcSampler S, const HylcPlan **plan)
 PetscErrorCode HylcSamplerView(HylcSampler S, PetscViewer viewer)
 {
   PetscBool iascii;
-  char      terms[256] = "", count[64];
+  char      terms[512] = "", count[64];
 
   PetscFunctionBegin;
   PetscValidHeaderSpecific(S, HYLC_SAMPLER_CLASSID, 1);
   if (!viewer) PetscCall(PetscViewerASCIIGetStdout(PetscObjectComm((PetscObject)S), &viewer));
   PetscCall(PetscObjectTypeCompare((PetscObject)viewer, PETSCVIEWERASCII, &iascii));
   if (!iascii) PetscFunctionReturn(PETSC_SUCCESS);
-  for (int t = 0; t < HYLC_PLAN_NTERM; t++)
+  for (int t = 0; t < HYLC_PLAN_NTERM3; t++)
     if (S->terms & (1 << t)) {
       PetscCall(PetscStrlcat(terms, terms[0] ? "," : "", sizeof(terms)));
       PetscCall(PetscStrlcat(terms, HylcPlanTermName(t), sizeof(terms)));

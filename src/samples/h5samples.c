@@ -73,9 +73,9 @@ static PetscErrorCode WriteSamplesGroup(hid_t file, long N, const HylcSampleReco
   HylcCallHDF5Id(g, H5Gcreate2(file, "samples", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
   HylcCallHDF5(HylcH5WriteAttrStrings(g, "status_names", nstat, (const char *const *)HylcMicroStatuses));
   {
-    const char *names[HYLC_PLAN_NTERM];
-    for (int t = 0; t < HYLC_PLAN_NTERM; t++) names[t] = HylcPlanTermName(t);
-    HylcCallHDF5(HylcH5WriteAttrStrings(g, "term_names", HYLC_PLAN_NTERM, names));
+    const char *names[HYLC_PLAN_NTERM3];
+    for (int t = 0; t < HYLC_PLAN_NTERM3; t++) names[t] = HylcPlanTermName(t);
+    HylcCallHDF5(HylcH5WriteAttrStrings(g, "term_names", HYLC_PLAN_NTERM3, names));
   }
   HylcCallHDF5(HylcH5WriteAttrString(g, "description", "One row per sample of the plan, in plan order (row k = sample k). Samples not computed (interrupted run) have status -1, term/iterations/retries -1 and NaN values."));
   HylcCallHDF5(HylcH5WriteDataset(g, "strain", 2, (hsize_t[]){(hsize_t)N, 6}, H5T_NATIVE_DOUBLE, strain, "1 for sx, sa, sy; 1/m for II00, II01, II11",
@@ -279,7 +279,7 @@ static PetscErrorCode WriteProvenance(hid_t file, const char identity[])
 
 /* builds the whole file in memory (HDF5's core driver, no backing store) and returns its image */
 /* /plan: the spacing and, for graded spacing, its parameters and the knots of every axis of every term sampled
-   (knots_<term> for a 1D term, knots_<term>_0 and _1 for the axes of a 2D term): the fabric fit's knots */
+   (knots_<term> for a 1D term, knots_<term>_0, _1 (and _2) for the axes of a 2D (3D) term): the fabric fit's knots */
 static PetscErrorCode WritePlan(hid_t file, const HylcPlan *plan)
 {
   hid_t g;
@@ -287,17 +287,17 @@ static PetscErrorCode WritePlan(hid_t file, const HylcPlan *plan)
   PetscFunctionBegin;
   HylcCallHDF5Id(g, H5Gcreate2(file, "plan", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
   HylcCallHDF5(HylcH5WriteAttrString(g, "spacing", HylcPlanSpacings[plan->spacing]));
-  HylcCallHDF5(HylcH5WriteAttrString(
-      g, "description",
-      "The sampling plan's spacing (-sampler_spacing); for graded spacing its parameters and the knots of each axis of each term (knots_<term>, knots_<term>_0 and _1 for a 2D term), which the samples subdivide (docs/output-format.md)"));
+  HylcCallHDF5(HylcH5WriteAttrString(g, "description",
+                                     "The sampling plan's spacing (-sampler_spacing); for graded spacing its parameters and the knots of each axis of each term (knots_<term>, knots_<term>_0, _1 and _2 for the axes of a 2D or 3D term), which the "
+                                     "samples subdivide (docs/output-format.md)"));
   if (plan->spacing == HYLC_PLAN_SPACING_GRADED) {
     HylcCallHDF5(HylcH5WriteDataset(g, "h0", 1, (hsize_t[]){HYLC_PLAN_NCOORD}, H5T_NATIVE_DOUBLE, plan->h0, "1 for sx, sa, sy; 1/m for II00, II11", "knot spacing at 0 per coordinate"));
     HylcCallHDF5(HylcH5WriteAttrDouble(g, "growth", plan->growth));
     HylcCallHDF5(HylcH5WriteAttrDouble(g, "hmax", plan->hmax));
     HylcCallHDF5(HylcH5WriteAttrLong(g, "sub", plan->sub));
-    for (int t = 1; t < HYLC_PLAN_NTERM; t++) {
+    for (int t = 1; t < HYLC_PLAN_NTERM3; t++) {
       if (!(plan->terms & (1 << t))) continue;
-      for (int a = 0; a < (t > 5 ? 2 : 1); a++) {
+      for (int a = 0; a < HylcPlanTermDim(t); a++) {
         double    K[HYLC_PLAN_MAXAXIS];
         char      name[64];
         const int n = HylcPlanAxisKnots(plan, t, a, K);
@@ -321,8 +321,8 @@ static PetscErrorCode WritePlan(hid_t file, const HylcPlan *plan)
 
   Input Parameters:
 + path - the samples file
-. t    - the term (1..14, include/hylc/plan.h)
-- a    - the axis (0; 1 for the second coordinate of a 2D term)
+. t    - the term (1..17, include/hylc/plan.h)
+- a    - the axis (0; 1 and 2 for the second and third coordinate of a 2D or 3D term)
 
   Output Parameters:
 + n - the number of knots (0: none)
@@ -342,7 +342,7 @@ PetscErrorCode HylcSamplesReadKnots(const char path[], int t, int a, PetscInt *n
 
   PetscFunctionBegin;
   *n = 0;
-  PetscCheck(t >= 1 && t < HYLC_PLAN_NTERM && a >= 0 && a <= (t > 5), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "HylcSamplesReadKnots: term %d axis %d", t, a);
+  PetscCheck(HylcPlanTermDim(t) >= 1 && a >= 0 && a < HylcPlanTermDim(t), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "HylcSamplesReadKnots: term %d axis %d", t, a);
   if (t <= 5)
     snprintf(name, sizeof(name), "plan/knots_%s", HylcPlanTermName(t));
   else

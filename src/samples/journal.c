@@ -92,7 +92,7 @@ static int UnpackRecord(const unsigned char b[JOURNAL_RECSIZE], long nsamples, H
   memcpy(&idx, b, 8);
   memcpy(iv, b + 8, 16);
   memcpy(dv, b + 24, 112);
-  if (idx < 0 || idx >= nsamples || iv[0] < 0 || iv[0] >= HYLC_PLAN_NTERM || iv[1] < 0 || iv[1] >= HylcSamplesNumStatuses_()) return -1;
+  if (idx < 0 || idx >= nsamples || iv[0] < 0 || iv[0] >= HYLC_PLAN_NTERM3 || iv[1] < 0 || iv[1] >= HylcSamplesNumStatuses_()) return -1;
   r->index      = (long)idx;
   r->term       = iv[0];
   r->status     = iv[1];
@@ -402,7 +402,7 @@ PetscErrorCode HylcJournalAppend(HylcJournal j, const HylcSampleRecord recs[], P
   PetscCheck(j->fp, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONGSTATE, "Journal %s is closed", j->path);
   for (PetscInt i = 0; i < n; i++) {
     PetscCheck(recs[i].index >= 0 && recs[i].index < j->nsamples, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Journal %s: sample index %ld out of range [0, %ld)", j->path, recs[i].index, j->nsamples);
-    PetscCheck(recs[i].term >= 0 && recs[i].term < HYLC_PLAN_NTERM, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Journal %s: sample %ld has invalid term %d", j->path, recs[i].index, recs[i].term);
+    PetscCheck(recs[i].term >= 0 && recs[i].term < HYLC_PLAN_NTERM3, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Journal %s: sample %ld has invalid term %d", j->path, recs[i].index, recs[i].term);
     PetscCheck(recs[i].status >= 0 && recs[i].status < HylcSamplesNumStatuses_(), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Journal %s: sample %ld has invalid status %d", j->path, recs[i].index, recs[i].status);
   }
   PetscCall(PetscMalloc1((size_t)n * JOURNAL_RECSIZE, &buf));

@@ -5,9 +5,13 @@
    consistent, so rounding is the only error), including the slopes of the 2D residuals across the axes (the
    lateral couplings the paper's fit sets to 0) and terms that are odd in sa, and the 2D mixed slopes muv to
    1e-4 of the largest (they are taken from the differences of the fitted slopes, exact for the quadratic
-   slopes of this truth: src/fit/fabric.c). Also: auto picks fabric when every row has its stress and paper
+   slopes of this truth: src/fit/fabric.c); the 3D terms (hylc's extension) from the samples of their grids, every
+   node value and slope to 1e-6 of the largest, the mixed derivatives to 3e-5 (the truth uvw (1 + 0.3u + 0.2v - 0.1w) is quadratic in each
+   variable, so the differences of slopes that give the mixed derivatives are exact), through HylcFitRun into a
+   material (HylcMaterialGet3D). Also: auto picks fabric when every row has its stress and paper
    otherwise, and -fit_compat authors with -fit_method fabric is refused. */
 #include <hylc/fit.h>
+#include <hylc/material.h>
 #include <hylc/plan.h>
 #include <hylc/strain.h>
 #include "hylctest.h"
@@ -31,6 +35,20 @@ static double G2(int q, double u, double v, double *gu, double *gv, double *guv)
   return c * u * v + d * u * u * v + e * u * v * v;
 }
 
+/* the 3D truth of triple r and its derivatives D[q] (bit 0 d/du, bit 1 d/dv, bit 2 d/dw) */
+static void G3(int r, double u, double v, double w, double D[8])
+{
+  const double c = 0.04 * (r + 1), a = 0.3, b = 0.2, e = -0.1;
+  D[0] = c * u * v * w * (1 + a * u + b * v + e * w);
+  D[1] = c * v * w * (1 + 2 * a * u + b * v + e * w);
+  D[2] = c * u * w * (1 + a * u + 2 * b * v + e * w);
+  D[4] = c * u * v * (1 + a * u + b * v + 2 * e * w);
+  D[3] = c * w * (1 + 2 * a * u + 2 * b * v + e * w);
+  D[5] = c * v * (1 + 2 * a * u + b * v + 2 * e * w);
+  D[6] = c * u * (1 + a * u + 2 * b * v + 2 * e * w);
+  D[7] = c * (1 + 2 * a * u + 2 * b * v + 2 * e * w);
+}
+
 int main(int argc, char **argv)
 {
   HylcPlan   plan;
@@ -42,7 +60,7 @@ int main(int argc, char **argv)
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
   HYLC_CHECK(!HylcPlanDefaults("woven", 1, &plan), "plan defaults");
   plan.spacing = HYLC_PLAN_SPACING_GRADED;
-  plan.terms   = (1 << HYLC_PLAN_NTERM) - 1;
+  plan.terms   = HYLC_PLAN_ALL_TERMS;
   for (int c = 0; c < 5; c++) nK1[c] = HylcPlanAxisKnots(&plan, 1 + c, 0, K1[c]);
   for (int q = 0; q < 9; q++)
     for (int a = 0; a < 2; a++) nK[q][a] = HylcPlanAxisKnots(&plan, 6 + q, a, K[q][a]);
@@ -94,6 +112,16 @@ int main(int argc, char **argv)
         psi[k] += HylcSpline2DEval(&s2[q], z[6 * k + si] / scale[si], z[6 * k + sj] / scale[sj], g, NULL);
         stress[6 * k + si] += g[0] / scale[si];
         stress[6 * k + sj] += g[1] / scale[sj];
+      }
+      for (int r = 0; r < HYLC_NTRIPLE; r++) {
+        int    s[3];
+        double D[8];
+        for (int a = 0; a < 3; a++) s[a] = HylcPlanStrainIndex(HylcTripleCoords[r][a]);
+        G3(r, z[6 * k + s[0]] / scale[s[0]], z[6 * k + s[1]] / scale[s[1]], z[6 * k + s[2]] / scale[s[2]], D);
+        psi[k] += D[0];
+        stress[6 * k + s[0]] += D[1] / scale[s[0]];
+        stress[6 * k + s[1]] += D[2] / scale[s[1]];
+        stress[6 * k + s[2]] += D[4] / scale[s[2]];
       }
     }
     /* the fit */
@@ -148,6 +176,34 @@ int main(int argc, char **argv)
         HYLC_CHECK(err <= 3e-6 * big, "2D %s: node error %.3g of the term's largest %.3g (p, mu, mv)", HylcPairNames[q], err, big);
         HYLC_CHECK(ew[3] <= 1e-4 * bigmuv, "2D %s: muv error %.3g of the largest %.3g", HylcPairNames[q], ew[3], bigmuv);
         HYLC_CHECK(cross > 1e-3 * big, "2D %s: the slope across v = 0 (%.3g) should be the truth's, not 0", HylcPairNames[q], cross);
+      }
+      {
+        HylcMaterial mat;
+        PetscCall(HylcMaterialCreate(PETSC_COMM_SELF, &mat));
+        PetscCall(HylcFitRun(fit, mat));
+        for (int r = 0; r < HYLC_NTRIPLE; r++) {
+          hylcmat_term3d t;
+          PetscBool      has;
+          double         err = 0, big = 0, eq[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+          PetscCall(HylcMaterialGet3D(mat, HylcTripleCoords[r][0], HylcTripleCoords[r][1], HylcTripleCoords[r][2], &t, &has));
+          HYLC_CHECK(has, "3D %s: not fitted", HylcTripleNames[r]);
+          if (!has) continue;
+          for (int iw = 0; iw < t.nw; iw++)
+            for (int iv = 0; iv < t.nv; iv++)
+              for (int iu = 0; iu < t.nu; iu++) {
+                const int     node = (iw * t.nv + iv) * t.nu + iu;
+                const double *F[8] = {t.p, t.mu, t.mv, t.muv, t.mw, t.muw, t.mvw, t.muvw};
+                double        D[8];
+                G3(r, t.tu[iu], t.tv[iv], t.tw[iw], D);
+                for (int q = 0; q < 8; q++) big = PetscMax(big, fabs(D[q])), err = PetscMax(err, fabs(F[q][node] - D[q])), eq[q] = PetscMax(eq[q], fabs(F[q][node] - D[q]));
+              }
+          if (getenv("HYLC_TEST_VERBOSE"))
+            printf("3D %s: %d x %d x %d knots, largest node error %.3g of %.3g (p %.2g mu %.2g mv %.2g muv %.2g mw %.2g muw %.2g mvw %.2g muvw %.2g)\n", HylcTripleNames[r], t.nu, t.nv, t.nw, err, big, eq[0], eq[1], eq[2], eq[3], eq[4], eq[5], eq[6],
+                   eq[7]);
+          HYLC_CHECK(PetscMax(PetscMax(eq[0], eq[1]), PetscMax(eq[2], eq[4])) <= 1e-6 * big, "3D %s: value or slope error %.3g of the largest %.3g", HylcTripleNames[r], PetscMax(PetscMax(eq[0], eq[1]), PetscMax(eq[2], eq[4])), big);
+          HYLC_CHECK(err <= 3e-5 * big, "3D %s: node error %.3g of the largest %.3g", HylcTripleNames[r], err, big);
+        }
+        PetscCall(HylcMaterialDestroy(&mat));
       }
       PetscCall(HylcFitDestroy(&fit));
     }

@@ -59,18 +59,21 @@ struct _p_HylcFit {
   PetscBool  dataset, setupcalled, computed;
   PetscBool  samplesFile; /* the input is a samples file of hylc-sample (HDF5) */
   /* results */
-  PetscInt     nknot[HYLC_PLAN_NTERM][2]; /* the fabric fit's knots per term and axis (physical units) */
-  PetscReal   *knot[HYLC_PLAN_NTERM][2];
-  char         knotSource[PETSC_MAX_PATH_LEN + 64];
-  PetscReal    scale[6], f0;
-  PetscInt     f0row;
-  PetscBool    has[HYLC_PLAN_NTERM];
-  HylcSpline1D s1[5];
-  HylcSpline2D s2[9];
-  PetscInt     statN[HYLC_PLAN_NTERM];
-  PetscReal    statRms[HYLC_PLAN_NTERM], statRange[HYLC_PLAN_NTERM], statMin[HYLC_PLAN_NTERM][2], statMax[HYLC_PLAN_NTERM][2];
-  PetscInt     statBandN[HYLC_PLAN_NTERM][HYLC_FIT_NBAND];   /* samples per strain band (HylcFitGetTermBandStats) */
-  PetscReal    statBandRel[HYLC_PLAN_NTERM][HYLC_FIT_NBAND]; /* RMS(model - data) / RMS(data - f0) per band */
+  PetscInt       nknot[HYLC_PLAN_NTERM3][3]; /* the fabric fit's knots per term and axis (physical units) */
+  PetscReal     *knot[HYLC_PLAN_NTERM3][3];
+  char           knotSource[PETSC_MAX_PATH_LEN + 64];
+  PetscReal      scale[6], f0;
+  PetscInt       f0row;
+  PetscBool      has[HYLC_PLAN_NTERM3];
+  HylcSpline1D   s1[5];
+  HylcSpline2D   s2[9];
+  hylcmat_term3d s3[HYLC_NTRIPLE];       /* the fabric fit's 3D terms (arrays in a3) */
+  PetscReal     *a3[HYLC_NTRIPLE];       /* one allocation per 3D term: tu, tv, tw, then the 8 node arrays */
+  PetscInt       missing3[HYLC_NTRIPLE]; /* 3D nodes without a converged sample (set to 0) */
+  PetscInt       statN[HYLC_PLAN_NTERM3];
+  PetscReal      statRms[HYLC_PLAN_NTERM3], statRange[HYLC_PLAN_NTERM3], statMin[HYLC_PLAN_NTERM3][3], statMax[HYLC_PLAN_NTERM3][3];
+  PetscInt       statBandN[HYLC_PLAN_NTERM3][HYLC_FIT_NBAND];   /* samples per strain band (HylcFitGetTermBandStats) */
+  PetscReal      statBandRel[HYLC_PLAN_NTERM3][HYLC_FIT_NBAND]; /* RMS(model - data) / RMS(data - f0) per band */
 };
 
 /* input.c: reads fit->input into the data arrays (rank-local). */
@@ -84,3 +87,6 @@ PETSC_INTERN PetscErrorCode HylcFitResetResults_Private(HylcFit);
 PETSC_INTERN PetscErrorCode HylcFitFabricKnots_Private(HylcFit);
 PETSC_INTERN PetscErrorCode HylcFitTerm1DFabric_Private(HylcFit, int);
 PETSC_INTERN PetscErrorCode HylcFitTerm2DFabric_Private(HylcFit, int);
+PETSC_INTERN PetscErrorCode HylcFitTerm3DFabric_Private(HylcFit, int);
+/* a 3D term at normalised (u, v, w) with its gradient g (may be NULL), as hylcmat evaluates it on the axes */
+PETSC_INTERN PetscReal HylcFitTerm3DEval_Private(const hylcmat_term3d *, PetscReal, PetscReal, PetscReal, PetscReal[3]);

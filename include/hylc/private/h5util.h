@@ -10,7 +10,7 @@
 
 /* the hylc HDF5 material format (docs/material.md) */
 #define HYLC_MATERIAL_FORMAT         "hylc-material"
-#define HYLC_MATERIAL_FORMAT_VERSION 1
+#define HYLC_MATERIAL_FORMAT_VERSION 2 /* 2: the 3D terms (group /3D); a table without them is written as version 1 */
 /* the name of in-memory file images: HDF5's core driver refuses to open an image under a name that exists
    on disk, so it must not */
 #define HYLC_H5_IMAGE_NAME "/nonexistent-hylc-directory/hylc-material-image.h5"

@@ -90,7 +90,7 @@ static inline void HylcNewtonStepN(int n, const double H[9], const double g[3], 
   for (int i = 0; i < n; i++) lmax = fmax(lmax, fabs(A[n * i + i]));
   for (int i = 0; i < n; i++) d[i] = 0;
   for (int e = 0; e < n; e++) {
-    double l  = fmax(A[n * e + e], relFloor * lmax), ge = 0;
+    double l = fmax(A[n * e + e], relFloor * lmax), ge = 0;
     if (!(l > 0)) l = lmax > 0 ? lmax : 1;
     for (int k = 0; k < n; k++) ge += V[n * k + e] * g[k];
     for (int k = 0; k < n; k++) d[k] -= ge / l * V[n * k + e];
