@@ -351,6 +351,8 @@ typedef struct {
    derivative vanish; on the axes G01 = 0 by symmetry. The root nearest the unstrained lateral state.
    Errors: HYLCMAT_ERR_ARG, HYLCMAT_ERR_NOCONV (no lateral root within |G| < 0.5). */
 int hylcmat_measured_tension(const hylcmat_measured *mc, int dir, double s, int mode, hylcmat_measured_state *st, char *err, size_t errlen);
+/* The same for a strip at angle phi (radians from material x toward y; the shear is free off the axes). */
+int hylcmat_measured_tension_angle(const hylcmat_measured *mc, double phi, double s, int mode, hylcmat_measured_state *st, char *err, size_t errlen);
 /* The bending moment per unit width (N m / m = N) of a sheet in cylindrical bending of curvature kappa
    (1/m, > 0 toward n) along dir (0: the material x axis curves, II00 = kappa; 1: y) on a regular mesh of
    right triangles with edges along u and v: M = k kappa / 4 (frozen) or d/dkappa (k kappa^2 / 8)
@@ -359,13 +361,17 @@ int hylcmat_measured_tension(const hylcmat_measured *mc, int dir, double s, int 
 int hylcmat_measured_bending(const hylcmat_measured *mc, int dir, double kappa, int mode, double *M, double *k);
 
 /* ---- a table written as measured cloth -------------------------------------------------------------
-   The least-squares measured-cloth data of a table (docs/measured-cloth.md, "Export"): stretching from
-   the table's stress at its own strip states along the five sample directions and at biaxial states,
-   bending from the table's bending moments, the density copied. fit (may be NULL; 4 values): the RMS
-   relative stress error of the stretching fit, the RMS relative moment error of the bending fit, the
-   largest |Psi gradient| at rest of the table (N/m, a prestress the format cannot hold) and the
-   table's largest |dPsi/dII| at II = 0 (N, a natural curvature it cannot hold). */
-int hylcmat_measured_fit(const hylcmat *m, hylcmat_measured **mc, double fit[4], char *err, size_t errlen);
+   The measured-cloth data of a table (docs/measured-cloth.md, "Export"): the stretching data start as the
+   linear least-squares fit of the model's stress to the table's at the table's strip and biaxial states,
+   then are refined (Levenberg-Marquardt, the least squares of the relative error of the model's own
+   strip tension and 0.03 x its lateral strain error per unit stretch, against the table's strip states
+   along 0, 22.5, 45, 67.5, 90 degrees at s = 1 .. 12 %); the bending data are the least-squares fit of
+   the secant stiffness 4 M / kappa of the odd part of the table's moments, kappa = 1 .. 40 1/m; the
+   density is copied. fit (may be NULL; 5 values): the RMS and the largest (over s = 2 .. 10 %) relative
+   strip tension error, the RMS relative moment error, the table's largest in-plane dPsi/ds at rest (N/m,
+   a prestress the format cannot hold) and its largest dPsi/dII at rest (N, a natural curvature it
+   cannot hold). About 10 s for a paper table. */
+int hylcmat_measured_fit(const hylcmat *m, hylcmat_measured **mc, double fit[5], char *err, size_t errlen);
 
 /* ---- names -------------------------------------------------------------------------------------- */
 /* (k0, k1) of 2D term q (0..8), in the order of the JSON tables */

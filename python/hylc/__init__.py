@@ -551,6 +551,7 @@ for _f, _args, _res in (
         ("hylcmat_measured_bending_sample", [_vp, ctypes.c_double, _vp, _vp], ctypes.c_double),
         ("hylcmat_measured_edge", [_vp, _vp, _vp, ctypes.c_double, _vp, _vp, _vp], ctypes.c_int),
         ("hylcmat_measured_tension", [_vp, ctypes.c_int, ctypes.c_double, ctypes.c_int, _vp, _cs, _sz], ctypes.c_int),
+        ("hylcmat_measured_tension_angle", [_vp, ctypes.c_double, ctypes.c_double, ctypes.c_int, _vp, _cs, _sz], ctypes.c_int),
         ("hylcmat_measured_bending", [_vp, ctypes.c_int, ctypes.c_double, ctypes.c_int, _vp, _vp], ctypes.c_int),
         ("hylcmat_measured_fit", [_vp, ctypes.POINTER(_vp), _vp, _cs, _sz], ctypes.c_int),
         ("hylcmat_tension", [_vp, ctypes.c_double, ctypes.c_double, _vp, _vp, _cs, _sz], ctypes.c_int),
@@ -608,14 +609,14 @@ class MeasuredMaterial:
     @classmethod
     def fit(cls, material):
         """The least-squares measured-cloth data of a table (a hylc.Material): returns (MeasuredMaterial,
-        report dict: rms_stress, rms_moment (relative), prestress (N/m), rest_moment (N))"""
+        report dict: rms_tension, worst_tension (2-10 %), rms_moment (relative), prestress (N/m), rest_moment (N))"""
         obj = cls.__new__(cls)
         obj._h = _vp()
         obj.path = None
         err = ctypes.create_string_buffer(1024)
-        rep = np.zeros(4)
+        rep = np.zeros(5)
         _check(_lib.hylcmat_measured_fit(material._h, ctypes.byref(obj._h), rep.ctypes.data, err, len(err)), err)
-        return obj, dict(rms_stress=rep[0], rms_moment=rep[1], prestress=rep[2], rest_moment=rep[3])
+        return obj, dict(rms_tension=rep[0], worst_tension=rep[1], rms_moment=rep[2], prestress=rep[3], rest_moment=rep[4])
 
     def __del__(self):
         h = getattr(self, "_h", None)

@@ -88,7 +88,119 @@ typedef struct {
   double G[3], D[3];
 } FitSample;
 
-int hylcmat_measured_fit(const hylcmat *m, hylcmat_measured **mc, double fit[4], char *err, size_t errlen)
+/* the strip targets of the refinement: the table's strip states along the five sample directions */
+#define NPHI 5
+#define NLEV 12 /* s = 0.01 .. 0.12 */
+typedef struct {
+  double phi, s, T, lateral;
+} Target;
+
+typedef struct {
+  const Target *t;
+  int           nt;
+  double        bend[15];
+} Strips;
+
+#define WLAT 0.03 /* the weight of the lateral strain error (per unit stretch) against the relative T error */
+
+/* the residuals (2 per target) of the measured-cloth data p (24): relative T error, WLAT x lateral error / s */
+static int Residuals(const Strips *S, const double p[NS], double *res)
+{
+  hylcmat_measured *mc;
+  int               r = hylcmat_measured_create(0, p, S->bend, &mc, NULL, 0);
+  if (r) return r;
+  for (int i = 0; i < S->nt; i++) {
+    hylcmat_measured_state st;
+    const Target          *t = &S->t[i];
+    if (hylcmat_measured_tension_angle(mc, t->phi, t->s, HYLCMAT_MEASURED_FROZEN, &st, NULL, 0)) {
+      res[2 * i] = res[2 * i + 1] = 10; /* no balance: a large error */
+      continue;
+    }
+    res[2 * i]     = (st.T - t->T) / fabs(t->T);
+    res[2 * i + 1] = WLAT * (st.lateral - t->lateral) / t->s;
+  }
+  hylcmat_measured_free(mc);
+  return HYLCMAT_OK;
+}
+
+static double Cost(int n, const double *r)
+{
+  double c = 0;
+  for (int i = 0; i < n; i++) c += r[i] * r[i];
+  return 0.5 * c;
+}
+
+/* Levenberg-Marquardt on the unknowns p[idx[0..nv)] (the others fixed): forward-difference Jacobian
+   (steps 1e-7 |p|, at least 1e-9), Marquardt's scaling diag(J^T J), at most maxJ Jacobians; p updated */
+static int Marquardt(const Strips *S, double p[NS], const int *idx, int nv, int maxJ, double hrel, double *costOut)
+{
+  const int nr = 2 * S->nt;
+  double   *r = malloc(sizeof(double) * (size_t)nr * (2 + NS)), *rt = r + nr, *J = rt + nr;
+  double    mu = 1e-3, cost;
+  int       rc;
+
+  if (!r) return HYLCMAT_ERR_MEMORY;
+  if ((rc = Residuals(S, p, r))) goto done;
+  cost = Cost(nr, r);
+  for (int it = 0; it < maxJ; it++) {
+    double A[NS * NS], g[NS], D[NS], dmax = 0;
+    for (int a = 0; a < nv; a++) {
+      double       q[NS];
+      const double h = fmax(hrel * fabs(p[idx[a]]), 1e-9);
+      memcpy(q, p, sizeof(q));
+      q[idx[a]] += h;
+      if ((rc = Residuals(S, q, rt))) goto done;
+      for (int i = 0; i < nr; i++) J[(size_t)i * NS + a] = (rt[i] - r[i]) / h;
+    }
+    for (int a = 0; a < nv; a++) {
+      g[a] = 0;
+      for (int i = 0; i < nr; i++) g[a] += J[(size_t)i * NS + a] * r[i];
+      for (int b = 0; b < nv; b++) {
+        double v = 0;
+        for (int i = 0; i < nr; i++) v += J[(size_t)i * NS + a] * J[(size_t)i * NS + b];
+        A[a * nv + b] = v;
+      }
+      D[a] = A[a * nv + a];
+      dmax = fmax(dmax, D[a]);
+    }
+    if (!(dmax > 0)) break;
+    int accepted = 0;
+    while (!accepted && mu < 1e10) {
+      double M[NS * NS], b[NS], d[NS], q[NS];
+      memcpy(M, A, sizeof(double) * (size_t)(nv * nv));
+      for (int a = 0; a < nv; a++) {
+        M[a * nv + a] += mu * fmax(D[a], 1e-12 * dmax);
+        b[a] = -g[a];
+      }
+      if (Solve(nv, M, b, d)) {
+        mu *= 4;
+        continue;
+      }
+      memcpy(q, p, sizeof(q));
+      for (int a = 0; a < nv; a++) q[idx[a]] += d[a];
+      if ((rc = Residuals(S, q, rt))) goto done;
+      const double c = Cost(nr, rt);
+      if (c < cost) {
+        accepted         = 1;
+        const double rel = (cost - c) / cost;
+        memcpy(p, q, sizeof(q));
+        memcpy(r, rt, sizeof(double) * (size_t)nr);
+        cost = c;
+        mu   = fmax(mu / 3, 1e-9);
+        if (rel < 1e-8) it = maxJ; /* converged */
+      } else
+        mu *= 4;
+    }
+    if (!accepted) break;
+  }
+  rc = HYLCMAT_OK;
+  if (costOut) *costOut = cost;
+done:
+  free(r);
+  return rc;
+}
+
+int hylcmat_measured_fit(const hylcmat *m, hylcmat_measured **mc, double fit[5], char *err, size_t errlen)
 {
   hm_err            E        = {err, errlen};
   hylcmat_measured *basis[6] = {NULL};
@@ -102,7 +214,7 @@ int hylcmat_measured_fit(const hylcmat *m, hylcmat_measured **mc, double fit[4],
   HM_CHECK(m && mc, &E, HYLCMAT_ERR_ARG, "hylcmat_measured_fit: NULL table or result");
   *mc = NULL;
   if (fit)
-    for (int i = 0; i < 4; i++) fit[i] = 0;
+    for (int i = 0; i < 5; i++) fit[i] = 0;
   /* the samples: the table's strip states at the format's directions (both signs of the shear), and
      biaxial states of the same principal directions */
   cap = 8 * nlev * 3;
@@ -178,6 +290,60 @@ int hylcmat_measured_fit(const hylcmat *m, hylcmat_measured **mc, double fit[4],
     return r;
   }
   memcpy(st, x, sizeof(st));
+  /* the refinement: the model's own strip states against the table's along the five sample directions */
+  {
+    Target    tg[NPHI * NLEV];
+    Strips    S;
+    int       nt   = 0, all[NS];
+    const int maxJ = 60;
+    for (int a = 0; a < NPHI; a++) {
+      const double phi = a * 0.39269908169872414; /* 22.5 degrees */
+      double       guess[2], *gp = NULL;
+      for (int l = 1; l <= 2 * NLEV; l++) { /* the load path in steps of 0.005, the targets every 0.01 */
+        hylcmat_tension_state ts;
+        if (hylcmat_tension(m, phi, 0.005 * l, gp, &ts, NULL, 0)) continue;
+        guess[0] = 1 + ts.lateral, guess[1] = ts.shear, gp = guess;
+        if (l % 2 == 0 && fabs(ts.T) > 0) tg[nt].phi = phi, tg[nt].s = ts.s, tg[nt].T = ts.T, tg[nt].lateral = ts.lateral, nt++;
+      }
+    }
+    S.t  = tg;
+    S.nt = nt;
+    memset(S.bend, 0, sizeof(S.bend));
+    for (int a = 0; a < NS; a++) all[a] = a;
+    /* the residuals have kinks (the clips, the lookup cells, jumps of the balance): the difference step
+       smooths them; three steps, the lowest cost kept */
+    double best = INFINITY, pbest[NS], start[NS];
+    memcpy(start, st, sizeof(start));
+    for (int k = 0; k < 3 && nt && !r; k++) {
+      const double hrel = k == 0 ? 1e-5 : k == 1 ? 3e-5 : 1e-4;
+      double       p[NS], cost = INFINITY;
+      memcpy(p, start, sizeof(p));
+      r = Marquardt(&S, p, all, NS, maxJ, hrel, &cost);
+      for (int sweep = 0; sweep < 2 && !r; sweep++)
+        for (int row = 0; row < 6 && !r; row++) {
+          const int idx[4] = {4 * row, 4 * row + 1, 4 * row + 2, 4 * row + 3};
+          r                = Marquardt(&S, p, idx, 4, maxJ / 2, hrel, &cost);
+        }
+      if (!r && cost < best) best = cost, memcpy(pbest, p, sizeof(p));
+    }
+    if (!r && nt) memcpy(st, pbest, sizeof(pbest));
+    if (r) {
+      free(smp);
+      return hm_fail(&E, r, "measured-cloth export: the refinement of the stretching data failed (%s)", hylcmat_strerror(r));
+    }
+    if (fit && nt) {
+      double *res = malloc(sizeof(double) * 2 * (size_t)nt), e2 = 0, worst = 0;
+      if (res && !Residuals(&S, st, res)) {
+        for (int i = 0; i < nt; i++) {
+          e2 += res[2 * i] * res[2 * i];
+          if (tg[i].s > 0.0199 && tg[i].s < 0.1001) worst = fmax(worst, fabs(res[2 * i]));
+        }
+        fit[0] = sqrt(e2 / nt);
+        fit[1] = worst;
+      }
+      free(res);
+    }
+  }
   /* bending: per row, k(kappa) piecewise linear in b[0..4] at kappa = 0, 10, .., 40 fitted to the secant
      stiffness 4 M(kappa) / kappa of the odd part of the table's moment, kappa = 1, 2, .., 40 1/m */
   const int rowdir[3] = {1, 2, 0}; /* b0: edges along u, bent by II11; b1: 45 degrees; b2: along v, II00 */
@@ -214,31 +380,23 @@ int hylcmat_measured_fit(const hylcmat *m, hylcmat_measured **mc, double fit[4],
     free(smp);
     return r;
   }
-  if (fit) { /* the errors of the material as evaluated (the clips included) */
-    double e2 = 0, b2 = 0, psi, g[6];
+  if (fit) { /* the bending error of the material as evaluated (the clips included), the lost prestress and curl */
+    double b2 = 0, psi, g[6];
     int    nb = 0;
-    for (int i = 0; i < ns; i++) {
-      double Dm[3], n2 = 0, d2 = 0;
-      hylcmat_measured_membrane(*mc, smp[i].G, NULL, Dm, NULL, NULL);
-      for (int e = 0; e < 3; e++) d2 += (Dm[e] - smp[i].D[e]) * (Dm[e] - smp[i].D[e]), n2 += smp[i].D[e] * smp[i].D[e];
-      e2 += d2 / fmax(n2, 1e-300);
-    }
     for (int row = 0; row < 3; row++)
       for (int i = 1; i <= 40; i++) {
-        double Mp, Mm, Mmc;
+        double Mp, Mm;
         if (TableMoment(m, rowdir[row], i, &Mp) || TableMoment(m, rowdir[row], -i, &Mm)) continue;
-        const double du[2] = {row == 2 ? 0 : row == 1 ? 1 : 1, row == 0 ? 0 : 1};
-        Mmc                = hylcmat_measured_bending_sample(*mc, i, du, NULL) * i / 4;
-        const double t     = 0.5 * (Mp - Mm);
+        const double du[2] = {row == 2 ? 0 : 1, row == 0 ? 0 : 1};
+        const double Mmc = hylcmat_measured_bending_sample(*mc, i, du, NULL) * i / 4, t = 0.5 * (Mp - Mm);
         b2 += (Mmc - t) * (Mmc - t) / fmax(t * t, 1e-300);
         nb++;
       }
-    fit[0]             = sqrt(e2 / ns);
-    fit[1]             = nb ? sqrt(b2 / nb) : 0;
+    fit[2]             = nb ? sqrt(b2 / nb) : 0;
     const double z0[6] = {0, 0, 0, 0, 0, 0};
     if (!hylcmat_eval(m, z0, &psi, g, NULL)) {
-      fit[2] = fmax(fabs(g[0]), fmax(fabs(g[1]), fabs(g[2])));
-      fit[3] = fmax(fabs(g[3]), fmax(fabs(g[4]), fabs(g[5])));
+      fit[3] = fmax(fabs(g[0]), fmax(fabs(g[1]), fabs(g[2])));
+      fit[4] = fmax(fabs(g[3]), fmax(fabs(g[4]), fabs(g[5])));
     }
   }
   free(smp);

@@ -6,47 +6,44 @@
 #include <math.h>
 #include <string.h>
 
-/* the lateral problem: G from the unknowns, and the residuals (lateral stresses) */
+/* the lateral problem of a strip along d = (c, sn), e = (-sn, c): G = Gdd d d^T + Gee e e^T + Gde (d e^T + e d^T),
+   Gdd fixed; the residuals are dpsi/dGee and dpsi/dGde (the lateral stresses) */
 typedef struct {
   const hylcmat_measured *mc;
-  int                     dir, mode;
+  int                     mode;
+  double                  c, sn;
   double                  Gdd; /* the Green strain along the strip */
-  double                  Gde; /* bias: the outer unknown while the inner one is solved */
+  double                  Gde; /* the outer unknown while the inner one is solved */
   int                     evals;
 } Lateral;
 
-/* dpsi/dG (frozen or energy) at G */
-static void Deriv(Lateral *L, const double G[3], double D[3])
+static void StripG(const Lateral *L, double Gee, double Gde, double G[3])
 {
+  const double c = L->c, s = L->sn;
+  G[0] = L->Gdd * c * c + Gee * s * s - 2 * Gde * c * s;
+  G[1] = L->Gdd * s * s + Gee * c * c + 2 * Gde * c * s;
+  G[2] = (L->Gdd - Gee) * c * s + Gde * (c * c - s * s);
+}
+
+/* dpsi/d(Gdd, Gee, Gde) (frozen or energy) at the strip strain (Gee, Gde) */
+static void StripDeriv(Lateral *L, double Gee, double Gde, double Dp[3])
+{
+  double       G[3], D[3];
+  const double c = L->c, s = L->sn;
+  StripG(L, Gee, Gde, G);
   L->evals++;
   hylcmat_measured_membrane(L->mc, G, NULL, L->mode == HYLCMAT_MEASURED_FROZEN ? D : NULL, L->mode == HYLCMAT_MEASURED_FROZEN ? NULL : D, NULL);
+  Dp[0] = D[0] * c * c + D[1] * s * s + D[2] * c * s;
+  Dp[1] = D[0] * s * s + D[1] * c * c - D[2] * c * s;
+  Dp[2] = 2 * c * s * (D[1] - D[0]) + (c * c - s * s) * D[2];
 }
 
-/* bias: G from (Gdd, Gee, Gde) in the strip's axes d = (1, 1)/sqrt 2, e = (-1, 1)/sqrt 2 */
-static void BiasG(double Gdd, double Gee, double Gde, double G[3])
+/* inner: the stress across the strip at fixed Gde */
+static double Inner(Lateral *L, double Gee)
 {
-  G[0] = 0.5 * (Gdd + Gee) - Gde;
-  G[1] = 0.5 * (Gdd + Gee) + Gde;
-  G[2] = 0.5 * (Gdd - Gee);
-}
-
-/* the axes: the lateral stress S_ee as a function of the lateral Green strain */
-static double AxisResidual(Lateral *L, double Gee)
-{
-  double G[3]   = {0, 0, 0}, D[3];
-  G[L->dir]     = L->Gdd;
-  G[1 - L->dir] = Gee;
-  Deriv(L, G, D);
-  return D[1 - L->dir];
-}
-
-/* the bias, inner: S_ee = (D00 + D11 - D01) / 2 at fixed Gde */
-static double BiasInner(Lateral *L, double Gee)
-{
-  double G[3], D[3];
-  BiasG(L->Gdd, Gee, L->Gde, G);
-  Deriv(L, G, D);
-  return 0.5 * (D[0] + D[1] - D[2]);
+  double Dp[3];
+  StripDeriv(L, Gee, L->Gde, Dp);
+  return Dp[1];
 }
 
 typedef double (*Fun)(Lateral *, double);
@@ -108,65 +105,60 @@ static int Root(Lateral *L, Fun f, double x0, double h0, double span, double lo,
   return HYLCMAT_OK;
 }
 
-/* the bias, outer: S_de = (D11 - D00) / 2 with Gee solved at this Gde */
-static double BiasOuter(Lateral *L, double Gde)
+/* outer: the shear stress with Gee solved at this Gde */
+static double Outer(Lateral *L, double Gde)
 {
-  double Gee, res, G[3], D[3];
+  double Gee, res, Dp[3];
   L->Gde = Gde;
-  if (Root(L, BiasInner, 0, 1e-3, 0.5, -0.49, 1, &Gee, &res)) return NAN;
-  BiasG(L->Gdd, Gee, Gde, G);
-  Deriv(L, G, D);
-  return 0.5 * (D[1] - D[0]);
+  if (Root(L, Inner, 0, 1e-3, 0.5, -0.49, 1, &Gee, &res)) return NAN;
+  StripDeriv(L, Gee, Gde, Dp);
+  return Dp[2];
 }
 
-int hylcmat_measured_tension(const hylcmat_measured *mc, int dir, double s, int mode, hylcmat_measured_state *st, char *err, size_t errlen)
+int hylcmat_measured_tension_angle(const hylcmat_measured *mc, double phi, double s, int mode, hylcmat_measured_state *st, char *err, size_t errlen)
 {
-  hm_err       E       = {err, errlen};
-  const char  *name[3] = {"x", "y", "the bias"};
+  hm_err       E = {err, errlen};
   Lateral      L;
-  double       G[3], D[3], res = 0;
-  const double span = 0.5;
+  double       Gee, Gde = 0, res, rde = 0, Dp[3];
+  const double span = 0.5, deg = phi * 57.295779513082323;
 
   if (err && errlen) err[0] = 0;
   HM_CHECK(mc && st, &E, HYLCMAT_ERR_ARG, "hylcmat_measured_tension: NULL material or result");
   memset(st, 0, sizeof(*st));
-  HM_CHECK(dir >= 0 && dir <= 2, &E, HYLCMAT_ERR_ARG, "measured cloth: tension direction %d: must be 0 (x), 1 (y) or 2 (the 45 degree bias)", dir);
+  HM_CHECK(isfinite(phi), &E, HYLCMAT_ERR_ARG, "measured cloth: the strip's angle must be finite");
   HM_CHECK(mode == HYLCMAT_MEASURED_FROZEN || mode == HYLCMAT_MEASURED_ENERGY, &E, HYLCMAT_ERR_ARG, "measured cloth: mode %d: must be HYLCMAT_MEASURED_FROZEN or _ENERGY", mode);
-  HM_CHECK(s >= 0 && s < 1, &E, HYLCMAT_ERR_ARG, "measured cloth: tension stretch %g along %s is outside [0, 1)", s, name[dir]);
+  HM_CHECK(s >= 0 && s < 1, &E, HYLCMAT_ERR_ARG, "measured cloth: tension stretch %g at %g degrees is outside [0, 1)", s, deg);
   memset(&L, 0, sizeof(L));
   L.mc   = mc;
-  L.dir  = dir;
   L.mode = mode;
-  L.Gdd  = 0.5 * ((1 + s) * (1 + s) - 1);
-  if (dir < 2) {
-    double Gee;
-    if (Root(&L, AxisResidual, 0, 1e-3, span, -0.49, 1, &Gee, &res)) return hm_fail(&E, HYLCMAT_ERR_NOCONV, "measured cloth: tension along %s at s = %g: no lateral balance within |G| < %g", name[dir], s, span);
-    G[dir]     = L.Gdd;
-    G[1 - dir] = Gee;
-    G[2]       = 0;
-    Deriv(&L, G, D);
-    st->T       = (1 + s) * D[dir];
-    st->lateral = sqrt(1 + 2 * Gee) - 1;
-    st->shear   = 0;
-    res         = fabs(D[1 - dir]);
-  } else {
-    double Gde, Gee, rde;
-    if (Root(&L, BiasOuter, 0, 1e-3, span, -span, span, &Gde, &rde)) return hm_fail(&E, HYLCMAT_ERR_NOCONV, "measured cloth: tension along the bias at s = %g: no lateral balance within |G| < %g", s, span);
-    L.Gde = Gde;
-    if (Root(&L, BiasInner, 0, 1e-3, span, -0.49, 1, &Gee, &res)) return hm_fail(&E, HYLCMAT_ERR_NOCONV, "measured cloth: tension along the bias at s = %g: no lateral balance within |G| < %g", s, span);
-    BiasG(L.Gdd, Gee, Gde, G);
-    Deriv(&L, G, D);
-    st->T       = (1 + s) * 0.5 * (D[0] + D[1] + D[2]); /* (1 + s) S_dd */
-    st->lateral = sqrt(1 + 2 * Gee) - 1;
-    st->shear   = 2 * Gde / sqrt((1 + 2 * L.Gdd) * (1 + 2 * Gee));
-    res         = fmax(fabs(0.5 * (D[0] + D[1] - D[2])), fabs(0.5 * (D[1] - D[0])));
-  }
-  st->s = s;
-  memcpy(st->G, G, sizeof(st->G));
-  hylcmat_measured_stiffness(mc, G, st->k, NULL);
-  st->residual    = res;
+  L.c    = cos(phi);
+  L.sn   = sin(phi);
+  if (fabs(L.sn) < 1e-15) L.c = L.c > 0 ? 1 : -1, L.sn = 0; /* the axes exactly */
+  if (fabs(L.c) < 1e-15) L.sn = L.sn > 0 ? 1 : -1, L.c = 0;
+  L.Gdd = 0.5 * ((1 + s) * (1 + s) - 1);
+  if (L.c * L.sn != 0) { /* off the axes: the shear is free too */
+    if (Root(&L, Outer, 0, 1e-3, span, -span, span, &Gde, &rde)) return hm_fail(&E, HYLCMAT_ERR_NOCONV, "measured cloth: tension at %g degrees, s = %g: no lateral balance within |G| < %g", deg, s, span);
+  } /* on an axis the shear stress vanishes at Gde = 0 (symmetry: k depends on |G01|) */
+  L.Gde = Gde;
+  if (Root(&L, Inner, 0, 1e-3, span, -0.49, 1, &Gee, &res)) return hm_fail(&E, HYLCMAT_ERR_NOCONV, "measured cloth: tension at %g degrees, s = %g: no lateral balance within |G| < %g", deg, s, span);
+  StripDeriv(&L, Gee, Gde, Dp);
+  st->s           = s;
+  st->T           = (1 + s) * Dp[0];
+  st->lateral     = sqrt(1 + 2 * Gee) - 1;
+  st->shear       = 2 * Gde / sqrt((1 + 2 * L.Gdd) * (1 + 2 * Gee));
+  st->residual    = fmax(fabs(Dp[1]), fabs(Dp[2]));
   st->evaluations = L.evals;
+  StripG(&L, Gee, Gde, st->G);
+  hylcmat_measured_stiffness(mc, st->G, st->k, NULL);
   return HYLCMAT_OK;
+}
+
+int hylcmat_measured_tension(const hylcmat_measured *mc, int dir, double s, int mode, hylcmat_measured_state *st, char *err, size_t errlen)
+{
+  hm_err E = {err, errlen};
+  if (err && errlen) err[0] = 0;
+  HM_CHECK(dir >= 0 && dir <= 2, &E, HYLCMAT_ERR_ARG, "measured cloth: tension direction %d: must be 0 (x), 1 (y) or 2 (the 45 degree bias)", dir);
+  return hylcmat_measured_tension_angle(mc, dir == 0 ? 0 : dir == 1 ? 1.57079632679489662 : 0.78539816339744831, s, mode, st, err, errlen);
 }
 
 int hylcmat_measured_bending(const hylcmat_measured *mc, int dir, double kappa, int mode, double *M, double *kout)
