@@ -287,6 +287,9 @@ double hylcmat_measured_density(const hylcmat_measured *mc);
 int hylcmat_measured_scale(hylcmat_measured *mc, double density_mult, double stretching_mult, double bending_mult, char *err, size_t errlen);
 /* Writes the material as the data-driven JSON (the numbers in shortest round-trip form). */
 int hylcmat_measured_write(const hylcmat_measured *mc, const char *path, char *err, size_t errlen);
+/* The same JSON text into buf (buflen bytes, NUL-terminated, truncated if short; buf may be NULL);
+   returns its full length (without the NUL), as snprintf does. */
+size_t hylcmat_measured_format(const hylcmat_measured *mc, char *buf, size_t buflen);
 
 /* The stiffness sample khat(G) (4 values, N/m): principal stretch and direction of C = 2G + I, the
    bilinear interpolation of the data with its clamps, each value clipped at 0, times 2. */

@@ -423,29 +423,63 @@ int hylcmat_measured_load(const char *path, hylcmat_measured **mc, char *err, si
   return r;
 }
 
+/* appends to a buffer snprintf-style: the length grows even when the buffer is full */
+typedef struct {
+  char  *buf;
+  size_t cap, len;
+} Out;
+
+static void Put(Out *o, const char *text)
+{
+  const size_t n = strlen(text);
+  if (o->len < o->cap) snprintf(o->buf + o->len, o->cap - o->len, "%s", text);
+  o->len += n;
+}
+
+size_t hylcmat_measured_format(const hylcmat_measured *mc, char *buf, size_t buflen)
+{
+  Out  o = {buf, buf ? buflen : 0, 0};
+  char b[32];
+
+  if (buf && buflen) buf[0] = 0;
+  if (!mc) return 0;
+  Put(&o, "{\n    \"density\": ");
+  Put(&o, hylcmat_format_double(mc->density, b));
+  Put(&o, ",\n    \"stretching\": [\n");
+  for (int i = 0; i < 6; i++) {
+    Put(&o, "        [");
+    for (int q = 0; q < 4; q++) {
+      if (q) Put(&o, ", ");
+      Put(&o, hylcmat_format_double(mc->stretch[i][q], b));
+    }
+    Put(&o, i < 5 ? "],\n" : "]\n");
+  }
+  Put(&o, "    ],\n    \"bending\": [\n");
+  for (int i = 0; i < 3; i++) {
+    Put(&o, "        [");
+    for (int q = 0; q < 5; q++) {
+      if (q) Put(&o, ", ");
+      Put(&o, hylcmat_format_double(mc->bend[i][q], b));
+    }
+    Put(&o, i < 2 ? "],\n" : "]\n");
+  }
+  Put(&o, "    ]\n}\n");
+  return o.len;
+}
+
 int hylcmat_measured_write(const hylcmat_measured *mc, const char *path, char *err, size_t errlen)
 {
   hm_err E = {err, errlen};
   FILE  *fp;
-  char   b[32];
+  char   text[4096];
 
   if (err && errlen) err[0] = 0;
   HM_CHECK(mc && path && path[0], &E, HYLCMAT_ERR_ARG, "hylcmat_measured_write: NULL material or no file name");
+  const size_t n = hylcmat_measured_format(mc, text, sizeof(text));
+  HM_CHECK(n < sizeof(text), &E, HYLCMAT_ERR_MEMORY, "hylcmat_measured_write: the text is too long");
   fp = fopen(path, "w");
   if (!fp) return hm_fail(&E, HYLCMAT_ERR_OPEN, "Cannot write measured-cloth file '%s': %s", path, strerror(errno));
-  fprintf(fp, "{\n    \"density\": %s,\n    \"stretching\": [\n", hylcmat_format_double(mc->density, b));
-  for (int i = 0; i < 6; i++) {
-    fprintf(fp, "        [");
-    for (int q = 0; q < 4; q++) fprintf(fp, "%s%s", q ? ", " : "", hylcmat_format_double(mc->stretch[i][q], b));
-    fprintf(fp, "]%s\n", i < 5 ? "," : "");
-  }
-  fprintf(fp, "    ],\n    \"bending\": [\n");
-  for (int i = 0; i < 3; i++) {
-    fprintf(fp, "        [");
-    for (int q = 0; q < 5; q++) fprintf(fp, "%s%s", q ? ", " : "", hylcmat_format_double(mc->bend[i][q], b));
-    fprintf(fp, "]%s\n", i < 2 ? "," : "");
-  }
-  fprintf(fp, "    ]\n}\n");
-  if (ferror(fp) | fclose(fp)) return hm_fail(&E, HYLCMAT_ERR_READ, "Cannot write measured-cloth file '%s': %s", path, strerror(errno));
+  const int bad = fwrite(text, 1, n, fp) != n;
+  if (bad | ferror(fp) | fclose(fp)) return hm_fail(&E, HYLCMAT_ERR_READ, "Cannot write measured-cloth file '%s': %s", path, strerror(errno));
   return HYLCMAT_OK;
 }
