@@ -310,6 +310,9 @@ int hylcmat_measured_green(const hylcmat_shell_rest *r, const double x[9], doubl
    hylcmat_measured_green (outputs 0). No allocation; thread-safe. */
 int hylcmat_measured_face(const hylcmat_measured *mc, const hylcmat_shell_rest *r, const double x[9], double *E, double force[9], double grad[9], double G[3]);
 
+/* The mass of a face (kg): density times its rest area; lumped, a third at each vertex (gravity m g/3). */
+double hylcmat_measured_face_mass(const hylcmat_measured *mc, const hylcmat_shell_rest *r);
+
 /* The bending stiffness sample of an edge of material direction du (2, any length) at the curvature
    coordinate kappa (1/m): the bilinear interpolation of the 3 x 5 data (rows: edges along u, at 45
    degrees, along v; columns kappa = 0, 10, 20, 30, 40 1/m), clamped and clipped at 0 (N m). dkdkappa

@@ -188,6 +188,8 @@ int hylcmat_measured_face(const hylcmat_measured *mc, const hylcmat_shell_rest *
   return HYLCMAT_OK;
 }
 
+double hylcmat_measured_face_mass(const hylcmat_measured *mc, const hylcmat_shell_rest *r) { return mc && r ? mc->density * r->area : 0; }
+
 /* ---- bending ------------------------------------------------------------------------------------ */
 double hylcmat_measured_bending_sample(const hylcmat_measured *mc, double kappa, const double du[2], double *dkdkappa)
 {

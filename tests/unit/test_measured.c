@@ -150,6 +150,7 @@ static void CheckFace(const hylcmat_measured *fabric)
 
   HYLC_CHECK(!hylcmat_measured_create(0.2, uniform, bend, &flat, NULL, 0), "create");
   HYLC_CHECK(!hylcmat_shell_rest_uv(uv, &r), "rest");
+  HYLC_CHECK_REL(hylcmat_measured_face_mass(flat, &r), 0.2 * 0.5 * (0.012 * 0.01 - 0.001 * 0.002), 1e-14);
   for (int t = 0; t < 40; t++) {
     double x[9], force[9], grad[9], fd[9], fdf[9], E;
     for (int v = 0; v < 3; v++) {
