@@ -23,7 +23,7 @@ extern "C" {
 #endif
 
 #define HYLCMAT_VERSION_MAJOR 1
-#define HYLCMAT_VERSION_MINOR 2
+#define HYLCMAT_VERSION_MINOR 3
 
 enum {
   HYLCMAT_OK          = 0,
@@ -292,6 +292,148 @@ int hylcmat_path_strain(const hylcmat_path *path, double s, const double p[], do
    guess (the free strains of a nearby state along a loading path), or with guess NULL from the lowest point of
    a grid of the free strains. Errors as hylcmat_uniaxial()'s; no allocation; thread-safe. */
 int hylcmat_path_state(const hylcmat *m, const hylcmat_path *path, double s, const double guess[], hylcmat_path_result *st, char *err, size_t errlen);
+
+/* ---- a strip cut at any angle: uniaxial tension of a table -------------------------------------------
+   A strip whose length runs at angle phi (radians, from the material x axis toward y) stretched by s
+   along its length, bending zero, free to contract across and to shear: Psi is minimized over the two
+   lateral unknowns of the in-plane strain at fixed s (the right Cauchy-Green tensor's component along
+   the strip, C_dd = (1 + s)^2, is held; C_ee across and C_de are free), so the lateral stresses vanish,
+   and T = dPsi/ds (N/m per unit reference width). phi = 0 and pi/2 give hylcmat_uniaxial's states;
+   phi = pi/4 is the bias test (docs/measured-cloth.md). */
+typedef struct {
+  double s;          /* the prescribed stretch along the strip (0 at rest) */
+  double T;          /* dPsi/ds at the state (N/m) */
+  double lateral;    /* the engineering strain across the strip, sqrt(C_ee) - 1 */
+  double shear;      /* the cosine of the angle between the deformed length and width directions */
+  double strain[3];  /* the state's (sx, sa, sy) */
+  double psi;        /* Psi there (J/m^2) */
+  double grad[2];    /* dPsi/d(lateral, shear) there (0 up to rounding) */
+  int    iterations; /* Newton iterations */
+} hylcmat_tension_state;
+
+/* The state at stretch s of a strip at angle phi: Newton's method on the two lateral unknowns
+   (sqrt(C_ee), C_de / sqrt(C_dd C_ee)) with a difference Hessian made positive definite, steps of at most
+   0.1 and a backtracking line search on Psi, from guess (those two unknowns; NULL: the lowest point of
+   the grid |sqrt(C_ee) - 1|, |shear| <= 0.5 in steps of 0.02), to a step below 1e-10, then probes around
+   the point as hylcmat_uniaxial. Errors: HYLCMAT_ERR_ARG (NULL, s outside [0, 1), phi not finite),
+   HYLCMAT_ERR_NOCONV (st holds the last iterate), an evaluation's error. No allocation; thread-safe. */
+int hylcmat_tension(const hylcmat *m, double phi, double s, const double guess[2], hylcmat_tension_state *st, char *err, size_t errlen);
+
+/* ---- measured cloth: the data-driven elastic model of Wang, O'Brien, Ramamoorthi (SIGGRAPH 2011) ---
+   evaluated as ARCSim (Narain et al. 2012) evaluates it; docs/measured-cloth.md states every convention
+   with its formula. Green strain G = (G00, G11, G01) in material axes (G01 the off-diagonal entry of
+   G = (F^T F - I) / 2). A measured material is read-only after loading: thread-safe evaluation. */
+typedef struct hylcmat_measured hylcmat_measured;
+
+#define HYLCMAT_MEASURED_GRID 30 /* the stiffness lookup grid: 30 x 30 x 30 points */
+
+/* Reads an ARCSim data-driven JSON ("density" kg/m^2, "stretching" 6 x 4, "bending" 3 x 5); errors name
+   the file, the line and the key (HYLCMAT_ERR_OPEN, _READ, _FORMAT, _MEMORY). *mc is NULL on an error. */
+int hylcmat_measured_load(const char *path, hylcmat_measured **mc, char *err, size_t errlen);
+int hylcmat_measured_load_memory(const char *name, const void *bytes, size_t len, hylcmat_measured **mc, char *err, size_t errlen);
+/* A material from its data: stretching (6 rows of 4, row-major), bending (3 rows of 5), density >= 0;
+   every value finite (HYLCMAT_ERR_FORMAT otherwise). */
+int  hylcmat_measured_create(double density, const double stretching[24], const double bending[15], hylcmat_measured **mc, char *err, size_t errlen);
+void hylcmat_measured_free(hylcmat_measured *mc);
+/* the data (either may be NULL) and the area density (kg/m^2) */
+void   hylcmat_measured_data(const hylcmat_measured *mc, double stretching[24], double bending[15]);
+double hylcmat_measured_density(const hylcmat_measured *mc);
+/* A scene's multipliers (ARCSim's density_mult, stretching_mult, bending_mult, each times its thicken):
+   the data scaled and the lookup grid rebuilt. Each multiplier finite and > 0. */
+int hylcmat_measured_scale(hylcmat_measured *mc, double density_mult, double stretching_mult, double bending_mult, char *err, size_t errlen);
+/* Writes the material as the data-driven JSON (the numbers in shortest round-trip form). */
+int hylcmat_measured_write(const hylcmat_measured *mc, const char *path, char *err, size_t errlen);
+/* The same JSON text into buf (buflen bytes, NUL-terminated, truncated if short; buf may be NULL);
+   returns its full length (without the NUL), as snprintf does. */
+size_t hylcmat_measured_format(const hylcmat_measured *mc, char *buf, size_t buflen);
+
+/* The stiffness sample khat(G) (4 values, N/m): principal stretch and direction of C = 2G + I, the
+   bilinear interpolation of the data with its clamps, each value clipped at 0, times 2. */
+void hylcmat_measured_sample(const hylcmat_measured *mc, const double G[3], double khat[4]);
+/* The stiffness k(G) as the simulator uses it: the trilinear interpolation of khat on the 30^3 grid.
+   dk (4 x 3 row-major, may be NULL): dk_i/dG_j of that interpolation (0 where a coordinate is clamped;
+   the G01 column at G01 = 0 is 0, the mean of its one-sided values). */
+void hylcmat_measured_stiffness(const hylcmat_measured *mc, const double G[3], double k[4], double dk[12]);
+/* The membrane energy density psi = (k0 G00^2 + 2 k1 G00 G11 + k2 G11^2 + k3 G01^2) / 2 with k = k(G)
+   (J/m^2); frozen (may be NULL) = dpsi/dG with k held fixed = (k0 G00 + k1 G11, k1 G00 + k2 G11, k3 G01);
+   energy (may be NULL) = the total derivative (k varying); k (may be NULL) the stiffness used. */
+void hylcmat_measured_membrane(const hylcmat_measured *mc, const double G[3], double *psi, double frozen[3], double energy[3], double k[4]);
+/* The Green strain of a triangle (rest data as for the shell element, hylcmat_shell_rest_uv; x 3 x 3
+   deformed positions, m). HYLCMAT_ERR_NONFINITE for a NaN/inf coordinate. */
+int hylcmat_measured_green(const hylcmat_shell_rest *r, const double x[9], double G[3]);
+/* One face: E = A psi(G) (J, A the rest area), force (9, may be NULL) = -dE/dx with k held fixed (the
+   simulator's force), grad (9, may be NULL) = +dE/dx of the energy itself, G (may be NULL). Errors as
+   hylcmat_measured_green (outputs 0). No allocation; thread-safe. */
+int hylcmat_measured_face(const hylcmat_measured *mc, const hylcmat_shell_rest *r, const double x[9], double *E, double force[9], double grad[9], double G[3]);
+
+/* The mass of a face (kg): density times its rest area; lumped, a third at each vertex (gravity m g/3). */
+double hylcmat_measured_face_mass(const hylcmat_measured *mc, const hylcmat_shell_rest *r);
+
+/* The bending stiffness sample of an edge of material direction du (2, any length) at the curvature
+   coordinate kappa (1/m): the bilinear interpolation of the 3 x 5 data (rows: edges along u, at 45
+   degrees, along v; columns kappa = 0, 10, 20, 30, 40 1/m), clamped and clipped at 0 (N m). dkdkappa
+   (may be NULL): its derivative with respect to kappa (0 where clamped or clipped). */
+double hylcmat_measured_bending_sample(const hylcmat_measured *mc, double kappa, const double du[2], double *dkdkappa);
+
+/* The hinge of an interior edge: vertices a = 0, b = 1 of the edge, p0 = 2 across it in face 0 = (a, b,
+   p0), p1 = 3 in face 1 = (b, a, p1), both counter-clockwise in material coordinates uv (4 x 2, m). */
+typedef struct {
+  double theta;  /* the dihedral angle (rad), > 0 when the surface bends toward its normal n */
+  double kappa;  /* the curvature coordinate theta l / (A0 + A1) (1/m) */
+  double length; /* l, the edge's material length (m) */
+  double area;   /* A0 + A1, the faces' material areas (m^2) */
+  double k;      /* the bending stiffness sample used (N m) */
+  double shape;  /* l^2 / (2 (A0 + A1)) */
+} hylcmat_measured_hinge;
+
+/* One hinge: E = k shape (theta - theta_rest)^2 / 4 (J), force (12, may be NULL) = -dE/dx with k and
+   shape held fixed, info (may be NULL). HYLCMAT_ERR_NONFINITE, HYLCMAT_ERR_DEGENERATE (a zero-area face,
+   deformed or rest, or a zero-length edge; outputs 0). No allocation; thread-safe. */
+int hylcmat_measured_edge(const hylcmat_measured *mc, const double uv[8], const double x[12], double theta_rest, double *E, double force[12], hylcmat_measured_hinge *info);
+
+/* ---- measured cloth: the homogeneous states of a fabric sheet (docs/measured-cloth.md) -------------- */
+enum {
+  HYLCMAT_MEASURED_FROZEN = 0, /* the balance of the simulator's forces (k held fixed at the state) */
+  HYLCMAT_MEASURED_ENERGY = 1  /* the stationarity of the energy itself (k varying) */
+};
+
+typedef struct {
+  double s;           /* the prescribed stretch along the strip (0 at rest) */
+  double T;           /* the force per unit reference width (N/m) */
+  double lateral;     /* the engineering strain across the strip */
+  double shear;       /* the cosine of the angle between the deformed length and width directions */
+  double G[3];        /* the Green strain (G00, G11, G01) in material axes */
+  double k[4];        /* the stiffness at the state */
+  double residual;    /* the largest lateral stress left (N/m; 0 up to rounding, unless the root is a jump) */
+  int    evaluations; /* stiffness evaluations */
+} hylcmat_measured_state;
+
+/* Uniaxial tension of a strip along dir (0: material x, 1: y, 2: the 45 degree bias from x toward y) by
+   the stretch s in [0, 1), free to contract (and, on the bias, to shear): the lateral stresses of mode's
+   derivative vanish; on the axes G01 = 0 by symmetry. The root nearest the unstrained lateral state.
+   Errors: HYLCMAT_ERR_ARG, HYLCMAT_ERR_NOCONV (no lateral root within |G| < 0.5). */
+int hylcmat_measured_tension(const hylcmat_measured *mc, int dir, double s, int mode, hylcmat_measured_state *st, char *err, size_t errlen);
+/* The same for a strip at angle phi (radians from material x toward y; the shear is free off the axes). */
+int hylcmat_measured_tension_angle(const hylcmat_measured *mc, double phi, double s, int mode, hylcmat_measured_state *st, char *err, size_t errlen);
+/* The bending moment per unit width (N m / m = N) of a sheet in cylindrical bending of curvature kappa
+   (1/m, > 0 toward n) along dir (0: the material x axis curves, II00 = kappa; 1: y) on a regular mesh of
+   right triangles with edges along u and v: M = k kappa / 4 (frozen) or d/dkappa (k kappa^2 / 8)
+   (energy), k the sample of the edges across the bend (along v for dir 0, along u for dir 1) at kappa.
+   k (may be NULL) returns that sample. HYLCMAT_ERR_ARG for a bad argument. */
+int hylcmat_measured_bending(const hylcmat_measured *mc, int dir, double kappa, int mode, double *M, double *k);
+
+/* ---- a table written as measured cloth -------------------------------------------------------------
+   The measured-cloth data of a table (docs/measured-cloth.md, "Export"): the stretching data start as the
+   linear least-squares fit of the model's stress to the table's at the table's strip and biaxial states,
+   then are refined (Levenberg-Marquardt, the least squares of the relative error of the model's own
+   strip tension and 0.03 x its lateral strain error per unit stretch, against the table's strip states
+   along 0, 22.5, 45, 67.5, 90 degrees at s = 1 .. 12 %); the bending data are the least-squares fit of
+   the secant stiffness 4 M / kappa of the odd part of the table's moments, kappa = 1 .. 40 1/m; the
+   density is copied. fit (may be NULL; 5 values): the RMS and the largest (over s = 2 .. 10 %) relative
+   strip tension error, the RMS relative moment error, the table's largest in-plane dPsi/ds at rest (N/m,
+   a prestress the format cannot hold) and its largest dPsi/dII at rest (N, a natural curvature it
+   cannot hold). About 10 s for a paper table. */
+int hylcmat_measured_fit(const hylcmat *m, hylcmat_measured **mc, double fit[5], char *err, size_t errlen);
 
 /* ---- names -------------------------------------------------------------------------------------- */
 /* (k0, k1) of 2D term q (0..8), in the order of the JSON tables */

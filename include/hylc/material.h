@@ -94,3 +94,11 @@ PETSC_EXTERN PetscErrorCode HylcMaterialGetStrainShift(HylcMaterial, PetscInt[5]
 PETSC_EXTERN PetscErrorCode HylcMaterialReset(HylcMaterial);
 /* Parses a JSON material from text; name is used in messages. Collective: every rank passes the same text. */
 PETSC_EXTERN PetscErrorCode HylcMaterialLoadFromString(HylcMaterial, const char name[], const char text[]);
+
+/* A strip cut at angle phi (radians from material x) stretched by s: Psi minimized over the lateral
+   stretch and the shear; T = dPsi/ds (N/m); lateral = (lateral strain, shear) (hylcmat_tension(),
+   docs/measured-cloth.md). Not collective. */
+PETSC_EXTERN PetscErrorCode HylcMaterialTension(HylcMaterial, PetscReal phi, PetscReal s, const PetscReal guess[2], PetscReal *T, PetscReal lateral[2], PetscBool *converged);
+/* The material written as a measured-cloth JSON (the least-squares data of hylcmat_measured_fit());
+   fit (may be NULL): its 5 figures. Collective; rank 0 writes. */
+PETSC_EXTERN PetscErrorCode HylcMaterialWriteMeasured(HylcMaterial, const char path[], PetscReal fit[5]);

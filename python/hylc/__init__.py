@@ -512,3 +512,242 @@ def read_samples(path, usable=True):
             if isinstance(v, np.ndarray) and v.ndim >= 1 and len(v) == n:
                 out[k] = v[ok]
     return out
+
+
+# ---------------------------------------------------------------- measured cloth (libhylcmat)
+class _MeasuredHinge(ctypes.Structure):
+    _fields_ = [("theta", ctypes.c_double), ("kappa", ctypes.c_double), ("length", ctypes.c_double), ("area", ctypes.c_double),
+                ("k", ctypes.c_double), ("shape", ctypes.c_double)]
+
+
+class _MeasuredState(ctypes.Structure):
+    _fields_ = [("s", ctypes.c_double), ("T", ctypes.c_double), ("lateral", ctypes.c_double), ("shear", ctypes.c_double),
+                ("G", ctypes.c_double * 3), ("k", ctypes.c_double * 4), ("residual", ctypes.c_double), ("evaluations", ctypes.c_int)]
+
+
+class _TensionState(ctypes.Structure):
+    _fields_ = [("s", ctypes.c_double), ("T", ctypes.c_double), ("lateral", ctypes.c_double), ("shear", ctypes.c_double),
+                ("strain", ctypes.c_double * 3), ("psi", ctypes.c_double), ("grad", ctypes.c_double * 2), ("iterations", ctypes.c_int)]
+
+
+class _ShellRest(ctypes.Structure):
+    _fields_ = [("dinv", ctypes.c_double * 4), ("area", ctypes.c_double)]
+
+
+_cs = ctypes.c_char_p
+_sz = ctypes.c_size_t
+for _f, _args, _res in (
+        ("hylcmat_measured_load", [_cs, ctypes.POINTER(_vp), _cs, _sz], ctypes.c_int),
+        ("hylcmat_measured_create", [ctypes.c_double, _vp, _vp, ctypes.POINTER(_vp), _cs, _sz], ctypes.c_int),
+        ("hylcmat_measured_free", [_vp], None),
+        ("hylcmat_measured_data", [_vp, _vp, _vp], None),
+        ("hylcmat_measured_density", [_vp], ctypes.c_double),
+        ("hylcmat_measured_scale", [_vp, ctypes.c_double, ctypes.c_double, ctypes.c_double, _cs, _sz], ctypes.c_int),
+        ("hylcmat_measured_write", [_vp, _cs, _cs, _sz], ctypes.c_int),
+        ("hylcmat_measured_sample", [_vp, _vp, _vp], None),
+        ("hylcmat_measured_stiffness", [_vp, _vp, _vp, _vp], None),
+        ("hylcmat_measured_membrane", [_vp, _vp, _vp, _vp, _vp, _vp], None),
+        ("hylcmat_measured_face", [_vp, _vp, _vp, _vp, _vp, _vp, _vp], ctypes.c_int),
+        ("hylcmat_measured_bending_sample", [_vp, ctypes.c_double, _vp, _vp], ctypes.c_double),
+        ("hylcmat_measured_edge", [_vp, _vp, _vp, ctypes.c_double, _vp, _vp, _vp], ctypes.c_int),
+        ("hylcmat_measured_tension", [_vp, ctypes.c_int, ctypes.c_double, ctypes.c_int, _vp, _cs, _sz], ctypes.c_int),
+        ("hylcmat_measured_tension_angle", [_vp, ctypes.c_double, ctypes.c_double, ctypes.c_int, _vp, _cs, _sz], ctypes.c_int),
+        ("hylcmat_measured_bending", [_vp, ctypes.c_int, ctypes.c_double, ctypes.c_int, _vp, _vp], ctypes.c_int),
+        ("hylcmat_measured_fit", [_vp, ctypes.POINTER(_vp), _vp, _cs, _sz], ctypes.c_int),
+        ("hylcmat_tension", [_vp, ctypes.c_double, ctypes.c_double, _vp, _vp, _cs, _sz], ctypes.c_int),
+        ("hylcmat_uniaxial", [_vp, ctypes.c_int, ctypes.c_double, _vp, _vp, _cs, _sz], ctypes.c_int),
+        ("hylcmat_shell_rest_uv", [_vp, _vp], ctypes.c_int)):
+    getattr(_lib, _f).argtypes = _args
+    getattr(_lib, _f).restype = _res
+
+FROZEN, ENERGY = 0, 1  # HYLCMAT_MEASURED_FROZEN, HYLCMAT_MEASURED_ENERGY
+_DIRS = {"x": 0, "y": 1, "bias": 2, 0: 0, 1: 1, 2: 2}
+
+
+def _mode(energy):
+    return ENERGY if energy else FROZEN
+
+
+def _vec(a, n, what):
+    v = np.ascontiguousarray(np.asarray(a, dtype=np.float64).ravel())
+    if v.shape != (n,):
+        raise ValueError("%s must have %d values, got shape %s" % (what, n, np.shape(a)))
+    return v
+
+
+class MeasuredMaterial:
+    """A measured-cloth material: the data-driven elastic model of Wang, O'Brien and Ramamoorthi
+    (SIGGRAPH 2011) in the JSON of ARCSim (density kg/m^2, stretching 6 x 4, bending 3 x 5), evaluated as
+    ARCSim evaluates it (docs/measured-cloth.md). Green strains G = (G00, G11, G01) in material axes.
+
+        mc = hylc.MeasuredMaterial("11oz-black-denim.json")
+        mc = hylc.MeasuredMaterial(density=0.3, stretching=S, bending=B)   # from data
+        mc = hylc.MeasuredMaterial.fit(hylc.Material("stock1.json"))       # a table exported
+        k = mc.stiffness(G)                      # (..., 3) -> (..., 4), the simulator's lookup
+        psi, frozen, energy = mc.membrane(G)     # J/m^2, dpsi/dG at fixed k, dpsi/dG itself
+        E, force, grad = mc.face(uv, x)          # one triangle: -dE/dx at fixed k, +dE/dx
+        st = mc.tension("bias", 0.05)            # the homogeneous strip state (a dict)
+        M = mc.bending_moment("x", 20.0)         # N m / m on the right-triangle mesh
+    """
+
+    def __init__(self, path=None, density=None, stretching=None, bending=None):
+        self._h = _vp()
+        err = ctypes.create_string_buffer(1024)
+        if path is not None:
+            if density is not None or stretching is not None or bending is not None:
+                raise ValueError("give either a file or density, stretching and bending")
+            self.path = os.fspath(path)
+            _check(_lib.hylcmat_measured_load(self.path.encode(), ctypes.byref(self._h), err, len(err)), err)
+        else:
+            if density is None or stretching is None or bending is None:
+                raise ValueError("give a file, or density, stretching (6, 4) and bending (3, 5)")
+            self.path = None
+            st = _vec(stretching, 24, "stretching")
+            be = _vec(bending, 15, "bending")
+            _check(_lib.hylcmat_measured_create(float(density), st.ctypes.data, be.ctypes.data, ctypes.byref(self._h), err, len(err)), err)
+
+    @classmethod
+    def fit(cls, material):
+        """The least-squares measured-cloth data of a table (a hylc.Material): returns (MeasuredMaterial,
+        report dict: rms_tension, worst_tension (2-10 %), rms_moment (relative), prestress (N/m), rest_moment (N))"""
+        obj = cls.__new__(cls)
+        obj._h = _vp()
+        obj.path = None
+        err = ctypes.create_string_buffer(1024)
+        rep = np.zeros(5)
+        _check(_lib.hylcmat_measured_fit(material._h, ctypes.byref(obj._h), rep.ctypes.data, err, len(err)), err)
+        return obj, dict(rms_tension=rep[0], worst_tension=rep[1], rms_moment=rep[2], prestress=rep[3], rest_moment=rep[4])
+
+    def __del__(self):
+        h = getattr(self, "_h", None)
+        if h:
+            _lib.hylcmat_measured_free(h)
+            self._h = _vp()
+
+    def __repr__(self):
+        return "<hylc.MeasuredMaterial %r: density %.6g kg/m^2>" % (self.path, self.density)
+
+    @property
+    def density(self):
+        """area density (kg/m^2)"""
+        return _lib.hylcmat_measured_density(self._h)
+
+    @property
+    def stretching(self):
+        """the stretching data (6, 4)"""
+        st = np.empty(24)
+        _lib.hylcmat_measured_data(self._h, st.ctypes.data, None)
+        return st.reshape(6, 4)
+
+    @property
+    def bending(self):
+        """the bending data (3, 5): rows edges along u, at 45 degrees, along v; columns kappa 0..40 1/m"""
+        be = np.empty(15)
+        _lib.hylcmat_measured_data(self._h, None, be.ctypes.data)
+        return be.reshape(3, 5)
+
+    def scale(self, density=1.0, stretching=1.0, bending=1.0):
+        """multiplies the data (a scene's density_mult, stretching_mult, bending_mult) in place"""
+        err = ctypes.create_string_buffer(1024)
+        _check(_lib.hylcmat_measured_scale(self._h, float(density), float(stretching), float(bending), err, len(err)), err)
+
+    def write(self, path):
+        """writes the data-driven JSON"""
+        err = ctypes.create_string_buffer(1024)
+        _check(_lib.hylcmat_measured_write(self._h, os.fspath(path).encode(), err, len(err)), err)
+
+    def _map(self, G, nout, fn):
+        G = np.asarray(G, dtype=np.float64)
+        if G.ndim == 0 or G.shape[-1] != 3:
+            raise ValueError("Green strains must have shape (..., 3) (G00, G11, G01), got %s" % (np.shape(G),))
+        lead = G.shape[:-1]
+        flat = np.ascontiguousarray(G.reshape(-1, 3))
+        outs = [np.empty((flat.shape[0], n)) for n in nout]
+        for i in range(flat.shape[0]):
+            fn(flat[i], [o[i] for o in outs])
+        return [o.reshape(lead + (n,)) if n > 1 else o.reshape(lead) for o, n in zip(outs, nout)]
+
+    def sample(self, G):
+        """the stiffness sample khat(G) (..., 4) (N/m) at Green strains (..., 3)"""
+        return self._map(G, [4], lambda g, o: _lib.hylcmat_measured_sample(self._h, g.ctypes.data, o[0].ctypes.data))[0]
+
+    def stiffness(self, G, derivative=False):
+        """the simulator's stiffness k(G) (..., 4): the trilinear lookup of khat on the 30^3 grid; with
+        derivative=True also dk/dG (..., 4, 3)"""
+        def f(g, o):
+            _lib.hylcmat_measured_stiffness(self._h, g.ctypes.data, o[0].ctypes.data, o[1].ctypes.data)
+        k, dk = self._map(G, [4, 12], f)
+        return (k, dk.reshape(dk.shape[:-1] + (4, 3))) if derivative else k
+
+    def membrane(self, G):
+        """psi (...) J/m^2, dpsi/dG at fixed k (..., 3) and dpsi/dG of the energy itself (..., 3)"""
+        def f(g, o):
+            _lib.hylcmat_measured_membrane(self._h, g.ctypes.data, o[0].ctypes.data, o[1].ctypes.data, o[2].ctypes.data, None)
+        return tuple(self._map(G, [1, 3, 3], f))
+
+    def face(self, uv, x):
+        """one triangle, material coordinates uv (3, 2) counter-clockwise and positions x (3, 3) (m):
+        E (J), force = -dE/dx at fixed k (3, 3) (the simulator's force), grad = +dE/dx (3, 3)"""
+        uv = _vec(uv, 6, "uv")
+        x = _vec(x, 9, "x")
+        r = _ShellRest()
+        _check(_lib.hylcmat_shell_rest_uv(uv.ctypes.data, ctypes.byref(r)))
+        E = ctypes.c_double()
+        fo, gr = np.empty(9), np.empty(9)
+        _check(_lib.hylcmat_measured_face(self._h, ctypes.byref(r), x.ctypes.data, ctypes.byref(E), fo.ctypes.data, gr.ctypes.data, None))
+        return E.value, fo.reshape(3, 3), gr.reshape(3, 3)
+
+    def bending_sample(self, kappa, du):
+        """the bending stiffness sample (N m) of an edge of material direction du (2,) at curvature kappa (1/m)"""
+        du = _vec(du, 2, "du")
+        return _lib.hylcmat_measured_bending_sample(self._h, float(kappa), du.ctypes.data, None)
+
+    def edge(self, uv, x, theta_rest=0.0):
+        """one hinge: vertices a, b (the edge), p0 (face (a, b, p0)), p1 (face (b, a, p1)); uv (4, 2), x (4, 3).
+        Returns E (J), force = -dE/dx with k and the shape factor fixed (4, 3), and a dict (theta, kappa,
+        length, area, k, shape)"""
+        uv = _vec(uv, 8, "uv")
+        x = _vec(x, 12, "x")
+        E = ctypes.c_double()
+        fo = np.empty(12)
+        info = _MeasuredHinge()
+        _check(_lib.hylcmat_measured_edge(self._h, uv.ctypes.data, x.ctypes.data, float(theta_rest), ctypes.byref(E), fo.ctypes.data, ctypes.byref(info)))
+        return E.value, fo.reshape(4, 3), {k: getattr(info, k) for k, _ in _MeasuredHinge._fields_}
+
+    def tension(self, direction, s, energy=False):
+        """the homogeneous strip state stretched by s along direction "x", "y" or "bias" (45 degrees),
+        lateral strain free: the balance of the frozen-stiffness forces (energy=False, the simulator's
+        state) or the stationarity of the energy itself (energy=True). A dict: s, T (N/m per unit
+        reference width), lateral (strain across), poisson (-lateral / s), shear, G, k, residual"""
+        if direction not in _DIRS:
+            raise ValueError("direction must be 'x', 'y' or 'bias', got %r" % (direction,))
+        st = _MeasuredState()
+        err = ctypes.create_string_buffer(1024)
+        _check(_lib.hylcmat_measured_tension(self._h, _DIRS[direction], float(s), _mode(energy), ctypes.byref(st), err, len(err)), err)
+        return dict(s=st.s, T=st.T, lateral=st.lateral, poisson=(-st.lateral / st.s if st.s > 0 else float("nan")), shear=st.shear,
+                    G=np.array(st.G[:]), k=np.array(st.k[:]), residual=st.residual)
+
+    def bending_moment(self, direction, kappa, energy=False):
+        """the bending moment per unit width (N m / m) at curvature kappa (1/m) along "x" (II00) or "y"
+        (II11), on a regular right-triangle mesh with edges along u and v (docs/measured-cloth.md)"""
+        if direction not in ("x", "y", 0, 1):
+            raise ValueError("direction must be 'x' or 'y', got %r" % (direction,))
+        M = ctypes.c_double()
+        _check(_lib.hylcmat_measured_bending(self._h, _DIRS[direction], float(kappa), _mode(energy), ctypes.byref(M), None))
+        return M.value
+
+
+def table_tension(material, angle, s, guess=None):
+    """The uniaxial strip state of a table (a hylc.Material) cut at angle (radians from material x) and
+    stretched by s: Psi minimized over the lateral strains. A dict: s, T (N/m), lateral, poisson, shear,
+    strain (sx, sa, sy), psi"""
+    st = _TensionState()
+    err = ctypes.create_string_buffer(1024)
+    g = None
+    if guess is not None:
+        g = _vec(guess, 2, "guess")
+    _check(_lib.hylcmat_tension(material._h, float(angle), float(s), g.ctypes.data if g is not None else None, ctypes.byref(st), err, len(err)), err)
+    return dict(s=st.s, T=st.T, lateral=st.lateral, poisson=(-st.lateral / st.s if st.s > 0 else float("nan")), shear=st.shear,
+                strain=np.array(st.strain[:]), psi=st.psi)
+
+__all__ += ["MeasuredMaterial", "table_tension", "FROZEN", "ENERGY"]

@@ -3,17 +3,23 @@ static const char help[] = "hylc-eval: the homogenized material model Psi(s) and
                            "  hylc-eval -material model.h5 -strain 0,0.2,0,50,10,-20 -derivatives\n"
                            "  hylc-eval -material stock1.json -eval_hdf5 stock1.h5     (convert; also -eval_json)\n"
                            "  hylc-eval -material stock1.json -eval_input strains.txt -eval_output out.txt [-derivatives]\n"
-                           "  hylc-eval -material stock1.json -eval_uniaxial x -eval_uniaxial_strains 0.05,0.1,0.2 -eval_uniaxial_csv x.csv\n\n"
+                           "  hylc-eval -material stock1.json -eval_uniaxial x -eval_uniaxial_strains 0.05,0.1,0.2 -eval_uniaxial_csv x.csv\n"
+                           "  hylc-eval -measured 11oz-black-denim.json -eval_sheet     (measured cloth: the fabric sheet; also a table's)\n"
+                           "  hylc-eval -material stock1.json -eval_measured_json stock1-mc.json   (a table written as measured cloth)\n\n"
                            "The material is an ARCSim-HYLC JSON table or a hylc HDF5 file (docs/material.md), recognized by\n"
                            "content. The strain is s = (sx, sa, sy, II00, II01, II11): stretches and shear (1), the second\n"
                            "fundamental form (1/m). Prints 'psi: <J/m^2>' and, with -derivatives, 'grad:' (dPsi/ds, 6 numbers)\n"
                            "and 'hessian:' (6 lines of 6). With -eval_uniaxial x|y: the homogeneous uniaxial tension state at each\n"
-                           "stretch (Psi minimized over the two free strains; T = dPsi/ds in N/m; docs/fabric-uniaxial.md).\n\n";
+                           "stretch (Psi minimized over the two free strains; T = dPsi/ds in N/m; docs/fabric-uniaxial.md).\n"
+                           "-eval_sheet prints a fabric sheet (strip tension along x, y and the 45 degree bias, Poisson ratio, bending\n"
+                           "moment, density) of a table or of a measured-cloth material (-measured: the data-driven model of Wang,\n"
+                           "O'Brien, Ramamoorthi 2011 as ARCSim evaluates it; docs/measured-cloth.md).\n\n";
 
 #include <hylc/material.h>
 #include <hylc/files.h>
 #include <hylc/options.h>
 #include <hylc/table.h>
+#include <hylcmat.h>
 #include <errno.h>
 #include <math.h>
 #include <stdlib.h>
@@ -192,6 +198,183 @@ static PetscErrorCode EvalPath(HylcMaterial mat, const hylcmat_path *path, Petsc
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* ---- the fabric sheet (-eval_sheet) ------------------------------------------------------------ */
+#define SHEET_MAX 64
+typedef struct {
+  PetscReal T, lateral, shear;
+  PetscBool ok;
+} SheetState;
+
+typedef struct {
+  PetscBool  measured, energy;
+  PetscInt   ns, nk;
+  PetscReal  s[SHEET_MAX], kappa[SHEET_MAX], density;
+  SheetState t[3][SHEET_MAX], te[3][SHEET_MAX]; /* x, y, bias: the balance (frozen) and, measured cloth, the energy's */
+  PetscReal  M[2][SHEET_MAX], Me[2][SHEET_MAX];
+} Sheet;
+
+static const char *const SheetDir[3] = {"x", "y", "bias"};
+
+/* a measured-cloth material's sheet */
+static PetscErrorCode SheetMeasured(const char path[], Sheet *sh)
+{
+  hylcmat_measured *mc;
+  char              err[1024];
+  int               r;
+
+  PetscFunctionBegin;
+  r = hylcmat_measured_load(path, &mc, err, sizeof(err));
+  PetscCheck(!r, PETSC_COMM_WORLD, r == HYLCMAT_ERR_OPEN ? PETSC_ERR_FILE_OPEN : r == HYLCMAT_ERR_READ ? PETSC_ERR_FILE_READ : r == HYLCMAT_ERR_MEMORY ? PETSC_ERR_MEM : PETSC_ERR_USER_INPUT, "%s", err[0] ? err : hylcmat_strerror(r));
+  sh->density = hylcmat_measured_density(mc);
+  for (int d = 0; d < 3; d++)
+    for (PetscInt i = 0; i < sh->ns; i++)
+      for (int mode = 0; mode < (sh->energy ? 2 : 1); mode++) {
+        hylcmat_measured_state st;
+        SheetState            *o = mode ? &sh->te[d][i] : &sh->t[d][i];
+        o->ok                    = (PetscBool)!hylcmat_measured_tension(mc, d, (double)sh->s[i], mode ? HYLCMAT_MEASURED_ENERGY : HYLCMAT_MEASURED_FROZEN, &st, NULL, 0);
+        o->T                     = st.T;
+        o->lateral               = st.lateral;
+        o->shear                 = st.shear;
+      }
+  for (int d = 0; d < 2; d++)
+    for (PetscInt i = 0; i < sh->nk; i++) {
+      double M, Me;
+      hylcmat_measured_bending(mc, d, (double)sh->kappa[i], HYLCMAT_MEASURED_FROZEN, &M, NULL);
+      hylcmat_measured_bending(mc, d, (double)sh->kappa[i], HYLCMAT_MEASURED_ENERGY, &Me, NULL);
+      sh->M[d][i]  = M;
+      sh->Me[d][i] = Me;
+    }
+  hylcmat_measured_free(mc);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* a table's sheet: each direction along the load path s = 0.005, 0.01, ... (and the stretches asked),
+   each state continued from the one before; bending dPsi/dII at zero in-plane strain */
+static PetscErrorCode SheetTable(HylcMaterial mat, Sheet *sh)
+{
+  PetscReal smax = 0;
+
+  PetscFunctionBegin;
+  PetscCall(HylcMaterialGetDensity(mat, &sh->density));
+  for (PetscInt i = 0; i < sh->ns; i++) smax = PetscMax(smax, sh->s[i]);
+  for (int d = 0; d < 3; d++) {
+    const PetscReal phi = d == 0 ? 0 : d == 1 ? PETSC_PI / 2 : PETSC_PI / 4;
+    PetscReal       guess[2], *gp = NULL, prev = 0;
+    for (;;) { /* the next stretch: the smaller of the next path point and the next one asked */
+      PetscReal next = PetscFloorReal(prev / 0.005 + 1 + 1e-9) * 0.005;
+      for (PetscInt i = 0; i < sh->ns; i++)
+        if (sh->s[i] > prev + 1e-12 && sh->s[i] < next) next = sh->s[i];
+      if (next > smax + 1e-12) break;
+      PetscReal T, lat[2];
+      PetscBool conv;
+      PetscCall(HylcMaterialTension(mat, phi, next, gp, &T, lat, &conv));
+      if (conv) {
+        guess[0] = 1 + lat[0], guess[1] = lat[1], gp = guess;
+      }
+      for (PetscInt i = 0; i < sh->ns; i++)
+        if (PetscAbsReal(sh->s[i] - next) <= 1e-12) {
+          sh->t[d][i].ok      = conv;
+          sh->t[d][i].T       = T;
+          sh->t[d][i].lateral = lat[0];
+          sh->t[d][i].shear   = lat[1];
+        }
+      prev = next;
+    }
+  }
+  for (int d = 0; d < 2; d++)
+    for (PetscInt i = 0; i < sh->nk; i++) {
+      PetscReal z[6] = {0, 0, 0, 0, 0, 0}, psi, g[6];
+      z[d ? 5 : 3]   = sh->kappa[i];
+      PetscCall(HylcMaterialEvaluate(mat, z, &psi, g, NULL));
+      sh->M[d][i] = g[d ? 5 : 3];
+    }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode SheetPrint(const char name[], const Sheet *sh)
+{
+  char buf[512];
+
+  PetscFunctionBegin;
+  if (sh->measured)
+    snprintf(buf, sizeof(buf), "sheet of the measured cloth %s: strips at the balance of the frozen-stiffness forces%s; bending on a regular mesh of right triangles with edges along u and v\n", name,
+             sh->energy ? " (and, marked energy, at the stationarity of the energy itself)" : "");
+  else
+    snprintf(buf, sizeof(buf), "sheet of the table %s: strips with Psi minimized over the lateral strains (load path in steps of 0.005); bending dPsi/dII at zero in-plane strain\n", name);
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s", buf));
+  snprintf(buf, sizeof(buf), "density: %.6g kg/m^2\n", (double)sh->density);
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s", buf));
+  for (int d = 0; d < 3; d++)
+    for (PetscInt i = 0; i < sh->ns; i++)
+      for (int mode = 0; mode < (sh->energy ? 2 : 1); mode++) {
+        const SheetState *o = mode ? &sh->te[d][i] : &sh->t[d][i];
+        if (!o->ok)
+          snprintf(buf, sizeof(buf), "tension %s%s: s %g not reached (no lateral balance)\n", SheetDir[d], mode ? " energy" : "", (double)sh->s[i]);
+        else {
+          int n = snprintf(buf, sizeof(buf), "tension %s%s: s %g T %.6e N/m lateral %.6e poisson %.6g shear %.6e", SheetDir[d], mode ? " energy" : "", (double)sh->s[i], (double)o->T, (double)o->lateral, (double)(-o->lateral / sh->s[i]),
+                           (double)o->shear);
+          if (mode && sh->t[d][i].ok) snprintf(buf + n, sizeof(buf) - (size_t)n, " (T %+.2f %% against the balance)", (double)(100 * (o->T / sh->t[d][i].T - 1)));
+          PetscCall(PetscStrlcat(buf, "\n", sizeof(buf)));
+        }
+        PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s", buf));
+      }
+  for (int d = 0; d < 2; d++)
+    for (PetscInt i = 0; i < sh->nk; i++) {
+      snprintf(buf, sizeof(buf), "bending %s: kappa %g 1/m M %.6e N m/m\n", SheetDir[d], (double)sh->kappa[i], (double)sh->M[d][i]);
+      PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s", buf));
+      if (sh->measured && sh->energy) {
+        snprintf(buf, sizeof(buf), "bending %s energy: kappa %g 1/m M %.6e N m/m\n", SheetDir[d], (double)sh->kappa[i], (double)sh->Me[d][i]);
+        PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s", buf));
+      }
+    }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* the figures as JSON (rank 0 writes); a state not reached is null */
+static PetscErrorCode SheetWriteJSON(const char path[], const char name[], const Sheet *sh)
+{
+  PetscMPIInt rank;
+  FILE       *fp;
+  char        tmp[PETSC_MAX_PATH_LEN + 32];
+
+  PetscFunctionBegin;
+  PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
+  if (rank == 0) {
+    PetscCall(HylcFileOpenTemp(path, tmp, sizeof(tmp), &fp));
+    fprintf(fp, "{\n  \"material\": \"");
+    for (const char *c = name; *c; c++) fprintf(fp, *c == '"' || *c == '\\' ? "\\%c" : "%c", *c);
+    fprintf(fp, "\",\n  \"kind\": \"%s\",\n  \"density\": %.17g,\n", sh->measured ? "measured" : "table", (double)sh->density);
+    for (int mode = 0; mode < (sh->energy ? 2 : 1); mode++) {
+      fprintf(fp, "  \"%s\": {", mode ? "tension_energy" : "tension");
+      for (int d = 0; d < 3; d++) {
+        fprintf(fp, "%s\n    \"%s\": [", d ? "," : "", SheetDir[d]);
+        for (PetscInt i = 0; i < sh->ns; i++) {
+          const SheetState *o = mode ? &sh->te[d][i] : &sh->t[d][i];
+          if (o->ok)
+            fprintf(fp, "%s{\"s\": %.17g, \"T\": %.17g, \"lateral\": %.17g, \"poisson\": %.17g, \"shear\": %.17g}", i ? ", " : "", (double)sh->s[i], (double)o->T, (double)o->lateral, (double)(-o->lateral / sh->s[i]), (double)o->shear);
+          else
+            fprintf(fp, "%s{\"s\": %.17g, \"T\": null}", i ? ", " : "", (double)sh->s[i]);
+        }
+        fprintf(fp, "]");
+      }
+      fprintf(fp, "\n  },\n");
+    }
+    for (int mode = 0; mode < (sh->measured && sh->energy ? 2 : 1); mode++) {
+      fprintf(fp, "  \"%s\": {", mode ? "bending_energy" : "bending");
+      for (int d = 0; d < 2; d++) {
+        fprintf(fp, "%s\n    \"%s\": [", d ? "," : "", SheetDir[d]);
+        for (PetscInt i = 0; i < sh->nk; i++) fprintf(fp, "%s{\"kappa\": %.17g, \"M\": %.17g}", i ? ", " : "", (double)sh->kappa[i], (double)(mode ? sh->Me[d][i] : sh->M[d][i]));
+        fprintf(fp, "]");
+      }
+      fprintf(fp, "\n  }%s\n", mode == 0 && sh->measured && sh->energy ? "," : "");
+    }
+    fprintf(fp, "}\n");
+    PetscCall(HylcFileCommitTemp(&fp, tmp, path));
+  }
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "wrote %s\n", path));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* the work of hylc-eval on the material mat (created and destroyed by Run, also on an error) */
 static PetscErrorCode Eval(HylcMaterial mat)
 {
@@ -207,10 +390,17 @@ static PetscErrorCode Eval(HylcMaterial mat)
   char         pcsv[PETSC_MAX_PATH_LEN] = "";
   PetscBool    pathSet, hasPathValues;
   PetscReal    pvalues[256];
-  PetscEnum    pkind = 0;
-  hylcmat_path path  = {HYLCMAT_PATH_UNIAXIAL, 0};
+  PetscEnum    pkind                        = 0;
+  hylcmat_path path                         = {HYLCMAT_PATH_UNIAXIAL, 0};
+  char         measured[PETSC_MAX_PATH_LEN] = "", sjson[PETSC_MAX_PATH_LEN] = "", mjson[PETSC_MAX_PATH_LEN] = "";
+  PetscBool    hasMeasured, doSheet = PETSC_FALSE, sheetEnergy = PETSC_FALSE, hasSJson, hasMJson, hasSStrains, hasSKappa;
+  Sheet        sheet, *sh = &sheet; /* about 20 kB */
+  PetscInt     nss = SHEET_MAX, nsk = SHEET_MAX;
 
   PetscFunctionBeginUser;
+  PetscCall(PetscMemzero(sh, sizeof(*sh)));
+  sh->s[0] = 0.02, sh->s[1] = 0.05, sh->s[2] = 0.1;
+  sh->kappa[0] = 10, sh->kappa[1] = 20, sh->kappa[2] = 40;
   PetscOptionsBegin(PETSC_COMM_WORLD, NULL, "hylc-eval options", "hylc-eval");
   PetscCall(PetscOptionsString("-material", "Material model: ARCSim-HYLC JSON or hylc HDF5 (required; same as -material_file)", "HylcMaterialLoad", file, file, sizeof(file), &hasFile));
   PetscCall(PetscOptionsString("-strain", "Strain sx,sa,sy,II00,II01,II11 (II in 1/m) at which to evaluate Psi", "HylcMaterialEvaluate", strain, strain, sizeof(strain), &hasStrain));
@@ -237,7 +427,30 @@ static PetscErrorCode Eval(HylcMaterial mat)
       "Path mode: the prescribed values (stretches in [0, 1), sa in (-0.99, 0.99), or curvatures in 1/m), in this order: the first from the lowest point of a grid of the free strains, each other from the one before (at most 256)",
       "HylcMaterialPathState", pvalues, &npv, &hasPathValues));
   PetscCall(PetscOptionsString("-eval_path_csv", "Path mode: write value,force,sx,sa,sy,II00,II11,psi,converged (force in N/m, N for bending) to this CSV file", "HylcWritePathCSV", pcsv, pcsv, sizeof(pcsv), NULL));
+  PetscCall(PetscOptionsString("-measured", "A measured-cloth material (the data-driven JSON of Wang, O'Brien, Ramamoorthi 2011 that ARCSim reads: density kg/m^2, stretching 6 x 4, bending 3 x 5) for -eval_sheet, instead of -material",
+                               "hylcmat_measured_load", measured, measured, sizeof(measured), &hasMeasured));
+  PetscCall(PetscOptionsBool("-eval_sheet",
+                             "Print the fabric sheet of the material: strip tension T (N/m) along x, y and the 45 degree bias with the lateral strain and Poisson ratio, bending moment (N m/m), density (kg/m^2) (docs/measured-cloth.md)",
+                             "hylcmat_measured_tension", doSheet, &doSheet, NULL));
+  PetscCall(HylcOptionsRealArray("-eval_sheet_strains", "Sheet: the strip stretches s in (0, 1) (strain, 0 at rest; default 0.02,0.05,0.1; at most 64)", "hylcmat_measured_tension", sh->s, &nss, &hasSStrains));
+  PetscCall(HylcOptionsRealArray("-eval_sheet_curvatures", "Sheet: the curvatures of the bending moments (1/m; default 10,20,40; at most 64)", "hylcmat_measured_bending", sh->kappa, &nsk, &hasSKappa));
+  PetscCall(PetscOptionsBool("-eval_sheet_energy", "Sheet of a measured-cloth material: also the states at the stationarity of its energy (k varying), beside the balance of the simulator's frozen-stiffness forces", "hylcmat_measured_tension",
+                             sheetEnergy, &sheetEnergy, NULL));
+  PetscCall(PetscOptionsString("-eval_sheet_json", "Sheet: write its figures as JSON to this file (T in N/m, M in N m/m, density in kg/m^2)", "hylcmat_measured_tension", sjson, sjson, sizeof(sjson), &hasSJson));
+  PetscCall(PetscOptionsString("-eval_measured_json", "Write the table (-material) as a measured-cloth JSON to this file: the least-squares data of docs/measured-cloth.md, \"Export\" (about 20 s)", "HylcMaterialWriteMeasured", mjson, mjson,
+                               sizeof(mjson), &hasMJson));
   PetscOptionsEnd();
+  sh->ns       = hasSStrains ? nss : 3;
+  sh->nk       = hasSKappa ? nsk : 3;
+  sh->energy   = sheetEnergy;
+  sh->measured = hasMeasured;
+  PetscCheck(doSheet || (!hasSStrains && !hasSKappa && !sheetEnergy && !hasSJson), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-eval_sheet_strains, -eval_sheet_curvatures, -eval_sheet_energy and -eval_sheet_json need -eval_sheet");
+  PetscCheck(!hasSStrains || nss > 0, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-eval_sheet_strains: needs at least one stretch");
+  PetscCheck(!hasSKappa || nsk > 0, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-eval_sheet_curvatures: needs at least one curvature");
+  for (PetscInt i = 0; i < sh->ns; i++) PetscCheck(sh->s[i] > 0 && sh->s[i] < 1, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-eval_sheet_strains: stretch %g is outside (0, 1) (a strip tension test)", (double)sh->s[i]);
+  PetscCheck(!hasSJson || sjson[0], PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-eval_sheet_json needs a file name");
+  PetscCheck(!hasMJson || mjson[0], PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-eval_measured_json needs a file name");
+  PetscCheck(!sheetEnergy || hasMeasured, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-eval_sheet_energy is for a measured-cloth material (-measured); a table's states are the minima of its energy");
   path.kind = (int)pkind;
   PetscCheck(pathSet || (!hasPathValues && !pcsv[0]), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-eval_path_values and -eval_path_csv need -eval_path uniaxial|equibiaxial|shear|bending");
   PetscCheck(!pathSet || (hasPathValues && npv > 0), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-eval_path %s needs -eval_path_values", HylcPathNames[path.kind]);
@@ -261,6 +474,30 @@ static PetscErrorCode Eval(HylcMaterial mat)
     PetscCall(HylcMaterialSetFromOptions(mat)); /* lists -material_file, -material_view */
     PetscFunctionReturn(PETSC_SUCCESS);
   }
+  if (hasMeasured) { /* a measured-cloth material: its sheet only */
+    PetscErrorCode ierr;
+    PetscCheck(measured[0], PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-measured needs a file name");
+    PetscCheck(!hasFile && !hasMatFile, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-measured and -material exclude each other (one material per run)");
+    PetscCheck(!hasStrain && !hasIn && !hasOut && !hasJson && !hasH5 && !hasUni && !hasMJson, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT,
+               "-measured takes -eval_sheet only (-strain, -eval_input, -eval_json, -eval_hdf5, -eval_uniaxial, -eval_measured_json are for a table)");
+    PetscCheck(doSheet, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "Nothing to do with -measured: give -eval_sheet");
+    {
+      HylcFiles files;
+      PetscCall(HylcFilesCreate(PETSC_COMM_WORLD, &files));
+      ierr = HylcFilesAddOptionsFiles(files);
+      if (!ierr) ierr = HylcFilesAdd(files, HYLC_FILE_INPUT, measured, "-measured");
+      if (!ierr && hasSJson) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, sjson, "-eval_sheet_json");
+      if (!ierr) ierr = HylcFilesCheck(files);
+      PetscCall(HylcFilesDestroy(&files));
+      PetscCall(ierr);
+    }
+    PetscCall(HylcCheckOptionsUsed(PETSC_COMM_WORLD));
+    ierr = SheetMeasured(measured, sh);
+    if (!ierr) ierr = SheetPrint(measured, sh);
+    if (!ierr && hasSJson) ierr = SheetWriteJSON(sjson, measured, sh);
+    PetscCall(ierr);
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   PetscCheck(hasFile || hasMatFile, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "hylc-eval needs a material: -material model.json|model.h5 (-help lists the options)");
   PetscCheck(!hasFile || file[0], PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-material needs a file name");
   PetscCheck(!hasMatFile || matFile[0], PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-material_file needs a file name");
@@ -270,8 +507,9 @@ static PetscErrorCode Eval(HylcMaterial mat)
   PetscCheck(hasIn == hasOut, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "Batch mode needs both -eval_input strains.txt|.h5 and -eval_output out.txt|.h5");
   PetscCheck(!hasIn || (bin[0] && bout[0]), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-eval_input and -eval_output need file names");
   PetscCheck(!(hasIn && hasStrain), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-strain and -eval_input exclude each other");
-  PetscCheck(hasStrain || hasJson || hasH5 || hasIn || hasUni || pathSet, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT,
-             "Nothing to do: give -strain sx,sa,sy,II00,II01,II11 (or -eval_json / -eval_hdf5 to convert the material, -eval_uniaxial x|y for the uniaxial states, -eval_path for a fabric test's states)");
+  PetscCheck(hasStrain || hasJson || hasH5 || hasIn || hasUni || pathSet || doSheet || hasMJson, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT,
+             "Nothing to do: give -strain sx,sa,sy,II00,II01,II11 (or -eval_json / -eval_hdf5 to convert the material, -eval_uniaxial x|y for the uniaxial states, -eval_path for a fabric test's states, -eval_sheet for the fabric sheet, "
+             "-eval_measured_json to write it as measured cloth)");
   PetscCheck(!deriv || hasStrain || hasIn, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-derivatives needs -strain");
   if (hasStrain) PetscCall(ParseStrain(strain, s));
   /* every file before any work (include/hylc/files.h): the inputs readable, the outputs writable and
@@ -288,6 +526,8 @@ static PetscErrorCode Eval(HylcMaterial mat)
     if (!ierr && hasH5) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, h5, "-eval_hdf5");
     if (!ierr && hasUCsv) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, ucsv, "-eval_uniaxial_csv");
     if (!ierr && pcsv[0]) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, pcsv, "-eval_path_csv");
+    if (!ierr && hasSJson) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, sjson, "-eval_sheet_json");
+    if (!ierr && hasMJson) ierr = HylcFilesAdd(files, HYLC_FILE_OUTPUT, mjson, "-eval_measured_json");
     if (!ierr) ierr = HylcFilesCheck(files);
     PetscCall(HylcFilesDestroy(&files));
     PetscCall(ierr);
@@ -320,6 +560,22 @@ static PetscErrorCode Eval(HylcMaterial mat)
   if (hasH5) {
     PetscCall(HylcMaterialWriteHDF5(mat, h5, NULL));
     PetscCall(PetscPrintf(PETSC_COMM_WORLD, "wrote %s\n", h5));
+  }
+  if (doSheet) {
+    PetscErrorCode ierr = SheetTable(mat, sh);
+    if (!ierr) ierr = SheetPrint(hasFile ? file : matFile, sh);
+    if (!ierr && hasSJson) ierr = SheetWriteJSON(sjson, hasFile ? file : matFile, sh);
+    PetscCall(ierr);
+  }
+  if (hasMJson) {
+    PetscReal fit[5];
+    char      buf[512];
+    PetscCall(HylcMaterialWriteMeasured(mat, mjson, fit));
+    snprintf(
+        buf, sizeof(buf),
+        "wrote %s (measured cloth: strip tension error RMS %.3g %%, largest %.3g %% at 2-10 %% over 0, 22.5, 45, 67.5, 90 degrees; bending moment error RMS %.3g %%; not representable: a prestress at rest of %.3g N/m, a rest moment of %.3g N m/m)\n",
+        mjson, (double)(100 * fit[0]), (double)(100 * fit[1]), (double)(100 * fit[2]), (double)fit[3], (double)fit[4]);
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s", buf));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

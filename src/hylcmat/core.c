@@ -534,46 +534,59 @@ int hylcmat_load_memory(const char *name, const void *bytes, size_t len, hylcmat
   return hm_parse_json(name, text, len, &E, m);
 }
 
-int hylcmat_load(const char *path, hylcmat **m, char *err, size_t errlen)
+int hm_read_file(const char *path, const char *what, char **bytes, size_t *len, hm_err *E)
 {
-  hm_err      E = {err, errlen};
   struct stat st;
   FILE       *fp;
-  long        len;
-  char       *bytes;
-  int         r;
+  long        n;
+
+  *bytes = NULL;
+  *len   = 0;
+  HM_CHECK(path && path[0], E, HYLCMAT_ERR_ARG, "Cannot read a %s: no file name", what);
+  if (stat(path, &st)) return hm_fail(E, HYLCMAT_ERR_OPEN, "Cannot open %s '%s': %s", what, path, strerror(errno));
+  HM_CHECK(!S_ISDIR(st.st_mode), E, HYLCMAT_ERR_OPEN, "Cannot read %s '%s': it is a directory", what, path);
+  HM_CHECK(S_ISREG(st.st_mode), E, HYLCMAT_ERR_OPEN, "Cannot read %s '%s': not a regular file", what, path);
+  fp = fopen(path, "rb");
+  if (!fp) return hm_fail(E, HYLCMAT_ERR_OPEN, "Cannot open %s '%s': %s", what, path, strerror(errno));
+  if (fseek(fp, 0, SEEK_END) || (n = ftell(fp)) < 0) {
+    fclose(fp);
+    return hm_fail(E, HYLCMAT_ERR_READ, "Cannot read %s '%s'", what, path);
+  }
+  if (n >= (1L << 30)) {
+    fclose(fp);
+    return hm_fail(E, HYLCMAT_ERR_FORMAT, "The %s '%s' is too large (%ld bytes)", what, path, n);
+  }
+  rewind(fp);
+  *bytes = malloc((size_t)n + 1);
+  if (!*bytes) {
+    fclose(fp);
+    return hm_fail(E, HYLCMAT_ERR_MEMORY, "Cannot read %s '%s': out of memory", what, path);
+  }
+  if (fread(*bytes, 1, (size_t)n, fp) != (size_t)n) {
+    fclose(fp);
+    free(*bytes);
+    *bytes = NULL;
+    return hm_fail(E, HYLCMAT_ERR_READ, "Cannot read %s '%s'", what, path);
+  }
+  fclose(fp);
+  (*bytes)[n] = 0;
+  *len        = (size_t)n;
+  return HYLCMAT_OK;
+}
+
+int hylcmat_load(const char *path, hylcmat **m, char *err, size_t errlen)
+{
+  hm_err E = {err, errlen};
+  char  *bytes;
+  size_t len;
+  int    r;
 
   if (err && errlen) err[0] = 0;
   HM_CHECK(m, &E, HYLCMAT_ERR_ARG, "hylcmat_load: NULL result pointer");
   *m = NULL;
   HM_CHECK(path && path[0], &E, HYLCMAT_ERR_ARG, "hylcmat_load: no file name");
-  if (stat(path, &st)) return hm_fail(&E, HYLCMAT_ERR_OPEN, "Cannot open material file '%s': %s", path, strerror(errno));
-  HM_CHECK(!S_ISDIR(st.st_mode), &E, HYLCMAT_ERR_OPEN, "Cannot read material file '%s': it is a directory", path);
-  HM_CHECK(S_ISREG(st.st_mode), &E, HYLCMAT_ERR_OPEN, "Cannot read material file '%s': not a regular file", path);
-  fp = fopen(path, "rb");
-  if (!fp) return hm_fail(&E, HYLCMAT_ERR_OPEN, "Cannot open material file '%s': %s", path, strerror(errno));
-  if (fseek(fp, 0, SEEK_END) || (len = ftell(fp)) < 0) {
-    fclose(fp);
-    return hm_fail(&E, HYLCMAT_ERR_READ, "Cannot read material file '%s'", path);
-  }
-  if (len >= (1L << 30)) {
-    fclose(fp);
-    return hm_fail(&E, HYLCMAT_ERR_FORMAT, "Material file '%s' is too large (%ld bytes)", path, len);
-  }
-  rewind(fp);
-  bytes = malloc((size_t)len + 1);
-  if (!bytes) {
-    fclose(fp);
-    return hm_fail(&E, HYLCMAT_ERR_MEMORY, "Cannot read material file '%s': out of memory", path);
-  }
-  if (fread(bytes, 1, (size_t)len, fp) != (size_t)len) {
-    fclose(fp);
-    free(bytes);
-    return hm_fail(&E, HYLCMAT_ERR_READ, "Cannot read material file '%s'", path);
-  }
-  fclose(fp);
-  bytes[len] = 0;
-  r          = hylcmat_load_memory(path, bytes, (size_t)len, m, err, errlen);
+  HM_CALL(hm_read_file(path, "material file", &bytes, &len, &E));
+  r = hylcmat_load_memory(path, bytes, len, m, err, errlen);
   free(bytes);
   return r;
 }

@@ -78,6 +78,11 @@ HM_INTERN void hm_doc_free(hm_doc *d);
 /* a new table with the document's contents (validated), then frees the document */
 HM_INTERN int hm_doc_install(hm_doc *d, hylcmat **m);
 
+/* reads the whole file path (a what, for messages: "material file") into a new NUL-terminated buffer
+   *bytes (len bytes without the NUL); errors OPEN (missing, a directory, not a regular file), READ,
+   FORMAT (1 GiB or more), MEMORY with a message naming the file */
+HM_INTERN int hm_read_file(const char *path, const char *what, char **bytes, size_t *len, hm_err *E);
+
 HM_INTERN int hm_parse_json(const char *name, const char *text, size_t len, hm_err *E, hylcmat **m);
 #ifdef HYLCMAT_WITH_HDF5
 HM_INTERN int hm_parse_hdf5(const char *name, const void *image, size_t len, hm_err *E, hylcmat **m);

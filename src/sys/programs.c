@@ -220,6 +220,13 @@ static const HylcStageOption HylcStageOptions[] = {
     {"eval_path_values", G_EVAL},
     {"eval_path_csv", G_EVAL},
     {"eval_uniaxial_strains", G_EVAL},
+    {"eval_sheet", G_EVAL},
+    {"eval_sheet_curvatures", G_EVAL},
+    {"eval_sheet_energy", G_EVAL},
+    {"eval_sheet_json", G_EVAL},
+    {"eval_sheet_strains", G_EVAL},
+    {"eval_measured_json", G_EVAL},
+    {"measured", G_EVAL},
     /* calibration */
     {"calibrate_bounds_E", G_CALIBRATE},
     {"calibrate_bounds_Es", G_CALIBRATE},
