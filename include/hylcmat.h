@@ -50,9 +50,10 @@ enum {
 
 #define HYLCMAT_N1D 5 /* 1D terms k = 0 sx, 1 sa, 2 sy, 3 x-bending (II00), 4 y-bending (II11) */
 #define HYLCMAT_N2D 9 /* 2D terms (k0, k1): (0,1) (0,2) (0,3) (0,4) (1,2) (1,3) (1,4) (2,3) (2,4) */
-#define HYLCMAT_N3D                                                                           \
-  3 /* 3D terms (k0, k1, k2): (0,1,2) (0,2,3) (0,2,4): hylc's extension of the paper's model, \
-       not in the ARCSim-HYLC JSON (docs/material.md, "Three-strain terms") */
+/* 3D terms (k0, k1, k2): (0,1,2) (0,1,3) (0,1,4) (0,2,3) (0,2,4) (1,2,3) (1,2,4), the in-plane triple and each
+   in-plane pair with each bending coordinate: hylc's extension of the paper's model, not in the ARCSim-HYLC JSON
+   (docs/material.md, "Three-strain terms") */
+#define HYLCMAT_N3D 7
 
 /* extrapolation modes (the JSON key "ext") */
 enum { HYLCMAT_EXT_LINEAR = 0, HYLCMAT_EXT_CONSTANT = 1, HYLCMAT_EXT_ZERO = 2 };
@@ -443,7 +444,7 @@ int hylcmat_pair_index(int k0, int k1);
 /* "sx" "sa" "sy" "II00" "II11" (k = 0..4); "sx-sa" ... "sy-II11" (q = 0..8); NULL out of range */
 const char *hylcmat_term1d_name(int k);
 const char *hylcmat_term2d_name(int q);
-/* (k0, k1, k2) of 3D term r (0..2); "sx-sa-sy" "sx-sy-II00" "sx-sy-II11"; NULL out of range */
+/* (k0, k1, k2) of 3D term r (0..6); "sx-sa-sy" "sx-sa-II00" ... "sa-sy-II11"; NULL out of range */
 void        hylcmat_triple(int r, int *k0, int *k1, int *k2);
 const char *hylcmat_term3d_name(int r);
 /* a short description of an error code */

@@ -75,7 +75,7 @@ PETSC_EXTERN PetscErrorCode HylcFitGetOutputs(HylcFit, const char *h5[], const c
 PETSC_EXTERN PetscErrorCode HylcFitSetFamily(HylcFit, HylcFitFamily);
 
 /* Data without a file: n rows of strain (n x 6: sx, sa, sy, II00, II01, II11), psi (J/m^2) and term
-   (0..17 as in include/hylc/plan.h; term 0 rows only take part in f0 and the normalisation), and the
+   (0..21 as in include/hylc/plan.h; term 0 rows only take part in f0 and the normalisation), and the
    area density (kg/m^2; <= 0: -fit_density must give it). Copied; replaces -fit_input. Not collective. */
 PETSC_EXTERN PetscErrorCode HylcFitSetData(HylcFit, PetscInt n, const PetscReal strain[], const PetscReal psi[], const PetscInt term[], PetscReal areaDensity);
 

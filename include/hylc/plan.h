@@ -5,8 +5,9 @@
    Coordinates (index c): 0 = sx, 1 = sa, 2 = sy, 3 = II00, 4 = II11; in the 6-vector strain
    z = (sx, sa, sy, II00, II01, II11) they sit at positions 0, 1, 2, 3, 5 (II01 is never sampled).
    Terms: 0 = the zero sample; 1..5 = the 1D terms of coordinates 0..4; 6..14 = the 2D terms of the pairs
-   (sx,sa) (sx,sy) (sx,II00) (sx,II11) (sa,sy) (sa,II00) (sa,II11) (sy,II00) (sy,II11); 15..17 = the 3D terms
-   of the triples (sx,sa,sy) (sx,sy,II00) (sx,sy,II11) (hylc's extension, sampled with graded spacing only).
+   (sx,sa) (sx,sy) (sx,II00) (sx,II11) (sa,sy) (sa,II00) (sa,II11) (sy,II00) (sy,II11); 15..21 = the 3D terms
+   of the triples (sx,sa,sy) (sx,sa,II00) (sx,sa,II11) (sx,sy,II00) (sx,sy,II11) (sa,sy,II00) (sa,sy,II11) (hylc's
+   extension, sampled with graded spacing only).
    Sample order: the zero sample, then the 1D terms in order (ascending), then the 2D terms in order, each a
    grid with the first coordinate outer, then the 3D terms, each a grid with the first coordinate outermost. */
 
@@ -15,7 +16,7 @@
 
 #define HYLC_PLAN_NCOORD      HYLC_NCOORD                      /* the vocabulary's coordinates (include/hylc/strain.h) */
 #define HYLC_PLAN_NTERM       (1 + HYLC_NCOORD + HYLC_NPAIR)   /* the paper's terms: zero, the 1D terms, the 2D terms */
-#define HYLC_PLAN_NTERM3      (HYLC_PLAN_NTERM + HYLC_NTRIPLE) /* and the 3D terms 15..17 (graded spacing only) */
+#define HYLC_PLAN_NTERM3      (HYLC_PLAN_NTERM + HYLC_NTRIPLE) /* and the 3D terms 15..21 (graded spacing only) */
 #define HYLC_PLAN_PAPER_TERMS ((1 << HYLC_PLAN_NTERM) - 1)     /* the term mask of the paper's terms */
 #define HYLC_PLAN_ALL_TERMS   ((1 << HYLC_PLAN_NTERM3) - 1)
 
@@ -29,7 +30,7 @@ typedef enum { HYLC_PLAN_SPACING_PAPER = 0, HYLC_PLAN_SPACING_GRADED = 1 } HylcP
 typedef struct {
   double min1[HYLC_PLAN_NCOORD], max1[HYLC_PLAN_NCOORD]; /* 1D ranges per coordinate */
   double min2[9][2], max2[9][2];                         /* 2D ranges per pair and coordinate */
-  double min3[3][3], max3[3][3];                         /* 3D ranges per triple and coordinate */
+  double min3[HYLC_NTRIPLE][3], max3[HYLC_NTRIPLE][3];   /* 3D ranges per triple and coordinate */
   int    n1, n2;                                         /* paper spacing: samples per 1D term, per 2D axis (150, 50) */
   int    terms;                                          /* bit t set: term t is sampled (HYLC_PLAN_ALL_TERMS) */
   int    spacing;                                        /* HylcPlanSpacing */
@@ -40,15 +41,15 @@ typedef struct {
 } HylcPlan;
 
 /* the name of term t: zero, sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11,
-   sy-II00, sy-II11, sx-sa-sy, sx-sy-II00, sx-sy-II11 (used by -sampler_terms and in the HDF5 file) */
+   sy-II00, sy-II11, sx-sa-sy, sx-sa-II00, sx-sa-II11, sx-sy-II00, sx-sy-II11, sa-sy-II00, sa-sy-II11 (used by -sampler_terms and in the HDF5 file) */
 const char *HylcPlanTermName(int t);
 /* the number of coordinates term t varies: 0 (the zero sample), 1, 2 or 3; -1 out of range */
 int HylcPlanTermDim(int t);
 /* the two coordinates of 2D term t (6..14) */
 void HylcPlanPair(int t, int *ci, int *cj);
-/* the three coordinates of 3D term t (15..17) */
+/* the three coordinates of 3D term t (15..21) */
 void HylcPlanTriple(int t, int c[3]);
-/* the coordinate of axis a of term t (1..17), -1 out of range */
+/* the coordinate of axis a of term t (1..21), -1 out of range */
 int HylcPlanAxisCoord(int t, int a);
 /* position of coordinate c in the 6-vector strain */
 int HylcPlanStrainIndex(int c);
@@ -62,7 +63,7 @@ int HylcSampleRange(int c, double zmin, double zmax, int N, double Z[]);
    it would be shorter than half of that one's). Ascending, 0 included; returns the count, or -1 for invalid
    input (h0 <= 0, g < 1, hmax < h0, more than cap knots). */
 int HylcPlanGradedKnots(double mn, double mx, double h0, double g, double hmax, int cap, double K[]);
-/* The samples of axis a (0 .. dim - 1) of term t (1..17), ascending; returns their count, or -1 for an invalid
+/* The samples of axis a (0 .. dim - 1) of term t (1..21), ascending; returns their count, or -1 for an invalid
    plan. paper: HylcSampleRange with n1 / n2 (a 3D term has no samples: -1); graded: the knots cut sub times (a 3D
    term: its knots only). */
 int HylcPlanAxis(const HylcPlan *, int t, int a, double Z[HYLC_PLAN_MAXAXIS]);
@@ -89,8 +90,8 @@ long HylcPlanUnits(const HylcPlan *, long start[], long order[]);
    "honeycomb", "rib"; II ranges scale with 1/r relative to r = 1 mm (scale = 1e-3 / r). Returns -1 for an
    unknown family. 2D ranges: stretch axes paired with sa or a bending [-0.1, 0.84 max], (sx, sy) both
    [0.74 min, max], sa in 2D +-0.8 max, bending in 2D +-0.8 max (+-0.72 max on the same axis). 3D ranges (where
-   cloth lives): in (sx, sa, sy) the stretches [0.45 min, 0.3 max] and sa +-0.55 max; in (sx, sy, II) the
-   stretches [0.2 min, 0.15 max] and the curvature +-0.35 max. The spacing is paper's (n1 150, n2 50); the
+   cloth lives): in (sx, sa, sy) the stretches [0.45 min, 0.3 max] and sa +-0.55 max; in an in-plane pair with
+   a curvature the stretches [0.2 min, 0.15 max], sa +-0.25 max and the curvature +-0.35 max. The spacing is paper's (n1 150, n2 50); the
    graded parameters are set to their defaults (HylcPlanGradedDefaults()). */
 int HylcPlanDefaults(const char *family, double scale, HylcPlan *);
 /* The graded spacing's defaults: h0 = 0.01 in sx, sa, sy and 2.5 1/m x scale in the curvatures (scale = 1e-3 / r,

@@ -17,7 +17,7 @@
 #define HYLC_NSTRAIN           6  /* components of z */
 #define HYLC_NCOORD            5  /* coordinates = 1D terms */
 #define HYLC_NPAIR             9  /* pairs = 2D terms */
-#define HYLC_NTRIPLE           3  /* triples = 3D terms, hylc's extension of the paper's model: (sx,sa,sy) (sx,sy,II00) (sx,sy,II11) */
+#define HYLC_NTRIPLE           7  /* triples = 3D terms, hylc's extension of the paper's model: (sx,sa,sy), and each in-plane pair with each bending coordinate */
 #define HYLC_STRAIN_ALL_BITS   63 /* bit s set for every strain component s (component masks) */
 #define HYLC_STRAIN_PLANE_BITS 7  /* sx, sa, sy */
 #define HYLC_STRAIN_NO_POISSON 64 /* with a component mask: leave NaN a component whose derivative needs a doubly curved (Poisson) midsurface at a flat or singly curved strain */

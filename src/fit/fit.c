@@ -491,7 +491,8 @@ PetscErrorCode HylcFitSetFromOptions(HylcFit fit)
   PetscCall(PetscOptionsInt("-fit_min_samples_1d", "A 1D term with fewer samples (but some) is an error", "HylcFitSetFromOptions", fit->min1, &fit->min1, NULL));
   PetscCall(PetscOptionsInt("-fit_min_samples_2d", "A 2D term with fewer samples (but some) is an error", "HylcFitSetFromOptions", fit->min2, &fit->min2, NULL));
   PetscCall(PetscOptionsString("-fit_terms",
-                               "Terms to fit: all, or a comma list of sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11, sx-sa-sy, sx-sy-II00, sx-sy-II11 (the 3D terms with the fabric method only)",
+                               "Terms to fit: all, or a comma list of sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11, sx-sa-sy, sx-sa-II00, sx-sa-II11, sx-sy-II00, sx-sy-II11, sa-sy-II00, "
+                               "sa-sy-II11 (the 3D terms with the fabric method only)",
                                "HylcFitSetFromOptions", terms, terms, sizeof(terms), NULL));
   PetscOptionsEnd();
   PetscCheck(known, comm, set ? PETSC_ERR_USER_INPUT : PETSC_ERR_FILE_UNEXPECTED, "%s %s: unknown family (woven, stockinette, honeycomb or rib; knit is the former name of honeycomb and rib)", set ? "-fit_family" : "the samples' -sampler_family",
@@ -532,7 +533,8 @@ PetscErrorCode HylcFitSetFromOptions(HylcFit fit)
           PetscCall(PetscStrcmp(tok, HylcPlanTermName(t), &eq));
           if (eq) found = t;
         }
-        PetscCheck(found > 0, comm, PETSC_ERR_USER_INPUT, "-fit_terms: unknown term '%s' (use all or sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11, sx-sa-sy, sx-sy-II00, sx-sy-II11)", tok);
+        PetscCheck(found > 0, comm, PETSC_ERR_USER_INPUT,
+                   "-fit_terms: unknown term '%s' (use all or sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11, sx-sa-sy, sx-sa-II00, sx-sa-II11, sx-sy-II00, sx-sy-II11, sa-sy-II00, sa-sy-II11)", tok);
         fit->terms |= 1 << found;
       }
     }
@@ -557,7 +559,7 @@ PetscErrorCode HylcFitSetFromOptions(HylcFit fit)
 . n           - the number of rows
 . strain      - n x 6: sx, sa, sy, II00, II01, II11
 . psi         - the energy densities (J/m^2)
-. term        - the term of each row, 0..17 as in include/hylc/plan.h (term 0 rows only take part in f0 and
+. term        - the term of each row, 0..21 as in include/hylc/plan.h (term 0 rows only take part in f0 and
                 the normalisation)
 - areaDensity - the area density (kg/m^2; <= 0: -fit_density must give it)
 
@@ -579,7 +581,7 @@ PetscErrorCode HylcFitSetData(HylcFit fit, PetscInt n, const PetscReal strain[],
   PetscCall(PetscMalloc1(6 * n + 1, &fit->stress));
   for (PetscInt k = 0; k < 6 * n; k++) fit->stress[k] = (PetscReal)NAN;
   for (PetscInt k = 0; k < n; k++) {
-    PetscCheck(term[k] >= 0 && term[k] < HYLC_PLAN_NTERM3, comm, PETSC_ERR_USER_INPUT, "HylcFitSetData: row %" PetscInt_FMT " has term %" PetscInt_FMT " (valid: 0..17)", k, term[k]);
+    PetscCheck(term[k] >= 0 && term[k] < HYLC_PLAN_NTERM3, comm, PETSC_ERR_USER_INPUT, "HylcFitSetData: row %" PetscInt_FMT " has term %" PetscInt_FMT " (valid: 0..21)", k, term[k]);
     for (int i = 0; i < 6; i++) fit->z[6 * k + i] = strain[6 * k + i];
     fit->psi[k]  = psi[k];
     fit->term[k] = term[k];

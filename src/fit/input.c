@@ -140,7 +140,7 @@ static PetscErrorCode ReadSamplesHDF5(HylcFit fit, const char path[])
     if (!(r->term >= 0 && r->term < HYLC_PLAN_NTERM3)) {
       PetscCall(PetscFree(recs));
       PetscCall(PetscFree(done));
-      SETERRQ(comm, PETSC_ERR_FILE_UNEXPECTED, "%s: /samples/term of row %ld is %d (valid: 0..17)", path, k, r->term);
+      SETERRQ(comm, PETSC_ERR_FILE_UNEXPECTED, "%s: /samples/term of row %ld is %d (valid: 0..21)", path, k, r->term);
     }
     {
       int         c;

@@ -414,7 +414,7 @@ int hylcmat_set_term3d(hylcmat *m, const hylcmat_term3d *s, char *err, size_t er
 
   HM_CHECK(m && s, &E, HYLCMAT_ERR_ARG, "hylcmat_set_term3d: NULL argument");
   r = HylcTripleIndex(s->k0, s->k1, s->k2);
-  HM_CHECK(r >= 0, &E, HYLCMAT_ERR_FORMAT, "3D term: (k0, k1, k2) = (%d, %d, %d) is not a term of the model; the triples are (0,1,2) (0,2,3) (0,2,4)", s->k0, s->k1, s->k2);
+  HM_CHECK(r >= 0, &E, HYLCMAT_ERR_FORMAT, "3D term: (k0, k1, k2) = (%d, %d, %d) is not a term of the model; the triples are (0,1,2) (0,1,3) (0,1,4) (0,2,3) (0,2,4) (1,2,3) (1,2,4)", s->k0, s->k1, s->k2);
   snprintf(what, sizeof(what), "3D term %s (k0 = %d, k1 = %d, k2 = %d)", HylcTripleNames[r], s->k0, s->k1, s->k2);
   HM_CHECK(s->ext >= HYLCMAT_EXT_LINEAR && s->ext <= HYLCMAT_EXT_ZERO, &E, HYLCMAT_ERR_FORMAT, "%s: extrapolation mode %d is not 0 (linear), 1 (constant) or 2 (zero)", what, s->ext);
   HM_CALL(CheckKnots(&E, what, "tu", s->nu, s->tu));

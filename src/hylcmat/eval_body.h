@@ -459,7 +459,7 @@ static HM_ALWAYS_INLINE void F(EvaluateLevel)(const hylcmat *m, const double s[6
   const R A = 0.5 * (R)s[3] + 0.5 * (R)s[5], B = 0.5 * (R)s[3] - 0.5 * (R)s[5], C = s[4], S = F(Hypot)(B, C);
   R       E = m->C0, g[6] = {0, 0, 0, 0, 0, 0}, H[6][6];
   F(Bend)
-  T0, Tu[3], Tuu[3], T02; /* T02: the mixed sx-sy derivative of the 3D bending terms */
+  T0, Tu[3], Tuu[3], Tm[3]; /* Tm[i + j - 1]: the mixed (i, j) in-plane derivative of the 3D bending terms */
   F(Basis)
   Bq[HYLCMAT_N2D]; /* the pairs' u-bases (a pair with m->ushare[q] >= 0 uses that one's) */
 
@@ -469,7 +469,7 @@ static HM_ALWAYS_INLINE void F(EvaluateLevel)(const hylcmat *m, const double s[6
     memset(Tu, 0, sizeof(Tu));
     memset(H, 0, sizeof(H));
     memset(Tuu, 0, sizeof(Tuu));
-    memset(&T02, 0, sizeof(T02));
+    memset(Tm, 0, sizeof(Tm));
   } else {
     T0.P = T0.Q = T0.PA = T0.Pw = T0.QA = T0.Qw = 0;
     for (int i = 0; i < 3; i++) Tu[i].P = Tu[i].Q = 0;
@@ -542,7 +542,7 @@ static HM_ALWAYS_INLINE void F(EvaluateLevel)(const hylcmat *m, const double s[6
     if (level > 1) F(Add)
     (&Tuu[i], &q[2], k == 3 ? 1 : -1, is[k], is[i] * is[i], 0);
   }
-  /* hylc's 3D terms: (sx, sa, sy) in-plane, (sx, sy, II00) and (sx, sy, II11) through the eigen-split */
+  /* hylc's 3D terms: (sx, sa, sy) in-plane, the in-plane pairs with II00 and with II11 through the eigen-split */
   for (int r = 0; r < HYLCMAT_N3D; r++) {
     const hylcmat_term3d *sp = &m->t3[r];
     const int             i = HylcTripleCoords[r][0], j = HylcTripleCoords[r][1], k = HylcTripleCoords[r][2];
@@ -590,7 +590,7 @@ static HM_ALWAYS_INLINE void F(EvaluateLevel)(const hylcmat *m, const double s[6
         F(Add)
         (&Tuu[i], &q[3], sg, is[kb], is[i] * is[i], 0);
         F(Add)
-        (&T02, &q[4], sg, is[kb], is[i] * is[j], 0);
+        (&Tm[i + j - 1], &q[4], sg, is[kb], is[i] * is[j], 0);
         F(Add)
         (&Tuu[j], &q[5], sg, is[kb], is[j] * is[j], 0);
       }
@@ -623,7 +623,8 @@ static HM_ALWAYS_INLINE void F(EvaluateLevel)(const hylcmat *m, const double s[6
       H[i][4] += EuC;
       H[i][i] += Tuu[i].P + B * Tuu[i].Q;
     }
-    H[0][2] += T02.P + B * T02.Q;
+    for (int i = 0; i < 2; i++)
+      for (int j = i + 1; j < 3; j++) H[i][j] += Tm[i + j - 1].P + B * Tm[i + j - 1].Q;
     for (int i = 0; i < 6; i++)
       for (int j = 0; j < 6; j++) hess[6 * i + j] = i <= j ? H[i][j] : H[j][i];
   }

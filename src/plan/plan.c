@@ -4,7 +4,7 @@
 #include <string.h>
 
 /* the terms are the shared vocabulary's (include/hylc/strain.h) after the zero sample: 1..5 its coordinates,
-   6..14 its pairs, 15..17 its triples */
+   6..14 its pairs, 15..21 its triples */
 const char *HylcPlanTermName(int t)
 {
   if (t == 0) return "zero";
@@ -254,7 +254,7 @@ int HylcPlanDefaults(const char *family, double scale, HylcPlan *p)
       if (x == 0 || x == 2)
         mn = (bending ? 0.2 : 0.45) * lo[x], mx = (bending ? 0.15 : 0.3) * hi[x];
       else if (x == 1)
-        mn = 0.55 * lo[x], mx = 0.55 * hi[x];
+        mn = (bending ? 0.25 : 0.55) * lo[x], mx = (bending ? 0.25 : 0.55) * hi[x];
       else
         mn = 0.35 * lo[x], mx = 0.35 * hi[x];
       p->min3[r][a] = mn;

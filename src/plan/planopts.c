@@ -192,8 +192,9 @@ PetscErrorCode HylcPlanTermsFromString(MPI_Comm comm, const char opt[], const ch
       PetscCall(PetscStrcmp(tok, HylcPlanTermName(t), &eq));
       if (eq) found = t;
     }
-    PetscCheck(found >= 0, comm, PETSC_ERR_USER_INPUT, "%s: unknown term '%s' (use zero, sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11, sx-sa-sy, sx-sy-II00, sx-sy-II11, 1d, paper or all)", opt,
-               tok);
+    PetscCheck(found >= 0, comm, PETSC_ERR_USER_INPUT,
+               "%s: unknown term '%s' (use zero, sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11, sx-sa-sy, sx-sa-II00, sx-sa-II11, sx-sy-II00, sx-sy-II11, sa-sy-II00, sa-sy-II11, 1d, paper or all)",
+               opt, tok);
     *terms |= 1 << found;
   }
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -132,7 +132,7 @@ PetscErrorCode HylcSamplerSetSampleCounts(HylcSampler S, PetscInt n1, PetscInt n
 
   Input Parameters:
 + S     - the sampler
-- terms - bit t set for term t of include/hylc/plan.h (0 zero, 1..5 the 1D terms, 6..14 the 2D terms, 15..17 the 3D terms)
+- terms - bit t set for term t of include/hylc/plan.h (0 zero, 1..5 the 1D terms, 6..14 the 2D terms, 15..21 the 3D terms)
 
   Level: beginner
 @*/
@@ -382,7 +382,7 @@ PetscErrorCode HylcSamplerSetFromOptions(HylcSampler S)
   }
   PetscCall(PetscOptionsString("-sampler_terms",
                                "Terms to sample: all (with graded spacing the 3D terms too), paper (the paper's 15: zero, 1D, 2D), 1d, or a comma list of zero, sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, "
-                               "sy-II00, sy-II11, sx-sa-sy, sx-sy-II00, sx-sy-II11",
+                               "sy-II00, sy-II11, sx-sa-sy, sx-sa-II00, sx-sa-II11, sx-sy-II00, sx-sy-II11, sa-sy-II00, sa-sy-II11",
                                "HylcSamplerSetTerms", terms, terms, sizeof(terms), &tset));
   PetscCall(PetscOptionsInt("-sampler_batch", "Samples per batch (unit of work of a rank)", "HylcSamplerSetBatchSize", batch, &batch, NULL));
   PetscCall(PetscOptionsEnum("-sampler_start",

@@ -321,7 +321,7 @@ static PetscErrorCode WritePlan(hid_t file, const HylcPlan *plan)
 
   Input Parameters:
 + path - the samples file
-. t    - the term (1..17, include/hylc/plan.h)
+. t    - the term (1..21, include/hylc/plan.h)
 - a    - the axis (0; 1 and 2 for the second and third coordinate of a 2D or 3D term)
 
   Output Parameters:

@@ -24,8 +24,10 @@ int HylcPairIndex(int k0, int k1)
 /* the load paths of include/hylcmat.h, with the two trailing entries of PETSc's enum lists */
 const char *const HylcPathNames[7] = {"uniaxial", "equibiaxial", "shear", "bending", "HylcPath", "HYLCMAT_PATH_", NULL};
 
-const int         HylcTripleCoords[HYLC_NTRIPLE][3] = {{0, 1, 2}, {0, 2, 3}, {0, 2, 4}};
-const char *const HylcTripleNames[HYLC_NTRIPLE]     = {HYLC_NAME_SX "-" HYLC_NAME_SA "-" HYLC_NAME_SY, HYLC_NAME_SX "-" HYLC_NAME_SY "-" HYLC_NAME_II00, HYLC_NAME_SX "-" HYLC_NAME_SY "-" HYLC_NAME_II11};
+#define HYLC_TRIPLE_NAME(a, b, c) HYLC_NAME_##a "-" HYLC_NAME_##b "-" HYLC_NAME_##c
+const int         HylcTripleCoords[HYLC_NTRIPLE][3] = {{0, 1, 2}, {0, 1, 3}, {0, 1, 4}, {0, 2, 3}, {0, 2, 4}, {1, 2, 3}, {1, 2, 4}};
+const char *const HylcTripleNames[HYLC_NTRIPLE]     = {HYLC_TRIPLE_NAME(SX, SA, SY),   HYLC_TRIPLE_NAME(SX, SA, II00), HYLC_TRIPLE_NAME(SX, SA, II11), HYLC_TRIPLE_NAME(SX, SY, II00),
+                                                       HYLC_TRIPLE_NAME(SX, SY, II11), HYLC_TRIPLE_NAME(SA, SY, II00), HYLC_TRIPLE_NAME(SA, SY, II11)};
 
 int HylcTripleIndex(int k0, int k1, int k2)
 {

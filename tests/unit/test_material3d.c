@@ -1,4 +1,4 @@
-/* hylc's 3D terms (include/hylcmat.h, hylcmat_term3d: (sx,sa,sy), (sx,sy,II00), (sx,sy,II11)) in the evaluator:
+/* hylc's 3D terms (include/hylcmat.h, hylcmat_term3d: (sx,sa,sy) and each in-plane pair with II00 and with II11) in the evaluator:
    - a table with every kind of term, the 3D ones with random node data, evaluated at strains away from the knots
      (II01 != 0, II00 = II11 and II = 0 among them): the gradient against central differences of Psi (to 1e-6 of
      its scale), the Hessian against central differences of the gradient (to 1e-5; not at II = 0, where the
@@ -147,10 +147,10 @@ int main(int argc, char **argv)
     hylcmat_term3d t;
     int            r;
     HYLC_CHECK(hylcmat_term3d_get(m, 0, 1, 2, &t), "get (0,1,2)");
-    t.k2 = 3;
-    t.k1 = 1;
+    t.k1 = 3;
+    t.k2 = 4;
     r    = hylcmat_set_term3d(m, &t, err, sizeof(err));
-    HYLC_CHECK(r == HYLCMAT_ERR_FORMAT && strstr(err, "not a term"), "(0,1,3): %d '%s'", r, err);
+    HYLC_CHECK(r == HYLCMAT_ERR_FORMAT && strstr(err, "not a term"), "(0,3,4): %d '%s'", r, err);
     HYLC_CHECK(hylcmat_term3d_get(m, 0, 1, 2, &t), "get (0,1,2)");
     {
       double bad[5] = {-1, 0, 0, 0.5, 1};
