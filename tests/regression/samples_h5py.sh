@@ -52,7 +52,7 @@ assert np.array_equal(s["psi"][done], 1e-3 * k + 1.0 / 3.0)          # MakeRecor
 assert np.array_equal(s["term"][done], k % 15)
 names = list(s.attrs["status_names"])
 assert names == ["converged", "iteration_cap", "time_cap", "stalled", "nonfinite", "failed"], names
-assert list(s.attrs["term_names"])[:3] == ["zero", "sx", "sa"] and len(s.attrs["term_names"]) == 15
+assert list(s.attrs["term_names"])[:3] == ["zero", "sx", "sa"] and len(s.attrs["term_names"]) == 22
 r = f["reference"]
 nv = int(r.attrs["nv"])
 for name, shape in (("X", (nv, 3)), ("theta", (nv,)), ("next", (nv,)), ("prev", (nv,)), ("shift", (nv, 2)),
