@@ -4,6 +4,8 @@
 #   make demo       install missing dependencies, build, run the main job on a built-in default
 #   make bench      build and run the benchmarks (prints measured figures)
 #   make fabric-sheet  build, run hylc-cloth's virtual tests on the paper's tables (and FABRIC_TABLES="NAME=PATH ...")
+#   make fidelity   build, make the default table of every paper and generated pattern and write
+#                   docs/fabric-fidelity.md: each table against its own yarn tile (hours; resumable)
 #                   and write docs/fabric-sheet.md (tools/fabric_sheet.py, about 40 min on 2 cores)
 #   make install    PREFIX=/usr/local DESTDIR=: headers, libraries, programs, pkg-config files, docs
 #   make uninstall  remove every installed file (from the manifest written by install)
@@ -82,7 +84,7 @@ SUPPORT_SRC := $(sort $(wildcard tests/support/*.c))
 SUPPORT_LIB := $(BUILD)/libhylc-testsupport.a
 ALL_OBJ   := $(LIB_OBJ) $(SUPPORT_SRC:%.c=$(OBJ)/%.o) $(patsubst src/%.c,$(BUILD)/hylcmat/%.o,$(wildcard src/hylcmat/*.c) src/sys/json.c src/sys/strain.c src/sys/h5util.c) $(APP_SRC:%.c=$(OBJ)/%.o) $(TEST_SRC:%.c=$(OBJ)/%.o) $(REPLAY_SRC:%.c=$(OBJ)/%.o) $(OBJ)/tests/fuzz/replay.o $(BENCH_SRC:%.c=$(OBJ)/%.o) $(EX_SRC:%.c=$(OBJ)/%.o)
 
-.PHONY: all lib apps tests benches examples test test-asan coverage check-format demo bench fabric-sheet deps format clean help fuzz fuzz-build fuzz-deps hylcmat install uninstall
+.PHONY: all lib apps tests benches examples test test-asan coverage check-format demo bench fabric-sheet fidelity deps format clean help fuzz fuzz-build fuzz-deps hylcmat install uninstall
 all: lib hylcmat apps tests benches examples
 lib: $(LIB) $(SOLIB)
 apps: $(APPS)
@@ -242,6 +244,9 @@ bench: all
 # the fabric sheet (docs/fabric-sheet.md) of hylc-cloth's virtual tests on the paper's tables and FABRIC_TABLES
 fabric-sheet: apps
 	@HYLC_FABRIC_TABLES="$(FABRIC_TABLES)" python3 tools/fabric_sheet.py
+
+fidelity: apps
+	@bash tools/fidelity_all.sh
 
 # the tests in the COVERAGE=1 build (build-cov), then line coverage per stage (tools/coverage.sh)
 coverage:

@@ -68,7 +68,8 @@ int HylcPlanGradedKnots(double mn, double mx, double h0, double g, double hmax, 
    term: its knots only). */
 int HylcPlanAxis(const HylcPlan *, int t, int a, double Z[HYLC_PLAN_MAXAXIS]);
 /* The knots of axis a of term t under graded spacing (what the samples subdivide); -1 for paper spacing or an
-   invalid plan. A 3D term's knots are coarser: spacing 2 h0 at 0, growing by at least 2 (HYLC_PLAN_GROWTH3). */
+   invalid plan. A 3D term's knots are coarser: spacing 2 h0 at 0, an in-plane axis growing by at least 2
+   (HYLC_PLAN_GROWTH3), a curvature axis by the plan's growth. */
 #define HYLC_PLAN_GROWTH3 2.0
 int HylcPlanAxisKnots(const HylcPlan *, int t, int a, double K[HYLC_PLAN_MAXAXIS]);
 /* number of samples of term t (0 if not selected) and of the whole plan */

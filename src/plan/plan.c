@@ -124,7 +124,10 @@ int HylcPlanAxisKnots(const HylcPlan *p, int t, int a, double K[HYLC_PLAN_MAXAXI
   int    c;
   double mn, mx;
   if (p->spacing != HYLC_PLAN_SPACING_GRADED || AxisRange(p, t, a, &c, &mn, &mx)) return -1;
-  if (HylcPlanTermDim(t) == 3) return HylcPlanGradedKnots(mn, mx, 2 * p->h0[c], p->growth > HYLC_PLAN_GROWTH3 ? p->growth : HYLC_PLAN_GROWTH3, p->hmax * (mx - mn) > 2 * p->h0[c] ? p->hmax * (mx - mn) : 2 * p->h0[c], HYLC_PLAN_MAXAXIS, K);
+  if (HylcPlanTermDim(t) == 3) { /* coarser: 2 h0 at 0, an in-plane axis growing by at least HYLC_PLAN_GROWTH3 */
+    const double g = c >= 3 || p->growth > HYLC_PLAN_GROWTH3 ? p->growth : HYLC_PLAN_GROWTH3;
+    return HylcPlanGradedKnots(mn, mx, 2 * p->h0[c], g, p->hmax * (mx - mn) > 2 * p->h0[c] ? p->hmax * (mx - mn) : 2 * p->h0[c], HYLC_PLAN_MAXAXIS, K);
+  }
   return HylcPlanGradedKnots(mn, mx, p->h0[c], p->growth, p->hmax * (mx - mn), HYLC_PLAN_MAXAXIS, K);
 }
 
