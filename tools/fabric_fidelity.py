@@ -128,12 +128,20 @@ def measure(args):
         cand = os.path.join(REF, "materials", PAPER[name] + ".json")
         paper = cand if os.path.isfile(cand) else ""
     work = tempfile.mkdtemp(prefix="fidelity-" + name + "-")
+    # the tile is reference.pyp under the study's yarn: the options without the pattern's source (a generated
+    # pattern's -pattern_type, a stored one's -pattern_file, the radius the .pyp holds)
+    tile_cfg = os.path.join(work, "tile.yaml")
+    with open(cfg) as fi, open(tile_cfg, "w") as fo:
+        for line in fi:
+            if line.split(":")[0].strip() not in ("pattern_type", "pattern_file", "pattern_radius"):
+                fo.write(line)
+    cfg_given, cfg = cfg, tile_cfg
     jobs = []
     for (label, kind, angle, values, report, sign) in PATHS:
         vals = [sign * v for v in values]
         tag = label.replace(" ", "_").replace("+", "p").replace("-", "m")
         jobs.append((label, kind, angle, vals, [sign * v for v in report], tag))
-    results = {"name": name, "config": cfg, "material": mat, "model": model, "export": export, "paper": paper or "", "paths": {}}
+    results = {"name": name, "config": cfg_given, "material": mat, "model": model, "export": export, "paper": paper or "", "paths": {}}
     with ThreadPoolExecutor(max_workers=args.np) as ex:
         tile_f = {j[0]: ex.submit(tile_path, cfg, pyp, j[1], j[2], j[3], work, j[5]) for j in jobs}
         table_f = {j[0]: ex.submit(table_path, model, j[1], j[2], j[3], work, j[5]) for j in jobs}
