@@ -270,8 +270,10 @@ PetscErrorCode HylcReferenceStateCompute(HylcPattern in, const HylcYarnModel *mo
 
 /*@C
   HylcReferenceStateNeeded - Whether a job's reference mode computes a reference state for this pattern:
-  compute, relax and auto always (auto: Algorithm C1 for a generated pattern or a file that is not a reference
-  state, relax for a stored reference state, HylcReferenceStateForMode()), none never. Not collective.
+  compute and relax always, none never, auto unless the pattern is a file that records being a reference state
+  (hylc's own, computed for a yarn: used as given; auto is Algorithm C1 for a generated pattern or a file that is
+  not a reference state, relax for a file that records nothing, as the paper's stored tiles;
+  HylcReferenceStateForMode()). Not collective.
 
   Input Parameters:
 + in   - the pattern, set up
@@ -294,9 +296,7 @@ PetscErrorCode HylcReferenceStateNeeded(HylcPattern in, HylcReferenceMode mode, 
   PetscCall(HylcPatternGetState(in, &state));
   PetscCall(HylcPatternGetType(in, &type));
   PetscCall(PetscStrcmp(type, HYLCPATTERNFILE, &isfile));
-  (void)state;
-  (void)isfile;
-  *needed = (PetscBool)(mode != HYLC_REFERENCE_NONE);
+  *needed = (PetscBool)(mode != HYLC_REFERENCE_NONE && !(mode == HYLC_REFERENCE_AUTO && isfile && state == HYLC_PATTERN_STATE_REFERENCE));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -304,9 +304,9 @@ PetscErrorCode HylcReferenceStateNeeded(HylcPattern in, HylcReferenceMode mode, 
   HylcReferenceStateForMode - The reference state a job's -sampler_reference or -calibrate_reference mode
   asks for: compute (Algorithm C1), relax (the pattern's rest data kept, no tension: only the in-plane minimum
   over the periods and the recentring, so that the stored tile under the configured yarn becomes a minimum of
-  the model: at rest at z = 0, dPsi/dsx = dPsi/dsy = 0), auto (relax for a pattern file that is a reference
-  state, one that records it or records nothing, as the paper's files; C1 for a generated pattern and any
-  other file), or none (the pattern as given: the paper's procedure, which samples its stored tiles as they
+  the model: at rest at z = 0, dPsi/dsx = dPsi/dsy = 0), auto (relax for a pattern file that records nothing,
+  as the paper's stored tiles; a file that records being a reference state, hylc's own, as given; C1 for a
+  generated pattern and any other file), or none (the pattern as given: the paper's procedure, which samples its stored tiles as they
   are, not at rest under the configured yarn). *out is NULL when the mode asks for none.
 
   Collective
@@ -339,11 +339,14 @@ PetscErrorCode HylcReferenceStateForMode(HylcPattern in, HylcReferenceMode mode,
   {
     HylcPatternState state;
     PetscCall(HylcPatternGetState(in, &state));
-    if (mode == HYLC_REFERENCE_AUTO && isfile && (state == HYLC_PATTERN_STATE_REFERENCE || state == HYLC_PATTERN_STATE_UNRECORDED)) {
+    if (mode == HYLC_REFERENCE_AUTO && isfile && state == HYLC_PATTERN_STATE_UNRECORDED) {
       if (v)
-        PetscCall(PetscViewerASCIIPrintf(v, "[reference] the pattern file is a stored reference state (%s): relaxed to the in-plane minimum under the configured yarn (auto; -sampler_reference none keeps it as given, the paper's procedure)\n",
-                                         state == HYLC_PATTERN_STATE_REFERENCE ? "its record says so" : "it records nothing, as the paper's files"));
+        PetscCall(PetscViewerASCIIPrintf(
+            v,
+            "[reference] the pattern file is a stored reference state (it records nothing, as the paper's files): relaxed to the in-plane minimum under the configured yarn (auto; -sampler_reference none keeps it as given, the paper's procedure)\n"));
       mode = HYLC_REFERENCE_RELAX;
+    } else if (mode == HYLC_REFERENCE_AUTO && isfile && state == HYLC_PATTERN_STATE_REFERENCE) {
+      if (v) PetscCall(PetscViewerASCIIPrintf(v, "[reference] the pattern file is a reference state (its record says so): used as given (auto; -sampler_reference relax makes it a minimum under the configured yarn)\n"));
     } else if (v && mode == HYLC_REFERENCE_AUTO && isfile)
       PetscCall(PetscViewerASCIIPrintf(v, "[reference] the pattern file is not a reference state (%s): computing it (Algorithm C1)\n", HylcPatternStates[state]));
     else if (v && mode == HYLC_REFERENCE_AUTO)

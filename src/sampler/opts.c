@@ -322,8 +322,8 @@ PetscErrorCode HylcSamplerSetReference(HylcSampler S, HylcReferenceMode mode, co
 . -sampler_range_<c> min,max      - 1D range of c = sx, sa, sy, II00, II11 (II in 1/m; 2D ranges follow) (HylcSamplerSetPlanRanges())
 . -sampler_n1 <150>, -sampler_n2 <50> - samples per 1D term, per axis of a 2D term (HylcSamplerSetSampleCounts())
 . -sampler_terms <all>            - comma list of terms: zero, sx, sa, sy, II00, II11, sx-sa, sx-sy,
-                                    sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11, sx-sa-sy, sx-sy-II00,
-                                    sx-sy-II11, or all (with graded spacing the 3D terms too), paper (the paper's 15), 1d
+                                    sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11, sx-sa-sy, sx-sa-II00,
+                                    sx-sa-II11, sx-sy-II00, sx-sy-II11, sa-sy-II00, sa-sy-II11, or all (with graded spacing the 3D terms too), paper (the paper's 15), 1d
                                     (HylcSamplerSetTerms())
 . -sampler_batch <1>              - samples per batch (the unit of work handed to a rank) (HylcSamplerSetBatchSize())
 . -sampler_start <continue>       - continue (half-lines from the zero strain outward), cold (the paper's) or both (HylcSamplerSetStart())

@@ -84,7 +84,8 @@ static PetscErrorCode WriteSamplesGroup(hid_t file, long N, const HylcSampleReco
   HylcCallHDF5(
       HylcH5WriteDataset(g, "stress", 2, (hsize_t[]){(hsize_t)N, 6}, H5T_NATIVE_DOUBLE, stress, "N/m for sx, sa, sy; N (J/m^2 per 1/m) for II00, II01, II11",
                          "the stress dpsi/dz of the equilibrium, columns as /samples/strain, by the envelope theorem (no re-solve; docs/output-format.md); NaN where the solve did not converge or the run did not record it (-sampler_stress false)"));
-  HylcCallHDF5(HylcH5WriteDataset(g, "term", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, term, "1", "term of the sampling plan: 0 zero sample, 1..5 one-dimensional, 6..14 two-dimensional, 15..21 three-dimensional; index into /samples@term_names; -1 not computed"));
+  HylcCallHDF5(HylcH5WriteDataset(g, "term", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, term, "1",
+                                  "term of the sampling plan: 0 zero sample, 1..5 one-dimensional, 6..14 two-dimensional, 15..21 three-dimensional; index into /samples@term_names; -1 not computed"));
   HylcCallHDF5(HylcH5WriteDataset(g, "status", 1, (hsize_t[]){(hsize_t)N}, H5T_NATIVE_INT, status, "1",
                                   "HylcMicroStatus of the Newton solve, index into /samples@status_names (0 converged, 1 iteration_cap, 2 time_cap, 3 stalled, 4 nonfinite; 5 failed is reserved, no longer produced); -1: not computed (the run ended "
                                   "before this sample, all its values are NaN or -1)"));

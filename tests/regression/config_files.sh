@@ -44,8 +44,16 @@ done
 # no other config files that this test does not know about
 for f in config/*.yaml; do
   n=$(basename "$f" .yaml)
-  case $n in demo | generated-*) continue ;; esac # generated patterns: tests/regression/demo_schema.sh and generated_configs below
+  case $n in demo | generated-* | profile-*) continue ;; esac # generated patterns: tests/regression/demo_schema.sh and generated_configs below
   [[ " $patterns " == *" $n "* ]] || die "$f is not checked by this test"
+done
+
+# a profile (config/profile-*.yaml) is added after a pattern's file: together they load silently, and
+# every key of the profile is an option of some stage (a misspelt one is refused by name)
+for f in config/profile-*.yaml; do
+  $tool -options_file config/satin.yaml -options_file "$f" >"$HYLC_TMP/prof.out" 2>"$HYLC_TMP/prof.err" || { cat "$HYLC_TMP/prof.out" "$HYLC_TMP/prof.err"; die "$f does not load after config/satin.yaml"; }
+  [ ! -s "$HYLC_TMP/prof.err" ] || { cat "$HYLC_TMP/prof.err"; die "$f: unexpected output on stderr"; }
+  grep -q '^sampler_reference: none$' "$f" || die "$f: the paper's profile does not keep the stored tile as given"
 done
 
 # the check catches a misspelt key

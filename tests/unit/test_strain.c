@@ -10,16 +10,26 @@
 #include "hylctest.h"
 
 /* the names of docs/output-format.md and docs/material.md, written out here on purpose */
-static const char *const Terms[15]  = {"zero", "sx", "sa", "sy", "II00", "II11", "sx-sa", "sx-sy", "sx-II00", "sx-II11", "sa-sy", "sa-II00", "sa-II11", "sy-II00", "sy-II11"};
+static const char *const Terms[22]  = {"zero",    "sx",      "sa",      "sy",      "II00",     "II11",       "sx-sa",      "sx-sy",      "sx-II00",    "sx-II11",    "sa-sy",
+                                       "sa-II00", "sa-II11", "sy-II00", "sy-II11", "sx-sa-sy", "sx-sa-II00", "sx-sa-II11", "sx-sy-II00", "sx-sy-II11", "sa-sy-II00", "sa-sy-II11"};
 static const char *const Columns[7] = {"sx", "sa", "sy", "II00", "II01", "II11", "psi"};
 
 int main(void)
 {
   char name[32];
 
-  HYLC_CHECK(HYLC_PLAN_NTERM == 15 && HYLC_PLAN_NCOORD == 5 && HYLC_MATERIAL_N1D == 5 && HYLC_MATERIAL_N2D == 9 && HYLCMAT_N1D == HYLC_NCOORD && HYLCMAT_N2D == HYLC_NPAIR, "sizes");
-  for (int t = 0; t < 15; t++) HYLC_CHECK(!strcmp(HylcPlanTermName(t), Terms[t]), "plan term %d: %s, expected %s", t, HylcPlanTermName(t), Terms[t]);
-  HYLC_CHECK(!strcmp(HylcPlanTermName(15), "unknown") && !strcmp(HylcPlanTermName(-1), "unknown"), "plan term out of range");
+  HYLC_CHECK(HYLC_PLAN_NTERM == 15 && HYLC_PLAN_NTERM3 == 22 && HYLCMAT_N3D == HYLC_NTRIPLE && HYLC_PLAN_NCOORD == 5 && HYLC_MATERIAL_N1D == 5 && HYLC_MATERIAL_N2D == 9 && HYLCMAT_N1D == HYLC_NCOORD && HYLCMAT_N2D == HYLC_NPAIR, "sizes");
+  for (int t = 0; t < 22; t++) HYLC_CHECK(!strcmp(HylcPlanTermName(t), Terms[t]), "plan term %d: %s, expected %s", t, HylcPlanTermName(t), Terms[t]);
+  HYLC_CHECK(!strcmp(HylcPlanTermName(22), "unknown") && !strcmp(HylcPlanTermName(-1), "unknown"), "plan term out of range");
+  for (int r = 0; r < HYLC_NTRIPLE; r++) { /* the triples: in-plane pair or (sx, sa, sy), then a coordinate, in order, named by their coordinates */
+    int k0, k1, k2, c[3];
+    hylcmat_triple(r, &k0, &k1, &k2);
+    HylcPlanTriple(HYLC_PLAN_NTERM + r, c);
+    snprintf(name, sizeof(name), "%s-%s-%s", HylcCoordNames[k0], HylcCoordNames[k1], HylcCoordNames[k2]);
+    HYLC_CHECK(k0 < k1 && k1 < k2 && k1 < 3 && c[0] == k0 && c[1] == k1 && c[2] == k2, "triple %d: (%d, %d, %d)", r, k0, k1, k2);
+    HYLC_CHECK(!strcmp(HylcTripleNames[r], name) && !strcmp(hylcmat_term3d_name(r), name) && !strcmp(Terms[HYLC_PLAN_NTERM + r], name), "triple %d named %s, expected %s", r, HylcTripleNames[r], name);
+    HYLC_CHECK(HylcTripleIndex(k0, k1, k2) == r && HylcPlanTermDim(HYLC_PLAN_NTERM + r) == 3, "index of triple %d", r);
+  }
   for (int s = 0; s < 7; s++) HYLC_CHECK(!strcmp(HylcTableStrainNames[s], Columns[s]), "table column %d: %s, expected %s", s, HylcTableStrainNames[s], Columns[s]);
   for (int k = 0; k < HYLC_NCOORD; k++) {
     HYLC_CHECK(!strcmp(HylcCoordNames[k], Terms[1 + k]), "coordinate %d: %s", k, HylcCoordNames[k]);
