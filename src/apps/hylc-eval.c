@@ -176,20 +176,20 @@ static PetscErrorCode Eval(HylcMaterial mat)
 
   PetscFunctionBeginUser;
   PetscOptionsBegin(PETSC_COMM_WORLD, NULL, "hylc-eval options", "hylc-eval");
-  PetscCall(PetscOptionsString("-material", "Material model: ARCSim-HYLC JSON or hylc HDF5 (required; same as -material_file)", "HylcMaterialLoad", file, file, sizeof(file), &hasFile));
-  PetscCall(PetscOptionsString("-strain", "Strain sx,sa,sy,II00,II01,II11 (II in 1/m) at which to evaluate Psi", "HylcMaterialEvaluate", strain, strain, sizeof(strain), &hasStrain));
+  PetscCall(HylcOptionsString("-material", "Material model: ARCSim-HYLC JSON or hylc HDF5 (required; same as -material_file)", "HylcMaterialLoad", file, file, sizeof(file), &hasFile));
+  PetscCall(HylcOptionsString("-strain", "Strain sx,sa,sy,II00,II01,II11 (II in 1/m) at which to evaluate Psi", "HylcMaterialEvaluate", strain, strain, sizeof(strain), &hasStrain));
   PetscCall(PetscOptionsBool("-derivatives", "Also print the gradient and the Hessian of Psi with respect to the six strains", "HylcMaterialEvaluate", deriv, &deriv, NULL));
-  PetscCall(PetscOptionsString("-eval_json", "Write the material as ARCSim-HYLC JSON to this file (never the input)", "HylcMaterialWriteJSON", json, json, sizeof(json), &hasJson));
-  PetscCall(PetscOptionsString("-eval_hdf5", "Write the material as hylc HDF5 to this file (never the input)", "HylcMaterialWriteHDF5", h5, h5, sizeof(h5), &hasH5));
-  PetscCall(PetscOptionsString("-eval_input", "Batch mode: evaluate at the strains of this file (text: 6 numbers per line; HDF5: dataset /strain or /samples/strain, N x 6)", "HylcMaterialEvaluate", bin, bin, sizeof(bin), &hasIn));
-  PetscCall(PetscOptionsString("-eval_output", "Batch mode: write psi (and with -derivatives grad, hessian) per strain here: text, or HDF5 if it ends in .h5", "HylcMaterialEvaluate", bout, bout, sizeof(bout), &hasOut));
-  PetscCall(PetscOptionsString("-eval_uniaxial", "Uniaxial tension mode: x or y, the material axis of the prescribed stretch; Psi minimized over the other two in-plane strains, bending zero (docs/fabric-uniaxial.md)", "HylcMaterialUniaxial", udir,
-                               udir, sizeof(udir), &hasUni));
+  PetscCall(HylcOptionsString("-eval_json", "Write the material as ARCSim-HYLC JSON to this file (never the input)", "HylcMaterialWriteJSON", json, json, sizeof(json), &hasJson));
+  PetscCall(HylcOptionsString("-eval_hdf5", "Write the material as hylc HDF5 to this file (never the input)", "HylcMaterialWriteHDF5", h5, h5, sizeof(h5), &hasH5));
+  PetscCall(HylcOptionsString("-eval_input", "Batch mode: evaluate at the strains of this file (text: 6 numbers per line; HDF5: dataset /strain or /samples/strain, N x 6)", "HylcMaterialEvaluate", bin, bin, sizeof(bin), &hasIn));
+  PetscCall(HylcOptionsString("-eval_output", "Batch mode: write psi (and with -derivatives grad, hessian) per strain here: text, or HDF5 if it ends in .h5", "HylcMaterialEvaluate", bout, bout, sizeof(bout), &hasOut));
+  PetscCall(HylcOptionsString("-eval_uniaxial", "Uniaxial tension mode: x or y, the material axis of the prescribed stretch; Psi minimized over the other two in-plane strains, bending zero (docs/fabric-uniaxial.md)", "HylcMaterialUniaxial", udir,
+                              udir, sizeof(udir), &hasUni));
   PetscCall(HylcOptionsRealArray(
       "-eval_uniaxial_strains",
       "Uniaxial mode: the stretches s in [0, 1) (strain, 0 at rest; default 0.05,0.1,0.2; at most 256), in this order: the first from the lowest point of a grid of the lateral strains, each other from the lateral strains of the one before",
       "HylcMaterialUniaxial", ustrain, &nu, &hasUStrains));
-  PetscCall(PetscOptionsString("-eval_uniaxial_csv", "Uniaxial mode: write strain,T_N_per_m,lateral_strain_sa,lateral_strain_s2 (T in N/m) to this CSV file", "HylcWriteUniaxialCSV", ucsv, ucsv, sizeof(ucsv), &hasUCsv));
+  PetscCall(HylcOptionsString("-eval_uniaxial_csv", "Uniaxial mode: write strain,T_N_per_m,lateral_strain_sa,lateral_strain_s2 (T in N/m) to this CSV file", "HylcWriteUniaxialCSV", ucsv, ucsv, sizeof(ucsv), &hasUCsv));
   PetscOptionsEnd();
   if (!hasUStrains) nu = 3;
   PetscCheck(hasUni || (!hasUStrains && !hasUCsv), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-eval_uniaxial_strains and -eval_uniaxial_csv need -eval_uniaxial x|y");

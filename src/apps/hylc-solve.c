@@ -83,15 +83,15 @@ static PetscErrorCode Solve(HylcPattern pat, HylcMicro micro)
   PetscOptionsBegin(PETSC_COMM_SELF, NULL, "hylc-solve options", "hylc-solve");
   PetscCall(HylcOptionsRealArray("-strain", "Macroscopic strain sx,sa,sy,II00,II01,II11 (II in 1/m): finite, |sa| < 1, 0 < 1+sx, 1+sy <= 1e3, the midsurface turning by at most 2 pi across a period (docs/method.md)", "HylcMicroSolve", z, &nz, &flg));
   PetscCheck(!flg || nz == 6, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-strain needs 6 comma-separated values sx,sa,sy,II00,II01,II11, got %" PetscInt_FMT, nz);
-  PetscCall(PetscOptionsString("-solve_output", "Write the equilibrium tile as .pyp (positions and twists; rest data unchanged)", "hylc-solve", out, out, sizeof(out), NULL));
-  PetscCall(PetscOptionsString("-solve_vtk", "Write the equilibrium, tiled, as legacy-VTK polylines", "hylc-solve", vtk, vtk, sizeof(vtk), NULL));
+  PetscCall(HylcOptionsString("-solve_output", "Write the equilibrium tile as .pyp (positions and twists; rest data unchanged)", "hylc-solve", out, out, sizeof(out), NULL));
+  PetscCall(HylcOptionsString("-solve_vtk", "Write the equilibrium, tiled, as legacy-VTK polylines", "hylc-solve", vtk, vtk, sizeof(vtk), NULL));
   nt = 2;
   PetscCall(HylcOptionsIntArray("-solve_vtk_tiles", "Tile copies nx,ny in the VTK file", "hylc-solve", tiles, &nt, NULL));
-  PetscCall(PetscOptionsString("-solve_uniaxial", "Uniaxial tension mode: x or y, the material axis of the prescribed stretch; the other two in-plane strains free, bending zero (docs/fabric-uniaxial.md)", "HylcMicroSolveUniaxial", udir, udir,
-                               sizeof(udir), &uni));
+  PetscCall(HylcOptionsString("-solve_uniaxial", "Uniaxial tension mode: x or y, the material axis of the prescribed stretch; the other two in-plane strains free, bending zero (docs/fabric-uniaxial.md)", "HylcMicroSolveUniaxial", udir, udir,
+                              sizeof(udir), &uni));
   PetscCall(HylcOptionsRealArray("-solve_uniaxial_strains", "Uniaxial mode: the stretches s in [0, 1) (strain, 0 at rest; default 0.05,0.1,0.2), solved in this order, each continued from the one before (at most 64)", "HylcMicroSolveUniaxial",
                                  ustrain, &nu, &hasStrains));
-  PetscCall(PetscOptionsString("-solve_uniaxial_csv", "Uniaxial mode: write strain,T_N_per_m,lateral_strain_sa,lateral_strain_s2 (T in N/m) to this CSV file", "HylcWriteUniaxialCSV", csv, csv, sizeof(csv), &hasCsv));
+  PetscCall(HylcOptionsString("-solve_uniaxial_csv", "Uniaxial mode: write strain,T_N_per_m,lateral_strain_sa,lateral_strain_s2 (T in N/m) to this CSV file", "HylcWriteUniaxialCSV", csv, csv, sizeof(csv), &hasCsv));
   PetscOptionsEnd();
   if (!hasStrains) nu = 3;
   PetscCheck(!hasStrains || nu > 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-solve_uniaxial_strains: needs at least one stretch");

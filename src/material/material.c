@@ -1,5 +1,6 @@
 /* HylcMaterial: object lifecycle, contents (validated setters and getters), options, viewer, and the
    file dispatch (JSON or HDF5 by content; atomic writes by rank 0). */
+#include <hylc/options.h>
 #include <hylc/private/materialimpl.h>
 #include <errno.h>
 #include <fcntl.h>
@@ -251,7 +252,7 @@ PetscErrorCode HylcMaterialSetFromOptions(HylcMaterial m)
   PetscFunctionBegin;
   PetscValidHeaderSpecific(m, HYLC_MATERIAL_CLASSID, 1);
   PetscObjectOptionsBegin((PetscObject)m);
-  PetscCall(PetscOptionsString("-material_file", "Material model to load: ARCSim-HYLC JSON or hylc HDF5 (recognized by content)", "HylcMaterialLoad", m->source, file, sizeof(file), &flg));
+  PetscCall(HylcOptionsString("-material_file", "Material model to load: ARCSim-HYLC JSON or hylc HDF5 (recognized by content)", "HylcMaterialLoad", m->source, file, sizeof(file), &flg));
   PetscCall(PetscOptionsName("-material_view", "Print a summary of the material", "HylcMaterialViewFromOptions", NULL));
   PetscCall(PetscObjectProcessOptionsHandlers((PetscObject)m, PetscOptionsObject));
   PetscOptionsEnd();

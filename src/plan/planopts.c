@@ -32,7 +32,7 @@ PetscErrorCode HylcPlanRangesFromOptions(PetscOptionItems *PetscOptionsObject, M
   HylcPlan           p;
 
   PetscFunctionBegin;
-  PetscCall(PetscOptionsEnum("-sampler_family", "Default sampling ranges of docs/method.md §8 (II scaled by 1 mm / r)", man, HylcPlanFamilies, fam, &fam, NULL));
+  PetscCall(HylcOptionsEnum("-sampler_family", "Default sampling ranges of docs/method.md §8 (II scaled by 1 mm / r)", man, HylcPlanFamilies, fam, &fam, NULL));
   ranges->family = (PetscInt)fam;
   PetscCheck(!HylcPlanDefaults(HylcPlanFamilies[fam], 1, &p), comm, PETSC_ERR_USER_INPUT, "Unknown sampling family");
   for (int c = 0; c < HYLC_PLAN_NCOORD; c++) {
