@@ -145,6 +145,8 @@ typedef struct {
 
 /* Rest data from material coordinates uv = (u0, v0, u1, v1, u2, v2) (m). HYLCMAT_ERR_REST for a
    non-finite, clockwise (inverted) or zero-area triangle (sine of its angle at vertex 0 below 1e-13),
+   or one the element cannot evaluate at its own rest state: an edge or twice the area (m, m^2) below
+   1.49e-154 or above 1.34e154 (their squares beyond the normal doubles: a subnormal area is refused);
    HYLCMAT_ERR_ARG for NULL. */
 int hylcmat_shell_rest_uv(const double uv[6], hylcmat_shell_rest *r);
 /* Rest data from the 3D rest positions X (3 x 3, vertex-major, m) and the material angle (radians):

@@ -239,6 +239,9 @@ static int Create(int nv, int nt, const int *tri, const double *X, const double 
         hylcmat_mesh_free(M);
         if (!isfinite(det)) return hm_fail(&E, ret, "mesh: triangle %d: non-finite material coordinates", t);
         if (det < 0) return hm_fail(&E, ret, "mesh: triangle %d (vertices %d %d %d): inverted rest triangle (clockwise in material coordinates, 2 A = %.6g)", t, tri[3 * t], tri[3 * t + 1], tri[3 * t + 2], det);
+        if (det > 0)
+          return hm_fail(&E, ret, "mesh: triangle %d (vertices %d %d %d): degenerate rest triangle in material coordinates (2 A = %.6g: an angle's sine below 1e-13, or an edge or 2 A outside 1.5e-154 .. 1.3e154)", t, tri[3 * t], tri[3 * t + 1],
+                         tri[3 * t + 2], det);
         return hm_fail(&E, ret, "mesh: triangle %d (vertices %d %d %d): zero-area rest triangle in material coordinates (2 A = %.6g)", t, tri[3 * t], tri[3 * t + 1], tri[3 * t + 2], det);
       }
     } else {

@@ -787,6 +787,27 @@ static PetscErrorCode TestErrors(const hylcmat *m)
     hylcmat_shell_rest rr;
     for (int i = 0; i < 3; i++) HYLC_CHECK(hylcmat_shell_rest_uv(bad[i], &rr) == HYLCMAT_ERR_REST, "bad rest triangle %d accepted", i);
     HYLC_CHECK(hylcmat_shell_rest_uv(bad[3], &rr) == HYLCMAT_OK, "a thin but valid rest triangle refused");
+    /* a rest triangle the element cannot evaluate at its own rest state is refused: a subnormal area
+       (edges of 1e-160 m: 2 A = 1e-320) was accepted and then degenerate at rest; every accepted scale
+       evaluates at rest */
+    {
+      const double sub[6] = {0, 0, 1e-160, 0, 0, 1e-160};
+      int          acc    = 0;
+      HYLC_CHECK(hylcmat_shell_rest_uv(sub, &rr) == HYLCMAT_ERR_REST, "a rest triangle of subnormal area accepted (area %g)", rr.area);
+      for (int k = -170; k <= 170; k += 5) {
+        const double s = pow(10.0, k), u[6] = {0, 0, s, 0, 0.3 * s, 0.9 * s};
+        double       xr[18] = {0}, Er, gr[18];
+        int          rc;
+        if (hylcmat_shell_rest_uv(u, &rr)) continue;
+        acc++;
+        for (int j = 0; j < 3; j++) xr[3 * j] = u[2 * j], xr[3 * j + 1] = u[2 * j + 1];
+        rc = hylcmat_shell_eval(m, &rr, xr, 0, 0, &Er, gr, NULL);
+        HYLC_CHECK(rc == HYLCMAT_OK, "the rest triangle of scale 1e%d m accepted, but at rest: %s", k, hylcmat_strerror(rc));
+      }
+      HYLC_CHECK(acc == 31, "%d of the scales 1e-170 .. 1e170 m accepted, expected the 31 of 1e-75 .. 1e75 (2 A within 1.5e-154 .. 1.3e154)", acc);
+      HYLC_CHECK(hylcmat_shell_rest_uv((const double[6]){0, 0, 1e-150, 0, 0, 1e-150}, &rr) == HYLCMAT_ERR_REST, "2 A = 1e-300 accepted");
+      HYLC_CHECK(hylcmat_shell_rest_uv((const double[6]){0, 0, 1e100, 0, 0, 1e100}, &rr) == HYLCMAT_ERR_REST, "2 A = 1e200 accepted");
+    }
     {
       const double X[9] = {0, 0, 0, 1, 1, 1, 2, 2, 2}, Y[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
       HYLC_CHECK(hylcmat_shell_rest_3d(X, 0, &rr) == HYLCMAT_ERR_REST, "collinear 3D rest triangle accepted");
