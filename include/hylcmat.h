@@ -97,8 +97,8 @@ int hylcmat_create(hylcmat **m);
 /* removes every term and restores the defaults of hylcmat_create */
 void hylcmat_reset(hylcmat *m);
 /* Setters copy and validate (at least 2 strictly increasing finite knots whose spacings h have h and
-   1/h finite, finite values, k or (k0, k1) a term of the model, ext 0..2); a term replaces one of the
-   same k or (k0, k1). */
+   1/h finite, finite values, k or (k0, k1) a term of the model, ext 0..2; the density in [0, 1e6]
+   kg/m^2); a term replaces one of the same k or (k0, k1). */
 int  hylcmat_set_density(hylcmat *m, double rho, char *err, size_t errlen);
 int  hylcmat_set_strain_scale(hylcmat *m, const double scale[5], char *err, size_t errlen);
 int  hylcmat_set_constant(hylcmat *m, double c0, char *err, size_t errlen);
@@ -159,7 +159,9 @@ int hylcmat_shell_rest_3d(const double X[9], double angle, hylcmat_shell_rest *r
 int hylcmat_shell_strains(const hylcmat_shell_rest *r, const double x[18], int nbmask, double z[6], double J[108]);
 /* The element energy E = A Psi(z), its gradient grad = dE/dx (18, may be NULL) and Hessian hess
    (18 x 18 row-major, symmetric, may be NULL; needs grad); flags: HYLCMAT_SHELL_PSD projects hess (on
-   the coordinates of the vertices present; the translations get HYLCMAT_PSD_FLOOR). On an error
+   the coordinates of the vertices present; the translations get HYLCMAT_PSD_FLOOR; a Hessian with
+   entries beyond 1e100 is projected divided by a power of 2 and multiplied back, _RANGE if the
+   projection then leaves the double range). On an error
    (HYLCMAT_ERR_NONFINITE, _DEGENERATE, _RANGE, _NAN, _ARG) E, grad and hess are set to 0: never NaN.
    No allocation; thread-safe. */
 int hylcmat_shell_eval(const hylcmat *m, const hylcmat_shell_rest *r, const double x[18], int nbmask, int flags, double *E, double grad[18], double hess[324]);

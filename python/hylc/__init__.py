@@ -181,6 +181,13 @@ class Material:
         d = read_material_h5(path)
         _check_material_shapes(path, d)
         err = ctypes.create_string_buffer(1024)
+        try:
+            self._install_h5(d, err)
+        except HylcError as e:  # libhylcmat's message names the term and the value: add the file
+            raise HylcError(e.code, "%s: %s" % (path, e)) from None
+
+    def _install_h5(self, d, err):
+        """the contents read by _from_h5 through libhylcmat's validating setters"""
         _check(_lib.hylcmat_create(ctypes.byref(self._h)))
         _check(_lib.hylcmat_set_density(self._h, d["density"], err, len(err)), err)
         _check(_lib.hylcmat_set_constant(self._h, d["constant"], err, len(err)), err)

@@ -406,7 +406,7 @@ int hylcmat_mesh_eval(const hylcmat_mesh *mesh, const hylcmat *m, const double *
       double *Hs[GROUP];
       int     nbs[GROUP];
       for (int t = t0; t < t1; t++) Hs[t - t0] = H[t - t0], nbs[t - t0] = mesh->nb[t];
-      if (hm_psd_project_many(t1 - t0, Hs, nbs)) /* (never seen) each on its own, to name the triangle */
+      if (hm_psd_project_many(t1 - t0, Hs, nbs)) /* beyond the double range: each on its own, to name the triangle */
         for (int t = t0; t < t1 && !ret; t++) {
           ret = hylcmat_shell_eval(m, &mesh->rest[t], xs[t - t0], mesh->nb[t], flags, &e[t - t0], g[t - t0], H[t - t0]);
           if (ret) bad = t;

@@ -623,10 +623,11 @@ int hylcmat_shell_eval_batch(const hylcmat *m, size_t n, const hylcmat_shell_res
         Hs[g] = hess + 324 * i, nbs[g] = nbmask[i] & 7, which[g++] = i;
       }
     }
-    if (g && hm_psd_project_many(g, Hs, nbs)) /* (never seen) each on its own, to find the one */
+    if (g && hm_psd_project_many(g, Hs, nbs)) /* a projection beyond the double range: each on its own, to find the one */
       for (int k = 0; k < g; k++) {
-        const size_t i = which[k];
-        if (hylcmat_shell_eval(m, &r[i], x + 18 * i, nbmask[i], flags, &E[i], grad + 18 * i, hess + 324 * i) && !first) first = HYLCMAT_ERR_NAN;
+        const size_t i   = which[k];
+        const int    ret = hylcmat_shell_eval(m, &r[i], x + 18 * i, nbmask[i], flags, &E[i], grad + 18 * i, hess + 324 * i);
+        if (ret && !first) first = ret;
       }
   }
   return first;

@@ -713,7 +713,9 @@ PetscErrorCode HylcMaterialLoad(HylcMaterial m, const char path[])
     char     err[1024] = "";
     int      r         = hylcmat_load_memory(path, bytes, (size_t)len, &hm, err, sizeof(err));
     PetscCall(PetscFree(bytes));
-    if (r) SETERRQ(comm, HylcMaterialErrorCode_Private(r), "%s", err[0] ? err : hylcmat_strerror(r));
+    /* an HDF5 call that fails on the user's file (the message names the call and the file) is a file the
+       reader cannot use, not a defect: one line */
+    if (r) SETERRQ(comm, r == HYLCMAT_ERR_HDF5 ? PETSC_ERR_FILE_UNEXPECTED : HylcMaterialErrorCode_Private(r), "%s", err[0] ? err : hylcmat_strerror(r));
     hylcmat_free(m->hm);
     m->hm = hm;
     HylcMaterialSync_Private(m);
