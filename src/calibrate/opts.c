@@ -206,7 +206,8 @@ PetscErrorCode HylcCalibrateSetStart(HylcCalibrate C, HylcCalibrateStart start)
   HylcCalibrateSetStationary - Requires the tile to be stationary at the base strain (option
   -calibrate_stationary): adds the residuals sqrt(w) dPsi/ds_k(z_b) / S_k, k = x, y, so that the objective
   gains w ((dPsi/dsx / S_x)^2 + (dPsi/dsy / S_y)^2); S_k is the target's dPsi/ds_k at s_k = 5 % (a table; for
-  a file target 2 dPsi_T / s_k of its row of the 1D term nearest to s_k = 5 %). The gradient is the envelope
+  a file target 2 dPsi_T / s_k of its row of the 1D term nearest to s_k = 5 %, among every usable row: the
+  same whatever -calibrate_stride and -calibrate_max_samples keep). The gradient is the envelope
   theorem's at the equilibrium. Its Jacobian (option -calibrate_stationary_jacobian): fd (the default), central
   differences in log p with step h (-calibrate_stationary_h, 1e-2), each a cold re-solve of the base sample
   (two per parameter not fixed, per evaluation); or gn, the energy terms' parts at the fixed state, which
@@ -217,7 +218,7 @@ PetscErrorCode HylcCalibrateSetStart(HylcCalibrate C, HylcCalibrateStart start)
 
   Input Parameters:
 + C  - the calibration
-. w  - the weight (>= 0; 0: off, the default)
+. w  - the weight (0 <= w <= 1e8; 0: off, the default)
 . fd - PETSC_TRUE: the Jacobian by central differences; PETSC_FALSE: the Gauss-Newton one
 - h  - the step in log p of the differences (0 < h <= 1)
 
@@ -230,6 +231,7 @@ PetscErrorCode HylcCalibrateSetStationary(HylcCalibrate C, PetscReal w, PetscBoo
   PetscFunctionBegin;
   PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
   PetscCheck(w >= 0 && !PetscIsInfOrNanReal(w), PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "-calibrate_stationary must be a finite number >= 0, got %g", (double)w);
+  PetscCheck(w <= 1e8, PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "-calibrate_stationary %.6g: at most 1e8 (beyond, the stationarity alone decides and the objective loses the samples' digits; 1e300 overflowed it)", (double)w);
   PetscCheck(h > 0 && h <= 1, PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "-calibrate_stationary_h must be in (0, 1], got %g", (double)h);
   C->wstat  = w;
   C->statFD = fd;
@@ -633,7 +635,7 @@ PetscErrorCode HylcCalibrateSetFromOptions(HylcCalibrate C)
   PetscCall(HylcOptionsReal("-calibrate_weight_zero", "Weight of the relative error of Psi at the base strain (the constant)", "HylcCalibrateSetTermWeight", wzero, &wzero, NULL));
   PetscCall(
       HylcOptionsString("-calibrate_weights", "Weights of terms, a comma list term=weight (e.g. sx=2,sa-sy=0.5; default 1 each; 'other' for file rows off the plan's axes)", "HylcCalibrateSetTermWeight", weights, weights, sizeof(weights), NULL));
-  PetscCall(HylcOptionsReal("-calibrate_stationary", "Weight w of the stationarity at the base strain: adds w ((dPsi/dsx / S_x)^2 + (dPsi/dsy / S_y)^2) to the objective, dPsi/ds in N/m, S the target's dPsi/ds at 5 % stretch (0: off)",
+  PetscCall(HylcOptionsReal("-calibrate_stationary", "Weight w of the stationarity at the base strain: adds w ((dPsi/dsx / S_x)^2 + (dPsi/dsy / S_y)^2) to the objective, dPsi/ds in N/m, S the target's dPsi/ds at 5 % stretch (0: off; at most 1e8)",
                             "HylcCalibrateSetStationary", wstat, &wstat, NULL));
   PetscCall(HylcOptionsEnum(
       "-calibrate_stationary_jacobian",
