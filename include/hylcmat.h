@@ -109,8 +109,8 @@ int hylcmat_create(hylcmat **m);
 /* removes every term and restores the defaults of hylcmat_create */
 void hylcmat_reset(hylcmat *m);
 /* Setters copy and validate (at least 2 strictly increasing finite knots whose spacings h have h and
-   1/h finite, finite values, k or (k0, k1) a term of the model, ext 0..2); a term replaces one of the
-   same k or (k0, k1). */
+   1/h finite, finite values, k or (k0, k1) a term of the model, ext 0..2; the density in [0, 1e6]
+   kg/m^2); a term replaces one of the same k or (k0, k1). */
 int  hylcmat_set_density(hylcmat *m, double rho, char *err, size_t errlen);
 int  hylcmat_set_strain_scale(hylcmat *m, const double scale[5], char *err, size_t errlen);
 int  hylcmat_set_constant(hylcmat *m, double c0, char *err, size_t errlen);
@@ -159,6 +159,8 @@ typedef struct {
 
 /* Rest data from material coordinates uv = (u0, v0, u1, v1, u2, v2) (m). HYLCMAT_ERR_REST for a
    non-finite, clockwise (inverted) or zero-area triangle (sine of its angle at vertex 0 below 1e-13),
+   or one the element cannot evaluate at its own rest state: an edge or twice the area (m, m^2) below
+   1.49e-154 or above 1.34e154 (their squares beyond the normal doubles: a subnormal area is refused);
    HYLCMAT_ERR_ARG for NULL. */
 int hylcmat_shell_rest_uv(const double uv[6], hylcmat_shell_rest *r);
 /* Rest data from the 3D rest positions X (3 x 3, vertex-major, m) and the material angle (radians):
@@ -171,7 +173,9 @@ int hylcmat_shell_rest_3d(const double X[9], double angle, hylcmat_shell_rest *r
 int hylcmat_shell_strains(const hylcmat_shell_rest *r, const double x[18], int nbmask, double z[6], double J[108]);
 /* The element energy E = A Psi(z), its gradient grad = dE/dx (18, may be NULL) and Hessian hess
    (18 x 18 row-major, symmetric, may be NULL; needs grad); flags: HYLCMAT_SHELL_PSD projects hess (on
-   the coordinates of the vertices present; the translations get HYLCMAT_PSD_FLOOR). On an error
+   the coordinates of the vertices present; the translations get HYLCMAT_PSD_FLOOR; a Hessian with
+   entries beyond 1e100 is projected divided by a power of 2 and multiplied back, _RANGE if the
+   projection then leaves the double range). On an error
    (HYLCMAT_ERR_NONFINITE, _DEGENERATE, _RANGE, _NAN, _ARG) E, grad and hess are set to 0: never NaN.
    No allocation; thread-safe. */
 int hylcmat_shell_eval(const hylcmat *m, const hylcmat_shell_rest *r, const double x[18], int nbmask, int flags, double *E, double grad[18], double hess[324]);

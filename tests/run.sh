@@ -6,7 +6,11 @@
 #   tests/run.sh --unit [FILTER]   only the C unit tests
 # BUILD=dir takes the programs from dir (default build). HYLC_ASAN=1 (make test ASAN=1, make test-asan:
 # BUILD=build-asan) sets the sanitizer options and suppressions of docs/testing.md and skips the
-# valgrind tests (a sanitized program does not run under valgrind).
+# valgrind tests (a sanitized program does not run under valgrind). Under ASan every unit test runs twice:
+# with PETSc's default allocator, which puts the arrays of one PetscMalloc2..7 in one block (as users run:
+# an array of such a block freed or grown alone is an invalid free), and with -malloc_coalesce 0, one block
+# per array (an overrun from one array into the next is a heap overflow); the regression scripts run with
+# the default (HYLC_ASAN_COALESCE=0: with -malloc_coalesce 0 instead).
 # A unit test declares its MPI size with a comment line "hylc-test: nprocs=N" (default 1).
 # A regression script gets $HYLC_BIN, $HYLC_REFDATA, $MPIEXEC and a private $HYLC_TMP; it exits 0 to
 # pass, 77 to skip (its last output line says why), anything else to fail.
@@ -21,11 +25,12 @@ asan=${HYLC_ASAN:-0}
 if [ "$asan" = 1 ]; then
   # the stacks of leaks are unwound slowly (Open MPI and libc have no frame pointers) so that the
   # suppressions of tests/lsan.supp match them; PETSc's signal handler would hide ASan's report of a
-  # fault and its coalesced PetscMalloc2..7 would hide overruns between the arrays of one call
+  # fault
   export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:fast_unwind_on_malloc=0:malloc_context_size=20:suppressions=$top/tests/asan.supp}
   export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$top/tests/lsan.supp:print_suppressions=0}
   export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}
-  export PETSC_OPTIONS="${PETSC_OPTIONS:-} -no_signal_handler -malloc_coalesce 0"
+  export PETSC_OPTIONS="${PETSC_OPTIONS:-} -no_signal_handler"
+  [ "${HYLC_ASAN_COALESCE:-1}" = 0 ] && PETSC_OPTIONS="$PETSC_OPTIONS -malloc_coalesce 0"
   export HYLC_ASAN=1
 fi
 
@@ -86,11 +91,17 @@ for src in tests/unit/*.c; do
   np=${np:-1}
   mkdir -p "$tmproot/$name" && pushd "$tmproot/$name" >/dev/null
   leakcheck=1
-  if [ "$np" -gt 1 ]; then
-    PETSC_OPTIONS=$unit_petsc_options run_one "unit/$name (np=$np)" "$log" $MPIEXEC -x PETSC_OPTIONS -n "$np" "$top/$exe"
-  else
-    PETSC_OPTIONS=$unit_petsc_options run_one "unit/$name" "$log" "$top/$exe"
-  fi
+  # under ASan: PETSc's default allocator, then one block per array (see the top)
+  for alloc in default $([ "$asan" = 1 ] && echo separate); do
+    opts=$unit_petsc_options label=""
+    [ $alloc = separate ] && opts="$opts -malloc_coalesce 0" label=" [-malloc_coalesce 0]"
+    [ $alloc = default ] && [ "$asan" = 1 ] && opts=${opts// -malloc_coalesce 0/}
+    if [ "$np" -gt 1 ]; then
+      PETSC_OPTIONS=$opts run_one "unit/$name (np=$np)$label" "$log" $MPIEXEC -x PETSC_OPTIONS -n "$np" "$top/$exe"
+    else
+      PETSC_OPTIONS=$opts run_one "unit/$name$label" "$log" "$top/$exe"
+    fi
+  done
   leakcheck=0
   popd >/dev/null
 done

@@ -147,6 +147,14 @@ def _check(code, err=None):
         raise HylcError(code, msg)
 
 
+def _live(obj):
+    """the library handle of a Material or Mesh; a HylcError (HYLCMAT_ERR_ARG) once it has been freed"""
+    h = getattr(obj, "_h", None)
+    if not h:
+        raise HylcError(6, "hylc.%s: used after it was freed" % type(obj).__name__)
+    return h
+
+
 def _darr(a):
     a = np.ascontiguousarray(np.asarray(a, dtype=np.float64).ravel())
     return a, a.ctypes.data_as(_dp)
@@ -173,6 +181,13 @@ class Material:
         d = read_material_h5(path)
         _check_material_shapes(path, d)
         err = ctypes.create_string_buffer(1024)
+        try:
+            self._install_h5(d, err)
+        except HylcError as e:  # libhylcmat's message names the term and the value: add the file
+            raise HylcError(e.code, "%s: %s" % (path, e)) from None
+
+    def _install_h5(self, d, err):
+        """the contents read by _from_h5 through libhylcmat's validating setters"""
         _check(_lib.hylcmat_create(ctypes.byref(self._h)))
         _check(_lib.hylcmat_set_density(self._h, d["density"], err, len(err)), err)
         _check(_lib.hylcmat_set_constant(self._h, d["constant"], err, len(err)), err)
@@ -199,18 +214,18 @@ class Material:
     @property
     def density(self):
         """area density rho_A (kg/m^2)"""
-        return _lib.hylcmat_density(self._h)
+        return _lib.hylcmat_density(_live(self))
 
     @property
     def constant(self):
         """the constant C0 of the table (J/m^2): Psi = C0 + the sum of its terms"""
-        return _lib.hylcmat_constant(self._h)
+        return _lib.hylcmat_constant(_live(self))
 
     @property
     def strain_scale(self):
         """the 5 strain scales (sx, sa, sy, II00, II11) by which a strain is divided before the splines"""
         s = (ctypes.c_double * 5)()
-        _lib.hylcmat_strain_scale(self._h, s)
+        _lib.hylcmat_strain_scale(_live(self), s)
         return np.array(s[:])
 
     def evaluate(self, strains, hessian=True, gradient=True):
@@ -219,19 +234,27 @@ class Material:
         Returns psi (...) in J/m^2, dPsi/ds (..., 6) and d2Psi/ds2 (..., 6, 6): the leading axes of the
         input are kept, so (N, 6) gives (N,), (N, 6), (N, 6, 6), a grid (nx, ny, 6) gives (nx, ny), ...,
         and one strain (6,) gives a scalar psi, a (6,) gradient and a (6, 6) Hessian. hessian=False
-        returns (psi, grad); gradient=False as well returns psi alone. A strain outside the domain
-        (1 + sx > 0, 1 + sy > 0, |sa| < 1) raises HylcError; the GIL is released during the C call."""
+        returns (psi, grad); gradient=False as well returns psi alone. A strain that is not finite or lies
+        outside the domain (1 + sx > 0, 1 + sy > 0, |sa| < 1) raises HylcError naming the first such
+        strain; the GIL is released during the C call."""
+        h = _live(self)
         s = np.asarray(strains, dtype=np.float64)
         if s.ndim == 0 or s.shape[-1] != 6:
             raise ValueError("strains must have shape (..., 6) (sx, sa, sy, II00, II01, II11), got %s" % (np.shape(strains),))
         lead = s.shape[:-1]
         flat = np.ascontiguousarray(s.reshape(-1, 6))
         n = flat.shape[0]
+        ok = np.all(np.isfinite(flat), axis=1) & (flat[:, 0] > -1) & (flat[:, 2] > -1) & (np.abs(flat[:, 1]) < 1)
+        if not np.all(ok):
+            i = int(np.argmin(ok))
+            where = " %s" % (tuple(int(k) for k in np.unravel_index(i, lead)),) if lead else ""
+            raise HylcError(6, "strain%s (%s): %s" % (where, ", ".join("%.17g" % v for v in flat[i]),
+                            "not finite" if not np.all(np.isfinite(flat[i])) else "outside the domain 1 + sx > 0, 1 + sy > 0, |sa| < 1"))
         psi = np.empty(n)
         grad = np.empty((n, 6)) if (gradient or hessian) else None
         hess = np.empty((n, 6, 6)) if hessian else None
         if n:
-            r = _lib.hylcmat_eval_batch(self._h, n, flat.ctypes.data, psi.ctypes.data, grad.ctypes.data if grad is not None else None,
+            r = _lib.hylcmat_eval_batch(h, n, flat.ctypes.data, psi.ctypes.data, grad.ctypes.data if grad is not None else None,
                                         hess.ctypes.data if hess is not None else None)
             _check(r)
         psi = psi[0] if lead == () else psi.reshape(lead)
@@ -250,11 +273,14 @@ class Material:
     def terms(self):
         """The names of the table's terms, 1D first ("sx", ..., "II11"), then 2D ("sx-sa", ...), in the
         order of the JSON tables; a term absent from the table is not listed."""
-        one = [TERMS_1D[k] for k in range(5) if _lib.hylcmat_term1d_get(self._h, k, None)]
-        two = [TERMS_2D[q] for q, (k0, k1) in enumerate(PAIRS) if _lib.hylcmat_term2d_get(self._h, k0, k1, None)]
+        h = _live(self)
+        one = [TERMS_1D[k] for k in range(5) if _lib.hylcmat_term1d_get(h, k, None)]
+        two = [TERMS_2D[q] for q, (k0, k1) in enumerate(PAIRS) if _lib.hylcmat_term2d_get(h, k0, k1, None)]
         return one + two
 
     def __repr__(self):
+        if not getattr(self, "_h", None):
+            return "<hylc.Material %r: freed>" % (getattr(self, "path", None),)
         t = self.terms()
         n1 = sum(1 for x in t if "-" not in x)
         return "<hylc.Material %r: density %.6g kg/m^2, C0 %.6g J/m^2, %d 1D + %d 2D terms, strain scale %s>" % (
@@ -275,9 +301,15 @@ class Mesh:
     edge, inverted or zero-area rest triangle, ...) raise HylcError with the triangle in the message."""
 
     def __init__(self, triangles, rest=None, angle=None, uv=None):
-        tri = np.ascontiguousarray(triangles, dtype=np.int32)
-        if tri.ndim != 2 or tri.shape[1] != 3:
+        t = np.asarray(triangles)
+        if t.ndim != 2 or t.shape[1] != 3:
             raise ValueError("triangles must have shape (nt, 3), got %s" % (np.shape(triangles),))
+        if t.dtype.kind not in "iu":
+            raise TypeError("triangles must be integer vertex indices, got %s" % t.dtype)
+        if t.size and (t.min() < 0 or t.max() >= np.iinfo(np.int32).max):
+            bad = t.min() if t.min() < 0 else t.max()
+            raise HylcError(10, "mesh: vertex index %d is out of range" % bad)
+        tri = np.ascontiguousarray(t, dtype=np.int32)
         self._h = _vp()
         err = ctypes.create_string_buffer(1024)
         nt = tri.shape[0]
@@ -312,6 +344,8 @@ class Mesh:
         self._csr = None
 
     def __repr__(self):
+        if not getattr(self, "_h", None):
+            return "<hylc.Mesh: freed>"
         return "<hylc.Mesh: %d vertices, %d triangles, rest area %.6g m^2, %d Hessian nonzeros>" % (self.nv, self.nt, self.area, self.nnz)
 
     def __del__(self):
@@ -323,32 +357,35 @@ class Mesh:
     @property
     def area(self):
         """the total rest area (m^2)"""
-        return _lib.hylcmat_mesh_area(self._h)
+        return _lib.hylcmat_mesh_area(_live(self))
 
     @property
     def stencils(self):
         """(nt, 6) vertex indices of each triangle's stencil: its vertices, then the neighbours across
         the edges (0,1), (1,2), (2,0); -1 on a boundary edge"""
+        h = _live(self)
         st = np.empty((self.nt, 6), dtype=np.int32)
         for t in range(self.nt):
-            _lib.hylcmat_mesh_element(self._h, t, st[t].ctypes.data, None)
+            _check(_lib.hylcmat_mesh_element(h, t, st[t].ctypes.data, None))
         return st
 
     def hessian_structure(self):
         """(indptr (3 nv + 1,), indices (nnz,)): the CSR sparsity of the Hessian, in the order of the
         values of evaluate()"""
+        h = _live(self)
         if self._csr is None:
             indptr = np.empty(3 * self.nv + 1, dtype=np.int64)
             indices = np.empty(self.nnz, dtype=np.int32)
-            _lib.hylcmat_mesh_hessian_csr(self._h, indptr.ctypes.data, indices.ctypes.data)
+            _lib.hylcmat_mesh_hessian_csr(h, indptr.ctypes.data, indices.ctypes.data)
             self._csr = (indptr, indices)
         return self._csr
 
     def hessian_triplets(self):
         """(rows, cols) (nnz each): the COO sparsity of the Hessian, in the order of evaluate()'s values"""
+        h = _live(self)
         rows = np.empty(self.nnz, dtype=np.int32)
         cols = np.empty(self.nnz, dtype=np.int32)
-        _lib.hylcmat_mesh_hessian_coo(self._h, rows.ctypes.data, cols.ctypes.data)
+        _lib.hylcmat_mesh_hessian_coo(h, rows.ctypes.data, cols.ctypes.data)
         return rows, cols
 
     def _positions(self, x):
@@ -359,10 +396,11 @@ class Mesh:
 
     def strains(self, x):
         """the strains (nt, 6) (sx, sa, sy, II00, II01, II11) of every triangle at positions x (nv, 3)"""
+        h = _live(self)
         x = self._positions(x)
         z = np.empty((self.nt, 6))
         err = ctypes.create_string_buffer(1024)
-        _check(_lib.hylcmat_mesh_strains(self._h, x.ctypes.data, z.ctypes.data, err, len(err)), err)
+        _check(_lib.hylcmat_mesh_strains(h, x.ctypes.data, z.ctypes.data, err, len(err)), err)
         return z
 
     def evaluate(self, material, x, gradient=True, hessian=True, project=False, sparse=None):
@@ -370,13 +408,17 @@ class Mesh:
         (3 nv x 3 nv, vertex-major: row 3 i + c is coordinate c of vertex i). project=True projects each
         element Hessian to positive semidefinite first. The Hessian is a scipy.sparse.csr_matrix when
         scipy is importable (sparse=None) or sparse=True, else the triplets (rows, cols, values).
-        Returns E, (E, grad) or (E, grad, H) as asked."""
+        Returns E, (E, grad) or (E, grad, H) as asked. material must be a hylc.Material (TypeError
+        otherwise)."""
+        if not isinstance(material, Material):
+            raise TypeError("Mesh.evaluate: material must be a hylc.Material, got %s" % type(material).__name__)
+        meh, mah = _live(self), _live(material)
         x = self._positions(x)
         E = ctypes.c_double()
         g = np.empty((self.nv, 3)) if (gradient or hessian) else None
         h = np.empty(self.nnz) if hessian else None
         err = ctypes.create_string_buffer(1024)
-        _check(_lib.hylcmat_mesh_eval(self._h, material._h, x.ctypes.data, PSD if project else 0, ctypes.byref(E),
+        _check(_lib.hylcmat_mesh_eval(meh, mah, x.ctypes.data, PSD if project else 0, ctypes.byref(E),
                                       g.ctypes.data if g is not None else None, h.ctypes.data if h is not None else None,
                                       err, len(err)), err)
         if not hessian:

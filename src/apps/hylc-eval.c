@@ -402,33 +402,33 @@ static PetscErrorCode Eval(HylcMaterial mat)
   sh->s[0] = 0.02, sh->s[1] = 0.05, sh->s[2] = 0.1;
   sh->kappa[0] = 10, sh->kappa[1] = 20, sh->kappa[2] = 40;
   PetscOptionsBegin(PETSC_COMM_WORLD, NULL, "hylc-eval options", "hylc-eval");
-  PetscCall(PetscOptionsString("-material", "Material model: ARCSim-HYLC JSON or hylc HDF5 (required; same as -material_file)", "HylcMaterialLoad", file, file, sizeof(file), &hasFile));
-  PetscCall(PetscOptionsString("-strain", "Strain sx,sa,sy,II00,II01,II11 (II in 1/m) at which to evaluate Psi", "HylcMaterialEvaluate", strain, strain, sizeof(strain), &hasStrain));
+  PetscCall(HylcOptionsString("-material", "Material model: ARCSim-HYLC JSON or hylc HDF5 (required; same as -material_file)", "HylcMaterialLoad", file, file, sizeof(file), &hasFile));
+  PetscCall(HylcOptionsString("-strain", "Strain sx,sa,sy,II00,II01,II11 (II in 1/m) at which to evaluate Psi", "HylcMaterialEvaluate", strain, strain, sizeof(strain), &hasStrain));
   PetscCall(PetscOptionsBool("-derivatives", "Also print the gradient and the Hessian of Psi with respect to the six strains", "HylcMaterialEvaluate", deriv, &deriv, NULL));
-  PetscCall(PetscOptionsString("-eval_json", "Write the material as ARCSim-HYLC JSON to this file (never the input)", "HylcMaterialWriteJSON", json, json, sizeof(json), &hasJson));
-  PetscCall(PetscOptionsString("-eval_hdf5", "Write the material as hylc HDF5 to this file (never the input)", "HylcMaterialWriteHDF5", h5, h5, sizeof(h5), &hasH5));
-  PetscCall(PetscOptionsString("-eval_input", "Batch mode: evaluate at the strains of this file (text: 6 numbers per line; HDF5: dataset /strain or /samples/strain, N x 6)", "HylcMaterialEvaluate", bin, bin, sizeof(bin), &hasIn));
-  PetscCall(PetscOptionsString("-eval_output", "Batch mode: write psi (and with -derivatives grad, hessian) per strain here: text, or HDF5 if it ends in .h5", "HylcMaterialEvaluate", bout, bout, sizeof(bout), &hasOut));
-  PetscCall(PetscOptionsString("-eval_uniaxial", "Uniaxial tension mode: x or y, the material axis of the prescribed stretch; Psi minimized over the other two in-plane strains, bending zero (docs/fabric-uniaxial.md)", "HylcMaterialUniaxial", udir,
-                               udir, sizeof(udir), &hasUni));
+  PetscCall(HylcOptionsString("-eval_json", "Write the material as ARCSim-HYLC JSON to this file (never the input)", "HylcMaterialWriteJSON", json, json, sizeof(json), &hasJson));
+  PetscCall(HylcOptionsString("-eval_hdf5", "Write the material as hylc HDF5 to this file (never the input)", "HylcMaterialWriteHDF5", h5, h5, sizeof(h5), &hasH5));
+  PetscCall(HylcOptionsString("-eval_input", "Batch mode: evaluate at the strains of this file (text: 6 numbers per line; HDF5: dataset /strain or /samples/strain, N x 6)", "HylcMaterialEvaluate", bin, bin, sizeof(bin), &hasIn));
+  PetscCall(HylcOptionsString("-eval_output", "Batch mode: write psi (and with -derivatives grad, hessian) per strain here: text, or HDF5 if it ends in .h5", "HylcMaterialEvaluate", bout, bout, sizeof(bout), &hasOut));
+  PetscCall(HylcOptionsString("-eval_uniaxial", "Uniaxial tension mode: x or y, the material axis of the prescribed stretch; Psi minimized over the other two in-plane strains, bending zero (docs/fabric-uniaxial.md)", "HylcMaterialUniaxial", udir,
+                              udir, sizeof(udir), &hasUni));
   PetscCall(HylcOptionsRealArray(
       "-eval_uniaxial_strains",
       "Uniaxial mode: the stretches s in [0, 1) (strain, 0 at rest; default 0.05,0.1,0.2; at most 256), in this order: the first from the lowest point of a grid of the lateral strains, each other from the lateral strains of the one before",
       "HylcMaterialUniaxial", ustrain, &nu, &hasUStrains));
-  PetscCall(PetscOptionsString("-eval_uniaxial_csv", "Uniaxial mode: write strain,T_N_per_m,lateral_strain_sa,lateral_strain_s2 (T in N/m) to this CSV file", "HylcWriteUniaxialCSV", ucsv, ucsv, sizeof(ucsv), &hasUCsv));
-  PetscCall(PetscOptionsEnum("-eval_path",
-                             "Load path mode (docs/fabric-fidelity.md): uniaxial (stretch along -eval_path_angle, the other in-plane strains free), equibiaxial (sx = sy, sa free), shear (sa given, sx, sy free) or bending (II00, or II11 with "
-                             "-eval_path_angle 90, in-plane strains free)",
-                             "HylcMaterialPathState", HylcPathNames, pkind, &pkind, &pathSet));
+  PetscCall(HylcOptionsString("-eval_uniaxial_csv", "Uniaxial mode: write strain,T_N_per_m,lateral_strain_sa,lateral_strain_s2 (T in N/m) to this CSV file", "HylcWriteUniaxialCSV", ucsv, ucsv, sizeof(ucsv), &hasUCsv));
+  PetscCall(HylcOptionsEnum("-eval_path",
+                            "Load path mode (docs/fabric-fidelity.md): uniaxial (stretch along -eval_path_angle, the other in-plane strains free), equibiaxial (sx = sy, sa free), shear (sa given, sx, sy free) or bending (II00, or II11 with "
+                            "-eval_path_angle 90, in-plane strains free)",
+                            "HylcMaterialPathState", HylcPathNames, pkind, &pkind, &pathSet));
   PetscCall(HylcOptionsReal("-eval_path_angle", "Path mode: the uniaxial direction in degrees from the material x axis (0 strip along x, 90 along y, 45 bias), or the bending axis (0: II00, 90: II11)", "HylcMaterialPathState", path.angle, &path.angle,
                             NULL));
   PetscCall(HylcOptionsRealArray(
       "-eval_path_values",
       "Path mode: the prescribed values (stretches in [0, 1), sa in (-0.99, 0.99), or curvatures in 1/m), in this order: the first from the lowest point of a grid of the free strains, each other from the one before (at most 256)",
       "HylcMaterialPathState", pvalues, &npv, &hasPathValues));
-  PetscCall(PetscOptionsString("-eval_path_csv", "Path mode: write value,force,sx,sa,sy,II00,II11,psi,converged (force in N/m, N for bending) to this CSV file", "HylcWritePathCSV", pcsv, pcsv, sizeof(pcsv), NULL));
-  PetscCall(PetscOptionsString("-measured", "A measured-cloth material (the data-driven JSON of Wang, O'Brien, Ramamoorthi 2011 that ARCSim reads: density kg/m^2, stretching 6 x 4, bending 3 x 5) for -eval_sheet, instead of -material",
-                               "hylcmat_measured_load", measured, measured, sizeof(measured), &hasMeasured));
+  PetscCall(HylcOptionsString("-eval_path_csv", "Path mode: write value,force,sx,sa,sy,II00,II11,psi,converged (force in N/m, N for bending) to this CSV file", "HylcWritePathCSV", pcsv, pcsv, sizeof(pcsv), NULL));
+  PetscCall(HylcOptionsString("-measured", "A measured-cloth material (the data-driven JSON of Wang, O'Brien, Ramamoorthi 2011 that ARCSim reads: density kg/m^2, stretching 6 x 4, bending 3 x 5) for -eval_sheet, instead of -material",
+                              "hylcmat_measured_load", measured, measured, sizeof(measured), &hasMeasured));
   PetscCall(PetscOptionsBool("-eval_sheet",
                              "Print the fabric sheet of the material: strip tension T (N/m) along x, y and the 45 degree bias with the lateral strain and Poisson ratio, bending moment (N m/m), density (kg/m^2) (docs/measured-cloth.md)",
                              "hylcmat_measured_tension", doSheet, &doSheet, NULL));
@@ -436,9 +436,9 @@ static PetscErrorCode Eval(HylcMaterial mat)
   PetscCall(HylcOptionsRealArray("-eval_sheet_curvatures", "Sheet: the curvatures of the bending moments (1/m; default 10,20,40; at most 64)", "hylcmat_measured_bending", sh->kappa, &nsk, &hasSKappa));
   PetscCall(PetscOptionsBool("-eval_sheet_energy", "Sheet of a measured-cloth material: also the states at the stationarity of its energy (k varying), beside the balance of the simulator's frozen-stiffness forces", "hylcmat_measured_tension",
                              sheetEnergy, &sheetEnergy, NULL));
-  PetscCall(PetscOptionsString("-eval_sheet_json", "Sheet: write its figures as JSON to this file (T in N/m, M in N m/m, density in kg/m^2)", "hylcmat_measured_tension", sjson, sjson, sizeof(sjson), &hasSJson));
-  PetscCall(PetscOptionsString("-eval_measured_json", "Write the table (-material) as a measured-cloth JSON to this file: the least-squares data of docs/measured-cloth.md, \"Export\" (about 20 s)", "HylcMaterialWriteMeasured", mjson, mjson,
-                               sizeof(mjson), &hasMJson));
+  PetscCall(HylcOptionsString("-eval_sheet_json", "Sheet: write its figures as JSON to this file (T in N/m, M in N m/m, density in kg/m^2)", "hylcmat_measured_tension", sjson, sjson, sizeof(sjson), &hasSJson));
+  PetscCall(HylcOptionsString("-eval_measured_json", "Write the table (-material) as a measured-cloth JSON to this file: the least-squares data of docs/measured-cloth.md, \"Export\" (about 20 s)", "HylcMaterialWriteMeasured", mjson, mjson,
+                              sizeof(mjson), &hasMJson));
   PetscOptionsEnd();
   sh->ns       = hasSStrains ? nss : 3;
   sh->nk       = hasSKappa ? nsk : 3;

@@ -17,8 +17,8 @@ static PetscErrorCode RunPattern(HylcPattern pat)
   PetscFunctionBeginUser;
   PetscCall(HylcPatternSetFromOptions(pat));
   PetscOptionsBegin(PETSC_COMM_WORLD, NULL, "hylc-pattern output options", "hylc-pattern");
-  PetscCall(PetscOptionsString("-pattern_output", "Write the pattern to this .pyp file", "HylcPatternWrite", out, out, sizeof(out), NULL));
-  PetscCall(PetscOptionsString("-pattern_vtk", "Write the tiled pattern as legacy-VTK polylines to this file", "HylcPatternWriteVTK", vtk, vtk, sizeof(vtk), NULL));
+  PetscCall(HylcOptionsString("-pattern_output", "Write the pattern to this .pyp file", "HylcPatternWrite", out, out, sizeof(out), NULL));
+  PetscCall(HylcOptionsString("-pattern_vtk", "Write the tiled pattern as legacy-VTK polylines to this file", "HylcPatternWriteVTK", vtk, vtk, sizeof(vtk), NULL));
   PetscCall(HylcOptionsIntArray("-pattern_vtk_tiles", "Number of tile copies nx,ny in the VTK file", "HylcPatternWriteVTK", tiles, &nt, &flg));
   PetscOptionsEnd();
   PetscCheck(!flg || (nt == 2 && tiles[0] >= 1 && tiles[1] >= 1), PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-pattern_vtk_tiles needs two positive integers nx,ny");

@@ -134,24 +134,24 @@ static PetscErrorCode Solve(HylcPattern pat, HylcMicro micro)
   PetscOptionsBegin(PETSC_COMM_SELF, NULL, "hylc-solve options", "hylc-solve");
   PetscCall(HylcOptionsRealArray("-strain", "Macroscopic strain sx,sa,sy,II00,II01,II11 (II in 1/m): finite, |sa| < 1, 0 < 1+sx, 1+sy <= 1e3, the midsurface turning by at most 2 pi across a period (docs/method.md)", "HylcMicroSolve", z, &nz, &flg));
   PetscCheck(!flg || nz == 6, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-strain needs 6 comma-separated values sx,sa,sy,II00,II01,II11, got %" PetscInt_FMT, nz);
-  PetscCall(PetscOptionsString("-solve_output", "Write the equilibrium tile as .pyp (positions and twists; rest data unchanged)", "hylc-solve", out, out, sizeof(out), NULL));
-  PetscCall(PetscOptionsString("-solve_vtk", "Write the equilibrium, tiled, as legacy-VTK polylines", "hylc-solve", vtk, vtk, sizeof(vtk), NULL));
+  PetscCall(HylcOptionsString("-solve_output", "Write the equilibrium tile as .pyp (positions and twists; rest data unchanged)", "hylc-solve", out, out, sizeof(out), NULL));
+  PetscCall(HylcOptionsString("-solve_vtk", "Write the equilibrium, tiled, as legacy-VTK polylines", "hylc-solve", vtk, vtk, sizeof(vtk), NULL));
   nt = 2;
   PetscCall(HylcOptionsIntArray("-solve_vtk_tiles", "Tile copies nx,ny in the VTK file", "hylc-solve", tiles, &nt, NULL));
-  PetscCall(PetscOptionsString("-solve_uniaxial", "Uniaxial tension mode: x or y, the material axis of the prescribed stretch; the other two in-plane strains free, bending zero (docs/fabric-uniaxial.md)", "HylcMicroSolveUniaxial", udir, udir,
-                               sizeof(udir), &uni));
+  PetscCall(HylcOptionsString("-solve_uniaxial", "Uniaxial tension mode: x or y, the material axis of the prescribed stretch; the other two in-plane strains free, bending zero (docs/fabric-uniaxial.md)", "HylcMicroSolveUniaxial", udir, udir,
+                              sizeof(udir), &uni));
   PetscCall(HylcOptionsRealArray("-solve_uniaxial_strains", "Uniaxial mode: the stretches s in [0, 1) (strain, 0 at rest; default 0.05,0.1,0.2), solved in this order, each continued from the one before (at most 64)", "HylcMicroSolveUniaxial",
                                  ustrain, &nu, &hasStrains));
-  PetscCall(PetscOptionsString("-solve_uniaxial_csv", "Uniaxial mode: write strain,T_N_per_m,lateral_strain_sa,lateral_strain_s2 (T in N/m) to this CSV file", "HylcWriteUniaxialCSV", csv, csv, sizeof(csv), &hasCsv));
-  PetscCall(PetscOptionsEnum("-solve_path",
-                             "Load path mode (docs/fabric-fidelity.md): uniaxial (stretch along -solve_path_angle, the other in-plane strains free), equibiaxial (sx = sy, sa free), shear (sa given, sx, sy free) or bending (II00, or II11 with "
-                             "-solve_path_angle 90, in-plane strains free)",
-                             "HylcMicroSolvePath", HylcPathNames, pkind, &pkind, &pathSet));
+  PetscCall(HylcOptionsString("-solve_uniaxial_csv", "Uniaxial mode: write strain,T_N_per_m,lateral_strain_sa,lateral_strain_s2 (T in N/m) to this CSV file", "HylcWriteUniaxialCSV", csv, csv, sizeof(csv), &hasCsv));
+  PetscCall(HylcOptionsEnum("-solve_path",
+                            "Load path mode (docs/fabric-fidelity.md): uniaxial (stretch along -solve_path_angle, the other in-plane strains free), equibiaxial (sx = sy, sa free), shear (sa given, sx, sy free) or bending (II00, or II11 with "
+                            "-solve_path_angle 90, in-plane strains free)",
+                            "HylcMicroSolvePath", HylcPathNames, pkind, &pkind, &pathSet));
   PetscCall(
       HylcOptionsReal("-solve_path_angle", "Path mode: the uniaxial direction in degrees from the material x axis (0 strip along x, 90 along y, 45 bias), or the bending axis (0: II00, 90: II11)", "HylcMicroSolvePath", path.angle, &path.angle, NULL));
   PetscCall(HylcOptionsRealArray("-solve_path_values", "Path mode: the prescribed values (stretches in [0, 1), sa in (-0.95, 0.95), or curvatures in 1/m), solved in this order, each continued from the one before (at most 64)", "HylcMicroSolvePath",
                                  pvalues, &npv, &hasPathValues));
-  PetscCall(PetscOptionsString("-solve_path_csv", "Path mode: write value,force,sx,sa,sy,II00,II11,psi,converged (force in N/m, N for bending) to this CSV file", "HylcWritePathCSV", pcsv, pcsv, sizeof(pcsv), NULL));
+  PetscCall(HylcOptionsString("-solve_path_csv", "Path mode: write value,force,sx,sa,sy,II00,II11,psi,converged (force in N/m, N for bending) to this CSV file", "HylcWritePathCSV", pcsv, pcsv, sizeof(pcsv), NULL));
   PetscOptionsEnd();
   path.kind = (int)pkind;
   PetscCheck(pathSet || (!hasPathValues && !pcsv[0]), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-solve_path_values and -solve_path_csv need -solve_path uniaxial|equibiaxial|shear|bending");

@@ -104,6 +104,7 @@ typedef struct {
   PetscInt  *term;    /* the plan's term (HYLC_CALIB_OTHER: off the plan's axes) */
   PetscInt  *line;    /* the row's line in a text file (1-based), its row in a samples file (0-based) */
   PetscBool  continued; /* a samples file with continued samples (/samples/start 1 or 2): -calibrate_start auto */
+  PetscReal  sscale[2]; /* S_x, S_y of -calibrate_stationary from every usable row (before the thinning; 0: none) */
 } HylcCalibRows;
 PETSC_INTERN PetscErrorCode HylcCalibRowsDestroy_Private(HylcCalibRows *);
 /* target.c: rank 0's part of reading a CSV, raw data.txt or samples file target: rows read, checked (values,

@@ -206,7 +206,8 @@ PetscErrorCode HylcCalibrateSetStart(HylcCalibrate C, HylcCalibrateStart start)
   HylcCalibrateSetStationary - Requires the tile to be stationary at the base strain (option
   -calibrate_stationary): adds the residuals sqrt(w) dPsi/ds_k(z_b) / S_k, k = x, y, so that the objective
   gains w ((dPsi/dsx / S_x)^2 + (dPsi/dsy / S_y)^2); S_k is the target's dPsi/ds_k at s_k = 5 % (a table; for
-  a file target 2 dPsi_T / s_k of its row of the 1D term nearest to s_k = 5 %). The gradient is the envelope
+  a file target 2 dPsi_T / s_k of its row of the 1D term nearest to s_k = 5 %, among every usable row: the
+  same whatever -calibrate_stride and -calibrate_max_samples keep). The gradient is the envelope
   theorem's at the equilibrium. Its Jacobian (option -calibrate_stationary_jacobian): fd (the default), central
   differences in log p with step h (-calibrate_stationary_h, 1e-2), each a cold re-solve of the base sample
   (two per parameter not fixed, per evaluation); or gn, the energy terms' parts at the fixed state, which
@@ -217,7 +218,7 @@ PetscErrorCode HylcCalibrateSetStart(HylcCalibrate C, HylcCalibrateStart start)
 
   Input Parameters:
 + C  - the calibration
-. w  - the weight (>= 0; 0: off, the default)
+. w  - the weight (0 <= w <= 1e8; 0: off, the default)
 . fd - PETSC_TRUE: the Jacobian by central differences; PETSC_FALSE: the Gauss-Newton one
 - h  - the step in log p of the differences (0 < h <= 1)
 
@@ -230,6 +231,7 @@ PetscErrorCode HylcCalibrateSetStationary(HylcCalibrate C, PetscReal w, PetscBoo
   PetscFunctionBegin;
   PetscValidHeaderSpecific(C, HYLC_CALIBRATE_CLASSID, 1);
   PetscCheck(w >= 0 && !PetscIsInfOrNanReal(w), PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "-calibrate_stationary must be a finite number >= 0, got %g", (double)w);
+  PetscCheck(w <= 1e8, PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "-calibrate_stationary %.6g: at most 1e8 (beyond, the stationarity alone decides and the objective loses the samples' digits; 1e300 overflowed it)", (double)w);
   PetscCheck(h > 0 && h <= 1, PetscObjectComm((PetscObject)C), PETSC_ERR_USER_INPUT, "-calibrate_stationary_h must be in (0, 1], got %g", (double)h);
   C->wstat  = w;
   C->statFD = fd;
@@ -593,7 +595,7 @@ PetscErrorCode HylcCalibrateSetFromOptions(HylcCalibrate C)
   /* the plan's ranges under the sampler's names, so that -options_file config/<p>.yaml applies */
   PetscOptionsBegin(comm, ((PetscObject)C)->prefix, "Calibration: the plan's ranges (table target; the sampler's options)", "HylcCalibrate");
   PetscCall(HylcPlanRangesFromOptions(PetscOptionsObject, comm, "HylcCalibrateSetPlanRanges", &ranges));
-  PetscCall(PetscOptionsString("-reference_output", "Write the reference state as .pyp", "HylcCalibrateSetReference", refout, refout, sizeof(refout), NULL));
+  PetscCall(HylcOptionsString("-reference_output", "Write the reference state as .pyp", "HylcCalibrateSetReference", refout, refout, sizeof(refout), NULL));
   PetscOptionsEnd();
 
   /* the hand-written Levenberg-Marquardt's rejection limit has no counterpart in TAO (issue 33) */
@@ -601,13 +603,13 @@ PetscErrorCode HylcCalibrateSetFromOptions(HylcCalibrate C)
   PetscCheck(!set, comm, PETSC_ERR_USER_INPUT, "-calibrate_max_reject no longer applies: the calibration's optimizer is TAO (docs/calibrate.md); limit its evaluations with -calibrate_tao_max_funcs");
 
   PetscObjectOptionsBegin((PetscObject)C);
-  PetscCall(PetscOptionsString("-calibrate_target", "Target: a material table (.json or model .h5), a samples .h5 of hylc-sample, the paper's raw data.txt (or its directory), or a .csv with a header naming sx,sa,sy,II00,II01,II11,psi",
-                               "HylcCalibrateSetTarget", target, target, sizeof(target), NULL));
-  PetscCall(PetscOptionsEnum("-calibrate_target_type", "Kind of target: auto (by extension and content), table, samples, raw, csv", "HylcCalibrateSetTargetType", HylcCalibTargetTypes, tt, &tt, &ttset));
-  PetscCall(PetscOptionsString("-calibrate_output", "Write the calibrated values as a YAML options file (yarn_E, yarn_Es, yarn_G, yarn_kc; a drop-in for config/)", "HylcCalibrateSetOutputs", output, output, sizeof(output), NULL));
-  PetscCall(PetscOptionsString("-calibrate_dump", "Write per sample the strain, term, target, initial and calibrated Psi as CSV (examples/plot_calibrate.py)", "HylcCalibrateSetOutputs", dump, dump, sizeof(dump), NULL));
-  PetscCall(PetscOptionsString("-calibrate_params", "Free parameters, a comma list of E, Es, G, kc", "HylcCalibrateSetRoles", params, params, sizeof(params), &pset));
-  PetscCall(PetscOptionsString("-calibrate_tie", "Parameters that follow E at their initial ratio when not free (Es, G, kc; 'none' for none); the others not free are fixed", "HylcCalibrateSetRoles", tie, tie, sizeof(tie), &tset));
+  PetscCall(HylcOptionsString("-calibrate_target", "Target: a material table (.json or model .h5), a samples .h5 of hylc-sample, the paper's raw data.txt (or its directory), or a .csv with a header naming sx,sa,sy,II00,II01,II11,psi",
+                              "HylcCalibrateSetTarget", target, target, sizeof(target), NULL));
+  PetscCall(HylcOptionsEnum("-calibrate_target_type", "Kind of target: auto (by extension and content), table, samples, raw, csv", "HylcCalibrateSetTargetType", HylcCalibTargetTypes, tt, &tt, &ttset));
+  PetscCall(HylcOptionsString("-calibrate_output", "Write the calibrated values as a YAML options file (yarn_E, yarn_Es, yarn_G, yarn_kc; a drop-in for config/)", "HylcCalibrateSetOutputs", output, output, sizeof(output), NULL));
+  PetscCall(HylcOptionsString("-calibrate_dump", "Write per sample the strain, term, target, initial and calibrated Psi as CSV (examples/plot_calibrate.py)", "HylcCalibrateSetOutputs", dump, dump, sizeof(dump), NULL));
+  PetscCall(HylcOptionsString("-calibrate_params", "Free parameters, a comma list of E, Es, G, kc", "HylcCalibrateSetRoles", params, params, sizeof(params), &pset));
+  PetscCall(HylcOptionsString("-calibrate_tie", "Parameters that follow E at their initial ratio when not free (Es, G, kc; 'none' for none); the others not free are fixed", "HylcCalibrateSetRoles", tie, tie, sizeof(tie), &tset));
   for (int j = 0; j < HYLC_CALIBRATE_NPARAM; j++) {
     char      opt[64], help[160];
     PetscReal v[2] = {C->blo[j], C->bhi[j]};
@@ -623,38 +625,38 @@ PetscErrorCode HylcCalibrateSetFromOptions(HylcCalibrate C)
       PetscCall(HylcCalibrateSetBounds(C, j, v[0], v[1]));
     }
   }
-  PetscCall(PetscOptionsString("-calibrate_terms",
-                               "Terms sampled for a table target: a comma list of zero, sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11, or all, or 1d (default zero,sx,sa,sy,II00,II11)",
-                               "HylcCalibrateSetTerms", terms, terms, sizeof(terms), NULL));
-  PetscCall(PetscOptionsInt("-calibrate_n", "Samples per 1D term (table target)", "HylcCalibrateSetSampleCounts", n1, &n1, NULL));
-  PetscCall(PetscOptionsInt("-calibrate_n2", "Samples per axis of a 2D term (table target)", "HylcCalibrateSetSampleCounts", n2, &n2, NULL));
-  PetscCall(PetscOptionsInt("-calibrate_stride", "File target: keep every stride-th row of each term", "HylcCalibrateSetThinning", stride, &stride, NULL));
-  PetscCall(PetscOptionsInt("-calibrate_max_samples", "File target: at most this many rows (thinned evenly within each term; 0: all)", "HylcCalibrateSetThinning", maxSamples, &maxSamples, NULL));
+  PetscCall(HylcOptionsString("-calibrate_terms",
+                              "Terms sampled for a table target: a comma list of zero, sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11, or all, or 1d (default zero,sx,sa,sy,II00,II11)",
+                              "HylcCalibrateSetTerms", terms, terms, sizeof(terms), NULL));
+  PetscCall(HylcOptionsInt("-calibrate_n", "Samples per 1D term (table target)", "HylcCalibrateSetSampleCounts", n1, &n1, NULL));
+  PetscCall(HylcOptionsInt("-calibrate_n2", "Samples per axis of a 2D term (table target)", "HylcCalibrateSetSampleCounts", n2, &n2, NULL));
+  PetscCall(HylcOptionsInt("-calibrate_stride", "File target: keep every stride-th row of each term", "HylcCalibrateSetThinning", stride, &stride, NULL));
+  PetscCall(HylcOptionsInt("-calibrate_max_samples", "File target: at most this many rows (thinned evenly within each term; 0: all)", "HylcCalibrateSetThinning", maxSamples, &maxSamples, NULL));
   PetscCall(HylcOptionsReal("-calibrate_weight_zero", "Weight of the relative error of Psi at the base strain (the constant)", "HylcCalibrateSetTermWeight", wzero, &wzero, NULL));
   PetscCall(
-      PetscOptionsString("-calibrate_weights", "Weights of terms, a comma list term=weight (e.g. sx=2,sa-sy=0.5; default 1 each; 'other' for file rows off the plan's axes)", "HylcCalibrateSetTermWeight", weights, weights, sizeof(weights), NULL));
-  PetscCall(HylcOptionsReal("-calibrate_stationary", "Weight w of the stationarity at the base strain: adds w ((dPsi/dsx / S_x)^2 + (dPsi/dsy / S_y)^2) to the objective, dPsi/ds in N/m, S the target's dPsi/ds at 5 % stretch (0: off)",
+      HylcOptionsString("-calibrate_weights", "Weights of terms, a comma list term=weight (e.g. sx=2,sa-sy=0.5; default 1 each; 'other' for file rows off the plan's axes)", "HylcCalibrateSetTermWeight", weights, weights, sizeof(weights), NULL));
+  PetscCall(HylcOptionsReal("-calibrate_stationary", "Weight w of the stationarity at the base strain: adds w ((dPsi/dsx / S_x)^2 + (dPsi/dsy / S_y)^2) to the objective, dPsi/ds in N/m, S the target's dPsi/ds at 5 % stretch (0: off; at most 1e8)",
                             "HylcCalibrateSetStationary", wstat, &wstat, NULL));
-  PetscCall(PetscOptionsEnum(
+  PetscCall(HylcOptionsEnum(
       "-calibrate_stationary_jacobian",
       "Jacobian of the stationarity's residuals: fd (central differences in log p, two re-solves of the base sample per parameter not fixed) or gn (the energy terms' parts at the fixed state: no solve, leaves out the equilibrium's change)",
       "HylcCalibrateSetStationary", HylcCalibrateStationaryJacobians, sjac, &sjac, NULL));
   PetscCall(HylcOptionsReal("-calibrate_stationary_h", "Step in log p of the stationarity's central differences (-calibrate_stationary_jacobian fd)", "HylcCalibrateSetStationary", statH, &statH, NULL));
-  PetscCall(PetscOptionsEnum("-calibrate_start",
-                             "How each evaluation's samples are solved: auto (as the target was made: a samples file's own start; cold for a table, raw data or CSV), continue (each 1D term's half-line from zero outward, as hylc-sample) or cold "
-                             "(every sample from the reference state, the paper's procedure)",
-                             "HylcCalibrateSetStart", HylcCalibrateStarts, start, &start, NULL));
-  PetscCall(PetscOptionsInt("-calibrate_max_it", "Optimizer (TAO): at most this many iterations (-calibrate_tao_max_it overrides it)", "HylcCalibrateSetMaxIterations", maxIt, &maxIt, NULL));
+  PetscCall(HylcOptionsEnum("-calibrate_start",
+                            "How each evaluation's samples are solved: auto (as the target was made: a samples file's own start; cold for a table, raw data or CSV), continue (each 1D term's half-line from zero outward, as hylc-sample) or cold "
+                            "(every sample from the reference state, the paper's procedure)",
+                            "HylcCalibrateSetStart", HylcCalibrateStarts, start, &start, NULL));
+  PetscCall(HylcOptionsInt("-calibrate_max_it", "Optimizer (TAO): at most this many iterations (-calibrate_tao_max_it overrides it)", "HylcCalibrateSetMaxIterations", maxIt, &maxIt, NULL));
   PetscCall(HylcOptionsReal("-calibrate_lambda", "Optimizer (TAOBRGN): Levenberg-Marquardt damping relative to the diagonal of J^T J (-calibrate_tao_brgn_regularizer_weight overrides it)", "HylcCalibrateSetDamping", lambda, &lambda, NULL));
   PetscCall(HylcOptionsReal("-calibrate_xtol", "Stop when an iteration changes every log parameter by less than this (with TAO's own tests, -calibrate_tao_gatol ...)", "HylcCalibrateSetTolerances", xtol, &xtol, NULL));
   PetscCall(HylcOptionsReal("-calibrate_ftol", "Stop when an iteration decreases the objective by less than this fraction", "HylcCalibrateSetTolerances", ftol, &ftol, NULL));
   PetscCall(HylcOptionsReal("-calibrate_fatol", "Stop when the objective is below this", "HylcCalibrateSetTolerances", fatol, &fatol, NULL));
   PetscCall(HylcOptionsReal("-calibrate_flat_tol", "A direction of the log parameters along which the normalised residuals change by less than this per unit (a singular value of the Jacobian) is flat: its parameter is held and reported",
                             "HylcCalibrateSetTolerances", flatTol, &flatTol, NULL));
-  PetscCall(PetscOptionsEnum("-calibrate_reference",
-                             "Reference state: auto (computed once with the initial parameters: Algorithm C1 for a generated pattern, relax for a stored reference state, as hylc-sample), compute, relax (only the in-plane minimum over the periods of "
-                             "the pattern as given) or none (the pattern as given: the paper's tables were made so; config/profile-paper.yaml)",
-                             "HylcCalibrateSetReference", HylcReferenceModes, rm, &rm, NULL));
+  PetscCall(HylcOptionsEnum("-calibrate_reference",
+                            "Reference state: auto (computed once with the initial parameters: Algorithm C1 for a generated pattern, relax for a stored reference state, as hylc-sample), compute, relax (only the in-plane minimum over the periods of "
+                            "the pattern as given) or none (the pattern as given: the paper's tables were made so; config/profile-paper.yaml)",
+                            "HylcCalibrateSetReference", HylcReferenceModes, rm, &rm, NULL));
   PetscCall(PetscOptionsName("-calibrate_view", "Print the set-up at the end of HylcCalibrateSetUp()", "HylcCalibrateView", NULL));
   PetscOptionsEnd();
   PetscCall(HylcCalibrateSetPlanRanges(C, &ranges));

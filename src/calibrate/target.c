@@ -138,6 +138,19 @@ static PetscErrorCode SelectRows(const char path[], HylcCalibRows *R, PetscReal 
     }
   }
   PetscCall(RowsAdd(S, R->z + 6 * base, R->psi[base], 0, R->line[base]));
+  /* the stationarity's scale S_k (-calibrate_stationary): 2 dPsi_T / s_k of the row of the 1D term s_k > 0
+     nearest to 5 % (the slope there of a quadratic), among every usable row: the same whatever the
+     thinning below keeps */
+  for (int k = 0; k < 2; k++) {
+    PetscReal near = PETSC_MAX_REAL;
+    S->sscale[k]   = 0;
+    for (PetscInt i = 0; i < R->n; i++) {
+      const PetscReal sk = R->z[6 * i + 2 * k];
+      if (i == base || R->term[i] != (k ? 3 : 1) || sk <= 0 || PetscAbsReal(sk - 0.05) >= near) continue;
+      near         = PetscAbsReal(sk - 0.05);
+      S->sscale[k] = PetscAbsReal(2 * (R->psi[i] - R->psi[base]) / sk);
+    }
+  }
   for (int pass = 0; pass < 2; pass++) {
     keep = 0;
     for (PetscInt t = 0; t < HYLC_CALIB_NTERM; t++) local[t] = 0;
@@ -333,8 +346,9 @@ PetscErrorCode HylcCalibrateReadTarget_Private(HylcCalibrate C)
   if (kind == HYLC_CALIB_TARGET_TABLE)
     PetscCall(SampleTable(C));
   else {
-    PetscInt       head[4] = {0, 0, 0, 0};
-    PetscErrorCode ierr    = PETSC_SUCCESS;
+    PetscInt       head[4]   = {0, 0, 0, 0};
+    PetscReal      sscale[2] = {0, 0};
+    PetscErrorCode ierr      = PETSC_SUCCESS;
     if (!C->rank) {
       HylcCalibRows S = {0};
       HylcPeriodic  P;
@@ -349,7 +363,9 @@ PetscErrorCode HylcCalibrateReadTarget_Private(HylcCalibrate C)
         PetscCall(PetscArraycpy(C->z, S.z, 6 * S.n));
         PetscCall(PetscArraycpy(C->tpsi, S.psi, S.n));
         PetscCall(PetscArraycpy(C->term, S.term, S.n));
-        head[3] = S.continued;
+        head[3]   = S.continued;
+        sscale[0] = S.sscale[0];
+        sscale[1] = S.sscale[1];
         PetscCall(HylcCalibRowsDestroy_Private(&S));
         head[0] = C->m;
         head[1] = C->nrows;
@@ -358,7 +374,10 @@ PetscErrorCode HylcCalibrateReadTarget_Private(HylcCalibrate C)
     }
     PetscCall(HylcShareError(comm, ierr));
     PetscCallMPI(MPI_Bcast(head, 4, MPIU_INT, 0, comm));
+    PetscCallMPI(MPI_Bcast(sscale, 2, MPIU_REAL, 0, comm));
     C->targetContinued = (PetscBool)head[3];
+    C->sscale[0]       = sscale[0];
+    C->sscale[1]       = sscale[1];
     if (C->rank) {
       C->m        = head[0];
       C->nrows    = head[1];
@@ -380,17 +399,6 @@ PetscErrorCode HylcCalibrateReadTarget_Private(HylcCalibrate C)
       if (C->term[i]) C->range[C->term[i]] = PetscMax(C->range[C->term[i]], d);
     }
     for (PetscInt t = 1; t < HYLC_CALIB_NTERM; t++) rmax = PetscMax(rmax, C->range[t]);
-    if (kind != HYLC_CALIB_TARGET_TABLE) /* the stationarity's scale S_k without a table: 2 dPsi_T / s_k of the row of the 1D term s_k > 0 nearest to 5 % (the slope there of a quadratic) */
-      for (int k = 0; k < 2; k++) {
-        PetscReal best = PETSC_MAX_REAL;
-        C->sscale[k]   = 0;
-        for (PetscInt i = 1; i < C->m; i++) {
-          const PetscReal sk = C->z[6 * i + 2 * k];
-          if (C->term[i] != (k ? 3 : 1) || sk <= 0 || PetscAbsReal(sk - 0.05) >= best) continue;
-          best         = PetscAbsReal(sk - 0.05);
-          C->sscale[k] = PetscAbsReal(2 * (C->tpsi[i] - C->tpsi[0]) / sk);
-        }
-      }
     PetscCheck(C->m > 1 && rmax > 0, comm, PETSC_ERR_USER_INPUT, "%s: the target has no sample with an energy different from the base strain's (%" PetscInt_FMT " samples)", C->target, C->m);
     for (PetscInt t = 1; t < HYLC_CALIB_NTERM; t++)
       if (C->nt[t] && C->range[t] == 0) {

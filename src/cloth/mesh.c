@@ -9,8 +9,12 @@
    which rules that pattern out for this element. */
 #include <hylc/private/clothimpl.h>
 #include <ctype.h>
+#include <errno.h>
+#include <float.h>
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 PetscErrorCode HylcClothMeshReset_Private(HylcCloth c)
@@ -218,177 +222,335 @@ PetscErrorCode HylcClothMeshDisc_Private(HylcCloth c, PetscReal R, PetscReal Rsn
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* next token of an .obj face item "v", "v/vt", "v//vn", "v/vt/vn": the v and vt indices (1-based, or
-   negative relative ones; 0 for absent vt) */
-static int ParseFaceItem(const char *s, long *v, long *vt)
-{
-  char *end;
+/* ---- the .obj reader ------------------------------------------------------------------------------ */
 
-  *vt = 0;
-  *v  = strtol(s, &end, 10);
-  if (end == s) return -1;
-  if (*end == '/') {
-    const char *q = end + 1;
-    if (*q != '/') {
-      *vt = strtol(q, &end, 10);
-      if (end == q) return -1;
+/* limits of an .obj mesh: the count of v, vt and f lines (six times it fits a PetscInt and an MPI count),
+   and the largest coordinate in m after -cloth_mesh_scale (a cloth of 1000 km is a wrong scale; beyond
+   about 1e150 m the areas and energies overflow) */
+#define OBJ_MAX_COUNT (PETSC_MAX_INT / 16)
+#define OBJ_MAX_COORD 1e6
+
+/* the file's contents on rank 0 */
+typedef struct {
+  PetscInt   n[3], cap[3]; /* v, vt, f lines read, and the room for them */
+  PetscReal *X, *VT;       /* 3 per vertex, 2 per texture coordinate (m) */
+  PetscInt  *F;            /* 6 per face: v0 v1 v2 vt0 vt1 vt2 (0-based; vt -1: none) */
+  long      *vline, *fline;
+} OBJData;
+
+static PetscErrorCode OBJDataFree(OBJData *d)
+{
+  PetscFunctionBegin;
+  PetscCall(PetscFree(d->X));
+  PetscCall(PetscFree(d->VT));
+  PetscCall(PetscFree(d->F));
+  PetscCall(PetscFree(d->vline));
+  PetscCall(PetscFree(d->fline));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* *p (n entries of elem bytes) moved into a new block of room for cap entries: each array its own block,
+   freed by PetscFree() alone */
+static PetscErrorCode OBJGrow(void *p, size_t elem, PetscInt n, PetscInt cap)
+{
+  void **a = (void **)p, *q;
+
+  PetscFunctionBegin;
+  PetscCall(PetscMalloc((size_t)cap * elem, &q));
+  if (n) PetscCall(PetscMemcpy(q, *a, (size_t)n * elem));
+  PetscCall(PetscFree(*a));
+  *a = q;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* room for one more entry of kind k (0 v, 1 vt, 2 f); *full when the file has too many */
+static PetscErrorCode OBJRoom(OBJData *d, int k, PetscBool *full)
+{
+  PetscInt cap;
+
+  PetscFunctionBegin;
+  *full = (PetscBool)(d->n[k] >= OBJ_MAX_COUNT);
+  if (*full || d->n[k] < d->cap[k]) PetscFunctionReturn(PETSC_SUCCESS);
+  cap = d->cap[k] ? PetscMin(2 * d->cap[k], OBJ_MAX_COUNT) : 1024;
+  if (k == 0) {
+    PetscCall(OBJGrow(&d->X, 3 * sizeof(PetscReal), d->n[0], cap));
+    PetscCall(OBJGrow(&d->vline, sizeof(long), d->n[0], cap));
+  } else if (k == 1) {
+    PetscCall(OBJGrow(&d->VT, 2 * sizeof(PetscReal), d->n[1], cap));
+  } else {
+    PetscCall(OBJGrow(&d->F, 6 * sizeof(PetscInt), d->n[2], cap));
+    PetscCall(OBJGrow(&d->fline, sizeof(long), d->n[2], cap));
+  }
+  d->cap[k] = cap;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* the n numbers at the start of s into v, then only further numbers (a vertex's w or r g b, a texture
+   coordinate's w, which are ignored): 0, or -1 if s has fewer numbers or other text */
+static int OBJNumbers(const char *s, int n, double v[])
+{
+  for (int i = 0;; i++) {
+    char  *end;
+    double x;
+    while (isspace((unsigned char)*s)) s++;
+    if (!*s) return i >= n ? 0 : -1;
+    x = strtod(s, &end);
+    if (end == s || (*end && !isspace((unsigned char)*end))) return -1;
+    if (i < n) v[i] = x;
+    s = end;
+  }
+}
+
+/* an index of a face item: a decimal integer, non-zero (1-based, or negative: relative to the end) */
+static int OBJIndex(const char *s, const char **end, long *i)
+{
+  char *e;
+
+  if (!isdigit((unsigned char)*s) && !((*s == '-' || *s == '+') && isdigit((unsigned char)s[1]))) return -1;
+  errno = 0;
+  *i    = strtol(s, &e, 10);
+  if (errno == ERANGE) *i = *i < 0 ? LONG_MIN : LONG_MAX; /* out of range below, as it is */
+  *end = e;
+  return 0;
+}
+
+/* a face item "v", "v/vt", "v//vn", "v/vt/vn" ending at a blank or the end: the v index and the vt index
+   (*hasvt 0 if none); -1 if it is anything else */
+static int OBJFaceItem(const char *s, long *v, long *vt, int *hasvt)
+{
+  const char *e;
+  long        vn;
+
+  *hasvt = 0;
+  if (OBJIndex(s, &e, v)) return -1;
+  if (*e == '/') {
+    s = e + 1;
+    if (*s != '/') {
+      if (OBJIndex(s, &e, vt)) return -1;
+      *hasvt = 1;
     } else
-      end = (char *)q;
-    if (*end == '/') {
-      strtol(end + 1, &end, 10);
+      e = s;
+    if (*e == '/' && OBJIndex(e + 1, &e, &vn)) return -1;
+  }
+  return (*e == 0 || isspace((unsigned char)*e)) ? 0 : -1;
+}
+
+/* a 0-based index from an .obj index i (1-based, or negative: -1 the last so far) among n; -1 if none */
+static PetscInt OBJResolve(long i, PetscInt n)
+{
+  if (i > 0 && i <= n) return (PetscInt)(i - 1);
+  if (i < 0 && i >= -(long)n) return (PetscInt)(n + i);
+  return -1;
+}
+
+/* the root of a vertex in the union-find forest p (path halving) */
+static PetscInt OBJRoot(PetscInt *p, PetscInt v)
+{
+  while (p[v] != v) v = p[v] = p[p[v]];
+  return v;
+}
+
+/* reads the file on rank 0 into d; a user error (the file, its line and what is wrong) is written to msg */
+static PetscErrorCode OBJRead(const char path[], PetscReal scale, OBJData *d, char msg[], size_t len)
+{
+  FILE     *fp   = fopen(path, "r");
+  char     *line = NULL;
+  size_t    room = 0;
+  ssize_t   got;
+  long      ln = 0;
+  PetscBool full;
+
+  PetscFunctionBegin;
+  if (!fp) {
+    (void)snprintf(msg, len, "cannot open %s: %s", path, strerror(errno));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  if (!(scale > 0 && isfinite(scale))) (void)snprintf(msg, len, "%s: the scale %g of its coordinates (-cloth_mesh_scale) is not a finite positive factor", path, (double)scale);
+  /* whole lines, of any length */
+  while (!msg[0] && (got = getline(&line, &room, fp)) >= 0) {
+    char *s = line, *hash;
+    ln++;
+    if ((size_t)got != strlen(line)) {
+      (void)snprintf(msg, len, "%s:%ld: a NUL byte (not a text file)", path, ln);
+      break;
+    }
+    if ((hash = strchr(s, '#'))) *hash = 0; /* a comment, to the end of the line */
+    while (isspace((unsigned char)*s)) s++;
+    if (s[0] == 'v' && isspace((unsigned char)s[1])) {
+      double a[3];
+      if (OBJNumbers(s + 1, 3, a)) {
+        (void)snprintf(msg, len, "%s:%ld: a vertex needs three coordinates (numbers)", path, ln);
+        break;
+      }
+      for (int k = 0; k < 3 && !msg[0]; k++)
+        if (!(PetscAbsReal(scale * a[k]) <= OBJ_MAX_COORD)) (void)snprintf(msg, len, "%s:%ld: coordinate %g m (after -cloth_mesh_scale %g) is not finite or beyond %g m", path, ln, (double)(scale * a[k]), (double)scale, OBJ_MAX_COORD);
+      if (msg[0]) break;
+      PetscCall(OBJRoom(d, 0, &full));
+      if (full) {
+        (void)snprintf(msg, len, "%s:%ld: more than %" PetscInt_FMT " vertices", path, ln, OBJ_MAX_COUNT);
+        break;
+      }
+      for (int k = 0; k < 3; k++) d->X[3 * d->n[0] + k] = scale * a[k];
+      d->vline[d->n[0]++] = ln;
+    } else if (s[0] == 'v' && s[1] == 't' && isspace((unsigned char)s[2])) {
+      double a[2];
+      if (OBJNumbers(s + 2, 2, a)) {
+        (void)snprintf(msg, len, "%s:%ld: a texture coordinate needs two numbers", path, ln);
+        break;
+      }
+      for (int k = 0; k < 2 && !msg[0]; k++)
+        if (!(PetscAbsReal(scale * a[k]) <= OBJ_MAX_COORD)) (void)snprintf(msg, len, "%s:%ld: texture coordinate %g m (after -cloth_mesh_scale %g) is not finite or beyond %g m", path, ln, (double)(scale * a[k]), (double)scale, OBJ_MAX_COORD);
+      if (msg[0]) break;
+      PetscCall(OBJRoom(d, 1, &full));
+      if (full) {
+        (void)snprintf(msg, len, "%s:%ld: more than %" PetscInt_FMT " texture coordinates", path, ln, OBJ_MAX_COUNT);
+        break;
+      }
+      for (int k = 0; k < 2; k++) d->VT[2 * d->n[1] + k] = scale * a[k];
+      d->n[1]++;
+    } else if (s[0] == 'f' && isspace((unsigned char)s[1])) {
+      long     v[3], vt[3];
+      int      hasvt[3], n = 0;
+      PetscInt fv[6];
+      char    *p = s + 1;
+      for (;;) {
+        while (isspace((unsigned char)*p)) p++;
+        if (!*p) break;
+        if (n == 3) {
+          (void)snprintf(msg, len, "%s:%ld: a face with more than 3 vertices (triangulate the mesh)", path, ln);
+          break;
+        }
+        if (OBJFaceItem(p, &v[n], &vt[n], &hasvt[n])) {
+          (void)snprintf(msg, len, "%s:%ld: cannot read face item %d (v, v/vt, v//vn or v/vt/vn)", path, ln, n + 1);
+          break;
+        }
+        while (*p && !isspace((unsigned char)*p)) p++;
+        n++;
+      }
+      if (msg[0]) break;
+      if (n != 3) {
+        (void)snprintf(msg, len, "%s:%ld: a face needs 3 vertices, has %d", path, ln, n);
+        break;
+      }
+      for (int k = 0; k < 3 && !msg[0]; k++) {
+        fv[k]     = OBJResolve(v[k], d->n[0]);
+        fv[3 + k] = hasvt[k] ? OBJResolve(vt[k], d->n[1]) : -1;
+        if (fv[k] < 0)
+          (void)snprintf(msg, len, "%s:%ld: vertex index %ld out of range (%" PetscInt_FMT " vertices so far)", path, ln, v[k], d->n[0]);
+        else if (hasvt[k] && fv[3 + k] < 0)
+          (void)snprintf(msg, len, "%s:%ld: texture index %ld out of range (%" PetscInt_FMT " texture coordinates so far)", path, ln, vt[k], d->n[1]);
+      }
+      if (!msg[0] && (fv[0] == fv[1] || fv[1] == fv[2] || fv[2] == fv[0])) (void)snprintf(msg, len, "%s:%ld: a face with a vertex twice", path, ln);
+      if (msg[0]) break;
+      PetscCall(OBJRoom(d, 2, &full));
+      if (full) {
+        (void)snprintf(msg, len, "%s:%ld: more than %" PetscInt_FMT " faces", path, ln, OBJ_MAX_COUNT);
+        break;
+      }
+      PetscCall(PetscArraycpy(d->F + 6 * d->n[2], fv, 6));
+      d->fline[d->n[2]++] = ln;
     }
   }
-  return (*end == 0 || isspace((unsigned char)*end)) ? 0 : -1;
+  if (!msg[0] && ferror(fp)) (void)snprintf(msg, len, "%s:%ld: read error", path, ln + 1);
+  free(line);
+  fclose(fp);
+  if (!msg[0] && !d->n[2]) (void)snprintf(msg, len, "%s: no triangles (f lines)", path);
+  if (msg[0]) PetscFunctionReturn(PETSC_SUCCESS);
+  /* every face of non-zero area; every vertex in a face (a lone vertex would be a free, massless point);
+     one piece (a piece apart would be held by nothing the scene holds the other by, or float away) */
+  {
+    PetscInt *p, first = -1, pieces = 0;
+    PetscCall(PetscMalloc1(d->n[0], &p));
+    for (PetscInt i = 0; i < d->n[0]; i++) p[i] = -1;
+    for (PetscInt t = 0; t < d->n[2] && !msg[0]; t++) {
+      const PetscInt  *f  = d->F + 6 * t;
+      const PetscReal *x0 = d->X + 3 * f[0], *x1 = d->X + 3 * f[1], *x2 = d->X + 3 * f[2];
+      PetscReal        a[3], b[3], n[3];
+      for (int k = 0; k < 3; k++) a[k] = x1[k] - x0[k], b[k] = x2[k] - x0[k];
+      n[0] = a[1] * b[2] - a[2] * b[1];
+      n[1] = a[2] * b[0] - a[0] * b[2];
+      n[2] = a[0] * b[1] - a[1] * b[0];
+      if (!(PetscSqrtReal(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) >= DBL_MIN)) {
+        (void)snprintf(msg, len, "%s:%ld: a triangle of zero area (its vertices on one line)", path, d->fline[t]);
+        break;
+      }
+      for (int k = 0; k < 3; k++)
+        if (p[f[k]] < 0) p[f[k]] = f[k];
+      for (int k = 1; k < 3; k++) p[OBJRoot(p, f[k])] = OBJRoot(p, f[0]);
+    }
+    for (PetscInt i = 0; i < d->n[0] && !msg[0]; i++)
+      if (p[i] < 0) (void)snprintf(msg, len, "%s:%ld: vertex %" PetscInt_FMT " belongs to no triangle", path, d->vline[i], i + 1);
+    for (PetscInt i = 0; i < d->n[0] && !msg[0]; i++)
+      if (OBJRoot(p, i) == i) pieces++;
+    if (!msg[0] && pieces > 1) {
+      const PetscInt r0 = OBJRoot(p, d->F[0]);
+      for (PetscInt t = 1; t < d->n[2] && first < 0; t++)
+        if (OBJRoot(p, d->F[6 * t]) != r0) first = t;
+      (void)snprintf(msg, len, "%s: the mesh is in %" PetscInt_FMT " pieces (the faces of lines %ld and %ld are not connected through shared vertices): a scene is one piece of cloth", path, pieces, d->fline[0], d->fline[first]);
+    }
+    PetscCall(PetscFree(p));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /*
   Reads a triangle mesh from a Wavefront .obj file (rank 0 reads, every rank gets the mesh): v lines
-  (positions, m after multiplying by scale), optional vt lines (material coordinates of the corners, m
-  after scale), f lines with 3 items (polygons with more are refused); every other line is ignored.
-  Errors name the file and line.
+  (positions, m after multiplying by scale; further numbers, w or a colour, are ignored), optional vt
+  lines (material coordinates of the corners, m after scale), f lines with 3 items v, v/vt, v//vn or
+  v/vt/vn (1-based or negative indices; polygons with more are refused); a # starts a comment, lines may
+  be of any length, every other line (vn, o, g, s, usemtl, ...) is ignored. Refused, naming the file and
+  line: a malformed line, a coordinate that is not finite or beyond 1e6 m after scale, an index out of
+  range, a face with a vertex twice or of zero area, a vertex in no face, a mesh in more than one piece.
 */
 PetscErrorCode HylcClothMeshReadOBJ_Private(HylcCloth c, const char path[], PetscReal scale)
 {
-  MPI_Comm    comm    = PetscObjectComm((PetscObject)c);
-  PetscInt    dims[3] = {0, 0, 0}; /* nv, nvt, nt */
-  PetscReal  *X = NULL, *VT = NULL;
-  PetscInt   *F                             = NULL; /* nt x 6: v0 v1 v2 vt0 vt1 vt2 (vt -1: none) */
-  char        msg[PETSC_MAX_PATH_LEN + 256] = "";
+  MPI_Comm    comm                          = PetscObjectComm((PetscObject)c);
+  OBJData     d                             = {{0, 0, 0}, {0, 0, 0}, NULL, NULL, NULL, NULL, NULL};
+  char        msg[PETSC_MAX_PATH_LEN + 512] = "";
   PetscMPIInt rank;
 
   PetscFunctionBegin;
   PetscCall(HylcClothMeshReset_Private(c));
   PetscCall(HylcFileCheckInput(comm, path, "-cloth_mesh_file"));
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  if (!rank) {
-    FILE    *fp = fopen(path, "r");
-    char     line[4096];
-    long     ln     = 0;
-    PetscInt cap[3] = {1024, 1024, 1024};
-    PetscCall(PetscMalloc3(3 * cap[0], &X, 2 * cap[1], &VT, 6 * cap[2], &F));
-    if (!fp) PetscCall(PetscSNPrintf(msg, sizeof(msg), "cannot open %s", path));
-    while (fp && !msg[0] && fgets(line, sizeof(line), fp)) {
-      char *s = line;
-      ln++;
-      while (isspace((unsigned char)*s)) s++;
-      if (s[0] == 'v' && isspace((unsigned char)s[1])) {
-        double a, b, d;
-        if (sscanf(s + 1, "%lf %lf %lf", &a, &b, &d) != 3 || !isfinite(a) || !isfinite(b) || !isfinite(d)) {
-          PetscCall(PetscSNPrintf(msg, sizeof(msg), "%s:%ld: a vertex needs three finite coordinates", path, ln));
-          break;
-        }
-        if (dims[0] == cap[0]) {
-          PetscReal *n;
-          PetscCall(PetscMalloc1(6 * cap[0], &n));
-          PetscCall(PetscArraycpy(n, X, 3 * cap[0]));
-          PetscCall(PetscFree(X));
-          X = n;
-          cap[0] *= 2;
-        }
-        X[3 * dims[0] + 0] = scale * a;
-        X[3 * dims[0] + 1] = scale * b;
-        X[3 * dims[0] + 2] = scale * d;
-        dims[0]++;
-      } else if (s[0] == 'v' && s[1] == 't' && isspace((unsigned char)s[2])) {
-        double a, b;
-        if (sscanf(s + 2, "%lf %lf", &a, &b) != 2 || !isfinite(a) || !isfinite(b)) {
-          PetscCall(PetscSNPrintf(msg, sizeof(msg), "%s:%ld: a texture coordinate needs two finite numbers", path, ln));
-          break;
-        }
-        if (dims[1] == cap[1]) {
-          PetscReal *n;
-          PetscCall(PetscMalloc1(4 * cap[1], &n));
-          PetscCall(PetscArraycpy(n, VT, 2 * cap[1]));
-          PetscCall(PetscFree(VT));
-          VT = n;
-          cap[1] *= 2;
-        }
-        VT[2 * dims[1] + 0] = scale * a;
-        VT[2 * dims[1] + 1] = scale * b;
-        dims[1]++;
-      } else if (s[0] == 'f' && isspace((unsigned char)s[1])) {
-        long  v[3], vt[3];
-        int   n = 0;
-        char *p = s + 1;
-        for (;;) {
-          while (isspace((unsigned char)*p)) p++;
-          if (!*p) break;
-          if (n == 3) {
-            PetscCall(PetscSNPrintf(msg, sizeof(msg), "%s:%ld: a face with more than 3 vertices (triangulate the mesh)", path, ln));
-            break;
-          }
-          if (ParseFaceItem(p, &v[n], &vt[n])) {
-            PetscCall(PetscSNPrintf(msg, sizeof(msg), "%s:%ld: cannot read face item %d", path, ln, n + 1));
-            break;
-          }
-          while (*p && !isspace((unsigned char)*p)) p++;
-          n++;
-        }
-        if (msg[0]) break;
-        if (n != 3) {
-          PetscCall(PetscSNPrintf(msg, sizeof(msg), "%s:%ld: a face needs 3 vertices, has %d", path, ln, n));
-          break;
-        }
-        if (dims[2] == cap[2]) {
-          PetscInt *nf;
-          PetscCall(PetscMalloc1(12 * cap[2], &nf));
-          PetscCall(PetscArraycpy(nf, F, 6 * cap[2]));
-          PetscCall(PetscFree(F));
-          F = nf;
-          cap[2] *= 2;
-        }
-        for (int k = 0; k < 3; k++) {
-          long vi = v[k] < 0 ? dims[0] + v[k] : v[k] - 1, ti = vt[k] < 0 ? dims[1] + vt[k] : vt[k] - 1;
-          if (vi < 0 || vi >= dims[0]) {
-            PetscCall(PetscSNPrintf(msg, sizeof(msg), "%s:%ld: vertex index %ld out of range (%" PetscInt_FMT " vertices so far)", path, ln, v[k], dims[0]));
-            break;
-          }
-          if (vt[k] && (ti < 0 || ti >= dims[1])) {
-            PetscCall(PetscSNPrintf(msg, sizeof(msg), "%s:%ld: texture index %ld out of range", path, ln, vt[k]));
-            break;
-          }
-          F[6 * dims[2] + k]     = (PetscInt)vi;
-          F[6 * dims[2] + 3 + k] = vt[k] ? (PetscInt)ti : -1;
-        }
-        dims[2]++;
-      }
-    }
-    if (fp) fclose(fp);
-    if (!msg[0] && !dims[2]) PetscCall(PetscSNPrintf(msg, sizeof(msg), "%s: no triangles (f lines)", path));
-  }
+  if (!rank) PetscCall(OBJRead(path, scale, &d, msg, sizeof(msg)));
   PetscCallMPI(MPI_Bcast(msg, sizeof(msg), MPI_CHAR, 0, comm));
   if (msg[0]) {
-    PetscCall(PetscFree3(X, VT, F));
+    PetscCall(OBJDataFree(&d));
     SETERRQ(comm, PETSC_ERR_FILE_UNEXPECTED, "%s", msg);
   }
-  PetscCallMPI(MPI_Bcast(dims, 3, MPIU_INT, 0, comm));
-  if (rank) PetscCall(PetscMalloc3(3 * dims[0], &X, 2 * PetscMax(dims[1], 1), &VT, 6 * dims[2], &F));
-  PetscCallMPI(MPI_Bcast(X, 3 * dims[0], MPIU_REAL, 0, comm));
-  if (dims[1]) PetscCallMPI(MPI_Bcast(VT, 2 * dims[1], MPIU_REAL, 0, comm));
-  PetscCallMPI(MPI_Bcast(F, 6 * dims[2], MPIU_INT, 0, comm));
-  c->nv = dims[0];
-  c->nt = dims[2];
+  PetscCallMPI(MPI_Bcast(d.n, 3, MPIU_INT, 0, comm));
+  if (rank) {
+    PetscCall(PetscMalloc1(3 * d.n[0], &d.X));
+    PetscCall(PetscMalloc1(2 * d.n[1], &d.VT));
+    PetscCall(PetscMalloc1(6 * d.n[2], &d.F));
+  }
+  PetscCallMPI(MPI_Bcast(d.X, (PetscMPIInt)(3 * d.n[0]), MPIU_REAL, 0, comm));
+  if (d.n[1]) PetscCallMPI(MPI_Bcast(d.VT, (PetscMPIInt)(2 * d.n[1]), MPIU_REAL, 0, comm));
+  PetscCallMPI(MPI_Bcast(d.F, (PetscMPIInt)(6 * d.n[2]), MPIU_INT, 0, comm));
+  c->nv = d.n[0];
+  c->nt = d.n[2];
   PetscCall(PetscMalloc1(3 * c->nv, &c->X));
-  PetscCall(PetscArraycpy(c->X, X, 3 * c->nv));
+  PetscCall(PetscArraycpy(c->X, d.X, 3 * c->nv));
   PetscCall(PetscMalloc1(3 * c->nt, &c->tri));
   for (PetscInt t = 0; t < c->nt; t++)
-    for (int k = 0; k < 3; k++) c->tri[3 * t + k] = F[6 * t + k];
+    for (int k = 0; k < 3; k++) c->tri[3 * t + k] = d.F[6 * t + k];
   /* material coordinates from vt when every corner has one */
   {
-    PetscBool all = dims[1] > 0 ? PETSC_TRUE : PETSC_FALSE;
+    PetscBool all = d.n[1] > 0 ? PETSC_TRUE : PETSC_FALSE;
     for (PetscInt t = 0; t < c->nt && all; t++)
       for (int k = 0; k < 3; k++)
-        if (F[6 * t + 3 + k] < 0) all = PETSC_FALSE;
+        if (d.F[6 * t + 3 + k] < 0) all = PETSC_FALSE;
     if (all) {
       PetscCall(PetscMalloc1(6 * c->nt, &c->uv));
       for (PetscInt t = 0; t < c->nt; t++)
         for (int k = 0; k < 3; k++) {
-          c->uv[6 * t + 2 * k + 0] = VT[2 * F[6 * t + 3 + k] + 0];
-          c->uv[6 * t + 2 * k + 1] = VT[2 * F[6 * t + 3 + k] + 1];
+          c->uv[6 * t + 2 * k + 0] = d.VT[2 * d.F[6 * t + 3 + k] + 0];
+          c->uv[6 * t + 2 * k + 1] = d.VT[2 * d.F[6 * t + 3 + k] + 1];
         }
     }
   }
-  PetscCall(PetscFree3(X, VT, F));
+  PetscCall(OBJDataFree(&d));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -412,16 +412,16 @@ PetscErrorCode HylcFitSetFromOptions(HylcFit fit)
   PetscValidHeaderSpecific(fit, HYLC_FIT_CLASSID, 1);
   PetscCall(PetscStrncpy(input, fit->input, sizeof(input)));
   PetscObjectOptionsBegin((PetscObject)fit);
-  PetscCall(PetscOptionsString("-fit_input", "Samples: HDF5 file of hylc-sample (status 0 rows), the paper's raw data.txt, or a directory with data.txt and info.txt", "HylcFitSetInput", input, input, sizeof(input), NULL));
-  PetscCall(PetscOptionsString("-fit_output", "HDF5 material file to write (docs/material.md)", "HylcFitSetOutputs", fit->output, fit->output, sizeof(fit->output), NULL));
-  PetscCall(PetscOptionsString("-fit_json", "ARCSim-HYLC JSON material file to write", "HylcFitSetOutputs", fit->json, fit->json, sizeof(fit->json), NULL));
+  PetscCall(HylcOptionsString("-fit_input", "Samples: HDF5 file of hylc-sample (status 0 rows), the paper's raw data.txt, or a directory with data.txt and info.txt", "HylcFitSetInput", input, input, sizeof(input), NULL));
+  PetscCall(HylcOptionsString("-fit_output", "HDF5 material file to write (docs/material.md)", "HylcFitSetOutputs", fit->output, fit->output, sizeof(fit->output), NULL));
+  PetscCall(HylcOptionsString("-fit_json", "ARCSim-HYLC JSON material file to write", "HylcFitSetOutputs", fit->json, fit->json, sizeof(fit->json), NULL));
   /* the family: given, else the one the samples were computed for (their provenance) */
   if (input[0]) PetscCall(HylcFitInputFamily_Private(input, recorded, sizeof(recorded), &fromFile));
   PetscCall(PetscStrncpy(family, fromFile ? recorded : fit->familyName, sizeof(family)));
-  PetscCall(PetscOptionsString("-fit_family",
-                               "Pattern family, as -sampler_family: woven, stockinette, honeycomb or rib (knit: the former name of honeycomb and rib); default the samples file's (its provenance), else woven. All but the stockinette share the "
-                               "constants; stockinette: -fit_reg 1e-2 and coarse 2D bending knots (factor 0.3, 2+4 and 3+3)",
-                               "HylcFitSetFamily", family, family, sizeof(family), &set));
+  PetscCall(HylcOptionsString("-fit_family",
+                              "Pattern family, as -sampler_family: woven, stockinette, honeycomb or rib (knit: the former name of honeycomb and rib); default the samples file's (its provenance), else woven. All but the stockinette share the "
+                              "constants; stockinette: -fit_reg 1e-2 and coarse 2D bending knots (factor 0.3, 2+4 and 3+3)",
+                              "HylcFitSetFamily", family, family, sizeof(family), &set));
   if (set || fromFile) {
     known = FamilyByName(family, &fam);
     if (known) {
@@ -439,21 +439,21 @@ PetscErrorCode HylcFitSetFromOptions(HylcFit fit)
   PetscCall(HylcOptionsReal("-fit_reg", "Quasiconvex marching: minimum outward slope p^x_min in J/m^2 per normalised unit (S28)", "HylcFitSetFromOptions", fit->reg, &fit->reg, NULL));
   PetscCall(PetscOptionsBool("-fit_quasiconvex", "Apply the quasiconvex marching (false: the unregularized fits, like rib1_noreg)", "HylcFitSetFromOptions", fit->quasiconvex, &fit->quasiconvex, NULL));
   PetscCall(
-      PetscOptionsEnum("-fit_compat", "paper, or authors: the authors' code's two departures (S42 x-clamp dropped; mv <= -reg on the minimum's row); authors implies -fit_method paper", "HylcFitSetFromOptions", HylcFitCompats, compat, &compat, NULL));
+      HylcOptionsEnum("-fit_compat", "paper, or authors: the authors' code's two departures (S42 x-clamp dropped; mv <= -reg on the minimum's row); authors implies -fit_method paper", "HylcFitSetFromOptions", HylcFitCompats, compat, &compat, NULL));
   {
     PetscEnum method = (PetscEnum)fit->method;
-    PetscCall(PetscOptionsEnum("-fit_method",
-                               "auto (fabric when every sample has its stress, else paper), fabric (the samples' values and stresses by weighted least squares on the plan's graded knots) or paper (the MLS of the values on the paper's knots)",
-                               "HylcFitSetMethod", HylcFitMethods, method, &method, NULL));
+    PetscCall(HylcOptionsEnum("-fit_method",
+                              "auto (fabric when every sample has its stress, else paper), fabric (the samples' values and stresses by weighted least squares on the plan's graded knots) or paper (the MLS of the values on the paper's knots)",
+                              "HylcFitSetMethod", HylcFitMethods, method, &method, NULL));
     fit->method = (HylcFitMethod)method;
   }
   PetscCall(HylcOptionsReal("-fit_fabric_floor", "fabric method: each equation's error is relative to the tile's own value or stress there, with a floor of this fraction of the term's largest (1)", "HylcFitSetFromOptions", fit->fabricFloor,
                             &fit->fabricFloor, NULL));
   PetscCall(HylcOptionsReal("-fit_fabric_ridge", "fabric method: ridge added to the scaled normal equations (1)", "HylcFitSetFromOptions", fit->fabricRidge, &fit->fabricRidge, NULL));
-  PetscCall(PetscOptionsInt("-fit_fabric_passes", "fabric method: fits of each 2D term, the mixed slopes muv taken from the fitted slopes' differences between them (the first with muv = 0)", "HylcFitSetFromOptions", fit->fabricPasses,
-                            &fit->fabricPasses, NULL));
+  PetscCall(HylcOptionsInt("-fit_fabric_passes", "fabric method: fits of each 2D term, the mixed slopes muv taken from the fitted slopes' differences between them (the first with muv = 0)", "HylcFitSetFromOptions", fit->fabricPasses,
+                           &fit->fabricPasses, NULL));
   PetscCall(HylcOptionsReal("-fit_fabric_reg", "fabric method: the 1D terms' smallest outward slope, a fraction of the term's largest |Psi - f0| per normalised unit (1)", "HylcFitSetFromOptions", fit->fabricReg, &fit->fabricReg, NULL));
-  PetscCall(PetscOptionsEnum("-fit_monotone_rule", "1D slope limiter: circle (alpha^2 + beta^2 <= 9, the authors') or box (0 <= alpha, beta <= 3)", "HylcFitSetFromOptions", HylcMonotoneRules, rule, &rule, NULL));
+  PetscCall(HylcOptionsEnum("-fit_monotone_rule", "1D slope limiter: circle (alpha^2 + beta^2 <= 9, the authors') or box (0 <= alpha, beta <= 3)", "HylcFitSetFromOptions", HylcMonotoneRules, rule, &rule, NULL));
   PetscCall(HylcOptionsReal("-fit_flat_tol", "1D monotone cubic: an interval with |dp| below this gets zero slopes", "HylcFitSetFromOptions", fit->flatTol, &fit->flatTol, NULL));
   PetscCall(HylcOptionsReal("-fit_end_slope", "Boundary slopes at least this outward (increasing linear extrapolation)", "HylcFitSetFromOptions", fit->endSlope, &fit->endSlope, NULL));
   PetscCall(HylcOptionsReal("-fit_mls_kernel", "MLS kernel radius as a fraction of the term's data span per axis", "HylcFitSetFromOptions", fit->kernel, &fit->kernel, NULL));
@@ -463,16 +463,16 @@ PetscErrorCode HylcFitSetFromOptions(HylcFit fit)
   PetscCall(HylcOptionsReal("-fit_fd_eps", "Width of the central differences for the Hermite slopes (points at +-half of it), as a fraction of the smallest knot spacing", "HylcFitSetFromOptions", fit->fdEps, &fit->fdEps, NULL));
   {
     PetscEnum layout = (PetscEnum)fit->knots;
-    PetscCall(PetscOptionsEnum(
+    PetscCall(HylcOptionsEnum(
         "-fit_knots", "1D knot layout: refined (the paper's, with -fit_knots_refine more knots towards 0 whose MLS kernels follow the knot spacing: resolves small strains) or paper (the authors' uniform layout; implied by -fit_compat authors)",
         "HylcFitSetFromOptions", HylcFitKnotLayouts, layout, &layout, &fit->knotsSet));
     fit->knots = (HylcFitKnotLayout)layout;
   }
-  PetscCall(PetscOptionsInt("-fit_knots_refine", "Refined knots: knots added at h/2, h/4, ... of the first interval on each side of 0", "HylcFitSetFromOptions", fit->refine, &fit->refine, NULL));
+  PetscCall(HylcOptionsInt("-fit_knots_refine", "Refined knots: knots added at h/2, h/4, ... of the first interval on each side of 0", "HylcFitSetFromOptions", fit->refine, &fit->refine, NULL));
   PetscCall(HylcOptionsReal("-fit_knots_kernel_spacing", "Refined knots: MLS kernel radius of an added knot as a multiple of its distance from 0 (at most -fit_mls_kernel of the span)", "HylcFitSetFromOptions", fit->kernelSpacing, &fit->kernelSpacing,
                             NULL));
-  PetscCall(PetscOptionsInt("-fit_knots_kernel_samples", "Refined knots: the MLS kernel of an added knot is widened until it holds this many samples", "HylcFitSetFromOptions", fit->kernelMin, &fit->kernelMin, NULL));
-  PetscCall(PetscOptionsInt("-fit_knots1d", "Knots of a 1D term in the paper's layout (refined: before the refinement)", "HylcFitSetFromOptions", fit->nk1, &fit->nk1, NULL));
+  PetscCall(HylcOptionsInt("-fit_knots_kernel_samples", "Refined knots: the MLS kernel of an added knot is widened until it holds this many samples", "HylcFitSetFromOptions", fit->kernelMin, &fit->kernelMin, NULL));
+  PetscCall(HylcOptionsInt("-fit_knots1d", "Knots of a 1D term in the paper's layout (refined: before the refinement)", "HylcFitSetFromOptions", fit->nk1, &fit->nk1, NULL));
   PetscCall(HylcOptionsReal("-fit_knots1d_factor", "1D knots span factor x [min, max] of the data (then shifted so that 0 is a knot)", "HylcFitSetFromOptions", fit->factor1, &fit->factor1, NULL));
   PetscCall(HylcOptionsReal("-fit_knots2d_factor", "2D knots span factor x [min, 0] and [0, max] of the data", "HylcFitSetFromOptions", fit->factor2, &fit->factor2, NULL));
   PetscCall(KnotPairOption(PetscOptionsObject, fit, "-fit_knots2d_stretch", "2D knots of an sx or sy axis left,right of 0 (0 counted in both)", fit->kStretch));
@@ -486,14 +486,14 @@ PetscErrorCode HylcFitSetFromOptions(HylcFit fit)
   PetscCall(HylcOptionsReal("-fit_density", "Area density of the material in kg/m^2 (> 0 overrides the input's)", "HylcFitSetFromOptions", fit->density, &fit->density, NULL));
   PetscCall(HylcOptionsReal("-fit_yarn_density", "Yarn density in kg/m^3 for the area density rho pi r^2 L / (px py) of a samples file (<= 0: 0.12 kg/m^2 / r, i.e. 120 kg/m^3 at r = 1 mm, the paper's tables)", "HylcFitSetFromOptions",
                             fit->yarnDensity, &fit->yarnDensity, NULL));
-  PetscCall(PetscOptionsInt("-fit_raw_n1", "Raw data.txt: rows per 1D block (0: the leading run of sx-only rows)", "HylcFitSetFromOptions", fit->rawN1, &fit->rawN1, NULL));
-  PetscCall(PetscOptionsInt("-fit_raw_n2", "Raw data.txt: grid size per axis of a 2D block (0: from the row count)", "HylcFitSetFromOptions", fit->rawN2, &fit->rawN2, NULL));
-  PetscCall(PetscOptionsInt("-fit_min_samples_1d", "A 1D term with fewer samples (but some) is an error", "HylcFitSetFromOptions", fit->min1, &fit->min1, NULL));
-  PetscCall(PetscOptionsInt("-fit_min_samples_2d", "A 2D term with fewer samples (but some) is an error", "HylcFitSetFromOptions", fit->min2, &fit->min2, NULL));
-  PetscCall(PetscOptionsString("-fit_terms",
-                               "Terms to fit: all, or a comma list of sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11, sx-sa-sy, sx-sa-II00, sx-sa-II11, sx-sy-II00, sx-sy-II11, sa-sy-II00, "
-                               "sa-sy-II11 (the 3D terms with the fabric method only)",
-                               "HylcFitSetFromOptions", terms, terms, sizeof(terms), NULL));
+  PetscCall(HylcOptionsInt("-fit_raw_n1", "Raw data.txt: rows per 1D block (0: the leading run of sx-only rows)", "HylcFitSetFromOptions", fit->rawN1, &fit->rawN1, NULL));
+  PetscCall(HylcOptionsInt("-fit_raw_n2", "Raw data.txt: grid size per axis of a 2D block (0: from the row count)", "HylcFitSetFromOptions", fit->rawN2, &fit->rawN2, NULL));
+  PetscCall(HylcOptionsInt("-fit_min_samples_1d", "A 1D term with fewer samples (but some) is an error", "HylcFitSetFromOptions", fit->min1, &fit->min1, NULL));
+  PetscCall(HylcOptionsInt("-fit_min_samples_2d", "A 2D term with fewer samples (but some) is an error", "HylcFitSetFromOptions", fit->min2, &fit->min2, NULL));
+  PetscCall(HylcOptionsString("-fit_terms",
+                              "Terms to fit: all, or a comma list of sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, sy-II00, sy-II11, sx-sa-sy, sx-sa-II00, sx-sa-II11, sx-sy-II00, sx-sy-II11, sa-sy-II00, "
+                              "sa-sy-II11 (the 3D terms with the fabric method only)",
+                              "HylcFitSetFromOptions", terms, terms, sizeof(terms), NULL));
   PetscOptionsEnd();
   PetscCheck(known, comm, set ? PETSC_ERR_USER_INPUT : PETSC_ERR_FILE_UNEXPECTED, "%s %s: unknown family (woven, stockinette, honeycomb or rib; knit is the former name of honeycomb and rib)", set ? "-fit_family" : "the samples' -sampler_family",
              family);

@@ -191,7 +191,7 @@ int hylcmat_set_density(hylcmat *m, double rho, char *err, size_t errlen)
   char   b[32];
 
   HM_CHECK(m, &E, HYLCMAT_ERR_ARG, "hylcmat_set_density: NULL table");
-  HM_CHECK(isfinite(rho) && rho >= 0, &E, HYLCMAT_ERR_FORMAT, "Material density must be finite and >= 0, got %s", G(b, rho));
+  HM_CHECK(isfinite(rho) && rho >= 0 && rho <= HM_MAX_DENSITY, &E, HYLCMAT_ERR_FORMAT, "Material density must be finite and in [0, %g] kg/m^2, got %s", HM_MAX_DENSITY, G(b, rho));
   m->density = rho;
   return HYLCMAT_OK;
 }
@@ -485,11 +485,12 @@ void hm_doc_free(hm_doc *d)
 
 int hm_doc_install(hm_doc *d, hylcmat **out)
 {
-  hm_err  *E  = d->E;
-  char    *eb = E ? E->buf : NULL;
-  size_t   el = E ? E->len : 0;
-  hylcmat *m  = NULL;
-  int      r  = hylcmat_create(&m);
+  hm_err     *E    = d->E;
+  char       *eb   = E ? E->buf : NULL;
+  size_t      el   = E ? E->len : 0;
+  hylcmat    *m    = NULL;
+  int         r    = hylcmat_create(&m);
+  const char *name = d->name;
 
   if (!r) r = hylcmat_set_density(m, d->density, eb, el);
   if (!r) r = hylcmat_set_strain_scale(m, d->scale, eb, el);
@@ -500,6 +501,11 @@ int hm_doc_install(hm_doc *d, hylcmat **out)
   for (int i = 0; i < d->n3 && !r; i++) r = hylcmat_set_term3d(m, &d->s3[i], eb, el);
   hm_doc_free(d);
   if (r == HYLCMAT_ERR_MEMORY && m == NULL) hm_fail(E, r, "out of memory");
+  if (r && eb && el) { /* the setters' messages name the term and value: add the file */
+    char msg[1024];
+    snprintf(msg, sizeof(msg), "%s", eb);
+    snprintf(eb, el, "%s: %s", name, msg);
+  }
   if (r) {
     hylcmat_free(m);
     m = NULL;

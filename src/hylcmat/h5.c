@@ -60,6 +60,31 @@ static int ReadAttrString(const hm_doc *d, hid_t loc, const char path[], const c
   return HYLCMAT_OK;
 }
 
+/* what an HDF5 type class holds, for messages */
+static const char *ClassName(H5T_class_t c)
+{
+  switch (c) {
+  case H5T_INTEGER:
+    return "integers";
+  case H5T_FLOAT:
+    return "floating-point numbers";
+  case H5T_STRING:
+    return "strings";
+  case H5T_COMPOUND:
+    return "compound records";
+  case H5T_ENUM:
+    return "enumerated values";
+  case H5T_ARRAY:
+    return "arrays";
+  case H5T_VLEN:
+    return "variable-length sequences";
+  case H5T_REFERENCE:
+    return "references";
+  default:
+    return "data of another class";
+  }
+}
+
 static int ReadAttrLong(const hm_doc *d, hid_t loc, const char path[], const char name[], long long *v)
 {
   hid_t  a, s;
@@ -68,6 +93,14 @@ static int ReadAttrLong(const hm_doc *d, hid_t loc, const char path[], const cha
   CallH5Id(e, H5Aexists(loc, name));
   HM_CHECK(e > 0, d->E, HYLCMAT_ERR_CONTENT, "%s: attribute %s@%s is missing", d->name, path, name);
   CallH5Id(a, H5Aopen(loc, name, H5P_DEFAULT));
+  {
+    hid_t       t;
+    H5T_class_t c;
+    CallH5Id(t, H5Aget_type(a));
+    c = H5Tget_class(t);
+    CallH5(H5Tclose(t));
+    HM_CHECK(c == H5T_INTEGER, d->E, HYLCMAT_ERR_CONTENT, "%s: attribute %s@%s holds %s, expected an integer", d->name, path, name, ClassName(c));
+  }
   CallH5Id(s, H5Aget_space(a));
   HM_CHECK(H5Sget_simple_extent_npoints(s) == 1, d->E, HYLCMAT_ERR_CONTENT, "%s: attribute %s@%s must be a scalar", d->name, path, name);
   CallH5(H5Aread(a, H5T_NATIVE_LLONG, v));
@@ -86,6 +119,14 @@ static int ReadData(const hm_doc *d, hid_t loc, const char path[], const char na
 
   HM_CALL(Exists(d, loc, path, name, 1, NULL));
   CallH5Id(ds, H5Dopen2(loc, name, H5P_DEFAULT));
+  {
+    hid_t       t;
+    H5T_class_t c;
+    CallH5Id(t, H5Dget_type(ds));
+    c = H5Tget_class(t);
+    CallH5(H5Tclose(t));
+    HM_CHECK(c == H5T_FLOAT || c == H5T_INTEGER, d->E, HYLCMAT_ERR_CONTENT, "%s: dataset %s%s holds %s, expected numbers", d->name, path, name, ClassName(c));
+  }
   CallH5Id(sp, H5Dget_space(ds));
   CallH5Id(r, H5Sget_simple_extent_ndims(sp));
   HM_CHECK(r == rank, d->E, HYLCMAT_ERR_CONTENT, "%s: dataset %s%s has rank %d, expected %d", d->name, path, name, r, rank);

@@ -60,6 +60,10 @@ HM_INTERN int hm_fail(hm_err *e, int code, const char *fmt, ...)
     if (hm_r_) return hm_r_; \
   } while (0)
 
+/* the largest area density a table may hold (kg/m^2; include/hylcmat.h, docs/material.md): far beyond
+   any cloth's (a 1e300 made the cloth's weight-based tolerances overflow) */
+#define HM_MAX_DENSITY 1e6
+
 /* The contents of a material file as read by the JSON and HDF5 parsers, before they are installed
    through the validating setters (hm_doc_install). */
 typedef struct {

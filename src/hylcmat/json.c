@@ -173,7 +173,7 @@ static int ReadDoc(hm_doc *d, const HylcJson *root)
   HM_CALL(CheckKeys(d, root, "", topKnown, 4, topRequired, 3));
   v = HylcJsonMember(root, "density");
   HM_CHECK(v->type == HYLC_JSON_NUMBER, d->E, HYLCMAT_ERR_FORMAT, "%s:%d: density: expected a number, got %s", d->name, v->line, HylcJsonTypeName(v->type));
-  HM_CHECK(v->num >= 0, d->E, HYLCMAT_ERR_FORMAT, "%s:%d: density: the area density must be >= 0 (kg/m^2), got %s", d->name, v->line, hylcmat_format_double(v->num, b));
+  HM_CHECK(v->num >= 0 && v->num <= HM_MAX_DENSITY, d->E, HYLCMAT_ERR_FORMAT, "%s:%d: density: the area density must be in [0, %g] kg/m^2, got %s", d->name, v->line, HM_MAX_DENSITY, hylcmat_format_double(v->num, b));
   d->density = v->num;
   v          = HylcJsonMember(root, "strain scale");
   HM_CALL(GetNumbers(d, v, "strain scale", 5, " (sigma of sx, sa, sy, II00, II11)", NULL, NULL));

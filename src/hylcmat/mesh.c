@@ -239,6 +239,9 @@ static int Create(int nv, int nt, const int *tri, const double *X, const double 
         hylcmat_mesh_free(M);
         if (!isfinite(det)) return hm_fail(&E, ret, "mesh: triangle %d: non-finite material coordinates", t);
         if (det < 0) return hm_fail(&E, ret, "mesh: triangle %d (vertices %d %d %d): inverted rest triangle (clockwise in material coordinates, 2 A = %.6g)", t, tri[3 * t], tri[3 * t + 1], tri[3 * t + 2], det);
+        if (det > 0)
+          return hm_fail(&E, ret, "mesh: triangle %d (vertices %d %d %d): degenerate rest triangle in material coordinates (2 A = %.6g: an angle's sine below 1e-13, or an edge or 2 A outside 1.5e-154 .. 1.3e154)", t, tri[3 * t], tri[3 * t + 1],
+                         tri[3 * t + 2], det);
         return hm_fail(&E, ret, "mesh: triangle %d (vertices %d %d %d): zero-area rest triangle in material coordinates (2 A = %.6g)", t, tri[3 * t], tri[3 * t + 1], tri[3 * t + 2], det);
       }
     } else {
@@ -403,7 +406,7 @@ int hylcmat_mesh_eval(const hylcmat_mesh *mesh, const hylcmat *m, const double *
       double *Hs[GROUP];
       int     nbs[GROUP];
       for (int t = t0; t < t1; t++) Hs[t - t0] = H[t - t0], nbs[t - t0] = mesh->nb[t];
-      if (hm_psd_project_many(t1 - t0, Hs, nbs)) /* (never seen) each on its own, to name the triangle */
+      if (hm_psd_project_many(t1 - t0, Hs, nbs)) /* beyond the double range: each on its own, to name the triangle */
         for (int t = t0; t < t1 && !ret; t++) {
           ret = hylcmat_shell_eval(m, &mesh->rest[t], xs[t - t0], mesh->nb[t], flags, &e[t - t0], g[t - t0], H[t - t0]);
           if (ret) bad = t;

@@ -302,6 +302,7 @@ static void BackTransform(int n, const double *restrict Vr, int nc, double *rest
 /* the work of one element's projection */
 typedef struct {
   double *H;
+  double  floor; /* HYLCMAT_PSD_FLOOR in the units of H (divided by its scale) */
   int     act[6], idx[18], na, n, nm;
   double  v[6], tau, M[NMAX * NMAX], Z[ZS * NMAX], Vr[NMAX * NMAX], d[NMAX], e[NMAX];
 } Proj;
@@ -312,7 +313,8 @@ static void ProjPrepare(Proj *p, double *H, int nb)
   double R[6][9], C[9], vv = 0;
   int    na = 0, nm;
 
-  p->H = H;
+  p->H     = H;
+  p->floor = HYLCMAT_PSD_FLOOR;
   for (int i = 0; i < 3; i++) p->act[na++] = i;
   for (int k = 0; k < 3; k++)
     if (nb >> k & 1) p->act[na++] = 3 + k;
@@ -363,7 +365,7 @@ static void ProjPrepare(Proj *p, double *H, int nb)
 static void ProjFinish(Proj *p)
 {
   const int    na = p->na, n = p->n, nm = p->nm, *act = p->act, *idx = p->idx;
-  const double floor_ = HYLCMAT_PSD_FLOOR, *v = p->v, tau = p->tau, *w = p->d;
+  const double floor_ = p->floor, *v = p->v, tau = p->tau, *w = p->d;
   double *restrict H = p->H, Y[NMAX * NMAX], U[NMAX][18], sq[NMAX];
   int nc             = 0;
 
@@ -419,20 +421,50 @@ static void ProjFinish(Proj *p)
     }
 }
 
-/* projects m (1..4) element Hessians H[i] with neighbour masks nb[i], their QR iterations in pairs */
+/* a Hessian whose largest entry exceeds this is projected divided by a power of 2 (exact) near its
+   largest entry, with the floor divided alike, then multiplied back: the Householder norms and the QR
+   iterations square entries, which overflow from about 1e154 (a NaN, reported as a defect before) */
+#define PSD_SCALE_ABOVE 1e100
+
+/* the power of 2 by which H (the 324 entries) is divided before the projection: 1 for ordinary sizes */
+static double ProjScale(const double H[324])
+{
+  double amax = 0;
+  int    ex;
+  for (int i = 0; i < 324; i++) amax = fmax(amax, fabs(H[i]));
+  if (!(amax > PSD_SCALE_ABOVE)) return 1;
+  (void)frexp(amax, &ex);
+  return ldexp(1.0, ex);
+}
+
+/* projects m (1..4) element Hessians H[i] with neighbour masks nb[i], their QR iterations in pairs;
+   HYLCMAT_ERR_RANGE if a projected entry is beyond the double range */
 int hm_psd_project_many(int m, double *const H[], const int nb[])
 {
   Proj    p[4];
   QRState q[4];
+  double  s[4];
+  int     ret = HYLCMAT_OK;
 
   for (int i = 0; i < m; i++) {
+    s[i] = ProjScale(H[i]);
+    if (s[i] != 1)
+      for (int j = 0; j < 324; j++) H[i][j] /= s[i];
     ProjPrepare(&p[i], H[i], nb[i]);
+    p[i].floor = HYLCMAT_PSD_FLOOR / s[i];
     QRInit(&q[i], p[i].nm, p[i].d, p[i].e, p[i].Z);
   }
   for (int i = 0; i < m; i += 2)
     if (i + 1 < m ? TridiagQR2(&q[i], &q[i + 1]) : TridiagQR1(&q[i])) return HYLCMAT_ERR_NAN;
-  for (int i = 0; i < m; i++) ProjFinish(&p[i]);
-  return HYLCMAT_OK;
+  for (int i = 0; i < m; i++) {
+    ProjFinish(&p[i]);
+    if (s[i] != 1) {
+      double fin = 0;
+      for (int j = 0; j < 324; j++) fin += (H[i][j] *= s[i]) * 0;
+      if (fin != 0 || isnan(fin)) ret = HYLCMAT_ERR_RANGE;
+    }
+  }
+  return ret;
 }
 
 int hm_psd_project(double H[324], int nb)

@@ -45,12 +45,19 @@ static inline void Sub(const double a[3], const double b[3], double c[3])
 }
 
 /* ---- rest data ---------------------------------------------------------------------------------- */
+/* the element squares edge lengths and twice the area (2 A = |e1 x e2|): a rest triangle whose edges or
+   2 A lie outside [REST_MIN, REST_MAX] would be degenerate (squares below the normal doubles: a
+   subnormal area) or out of range (squares beyond the double range) at its own rest state */
+#define REST_MIN 1.4916681462400413e-154 /* sqrt(DBL_MIN) */
+#define REST_MAX 1.3407807929942596e+154 /* sqrt(DBL_MAX) */
+
 static int RestFromEdges(double e1u, double e1v, double e2u, double e2v, hylcmat_shell_rest *r)
 {
-  const double det = e1u * e2v - e1v * e2u, n1 = sqrt(e1u * e1u + e1v * e1v), n2 = sqrt(e2u * e2u + e2v * e2v);
+  const double det = e1u * e2v - e1v * e2u, n1 = hypot(e1u, e1v), n2 = hypot(e2u, e2v);
 
   if (!isfinite(det) || !isfinite(n1) || !isfinite(n2)) return HYLCMAT_ERR_REST;
-  if (!(det > 1e-13 * n1 * n2)) return HYLCMAT_ERR_REST; /* clockwise, zero area or degenerate */
+  if (!(det >= REST_MIN && det <= REST_MAX && n1 >= REST_MIN && n1 <= REST_MAX && n2 >= REST_MIN && n2 <= REST_MAX)) return HYLCMAT_ERR_REST; /* clockwise, zero, subnormal or huge */
+  if (!(det / n1 / n2 > 1e-13)) return HYLCMAT_ERR_REST;                                                                                      /* degenerate: the sine of the angle at vertex 0 */
   r->dinv[0] = e2v / det;
   r->dinv[1] = -e2u / det;
   r->dinv[2] = -e1v / det;
@@ -616,10 +623,11 @@ int hylcmat_shell_eval_batch(const hylcmat *m, size_t n, const hylcmat_shell_res
         Hs[g] = hess + 324 * i, nbs[g] = nbmask[i] & 7, which[g++] = i;
       }
     }
-    if (g && hm_psd_project_many(g, Hs, nbs)) /* (never seen) each on its own, to find the one */
+    if (g && hm_psd_project_many(g, Hs, nbs)) /* a projection beyond the double range: each on its own, to find the one */
       for (int k = 0; k < g; k++) {
-        const size_t i = which[k];
-        if (hylcmat_shell_eval(m, &r[i], x + 18 * i, nbmask[i], flags, &E[i], grad + 18 * i, hess + 324 * i) && !first) first = HYLCMAT_ERR_NAN;
+        const size_t i   = which[k];
+        const int    ret = hylcmat_shell_eval(m, &r[i], x + 18 * i, nbmask[i], flags, &E[i], grad + 18 * i, hess + 324 * i);
+        if (ret && !first) first = ret;
       }
   }
   return first;

@@ -1,5 +1,6 @@
 /* HylcMidsurface: the micro-midsurface phi(xi) and normal n(xi) for a macroscopic strain, closed form
    (flat or singly curved II) or Poisson solve (any II); positions x = phi + h n (docs/method.md §1.4, 1.5). */
+#include <hylc/options.h>
 #include <hylc/private/macroimpl.h>
 
 const char *const HylcMidsurfaceTypes[]   = {"auto", "closed", "poisson", "HylcMidsurfaceType", "HYLC_MIDSURFACE_", NULL};
@@ -172,10 +173,10 @@ PetscErrorCode HylcMidsurfaceSetFromOptions(HylcMidsurface ms)
   PetscFunctionBegin;
   PetscValidHeaderSpecific(ms, HYLC_MIDSURFACE_CLASSID, 1);
   PetscObjectOptionsBegin((PetscObject)ms);
-  PetscCall(PetscOptionsEnum("-macro_phi", "Midsurface method: auto, closed (singly curved II) or poisson", "HylcMidsurfaceSetType", HylcMidsurfaceTypes, type, &type, NULL));
-  PetscCall(PetscOptionsInt("-macro_grid", "Poisson grid nodes per direction", "HylcMidsurfaceSetGridSize", grid, &grid, NULL));
-  PetscCall(PetscOptionsEnum("-macro_interp", "Interpolation of the Poisson phi", "HylcMidsurfaceSetInterpolation", HylcMidsurfaceInterps, interp, &interp, NULL));
-  PetscCall(PetscOptionsEnum("-macro_normal", "Normal of the Poisson midsurface: rotation (S10) or polar (from the FD gradient of phi)", "HylcMidsurfaceSetNormalType", HylcMidsurfaceNormals, normal, &normal, NULL));
+  PetscCall(HylcOptionsEnum("-macro_phi", "Midsurface method: auto, closed (singly curved II) or poisson", "HylcMidsurfaceSetType", HylcMidsurfaceTypes, type, &type, NULL));
+  PetscCall(HylcOptionsInt("-macro_grid", "Poisson grid nodes per direction", "HylcMidsurfaceSetGridSize", grid, &grid, NULL));
+  PetscCall(HylcOptionsEnum("-macro_interp", "Interpolation of the Poisson phi", "HylcMidsurfaceSetInterpolation", HylcMidsurfaceInterps, interp, &interp, NULL));
+  PetscCall(HylcOptionsEnum("-macro_normal", "Normal of the Poisson midsurface: rotation (S10) or polar (from the FD gradient of phi)", "HylcMidsurfaceSetNormalType", HylcMidsurfaceNormals, normal, &normal, NULL));
   PetscOptionsEnd();
   PetscCall(HylcMidsurfaceSetType(ms, (HylcMidsurfaceType)type));
   PetscCall(HylcMidsurfaceSetGridSize(ms, grid));

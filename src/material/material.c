@@ -1,5 +1,6 @@
 /* HylcMaterial: object lifecycle, contents (validated setters and getters), options, viewer, and the
    file dispatch (JSON or HDF5 by content; atomic writes by rank 0). */
+#include <hylc/options.h>
 #include <hylc/private/materialimpl.h>
 #include <errno.h>
 #include <fcntl.h>
@@ -251,7 +252,7 @@ PetscErrorCode HylcMaterialSetFromOptions(HylcMaterial m)
   PetscFunctionBegin;
   PetscValidHeaderSpecific(m, HYLC_MATERIAL_CLASSID, 1);
   PetscObjectOptionsBegin((PetscObject)m);
-  PetscCall(PetscOptionsString("-material_file", "Material model to load: ARCSim-HYLC JSON or hylc HDF5 (recognized by content)", "HylcMaterialLoad", m->source, file, sizeof(file), &flg));
+  PetscCall(HylcOptionsString("-material_file", "Material model to load: ARCSim-HYLC JSON or hylc HDF5 (recognized by content)", "HylcMaterialLoad", m->source, file, sizeof(file), &flg));
   PetscCall(PetscOptionsName("-material_view", "Print a summary of the material", "HylcMaterialViewFromOptions", NULL));
   PetscCall(PetscObjectProcessOptionsHandlers((PetscObject)m, PetscOptionsObject));
   PetscOptionsEnd();
@@ -766,7 +767,9 @@ PetscErrorCode HylcMaterialLoad(HylcMaterial m, const char path[])
     char     err[1024] = "";
     int      r         = hylcmat_load_memory(path, bytes, (size_t)len, &hm, err, sizeof(err));
     PetscCall(PetscFree(bytes));
-    if (r) SETERRQ(comm, HylcMaterialErrorCode_Private(r), "%s", err[0] ? err : hylcmat_strerror(r));
+    /* an HDF5 call that fails on the user's file (the message names the call and the file) is a file the
+       reader cannot use, not a defect: one line */
+    if (r) SETERRQ(comm, r == HYLCMAT_ERR_HDF5 ? PETSC_ERR_FILE_UNEXPECTED : HylcMaterialErrorCode_Private(r), "%s", err[0] ? err : hylcmat_strerror(r));
     hylcmat_free(m->hm);
     m->hm = hm;
     HylcMaterialSync_Private(m);

@@ -505,13 +505,13 @@ PetscErrorCode HylcMicroSetFromOptions(HylcMicro M)
   PetscObjectOptionsBegin((PetscObject)M);
   PetscCall(HylcOptionsReal("-micro_alpha_start", "Regularization schedule: alpha^ at iteration 0", "HylcMicroSetRegularization", p.alphaStart, &p.alphaStart, NULL));
   PetscCall(HylcOptionsReal("-micro_alpha_end", "Regularization schedule: alpha^ from iteration alpha_its on", "HylcMicroSetRegularization", p.alphaEnd, &p.alphaEnd, NULL));
-  PetscCall(PetscOptionsInt("-micro_alpha_its", "Regularization schedule: iterations of the geometric decay", "HylcMicroSetRegularization", p.alphaIts, &p.alphaIts, NULL));
-  PetscCall(PetscOptionsInt("-micro_alpha_retries", "Retries with alpha x 10 when the Newton matrix is indefinite", "HylcMicroSetRegularization", p.maxRetries, &p.maxRetries, NULL));
+  PetscCall(HylcOptionsInt("-micro_alpha_its", "Regularization schedule: iterations of the geometric decay", "HylcMicroSetRegularization", p.alphaIts, &p.alphaIts, NULL));
+  PetscCall(HylcOptionsInt("-micro_alpha_retries", "Retries with alpha x 10 when the Newton matrix is indefinite", "HylcMicroSetRegularization", p.maxRetries, &p.maxRetries, NULL));
   PetscCall(PetscStrncpy(sched, HylcMicroAlphaSchedules[p.alphaSched], sizeof(sched)));
-  PetscCall(PetscOptionsString("-micro_alpha_schedule",
-                               "Regularization schedule of alpha^: adaptive (trust-region-like: down after good steps, up after poor or rejected ones; the default), paper (the paper's decay over alpha_its iterations) or hybrid (paper until ||M "
-                               "g||_inf <= alpha_switch x its initial value, then adaptive)",
-                               "HylcMicroSetRegularizationSchedule", sched, sched, sizeof(sched), &schedSet));
+  PetscCall(HylcOptionsString("-micro_alpha_schedule",
+                              "Regularization schedule of alpha^: adaptive (trust-region-like: down after good steps, up after poor or rejected ones; the default), paper (the paper's decay over alpha_its iterations) or hybrid (paper until ||M "
+                              "g||_inf <= alpha_switch x its initial value, then adaptive)",
+                              "HylcMicroSetRegularizationSchedule", sched, sched, sizeof(sched), &schedSet));
   PetscCall(HylcOptionsReal("-micro_alpha_factor", "Adaptive regularization: alpha^ / factor after a good step, x factor after a poor one", "HylcMicroSetRegularizationSchedule", p.alphaFact, &p.alphaFact, NULL));
   PetscCall(HylcOptionsReal("-micro_alpha_min", "Adaptive regularization: smallest alpha^", "HylcMicroSetRegularizationSchedule", p.alphaMin, &p.alphaMin, NULL));
   PetscCall(HylcOptionsReal("-micro_alpha_max", "Adaptive regularization: largest alpha^", "HylcMicroSetRegularizationSchedule", p.alphaMax, &p.alphaMax, NULL));
@@ -524,8 +524,8 @@ PetscErrorCode HylcMicroSetFromOptions(HylcMicro M)
   PetscCall(HylcOptionsReal("-micro_step_clearance", "Step limit also at most this fraction (< 1/2) of the smallest distance between yarn centerlines that may touch, so that no step crosses two yarns; 0 = off", "HylcMicroSetStepClearance",
                             p.stepClear, &p.stepClear, NULL));
   PetscCall(HylcOptionsReal("-micro_ls_factor", "Backtracking factor of the line search", "HylcMicroSetLineSearch", p.lsFactor, &p.lsFactor, NULL));
-  PetscCall(PetscOptionsInt("-micro_ls_max", "Line-search trials per iteration", "HylcMicroSetLineSearch", p.lsMax, &p.lsMax, NULL));
-  PetscCall(PetscOptionsInt("-micro_max_stalls", "Consecutive line searches without decrease before the solve stops, status stalled", "HylcMicroSetLineSearch", p.maxStalls, &p.maxStalls, NULL));
+  PetscCall(HylcOptionsInt("-micro_ls_max", "Line-search trials per iteration", "HylcMicroSetLineSearch", p.lsMax, &p.lsMax, NULL));
+  PetscCall(HylcOptionsInt("-micro_max_stalls", "Consecutive line searches without decrease before the solve stops, status stalled", "HylcMicroSetLineSearch", p.maxStalls, &p.maxStalls, NULL));
   PetscCall(HylcOptionsReal("-micro_rtol", "Convergence: projected gradient |z| < rtol |z0|", "HylcMicroSetTolerances", p.rtol, &p.rtol, NULL));
   PetscCall(HylcOptionsReal("-micro_atol", "Convergence also when |z| < atol k_s (k_s = Es pi r^2, a force): for tiles already at rest", "HylcMicroSetTolerances", p.atol, &p.atol, NULL));
   PetscCall(HylcOptionsReal("-micro_ctol", "Convergence: constraint residual |A y - dL| < ctol r", "HylcMicroSetTolerances", p.ctol, &p.ctol, NULL));
@@ -535,12 +535,12 @@ PetscErrorCode HylcMicroSetFromOptions(HylcMicro M)
   PetscCall(PetscOptionsBool("-micro_saddle_test", "Second-order test of converged states: count the negative eigenvalues of the Hessian on the constraints' tangent space (implied by -micro_saddle_escapes > 0)", "HylcMicroSetSaddleEscape",
                              p.saddleTest, &p.saddleTest, NULL));
   PetscCall(
-      PetscOptionsInt("-micro_saddle_escapes", "Second-order test: escapes from saddle points (negative curvature on the constraints' tangent space) along negative curvature, per solve", "HylcMicroSetSaddleEscape", p.saddleMax, &p.saddleMax, NULL));
+      HylcOptionsInt("-micro_saddle_escapes", "Second-order test: escapes from saddle points (negative curvature on the constraints' tangent space) along negative curvature, per solve", "HylcMicroSetSaddleEscape", p.saddleMax, &p.saddleMax, NULL));
   PetscCall(HylcOptionsReal("-micro_saddle_tol", "Second-order test: curvature below -saddle_tol x max|diag(M H M)| is negative", "HylcMicroSetSaddleEscape", p.saddleTol, &p.saddleTol, NULL));
-  PetscCall(PetscOptionsEnum("-micro_uniaxial_gradient", "Uniaxial state (HylcMicroSolveUniaxial): dPsi/dz by the envelope theorem at each equilibrium, or by central differences of Psi (fd, 6 more solves per point)", "HylcMicroSetUniaxial",
-                             HylcMicroUniaxialGradients, (PetscEnum)p.uniGrad, (PetscEnum *)&p.uniGrad, NULL));
+  PetscCall(HylcOptionsEnum("-micro_uniaxial_gradient", "Uniaxial state (HylcMicroSolveUniaxial): dPsi/dz by the envelope theorem at each equilibrium, or by central differences of Psi (fd, 6 more solves per point)", "HylcMicroSetUniaxial",
+                            HylcMicroUniaxialGradients, (PetscEnum)p.uniGrad, (PetscEnum *)&p.uniGrad, NULL));
   PetscCall(HylcOptionsReal("-micro_uniaxial_xtol", "Uniaxial state: converged when the predicted Newton step in the lateral strains is at most this (strain, dimensionless)", "HylcMicroSetUniaxial", p.uniXtol, &p.uniXtol, NULL));
-  PetscCall(PetscOptionsInt("-micro_uniaxial_max_it", "Uniaxial state: Newton steps in the lateral strains", "HylcMicroSetUniaxial", p.uniMaxIt, &p.uniMaxIt, NULL));
+  PetscCall(HylcOptionsInt("-micro_uniaxial_max_it", "Uniaxial state: Newton steps in the lateral strains", "HylcMicroSetUniaxial", p.uniMaxIt, &p.uniMaxIt, NULL));
   PetscCall(HylcOptionsReal("-micro_uniaxial_fd_step", "Uniaxial state: difference step of the lateral Hessian and of the fd gradient (strain, dimensionless)", "HylcMicroSetUniaxial", p.uniH, &p.uniH, NULL));
   PetscCall(HylcOptionsReal("-micro_uniaxial_max_step", "Uniaxial state: largest change of a lateral strain per Newton step (strain, dimensionless)", "HylcMicroSetUniaxial", p.uniMaxStep, &p.uniMaxStep, NULL));
   PetscCall(HylcOptionsReal("-micro_uniaxial_rtol", "Uniaxial state: -micro_rtol of its microscale solves (relative, dimensionless)", "HylcMicroSetUniaxialTolerances", p.uniRtol, &p.uniRtol, NULL));

@@ -360,12 +360,12 @@ PetscErrorCode HylcPatternSetFromOptions(HylcPattern p)
   PetscCall(HylcPatternInitializePackage()); /* the registry of -pattern_type */
   PetscObjectOptionsBegin((PetscObject)p);
   PetscCall(PetscStrncpy(type, ((PetscObject)p)->type_name, sizeof(type)));
-  PetscCall(PetscOptionsString("-pattern_file", "Periodic yarn pattern file (.pyp) to load", "HylcPatternLoad", p->filename, file, sizeof(file), &fflg));
+  PetscCall(HylcOptionsString("-pattern_file", "Periodic yarn pattern file (.pyp) to load", "HylcPatternLoad", p->filename, file, sizeof(file), &fflg));
   if (fflg)
     PetscCall(HylcPatternSetFileName(p, file));
   else if (p->filename[0])
     PetscCall(PetscStrncpy(type, HYLCPATTERNFILE, sizeof(type)));
-  PetscCall(PetscOptionsFList("-pattern_type", "Pattern source: a file or a generator (HylcPatternRegister())", "HylcPatternSetType", HylcPatternList, type, type, sizeof(type), &tflg));
+  PetscCall(HylcOptionsFList("-pattern_type", "Pattern source: a file or a generator (HylcPatternRegister())", "HylcPatternSetType", HylcPatternList, type, type, sizeof(type), &tflg));
   PetscCall(HylcOptionsReal("-pattern_radius", "Generators: yarn radius (m), > 0", "HylcPatternGenerate", p->gen.radius, &p->gen.radius, &set[0]));
   PetscCall(HylcOptionsReal("-pattern_spacing", "Wovens: distance between neighbouring parallel yarns (m); 0 = 4 r", "HylcPatternGenerate", p->gen.spacing, &p->gen.spacing, &set[1]));
   PetscCall(HylcOptionsReal("-pattern_gap", "Wovens: clearance at crossings relative to 2r; 0 = 0.1", "HylcPatternGenerate", p->gen.gap, &p->gen.gap, &set[2]));

@@ -261,8 +261,8 @@ PetscErrorCode HylcPeriodicSetFromOptions(HylcPeriodic P)
   marginFactor = P->marginFactor;
   crtol        = P->crtol;
   PetscObjectOptionsBegin((PetscObject)P);
-  PetscCall(PetscOptionsEnum("-periodic_slide", "Slide constraint: none, global (one row), per_yarn (one row per yarn loop) or per_family (one row per yarn family, each yarn in its canonical direction)", "HylcPeriodicSetSlideConstraint",
-                             HylcSlideConstraints, sl, &sl, NULL));
+  PetscCall(HylcOptionsEnum("-periodic_slide", "Slide constraint: none, global (one row), per_yarn (one row per yarn loop) or per_family (one row per yarn family, each yarn in its canonical direction)", "HylcPeriodicSetSlideConstraint",
+                            HylcSlideConstraints, sl, &sl, NULL));
   PetscCall(HylcOptionsReal("-periodic_pair_margin", "Hessian structure: keep the segment pairs closer than this many 2 r (touching: 2 r), so that it changes rarely", "HylcPeriodicSetPairMargin", pairMargin, &pairMargin, NULL));
   PetscCall(HylcOptionsReal("-periodic_margin",
                             "Contact ghosts: 0 for every copy of a tile edge in the neighbouring tiles; > 0 for only the copies within max(3 r, margin * min(px, py)) of the tile on the deformed initial guess (misses contacts once yarns move more "

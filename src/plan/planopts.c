@@ -35,7 +35,7 @@ PetscErrorCode HylcPlanRangesFromOptions(PetscOptionItems *PetscOptionsObject, M
   HylcPlan           p;
 
   PetscFunctionBegin;
-  PetscCall(PetscOptionsEnum("-sampler_family", "Default sampling ranges of docs/method.md §8 (II scaled by 1 mm / r)", man, HylcPlanFamilies, fam, &fam, NULL));
+  PetscCall(HylcOptionsEnum("-sampler_family", "Default sampling ranges of docs/method.md §8 (II scaled by 1 mm / r)", man, HylcPlanFamilies, fam, &fam, NULL));
   ranges->family = (PetscInt)fam;
   PetscCheck(!HylcPlanDefaults(HylcPlanFamilies[fam], 1, &p), comm, PETSC_ERR_USER_INPUT, "Unknown sampling family");
   for (int c = 0; c < HYLC_PLAN_NCOORD; c++) {
@@ -58,10 +58,10 @@ PetscErrorCode HylcPlanRangesFromOptions(PetscOptionItems *PetscOptionsObject, M
     PetscInt  n = HYLC_PLAN_NCOORD, sub = ranges->sub > 0 ? ranges->sub : p.sub;
     PetscBool set;
     for (int c = 0; c < HYLC_PLAN_NCOORD; c++) h0[c] = ranges->h0set ? ranges->h0[c] : p.h0[c];
-    PetscCall(PetscOptionsEnum("-sampler_spacing",
-                               "How an axis is sampled: graded (knots dense near 0, spacing -sampler_graded_h0 growing by -sampler_graded_growth, each interval cut -sampler_graded_sub times: the fabric fit's knots) or paper (Algorithm C4's "
-                               "-sampler_n1 samples per 1D term, -sampler_n2 per 2D axis; giving either selects paper spacing unless this is given)",
-                               man, HylcPlanSpacings, sp, &sp, &set));
+    PetscCall(HylcOptionsEnum("-sampler_spacing",
+                              "How an axis is sampled: graded (knots dense near 0, spacing -sampler_graded_h0 growing by -sampler_graded_growth, each interval cut -sampler_graded_sub times: the fabric fit's knots) or paper (Algorithm C4's "
+                              "-sampler_n1 samples per 1D term, -sampler_n2 per 2D axis; giving either selects paper spacing unless this is given)",
+                              man, HylcPlanSpacings, sp, &sp, &set));
     ranges->spacing = (PetscInt)sp;
     if (set) ranges->spacingSet = PETSC_TRUE;
     PetscCall(HylcOptionsRealArray("-sampler_graded_h0", "graded spacing: the knot spacing at 0 of sx, sa, sy, II00, II11 (1 and 1/m; default 0.01 and 2.5 1/m at r = 1 mm, scaled by 1 mm / r)", man, h0, &n, &set));
@@ -81,7 +81,7 @@ PetscErrorCode HylcPlanRangesFromOptions(PetscOptionItems *PetscOptionsObject, M
       PetscCheck(hmax > 0 && hmax <= 1, comm, PETSC_ERR_USER_INPUT, "-sampler_graded_hmax %g: must be in (0, 1]", (double)hmax);
       ranges->hmax = hmax;
     }
-    PetscCall(PetscOptionsInt("-sampler_graded_sub", "graded spacing: samples per knot interval (1: the knots only; 2: knots and midpoints)", man, sub, &sub, &set));
+    PetscCall(HylcOptionsInt("-sampler_graded_sub", "graded spacing: samples per knot interval (1: the knots only; 2: knots and midpoints)", man, sub, &sub, &set));
     if (set) {
       PetscCheck(sub >= 1 && sub <= 16, comm, PETSC_ERR_USER_INPUT, "-sampler_graded_sub %d: must be in 1..16", (int)sub);
       ranges->sub = sub;

@@ -52,14 +52,14 @@ PetscErrorCode HylcReferenceParamsDefault(HylcReferenceParams *p)
 
   Options Database Keys:
 + -reference_etol <1e-10> - stress-free relaxation: stop when the energy is below this (J)
-. -reference_max_rounds <30> - stress-free relaxation: at most this many rounds
+. -reference_max_rounds <30> - stress-free relaxation: at most this many rounds (>= 1)
 . -reference_kind <auto> - tension factors: auto, knit or woven
 . -reference_stress_free <true> - reset the rest values to the geometry and relax
 . -reference_tension <true> - apply the tension factors
 . -reference_minimum <true> - find the in-plane minimum over the periods
 . -reference_bounds <-0.4,0.2> - bounds lo,hi of sx and sy in the minimum (-1 < lo < 0 < hi)
-. -reference_xtol <1e-4> - Nelder-Mead simplex size tolerance (strain)
-- -reference_max_evals <80> - at most this many solves in the minimum
+. -reference_xtol <1e-4> - Nelder-Mead simplex size tolerance (strain, >= 0)
+- -reference_max_evals <80> - at most this many solves in the minimum (>= 3: the first simplex)
 
   Level: intermediate
 
@@ -79,16 +79,19 @@ PetscErrorCode HylcReferenceParamsSetFromOptions(MPI_Comm comm, const char prefi
   PetscCall(PetscStrncpy(p->prefix, prefix ? prefix : "", sizeof(p->prefix)));
   PetscOptionsBegin(comm, prefix, "Reference state (Algorithm C1)", "HylcReferenceState");
   PetscCall(HylcOptionsReal("-reference_etol", "Stress-free relaxation: stop when the energy is below this (J)", "HylcReferenceStateCompute", p->etol, &p->etol, NULL));
-  PetscCall(PetscOptionsInt("-reference_max_rounds", "Stress-free relaxation: at most this many reset-and-relax rounds", "HylcReferenceStateCompute", p->maxRounds, &p->maxRounds, NULL));
-  PetscCall(PetscOptionsEnum("-reference_kind", "Tension factors: knit (rest lengths x 0.9, curvatures x 0.8) or woven (curvatures x 0.9); auto: knit if every yarn runs along x", "HylcReferenceStateCompute", Kinds, kind, &kind, NULL));
+  PetscCall(HylcOptionsInt("-reference_max_rounds", "Stress-free relaxation: at most this many reset-and-relax rounds (>= 1)", "HylcReferenceStateCompute", p->maxRounds, &p->maxRounds, NULL));
+  PetscCall(HylcOptionsEnum("-reference_kind", "Tension factors: knit (rest lengths x 0.9, curvatures x 0.8) or woven (curvatures x 0.9); auto: knit if every yarn runs along x", "HylcReferenceStateCompute", Kinds, kind, &kind, NULL));
   PetscCall(PetscOptionsBool("-reference_stress_free", "Reset the rest values to the geometry and relax (false keeps the pattern's rest data)", "HylcReferenceStateCompute", p->stressFree, &p->stressFree, NULL));
   PetscCall(PetscOptionsBool("-reference_tension", "Apply the tension factors", "HylcReferenceStateCompute", p->tension, &p->tension, NULL));
   PetscCall(PetscOptionsBool("-reference_minimum", "Find the in-plane minimum of the energy over the periods", "HylcReferenceStateCompute", p->minimum, &p->minimum, NULL));
   PetscCall(HylcOptionsRealArray("-reference_bounds", "Bounds lo,hi of sx and sy in the in-plane minimum", "HylcReferenceStateCompute", b, &nb, &set));
-  PetscCall(HylcOptionsReal("-reference_xtol", "In-plane minimum: Nelder-Mead simplex size tolerance (strain)", "HylcReferenceStateCompute", p->xtol, &p->xtol, NULL));
-  PetscCall(PetscOptionsInt("-reference_max_evals", "In-plane minimum: at most this many solves", "HylcReferenceStateCompute", p->maxEvals, &p->maxEvals, NULL));
+  PetscCall(HylcOptionsReal("-reference_xtol", "In-plane minimum: Nelder-Mead simplex size tolerance (strain, >= 0)", "HylcReferenceStateCompute", p->xtol, &p->xtol, NULL));
+  PetscCall(HylcOptionsInt("-reference_max_evals", "In-plane minimum: at most this many solves (>= 3: the first simplex)", "HylcReferenceStateCompute", p->maxEvals, &p->maxEvals, NULL));
   PetscOptionsEnd();
   PetscCheck(!set || (nb == 2 && b[0] < 0 && b[1] > 0 && b[0] > -1), comm, PETSC_ERR_USER_INPUT, "-%sreference_bounds needs lo,hi with -1 < lo < 0 < hi", p->prefix);
+  PetscCheck(p->maxRounds >= 1, comm, PETSC_ERR_USER_INPUT, "-%sreference_max_rounds %" PetscInt_FMT ": at least 1 round of the stress-free relaxation (-%sreference_stress_free false skips it)", p->prefix, p->maxRounds, p->prefix);
+  PetscCheck(p->maxEvals >= 3, comm, PETSC_ERR_USER_INPUT, "-%sreference_max_evals %" PetscInt_FMT ": at least 3 solves (the first simplex of the in-plane minimum; -%sreference_minimum false skips it)", p->prefix, p->maxEvals, p->prefix);
+  PetscCheck(p->xtol >= 0, comm, PETSC_ERR_USER_INPUT, "-%sreference_xtol %.6g: a simplex size, >= 0 (0: stop at -%sreference_max_evals only)", p->prefix, (double)p->xtol, p->prefix);
   p->lo   = b[0];
   p->hi   = b[1];
   p->kind = (PetscInt)kind;

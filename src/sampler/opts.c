@@ -364,36 +364,36 @@ PetscErrorCode HylcSamplerSetFromOptions(HylcSampler S)
   PetscCall(HylcSamplerSetYarnModel(S, &model));
   PetscCall(HylcReferenceParamsSetFromOptions(comm, ((PetscObject)S)->prefix, &S->refpar));
   PetscObjectOptionsBegin((PetscObject)S);
-  PetscCall(PetscOptionsEnum("-sampler_reference",
-                             "Reference state: auto (Algorithm C1 for a generated pattern; relax for a stored reference state, a .pyp as the paper's: the tile at rest at z = 0), compute (C1), relax (only the in-plane minimum over the periods of the "
-                             "pattern as given: a stored tile made a minimum of the configured yarn) or none (the pattern as given: the paper's procedure, config/profile-paper.yaml)",
-                             "HylcSamplerSetReference", HylcReferenceModes, mode, &mode, NULL));
-  PetscCall(PetscOptionsString("-reference_output", "Write the reference state as .pyp", "HylcSamplerSetReference", refout, refout, sizeof(refout), NULL));
-  PetscCall(PetscOptionsString("-sampler_output", "HDF5 output file (the journal is <output>.journal)", "HylcSamplerSetOutput", output, output, sizeof(output), NULL));
+  PetscCall(HylcOptionsEnum("-sampler_reference",
+                            "Reference state: auto (Algorithm C1 for a generated pattern; relax for a stored reference state, a .pyp as the paper's: the tile at rest at z = 0), compute (C1), relax (only the in-plane minimum over the periods of the "
+                            "pattern as given: a stored tile made a minimum of the configured yarn) or none (the pattern as given: the paper's procedure, config/profile-paper.yaml)",
+                            "HylcSamplerSetReference", HylcReferenceModes, mode, &mode, NULL));
+  PetscCall(HylcOptionsString("-reference_output", "Write the reference state as .pyp", "HylcSamplerSetReference", refout, refout, sizeof(refout), NULL));
+  PetscCall(HylcOptionsString("-sampler_output", "HDF5 output file (the journal is <output>.journal)", "HylcSamplerSetOutput", output, output, sizeof(output), NULL));
   PetscCall(PetscOptionsBool("-sampler_resume", "Continue an interrupted run from its journal <output>.journal (refused, naming the differences, if any setting that changes results differs)", "HylcSamplerSetResume", resume, &resume, NULL));
   PetscCall(
       PetscOptionsBool("-sampler_overwrite", "Start over: replace an existing output and its journal (without -sampler_resume or this, an existing output or journal with samples is refused)", "HylcSamplerSetOverwrite", overwrite, &overwrite, NULL));
   PetscCall(HylcPlanRangesFromOptions(PetscOptionsObject, comm, "HylcSamplerSetPlanRanges", &ranges));
   {
     PetscBool s1, s2;
-    PetscCall(PetscOptionsInt("-sampler_n1", "Samples per 1D term (paper spacing; giving it selects paper spacing unless -sampler_spacing is given)", "HylcSamplerSetSampleCounts", n1, &n1, &s1));
-    PetscCall(PetscOptionsInt("-sampler_n2", "Samples per axis of a 2D term (paper spacing; as -sampler_n1)", "HylcSamplerSetSampleCounts", n2, &n2, &s2));
+    PetscCall(HylcOptionsInt("-sampler_n1", "Samples per 1D term (paper spacing; giving it selects paper spacing unless -sampler_spacing is given)", "HylcSamplerSetSampleCounts", n1, &n1, &s1));
+    PetscCall(HylcOptionsInt("-sampler_n2", "Samples per axis of a 2D term (paper spacing; as -sampler_n1)", "HylcSamplerSetSampleCounts", n2, &n2, &s2));
     if ((s1 || s2) && !ranges.spacingSet) ranges.spacing = HYLC_PLAN_SPACING_PAPER;
   }
-  PetscCall(PetscOptionsString("-sampler_terms",
-                               "Terms to sample: all (with graded spacing the 3D terms too), paper (the paper's 15: zero, 1D, 2D), 1d, or a comma list of zero, sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, "
-                               "sy-II00, sy-II11, sx-sa-sy, sx-sa-II00, sx-sa-II11, sx-sy-II00, sx-sy-II11, sa-sy-II00, sa-sy-II11",
-                               "HylcSamplerSetTerms", terms, terms, sizeof(terms), &tset));
-  PetscCall(PetscOptionsInt("-sampler_batch", "Samples per batch (unit of work of a rank)", "HylcSamplerSetBatchSize", batch, &batch, NULL));
-  PetscCall(PetscOptionsEnum("-sampler_start",
-                             "How each sample's solve starts: continue (half-lines of the plan from the zero strain outward, each sample from its predecessor's equilibrium, retried cold if it does not converge; the unit of work is a half-line), "
-                             "cold (every sample from u~ = 0: the paper's procedure) or both (every sample from both, the lower Psi kept, the other in /samples/psi_other: a map of multistability)",
-                             "HylcSamplerSetStart", HylcSamplerStarts, start, &start, NULL));
+  PetscCall(HylcOptionsString("-sampler_terms",
+                              "Terms to sample: all (with graded spacing the 3D terms too), paper (the paper's 15: zero, 1D, 2D), 1d, or a comma list of zero, sx, sa, sy, II00, II11, sx-sa, sx-sy, sx-II00, sx-II11, sa-sy, sa-II00, sa-II11, "
+                              "sy-II00, sy-II11, sx-sa-sy, sx-sa-II00, sx-sa-II11, sx-sy-II00, sx-sy-II11, sa-sy-II00, sa-sy-II11",
+                              "HylcSamplerSetTerms", terms, terms, sizeof(terms), &tset));
+  PetscCall(HylcOptionsInt("-sampler_batch", "Samples per batch (unit of work of a rank)", "HylcSamplerSetBatchSize", batch, &batch, NULL));
+  PetscCall(HylcOptionsEnum("-sampler_start",
+                            "How each sample's solve starts: continue (half-lines of the plan from the zero strain outward, each sample from its predecessor's equilibrium, retried cold if it does not converge; the unit of work is a half-line), "
+                            "cold (every sample from u~ = 0: the paper's procedure) or both (every sample from both, the lower Psi kept, the other in /samples/psi_other: a map of multistability)",
+                            "HylcSamplerSetStart", HylcSamplerStarts, start, &start, NULL));
   PetscCall(HylcOptionsReal("-sampler_both_rtol", "-sampler_start both: relative difference of the two starts' Psi above which a sample is flagged multistable (1)", "HylcSamplerSetBothTolerance", bothRtol, &bothRtol, NULL));
   PetscCall(PetscOptionsBool("-sampler_stress", "Record each converged sample's stress dPsi/dz (six components, N/m and N; envelope theorem, no re-solve) in /samples/stress", "HylcSamplerSetStress", stress, &stress, NULL));
   PetscCall(HylcOptionsReal("-sampler_progress", "Seconds between progress lines", "HylcSamplerSetProgressInterval", progress, &progress, NULL));
-  PetscCall(PetscOptionsString("-sampler_export_raw", "Also write the paper's raw layout into this directory: data.txt (rows sx sa sy II00 II01 II11 Psi in the order of C4) and info.txt (area, area density)", "HylcSamplerSetExportRaw", rawdir,
-                               rawdir, sizeof(rawdir), NULL));
+  PetscCall(HylcOptionsString("-sampler_export_raw", "Also write the paper's raw layout into this directory: data.txt (rows sx sa sy II00 II01 II11 Psi in the order of C4) and info.txt (area, area density)", "HylcSamplerSetExportRaw", rawdir, rawdir,
+                              sizeof(rawdir), NULL));
   PetscCall(HylcOptionsReal("-sampler_density", "Volumetric yarn density for the area density of info.txt (kg/m^3; <= 0: 0.12 kg/m^2 / r, as hylc-fit)", "HylcSamplerSetExportRaw", density, &density, NULL));
   PetscCall(PetscOptionsName("-sampler_view", "Print the sampling job after its set-up", "HylcSamplerView", NULL));
   PetscOptionsEnd();

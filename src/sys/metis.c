@@ -8,6 +8,7 @@
      -hylc_metis_nseps <int>    separators computed at each bisection, the smallest is kept (default 1)
      -hylc_metis_ufactor <int>  allowed imbalance of the bisections, in 1/1000 (default: METIS's, 200)
      -hylc_metis_compress <bool> compress vertices with identical adjacency (default true) */
+#include <hylc/options.h>
 #include <hylc/sys.h>
 #include <petscmat.h>
 #include <metis.h>
@@ -69,9 +70,9 @@ PetscErrorCode HylcMetisSetFromOptions(MPI_Comm comm)
 
   PetscFunctionBegin;
   PetscOptionsBegin(comm, NULL, "METIS nested-dissection ordering (metisnd; the factorization of the Newton matrix)", "Mat");
-  PetscCall(PetscOptionsInt("-hylc_metis_seed", "METIS random seed (-1: METIS's own, deterministic)", "HylcMetisNodeND", seed, &seed, NULL));
-  PetscCall(PetscOptionsInt("-hylc_metis_nseps", "Separators computed at each bisection, the smallest kept (>= 1)", "HylcMetisNodeND", nseps, &nseps, NULL));
-  PetscCall(PetscOptionsInt("-hylc_metis_ufactor", "Allowed imbalance of the bisections, in 1/1000 (>= 1; METIS's default)", "HylcMetisNodeND", ufactor, &ufactor, NULL));
+  PetscCall(HylcOptionsInt("-hylc_metis_seed", "METIS random seed (-1: METIS's own, deterministic)", "HylcMetisNodeND", seed, &seed, NULL));
+  PetscCall(HylcOptionsInt("-hylc_metis_nseps", "Separators computed at each bisection, the smallest kept (>= 1)", "HylcMetisNodeND", nseps, &nseps, NULL));
+  PetscCall(HylcOptionsInt("-hylc_metis_ufactor", "Allowed imbalance of the bisections, in 1/1000 (>= 1; METIS's default)", "HylcMetisNodeND", ufactor, &ufactor, NULL));
   PetscCall(PetscOptionsBool("-hylc_metis_compress", "Compress vertices with identical adjacency", "HylcMetisNodeND", b, &b, NULL));
   PetscOptionsEnd();
   PetscCall(MetisOptions(opt)); /* the checks of the values, the same as at each ordering */

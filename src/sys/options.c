@@ -1,4 +1,5 @@
-/* Option readers that refuse non-finite reals and extra list values (include/hylc/options.h). */
+/* Option readers that refuse options without a value, non-finite reals and extra list values
+   (include/hylc/options.h). */
 #include <hylc/options.h>
 #include <math.h>
 #include <stdio.h>
@@ -17,9 +18,24 @@ static PetscErrorCode OptionText(PetscOptionItems *items, const char opt[], char
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* an option given without a value ("-yarn_E" last, "-yarn_E ''", or "yarn_E:" in YAML): PETSc stores no
+   value, and its readers ignore the option (numbers) or read "" (strings, choices) */
+static PetscErrorCode CheckHasValue(PetscOptionItems *items, const char opt[])
+{
+  char        key[256];
+  const char *value = NULL;
+  PetscBool   set   = PETSC_FALSE;
+
+  PetscFunctionBegin;
+  PetscCall(PetscSNPrintf(key, sizeof(key), "-%s%s", items->prefix ? items->prefix : "", opt + 1));
+  PetscCall(PetscOptionsFindPair(items->options, NULL, key, &value, &set));
+  PetscCheck(!set || (value && value[0]), items->comm, PETSC_ERR_USER_INPUT, "Option %s: no value", key);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /*@C
-  HylcOptionsReal_Private - PetscOptionsReal() that refuses a value that is not finite (use the macro
-  HylcOptionsReal() between PetscOptionsBegin() and PetscOptionsEnd()).
+  HylcOptionsReal_Private - PetscOptionsReal() that refuses a value that is not finite and an option without
+  a value (use the macro HylcOptionsReal() between PetscOptionsBegin() and PetscOptionsEnd()).
 
   Level: developer
 @*/
@@ -30,6 +46,7 @@ PetscErrorCode HylcOptionsReal_Private(PetscOptionItems *items, const char opt[]
   const char *raw;
 
   PetscFunctionBegin;
+  PetscCall(CheckHasValue(items, opt));
   PetscCall(PetscOptionsReal_Private(items, opt, text, man, cur, val, &flg));
   if (set) *set = flg;
   if (!flg || isfinite((double)*val)) PetscFunctionReturn(PETSC_SUCCESS);
@@ -95,8 +112,8 @@ static PetscErrorCode HelpLine(PetscOptionItems *items, const char opt[], const 
 }
 
 /*@C
-  HylcOptionsRealArray_Private - PetscOptionsRealArray() that refuses more than *n values and values that
-  are not finite (use the macro HylcOptionsRealArray()).
+  HylcOptionsRealArray_Private - PetscOptionsRealArray() that refuses more than *n values, values that
+  are not finite and an option without a value (use the macro HylcOptionsRealArray()).
 
   Level: developer
 @*/
@@ -108,6 +125,7 @@ PetscErrorCode HylcOptionsRealArray_Private(PetscOptionItems *items, const char 
   char            defaults[512] = "", now[512];
 
   PetscFunctionBegin;
+  PetscCall(CheckHasValue(items, opt));
   if (help) FormatList(defaults, sizeof(defaults), max, v, NULL);
   items->printhelp = (PetscBool)(items->printhelp && !help); /* this reader prints the line */
   PetscCall(PetscOptionsRealArray_Private(items, opt, text, man, v, n, &flg));
@@ -130,8 +148,8 @@ PetscErrorCode HylcOptionsRealArray_Private(PetscOptionItems *items, const char 
 }
 
 /*@C
-  HylcOptionsIntArray_Private - PetscOptionsIntArray() that refuses more than *n values (use the macro
-  HylcOptionsIntArray()).
+  HylcOptionsIntArray_Private - PetscOptionsIntArray() that refuses more than *n values and an option
+  without a value (use the macro HylcOptionsIntArray()).
 
   Level: developer
 @*/
@@ -143,6 +161,7 @@ PetscErrorCode HylcOptionsIntArray_Private(PetscOptionItems *items, const char o
   char            defaults[512] = "", now[512];
 
   PetscFunctionBegin;
+  PetscCall(CheckHasValue(items, opt));
   if (help) FormatList(defaults, sizeof(defaults), max, NULL, v);
   items->printhelp = (PetscBool)(items->printhelp && !help); /* this reader prints the line */
   PetscCall(PetscOptionsIntArray_Private(items, opt, text, man, v, n, &flg));
@@ -153,5 +172,61 @@ PetscErrorCode HylcOptionsIntArray_Private(PetscOptionItems *items, const char o
   }
   if (set) *set = flg;
   if (flg) PetscCall(CheckCount(items, opt, max, PETSC_FALSE));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcOptionsInt_Private - PetscOptionsInt() that refuses an option without a value (use the macro
+  HylcOptionsInt() between PetscOptionsBegin() and PetscOptionsEnd()).
+
+  Level: developer
+@*/
+PetscErrorCode HylcOptionsInt_Private(PetscOptionItems *items, const char opt[], const char text[], const char man[], PetscInt cur, PetscInt *val, PetscBool *set)
+{
+  PetscFunctionBegin;
+  PetscCall(CheckHasValue(items, opt));
+  PetscCall(PetscOptionsInt_Private(items, opt, text, man, cur, val, set, PETSC_MIN_INT, PETSC_MAX_INT));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcOptionsString_Private - PetscOptionsString() that refuses an option without a value, which PETSc reads
+  as "" (use the macro HylcOptionsString()).
+
+  Level: developer
+@*/
+PetscErrorCode HylcOptionsString_Private(PetscOptionItems *items, const char opt[], const char text[], const char man[], const char cur[], char val[], size_t len, PetscBool *set)
+{
+  PetscFunctionBegin;
+  PetscCall(CheckHasValue(items, opt));
+  PetscCall(PetscOptionsString_Private(items, opt, text, man, cur, val, len, set));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcOptionsEnum_Private - PetscOptionsEnum() that refuses an option without a value (use the macro
+  HylcOptionsEnum()).
+
+  Level: developer
+@*/
+PetscErrorCode HylcOptionsEnum_Private(PetscOptionItems *items, const char opt[], const char text[], const char man[], const char *const *list, PetscEnum cur, PetscEnum *val, PetscBool *set)
+{
+  PetscFunctionBegin;
+  PetscCall(CheckHasValue(items, opt));
+  PetscCall(PetscOptionsEnum_Private(items, opt, text, man, list, cur, val, set));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/*@C
+  HylcOptionsFList_Private - PetscOptionsFList() that refuses an option without a value (use the macro
+  HylcOptionsFList()).
+
+  Level: developer
+@*/
+PetscErrorCode HylcOptionsFList_Private(PetscOptionItems *items, const char opt[], const char text[], const char man[], PetscFunctionList list, const char cur[], char val[], size_t len, PetscBool *set)
+{
+  PetscFunctionBegin;
+  PetscCall(CheckHasValue(items, opt));
+  PetscCall(PetscOptionsFList_Private(items, opt, text, man, list, cur, val, len, set));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

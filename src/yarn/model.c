@@ -73,10 +73,10 @@ PetscErrorCode HylcYarnModelSetFromOptions(MPI_Comm comm, const char prefix[], H
   PetscCall(HylcOptionsReal("-yarn_G", "Shear modulus (Pa); 0 = E/2.5", "HylcYarnModel", m->G, &m->G, NULL));
   PetscCall(HylcOptionsReal("-yarn_kc", "Contact stiffness (N/m); 0 = 0.7 E r", "HylcYarnModel", m->kc, &m->kc, NULL));
   PetscCall(HylcOptionsReal("-yarn_radius", "Yarn radius override (m); 0 = the pattern's", "HylcYarnModel", m->radius, &m->radius, NULL));
-  PetscCall(PetscOptionsInt("-yarn_contact_points", "Gauss points per segment for the quadrature contact", "HylcYarnModel", m->contactPoints, &m->contactPoints, NULL));
-  PetscCall(PetscOptionsEnum("-yarn_contact_type", "Contact energy: quadrature (integral over both segments) or closest (one closest-point sample)", "HylcYarnModel", ContactTypes, ct, &ct, NULL));
+  PetscCall(HylcOptionsInt("-yarn_contact_points", "Gauss points per segment for the quadrature contact", "HylcYarnModel", m->contactPoints, &m->contactPoints, NULL));
+  PetscCall(HylcOptionsEnum("-yarn_contact_type", "Contact energy: quadrature (integral over both segments) or closest (one closest-point sample)", "HylcYarnModel", ContactTypes, ct, &ct, NULL));
   PetscCall(HylcOptionsReal("-yarn_exclude_arc", "Same-yarn pairs closer than this rest arc length (units of r) do not interact", "HylcYarnModel", m->excludeArc, &m->excludeArc, NULL));
-  PetscCall(PetscOptionsEnum("-yarn_curvature", "Material curvature convention", "HylcYarnModel", CurvatureTypes, cv, &cv, NULL));
+  PetscCall(HylcOptionsEnum("-yarn_curvature", "Material curvature convention", "HylcYarnModel", CurvatureTypes, cv, &cv, NULL));
   PetscOptionsEnd();
   m->contactType = (HylcContactType)ct;
   m->curvature   = (HylcRodCurvatureVariant)cv;

@@ -10,7 +10,7 @@ cd "$HYLC_ROOT"
 fz=$HYLC_BIN/../fuzz
 fail=0
 n=0
-for h in fuzz_pyp fuzz_material_json fuzz_fit_raw fuzz_calibrate_target fuzz_eval_input; do
+for h in fuzz_pyp fuzz_material_json fuzz_fit_raw fuzz_calibrate_target fuzz_eval_input fuzz_obj; do
   [ -x "$fz/$h" ] || { echo "missing $fz/$h (run make)"; exit 1; }
   files=()
   for f in tests/fuzz/regressions/$h/* tests/fuzz/seeds/$h/*; do [ -f "$f" ] && files+=("$f"); done

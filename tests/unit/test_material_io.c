@@ -285,7 +285,7 @@ static PetscErrorCode TestErrors(HylcMaterial m)
   PetscCall(Variant("[{\"k\": 3,", "[{\"k\": 3, \"t\": [0, 1], \"p\": [0, 0], \"m\": [0, 0]}, {\"k\": 3,", t));
   CHECK_ERROR(HylcMaterialLoadFromString(m, "e.json", t), PETSC_ERR_USER_INPUT, "coeffs.1D[1]: a second term with k = 3");
   PetscCall(Variant("0.3", "-0.3", t));
-  CHECK_ERROR(HylcMaterialLoadFromString(m, "e.json", t), PETSC_ERR_USER_INPUT, "e.json:2: density: the area density must be >= 0");
+  CHECK_ERROR(HylcMaterialLoadFromString(m, "e.json", t), PETSC_ERR_USER_INPUT, "e.json:2: density: the area density must be in [0, 1e+06] kg/m^2, got -0.3");
   /* a failed load leaves the material unchanged */
   {
     const HylcSpline2D *b;
@@ -328,7 +328,7 @@ static PetscErrorCode TestErrors(HylcMaterial m)
       CHECK_ERROR(HylcMaterialSet2D(m, &s2), PETSC_ERR_USER_INPUT, "(k0, k1) = (3, 4) is not a term of the model");
     }
     CHECK_ERROR(HylcMaterialSetStrainScale(m, scale), PETSC_ERR_USER_INPUT, "Strain scale 4 (II11) must be finite and positive");
-    CHECK_ERROR(HylcMaterialSetDensity(m, -1), PETSC_ERR_USER_INPUT, "density must be finite and >= 0");
+    CHECK_ERROR(HylcMaterialSetDensity(m, -1), PETSC_ERR_USER_INPUT, "density must be finite and in [0, 1e+06] kg/m^2, got -1");
     CHECK_ERROR(HylcMaterialSetConstant(m, INFINITY), PETSC_ERR_USER_INPUT, "constant must be finite");
   }
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -787,6 +787,27 @@ static PetscErrorCode TestErrors(const hylcmat *m)
     hylcmat_shell_rest rr;
     for (int i = 0; i < 3; i++) HYLC_CHECK(hylcmat_shell_rest_uv(bad[i], &rr) == HYLCMAT_ERR_REST, "bad rest triangle %d accepted", i);
     HYLC_CHECK(hylcmat_shell_rest_uv(bad[3], &rr) == HYLCMAT_OK, "a thin but valid rest triangle refused");
+    /* a rest triangle the element cannot evaluate at its own rest state is refused: a subnormal area
+       (edges of 1e-160 m: 2 A = 1e-320) was accepted and then degenerate at rest; every accepted scale
+       evaluates at rest */
+    {
+      const double sub[6] = {0, 0, 1e-160, 0, 0, 1e-160};
+      int          acc    = 0;
+      HYLC_CHECK(hylcmat_shell_rest_uv(sub, &rr) == HYLCMAT_ERR_REST, "a rest triangle of subnormal area accepted (area %g)", rr.area);
+      for (int k = -170; k <= 170; k += 5) {
+        const double s = pow(10.0, k), u[6] = {0, 0, s, 0, 0.3 * s, 0.9 * s};
+        double       xr[18] = {0}, Er, gr[18];
+        int          rc;
+        if (hylcmat_shell_rest_uv(u, &rr)) continue;
+        acc++;
+        for (int j = 0; j < 3; j++) xr[3 * j] = u[2 * j], xr[3 * j + 1] = u[2 * j + 1];
+        rc = hylcmat_shell_eval(m, &rr, xr, 0, 0, &Er, gr, NULL);
+        HYLC_CHECK(rc == HYLCMAT_OK, "the rest triangle of scale 1e%d m accepted, but at rest: %s", k, hylcmat_strerror(rc));
+      }
+      HYLC_CHECK(acc == 31, "%d of the scales 1e-170 .. 1e170 m accepted, expected the 31 of 1e-75 .. 1e75 (2 A within 1.5e-154 .. 1.3e154)", acc);
+      HYLC_CHECK(hylcmat_shell_rest_uv((const double[6]){0, 0, 1e-150, 0, 0, 1e-150}, &rr) == HYLCMAT_ERR_REST, "2 A = 1e-300 accepted");
+      HYLC_CHECK(hylcmat_shell_rest_uv((const double[6]){0, 0, 1e100, 0, 0, 1e100}, &rr) == HYLCMAT_ERR_REST, "2 A = 1e200 accepted");
+    }
     {
       const double X[9] = {0, 0, 0, 1, 1, 1, 2, 2, 2}, Y[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
       HYLC_CHECK(hylcmat_shell_rest_3d(X, 0, &rr) == HYLCMAT_ERR_REST, "collinear 3D rest triangle accepted");
@@ -874,6 +895,46 @@ static PetscErrorCode TestErrors(const hylcmat *m)
 }
 
 /* a table smooth at II = 0 (no knot at 0 in the bending arguments): random C1 splines, knots avoiding 0 */
+/* A table whose element Hessian is finite but beyond 1e154 (an sa term of values 1e100 at an sa scale of
+   1e-30: 2e160 at the flat rest state): its projection squared the entries in the Householder and QR steps
+   and returned HYLCMAT_ERR_NAN ("a defect"); now it is projected on the Hessian divided by a power of 2.
+   Convex: the projection changes nothing but the translations' floor; concave: the result is PSD. Also
+   the batch and the mesh. */
+static void TestHugeProjection(void)
+{
+  for (int sign = 1; sign >= -1; sign -= 2) {
+    const double       t[3] = {-1, 0, 1}, p[3] = {sign * 1e100, 0, sign * 1e100}, mm[3] = {-sign * 1e100, 0, sign * 1e100}, scale[5] = {1, 1e-30, 1, 100, 100};
+    const double       uv[6] = {0, 0, 0.1, 0, 0, 0.1}, x[18] = {0, 0, 0, 0.1, 0, 0, 0, 0.1, 0};
+    hylcmat_term1d     term = {1, 3, 0, t, p, mm};
+    hylcmat           *m;
+    hylcmat_shell_rest r;
+    double             E0, E1, g0[18], g1[18], H0[324], H1[324], Hb[324], Eb, gb[18], amax = 0, worst = 0;
+    const int          nb = 0;
+    int                rc;
+    char               err[256];
+    HYLC_CHECK(hylcmat_create(&m) == 0 && hylcmat_set_strain_scale(m, scale, err, sizeof(err)) == 0 && hylcmat_set_term1d(m, &term, err, sizeof(err)) == 0, "the table: %s", err);
+    HYLC_CHECK(hylcmat_shell_rest_uv(uv, &r) == 0, "rest");
+    HYLC_CHECK(hylcmat_shell_eval(m, &r, x, 0, 0, &E0, g0, H0) == 0, "unprojected");
+    rc = hylcmat_shell_eval(m, &r, x, 0, HYLCMAT_SHELL_PSD, &E1, g1, H1);
+    HYLC_CHECK(rc == HYLCMAT_OK, "projection of a Hessian of 2e160 (sign %d): %s", sign, hylcmat_strerror(rc));
+    for (int i = 0; i < 324; i++) amax = fmax(amax, fabs(H0[i]));
+    HYLC_CHECK(amax > 1e155 && amax < 1e170, "the Hessian's largest entry %g, expected about 2e160", amax);
+    if (sign > 0) /* convex: unchanged up to the floor */
+      for (int i = 0; i < 324; i++) worst = fmax(worst, fabs(H1[i] - H0[i]));
+    else { /* concave: v^T H1 v >= 0 for the unit vectors and their pairs */
+      for (int i = 0; i < 9; i++)
+        for (int j = i; j < 9; j++) {
+          const double q = H1[19 * i] + H1[19 * j] + (i != j ? 2 * H1[18 * i + j] : 2 * H1[19 * i]);
+          worst          = fmax(worst, -q);
+        }
+    }
+    HYLC_CHECK(worst <= 1e-12 * amax, "sign %d: %s %g of %g", sign, sign > 0 ? "the projection changed the convex Hessian by" : "a negative curvature", worst, amax);
+    rc = hylcmat_shell_eval_batch(m, 1, &r, x, &nb, HYLCMAT_SHELL_PSD, &Eb, gb, Hb);
+    HYLC_CHECK(rc == HYLCMAT_OK && !memcmp(Hb, H1, sizeof(H1)), "the batch: %s, or another Hessian", hylcmat_strerror(rc));
+    hylcmat_free(m);
+  }
+}
+
 static hylcmat *SmoothAtZero(unsigned long long *st)
 {
   hylcmat *m;
@@ -937,6 +998,7 @@ int main(int argc, char **argv)
   PetscCall(PetscOptionsGetBool(NULL, NULL, "-v", &Verbose, NULL));
   memset(&all, 0, sizeof(all));
   TestConventions();
+  TestHugeProjection();
   PetscCall(TestCylinder());
   /* fitted tables */
   for (int f = 0; f < 2; f++) {
