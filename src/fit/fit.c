@@ -442,9 +442,10 @@ PetscErrorCode HylcFitSetFromOptions(HylcFit fit)
       HylcOptionsEnum("-fit_compat", "paper, or authors: the authors' code's two departures (S42 x-clamp dropped; mv <= -reg on the minimum's row); authors implies -fit_method paper", "HylcFitSetFromOptions", HylcFitCompats, compat, &compat, NULL));
   {
     PetscEnum method = (PetscEnum)fit->method;
-    PetscCall(HylcOptionsEnum("-fit_method",
-                              "auto (fabric when every sample has its stress, else paper), fabric (the samples' values and stresses by weighted least squares on the plan's graded knots) or paper (the MLS of the values on the paper's knots)",
-                              "HylcFitSetMethod", HylcFitMethods, method, &method, NULL));
+    PetscCall(HylcOptionsEnum(
+        "-fit_method",
+        "auto (fabric when every sample has its stress and the plan was graded, else paper), fabric (the samples' values and stresses by weighted least squares on the plan's graded knots) or paper (the MLS of the values on the paper's knots)",
+        "HylcFitSetMethod", HylcFitMethods, method, &method, NULL));
     fit->method = (HylcFitMethod)method;
   }
   PetscCall(HylcOptionsReal("-fit_fabric_floor", "fabric method: each equation's error is relative to the tile's own value or stress there, with a floor of this fraction of the term's largest (1)", "HylcFitSetFromOptions", fit->fabricFloor,
@@ -621,7 +622,7 @@ PetscErrorCode HylcFitSetStress(HylcFit fit, const PetscReal stress[])
 /*@C
   HylcFitSetMethod - How the terms are fitted (option -fit_method): paper (the MLS of the values, Algorithms
   C6, C7), fabric (values and stresses by weighted least squares on graded knots) or auto (fabric when every
-  sample has its stress).
+  sample has its stress and the samples file's plan was graded, else paper).
 
   Not collective
 

@@ -349,7 +349,7 @@ PetscErrorCode HylcReferenceStateForMode(HylcPattern in, HylcReferenceMode mode,
             "[reference] the pattern file is a stored reference state (it records nothing, as the paper's files): relaxed to the in-plane minimum under the configured yarn (auto; -sampler_reference none keeps it as given, the paper's procedure)\n"));
       mode = HYLC_REFERENCE_RELAX;
     } else if (mode == HYLC_REFERENCE_AUTO && isfile && state == HYLC_PATTERN_STATE_REFERENCE) {
-      if (v) PetscCall(PetscViewerASCIIPrintf(v, "[reference] the pattern file is a reference state (its record says so): used as given (auto; -sampler_reference relax makes it a minimum under the configured yarn)\n"));
+      if (v) PetscCall(PetscViewerASCIIPrintf(v, "[reference] the pattern file records a reference state: used as given (auto; -sampler_reference relax makes it a minimum under the configured yarn)\n"));
     } else if (v && mode == HYLC_REFERENCE_AUTO && isfile)
       PetscCall(PetscViewerASCIIPrintf(v, "[reference] the pattern file is not a reference state (%s): computing it (Algorithm C1)\n", HylcPatternStates[state]));
     else if (v && mode == HYLC_REFERENCE_AUTO)
