@@ -4,7 +4,8 @@
 # in the comment of the *pattern header (which every reader skips). hylc-sample computes the reference
 # state of a .pyp that is not one, says which it did, and gets the same reference state and samples as
 # from the generator given directly; a reference state is used as given, and a file without the record
-# (the paper's .pyp files) is taken as its own reference state, as before.
+# (the paper's .pyp files) is taken as a stored reference state and relaxed to rest under the configured
+# yarn (-sampler_reference auto; issue 39), with no stress-free rounds of Algorithm C1.
 set -u
 cd "$HYLC_TMP"
 B=$HYLC_BIN
@@ -40,11 +41,11 @@ fi
 run c.txt $B/hylc-sample -pattern_file ra.pyp -sampler_terms zero -sampler_output c.h5
 has c.txt '[reference] the pattern file records a reference state: used as given'
 hasnt c.txt 'stress-free round'
-# a .pyp without the record (as the paper's files): its own reference state, as before
+# a .pyp without the record (as the paper's files): a stored reference state, relaxed (not recomputed)
 sed '1s/; hylc state: .*//' p.pyp >old.pyp
 head -n 1 old.pyp | grep -qx '\*pattern # px py radius num_vertedges' || die "could not strip the record"
 run d.txt $B/hylc-sample -pattern_file old.pyp -sampler_terms zero -sampler_output d.h5
-has d.txt '[reference] the pattern file does not record its state (as the paper'"'"'s): taken as its own reference state'
+has d.txt '[reference] the pattern file is a stored reference state (it records nothing, as the paper'"'"'s files): relaxed to the in-plane minimum under the configured yarn'
 hasnt d.txt 'stress-free round'
 run e.txt $B/hylc-pattern -pattern_file old.pyp -pattern_output old2.pyp
 has e.txt 'state: not recorded in the file (taken as its own reference state)'
