@@ -600,7 +600,10 @@ PetscErrorCode HylcFitTerm3DFabric_Private(HylcFit fit, int t)
   ZeroPlanes(n, z0, D);
   sp->k0 = c[0], sp->k1 = c[1], sp->k2 = c[2];
   sp->nu = (int)n[0], sp->nv = (int)n[1], sp->nw = (int)n[2];
-  sp->ext = HYLC_EXT_LINEAR;
+  /* constant beyond the sampled box: a correction known only inside it (linear extension of the tensor-product
+     slopes grew like the product of the distances outside two faces: a stockinette's (sx, sa, sy) term added
+     -0.24 J/m^2 at sx -0.375, sa 0.55, a spurious well below the rest state that the bias path fell into) */
+  sp->ext = HYLC_EXT_CONSTANT;
   sp->tu = K[0], sp->tv = K[1], sp->tw = K[2];
   sp->p = D[0], sp->mu = D[1], sp->mv = D[2], sp->muv = D[3], sp->mw = D[4], sp->muw = D[5], sp->mvw = D[6], sp->muvw = D[7];
   PetscFunctionReturn(PETSC_SUCCESS);

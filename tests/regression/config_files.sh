@@ -53,8 +53,9 @@ done
 for f in config/profile-*.yaml; do
   $tool -options_file config/satin.yaml -options_file "$f" >"$HYLC_TMP/prof.out" 2>"$HYLC_TMP/prof.err" || { cat "$HYLC_TMP/prof.out" "$HYLC_TMP/prof.err"; die "$f does not load after config/satin.yaml"; }
   [ ! -s "$HYLC_TMP/prof.err" ] || { cat "$HYLC_TMP/prof.err"; die "$f: unexpected output on stderr"; }
-  grep -q '^sampler_reference: none$' "$f" || die "$f: the paper's profile does not keep the stored tile as given"
 done
+grep -q '^sampler_reference: none$' config/profile-paper.yaml || die "config/profile-paper.yaml does not keep the stored tile as given"
+grep -q '^sampler_graded_sub: 1$' config/profile-quick.yaml || die "config/profile-quick.yaml does not thin the graded plan"
 
 # the check catches a misspelt key
 sed 's/^yarn_kc:/yarn_ck:/' config/satin.yaml >"$HYLC_TMP/typo.yaml"

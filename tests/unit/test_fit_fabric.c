@@ -188,6 +188,7 @@ int main(int argc, char **argv)
           PetscCall(HylcMaterialGet3D(mat, HylcTripleCoords[r][0], HylcTripleCoords[r][1], HylcTripleCoords[r][2], &t, &has));
           HYLC_CHECK(has, "3D %s: not fitted", HylcTripleNames[r]);
           if (!has) continue;
+          HYLC_CHECK(t.ext == HYLCMAT_EXT_CONSTANT, "3D %s: extension %d beyond the sampled box, not constant", HylcTripleNames[r], t.ext);
           for (int iw = 0; iw < t.nw; iw++)
             for (int iv = 0; iv < t.nv; iv++)
               for (int iu = 0; iu < t.nu; iu++) {

@@ -140,6 +140,26 @@ int main(int argc, char **argv)
       b = Direct3(&t, zs[0], zs[2], zs[3] / sc);
       HYLC_CHECK(fabs(a - b) <= 1e-14 * fmax(1, fabs(b)), "(sx, sy, II00) at II00 = 10 < II11 = 45: %.17g, the tricubic at II00 %.17g", a, b);
     }
+    /* constant beyond the knots (the fabric fit's extension of a 3D term: a correction known only inside its
+       sampled box): outside in sx and sy it is the tricubic at the nearest face; linear would differ */
+    {
+      const double zo[6] = {1.8, 0, 1.4, 45, 0, 10};
+      hylcmat     *m3;
+      double       lin;
+      HYLC_CHECK(!hylcmat_eval(m2, zo, &lin, NULL, NULL), "eval");
+      t.ext = HYLCMAT_EXT_CONSTANT;
+      HYLC_CHECK(!hylcmat_create(&m3), "create");
+      {
+        const double scale[5] = {1, 0.75, 1, 170, 170};
+        HYLC_CHECK(!hylcmat_set_strain_scale(m3, scale, err, sizeof(err)), "%s", err);
+        HYLC_CHECK(!hylcmat_set_term3d(m3, &t, err, sizeof(err)), "%s", err);
+      }
+      HYLC_CHECK(!hylcmat_eval(m3, zo, &a, NULL, NULL), "eval");
+      b = Direct3(&t, 1, 1, zo[3] / sc);
+      HYLC_CHECK(fabs(a - b) <= 1e-14 * fmax(1, fabs(b)), "constant extension at sx 1.8, sy 1.4: %.17g, the tricubic at the box's corner %.17g", a, b);
+      HYLC_CHECK(fabs(lin - b) > 1e-6, "the linear extension equals the constant one (%.17g): the check cannot fail", lin);
+      hylcmat_free(m3);
+    }
     hylcmat_free(m2);
   }
   /* refusals */
