@@ -1,6 +1,7 @@
 /* HylcFitCompute: the fitting pipeline of Algorithms C5-C7 as the authors' code does it (docs/method.md
    §9.1); the shape-preserving steps are the kernels of include/hylc/monotone.h. */
 #include <hylc/private/fitimpl.h>
+#include <hylc/samples.h>
 
 /* the smoothed function g of (S27): symexp of the MLS of symlog(psi), symmetrized in sa */
 typedef struct {

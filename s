@@ -1,0 +1,1 @@
+about 12 s of CPU time, 6 s of wall time on 2 rank2
