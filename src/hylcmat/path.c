@@ -212,27 +212,39 @@ int hylcmat_path_state(const hylcmat *m, const hylcmat_path *path, double s, con
         for (int a = 0; a < nf; a++) d[a] *= maxStep / nd;
       /* backtracking on Psi (Armijo 1e-4); a decrease below Psi's rounding cannot be seen: then the full
          Newton step (at most 20 in a row) */
-      const int blind    = -slope <= 1e-13 * fabs(psi);
-      int       accepted = 0;
+      int blind    = -slope <= 1e-13 * fabs(psi);
+      int accepted = 0;
       if (blind && ++nblind > 20) {
         converged = nd <= 1e-8;
         break;
       }
       if (!blind) nblind = 0;
-      for (double t = 1; t > 1e-10 && !accepted; t *= 0.5) {
-        double q[3] = {p[0], p[1], p[2]}, qpsi, qg[3], qH[9], qf, qz[6];
-        int    same = 1;
-        for (int a = 0; a < nf; a++) q[a] += t * d[a], same = same && q[a] == p[a];
-        if (same || !Admissible(path, nf, s, q)) continue;
-        r = Eval(m, path, nf, s, q, &qpsi, qg, qH, &qf, qz);
-        if (r) return hm_fail(&E, r, "%s path at %g: the evaluation failed at the free strains (%g, %g, %g) (%s)", name, s, q[0], q[1], q[2], hylcmat_strerror(r));
-        if (blind || qpsi <= psi + 1e-4 * t * fmin(slope, 0)) {
-          accepted = 1;
-          memcpy(p, q, sizeof(q));
-          psi = qpsi, f = qf;
-          memcpy(gp, qg, sizeof(qg));
-          memcpy(H, qH, sizeof(qH));
-          memcpy(gz, qz, sizeof(qz));
+      /* the Newton direction first; where its line search finds no decrease (a table's Hessian is only piecewise
+         continuous and can be indefinite), the steepest descent (a stockinette's uniaxial y path at 7 % stopped
+         without it, between two lateral states that its tile snaps across) */
+      for (int dir = 0; dir < 2 && !accepted; dir++) {
+        if (dir == 1) {
+          double ng = 0;
+          for (int a = 0; a < nf; a++) ng = fmax(ng, fabs(gp[a]));
+          if (!(ng > 0) || blind) break;
+          slope = 0;
+          for (int a = 0; a < nf; a++) d[a] = -gp[a] * fmin(1, maxStep / ng), slope += gp[a] * d[a];
+        }
+        for (double t = 1; t > 1e-10 && !accepted; t *= 0.5) {
+          double q[3] = {p[0], p[1], p[2]}, qpsi, qg[3], qH[9], qf, qz[6];
+          int    same = 1;
+          for (int a = 0; a < nf; a++) q[a] += t * d[a], same = same && q[a] == p[a];
+          if (same || !Admissible(path, nf, s, q)) continue;
+          r = Eval(m, path, nf, s, q, &qpsi, qg, qH, &qf, qz);
+          if (r) return hm_fail(&E, r, "%s path at %g: the evaluation failed at the free strains (%g, %g, %g) (%s)", name, s, q[0], q[1], q[2], hylcmat_strerror(r));
+          if (blind || qpsi <= psi + 1e-4 * t * fmin(slope, 0)) {
+            accepted = 1;
+            memcpy(p, q, sizeof(q));
+            psi = qpsi, f = qf;
+            memcpy(gp, qg, sizeof(qg));
+            memcpy(H, qH, sizeof(qH));
+            memcpy(gz, qz, sizeof(qz));
+          }
         }
       }
       if (!accepted) { /* no decrease along a descent direction: Psi's rounding; a minimum if the step is tiny */
